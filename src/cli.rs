@@ -1,0 +1,307 @@
+//! The command line, as clap derives it. `--help`, the man pages and the shell completions
+//! are all generated from this one definition.
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+
+use crate::address::Table;
+use crate::codec::{Direction, Mode};
+use crate::values::{ByteOrder, ValueType};
+
+const ABOUT: &str = "Modbus RTU/ASCII/TCP diagnostics: read, write, decode, encode";
+
+const LONG_ABOUT: &str = "\
+Modbus RTU/ASCII/TCP diagnostics: read and write a device's coils and registers, decode \
+frames pasted from a log or a datasheet, and build frames by hand.
+
+Addresses: a number of exactly 5 or 6 digits whose first digit is the command's table \
+(0 coils, 1 discrete inputs, 3 input registers, 4 holding registers) is a 1-based Modicon \
+reference: 400108 and 40108 are both holding register address 107. Any other number is the \
+0-based protocol address: 107, 0x6B. --pdu-addresses makes every number a protocol address. \
+A range such as 400108-400110 may stand for ADDRESS and COUNT.
+
+Numbers may be decimal, 0x hex or 0b binary.";
+
+/// The top of the command line: `mbtool [OPTIONS] <COMMAND> [ARGS]`.
+#[derive(Debug, Parser)]
+#[command(
+    name = "mbtool",
+    version,
+    about = ABOUT,
+    long_about = LONG_ABOUT,
+    propagate_version = true,
+    max_term_width = 100
+)]
+pub struct Cli {
+    #[command(flatten)]
+    pub connection: ConnectionArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub data: DataArgs,
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Clone, Debug, Args)]
+#[command(next_help_heading = "Connection")]
+pub struct ConnectionArgs {
+    /// Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT],
+    /// rtu+tcp://HOST:PORT, or sim
+    #[arg(short, long, global = true, env = "MBTOOL_PORT", value_name = "PORT")]
+    pub port: Option<String>,
+
+    /// Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp://
+    /// ports; decode detects it]
+    #[arg(short, long, global = true, env = "MBTOOL_MODE", value_enum)]
+    pub mode: Option<ModeArg>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ModeArg {
+    Rtu,
+    Ascii,
+    Tcp,
+}
+
+impl From<ModeArg> for Mode {
+    fn from(mode: ModeArg) -> Mode {
+        match mode {
+            ModeArg::Rtu => Mode::Rtu,
+            ModeArg::Ascii => Mode::Ascii,
+            ModeArg::Tcp => Mode::Tcp,
+        }
+    }
+}
+
+#[derive(Clone, Debug, Args)]
+#[command(next_help_heading = "Output")]
+pub struct OutputArgs {
+    /// Output format
+    #[arg(short, long, global = true, value_enum, default_value_t = OutputFormat::Table)]
+    pub output: OutputFormat,
+
+    /// The same as --output json
+    #[arg(long, global = true)]
+    pub json: bool,
+}
+
+impl OutputArgs {
+    pub fn format(&self) -> OutputFormat {
+        if self.json {
+            OutputFormat::Json
+        } else {
+            self.output
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum OutputFormat {
+    /// A table for people
+    Table,
+    /// One JSON object per line
+    Json,
+    /// Only the values, one per line, for $(...) in scripts
+    Values,
+    /// Comma-separated values with a header line
+    Csv,
+}
+
+#[derive(Clone, Debug, Args)]
+#[command(next_help_heading = "Addresses and values")]
+pub struct DataArgs {
+    /// Take every address as a 0-based protocol address, never as a Modicon reference
+    #[arg(long, global = true)]
+    pub pdu_addresses: bool,
+
+    /// Register value type, for showing values read and for converting values to write
+    #[arg(short = 't', long = "type", global = true, value_enum, default_value_t)]
+    pub value_type: ValueType,
+
+    /// Byte order of values wider than 16 bits: A is the most significant byte
+    #[arg(long, global = true, value_enum, default_value_t)]
+    pub order: ByteOrder,
+
+    /// Split reads and writes into requests of at most N coils or registers, for devices
+    /// that take fewer than the protocol allows
+    #[arg(long, global = true, value_name = "N", value_parser = clap::value_parser!(u16).range(1..))]
+    pub max_per_request: Option<u16>,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    #[command(flatten)]
+    Request(RequestCommand),
+
+    /// Decode Modbus frames given as arguments, or one per line on standard input
+    #[command(long_about = DECODE_ABOUT)]
+    Decode(DecodeArgs),
+
+    /// Print the frame that a request command would send, without sending it
+    #[command(long_about = ENCODE_ABOUT)]
+    Encode {
+        #[command(subcommand)]
+        request: RequestCommand,
+    },
+
+    /// Write the shell completions and man pages (for packagers and the project's own tree)
+    #[command(hide = true)]
+    Generate(GenerateArgs),
+}
+
+const DECODE_ABOUT: &str = "\
+Decode Modbus frames given as arguments, or one per line on standard input.
+
+A frame may be hex bytes in any common spelling (11 03 00 6B 00 03 76 87, 1103006B00037687, \
+0x11,0x03,...), an ASCII frame as text (:1103006B00037E), or the hex of an ASCII frame's \
+bytes (3A 31 31 ...). The framing (RTU, ASCII, TCP) is detected unless --mode says; request \
+or response is inferred from the bytes, and a frame that reads both ways says so \
+(--direction settles it).
+
+Exit status 4 when any frame fails its checksum or is malformed; 2 when a line is not hex \
+(which outranks 4).";
+
+const ENCODE_ABOUT: &str = "\
+Print the frame that a request command would send, as spaced upper-case hex (RTU or TCP) or \
+as an ASCII line (--mode ascii). A command that needs several requests prints one frame per \
+line. --port tcp://... or --mode tcp prints the MBAP frame, transaction ids counting from 1.";
+
+/// The commands that send requests; `encode` takes the same ones.
+#[derive(Clone, Debug, Subcommand)]
+pub enum RequestCommand {
+    /// Read coils (function 01)
+    ReadCoils(ReadArgs),
+    /// Read discrete inputs (function 02)
+    #[command(visible_alias = "read-discrete-inputs")]
+    ReadInputs(ReadArgs),
+    /// Read holding registers (function 03)
+    #[command(visible_alias = "read-holding-registers")]
+    ReadHolding(ReadArgs),
+    /// Read input registers (function 04)
+    #[command(visible_alias = "read-input-regs")]
+    ReadInputRegisters(ReadArgs),
+    /// Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)
+    Read(ReadArgs),
+    /// Write one coil (function 05)
+    WriteCoil(WriteCoilArgs),
+    /// Write coils (function 15)
+    WriteCoils(WriteArgs),
+    /// Write one holding register (function 06)
+    WriteRegister(WriteRegisterArgs),
+    /// Write holding registers (function 16)
+    WriteRegisters(WriteArgs),
+    /// Write by Modicon reference: 05/06 for one value, 15/16 for several
+    Write(WriteByReferenceArgs),
+    /// Send any PDU and decode the answer
+    Raw(RawArgs),
+}
+
+impl RequestCommand {
+    /// The table a table-specific command works on.
+    pub fn table(&self) -> Option<Table> {
+        match self {
+            RequestCommand::ReadCoils(_)
+            | RequestCommand::WriteCoil(_)
+            | RequestCommand::WriteCoils(_) => Some(Table::Coils),
+            RequestCommand::ReadInputs(_) => Some(Table::DiscreteInputs),
+            RequestCommand::ReadInputRegisters(_) => Some(Table::InputRegisters),
+            RequestCommand::ReadHolding(_)
+            | RequestCommand::WriteRegister(_)
+            | RequestCommand::WriteRegisters(_) => Some(Table::HoldingRegisters),
+            RequestCommand::Read(_) | RequestCommand::Write(_) | RequestCommand::Raw(_) => None,
+        }
+    }
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct ReadArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+    /// First address (400108, 107, 0x6B) or an inclusive range (400108-400110)
+    pub address: String,
+    /// How many values to read [default: 1]; with --type wider than 16 bits, values of
+    /// that type
+    pub count: Option<String>,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct WriteCoilArgs {
+    /// Slave address: 1-247, or 0 to broadcast
+    pub slave: String,
+    /// Coil address (000020, 19)
+    pub address: String,
+    /// on, off, 1, 0, true or false
+    pub value: String,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct WriteRegisterArgs {
+    /// Slave address: 1-247, or 0 to broadcast
+    pub slave: String,
+    /// Register address (400002, 1)
+    pub address: String,
+    /// The value, converted by --type
+    #[arg(allow_negative_numbers = true)]
+    pub value: String,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct WriteArgs {
+    /// Slave address: 1-247, or 0 to broadcast
+    pub slave: String,
+    /// First address, or a range that holds exactly the values given
+    pub address: String,
+    /// The values: registers converted by --type; coils each 0/1/on/off, or one bit
+    /// string such as 10110
+    #[arg(required = true, allow_negative_numbers = true)]
+    pub values: Vec<String>,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct WriteByReferenceArgs {
+    #[command(flatten)]
+    pub write: WriteArgs,
+    /// Force the function: 5 or 15 for coils, 6 or 16 for registers
+    #[arg(long, value_name = "CODE", value_parser = ["5", "6", "15", "16"])]
+    pub function: Option<String>,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct RawArgs {
+    /// Slave address: 1-247, or 0 to broadcast
+    pub slave: String,
+    /// The PDU in hex, function code first (03 00 6B 00 03)
+    #[arg(required = true, num_args = 1..)]
+    pub pdu: Vec<String>,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct DecodeArgs {
+    /// Frames to decode; without any, one frame per line of standard input
+    pub frames: Vec<String>,
+    /// Read every frame as a request or as a response instead of inferring it
+    #[arg(long, value_enum)]
+    pub direction: Option<DirectionArg>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum DirectionArg {
+    Request,
+    Response,
+}
+
+impl From<DirectionArg> for Direction {
+    fn from(direction: DirectionArg) -> Direction {
+        match direction {
+            DirectionArg::Request => Direction::Request,
+            DirectionArg::Response => Direction::Response,
+        }
+    }
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct GenerateArgs {
+    /// The folder that receives completions/ and man/
+    #[arg(long, default_value = ".")]
+    pub dir: std::path::PathBuf,
+}

@@ -1,0 +1,35 @@
+//! Exception codes 01-0B by name; other codes are kept as they came.
+
+use std::fmt;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ExceptionCode(pub u8);
+
+impl ExceptionCode {
+    pub const ILLEGAL_FUNCTION: Self = Self(0x01);
+    pub const ILLEGAL_DATA_ADDRESS: Self = Self(0x02);
+    pub const ILLEGAL_DATA_VALUE: Self = Self(0x03);
+    pub const SERVER_DEVICE_FAILURE: Self = Self(0x04);
+
+    pub fn name(self) -> &'static str {
+        match self.0 {
+            0x01 => "illegal function",
+            0x02 => "illegal data address",
+            0x03 => "illegal data value",
+            0x04 => "slave device failure",
+            0x05 => "acknowledge",
+            0x06 => "slave device busy",
+            0x07 => "negative acknowledge",
+            0x08 => "memory parity error",
+            0x0A => "gateway path unavailable",
+            0x0B => "gateway target device failed to respond",
+            _ => "unknown exception",
+        }
+    }
+}
+
+impl fmt::Display for ExceptionCode {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{:02X} {}", self.0, self.name())
+    }
+}

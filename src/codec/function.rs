@@ -1,0 +1,53 @@
+//! Function codes and their names.
+
+pub const READ_COILS: u8 = 0x01;
+pub const READ_DISCRETE_INPUTS: u8 = 0x02;
+pub const READ_HOLDING_REGISTERS: u8 = 0x03;
+pub const READ_INPUT_REGISTERS: u8 = 0x04;
+pub const WRITE_SINGLE_COIL: u8 = 0x05;
+pub const WRITE_SINGLE_REGISTER: u8 = 0x06;
+pub const READ_EXCEPTION_STATUS: u8 = 0x07;
+pub const DIAGNOSTICS: u8 = 0x08;
+pub const GET_COMM_EVENT_COUNTER: u8 = 0x0B;
+pub const GET_COMM_EVENT_LOG: u8 = 0x0C;
+pub const WRITE_MULTIPLE_COILS: u8 = 0x0F;
+pub const WRITE_MULTIPLE_REGISTERS: u8 = 0x10;
+pub const REPORT_SERVER_ID: u8 = 0x11;
+pub const READ_FILE_RECORD: u8 = 0x14;
+pub const WRITE_FILE_RECORD: u8 = 0x15;
+pub const MASK_WRITE_REGISTER: u8 = 0x16;
+pub const READ_WRITE_MULTIPLE_REGISTERS: u8 = 0x17;
+pub const READ_FIFO_QUEUE: u8 = 0x18;
+pub const ENCAPSULATED_INTERFACE: u8 = 0x2B;
+
+/// The MEI type of "read device identification" inside function 43.
+pub const MEI_READ_DEVICE_IDENTIFICATION: u8 = 0x0E;
+
+/// Set in the function code of an exception response.
+pub const EXCEPTION_FLAG: u8 = 0x80;
+
+/// The name of a function code as the Modbus specification gives it.
+pub fn name(function: u8) -> &'static str {
+    match function & !EXCEPTION_FLAG {
+        READ_COILS => "Read Coils",
+        READ_DISCRETE_INPUTS => "Read Discrete Inputs",
+        READ_HOLDING_REGISTERS => "Read Holding Registers",
+        READ_INPUT_REGISTERS => "Read Input Registers",
+        WRITE_SINGLE_COIL => "Write Single Coil",
+        WRITE_SINGLE_REGISTER => "Write Single Register",
+        READ_EXCEPTION_STATUS => "Read Exception Status",
+        DIAGNOSTICS => "Diagnostics",
+        GET_COMM_EVENT_COUNTER => "Get Comm Event Counter",
+        GET_COMM_EVENT_LOG => "Get Comm Event Log",
+        WRITE_MULTIPLE_COILS => "Write Multiple Coils",
+        WRITE_MULTIPLE_REGISTERS => "Write Multiple Registers",
+        REPORT_SERVER_ID => "Report Server ID",
+        READ_FILE_RECORD => "Read File Record",
+        WRITE_FILE_RECORD => "Write File Record",
+        MASK_WRITE_REGISTER => "Mask Write Register",
+        READ_WRITE_MULTIPLE_REGISTERS => "Read/Write Multiple Registers",
+        READ_FIFO_QUEUE => "Read FIFO Queue",
+        ENCAPSULATED_INTERFACE => "Encapsulated Interface Transport",
+        _ => "Unknown function",
+    }
+}

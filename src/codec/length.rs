@@ -1,0 +1,143 @@
+//! How long a frame is, told from its first bytes: the master knows when an answer is
+//! complete, and a sniffer knows where to look for the next frame, without waiting for
+//! silence on the line.
+
+use super::function::*;
+use super::pdu::Direction;
+
+/// The predicted length of a PDU or a frame.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Length {
+    /// Exactly this many bytes.
+    Known(usize),
+    /// At least this many bytes must be seen before the length can be told.
+    AtLeast(usize),
+    /// The layout of this function code is not known: only silence or a checksum can tell.
+    Unknown,
+}
+
+/// `base` bytes, plus the byte count found at `index`.
+fn counted(pdu: &[u8], index: usize, base: usize) -> Length {
+    match pdu.get(index) {
+        Some(count) => Length::Known(base + usize::from(*count)),
+        None => Length::AtLeast(index + 1),
+    }
+}
+
+/// The length of the PDU that starts `pdu` (function code first).
+pub fn pdu_length(pdu: &[u8], direction: Direction) -> Length {
+    let Some(&function) = pdu.first() else {
+        return Length::AtLeast(1);
+    };
+    match direction {
+        Direction::Request => match function {
+            READ_COILS..=WRITE_SINGLE_REGISTER | DIAGNOSTICS => Length::Known(5),
+            READ_EXCEPTION_STATUS
+            | GET_COMM_EVENT_COUNTER
+            | GET_COMM_EVENT_LOG
+            | REPORT_SERVER_ID => Length::Known(1),
+            WRITE_MULTIPLE_COILS | WRITE_MULTIPLE_REGISTERS => counted(pdu, 5, 6),
+            READ_FILE_RECORD | WRITE_FILE_RECORD => counted(pdu, 1, 2),
+            MASK_WRITE_REGISTER => Length::Known(7),
+            READ_WRITE_MULTIPLE_REGISTERS => counted(pdu, 9, 10),
+            READ_FIFO_QUEUE => Length::Known(3),
+            ENCAPSULATED_INTERFACE => match pdu.get(1) {
+                Some(&MEI_READ_DEVICE_IDENTIFICATION) => Length::Known(4),
+                Some(_) => Length::Unknown,
+                None => Length::AtLeast(2),
+            },
+            _ => Length::Unknown,
+        },
+        Direction::Response => match function {
+            f if f & EXCEPTION_FLAG != 0 => Length::Known(2),
+            READ_COILS..=READ_INPUT_REGISTERS
+            | GET_COMM_EVENT_LOG
+            | REPORT_SERVER_ID
+            | READ_FILE_RECORD
+            | WRITE_FILE_RECORD
+            | READ_WRITE_MULTIPLE_REGISTERS => counted(pdu, 1, 2),
+            WRITE_SINGLE_COIL
+            | WRITE_SINGLE_REGISTER
+            | DIAGNOSTICS
+            | GET_COMM_EVENT_COUNTER
+            | WRITE_MULTIPLE_COILS
+            | WRITE_MULTIPLE_REGISTERS => Length::Known(5),
+            READ_EXCEPTION_STATUS => Length::Known(2),
+            MASK_WRITE_REGISTER => Length::Known(7),
+            READ_FIFO_QUEUE => match pdu.get(1..3) {
+                Some([hi, lo]) => Length::Known(3 + usize::from(u16::from_be_bytes([*hi, *lo]))),
+                _ => Length::AtLeast(3),
+            },
+            ENCAPSULATED_INTERFACE => match pdu.get(1) {
+                Some(&MEI_READ_DEVICE_IDENTIFICATION) => device_identification_length(pdu),
+                Some(_) => Length::Unknown,
+                None => Length::AtLeast(2),
+            },
+            _ => Length::Unknown,
+        },
+    }
+}
+
+/// Walks the object list of a read-device-identification answer.
+fn device_identification_length(pdu: &[u8]) -> Length {
+    // function, MEI type, read code, conformity, more follows, next id, object count
+    const HEADER: usize = 7;
+    let Some(&count) = pdu.get(HEADER - 1) else {
+        return Length::AtLeast(HEADER);
+    };
+    let mut len = HEADER;
+    for _ in 0..count {
+        match pdu.get(len + 1) {
+            Some(value_len) => len += 2 + usize::from(*value_len),
+            None => return Length::AtLeast(len + 2),
+        }
+    }
+    Length::Known(len)
+}
+
+/// The length of the RTU frame that starts `frame`: address, PDU, CRC.
+pub fn rtu_frame_length(frame: &[u8], direction: Direction) -> Length {
+    match frame.get(1..) {
+        // The address byte before the PDU; the CRC after it is not needed to tell the length.
+        Some(pdu) if !pdu.is_empty() => match pdu_length(pdu, direction) {
+            Length::Known(len) => Length::Known(1 + len + 2),
+            Length::AtLeast(len) => Length::AtLeast(1 + len),
+            Length::Unknown => Length::Unknown,
+        },
+        _ => Length::AtLeast(2),
+    }
+}
+
+/// The length of the TCP frame that starts `frame`, from its MBAP length field.
+pub fn tcp_frame_length(frame: &[u8]) -> Length {
+    match frame.get(4..6) {
+        Some([hi, lo]) => Length::Known(6 + usize::from(u16::from_be_bytes([*hi, *lo]))),
+        _ => Length::AtLeast(6),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn read_holding_answer_length_comes_from_its_byte_count() {
+        let head = [0x11, 0x03, 0x06];
+        assert_eq!(
+            rtu_frame_length(&head, Direction::Response),
+            Length::Known(11)
+        );
+        assert_eq!(
+            rtu_frame_length(&head[..2], Direction::Response),
+            Length::AtLeast(3)
+        );
+    }
+
+    #[test]
+    fn an_exception_is_five_bytes() {
+        assert_eq!(
+            rtu_frame_length(&[0x11, 0x83], Direction::Response),
+            Length::Known(5)
+        );
+    }
+}

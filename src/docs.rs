@@ -1,0 +1,299 @@
+//! Help examples, man pages and shell completions, all from the clap definition, so that
+//! none of them can drift from the command line.
+
+use std::fs;
+use std::io::{self, Write};
+use std::path::Path;
+
+use clap::CommandFactory;
+use clap_complete::Shell;
+
+use crate::cli::Cli;
+
+/// One example: what it does and the command line.
+pub struct Example {
+    pub what: &'static str,
+    pub command: &'static str,
+}
+
+const fn ex(what: &'static str, command: &'static str) -> Example {
+    Example { what, command }
+}
+
+/// Examples by subcommand; `""` is the top-level page.
+const EXAMPLES: &[(&str, &[Example])] = &[
+    (
+        "",
+        &[
+            ex(
+                "Decode a frame copied from a log",
+                "mbtool decode 11 03 00 6B 00 03 76 87",
+            ),
+            ex(
+                "Build the request that reads holding registers 400108-400110 of slave 17",
+                "mbtool encode read-holding 17 400108 3",
+            ),
+            ex(
+                "The same request as a Modbus ASCII frame",
+                "mbtool encode --mode ascii read-holding 17 400108 3",
+            ),
+        ],
+    ),
+    (
+        "read-coils",
+        &[ex(
+            "Read coils 000020-000056 of slave 17",
+            "mbtool --port /dev/ttyUSB0 read-coils 17 000020 37",
+        )],
+    ),
+    (
+        "read-inputs",
+        &[ex(
+            "Read discrete inputs 100197-100218 of slave 17",
+            "mbtool --port /dev/ttyUSB0 read-inputs 17 100197-100218",
+        )],
+    ),
+    (
+        "read-holding",
+        &[
+            ex(
+                "Read holding registers 400108-400110 of slave 17",
+                "mbtool --port /dev/ttyUSB0 read-holding 17 400108 3",
+            ),
+            ex(
+                "Read two 32-bit floats stored low word first",
+                "mbtool --port tcp://10.0.0.5 read-holding 1 400001 2 --type f32 --order CDAB",
+            ),
+        ],
+    ),
+    (
+        "read-input-registers",
+        &[ex(
+            "Read input register 300009 of slave 17",
+            "mbtool --port /dev/ttyUSB0 read-input-registers 17 300009",
+        )],
+    ),
+    (
+        "read",
+        &[ex(
+            "Read by reference: the 4 picks the holding registers",
+            "mbtool --port /dev/ttyUSB0 read 17 400108 3",
+        )],
+    ),
+    (
+        "write-coil",
+        &[ex(
+            "Switch coil 000173 of slave 17 on",
+            "mbtool --port /dev/ttyUSB0 write-coil 17 000173 on",
+        )],
+    ),
+    (
+        "write-coils",
+        &[ex(
+            "Write five coils from 000020 as a bit string",
+            "mbtool --port /dev/ttyUSB0 write-coils 17 000020 10110",
+        )],
+    ),
+    (
+        "write-register",
+        &[ex(
+            "Write 3 to holding register 400002 of slave 17",
+            "mbtool --port /dev/ttyUSB0 write-register 17 400002 3",
+        )],
+    ),
+    (
+        "write-registers",
+        &[ex(
+            "Write 0x000A and 0x0102 to 400002-400003",
+            "mbtool --port /dev/ttyUSB0 write-registers 17 400002 0x000A 0x0102",
+        )],
+    ),
+    (
+        "write",
+        &[
+            ex(
+                "Write a 32-bit float to 400001-400002",
+                "mbtool --port /dev/ttyUSB0 write 17 400001 3.14 --type f32",
+            ),
+            ex(
+                "Write two registers one at a time (function 06)",
+                "mbtool --port /dev/ttyUSB0 write 17 400001 1 2 --function 6",
+            ),
+        ],
+    ),
+    (
+        "raw",
+        &[ex(
+            "Send function 17 (report slave id) to slave 17",
+            "mbtool --port /dev/ttyUSB0 raw 17 11",
+        )],
+    ),
+    (
+        "decode",
+        &[
+            ex(
+                "Decode an RTU response",
+                "mbtool decode 11 03 06 02 2B 00 00 00 64 C8 BA",
+            ),
+            ex("Decode an ASCII frame", "mbtool decode :1103006B00037E"),
+            ex(
+                "Decode a log, one frame per line, as JSON Lines",
+                "mbtool decode --json < frames.txt",
+            ),
+        ],
+    ),
+    (
+        "encode",
+        &[
+            ex(
+                "The RTU request for 400108-400110 of slave 17",
+                "mbtool encode read-holding 17 400108 3",
+            ),
+            ex(
+                "The same as Modbus TCP",
+                "mbtool encode --mode tcp read-holding 17 400108 3",
+            ),
+            ex(
+                "Write coil 000173 on, as ASCII",
+                "mbtool encode --mode ascii write-coil 17 000173 on",
+            ),
+        ],
+    ),
+];
+
+const EXIT_STATUS: &[(&str, &str)] = &[
+    ("0", "success"),
+    ("1", "any other failure (port cannot be opened, I/O error)"),
+    ("2", "bad command line or bad input, including a frame given to decode that is not hex; nothing was sent"),
+    ("3", "no response within the timeout, after all retries"),
+    ("4", "a bad frame: CRC/LRC mismatch, malformed or unexpected answer; decode: a frame failed its check"),
+    ("10+N", "the slave answered with Modbus exception N: 11 illegal function, 12 illegal data address, 13 illegal data value, 14 slave device failure, ... up to 21"),
+];
+
+const ENVIRONMENT: &[(&str, &str)] = &[
+    ("MBTOOL_PORT", "the default for --port"),
+    ("MBTOOL_MODE", "the default for --mode"),
+    ("NO_COLOR", "when set and not empty, no colour is used"),
+];
+
+fn examples_of(name: &str) -> &'static [Example] {
+    EXAMPLES
+        .iter()
+        .find(|(command, _)| *command == name)
+        .map_or(&[], |(_, examples)| *examples)
+}
+
+fn examples_help(examples: &[Example]) -> String {
+    let mut text = String::from("Examples:\n");
+    for example in examples {
+        text.push_str(&format!("  {}:\n    $ {}\n", example.what, example.command));
+    }
+    text
+}
+
+/// The clap command with examples attached to each `--help`.
+pub fn command() -> clap::Command {
+    let mut command = Cli::command().after_long_help(examples_help(examples_of("")));
+    for (name, examples) in EXAMPLES.iter().filter(|(name, _)| !name.is_empty()) {
+        let help = examples_help(examples);
+        command = command.mut_subcommand(*name, |sub| sub.after_long_help(help));
+    }
+    command
+}
+
+/// Escapes text for roff: hyphens stay hyphens, backslashes stay backslashes, and a line
+/// may not start with a control character.
+fn roff_text(text: &str) -> String {
+    let escaped = text.replace('\\', "\\e").replace('-', "\\-");
+    if escaped.starts_with(['.', '\'']) {
+        format!("\\&{escaped}")
+    } else {
+        escaped
+    }
+}
+
+fn roff_list(out: &mut dyn Write, title: &str, items: &[(&str, &str)]) -> io::Result<()> {
+    writeln!(out, ".SH \"{title}\"")?;
+    for (term, text) in items {
+        writeln!(out, ".TP\n\\fB{}\\fR\n{}", roff_text(term), roff_text(text))?;
+    }
+    Ok(())
+}
+
+fn render_man(
+    man: &clap_mangen::Man,
+    name: &str,
+    top: bool,
+    out: &mut dyn Write,
+) -> io::Result<()> {
+    man.render_title(out)?;
+    man.render_name_section(out)?;
+    man.render_synopsis_section(out)?;
+    man.render_description_section(out)?;
+    man.render_options_section(out)?;
+    if top {
+        man.render_subcommands_section(out)?;
+        roff_list(out, "ENVIRONMENT", ENVIRONMENT)?;
+    }
+    roff_list(out, "EXIT STATUS", EXIT_STATUS)?;
+    let examples = examples_of(name);
+    if !examples.is_empty() {
+        writeln!(out, ".SH EXAMPLES")?;
+        for example in examples {
+            writeln!(
+                out,
+                ".PP\n{}:\n.PP\n.RS 4\n.nf\n\\fB{}\\fR\n.fi\n.RE",
+                roff_text(example.what),
+                roff_text(&format!("$ {}", example.command))
+            )?;
+        }
+    }
+    writeln!(out, ".SH \"SEE ALSO\"")?;
+    if top {
+        writeln!(
+            out,
+            "mbtool\\-decode(1), mbtool\\-encode(1), mbtool\\-read\\-holding(1)"
+        )?;
+    } else {
+        writeln!(out, "mbtool(1)")?;
+    }
+    man.render_version_section(out)
+}
+
+/// Writes `man/*.1`: one page for mbtool and one per visible subcommand.
+pub fn write_man_pages(dir: &Path) -> io::Result<()> {
+    fs::create_dir_all(dir)?;
+    let mut command = command().disable_help_subcommand(true);
+    command.build();
+    let mut page = Vec::new();
+    render_man(&clap_mangen::Man::new(command.clone()), "", true, &mut page)?;
+    fs::write(dir.join("mbtool.1"), &page)?;
+    for sub in command.get_subcommands().filter(|s| !s.is_hide_set()) {
+        let man = clap_mangen::Man::new(sub.clone());
+        let mut page = Vec::new();
+        render_man(&man, sub.get_name(), false, &mut page)?;
+        fs::write(dir.join(man.get_filename()), &page)?;
+    }
+    Ok(())
+}
+
+/// Writes `completions/` for bash, zsh, fish, PowerShell and elvish.
+pub fn write_completions(dir: &Path) -> io::Result<()> {
+    fs::create_dir_all(dir)?;
+    for shell in [
+        Shell::Bash,
+        Shell::Zsh,
+        Shell::Fish,
+        Shell::PowerShell,
+        Shell::Elvish,
+    ] {
+        clap_complete::generate_to(shell, &mut command(), "mbtool", dir)?;
+    }
+    Ok(())
+}
+
+/// Writes both under `root`: `root/completions` and `root/man`.
+pub fn generate(root: &Path) -> io::Result<()> {
+    write_completions(&root.join("completions"))?;
+    write_man_pages(&root.join("man"))
+}

@@ -1,0 +1,16 @@
+//! mbtool: Modbus diagnostics. The library holds everything but the command-line edge:
+//! the pure codec, addresses and value types, request planning, frame reports and their
+//! output formats.
+
+pub mod address;
+pub mod cli;
+pub mod codec;
+pub mod docs;
+pub mod error;
+pub mod hexinput;
+pub mod lines;
+pub mod number;
+pub mod output;
+pub mod plan;
+pub mod report;
+pub mod values;

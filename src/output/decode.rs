@@ -1,0 +1,328 @@
+//! How `decode` shows frames: a table per frame, JSON Lines, bare values, or CSV.
+
+use std::io::{self, Write};
+
+use comfy_table::{Cell, Color};
+
+use super::{csv_field, new_table};
+use crate::address::{reference, Table};
+use crate::cli::OutputFormat;
+use crate::codec::{Checksum, ExceptionCode};
+use crate::report::{spaced_hex, Fields, FrameReport, Values};
+use crate::values::{ByteOrder, ValueType};
+
+pub struct DecodeWriter {
+    format: OutputFormat,
+    value_type: ValueType,
+    order: ByteOrder,
+    colour: bool,
+    csv_header_written: bool,
+}
+
+const CSV_HEADER: &str = "mode,kind,slave,function,valid,address,ref,count,values,exception,error";
+
+impl DecodeWriter {
+    pub fn new(
+        format: OutputFormat,
+        value_type: ValueType,
+        order: ByteOrder,
+        colour: bool,
+    ) -> Self {
+        Self {
+            format,
+            value_type,
+            order,
+            colour,
+            csv_header_written: false,
+        }
+    }
+
+    /// Shows one frame; `shown` is the frame as the user gave it, for the table view.
+    pub fn write(
+        &mut self,
+        out: &mut dyn Write,
+        shown: &[u8],
+        report: &FrameReport,
+    ) -> io::Result<()> {
+        match self.format {
+            OutputFormat::Json => {
+                serde_json::to_writer(&mut *out, report)?;
+                out.write_all(b"\n")
+            }
+            OutputFormat::Values => self.write_values(out, &report.fields),
+            OutputFormat::Csv => self.write_csv(out, report),
+            OutputFormat::Table => self.write_table(out, shown, report),
+        }
+    }
+
+    fn typed(&self, registers: &[u16]) -> Vec<String> {
+        self.value_type
+            .read_all(registers, self.order)
+            .iter()
+            .map(ToString::to_string)
+            .collect()
+    }
+
+    fn value_strings(&self, values: &Values) -> Vec<String> {
+        match values {
+            Values::Registers(registers) => self.typed(registers),
+            Values::Bits(bits) => bits.iter().map(ToString::to_string).collect(),
+        }
+    }
+
+    fn write_values(&self, out: &mut dyn Write, fields: &Fields) -> io::Result<()> {
+        if let Some(values) = &fields.values {
+            for value in self.value_strings(values) {
+                writeln!(out, "{value}")?;
+            }
+        }
+        Ok(())
+    }
+
+    fn write_csv(&mut self, out: &mut dyn Write, report: &FrameReport) -> io::Result<()> {
+        if !self.csv_header_written {
+            writeln!(out, "{CSV_HEADER}")?;
+            self.csv_header_written = true;
+        }
+        let f = &report.fields;
+        let opt = |v: Option<String>| v.unwrap_or_default();
+        let values = f.values.as_ref().map(|v| self.value_strings(v).join(" "));
+        writeln!(
+            out,
+            "{},{},{},{},{},{},{},{},{},{},{}",
+            report.mode,
+            report.kind.name(),
+            report.slave,
+            report.function,
+            report.valid,
+            opt(f.address.map(|a| a.to_string())),
+            opt(f.reference.clone()),
+            opt(f.count.map(|c| c.to_string())),
+            csv_field(&opt(values)),
+            opt(f.exception.map(|e| e.to_string())),
+            csv_field(&opt(report.error.clone())),
+        )
+    }
+
+    fn write_table(
+        &self,
+        out: &mut dyn Write,
+        shown: &[u8],
+        report: &FrameReport,
+    ) -> io::Result<()> {
+        let mut table = new_table(self.colour);
+        let frame = if shown.first() == Some(&b':') {
+            String::from_utf8_lossy(shown).trim_end().to_string()
+        } else {
+            spaced_hex(shown)
+        };
+        table.add_row(vec!["frame".to_string(), frame]);
+        let mut kind = format!("{} {}", report.mode.to_uppercase(), report.kind.name());
+        if let Some(other) = &report.alternative {
+            kind.push_str(&format!(
+                " (also reads as a {}: --direction settles it)",
+                other.kind.name()
+            ));
+        }
+        table.add_row(vec!["kind".to_string(), kind]);
+        if let Some(transaction) = report.transaction {
+            table.add_row(vec!["transaction".to_string(), transaction.to_string()]);
+        }
+        let slave = match report.slave {
+            0 => "0 (broadcast)".to_string(),
+            s => s.to_string(),
+        };
+        table.add_row(vec!["slave".to_string(), slave]);
+        table.add_row(vec![
+            "function".to_string(),
+            format!("{:02X} {}", report.function, report.function_name),
+        ]);
+        for (name, value) in field_rows(&report.fields) {
+            table.add_row(vec![name.to_string(), value]);
+        }
+        if let Some(other) = &report.alternative {
+            for (name, value) in field_rows(&other.fields) {
+                table.add_row(vec![format!("as {}: {name}", other.kind.name()), value]);
+            }
+        }
+        match report.checksum {
+            Checksum::Crc { found, expected } if found == expected => {
+                let [lo, hi] = found.to_le_bytes();
+                table.add_row(vec![
+                    Cell::new("CRC"),
+                    self.ok(format!("{lo:02X} {hi:02X} ok")),
+                ]);
+            }
+            Checksum::Lrc { found, expected } if found == expected => {
+                table.add_row(vec![Cell::new("LRC"), self.ok(format!("{found:02X} ok"))]);
+            }
+            _ => {}
+        }
+        if let Some(error) = &report.error {
+            table.add_row(vec![Cell::new("error"), self.bad(error.clone())]);
+        }
+        writeln!(out, "{table}")?;
+        if let Some(values) = report.fields.values.as_ref().filter(|v| v.len() > 1) {
+            let table_of = Table::of_function(report.function);
+            writeln!(
+                out,
+                "{}",
+                self.values_table(values, report.fields.address, table_of)
+            )?;
+        }
+        Ok(())
+    }
+
+    fn ok(&self, text: String) -> Cell {
+        let cell = Cell::new(text);
+        if self.colour {
+            cell.fg(Color::Green)
+        } else {
+            cell
+        }
+    }
+
+    fn bad(&self, text: String) -> Cell {
+        let cell = Cell::new(text);
+        if self.colour {
+            cell.fg(Color::Red)
+        } else {
+            cell
+        }
+    }
+
+    /// A table of values; with a known start address each row carries its reference.
+    fn values_table(
+        &self,
+        values: &Values,
+        address: Option<u16>,
+        table_of: Option<Table>,
+    ) -> comfy_table::Table {
+        let mut table = new_table(self.colour);
+        let located = address.zip(table_of);
+        let place = |offset: usize| -> Vec<String> {
+            match located {
+                Some((start, table)) => {
+                    let address = u32::from(start) + offset as u32;
+                    match u16::try_from(address) {
+                        Ok(address) => vec![reference(table, address), address.to_string()],
+                        Err(_) => vec![String::new(), address.to_string()],
+                    }
+                }
+                None => vec![offset.to_string()],
+            }
+        };
+        let mut header: Vec<String> = match located {
+            Some(_) => vec!["ref".into(), "address".into()],
+            None => vec!["#".into()],
+        };
+        match values {
+            Values::Registers(registers) => {
+                header.extend(["hex".to_string(), self.value_type.name()]);
+                table.set_header(header);
+                let width = self.value_type.width();
+                for (i, chunk) in registers.chunks_exact(width).enumerate() {
+                    let hex = chunk
+                        .iter()
+                        .map(|r| format!("{r:04X}"))
+                        .collect::<Vec<_>>()
+                        .join(" ");
+                    let mut row = place(i * width);
+                    row.push(hex);
+                    row.push(self.value_type.read(chunk, self.order).to_string());
+                    table.add_row(row);
+                }
+            }
+            Values::Bits(bits) => {
+                // A row per byte as it stands in the frame: first bit on the left.
+                header.extend(["byte".to_string(), "bits (first to last)".to_string()]);
+                table.set_header(header);
+                for (i, chunk) in bits.chunks(8).enumerate() {
+                    let byte = chunk
+                        .iter()
+                        .enumerate()
+                        .fold(0u8, |byte, (bit, on)| byte | (*on & 1) << bit);
+                    let shown: Vec<String> = chunk.iter().map(ToString::to_string).collect();
+                    let mut row = place(i * 8);
+                    row.push(format!("{byte:02X}"));
+                    row.push(shown.join(" "));
+                    table.add_row(row);
+                }
+            }
+        }
+        table
+    }
+}
+
+/// The fields of a PDU as (name, shown value) rows, in the order the PDU carries them.
+fn field_rows(f: &Fields) -> Vec<(&'static str, String)> {
+    let mut rows = Vec::new();
+    if let (Some(address), Some(count)) = (f.read_address, f.read_count) {
+        rows.push((
+            "read address",
+            format!(
+                "{address} ({})",
+                reference(Table::HoldingRegisters, address)
+            ),
+        ));
+        rows.push(("read count", count.to_string()));
+    }
+    if let Some(address) = f.address {
+        rows.push(match &f.reference {
+            Some(reference) => ("address", format!("{address} ({reference})")),
+            None => ("address", address.to_string()),
+        });
+    }
+    if let Some(count) = f.count {
+        rows.push(("count", count.to_string()));
+    }
+    if let Some(values) = f.values.as_ref().filter(|v| v.len() == 1) {
+        rows.push(match values {
+            Values::Registers(r) => ("value", format!("{} (0x{:04X})", r[0], r[0])),
+            Values::Bits(b) => ("value", if b[0] == 1 { "ON" } else { "OFF" }.to_string()),
+        });
+    }
+    if let Some(mask) = f.and_mask {
+        rows.push(("AND mask", format!("{mask:04X}")));
+    }
+    if let Some(mask) = f.or_mask {
+        rows.push(("OR mask", format!("{mask:04X}")));
+    }
+    if let Some(sub) = f.sub_function {
+        rows.push(("sub-function", format!("{sub:04X}")));
+    }
+    if let Some(status) = f.status {
+        rows.push(("status", format!("{status:08b}")));
+    }
+    if let Some(code) = f.exception {
+        rows.push(("exception", ExceptionCode(code).to_string()));
+    }
+    if let Some(code) = f.read_code {
+        rows.push(("read code", format!("{code:02X}")));
+    }
+    if let Some(id) = f.object_id {
+        rows.push(("object id", format!("{id:02X}")));
+    }
+    if let Some(level) = f.conformity {
+        rows.push(("conformity", format!("{level:02X}")));
+    }
+    if let Some(more) = f.more_follows {
+        rows.push(("more follows", if more { "yes" } else { "no" }.to_string()));
+    }
+    if let Some(next) = f.next_object_id {
+        rows.push(("next object", format!("{next:02X}")));
+    }
+    for object in f.objects.iter().flatten() {
+        rows.push((
+            "object",
+            format!("{:02X} {}: {}", object.id, object.name, object.value),
+        ));
+    }
+    if let Some(data) = &f.data {
+        rows.push(("data", data.clone()));
+    }
+    if let Some(text) = &f.text {
+        rows.push(("text", text.clone()));
+    }
+    rows
+}

@@ -1,0 +1,52 @@
+//! How `encode` prints frames.
+
+use std::io::{self, Write};
+
+use serde::Serialize;
+
+use crate::cli::OutputFormat;
+use crate::codec::Mode;
+use crate::report::spaced_hex;
+
+#[derive(Serialize)]
+struct EncodedFrame<'a> {
+    mode: &'static str,
+    slave: u8,
+    function: u8,
+    frame: &'a str,
+}
+
+/// The text of a frame: an ASCII frame as its characters without CR LF, anything else as
+/// spaced upper-case hex.
+pub fn frame_text(mode: Mode, bytes: &[u8]) -> String {
+    match mode {
+        Mode::Ascii => {
+            String::from_utf8_lossy(bytes.strip_suffix(b"\r\n").unwrap_or(bytes)).into_owned()
+        }
+        Mode::Rtu | Mode::Tcp => spaced_hex(bytes),
+    }
+}
+
+pub fn write_frame(
+    out: &mut dyn Write,
+    format: OutputFormat,
+    mode: Mode,
+    slave: u8,
+    function: u8,
+    bytes: &[u8],
+) -> io::Result<()> {
+    let text = frame_text(mode, bytes);
+    match format {
+        OutputFormat::Json => {
+            let frame = EncodedFrame {
+                mode: mode.name(),
+                slave,
+                function,
+                frame: &text,
+            };
+            serde_json::to_writer(&mut *out, &frame)?;
+            writeln!(out)
+        }
+        OutputFormat::Table | OutputFormat::Values | OutputFormat::Csv => writeln!(out, "{text}"),
+    }
+}

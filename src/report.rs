@@ -1,0 +1,451 @@
+//! What a frame says, as plain fields: the one description that every output format
+//! (table, JSON, values, CSV) renders. Building it is logic; rendering lives in `output`.
+
+use serde::Serialize;
+
+use crate::address::{reference, Table};
+use crate::codec::function::{self, EXCEPTION_FLAG};
+use crate::codec::length::pdu_length;
+use crate::codec::pdu::DeviceIdentification;
+use crate::codec::{
+    bits, Checksum, Direction, Envelope, Exception, FrameError, Mode, Pdu, Reading, Request,
+    Response,
+};
+use crate::values::escape_text;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Kind {
+    Request,
+    Response,
+    Exception,
+}
+
+impl Kind {
+    pub fn name(self) -> &'static str {
+        match self {
+            Kind::Request => "request",
+            Kind::Response => "response",
+            Kind::Exception => "exception",
+        }
+    }
+}
+
+/// Register values as numbers, bits as 0/1.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+#[serde(untagged)]
+pub enum Values {
+    Registers(Vec<u16>),
+    Bits(Vec<u8>),
+}
+
+impl Values {
+    fn bits(bits: &[bool]) -> Values {
+        Values::Bits(bits.iter().map(|b| u8::from(*b)).collect())
+    }
+
+    pub fn len(&self) -> usize {
+        match self {
+            Values::Registers(v) => v.len(),
+            Values::Bits(v) => v.len(),
+        }
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct DeviceObjectField {
+    pub id: u8,
+    pub name: &'static str,
+    /// The object's bytes as text, control characters escaped.
+    pub value: String,
+}
+
+/// The fields a PDU carries; absent ones are left out of JSON.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Fields {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub address: Option<u16>,
+    #[serde(rename = "ref", skip_serializing_if = "Option::is_none")]
+    pub reference: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub count: Option<u16>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub values: Option<Values>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exception: Option<u8>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exception_name: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub read_address: Option<u16>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub read_count: Option<u16>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub and_mask: Option<u16>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub or_mask: Option<u16>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sub_function: Option<u16>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub status: Option<u8>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub read_code: Option<u8>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub object_id: Option<u8>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub conformity: Option<u8>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub more_follows: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub next_object_id: Option<u8>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub objects: Option<Vec<DeviceObjectField>>,
+    /// Bytes the frame carries without a layout mbtool knows, as spaced hex.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub data: Option<String>,
+    /// Text from the device (report server id), control characters escaped.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub text: Option<String>,
+}
+
+/// The other reading of a frame that reads both ways.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Alternative {
+    pub kind: Kind,
+    #[serde(flatten)]
+    pub fields: Fields,
+}
+
+/// One frame, described.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct FrameReport {
+    pub mode: &'static str,
+    pub kind: Kind,
+    pub slave: u8,
+    pub function: u8,
+    pub valid: bool,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub transaction: Option<u16>,
+    pub function_name: &'static str,
+    #[serde(flatten)]
+    pub fields: Fields,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<String>,
+    /// The checksum found and expected, for the table view.
+    #[serde(skip)]
+    pub checksum: Checksum,
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub ambiguous: bool,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub alternative: Option<Alternative>,
+}
+
+/// Formats bytes as spaced upper-case hex, the way mbtool prints every frame.
+pub fn spaced_hex(bytes: &[u8]) -> String {
+    const HEX: &[u8; 16] = b"0123456789ABCDEF";
+    let mut out = String::with_capacity(bytes.len() * 3);
+    for (i, byte) in bytes.iter().enumerate() {
+        if i > 0 {
+            out.push(' ');
+        }
+        out.push(char::from(HEX[usize::from(byte >> 4)]));
+        out.push(char::from(HEX[usize::from(byte & 0x0F)]));
+    }
+    out
+}
+
+fn with_reference(function: u8, address: u16) -> (Option<u16>, Option<String>) {
+    let reference = Table::of_function(function).map(|table| reference(table, address));
+    (Some(address), reference)
+}
+
+fn device_object_name(id: u8) -> &'static str {
+    match id {
+        0x00 => "VendorName",
+        0x01 => "ProductCode",
+        0x02 => "MajorMinorRevision",
+        0x03 => "VendorUrl",
+        0x04 => "ProductName",
+        0x05 => "ModelName",
+        0x06 => "UserApplicationName",
+        0x07..=0x7F => "reserved",
+        _ => "private",
+    }
+}
+
+fn request_fields(request: &Request) -> Fields {
+    let function = request.function();
+    let mut f = Fields::default();
+    match request {
+        Request::ReadCoils { address, quantity }
+        | Request::ReadDiscreteInputs { address, quantity }
+        | Request::ReadHoldingRegisters { address, quantity }
+        | Request::ReadInputRegisters { address, quantity } => {
+            (f.address, f.reference) = with_reference(function, *address);
+            f.count = Some(*quantity);
+        }
+        Request::WriteSingleCoil { address, value } => {
+            (f.address, f.reference) = with_reference(function, *address);
+            f.values = Some(Values::bits(&[*value]));
+        }
+        Request::WriteSingleRegister { address, value } => {
+            (f.address, f.reference) = with_reference(function, *address);
+            f.values = Some(Values::Registers(vec![*value]));
+        }
+        Request::WriteMultipleCoils { address, values } => {
+            (f.address, f.reference) = with_reference(function, *address);
+            f.count = u16::try_from(values.len()).ok();
+            f.values = Some(Values::bits(values));
+        }
+        Request::WriteMultipleRegisters { address, values } => {
+            (f.address, f.reference) = with_reference(function, *address);
+            f.count = u16::try_from(values.len()).ok();
+            f.values = Some(Values::Registers(values.clone()));
+        }
+        Request::ReadExceptionStatus | Request::ReportServerId => {}
+        Request::Diagnostics { sub_function, data } => {
+            f.sub_function = Some(*sub_function);
+            f.data = Some(spaced_hex(data));
+        }
+        Request::MaskWriteRegister {
+            address,
+            and_mask,
+            or_mask,
+        } => {
+            (f.address, f.reference) = with_reference(function, *address);
+            f.and_mask = Some(*and_mask);
+            f.or_mask = Some(*or_mask);
+        }
+        Request::ReadWriteMultipleRegisters {
+            read_address,
+            read_quantity,
+            write_address,
+            values,
+        } => {
+            f.read_address = Some(*read_address);
+            f.read_count = Some(*read_quantity);
+            (f.address, f.reference) = with_reference(function, *write_address);
+            f.count = u16::try_from(values.len()).ok();
+            f.values = Some(Values::Registers(values.clone()));
+        }
+        Request::ReadDeviceIdentification {
+            read_code,
+            object_id,
+        } => {
+            f.read_code = Some(*read_code);
+            f.object_id = Some(*object_id);
+        }
+        Request::Other { data, .. } => f.data = Some(spaced_hex(data)),
+    }
+    f
+}
+
+fn identification_fields(f: &mut Fields, id: &DeviceIdentification) {
+    f.read_code = Some(id.read_code);
+    f.conformity = Some(id.conformity);
+    f.more_follows = Some(id.more_follows);
+    f.next_object_id = Some(id.next_object_id);
+    f.objects = Some(
+        id.objects
+            .iter()
+            .map(|object| DeviceObjectField {
+                id: object.id,
+                name: device_object_name(object.id),
+                value: escape_text(&object.value),
+            })
+            .collect(),
+    );
+}
+
+fn response_fields(response: &Response) -> Fields {
+    let function = response.function();
+    let mut f = Fields::default();
+    match response {
+        Response::ReadCoils { packed } | Response::ReadDiscreteInputs { packed } => {
+            // Without the request the count is unknown: every bit of every byte is shown.
+            let all = bits::unpack(packed, packed.len() * 8);
+            f.count = u16::try_from(all.len()).ok();
+            f.values = Some(Values::bits(&all));
+        }
+        Response::ReadHoldingRegisters { values }
+        | Response::ReadInputRegisters { values }
+        | Response::ReadWriteMultipleRegisters { values } => {
+            f.count = u16::try_from(values.len()).ok();
+            f.values = Some(Values::Registers(values.clone()));
+        }
+        Response::WriteSingleCoil { address, value } => {
+            (f.address, f.reference) = with_reference(function, *address);
+            f.values = Some(Values::bits(&[*value]));
+        }
+        Response::WriteSingleRegister { address, value } => {
+            (f.address, f.reference) = with_reference(function, *address);
+            f.values = Some(Values::Registers(vec![*value]));
+        }
+        Response::ReadExceptionStatus { status } => f.status = Some(*status),
+        Response::Diagnostics { sub_function, data } => {
+            f.sub_function = Some(*sub_function);
+            f.data = Some(spaced_hex(data));
+        }
+        Response::WriteMultipleCoils { address, quantity }
+        | Response::WriteMultipleRegisters { address, quantity } => {
+            (f.address, f.reference) = with_reference(function, *address);
+            f.count = Some(*quantity);
+        }
+        Response::ReportServerId { data } => {
+            f.data = Some(spaced_hex(data));
+            f.text = Some(escape_text(data));
+        }
+        Response::MaskWriteRegister {
+            address,
+            and_mask,
+            or_mask,
+        } => {
+            (f.address, f.reference) = with_reference(function, *address);
+            f.and_mask = Some(*and_mask);
+            f.or_mask = Some(*or_mask);
+        }
+        Response::ReadDeviceIdentification(id) => identification_fields(&mut f, id),
+        Response::Other { data, .. } => f.data = Some(spaced_hex(data)),
+    }
+    f
+}
+
+fn exception_fields(exception: &Exception) -> Fields {
+    Fields {
+        exception: Some(exception.code.0),
+        exception_name: Some(exception.code.name()),
+        ..Fields::default()
+    }
+}
+
+/// The kind and fields of a typed PDU.
+pub fn describe_pdu(pdu: &Pdu) -> (Kind, Fields) {
+    match pdu {
+        Pdu::Request(request) => (Kind::Request, request_fields(request)),
+        Pdu::Response(response) => (Kind::Response, response_fields(response)),
+        Pdu::Exception(exception) => (Kind::Exception, exception_fields(exception)),
+    }
+}
+
+/// Describes a whole frame. `mode` and `direction` are detected when not given; a frame
+/// that fails its checksum is still described, marked not valid.
+pub fn describe_frame(
+    bytes: &[u8],
+    mode: Option<Mode>,
+    direction: Option<Direction>,
+) -> FrameReport {
+    let mode = mode.unwrap_or_else(|| Mode::detect(bytes));
+    let envelope = match Envelope::open(mode, bytes) {
+        Ok(envelope) => envelope,
+        Err(error) => return unreadable(mode, bytes, error),
+    };
+    let function = envelope.pdu.first().copied().unwrap_or_default();
+    let mut report = FrameReport {
+        mode: mode.name(),
+        kind: Kind::Request,
+        slave: envelope.slave,
+        function,
+        valid: true,
+        transaction: (mode == Mode::Tcp).then_some(envelope.transaction),
+        function_name: function::name(function),
+        fields: Fields::default(),
+        error: None,
+        checksum: envelope.checksum,
+        ambiguous: false,
+        alternative: None,
+    };
+    let reading = match direction {
+        Some(direction) => match Pdu::decode(&envelope.pdu, direction) {
+            Ok(pdu) => Reading::One(pdu),
+            Err(error) => {
+                report.kind = kind_of(function, direction);
+                report.valid = false;
+                report.error = Some(error.to_string());
+                return with_checksum(report, envelope.checksum);
+            }
+        },
+        None => Reading::infer(&envelope.pdu),
+    };
+    match reading {
+        Reading::One(pdu) => (report.kind, report.fields) = describe_pdu(&pdu),
+        Reading::Both { request, response } => {
+            report.kind = Kind::Request;
+            report.fields = request_fields(&request);
+            report.ambiguous = true;
+            report.alternative = Some(Alternative {
+                kind: Kind::Response,
+                fields: response_fields(&response),
+            });
+        }
+        Reading::Neither {
+            as_request,
+            as_response,
+        } => {
+            // Say what is wrong with the reading whose length fits the frame best.
+            let as_response_fits = matches!(
+                pdu_length(&envelope.pdu, Direction::Response),
+                crate::codec::length::Length::Known(n) if n == envelope.pdu.len()
+            );
+            let (kind, error) = if function & EXCEPTION_FLAG != 0 {
+                (Kind::Exception, as_response)
+            } else if as_response_fits {
+                (Kind::Response, as_response)
+            } else {
+                (Kind::Request, as_request)
+            };
+            report.kind = kind;
+            report.valid = false;
+            report.error = Some(error.to_string());
+        }
+    }
+    with_checksum(report, envelope.checksum)
+}
+
+fn kind_of(function: u8, direction: Direction) -> Kind {
+    match direction {
+        Direction::Request => Kind::Request,
+        Direction::Response if function & EXCEPTION_FLAG != 0 => Kind::Exception,
+        Direction::Response => Kind::Response,
+    }
+}
+
+/// A checksum mismatch outranks any other error: it means the bytes themselves are bad.
+fn with_checksum(mut report: FrameReport, checksum: Checksum) -> FrameReport {
+    if let Some(error) = checksum.error() {
+        report.valid = false;
+        report.error = Some(match report.error.take() {
+            Some(other) => format!("{error}; {other}"),
+            None => error.to_string(),
+        });
+    }
+    report
+}
+
+fn unreadable(mode: Mode, bytes: &[u8], error: FrameError) -> FrameReport {
+    let (slave, function) = match mode {
+        Mode::Tcp => (bytes.get(6), bytes.get(7)),
+        _ => (bytes.first(), bytes.get(1)),
+    };
+    let function = function.copied().unwrap_or_default();
+    FrameReport {
+        mode: mode.name(),
+        kind: if function & EXCEPTION_FLAG != 0 {
+            Kind::Exception
+        } else {
+            Kind::Request
+        },
+        slave: slave.copied().unwrap_or_default(),
+        function,
+        valid: false,
+        transaction: None,
+        function_name: function::name(function),
+        fields: Fields::default(),
+        error: Some(error.to_string()),
+        checksum: Checksum::None,
+        ambiguous: false,
+        alternative: None,
+    }
+}

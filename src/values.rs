@@ -1,0 +1,279 @@
+//! Register value types (`--type`) and the byte order of wide values (`--order`), for showing
+//! what was read and for turning what the user typed into registers to write.
+
+use std::fmt;
+
+use serde::Serialize;
+
+use crate::number::parse_int;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum ValueType {
+    #[default]
+    U16,
+    I16,
+    U32,
+    I32,
+    F32,
+    U64,
+    I64,
+    F64,
+    Hex,
+    Bin,
+    Ascii,
+}
+
+/// Byte order of a value wider than one register, A being the most significant byte.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+pub enum ByteOrder {
+    /// Big-endian: high word first, high byte first.
+    #[default]
+    #[value(name = "ABCD")]
+    Abcd,
+    /// Low word first (word swap), as many PLCs store 32-bit values.
+    #[value(name = "CDAB")]
+    Cdab,
+    /// High word first, bytes swapped within each word.
+    #[value(name = "BADC")]
+    Badc,
+    /// Little-endian.
+    #[value(name = "DCBA")]
+    Dcba,
+}
+
+/// A value read from registers, ready to be shown.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Value {
+    Unsigned(u64),
+    Signed(i64),
+    Float(f64),
+    Text(String),
+}
+
+impl fmt::Display for Value {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Value::Unsigned(v) => write!(f, "{v}"),
+            Value::Signed(v) => write!(f, "{v}"),
+            Value::Float(v) => write!(f, "{v}"),
+            Value::Text(v) => f.write_str(v),
+        }
+    }
+}
+
+impl ValueType {
+    /// The name as `--type` spells it.
+    pub fn name(self) -> String {
+        clap::ValueEnum::to_possible_value(&self)
+            .map(|value| value.get_name().to_string())
+            .unwrap_or_default()
+    }
+
+    /// How many registers one value takes.
+    pub fn width(self) -> usize {
+        match self {
+            ValueType::U32 | ValueType::I32 | ValueType::F32 => 2,
+            ValueType::U64 | ValueType::I64 | ValueType::F64 => 4,
+            _ => 1,
+        }
+    }
+
+    /// Reads one value from exactly `self.width()` registers.
+    pub fn read(self, registers: &[u16], order: ByteOrder) -> Value {
+        let mut bytes = [0u8; 8];
+        let len = registers.len().min(4) * 2;
+        for (pair, register) in bytes.chunks_exact_mut(2).zip(registers) {
+            pair.copy_from_slice(&register.to_be_bytes());
+        }
+        reorder(&mut bytes[..len], order);
+        let mut wide = [0u8; 8];
+        wide[8 - len..].copy_from_slice(&bytes[..len]);
+        let unsigned = u64::from_be_bytes(wide);
+        match self {
+            ValueType::U16 | ValueType::U32 | ValueType::U64 => Value::Unsigned(unsigned),
+            ValueType::I16 => Value::Signed(i64::from(unsigned as u16 as i16)),
+            ValueType::I32 => Value::Signed(i64::from(unsigned as u32 as i32)),
+            ValueType::I64 => Value::Signed(unsigned as i64),
+            ValueType::F32 => Value::Float(f64::from(f32::from_bits(unsigned as u32))),
+            ValueType::F64 => Value::Float(f64::from_bits(unsigned)),
+            ValueType::Hex => Value::Text(format!("0x{unsigned:04X}")),
+            ValueType::Bin => Value::Text(format!("0b{unsigned:016b}")),
+            ValueType::Ascii => Value::Text(escape_text(&bytes[..len])),
+        }
+    }
+
+    /// Reads every value of `registers`; a short tail that fills no whole value is left out.
+    pub fn read_all(self, registers: &[u16], order: ByteOrder) -> Vec<Value> {
+        registers
+            .chunks_exact(self.width())
+            .map(|chunk| self.read(chunk, order))
+            .collect()
+    }
+
+    /// Turns a value typed by the user into registers; `Err` says why it does not fit.
+    pub fn parse(self, text: &str, order: ByteOrder) -> Result<Vec<u16>, String> {
+        let bytes: Vec<u8> = match self {
+            ValueType::F32 => parse_float(text)
+                .map(|v| (v as f32).to_be_bytes().to_vec())
+                .ok_or_else(|| format!("'{text}' is not a number for type f32"))?,
+            ValueType::F64 => parse_float(text)
+                .map(|v| v.to_be_bytes().to_vec())
+                .ok_or_else(|| format!("'{text}' is not a number for type f64"))?,
+            ValueType::Ascii => {
+                if !text.is_ascii() {
+                    return Err(format!("'{text}' has characters outside ASCII"));
+                }
+                let mut bytes = text.as_bytes().to_vec();
+                if bytes.len() % 2 == 1 {
+                    bytes.push(0);
+                }
+                bytes
+            }
+            integer => {
+                let bits = 16 * integer.width() as u32;
+                let value = parse_int(text).map_err(|e| e.to_string())?;
+                // Negative values are stored as two's complement, so an unsigned type takes
+                // the signed range too.
+                let min = -(1i128 << (bits - 1));
+                let max = (1i128 << bits) - 1;
+                if value < min || value > max {
+                    return Err(format!(
+                        "{text} does not fit in {bits} bits ({min} to {max})"
+                    ));
+                }
+                let raw = (value as u64) & (u64::MAX >> (64 - bits));
+                raw.to_be_bytes()[(8 - bits as usize / 8)..].to_vec()
+            }
+        };
+        let mut bytes = bytes;
+        if self == ValueType::Ascii {
+            // A string is a run of 16-bit words: only the swap within a word applies.
+            if matches!(order, ByteOrder::Badc | ByteOrder::Dcba) {
+                reorder(&mut bytes, ByteOrder::Badc);
+            }
+        } else {
+            reorder(&mut bytes, order);
+        }
+        Ok(bytes
+            .chunks_exact(2)
+            .map(|pair| u16::from_be_bytes([pair[0], pair[1]]))
+            .collect())
+    }
+}
+
+fn parse_float(text: &str) -> Option<f64> {
+    text.trim()
+        .parse::<f64>()
+        .ok()
+        .or_else(|| parse_int(text).ok().map(|v| v as f64))
+}
+
+/// Puts bytes in wire order `order` into big-endian order, or back: each order is its own
+/// inverse. One register is never reordered by the word orders.
+fn reorder(bytes: &mut [u8], order: ByteOrder) {
+    match order {
+        ByteOrder::Abcd => {}
+        ByteOrder::Dcba => bytes.reverse(),
+        ByteOrder::Badc => bytes.chunks_exact_mut(2).for_each(|pair| pair.swap(0, 1)),
+        ByteOrder::Cdab => {
+            let words = bytes.len() / 2;
+            for i in 0..words / 2 {
+                let (a, b) = (2 * i, 2 * (words - 1 - i));
+                bytes.swap(a, b);
+                bytes.swap(a + 1, b + 1);
+            }
+        }
+    }
+}
+
+/// Text from a device, safe to print: control and non-ASCII bytes become escapes, so a
+/// device can never move the cursor or change the colours of the terminal.
+pub fn escape_text(bytes: &[u8]) -> String {
+    let mut out = String::with_capacity(bytes.len());
+    for byte in bytes {
+        match byte {
+            b'\\' => out.push_str("\\\\"),
+            0x20..=0x7E => out.push(char::from(*byte)),
+            0 => out.push_str("\\0"),
+            b'\n' => out.push_str("\\n"),
+            b'\r' => out.push_str("\\r"),
+            b'\t' => out.push_str("\\t"),
+            other => out.push_str(&format!("\\x{other:02X}")),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn f32_in_every_order_round_trips() {
+        for order in [
+            ByteOrder::Abcd,
+            ByteOrder::Cdab,
+            ByteOrder::Badc,
+            ByteOrder::Dcba,
+        ] {
+            let registers = ValueType::F32.parse("3.14", order).unwrap();
+            assert_eq!(
+                ValueType::F32.read(&registers, order),
+                Value::Float(f64::from(3.14f32))
+            );
+        }
+    }
+
+    #[test]
+    fn f32_orders_on_the_wire() {
+        // 3.14f32 = 0x4048F5C3
+        assert_eq!(
+            ValueType::F32.parse("3.14", ByteOrder::Abcd),
+            Ok(vec![0x4048, 0xF5C3])
+        );
+        assert_eq!(
+            ValueType::F32.parse("3.14", ByteOrder::Cdab),
+            Ok(vec![0xF5C3, 0x4048])
+        );
+        assert_eq!(
+            ValueType::F32.parse("3.14", ByteOrder::Badc),
+            Ok(vec![0x4840, 0xC3F5])
+        );
+        assert_eq!(
+            ValueType::F32.parse("3.14", ByteOrder::Dcba),
+            Ok(vec![0xC3F5, 0x4840])
+        );
+    }
+
+    #[test]
+    fn negative_values_are_twos_complement() {
+        assert_eq!(
+            ValueType::I16.parse("-1", ByteOrder::Abcd),
+            Ok(vec![0xFFFF])
+        );
+        assert_eq!(
+            ValueType::U16.parse("-2", ByteOrder::Abcd),
+            Ok(vec![0xFFFE])
+        );
+        assert_eq!(
+            ValueType::I16.read(&[0xFFFE], ByteOrder::Abcd),
+            Value::Signed(-2)
+        );
+        assert!(ValueType::U16.parse("65536", ByteOrder::Abcd).is_err());
+        assert!(ValueType::U16.parse("-32769", ByteOrder::Abcd).is_err());
+    }
+
+    #[test]
+    fn u64_word_swap() {
+        let registers = ValueType::U64
+            .parse("0x0102030405060708", ByteOrder::Cdab)
+            .unwrap();
+        assert_eq!(registers, [0x0708, 0x0506, 0x0304, 0x0102]);
+    }
+
+    #[test]
+    fn device_text_is_escaped() {
+        assert_eq!(escape_text(b"PLC\x1b[2J\n"), "PLC\\x1B[2J\\n");
+    }
+}
