@@ -202,80 +202,71 @@ fn write_plan(
     }
     let requests = if span.table == Table::Coils {
         register_type(span.table, options)?;
-        let bits = parse_coils(values)?;
-        check_span_count(&span, bits.len())?;
-        check_end(&what, span.address, bits.len() as u32)?;
-        let style = style.unwrap_or(if bits.len() == 1 {
-            WriteStyle::Single
-        } else {
-            WriteStyle::Multiple
-        });
-        match style {
-            WriteStyle::Single => bits
-                .iter()
-                .zip(span.address..)
-                .map(|(value, address)| Request::WriteSingleCoil {
-                    address,
-                    value: *value,
-                })
-                .collect(),
-            WriteStyle::Multiple => {
-                let max = per_request(limits::MAX_WRITE_BITS, options, 1)?;
-                let mut offset = 0usize;
-                runs(span.address, bits.len() as u32, max, 1)
-                    .into_iter()
-                    .map(|(address, quantity)| {
-                        let chunk = &bits[offset..offset + usize::from(quantity)];
-                        offset += usize::from(quantity);
-                        Request::WriteMultipleCoils {
-                            address,
-                            values: chunk.to_vec(),
-                        }
-                    })
-                    .collect()
-            }
-        }
+        let coils = WriteValues {
+            values: parse_coils(values)?,
+            unit: 1,
+            limit: limits::MAX_WRITE_BITS,
+            single: |address, value| Request::WriteSingleCoil { address, value },
+            multiple: |address, values| Request::WriteMultipleCoils { address, values },
+        };
+        coils.requests(&span, style, options)?
     } else {
-        let registers = parse_registers(values, options)?;
-        check_span_count(&span, registers.len())?;
-        check_end(&what, span.address, registers.len() as u32)?;
-        let style = style.unwrap_or(if registers.len() == 1 {
-            WriteStyle::Single
-        } else {
-            WriteStyle::Multiple
-        });
-        match style {
-            WriteStyle::Single => registers
-                .iter()
-                .zip(span.address..)
-                .map(|(value, address)| Request::WriteSingleRegister {
-                    address,
-                    value: *value,
-                })
-                .collect(),
-            WriteStyle::Multiple => {
-                let width = options.value_type.width() as u16;
-                let max = per_request(limits::MAX_WRITE_REGISTERS, options, width)?;
-                let mut offset = 0usize;
-                runs(span.address, registers.len() as u32, max, width)
-                    .into_iter()
-                    .map(|(address, quantity)| {
-                        let chunk = &registers[offset..offset + usize::from(quantity)];
-                        offset += usize::from(quantity);
-                        Request::WriteMultipleRegisters {
-                            address,
-                            values: chunk.to_vec(),
-                        }
-                    })
-                    .collect()
-            }
-        }
+        let registers = WriteValues {
+            values: parse_registers(values, options)?,
+            unit: options.value_type.width() as u16,
+            limit: limits::MAX_WRITE_REGISTERS,
+            single: |address, value| Request::WriteSingleRegister { address, value },
+            multiple: |address, values| Request::WriteMultipleRegisters { address, values },
+        };
+        registers.requests(&span, style, options)?
     };
     Ok(Plan {
         slave,
         requests,
         reads: None,
     })
+}
+
+/// Values to write to one table, and how that table's write requests are made.
+struct WriteValues<T> {
+    values: Vec<T>,
+    /// Registers per value: a request never cuts a value in two.
+    unit: u16,
+    limit: u16,
+    single: fn(u16, T) -> Request,
+    multiple: fn(u16, Vec<T>) -> Request,
+}
+
+impl<T: Copy> WriteValues<T> {
+    fn requests(
+        &self,
+        span: &Span,
+        style: Option<WriteStyle>,
+        options: &PlanOptions,
+    ) -> Result<Vec<Request>> {
+        let count = self.values.len();
+        check_span_count(span, count)?;
+        check_end(&span.to_string(), span.address, count as u32)?;
+        let single = matches!(style, Some(WriteStyle::Single)) || (style.is_none() && count == 1);
+        if single {
+            return Ok(self
+                .values
+                .iter()
+                .zip(span.address..)
+                .map(|(value, address)| (self.single)(address, *value))
+                .collect());
+        }
+        let max = per_request(self.limit, options, self.unit)?;
+        let mut rest = self.values.as_slice();
+        Ok(runs(span.address, count as u32, max, self.unit)
+            .into_iter()
+            .map(|(address, quantity)| {
+                let (chunk, after) = rest.split_at(usize::from(quantity));
+                rest = after;
+                (self.multiple)(address, chunk.to_vec())
+            })
+            .collect())
+    }
 }
 
 /// A range given to a write must hold exactly the values given.

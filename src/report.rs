@@ -384,21 +384,28 @@ pub fn describe_frame(
             as_request,
             as_response,
         } => {
-            // Say what is wrong with the reading whose length fits the frame best.
+            // The kind shown is the reading whose length fits the frame; the error gives
+            // what is wrong with both readings, since either may be what was meant.
             let as_response_fits = matches!(
                 pdu_length(&envelope.pdu, Direction::Response),
                 crate::codec::length::Length::Known(n) if n == envelope.pdu.len()
             );
             let (kind, error) = if function & EXCEPTION_FLAG != 0 {
-                (Kind::Exception, as_response)
-            } else if as_response_fits {
-                (Kind::Response, as_response)
+                (Kind::Exception, as_response.to_string())
             } else {
-                (Kind::Request, as_request)
+                let kind = if as_response_fits {
+                    Kind::Response
+                } else {
+                    Kind::Request
+                };
+                (
+                    kind,
+                    format!("not a valid request ({as_request}) nor response ({as_response})"),
+                )
             };
             report.kind = kind;
             report.valid = false;
-            report.error = Some(error.to_string());
+            report.error = Some(error);
         }
     }
     with_checksum(report, envelope.checksum)

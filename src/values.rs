@@ -217,10 +217,10 @@ mod tests {
             ByteOrder::Badc,
             ByteOrder::Dcba,
         ] {
-            let registers = ValueType::F32.parse("3.14", order).unwrap();
+            let registers = ValueType::F32.parse("-1234.5", order).unwrap();
             assert_eq!(
                 ValueType::F32.read(&registers, order),
-                Value::Float(f64::from(3.14f32))
+                Value::Float(-1234.5)
             );
         }
     }

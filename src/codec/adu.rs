@@ -211,7 +211,10 @@ fn open_tcp(frame: &[u8]) -> Result<Envelope<'_>, FrameError> {
                 return Err(FrameError::MbapProtocol(protocol));
             }
             let declared = usize::from(u16::from_be_bytes([*l_hi, *l_lo]));
-            if declared != pdu.len() + 1 || pdu.is_empty() {
+            if declared < 2 {
+                return Err(FrameError::MbapTooShort(declared));
+            }
+            if declared != pdu.len() + 1 {
                 return Err(FrameError::MbapLength {
                     declared,
                     actual: pdu.len() + 1,

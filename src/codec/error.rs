@@ -63,6 +63,8 @@ pub enum FrameError {
     AsciiNotHex(char),
     #[error("MBAP protocol id is {0}, not 0 (Modbus)")]
     MbapProtocol(u16),
+    #[error("MBAP length {0} is too short: it counts the unit id and the PDU, at least 2 bytes")]
+    MbapTooShort(usize),
     #[error("MBAP length says {declared} bytes follow, the frame has {actual}")]
     MbapLength { declared: usize, actual: usize },
     #[error("{0}")]

@@ -2,6 +2,7 @@
 //! knows frame layouts, and the master, sniffer, simulator and `decode` all go through it.
 
 pub mod adu;
+pub mod answer;
 pub mod bits;
 pub mod checksum;
 pub mod error;

@@ -407,11 +407,7 @@ impl Request {
                     .u8(*object_id);
             }
             Request::Other { function, data } => {
-                if function & EXCEPTION_FLAG != 0 || *function == 0 {
-                    return Err(PduError::BadField(
-                        "function codes 00 and 80-FF are not requests",
-                    ));
-                }
+                check_normal_function(*function)?;
                 w.bytes(data);
             }
         }
@@ -421,6 +417,7 @@ impl Request {
     /// Reads a request PDU.
     pub fn decode(pdu: &[u8]) -> Result<Request, PduError> {
         let mut r = Reader::new(pdu)?;
+        check_normal_function(r.function)?;
         let request = match r.function {
             READ_COILS | READ_DISCRETE_INPUTS => {
                 let (address, quantity) = (r.u16()?, r.u16()?);
@@ -500,11 +497,6 @@ impl Request {
                     object_id: r.u8()?,
                 }
             }
-            function if function & EXCEPTION_FLAG != 0 || function == 0 => {
-                return Err(PduError::BadField(
-                    "function codes 00 and 80-FF are not requests",
-                ))
-            }
             function => Request::Other {
                 function,
                 data: r.rest().to_vec(),
@@ -514,6 +506,16 @@ impl Request {
         check_pdu_len(pdu.len())?;
         Ok(request)
     }
+}
+
+/// Requests and normal responses carry function codes 01-7F; 80-FF mark exceptions.
+fn check_normal_function(function: u8) -> Result<(), PduError> {
+    if function == 0 || function & EXCEPTION_FLAG != 0 {
+        return Err(PduError::BadField(
+            "function codes 00 and 80-FF are not requests or normal responses",
+        ));
+    }
+    Ok(())
 }
 
 fn check_pdu_len(len: usize) -> Result<(), PduError> {
@@ -650,11 +652,7 @@ impl Response {
                 }
             }
             Response::Other { function, data } => {
-                if function & EXCEPTION_FLAG != 0 || *function == 0 {
-                    return Err(PduError::BadField(
-                        "function codes 00 and 80-FF are not normal responses",
-                    ));
-                }
+                check_normal_function(*function)?;
                 w.bytes(data);
             }
         }
@@ -664,6 +662,7 @@ impl Response {
     /// Reads a normal response PDU.
     pub fn decode(pdu: &[u8]) -> Result<Response, PduError> {
         let mut r = Reader::new(pdu)?;
+        check_normal_function(r.function)?;
         let response = match r.function {
             READ_COILS | READ_DISCRETE_INPUTS => {
                 let packed = r.counted_rest()?.to_vec();
@@ -762,11 +761,6 @@ impl Response {
                     next_object_id,
                     objects,
                 })
-            }
-            function if function & EXCEPTION_FLAG != 0 || function == 0 => {
-                return Err(PduError::BadField(
-                    "function codes 00 and 80-FF are not normal responses",
-                ))
             }
             function => Response::Other {
                 function,

@@ -1,0 +1,87 @@
+//! Codec throughput: frames decoded and described per second, without any I/O.
+//!
+//! cargo bench --bench codec
+
+use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
+use mbtool::codec::stream::StreamDecoder;
+use mbtool::codec::{Direction, Frame, Mode, Pdu, Request};
+use mbtool::report::describe_frame;
+
+/// The worked frames of the manuals: requests and answers of functions 01-06 and 16.
+const FRAMES: &[&[u8]] = &[
+    &[0x11, 0x01, 0x00, 0x13, 0x00, 0x25, 0x0E, 0x84],
+    &[0x11, 0x01, 0x05, 0xCD, 0x6B, 0xB2, 0x0E, 0x1B, 0x45, 0xE6],
+    &[0x11, 0x02, 0x00, 0xC4, 0x00, 0x16, 0xBA, 0xA9],
+    &[0x11, 0x02, 0x03, 0xAC, 0xDB, 0x35, 0x20, 0x18],
+    &[0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87],
+    &[
+        0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64, 0xC8, 0xBA,
+    ],
+    &[0x11, 0x04, 0x00, 0x08, 0x00, 0x01, 0xB2, 0x98],
+    &[0x11, 0x04, 0x02, 0x00, 0x0A, 0xF8, 0xF4],
+    &[0x11, 0x05, 0x00, 0xAC, 0xFF, 0x00, 0x4E, 0x8B],
+    &[0x11, 0x06, 0x00, 0x01, 0x00, 0x03, 0x9A, 0x9B],
+    &[
+        0x11, 0x10, 0x00, 0x01, 0x00, 0x02, 0x04, 0x00, 0x0A, 0x01, 0x02, 0xC6, 0xF0,
+    ],
+    &[0x11, 0x10, 0x00, 0x01, 0x00, 0x02, 0x12, 0x98],
+];
+
+fn codec(c: &mut Criterion) {
+    let mut group = c.benchmark_group("codec");
+    group.throughput(Throughput::Elements(FRAMES.len() as u64));
+
+    // Direction known, as the master and the simulator decode.
+    let answer = FRAMES[5];
+    group.bench_function("decode read-holding answer x12", |b| {
+        b.iter(|| {
+            for _ in FRAMES {
+                std::hint::black_box(Frame::decode(Mode::Rtu, answer, Direction::Response).ok());
+            }
+        })
+    });
+
+    // Direction inferred and every field described, as `decode` does.
+    group.bench_function("describe the 12 worked frames", |b| {
+        b.iter(|| {
+            for frame in FRAMES {
+                std::hint::black_box(describe_frame(frame, None, None));
+            }
+        })
+    });
+
+    let request = FRAMES[4];
+    let decoder = StreamDecoder::new(Mode::Rtu, Direction::Request);
+    group.bench_function("stream-decode read-holding request x12", |b| {
+        b.iter(|| {
+            for _ in FRAMES {
+                std::hint::black_box(decoder.decode(request));
+            }
+        })
+    });
+
+    let frame = Frame {
+        mode: Mode::Rtu,
+        slave: 17,
+        transaction: 0,
+        pdu: Pdu::Request(Request::ReadHoldingRegisters {
+            address: 107,
+            quantity: 3,
+        }),
+    };
+    group.bench_function("encode read-holding request x12", |b| {
+        b.iter_batched(
+            || frame.clone(),
+            |frame| {
+                for _ in FRAMES {
+                    std::hint::black_box(frame.encode().ok());
+                }
+            },
+            BatchSize::SmallInput,
+        )
+    });
+    group.finish();
+}
+
+criterion_group!(benches, codec);
+criterion_main!(benches);

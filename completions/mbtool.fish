@@ -1,0 +1,1004 @@
+# Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
+function __fish_mbtool_global_optspecs
+    string join \n p/port= m/mode= o/output= json pdu-addresses t/type= order= max-per-request= h/help V/version
+end
+
+function __fish_mbtool_needs_command
+    # Figure out if the current invocation already has a command.
+    set -l cmd (commandline -opc)
+    set -e cmd[1]
+    argparse -s (__fish_mbtool_global_optspecs) -- $cmd 2>/dev/null
+    or return
+    if set -q argv[1]
+        # Also print the command, so this can be used to figure out what it is.
+        echo $argv[1]
+        return 1
+    end
+    return 0
+end
+
+function __fish_mbtool_using_subcommand
+    set -l cmd (__fish_mbtool_needs_command)
+    test -z "$cmd"
+    and return 1
+    contains -- $cmd[1] $argv
+end
+
+complete -c mbtool -n "__fish_mbtool_needs_command" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_needs_command" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_needs_command" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_needs_command" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_needs_command" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_needs_command" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_needs_command" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-discrete-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-holding-registers" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-input-regs" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "decode" -d 'Decode Modbus frames given as arguments, or one per line on standard input'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "encode" -d 'Print the frame that a request command would send, without sending it'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l dir -d 'The folder that receives completions/ and man/' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers' -r -f -a "5\t''
+6\t''
+15\t''
+16\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l direction -d 'Read every frame as a request or as a response instead of inferring it' -r -f -a "request\t''
+response\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-discrete-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-holding-registers" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-input-regs" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers' -r -f -a "5\t''
+6\t''
+15\t''
+16\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "decode" -d 'Decode Modbus frames given as arguments, or one per line on standard input'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "encode" -d 'Print the frame that a request command would send, without sending it'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "raw" -d 'Send any PDU and decode the answer'

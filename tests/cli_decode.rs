@@ -1,0 +1,385 @@
+//! `mbtool decode` as a user meets it: input spellings, nasty input, exit codes, output.
+
+use std::io::{BufRead, BufReader, Write};
+use std::process::{Command as Process, Stdio};
+
+use assert_cmd::Command;
+use mbtool::codec::checksum::crc16;
+
+fn mbtool() -> Command {
+    let mut cmd = Command::cargo_bin("mbtool").expect("the binary is built");
+    cmd.env_remove("MBTOOL_PORT")
+        .env_remove("MBTOOL_MODE")
+        .env("NO_COLOR", "1");
+    cmd
+}
+
+/// An RTU frame with its CRC, as spaced hex.
+fn rtu(body: &[u8]) -> String {
+    let mut frame = body.to_vec();
+    frame.extend_from_slice(&crc16(body).to_le_bytes());
+    frame
+        .iter()
+        .map(|b| format!("{b:02X}"))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+struct Run {
+    code: i32,
+    stdout: String,
+    stderr: String,
+}
+
+fn decode(args: &[&str], stdin: &[u8]) -> Run {
+    let output = mbtool()
+        .arg("decode")
+        .args(args)
+        .write_stdin(stdin)
+        .output()
+        .unwrap();
+    Run {
+        code: output.status.code().unwrap_or(-1),
+        stdout: String::from_utf8_lossy(&output.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&output.stderr).into_owned(),
+    }
+}
+
+fn json_lines(stdout: &str) -> Vec<serde_json::Value> {
+    stdout
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("one JSON object per line"))
+        .collect()
+}
+
+/// Every diagnostic is one line starting `mbtool: `.
+fn assert_one_line_errors(stderr: &str) {
+    for line in stderr.lines() {
+        assert!(
+            line.starts_with("mbtool: "),
+            "not an mbtool message: {line:?}"
+        );
+    }
+}
+
+/// Decodes one RTU frame as JSON and returns its object and the exit status.
+fn decode_one(body_with_crc: &str) -> (serde_json::Value, i32) {
+    let run = decode(&["--json"], body_with_crc.as_bytes());
+    assert_one_line_errors(&run.stderr);
+    let mut lines = json_lines(&run.stdout);
+    assert_eq!(lines.len(), 1, "{}", run.stdout);
+    (lines.remove(0), run.code)
+}
+
+#[test]
+fn every_input_spelling_gives_the_same_frame() {
+    let spellings = [
+        "11 03 00 6B 00 03 76 87",
+        "1103006B00037687",
+        "0x11,0x03,0x00,0x6B,0x00,0x03,0x76,0x87",
+        ":1103006B00037E",
+        "3A 31 31 30 33 30 30 36 42 30 30 30 33 37 45 0D 0A",
+    ];
+    for spelling in spellings {
+        let (json, code) = decode_one(spelling);
+        assert_eq!(code, 0, "{spelling}");
+        assert_eq!(json["slave"], 17, "{spelling}");
+        assert_eq!(json["function"], 3, "{spelling}");
+        assert_eq!(json["kind"], "request", "{spelling}");
+        assert_eq!(json["address"], 107, "{spelling}");
+        assert_eq!(json["ref"], "400108", "{spelling}");
+        assert_eq!(json["count"], 3, "{spelling}");
+    }
+}
+
+#[test]
+fn a_tcp_frame_is_detected() {
+    let (json, code) = decode_one("00 01 00 00 00 06 11 03 00 6B 00 03");
+    assert_eq!(code, 0);
+    assert_eq!(json["mode"], "tcp");
+    assert_eq!(json["slave"], 17);
+    assert_eq!(json["transaction"], 1);
+}
+
+#[test]
+fn crlf_lf_and_cr_line_ends_and_empty_lines() {
+    let input =
+        b"11 03 00 6B 00 03 76 87\r\n\n11 03 00 6B 00 03 76 87\r11 03 00 6B 00 03 76 87\n\r\n";
+    let run = decode(&["--json"], input);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert_eq!(json_lines(&run.stdout).len(), 3);
+}
+
+#[test]
+fn a_bad_crc_names_both_crcs_and_exits_4() {
+    let run = decode(&["--json"], b"11 03 00 6B 00 03 76 88\n");
+    assert_eq!(run.code, 4);
+    let json = &json_lines(&run.stdout)[0];
+    assert_eq!(json["valid"], false);
+    let error = json["error"].as_str().unwrap();
+    assert!(
+        error.contains("76 88") && error.contains("76 87"),
+        "{error}"
+    );
+    assert_one_line_errors(&run.stderr);
+}
+
+#[test]
+fn a_line_that_is_not_hex_exits_2_and_outranks_a_bad_crc() {
+    let run = decode(
+        &[],
+        b"11 03 00 6B 00 03 76 88\n110\nh\xC3\xA9llo\n11 03 00 6B 00 03 76 87\n",
+    );
+    assert_eq!(run.code, 2);
+    assert!(
+        run.stderr.contains("line 2: odd number of hex digits"),
+        "{}",
+        run.stderr
+    );
+    assert!(run.stderr.contains("line 3:"), "{}", run.stderr);
+    assert_one_line_errors(&run.stderr);
+    // The good frame after the bad lines is still decoded.
+    assert!(run.stdout.contains("400108"));
+}
+
+#[test]
+fn nasty_frames_are_reported_not_trusted() {
+    let cases: Vec<(&str, String, &str)> = vec![
+        ("colon alone", ":".to_string(), "too short"),
+        (
+            "byte count larger than the frame",
+            rtu(&[0x11, 0x03, 0x08, 0x02, 0x2B, 0x00, 0x00]),
+            "PDU bytes",
+        ),
+        (
+            "quantity 0",
+            rtu(&[0x11, 0x03, 0x00, 0x6B, 0x00, 0x00]),
+            "quantity 0",
+        ),
+        (
+            "quantity 0xFFFF",
+            rtu(&[0x11, 0x03, 0x00, 0x00, 0xFF, 0xFF]),
+            "quantity 65535",
+        ),
+        (
+            "address + quantity past 65535",
+            rtu(&[0x11, 0x01, 0xFF, 0xF0, 0x00, 0x20]),
+            "past 65535",
+        ),
+        ("300-byte frame", rtu(&[0x11; 298]), "longer than the 256"),
+        (
+            "CVE-2019-14462: byte count disagrees with the quantity",
+            rtu(&[0x11, 0x10, 0x00, 0x01, 0x00, 0x02, 0x06, 0, 1, 0, 2, 0, 3]),
+            "byte count 6 does not match quantity 2",
+        ),
+        (
+            "CVE-2019-14463: coil byte count disagrees with the quantity",
+            rtu(&[0x11, 0x0F, 0x00, 0x13, 0x00, 0x0A, 0x01, 0xCD]),
+            "byte count 1 does not match quantity 10",
+        ),
+        (
+            "CVE-2022-0367: function 23 writes past the end",
+            rtu(&[
+                0x11, 0x17, 0x00, 0x00, 0x00, 0x01, 0xFF, 0xFF, 0x00, 0x02, 0x04, 0, 1, 0, 2,
+            ]),
+            "past 65535",
+        ),
+        ("bare function 03", rtu(&[0x11, 0x03]), "needs"),
+        (
+            "exception with extra bytes",
+            rtu(&[0x11, 0x83, 0x02, 0x00]),
+            "carries 2 PDU bytes",
+        ),
+        (
+            "MBAP length too short",
+            "00 01 00 00 00 01 11".to_string(),
+            "too short",
+        ),
+        (
+            "MBAP length too long",
+            "00 01 00 00 00 FF 11 03 00 6B 00 03".to_string(),
+            "MBAP length",
+        ),
+    ];
+    for (name, frame, says) in cases {
+        let mode: &[&str] = if name.starts_with("MBAP") {
+            &["--mode", "tcp"]
+        } else {
+            &[]
+        };
+        let mut args = vec!["--json"];
+        args.extend_from_slice(mode);
+        let run = decode(&args, frame.as_bytes());
+        assert_eq!(run.code, 4, "{name}: {}", run.stderr);
+        let json = &json_lines(&run.stdout)[0];
+        assert_eq!(json["valid"], false, "{name}");
+        let error = json["error"].as_str().unwrap_or_default();
+        assert!(error.contains(says), "{name}: {error}");
+    }
+}
+
+#[test]
+fn bare_function_codes_07_and_17_are_valid_requests() {
+    for function in [0x07, 0x11] {
+        let (json, code) = decode_one(&rtu(&[0x11, function]));
+        assert_eq!(code, 0);
+        assert_eq!(json["kind"], "request");
+        assert_eq!(json["function"], function);
+    }
+}
+
+#[test]
+fn an_exception_is_named() {
+    let (json, code) = decode_one(&rtu(&[0x11, 0x83, 0x02]));
+    assert_eq!(code, 0);
+    assert_eq!(json["kind"], "exception");
+    assert_eq!(json["function"], 0x83);
+    assert_eq!(json["exception"], 2);
+    assert_eq!(json["exception_name"], "illegal data address");
+}
+
+#[test]
+fn a_frame_that_reads_both_ways_says_so_and_direction_settles_it() {
+    // 8 bytes, function 01, third byte 3: a request for 10 coils at 0x0300, or an answer
+    // carrying 3 bytes of bits.
+    let frame = rtu(&[0x11, 0x01, 0x03, 0x00, 0x00, 0x0A]);
+    let (json, _) = decode_one(&frame);
+    assert_eq!(json["ambiguous"], true);
+    assert_eq!(json["kind"], "request");
+    assert_eq!(json["alternative"]["kind"], "response");
+    let table = decode(&[&frame], b"");
+    assert!(
+        table.stdout.contains("also reads as a response"),
+        "{}",
+        table.stdout
+    );
+
+    let run = decode(&["--json", "--direction", "response", &frame], b"");
+    let json = &json_lines(&run.stdout)[0];
+    assert_eq!(json["kind"], "response");
+    assert!(json.get("ambiguous").is_none());
+    assert_eq!(json["values"].as_array().unwrap().len(), 24);
+}
+
+#[test]
+fn device_strings_are_escaped_never_raw() {
+    // Report server id whose text holds ESC [2J (clear screen) and a newline.
+    let frame = rtu(&[0x11, 0x11, 0x07, b'P', b'L', b'C', 0x1B, b'[', b'2', b'\n']);
+    for format in ["table", "json", "csv"] {
+        let run = decode(&["--direction", "response", "-o", format, &frame], b"");
+        assert_eq!(run.code, 0, "{format}: {}", run.stderr);
+        assert!(
+            !run.stdout.contains('\u{1b}'),
+            "{format}: raw escape in {:?}",
+            run.stdout
+        );
+        let shown = match format {
+            "json" => json_lines(&run.stdout)[0]["text"]
+                .as_str()
+                .unwrap_or_default()
+                .to_string(),
+            _ => run.stdout.clone(),
+        };
+        assert!(
+            format == "csv" || shown.contains(r"PLC\x1B[2\n"),
+            "{format}: {shown}"
+        );
+    }
+    // Device identification objects likewise.
+    let frame = rtu(&[
+        0x11, 0x2B, 0x0E, 0x01, 0x01, 0x00, 0x00, 0x01, 0x00, 0x03, b'A', 0x07, b'B',
+    ]);
+    let run = decode(&["--json", "--direction", "response", &frame], b"");
+    let json = &json_lines(&run.stdout)[0];
+    assert_eq!(json["objects"][0]["name"], "VendorName");
+    assert_eq!(json["objects"][0]["value"], "A\\x07B");
+}
+
+#[test]
+fn a_10_mb_line_is_refused_in_one_line() {
+    let mut input = vec![b'A'; 10 * 1024 * 1024];
+    input.extend_from_slice(b"\n11 03 00 6B 00 03 76 87\n");
+    let run = decode(&["-o", "values"], &input);
+    assert_eq!(run.code, 2);
+    assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+    assert!(
+        run.stderr.starts_with("mbtool: line 1: longer than"),
+        "{}",
+        run.stderr
+    );
+}
+
+#[test]
+fn values_and_csv_outputs() {
+    let answer = "11 03 06 02 2B 00 00 00 64 C8 BA";
+    let run = decode(&["-o", "values", answer], b"");
+    assert_eq!(run.stdout, "555\n0\n100\n");
+    let run = decode(
+        &[
+            "-o",
+            "values",
+            "--type",
+            "i16",
+            &rtu(&[0x11, 0x03, 0x02, 0xFF, 0xFE]),
+        ],
+        b"",
+    );
+    assert_eq!(run.stdout, "-2\n");
+    let run = decode(&["-o", "csv", answer], b"");
+    let mut lines = run.stdout.lines();
+    assert_eq!(
+        lines.next(),
+        Some("mode,kind,slave,function,valid,address,ref,count,values,exception,error")
+    );
+    assert_eq!(lines.next(), Some("rtu,response,17,3,true,,,3,555 0 100,,"));
+}
+
+#[test]
+fn the_table_shows_the_fields_and_values() {
+    let run = decode(&["11 03 06 02 2B 00 00 00 64 C8 BA"], b"");
+    assert_eq!(run.code, 0);
+    for expected in [
+        "RTU response",
+        "03 Read Holding Registers",
+        "022B",
+        "555",
+        "100",
+        "BA ok",
+    ] {
+        assert!(
+            run.stdout.contains(expected),
+            "{expected} missing from\n{}",
+            run.stdout
+        );
+    }
+}
+
+#[test]
+fn a_closed_pipe_ends_quietly_with_status_0() {
+    let mut child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+        .args(["decode", "--json"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let feeder = std::thread::spawn(move || {
+        let line = b"11 03 06 02 2B 00 00 00 64 C8 BA\n";
+        for _ in 0..200_000 {
+            if stdin.write_all(line).is_err() {
+                break;
+            }
+        }
+    });
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut first)
+        .unwrap();
+    assert!(first.contains("\"values\":[555,0,100]"));
+    // The reader is gone: like `| head -1`.
+    let output = child.wait_with_output().unwrap();
+    feeder.join().unwrap();
+    assert_eq!(output.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&output.stderr), "");
+}
