@@ -5,6 +5,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use crate::address::Table;
 use crate::codec::{Direction, Mode};
+use crate::transport::serial::Parity;
 use crate::values::{ByteOrder, ValueType};
 
 const ABOUT: &str = "Modbus RTU/ASCII/TCP diagnostics: read, write, decode, encode";
@@ -38,6 +39,8 @@ pub struct Cli {
     pub output: OutputArgs,
     #[command(flatten)]
     pub data: DataArgs,
+    #[command(flatten)]
+    pub poll: PollArgs,
     #[command(subcommand)]
     pub command: Command,
 }
@@ -54,6 +57,41 @@ pub struct ConnectionArgs {
     /// ports; decode detects it]
     #[arg(short, long, global = true, env = "MBTOOL_MODE", value_enum)]
     pub mode: Option<ModeArg>,
+
+    /// Serial speed
+    #[arg(
+        short,
+        long,
+        global = true,
+        env = "MBTOOL_BAUD",
+        default_value_t = 19200
+    )]
+    pub baud: u32,
+
+    /// Serial parity
+    #[arg(long, global = true, env = "MBTOOL_PARITY", value_enum, default_value_t = Parity::Even)]
+    pub parity: Parity,
+
+    /// Serial data bits [default: 8, 7 in ASCII mode]
+    #[arg(long, global = true, env = "MBTOOL_DATA_BITS", value_parser = clap::value_parser!(u8).range(7..=8))]
+    pub data_bits: Option<u8>,
+
+    /// Serial stop bits [default: 1 with parity, 2 without]
+    #[arg(long, global = true, env = "MBTOOL_STOP_BITS", value_parser = clap::value_parser!(u8).range(1..=2))]
+    pub stop_bits: Option<u8>,
+
+    /// Response timeout for a whole answer: 500ms, 1s, 2.5s
+    #[arg(long, global = true, env = "MBTOOL_TIMEOUT", default_value = "1s", value_parser = crate::duration::parse_duration)]
+    pub timeout: std::time::Duration,
+
+    /// Retries after a timeout or a bad answer (never after an exception)
+    #[arg(long, global = true, env = "MBTOOL_RETRIES", default_value_t = 0)]
+    pub retries: u32,
+
+    /// Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200
+    /// baud]; 0 for gateways and devices that need none
+    #[arg(long, global = true, value_name = "DURATION", value_parser = crate::duration::parse_duration)]
+    pub frame_gap: Option<std::time::Duration>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -83,6 +121,10 @@ pub struct OutputArgs {
     /// The same as --output json
     #[arg(long, global = true)]
     pub json: bool,
+
+    /// Print every frame sent and received, in hex with a timestamp, on stderr
+    #[arg(short, long, global = true)]
+    pub verbose: bool,
 }
 
 impl OutputArgs {
@@ -126,6 +168,25 @@ pub struct DataArgs {
     /// that take fewer than the protocol allows
     #[arg(long, global = true, value_name = "N", value_parser = clap::value_parser!(u16).range(1..))]
     pub max_per_request: Option<u16>,
+}
+
+#[derive(Clone, Debug, Args)]
+#[command(next_help_heading = "Watching")]
+pub struct PollArgs {
+    /// Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing
+    /// what changed, with a summary on stderr at the end
+    #[arg(long, global = true, value_name = "INTERVAL", value_parser = crate::duration::parse_duration)]
+    pub poll: Option<std::time::Duration>,
+
+    /// With --poll: stop after N reads
+    #[arg(
+        long = "count",
+        id = "poll_count",
+        global = true,
+        value_name = "N",
+        requires = "poll"
+    )]
+    pub count: Option<u64>,
 }
 
 #[derive(Debug, Subcommand)]

@@ -3,6 +3,8 @@
 use thiserror::Error;
 
 use crate::address::AddressError;
+use crate::codec::ExceptionCode;
+use crate::master::MasterError;
 
 #[derive(Debug, Error)]
 pub enum Error {
@@ -13,6 +15,14 @@ pub enum Error {
     Address(#[from] AddressError),
     #[error(transparent)]
     Io(#[from] std::io::Error),
+    #[error(transparent)]
+    Master(#[from] MasterError),
+    #[error("slave {slave} answered exception {code} to function {function:02X}")]
+    Exception {
+        slave: u8,
+        function: u8,
+        code: ExceptionCode,
+    },
 }
 
 impl Error {
@@ -25,6 +35,12 @@ impl Error {
         match self {
             Error::Usage(_) | Error::Address(_) => 2,
             Error::Io(_) => 1,
+            Error::Master(MasterError::Timeout { .. }) => 3,
+            Error::Master(MasterError::BadFrame { .. }) => 4,
+            Error::Master(MasterError::Encode(_)) => 2,
+            Error::Master(MasterError::Io(_)) => 1,
+            // 10 + N; codes past 0x0B are still reported, capped to stay a valid status.
+            Error::Exception { code, .. } => 10u8.saturating_add(code.0).min(255),
         }
     }
 }

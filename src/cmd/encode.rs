@@ -8,7 +8,8 @@ use mbtool::error::Error;
 use mbtool::output::{self, encode::write_frame};
 use mbtool::plan::{plan, Plan, PlanOptions};
 
-/// The framing: --mode, else TCP for a tcp:// port, else RTU.
+/// The framing: --mode, else TCP for a tcp:// port, else RTU. Unlike a connection, encode
+/// accepts --mode tcp without a port.
 fn mode(cli: &Cli) -> Mode {
     match (cli.connection.mode, cli.connection.port.as_deref()) {
         (Some(mode), _) => mode.into(),

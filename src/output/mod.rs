@@ -3,6 +3,7 @@
 
 pub mod decode;
 pub mod encode;
+pub mod read;
 
 use std::io::{self, IsTerminal, Write};
 

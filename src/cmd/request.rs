@@ -1,0 +1,246 @@
+//! The commands that talk to a slave: reads, writes, `raw`, and polling.
+
+use std::io::Write;
+use std::sync::mpsc;
+use std::time::Instant;
+
+use anyhow::Result;
+
+use mbtool::address::{reference, Table};
+use mbtool::cli::{Cli, RequestCommand};
+use mbtool::codec::{Frame, Mode, Pdu, Request, Response};
+use mbtool::connection;
+use mbtool::error::Error;
+use mbtool::master::{Master, Reply, Traffic};
+use mbtool::output::decode::DecodeWriter;
+use mbtool::output::read::{write_done, ReadData, ReadResult, ReadWriter, WriteDone};
+use mbtool::output::{self, encode::frame_text};
+use mbtool::plan::Plan;
+use mbtool::poll::PollStats;
+use mbtool::report::describe_frame;
+
+pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
+    // The whole command line is checked before a port is opened.
+    let plan = super::encode::plan_for(cli, request)?;
+    if cli.poll.poll.is_some() && plan.reads.is_none() {
+        return Err(Error::usage("--poll repeats reads; a write or raw request runs once").into());
+    }
+    let mode = connection::mode(cli, &connection::endpoint(cli)?)?;
+    let mut master = connection::master(cli)?;
+    if cli.output.verbose {
+        master.trace(tracer(mode));
+    }
+    let mut out = output::stdout();
+    let code = match (request, plan.reads) {
+        (RequestCommand::Raw(_), _) => raw(cli, &mut master, &plan, mode, &mut out)?,
+        (_, Some((table, address))) => reads(cli, &mut master, &plan, table, address, &mut out)?,
+        (_, None) => writes(cli, &mut master, &plan, &mut out)?,
+    };
+    out.flush()?;
+    Ok(code)
+}
+
+/// `-v`: each frame on stderr with the seconds since the start.
+fn tracer(mode: Mode) -> mbtool::master::Tracer {
+    let start = Instant::now();
+    Box::new(move |traffic, bytes| {
+        let arrow = match traffic {
+            Traffic::Sent => '>',
+            Traffic::Received => '<',
+        };
+        let text = match mode {
+            // Received bytes may be noise, not ASCII: show them as hex then.
+            Mode::Ascii if bytes.is_ascii() => frame_text(mode, bytes).replace(['\r', '\n'], ""),
+            _ => frame_text(Mode::Rtu, bytes),
+        };
+        eprintln!("[{:>12.6}] {arrow} {text}", start.elapsed().as_secs_f64());
+    })
+}
+
+/// The answer to one request, exceptions turned into errors.
+fn transact(master: &mut Master, slave: u8, request: &Request) -> Result<Option<Response>, Error> {
+    match master.transact(slave, request)? {
+        Reply::Response(response) => Ok(Some(response)),
+        Reply::Broadcast => Ok(None),
+        Reply::Exception(exception) => Err(Error::Exception {
+            slave,
+            function: exception.function,
+            code: exception.code,
+        }),
+    }
+}
+
+/// Every request of a read, put together.
+fn read_once(
+    master: &mut Master,
+    plan: &Plan,
+    table: Table,
+    address: u16,
+) -> Result<ReadResult, Error> {
+    let mut registers = Vec::new();
+    let mut bits = Vec::new();
+    for request in &plan.requests {
+        let response = transact(master, plan.slave, request)?;
+        let quantity = match request {
+            Request::ReadCoils { quantity, .. } | Request::ReadDiscreteInputs { quantity, .. } => {
+                usize::from(*quantity)
+            }
+            _ => 0,
+        };
+        match response {
+            Some(
+                Response::ReadHoldingRegisters { values } | Response::ReadInputRegisters { values },
+            ) => registers.extend(values),
+            Some(response @ (Response::ReadCoils { .. } | Response::ReadDiscreteInputs { .. })) => {
+                bits.extend(response.bits(quantity).unwrap_or_default())
+            }
+            // The master checked that the answer fits the request.
+            _ => {}
+        }
+    }
+    Ok(ReadResult {
+        slave: plan.slave,
+        function: plan.requests.first().map_or(0, Request::function),
+        table,
+        address,
+        data: if table.is_bits() {
+            ReadData::Bits(bits)
+        } else {
+            ReadData::Registers(registers)
+        },
+    })
+}
+
+fn reads(
+    cli: &Cli,
+    master: &mut Master,
+    plan: &Plan,
+    table: Table,
+    address: u16,
+    out: &mut Box<dyn Write>,
+) -> Result<u8> {
+    let mut writer = ReadWriter::new(
+        cli.output.format(),
+        cli.data.value_type,
+        cli.data.order,
+        output::colour_wanted(),
+    );
+    let Some(interval) = cli.poll.poll else {
+        let result = read_once(master, plan, table, address)?;
+        writer.write(out, &result)?;
+        return Ok(0);
+    };
+    // Ctrl-C ends the poll between reads, so that no line is cut and the summary shows.
+    let (stop, stopped) = mpsc::channel();
+    ctrlc::set_handler(move || {
+        let _ = stop.send(());
+    })
+    .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
+    let mut stats = PollStats::default();
+    // The exit status is that of the last read: 0 when the poll ended on an answer.
+    let mut last_status;
+    let mut done = 0u64;
+    loop {
+        let started = Instant::now();
+        let outcome = read_once(master, plan, table, address);
+        stats.record(outcome.as_ref().map(|_| ()), started.elapsed());
+        match outcome {
+            Ok(result) => {
+                writer.write(out, &result)?;
+                out.flush()?;
+                last_status = 0;
+            }
+            Err(error) => {
+                eprintln!("mbtool: {error}");
+                last_status = error.exit_code();
+            }
+        }
+        done += 1;
+        if cli.poll.count.is_some_and(|count| done >= count) {
+            break;
+        }
+        let wait = interval.saturating_sub(started.elapsed());
+        match stopped.recv_timeout(wait) {
+            Err(mpsc::RecvTimeoutError::Timeout) => continue,
+            _ => break,
+        }
+    }
+    eprintln!("mbtool: {}", stats.summary());
+    Ok(last_status)
+}
+
+fn writes(cli: &Cli, master: &mut Master, plan: &Plan, out: &mut Box<dyn Write>) -> Result<u8> {
+    let mut count = 0;
+    for request in &plan.requests {
+        transact(master, plan.slave, request)?;
+        count += match request {
+            Request::WriteMultipleCoils { values, .. } => values.len(),
+            Request::WriteMultipleRegisters { values, .. } => values.len(),
+            _ => 1,
+        };
+    }
+    let Some(first) = plan.requests.first() else {
+        return Ok(0);
+    };
+    let (table, address) = match first {
+        Request::WriteSingleCoil { address, .. } | Request::WriteMultipleCoils { address, .. } => {
+            (Table::Coils, *address)
+        }
+        Request::WriteSingleRegister { address, .. }
+        | Request::WriteMultipleRegisters { address, .. } => (Table::HoldingRegisters, *address),
+        _ => return Ok(0),
+    };
+    let done = WriteDone {
+        slave: plan.slave,
+        function: first.function(),
+        address,
+        reference: reference(table, address),
+        count,
+        broadcast: plan.slave == 0,
+    };
+    write_done(out, cli.output.format(), &done)?;
+    Ok(0)
+}
+
+/// `raw`: the answer decoded like `mbtool decode` shows a frame; an exception also sets
+/// the exit status.
+fn raw(
+    cli: &Cli,
+    master: &mut Master,
+    plan: &Plan,
+    mode: Mode,
+    out: &mut Box<dyn Write>,
+) -> Result<u8> {
+    let Some(request) = plan.requests.first() else {
+        return Ok(0);
+    };
+    let (pdu, code) = match master.transact(plan.slave, request)? {
+        Reply::Broadcast => return Ok(0),
+        Reply::Response(response) => (Pdu::Response(response), 0),
+        Reply::Exception(exception) => {
+            let code = Error::Exception {
+                slave: plan.slave,
+                function: exception.function,
+                code: exception.code,
+            }
+            .exit_code();
+            (Pdu::Exception(exception), code)
+        }
+    };
+    let frame = Frame {
+        mode,
+        slave: plan.slave,
+        transaction: 0,
+        pdu,
+    };
+    let bytes = frame.encode().map_err(|e| Error::usage(e.to_string()))?;
+    let report = describe_frame(&bytes, Some(mode), Some(mbtool::codec::Direction::Response));
+    let mut writer = DecodeWriter::new(
+        cli.output.format(),
+        cli.data.value_type,
+        cli.data.order,
+        output::colour_wanted(),
+    );
+    writer.write(out, &bytes, &report)?;
+    Ok(code)
+}

@@ -1,0 +1,103 @@
+//! From the connection options to a master talking to a slave.
+
+use std::io;
+
+use crate::cli::{Cli, ModeArg};
+use crate::codec::Mode;
+use crate::error::{Error, Result};
+use crate::master::{Master, MasterOptions};
+use crate::transport::serial::{LineSettings, Parity, Serial};
+use crate::transport::tcp::Tcp;
+use crate::transport::{Endpoint, Transport};
+
+/// After a broadcast, the slaves need time to act before the next request (the Modbus
+/// serial line specification suggests 100-200 ms).
+const BROADCAST_TURNAROUND: std::time::Duration = std::time::Duration::from_millis(100);
+
+/// The endpoint of `--port`; a missing port says what to give.
+pub fn endpoint(cli: &Cli) -> Result<Endpoint> {
+    let port = cli.connection.port.as_deref().ok_or_else(|| {
+        Error::usage(
+            "no --port: give a serial device (/dev/ttyUSB0), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim to try the built-in slave",
+        )
+    })?;
+    Endpoint::parse(port).map_err(Error::Usage)
+}
+
+/// The framing on the wire: TCP for tcp://, otherwise --mode (RTU by default).
+pub fn mode(cli: &Cli, endpoint: &Endpoint) -> Result<Mode> {
+    match (endpoint, cli.connection.mode) {
+        (Endpoint::Tcp { .. }, None | Some(ModeArg::Tcp)) => Ok(Mode::Tcp),
+        (Endpoint::Tcp { .. }, Some(_)) => Err(Error::usage(
+            "tcp:// carries Modbus TCP frames: for RTU through a gateway use rtu+tcp://HOST:PORT",
+        )),
+        (_, Some(ModeArg::Tcp)) => Err(Error::usage("--mode tcp needs a tcp://HOST[:PORT] port")),
+        (_, Some(mode)) => Ok(mode.into()),
+        (_, None) => Ok(Mode::Rtu),
+    }
+}
+
+/// The serial line settings, defaults filled in as CLI.md gives them.
+pub fn line_settings(cli: &Cli, mode: Mode) -> LineSettings {
+    let c = &cli.connection;
+    LineSettings {
+        baud: c.baud,
+        parity: c.parity,
+        data_bits: c
+            .data_bits
+            .unwrap_or(if mode == Mode::Ascii { 7 } else { 8 }),
+        stop_bits: c
+            .stop_bits
+            .unwrap_or(if c.parity == Parity::None { 2 } else { 1 }),
+    }
+}
+
+/// Opens the transport of `endpoint`.
+pub fn open(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Box<dyn Transport>> {
+    let timeout = cli.connection.timeout;
+    let opened: io::Result<Box<dyn Transport>> = match endpoint {
+        Endpoint::Serial(path) => {
+            Serial::open(path, &line_settings(cli, mode)).map(|s| Box::new(s) as Box<dyn Transport>)
+        }
+        Endpoint::Tcp { host, port } => {
+            Tcp::connect(host, *port, timeout, false).map(|t| Box::new(t) as Box<dyn Transport>)
+        }
+        Endpoint::RtuOverTcp { host, port } => {
+            Tcp::connect(host, *port, timeout, true).map(|t| Box::new(t) as Box<dyn Transport>)
+        }
+        Endpoint::Sim => Ok(Box::new(crate::sim::SimTransport::new(mode))),
+    };
+    opened.map_err(|e| match endpoint {
+        Endpoint::Serial(_) => Error::Io(e),
+        _ => Error::Io(io::Error::new(
+            e.kind(),
+            format!("cannot connect to {endpoint}: {e}"),
+        )),
+    })
+}
+
+/// A master on the port the options name.
+pub fn master(cli: &Cli) -> Result<Master> {
+    let endpoint = endpoint(cli)?;
+    let mode = mode(cli, &endpoint)?;
+    let transport = open(cli, &endpoint, mode)?;
+    let gap = cli
+        .connection
+        .frame_gap
+        .unwrap_or_else(|| match (mode, &endpoint) {
+            (Mode::Rtu, Endpoint::Serial(_) | Endpoint::RtuOverTcp { .. }) => {
+                line_settings(cli, mode).frame_gap()
+            }
+            _ => std::time::Duration::ZERO,
+        });
+    Ok(Master::new(
+        transport,
+        MasterOptions {
+            mode,
+            timeout: cli.connection.timeout,
+            retries: cli.connection.retries,
+            frame_gap: gap,
+            turnaround: BROADCAST_TURNAROUND,
+        },
+    ))
+}

@@ -1,0 +1,124 @@
+//! The four tables of one slave id, and which of their addresses exist.
+
+use crate::address::Table;
+use crate::codec::ExceptionCode;
+
+/// One table: its values, which addresses exist, and which may not be written.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TableData<T> {
+    values: Vec<T>,
+    /// Ranges `[start, end)` that exist; `None`: every address does.
+    exists: Option<Vec<(u32, u32)>>,
+    read_only: Vec<(u32, u32)>,
+}
+
+impl<T: Copy + Default> Default for TableData<T> {
+    fn default() -> Self {
+        Self {
+            values: vec![T::default(); 65536],
+            exists: None,
+            read_only: Vec::new(),
+        }
+    }
+}
+
+fn covers(ranges: &[(u32, u32)], start: u32, end: u32) -> bool {
+    // A run of addresses is covered when each address lies in some range.
+    let mut at = start;
+    while at < end {
+        match ranges.iter().find(|(s, e)| *s <= at && at < *e) {
+            Some((_, e)) => at = *e,
+            None => return false,
+        }
+    }
+    true
+}
+
+fn touches(ranges: &[(u32, u32)], start: u32, end: u32) -> bool {
+    ranges.iter().any(|(s, e)| *s < end && start < *e)
+}
+
+impl<T: Copy + Default> TableData<T> {
+    /// Whether `quantity` addresses from `address` may be read (or written).
+    pub fn check(&self, address: u16, quantity: u16, write: bool) -> Result<(), ExceptionCode> {
+        let (start, end) = (u32::from(address), u32::from(address) + u32::from(quantity));
+        if end > 65536 {
+            return Err(ExceptionCode::ILLEGAL_DATA_ADDRESS);
+        }
+        if let Some(exists) = &self.exists {
+            if !covers(exists, start, end) {
+                return Err(ExceptionCode::ILLEGAL_DATA_ADDRESS);
+            }
+        }
+        if write && touches(&self.read_only, start, end) {
+            return Err(ExceptionCode::ILLEGAL_DATA_ADDRESS);
+        }
+        Ok(())
+    }
+
+    pub fn read(&self, address: u16, quantity: u16) -> Result<Vec<T>, ExceptionCode> {
+        self.check(address, quantity, false)?;
+        let start = usize::from(address);
+        Ok(self.values[start..start + usize::from(quantity)].to_vec())
+    }
+
+    pub fn write(&mut self, address: u16, values: &[T]) -> Result<(), ExceptionCode> {
+        let quantity =
+            u16::try_from(values.len()).map_err(|_| ExceptionCode::ILLEGAL_DATA_VALUE)?;
+        self.check(address, quantity, true)?;
+        let start = usize::from(address);
+        self.values[start..start + values.len()].copy_from_slice(values);
+        Ok(())
+    }
+
+    /// Sets values without the write checks: initial data.
+    pub fn preset(&mut self, address: u16, values: &[T]) {
+        let start = usize::from(address);
+        let end = (start + values.len()).min(65536);
+        self.values[start..end].copy_from_slice(&values[..end - start]);
+    }
+
+    /// Declares that `[start, end)` exists; once any range is declared, only declared
+    /// ranges exist.
+    pub fn declare(&mut self, start: u32, end: u32) {
+        self.exists.get_or_insert_with(Vec::new).push((start, end));
+    }
+
+    pub fn protect(&mut self, start: u32, end: u32) {
+        self.read_only.push((start, end));
+    }
+}
+
+/// The four tables of one slave id.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct DataModel {
+    pub coils: TableData<bool>,
+    pub discrete_inputs: TableData<bool>,
+    pub input_registers: TableData<u16>,
+    pub holding_registers: TableData<u16>,
+}
+
+impl DataModel {
+    /// The example values of the source manuals: coils 20-56 = CD 6B B2 0E 1B, inputs
+    /// 10197-10218 = AC DB 35, input register 30009 = 10, holding 40108-40110 = 555, 0, 100.
+    pub fn manual_examples() -> Self {
+        let mut model = DataModel::default();
+        let coils = crate::codec::bits::unpack(&[0xCD, 0x6B, 0xB2, 0x0E, 0x1B], 37);
+        model.coils.preset(19, &coils);
+        let inputs = crate::codec::bits::unpack(&[0xAC, 0xDB, 0x35], 22);
+        model.discrete_inputs.preset(196, &inputs);
+        model.input_registers.preset(8, &[10]);
+        model.holding_registers.preset(107, &[555, 0, 100]);
+        model
+    }
+
+    /// Declares or protects a range in the table it belongs to.
+    pub fn declare(&mut self, table: Table, start: u32, end: u32) {
+        match table {
+            Table::Coils => self.coils.declare(start, end),
+            Table::DiscreteInputs => self.discrete_inputs.declare(start, end),
+            Table::InputRegisters => self.input_registers.declare(start, end),
+            Table::HoldingRegisters => self.holding_registers.declare(start, end),
+        }
+    }
+}

@@ -1,0 +1,133 @@
+//! The `--port` argument: a serial device, `tcp://HOST[:PORT]`, `rtu+tcp://HOST:PORT`, or
+//! `sim`.
+
+use std::fmt;
+
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Endpoint {
+    Serial(String),
+    /// Modbus TCP (MBAP framing).
+    Tcp {
+        host: String,
+        port: u16,
+    },
+    /// RTU frames through a transparent serial gateway.
+    RtuOverTcp {
+        host: String,
+        port: u16,
+    },
+    /// The built-in simulated slave, in process.
+    Sim,
+}
+
+impl fmt::Display for Endpoint {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Endpoint::Serial(path) => f.write_str(path),
+            Endpoint::Tcp { host, port } => write!(f, "tcp://{host}:{port}"),
+            Endpoint::RtuOverTcp { host, port } => write!(f, "rtu+tcp://{host}:{port}"),
+            Endpoint::Sim => f.write_str("sim"),
+        }
+    }
+}
+
+/// The standard Modbus TCP port.
+pub const MODBUS_TCP_PORT: u16 = 502;
+
+fn host_port(rest: &str, default_port: Option<u16>, scheme: &str) -> Result<(String, u16), String> {
+    // [v6]:port, host:port, or host alone.
+    let (host, port) = if let Some(v6) = rest.strip_prefix('[') {
+        let (host, after) = v6
+            .split_once(']')
+            .ok_or_else(|| format!("{scheme}{rest}: an IPv6 address needs its closing ']'"))?;
+        (host, after.strip_prefix(':'))
+    } else {
+        match rest.rsplit_once(':') {
+            Some((host, port)) => (host, Some(port)),
+            None => (rest, None),
+        }
+    };
+    if host.is_empty() {
+        return Err(format!(
+            "{scheme}{rest}: give a host, as in {scheme}127.0.0.1:502"
+        ));
+    }
+    let port = match (port, default_port) {
+        (Some(port), _) => port
+            .parse::<u16>()
+            .ok()
+            .filter(|p| *p > 0)
+            .ok_or_else(|| format!("{scheme}{rest}: '{port}' is not a TCP port (1-65535)"))?,
+        (None, Some(default)) => default,
+        (None, None) => {
+            return Err(format!(
+                "{scheme}{rest}: give the gateway's port, as in {scheme}{host}:4001"
+            ))
+        }
+    };
+    Ok((host.to_string(), port))
+}
+
+impl Endpoint {
+    pub fn parse(text: &str) -> Result<Endpoint, String> {
+        let text = text.trim();
+        if text.eq_ignore_ascii_case("sim") {
+            return Ok(Endpoint::Sim);
+        }
+        if let Some(rest) = text.strip_prefix("tcp://") {
+            let (host, port) = host_port(rest, Some(MODBUS_TCP_PORT), "tcp://")?;
+            return Ok(Endpoint::Tcp { host, port });
+        }
+        if let Some(rest) = text.strip_prefix("rtu+tcp://") {
+            let (host, port) = host_port(rest, None, "rtu+tcp://")?;
+            return Ok(Endpoint::RtuOverTcp { host, port });
+        }
+        if text.contains("://") {
+            return Err(format!(
+                "'{text}': the port is a serial device, tcp://HOST[:PORT], rtu+tcp://HOST:PORT or sim"
+            ));
+        }
+        if text.is_empty() {
+            return Err("--port is empty: give a serial device, tcp://HOST[:PORT] or sim".into());
+        }
+        Ok(Endpoint::Serial(text.to_string()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_kind_of_port() {
+        assert_eq!(Endpoint::parse("sim"), Ok(Endpoint::Sim));
+        assert_eq!(
+            Endpoint::parse("/dev/ttyUSB0"),
+            Ok(Endpoint::Serial("/dev/ttyUSB0".into()))
+        );
+        assert_eq!(
+            Endpoint::parse("tcp://127.0.0.1"),
+            Ok(Endpoint::Tcp {
+                host: "127.0.0.1".into(),
+                port: 502
+            })
+        );
+        assert_eq!(
+            Endpoint::parse("tcp://[::1]:5020"),
+            Ok(Endpoint::Tcp {
+                host: "::1".into(),
+                port: 5020
+            })
+        );
+        assert_eq!(
+            Endpoint::parse("rtu+tcp://gw:4001"),
+            Ok(Endpoint::RtuOverTcp {
+                host: "gw".into(),
+                port: 4001
+            })
+        );
+        assert!(Endpoint::parse("rtu+tcp://gw").is_err());
+        assert!(Endpoint::parse("udp://x").is_err());
+        assert!(Endpoint::parse("tcp://x:99999").is_err());
+    }
+}

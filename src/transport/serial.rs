@@ -1,0 +1,130 @@
+//! A serial line (RS-485/RS-232 adapter, or a pseudo-terminal in tests).
+
+use std::io::{self, Read, Write};
+use std::time::{Duration, Instant};
+
+use serialport::{ClearBuffer, SerialPort};
+
+use super::{time_left, Transport};
+
+/// Line settings, as the connection options give them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LineSettings {
+    pub baud: u32,
+    pub parity: Parity,
+    pub data_bits: u8,
+    pub stop_bits: u8,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Parity {
+    None,
+    Even,
+    Odd,
+}
+
+impl LineSettings {
+    /// Bits on the wire per character: start, data, parity, stop.
+    pub fn bits_per_character(&self) -> u32 {
+        1 + u32::from(self.data_bits)
+            + u32::from(self.parity != Parity::None)
+            + u32::from(self.stop_bits)
+    }
+
+    /// The silence that ends an RTU frame: 3.5 character times, and 1.75 ms above 19200
+    /// baud, as the Modbus serial line specification fixes it.
+    pub fn frame_gap(&self) -> Duration {
+        if self.baud > 19200 {
+            return Duration::from_micros(1750);
+        }
+        let character = f64::from(self.bits_per_character()) / f64::from(self.baud.max(1));
+        Duration::from_secs_f64(3.5 * character)
+    }
+}
+
+pub struct Serial {
+    port: Box<dyn SerialPort>,
+}
+
+impl Serial {
+    pub fn open(path: &str, settings: &LineSettings) -> io::Result<Serial> {
+        let port = serialport::new(path, settings.baud)
+            .data_bits(match settings.data_bits {
+                7 => serialport::DataBits::Seven,
+                _ => serialport::DataBits::Eight,
+            })
+            .parity(match settings.parity {
+                Parity::None => serialport::Parity::None,
+                Parity::Even => serialport::Parity::Even,
+                Parity::Odd => serialport::Parity::Odd,
+            })
+            .stop_bits(match settings.stop_bits {
+                2 => serialport::StopBits::Two,
+                _ => serialport::StopBits::One,
+            })
+            .flow_control(serialport::FlowControl::None)
+            .timeout(Duration::from_millis(100))
+            .open()
+            .map_err(|e| {
+                io::Error::new(io::ErrorKind::Other, format!("cannot open {path}: {e}"))
+            })?;
+        Ok(Serial { port })
+    }
+}
+
+impl Transport for Serial {
+    fn discard_input(&mut self) -> io::Result<()> {
+        self.port.clear(ClearBuffer::Input).map_err(io::Error::from)
+    }
+
+    fn send(&mut self, frame: &[u8]) -> io::Result<()> {
+        self.port.write_all(frame)?;
+        self.port.flush()
+    }
+
+    fn receive(&mut self, buf: &mut Vec<u8>, deadline: Instant) -> io::Result<usize> {
+        let mut chunk = [0u8; 512];
+        loop {
+            let Some(left) = time_left(deadline) else {
+                return Ok(0);
+            };
+            self.port.set_timeout(left).map_err(io::Error::from)?;
+            match self.port.read(&mut chunk) {
+                Ok(0) => continue,
+                Ok(n) => {
+                    buf.extend_from_slice(&chunk[..n]);
+                    return Ok(n);
+                }
+                Err(e) if e.kind() == io::ErrorKind::TimedOut => return Ok(0),
+                Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+                Err(e) => return Err(e),
+            }
+        }
+    }
+
+    fn is_serial_line(&self) -> bool {
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frame_gap_is_three_and_a_half_characters_up_to_19200() {
+        let line = LineSettings {
+            baud: 9600,
+            parity: Parity::Even,
+            data_bits: 8,
+            stop_bits: 1,
+        };
+        // 11 bits at 9600 baud: 1.1458 ms a character, 4.010 ms for 3.5.
+        assert_eq!(line.frame_gap().as_micros(), 4010);
+        let fast = LineSettings {
+            baud: 115200,
+            ..line
+        };
+        assert_eq!(fast.frame_gap(), Duration::from_micros(1750));
+    }
+}

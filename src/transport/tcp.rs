@@ -1,0 +1,110 @@
+//! A TCP connection carrying MBAP frames, or RTU frames through a transparent gateway.
+
+use std::io::{self, Read, Write};
+use std::net::{TcpStream, ToSocketAddrs};
+use std::time::{Duration, Instant};
+
+use super::{time_left, Transport};
+
+pub struct Tcp {
+    stream: TcpStream,
+    /// RTU frames through a gateway: silence between frames still matters on its line.
+    serial_behind: bool,
+}
+
+impl Tcp {
+    /// Connects to the first address of `host` that answers within `timeout`.
+    pub fn connect(
+        host: &str,
+        port: u16,
+        timeout: Duration,
+        serial_behind: bool,
+    ) -> io::Result<Tcp> {
+        let mut last_error = None;
+        for address in (host, port).to_socket_addrs()? {
+            match TcpStream::connect_timeout(&address, timeout.max(Duration::from_millis(1))) {
+                Ok(stream) => {
+                    // Frames are small and a master waits for each answer: send at once.
+                    stream.set_nodelay(true)?;
+                    return Ok(Tcp {
+                        stream,
+                        serial_behind,
+                    });
+                }
+                Err(error) => last_error = Some(error),
+            }
+        }
+        Err(last_error.unwrap_or_else(|| {
+            io::Error::new(io::ErrorKind::NotFound, format!("{host} has no address"))
+        }))
+    }
+
+    /// A connection accepted by a server.
+    pub fn from_stream(stream: TcpStream, serial_behind: bool) -> io::Result<Tcp> {
+        stream.set_nodelay(true)?;
+        Ok(Tcp {
+            stream,
+            serial_behind,
+        })
+    }
+}
+
+impl Transport for Tcp {
+    fn discard_input(&mut self) -> io::Result<()> {
+        self.stream.set_nonblocking(true)?;
+        let mut scratch = [0u8; 512];
+        let result = loop {
+            match self.stream.read(&mut scratch) {
+                Ok(0) => break Err(closed()),
+                Ok(_) => continue,
+                Err(e) if e.kind() == io::ErrorKind::WouldBlock => break Ok(()),
+                Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+                Err(e) => break Err(e),
+            }
+        };
+        self.stream.set_nonblocking(false)?;
+        result
+    }
+
+    fn send(&mut self, frame: &[u8]) -> io::Result<()> {
+        self.stream.write_all(frame)
+    }
+
+    fn receive(&mut self, buf: &mut Vec<u8>, deadline: Instant) -> io::Result<usize> {
+        let mut chunk = [0u8; 512];
+        loop {
+            let Some(left) = time_left(deadline) else {
+                return Ok(0);
+            };
+            self.stream.set_read_timeout(Some(left))?;
+            match self.stream.read(&mut chunk) {
+                Ok(0) => return Err(closed()),
+                Ok(n) => {
+                    buf.extend_from_slice(&chunk[..n]);
+                    return Ok(n);
+                }
+                Err(e)
+                    if matches!(
+                        e.kind(),
+                        io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut
+                    ) =>
+                {
+                    return Ok(0)
+                }
+                Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+                Err(e) => return Err(e),
+            }
+        }
+    }
+
+    fn is_serial_line(&self) -> bool {
+        self.serial_behind
+    }
+}
+
+fn closed() -> io::Error {
+    io::Error::new(
+        io::ErrorKind::ConnectionAborted,
+        "the other end closed the connection",
+    )
+}
