@@ -173,6 +173,12 @@ const EXIT_STATUS: &[(&str, &str)] = &[
 const ENVIRONMENT: &[(&str, &str)] = &[
     ("MBTOOL_PORT", "the default for --port"),
     ("MBTOOL_MODE", "the default for --mode"),
+    ("MBTOOL_BAUD", "the default for --baud"),
+    ("MBTOOL_PARITY", "the default for --parity"),
+    ("MBTOOL_DATA_BITS", "the default for --data-bits"),
+    ("MBTOOL_STOP_BITS", "the default for --stop-bits"),
+    ("MBTOOL_TIMEOUT", "the default for --timeout"),
+    ("MBTOOL_RETRIES", "the default for --retries"),
     ("NO_COLOR", "when set and not empty, no colour is used"),
 ];
 

@@ -17,7 +17,7 @@ pub enum Error {
     Io(#[from] std::io::Error),
     #[error(transparent)]
     Master(#[from] MasterError),
-    #[error("slave {slave} answered exception {code} to function {function:02X}")]
+    #[error("slave {slave} answered exception {code} to function {function} ({})", crate::codec::function::name(*function))]
     Exception {
         slave: u8,
         function: u8,
@@ -39,8 +39,8 @@ impl Error {
             Error::Master(MasterError::BadFrame { .. }) => 4,
             Error::Master(MasterError::Encode(_)) => 2,
             Error::Master(MasterError::Io(_)) => 1,
-            // 10 + N; codes past 0x0B are still reported, capped to stay a valid status.
-            Error::Exception { code, .. } => 10u8.saturating_add(code.0).min(255),
+            // 10 + N; a code past 245 (none is defined) saturates at 255.
+            Error::Exception { code, .. } => 10u8.saturating_add(code.0),
         }
     }
 }

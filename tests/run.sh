@@ -1,8 +1,30 @@
 #!/usr/bin/env bash
-# The whole test suite, as CI runs it: formatting, lints, every test, and the generated
-# completions and man pages checked against the clap definition.
+# The whole test suite, as CI runs it: the outside peers the tests talk to are installed
+# when missing, then formatting, lints and every test.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+# Debian packages: socat (pty pairs), mbpoll (a master we did not write), libmodbus-dev
+# (the C slave of the benchmarks), libudev-dev and pkg-config (tokio-serial, under the
+# tokio-modbus slave of the tests).
+missing=()
+command -v socat >/dev/null || missing+=(socat)
+command -v mbpoll >/dev/null || missing+=(mbpoll)
+command -v pkg-config >/dev/null || missing+=(pkg-config)
+pkg-config --exists libudev 2>/dev/null || missing+=(libudev-dev)
+pkg-config --exists libmodbus 2>/dev/null || missing+=(libmodbus-dev)
+if [ ${#missing[@]} -gt 0 ]; then
+    echo "installing ${missing[*]}"
+    sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+# pymodbus (PyPI): a slave in RTU, ASCII and TCP, and a master.
+if ! python3 -c 'import pymodbus, serial' 2>/dev/null; then
+    echo "installing pymodbus"
+    python3 -m pip install --quiet pymodbus pyserial
+fi
 
 cargo fmt --all -- --check
 cargo clippy --all-targets --quiet -- -D warnings

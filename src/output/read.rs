@@ -259,11 +259,12 @@ pub fn write_done(out: &mut dyn Write, format: OutputFormat, done: &WriteDone) -
             };
             writeln!(
                 out,
-                "wrote {} {} from {} ({what}, function {:02X})",
+                "wrote {} {} from {} ({what}, function {} {})",
                 done.count,
                 if done.count == 1 { "value" } else { "values" },
                 done.reference,
-                done.function
+                done.function,
+                crate::codec::function::name(done.function)
             )
         }
         OutputFormat::Values | OutputFormat::Csv => Ok(()),

@@ -65,9 +65,7 @@ impl Serial {
             .flow_control(serialport::FlowControl::None)
             .timeout(Duration::from_millis(100))
             .open()
-            .map_err(|e| {
-                io::Error::new(io::ErrorKind::Other, format!("cannot open {path}: {e}"))
-            })?;
+            .map_err(|e| io::Error::other(format!("cannot open {path}: {e}")))?;
         Ok(Serial { port })
     }
 }

@@ -1,0 +1,256 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use std::io::{Read, Write};
+use std::time::{Duration, Instant};
+
+use assert_cmd::Command;
+use mbtool::codec::stream::{Status, StreamDecoder};
+use mbtool::codec::{Direction, Frame, Mode};
+use serialport::{SerialPort, TTYPort};
+
+/// mbtool with no connection settings from the environment.
+pub fn mbtool() -> Command {
+    let mut cmd = Command::cargo_bin("mbtool").expect("the binary is built");
+    for var in [
+        "MBTOOL_PORT",
+        "MBTOOL_MODE",
+        "MBTOOL_BAUD",
+        "MBTOOL_PARITY",
+        "MBTOOL_DATA_BITS",
+        "MBTOOL_STOP_BITS",
+        "MBTOOL_TIMEOUT",
+        "MBTOOL_RETRIES",
+    ] {
+        cmd.env_remove(var);
+    }
+    cmd.env("NO_COLOR", "1");
+    cmd
+}
+
+/// Whether an outside peer is here. On a developer's machine a missing peer skips the test
+/// with a reason; with `CI` set it fails, because CI must run every test.
+pub fn peer_available(name: &str, found: bool) -> bool {
+    if found {
+        return true;
+    }
+    if std::env::var_os("CI").is_some() {
+        panic!("{name} is missing and CI is set: tests/run.sh installs it");
+    }
+    eprintln!("skipping: {name} is not installed (tests/run.sh installs it)");
+    false
+}
+
+pub fn command_exists(name: &str) -> bool {
+    std::process::Command::new("sh")
+        .args(["-c", &format!("command -v {name}")])
+        .output()
+        .is_ok_and(|o| o.status.success())
+}
+
+/// A pseudo-terminal pair: mbtool opens `path`; the test reads and writes `master`.
+pub struct Pty {
+    pub master: TTYPort,
+    // Held open so that the master side never sees a hang-up between mbtool runs.
+    _slave: TTYPort,
+    pub path: String,
+}
+
+impl Pty {
+    pub fn new() -> Pty {
+        let (master, slave) = TTYPort::pair().expect("a pseudo-terminal pair");
+        let path = slave.name().expect("the slave side has a name");
+        Pty {
+            master,
+            _slave: slave,
+            path,
+        }
+    }
+}
+
+/// Reads one whole frame of `mode` travelling in `direction` from `port`, or `None` when
+/// nothing came within `wait`.
+pub fn read_frame(
+    port: &mut TTYPort,
+    mode: Mode,
+    direction: Direction,
+    wait: Duration,
+) -> Option<(Frame, Vec<u8>)> {
+    let decoder = StreamDecoder::new(mode, direction);
+    let deadline = Instant::now() + wait;
+    let mut buffer = Vec::new();
+    let mut chunk = [0u8; 512];
+    while Instant::now() < deadline {
+        port.set_timeout(Duration::from_millis(20)).ok()?;
+        // A read that times out leaves the buffer as it was.
+        if let Ok(n) = port.read(&mut chunk) {
+            buffer.extend_from_slice(&chunk[..n]);
+        }
+        match decoder.decode(&buffer) {
+            Status::Complete { frame, len } => return Some((frame, buffer[..len].to_vec())),
+            Status::Invalid { .. } => buffer.clear(),
+            Status::Partial => {}
+        }
+    }
+    None
+}
+
+pub fn write_all(port: &mut TTYPort, bytes: &[u8]) {
+    port.write_all(bytes).expect("write to the pty");
+    port.flush().expect("flush the pty");
+}
+
+/// An RTU frame with its CRC.
+pub fn rtu(body: &[u8]) -> Vec<u8> {
+    let mut frame = body.to_vec();
+    frame.extend_from_slice(&mbtool::codec::checksum::crc16(body).to_le_bytes());
+    frame
+}
+
+/// A free TCP port on 127.0.0.1.
+pub fn free_port() -> u16 {
+    std::net::TcpListener::bind("127.0.0.1:0")
+        .and_then(|l| l.local_addr())
+        .map(|a| a.port())
+        .expect("a free port on 127.0.0.1")
+}
+
+/// Waits until something listens on 127.0.0.1:`port`.
+pub fn wait_for_listener(port: u16, within: Duration) -> bool {
+    let deadline = Instant::now() + within;
+    while Instant::now() < deadline {
+        if std::net::TcpStream::connect(("127.0.0.1", port)).is_ok() {
+            return true;
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    false
+}
+
+/// Runs mbtool with the connection options `port` and `args`; (exit status, stdout + stderr).
+pub fn run_against(port: &[String], args: &str) -> (i32, String) {
+    let output = mbtool()
+        .args(port)
+        .args(["--timeout", "2s"])
+        .args(args.split_whitespace())
+        .output()
+        .expect("mbtool runs");
+    (
+        output.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&output.stdout).into_owned()
+            + &String::from_utf8_lossy(&output.stderr),
+    )
+}
+
+/// The values mbtool prints with `-o values`.
+pub fn values_of(port: &[String], args: &str) -> Vec<String> {
+    let (code, out) = run_against(port, &format!("{args} -o values"));
+    assert_eq!(code, 0, "{args}: {out}");
+    out.lines().map(str::to_string).collect()
+}
+
+/// Every write command, each read back with every read command, counts at the protocol
+/// limits: for any slave 17 whose tables are writable from address 0 to 4000.
+pub fn writes_read_back(port: &[String]) {
+    assert_eq!(run_against(port, "write-coil 17 000173 on").0, 0);
+    assert_eq!(values_of(port, "read-coils 17 000173"), ["1"]);
+    assert_eq!(run_against(port, "write-register 17 400002 3").0, 0);
+    assert_eq!(values_of(port, "read-holding 17 400002"), ["3"]);
+    assert_eq!(
+        run_against(port, "write-registers 17 400002 0x000A 0x0102").0,
+        0
+    );
+    assert_eq!(values_of(port, "read 17 400002-400003"), ["10", "258"]);
+    assert_eq!(run_against(port, "write-coils 17 000100 10110").0, 0);
+    assert_eq!(
+        values_of(port, "read-coils 17 000100 5"),
+        ["1", "0", "1", "1", "0"]
+    );
+    assert_eq!(
+        run_against(port, "write 17 400010 -2.5 --type f32 --order CDAB").0,
+        0
+    );
+    assert_eq!(
+        values_of(port, "read-holding 17 400010 --type f32 --order CDAB"),
+        ["-2.5"]
+    );
+    assert_eq!(run_against(port, "write 17 400020 7 8 --function 6").0, 0);
+    assert_eq!(values_of(port, "read-holding 17 400020 2"), ["7", "8"]);
+    let many: Vec<String> = (0..123).map(|i| (i * 7).to_string()).collect();
+    assert_eq!(
+        run_against(
+            port,
+            &format!("write-registers 17 401001 {}", many.join(" "))
+        )
+        .0,
+        0
+    );
+    assert_eq!(values_of(port, "read-holding 17 401001 123"), many);
+    assert_eq!(values_of(port, "read-holding 17 400001 300").len(), 300);
+    let bits: String = (0..1968)
+        .map(|i| if i % 3 == 0 { '1' } else { '0' })
+        .collect();
+    assert_eq!(
+        run_against(port, &format!("write-coils 17 1001 {bits}")).0,
+        0
+    );
+    assert_eq!(values_of(port, "read-coils 17 1001 1968").concat(), bits);
+    assert_eq!(values_of(port, "read-coils 17 1 2000").len(), 2000);
+    assert_eq!(values_of(port, "read-inputs 17 1 2000").len(), 2000);
+    assert_eq!(values_of(port, "read-input-registers 17 1 125").len(), 125);
+}
+
+/// A child process that is stopped when the test ends, however it ends.
+pub struct Stopped(pub std::process::Child);
+
+impl Drop for Stopped {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+/// A socat pty pair: `a` and `b` are linked; socat is stopped on drop.
+pub struct PtyPair {
+    _socat: Stopped,
+    pub a: std::path::PathBuf,
+    pub b: std::path::PathBuf,
+    _dir: tempfile::TempDir,
+}
+
+impl PtyPair {
+    /// `None` (skipped, with a reason) where socat is missing outside CI.
+    pub fn new() -> Option<PtyPair> {
+        if !peer_available("socat", command_exists("socat")) {
+            return None;
+        }
+        let dir = tempfile::tempdir().expect("a temporary folder");
+        let (a, b) = (dir.path().join("a"), dir.path().join("b"));
+        let socat = std::process::Command::new("socat")
+            .arg(format!("pty,raw,echo=0,link={}", a.display()))
+            .arg(format!("pty,raw,echo=0,link={}", b.display()))
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("socat starts");
+        let socat = Stopped(socat);
+        let deadline = Instant::now() + Duration::from_secs(5);
+        while !(a.exists() && b.exists()) && Instant::now() < deadline {
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        Some(PtyPair {
+            _socat: socat,
+            a,
+            b,
+            _dir: dir,
+        })
+    }
+}
+
+/// Whether python3 can import `module`.
+pub fn python_has(module: &str) -> bool {
+    std::process::Command::new("python3")
+        .args(["-c", &format!("import {module}")])
+        .output()
+        .is_ok_and(|o| o.status.success())
+}

@@ -1,0 +1,272 @@
+//! The master against a strict scripted slave on a pseudo-terminal, which plays exact bytes:
+//! every fault a real bus produces gets the exit status and message CLI.md promises.
+
+mod common;
+
+use std::thread;
+use std::time::Duration;
+
+use common::{mbtool, read_frame, rtu, write_all, Pty};
+use mbtool::codec::{Direction, Mode};
+
+/// What the scripted slave does with each request it receives, in order.
+enum Act {
+    /// Wait, then write these bytes.
+    Answer(Duration, Vec<u8>),
+    /// Say nothing.
+    Silence,
+}
+
+struct Outcome {
+    code: i32,
+    stdout: String,
+    stderr: String,
+    /// The request frames the slave received.
+    requests: Vec<Vec<u8>>,
+}
+
+/// Runs mbtool with `args` against a slave that plays `acts`.
+fn against(acts: Vec<Act>, args: &[&str]) -> Outcome {
+    let pty = Pty::new();
+    let path = pty.path.clone();
+    let mut port = pty.master.try_clone_native().expect("clone the pty master");
+    let slave = thread::spawn(move || {
+        let mut requests = Vec::new();
+        for act in acts {
+            let Some((_, bytes)) = read_frame(
+                &mut port,
+                Mode::Rtu,
+                Direction::Request,
+                Duration::from_secs(5),
+            ) else {
+                break;
+            };
+            requests.push(bytes);
+            if let Act::Answer(delay, answer) = act {
+                thread::sleep(delay);
+                write_all(&mut port, &answer);
+            }
+        }
+        // Anything more the master sends is counted too (retries that should not happen).
+        while let Some((_, bytes)) = read_frame(
+            &mut port,
+            Mode::Rtu,
+            Direction::Request,
+            Duration::from_millis(300),
+        ) {
+            requests.push(bytes);
+        }
+        requests
+    });
+    let output = mbtool()
+        .args(["--port", &path, "--timeout", "300ms"])
+        .args(args)
+        .output()
+        .unwrap();
+    let requests = slave.join().unwrap();
+    drop(pty.master);
+    Outcome {
+        code: output.status.code().unwrap_or(-1),
+        stdout: String::from_utf8_lossy(&output.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&output.stderr).into_owned(),
+        requests,
+    }
+}
+
+const READ: &[&str] = &["read-holding", "17", "400108", "3", "-o", "values"];
+const REQUEST: [u8; 8] = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
+const ANSWER: [u8; 11] = [
+    0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64, 0xC8, 0xBA,
+];
+
+fn now(bytes: &[u8]) -> Act {
+    Act::Answer(Duration::ZERO, bytes.to_vec())
+}
+
+fn assert_fails(outcome: &Outcome, code: i32, says: &str) {
+    assert_eq!(outcome.code, code, "stderr: {}", outcome.stderr);
+    assert!(outcome.stdout.is_empty(), "printed {:?}", outcome.stdout);
+    assert_eq!(outcome.stderr.lines().count(), 1, "{}", outcome.stderr);
+    assert!(outcome.stderr.starts_with("mbtool: "), "{}", outcome.stderr);
+    assert!(
+        outcome.stderr.contains(says),
+        "{:?} lacks {says:?}",
+        outcome.stderr
+    );
+}
+
+#[test]
+fn a_good_answer_is_read() {
+    let outcome = against(vec![now(&ANSWER)], READ);
+    assert_eq!(outcome.code, 0, "{}", outcome.stderr);
+    assert_eq!(outcome.stdout, "555\n0\n100\n");
+    assert_eq!(outcome.requests, [REQUEST.to_vec()]);
+}
+
+#[test]
+fn a_bad_crc_is_a_bad_frame() {
+    let mut answer = ANSWER;
+    answer[10] ^= 0xFF;
+    assert_fails(&against(vec![now(&answer)], READ), 4, "CRC mismatch");
+}
+
+#[test]
+fn an_answer_from_another_slave_is_a_bad_frame() {
+    let answer = rtu(&[0x12, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64]);
+    assert_fails(&against(vec![now(&answer)], READ), 4, "slave 18");
+}
+
+#[test]
+fn an_answer_for_another_function_is_a_bad_frame() {
+    let answer = rtu(&[0x11, 0x04, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64]);
+    assert_fails(&against(vec![now(&answer)], READ), 4, "function 04");
+}
+
+#[test]
+fn fewer_registers_than_asked_is_a_bad_frame() {
+    let answer = rtu(&[0x11, 0x03, 0x04, 0x02, 0x2B, 0x00, 0x00]);
+    assert_fails(&against(vec![now(&answer)], READ), 4, "2 registers");
+}
+
+#[test]
+fn a_truncated_answer_is_a_bad_frame() {
+    assert_fails(
+        &against(vec![now(&ANSWER[..7])], READ),
+        4,
+        "incomplete answer: 7 bytes",
+    );
+}
+
+#[test]
+fn noise_before_the_answer_is_passed_over() {
+    let mut noisy = vec![0x00, 0xFE, 0x11];
+    noisy.extend_from_slice(&ANSWER);
+    let outcome = against(vec![now(&noisy)], READ);
+    assert_eq!(outcome.code, 0, "{}", outcome.stderr);
+    assert_eq!(outcome.stdout, "555\n0\n100\n");
+}
+
+#[test]
+fn a_late_answer_is_a_timeout() {
+    let late = Act::Answer(Duration::from_millis(700), ANSWER.to_vec());
+    assert_fails(
+        &against(vec![late], READ),
+        3,
+        "no answer from slave 17 within 300.00 ms",
+    );
+}
+
+#[test]
+fn a_silent_slave_is_a_timeout() {
+    assert_fails(&against(vec![Act::Silence], READ), 3, "no answer");
+}
+
+#[test]
+fn an_exception_gives_10_plus_its_code_and_its_name() {
+    let exception = rtu(&[0x11, 0x83, 0x02]);
+    assert_fails(
+        &against(vec![now(&exception)], READ),
+        12,
+        "illegal data address",
+    );
+    let exception = rtu(&[0x11, 0x83, 0x04]);
+    assert_fails(
+        &against(vec![now(&exception)], READ),
+        14,
+        "slave device failure",
+    );
+}
+
+#[test]
+fn a_timeout_is_retried_and_an_exception_never() {
+    let mut args = READ.to_vec();
+    args.extend(["--retries", "2"]);
+    let outcome = against(vec![Act::Silence, now(&ANSWER)], &args);
+    assert_eq!(outcome.code, 0, "{}", outcome.stderr);
+    assert_eq!(outcome.requests.len(), 2);
+
+    let exception = rtu(&[0x11, 0x83, 0x02]);
+    let outcome = against(vec![now(&exception)], &args);
+    assert_eq!(outcome.code, 12);
+    assert_eq!(outcome.requests.len(), 1, "an exception was retried");
+}
+
+#[test]
+fn a_bad_frame_is_retried() {
+    let mut bad = ANSWER;
+    bad[3] ^= 1;
+    let mut args = READ.to_vec();
+    args.extend(["--retries", "1"]);
+    let outcome = against(vec![now(&bad), now(&ANSWER)], &args);
+    assert_eq!(outcome.code, 0, "{}", outcome.stderr);
+    assert_eq!(outcome.requests.len(), 2);
+}
+
+#[test]
+fn a_write_whose_echo_differs_is_a_bad_frame() {
+    let echo = rtu(&[0x11, 0x06, 0x00, 0x01, 0x00, 0x04]);
+    let outcome = against(vec![now(&echo)], &["write-register", "17", "400002", "3"]);
+    assert_fails(&outcome, 4, "echo");
+    assert_eq!(
+        outcome.requests,
+        [vec![0x11, 0x06, 0x00, 0x01, 0x00, 0x03, 0x9A, 0x9B]]
+    );
+}
+
+#[test]
+fn a_broadcast_write_expects_no_answer() {
+    let outcome = against(vec![Act::Silence], &["write-register", "0", "400002", "3"]);
+    assert_eq!(outcome.code, 0, "{}", outcome.stderr);
+    assert_eq!(outcome.requests.len(), 1);
+    assert!(outcome.stdout.contains("broadcast"), "{}", outcome.stdout);
+}
+
+#[test]
+fn verbose_shows_every_frame_with_a_timestamp() {
+    let mut args = READ.to_vec();
+    args.push("-v");
+    let outcome = against(vec![now(&ANSWER)], &args);
+    assert_eq!(outcome.code, 0);
+    let lines: Vec<&str> = outcome.stderr.lines().collect();
+    assert_eq!(lines.len(), 2, "{}", outcome.stderr);
+    assert!(
+        lines[0].ends_with("> 11 03 00 6B 00 03 76 87"),
+        "{}",
+        lines[0]
+    );
+    assert!(
+        lines[1].ends_with("< 11 03 06 02 2B 00 00 00 64 C8 BA"),
+        "{}",
+        lines[1]
+    );
+    assert!(lines[0].starts_with('['), "{}", lines[0]);
+}
+
+#[test]
+fn ascii_mode_on_a_serial_line() {
+    let pty = Pty::new();
+    let path = pty.path.clone();
+    let mut port = pty.master.try_clone_native().unwrap();
+    let slave = thread::spawn(move || {
+        let request = read_frame(
+            &mut port,
+            Mode::Ascii,
+            Direction::Request,
+            Duration::from_secs(5),
+        );
+        write_all(&mut port, b":110306022B0000006455\r\n");
+        request.map(|(_, bytes)| bytes)
+    });
+    let output = mbtool()
+        .args(["--port", &path, "--mode", "ascii", "--timeout", "500ms"])
+        .args(READ)
+        .output()
+        .unwrap();
+    let request = slave.join().unwrap();
+    assert_eq!(request.as_deref(), Some(&b":1103006B00037E\r\n"[..]));
+    assert_eq!(
+        String::from_utf8_lossy(&output.stdout),
+        "555\n0\n100\n",
+        "{output:?}"
+    );
+}

@@ -1,0 +1,51 @@
+#!/usr/bin/env python3
+"""A pymodbus slave for mbtool's tests: RTU or ASCII on a serial device, or TCP on 127.0.0.1.
+
+    pymodbus_slave.py --framer rtu --serial /dev/pts/5
+    pymodbus_slave.py --framer socket --tcp 5020
+"""
+import argparse
+
+from pymodbus import FramerType
+from pymodbus.datastore import (
+    ModbusDeviceContext,
+    ModbusSequentialDataBlock,
+    ModbusServerContext,
+)
+from pymodbus.server import StartSerialServer, StartTcpServer
+
+SIZE = 5000
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--framer", choices=["rtu", "ascii", "socket"], required=True)
+    parser.add_argument("--serial")
+    parser.add_argument("--tcp", type=int)
+    args = parser.parse_args()
+
+    def block():
+        # pymodbus counts block addresses from 1; protocol address 0 is its first cell.
+        return ModbusSequentialDataBlock(1, [0] * SIZE)
+
+    device = ModbusDeviceContext(di=block(), co=block(), ir=block(), hr=block())
+    context = ModbusServerContext(devices={17: device}, single=False)
+    framer = FramerType(args.framer)
+    if args.tcp:
+        StartTcpServer(context, framer=framer, address=("127.0.0.1", args.tcp))
+    else:
+        # A pseudo-terminal carries bytes, not bits: line settings mean nothing there, and
+        # pyserial's even parity is refused by the pty driver.
+        StartSerialServer(
+            context,
+            framer=framer,
+            port=args.serial,
+            baudrate=19200,
+            bytesize=8,
+            parity="N",
+            stopbits=1,
+        )
+
+
+if __name__ == "__main__":
+    main()
