@@ -67,6 +67,9 @@ pub struct Master {
     transaction: u16,
     tracer: Option<Tracer>,
     buffer: Vec<u8>,
+    /// The last transaction ended on a whole answer, so nothing stale can be waiting
+    /// on a TCP connection.
+    in_step: bool,
 }
 
 impl Master {
@@ -78,6 +81,7 @@ impl Master {
             transaction: 0,
             tracer: None,
             buffer: Vec::with_capacity(512),
+            in_step: false,
         }
     }
 
@@ -120,7 +124,12 @@ impl Master {
                 }
             }
         }
-        self.transport.discard_input()?;
+        // On a serial line noise can arrive at any time; over TCP a late answer can only
+        // follow a transaction that failed (and would be told by its transaction id).
+        if self.transport.is_serial_line() || !self.in_step {
+            self.transport.discard_input()?;
+        }
+        self.in_step = false;
         self.transaction = self.transaction.wrapping_add(1);
         let frame = Frame {
             mode: self.options.mode,
@@ -214,7 +223,10 @@ impl Master {
         let shown = crate::report::spaced_hex(&buffer[..received.min(32)]);
         self.buffer = buffer;
         match outcome {
-            Ok(pdu) => Ok(pdu),
+            Ok(pdu) => {
+                self.in_step = true;
+                Ok(pdu)
+            }
             Err(Some(io_error)) => Err(MasterError::Io(io_error)),
             Err(None) => Err(match problem {
                 Some(reason) => MasterError::BadFrame { slave, reason },

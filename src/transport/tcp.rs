@@ -8,6 +8,9 @@ use super::{time_left, Transport};
 
 pub struct Tcp {
     stream: TcpStream,
+    /// The read timeout last set, in whole milliseconds: setting it is a system call, and
+    /// most transactions wait with the same one.
+    read_timeout_ms: u64,
     /// RTU frames through a gateway: silence between frames still matters on its line.
     serial_behind: bool,
 }
@@ -23,14 +26,7 @@ impl Tcp {
         let mut last_error = None;
         for address in (host, port).to_socket_addrs()? {
             match TcpStream::connect_timeout(&address, timeout.max(Duration::from_millis(1))) {
-                Ok(stream) => {
-                    // Frames are small and a master waits for each answer: send at once.
-                    stream.set_nodelay(true)?;
-                    return Ok(Tcp {
-                        stream,
-                        serial_behind,
-                    });
-                }
+                Ok(stream) => return Tcp::from_stream(stream, serial_behind),
                 Err(error) => last_error = Some(error),
             }
         }
@@ -39,11 +35,13 @@ impl Tcp {
         }))
     }
 
-    /// A connection accepted by a server.
+    /// A connected stream, as `connect` makes it or a server accepts it.
     pub fn from_stream(stream: TcpStream, serial_behind: bool) -> io::Result<Tcp> {
+        // Frames are small and each waits for an answer: send at once.
         stream.set_nodelay(true)?;
         Ok(Tcp {
             stream,
+            read_timeout_ms: 0,
             serial_behind,
         })
     }
@@ -76,7 +74,13 @@ impl Transport for Tcp {
             let Some(left) = time_left(deadline) else {
                 return Ok(0);
             };
-            self.stream.set_read_timeout(Some(left))?;
+            // Rounded up to whole milliseconds, so that it is rarely changed.
+            let left_ms = left.as_micros().div_ceil(1000) as u64;
+            if left_ms != self.read_timeout_ms {
+                self.stream
+                    .set_read_timeout(Some(Duration::from_millis(left_ms)))?;
+                self.read_timeout_ms = left_ms;
+            }
             match self.stream.read(&mut chunk) {
                 Ok(0) => return Err(closed()),
                 Ok(n) => {
