@@ -129,6 +129,23 @@ const EXAMPLES: &[(&str, &[Example])] = &[
         )],
     ),
     (
+        "serve",
+        &[
+            ex(
+                "Stand in for slave 17 on a serial line",
+                "mbtool serve --port /dev/ttyUSB0 --slave 17",
+            ),
+            ex(
+                "Serve Modbus TCP on 127.0.0.1:5020 with the values of a data file",
+                "mbtool serve --port tcp://:5020 --data plant.txt",
+            ),
+            ex(
+                "Test a master's error handling: late answers, 5% dropped, exception 02 on 400100-400120",
+                "mbtool serve --port tcp://:5020 --delay 200ms --drop 5% --exception 2@400100-400120",
+            ),
+        ],
+    ),
+    (
         "decode",
         &[
             ex(

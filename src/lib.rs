@@ -17,6 +17,7 @@ pub mod output;
 pub mod plan;
 pub mod poll;
 pub mod report;
+pub mod server;
 pub mod sim;
 pub mod slave;
 pub mod transport;

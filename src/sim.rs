@@ -4,9 +4,9 @@
 use std::io;
 use std::time::Instant;
 
-use crate::codec::adu::wrap;
+use crate::codec::adu::{opaque_request, wrap};
 use crate::codec::stream::{Status, StreamDecoder};
-use crate::codec::{Direction, Mode};
+use crate::codec::{Direction, FrameError, Mode};
 use crate::slave::{DataModel, Slave};
 use crate::transport::Transport;
 
@@ -37,8 +37,17 @@ impl Transport for SimTransport {
 
     fn send(&mut self, frame: &[u8]) -> io::Result<()> {
         let decoder = StreamDecoder::new(self.mode, Direction::Request);
-        // Like a device: a frame that does not decode gets no answer.
-        if let Status::Complete { frame, .. } = decoder.decode(frame) {
+        // Like a device: a sound frame with a bad PDU gets an exception, a broken frame
+        // gets no answer.
+        let request = match decoder.decode(frame) {
+            Status::Complete { frame, .. } => Some(frame),
+            Status::Invalid {
+                error: FrameError::Pdu(_),
+                len,
+            } => opaque_request(self.mode, &frame[..len.min(frame.len())]).ok(),
+            _ => None,
+        };
+        if let Some(frame) = request {
             if let crate::codec::Pdu::Request(request) = &frame.pdu {
                 if let Some(answer) = self.slave.handle(frame.slave, request) {
                     let mut pdu = Vec::new();

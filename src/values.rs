@@ -47,6 +47,8 @@ pub enum ByteOrder {
 pub enum Value {
     Unsigned(u64),
     Signed(i64),
+    /// Kept as f32, so that 3.14 shows as 3.14 and not as its nearest f64.
+    Float32(f32),
     Float(f64),
     Text(String),
 }
@@ -56,6 +58,7 @@ impl fmt::Display for Value {
         match self {
             Value::Unsigned(v) => write!(f, "{v}"),
             Value::Signed(v) => write!(f, "{v}"),
+            Value::Float32(v) => write!(f, "{v}"),
             Value::Float(v) => write!(f, "{v}"),
             Value::Text(v) => f.write_str(v),
         }
@@ -95,7 +98,7 @@ impl ValueType {
             ValueType::I16 => Value::Signed(i64::from(unsigned as u16 as i16)),
             ValueType::I32 => Value::Signed(i64::from(unsigned as u32 as i32)),
             ValueType::I64 => Value::Signed(unsigned as i64),
-            ValueType::F32 => Value::Float(f64::from(f32::from_bits(unsigned as u32))),
+            ValueType::F32 => Value::Float32(f32::from_bits(unsigned as u32)),
             ValueType::F64 => Value::Float(f64::from_bits(unsigned)),
             ValueType::Hex => Value::Text(format!("0x{unsigned:04X}")),
             ValueType::Bin => Value::Text(format!("0b{unsigned:016b}")),
@@ -220,9 +223,22 @@ mod tests {
             let registers = ValueType::F32.parse("-1234.5", order).unwrap();
             assert_eq!(
                 ValueType::F32.read(&registers, order),
-                Value::Float(-1234.5)
+                Value::Float32(-1234.5)
+            );
+            assert_eq!(
+                ValueType::F32.read(&registers, order).to_string(),
+                "-1234.5"
             );
         }
+    }
+
+    #[test]
+    fn f32_shows_as_typed() {
+        let registers = ValueType::F32.parse("3.14", ByteOrder::Abcd).unwrap();
+        assert_eq!(
+            ValueType::F32.read(&registers, ByteOrder::Abcd).to_string(),
+            "3.14"
+        );
     }
 
     #[test]

@@ -78,6 +78,9 @@ fn raw_requests_and_exceptions() {
     let (code, out) = run("raw 17 41");
     assert_eq!(code, 11, "{out}");
     assert!(out.contains("illegal function"), "{out}");
+    // A known function with a bad quantity: exception 03, as a device answers it.
+    let (code, out) = run("raw 17 03 00 00 00 00");
+    assert_eq!(code, 13, "{out}");
     let (code, out) = run("raw 17 08 00 00 12 34 --json");
     assert_eq!(code, 0, "{out}");
     assert!(out.contains("\"data\":\"12 34\""), "{out}");

@@ -3,6 +3,7 @@
 mod decode;
 mod encode;
 mod request;
+mod serve;
 
 use anyhow::Result;
 
@@ -14,6 +15,7 @@ pub fn run(cli: Cli) -> Result<u8> {
         Command::Decode(args) => decode::run(&cli, args),
         Command::Encode { request } => encode::run(&cli, request),
         Command::Request(request) => request::run(&cli, request),
+        Command::Serve(args) => serve::run(&cli, args),
         Command::Generate(args) => {
             mbtool::docs::generate(&args.dir)?;
             Ok(0)

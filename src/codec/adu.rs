@@ -304,6 +304,34 @@ impl Frame {
     }
 }
 
+/// Reads a request whose envelope and checksum are sound but whose PDU breaks its
+/// function's layout (quantity 0, say) as an opaque request, so that a slave can answer it
+/// with an exception as a real device does, rather than stay silent.
+pub fn opaque_request(mode: Mode, bytes: &[u8]) -> Result<Frame, FrameError> {
+    let envelope = Envelope::open(mode, bytes)?;
+    if let Some(error) = envelope.checksum.error() {
+        return Err(error);
+    }
+    match envelope.pdu.split_first() {
+        Some((&function, data))
+            if function != 0 && function & super::function::EXCEPTION_FLAG == 0 =>
+        {
+            Ok(Frame {
+                mode,
+                slave: envelope.slave,
+                transaction: envelope.transaction,
+                pdu: Pdu::Request(super::pdu::Request::Other {
+                    function,
+                    data: data.to_vec(),
+                }),
+            })
+        }
+        _ => Err(FrameError::Pdu(PduError::BadField(
+            "function codes 00 and 80-FF are not requests",
+        ))),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -10,6 +10,7 @@ impl ExceptionCode {
     pub const ILLEGAL_DATA_ADDRESS: Self = Self(0x02);
     pub const ILLEGAL_DATA_VALUE: Self = Self(0x03);
     pub const SERVER_DEVICE_FAILURE: Self = Self(0x04);
+    pub const GATEWAY_TARGET_FAILED: Self = Self(0x0B);
 
     pub fn name(self) -> &'static str {
         match self.0 {

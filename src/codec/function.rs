@@ -26,6 +26,21 @@ pub const MEI_READ_DEVICE_IDENTIFICATION: u8 = 0x0E;
 /// Set in the function code of an exception response.
 pub const EXCEPTION_FLAG: u8 = 0x80;
 
+/// Whether the codec reads this request by a layout of its own; an opaque request with such
+/// a function code is one that broke its layout.
+pub fn has_layout(function: u8, data: &[u8]) -> bool {
+    match function {
+        READ_COILS..=DIAGNOSTICS
+        | WRITE_MULTIPLE_COILS
+        | WRITE_MULTIPLE_REGISTERS
+        | REPORT_SERVER_ID
+        | MASK_WRITE_REGISTER
+        | READ_WRITE_MULTIPLE_REGISTERS => true,
+        ENCAPSULATED_INTERFACE => data.first() == Some(&MEI_READ_DEVICE_IDENTIFICATION),
+        _ => false,
+    }
+}
+
 /// The name of a function code as the Modbus specification gives it.
 pub fn name(function: u8) -> &'static str {
     match function & !EXCEPTION_FLAG {

@@ -4,6 +4,7 @@
 pub mod decode;
 pub mod encode;
 pub mod read;
+pub mod serve;
 
 use std::io::{self, IsTerminal, Write};
 

@@ -1,6 +1,8 @@
 //! A Modbus slave as data: the four tables of each slave id, and the answer to a request.
 //! No I/O: `serve` puts it behind a transport, `--port sim` calls it in process.
 
+pub mod datafile;
+pub mod faults;
 pub mod model;
 
 use std::collections::BTreeMap;
@@ -52,6 +54,11 @@ impl Slave {
             counters: ids.iter().map(|id| (*id, Counters::default())).collect(),
             identity: Identity::default(),
         }
+    }
+
+    /// The first slave id it answers for (over TCP, unit ids 0 and 255 mean this one).
+    pub fn first_id(&self) -> u8 {
+        self.models.keys().next().copied().unwrap_or(1)
     }
 
     pub fn answers_for(&self, slave: u8) -> bool {
@@ -214,7 +221,8 @@ fn respond(
             read_code,
             object_id,
         } => device_identification(*read_code, *object_id, identity)?,
-        Request::Other { function, .. } if *function == function::DIAGNOSTICS => {
+        // A known function whose request broke its layout: a bad quantity or byte count.
+        Request::Other { function, data } if function::has_layout(*function, data) => {
             return Err(ExceptionCode::ILLEGAL_DATA_VALUE)
         }
         Request::Other { .. } => return Err(ILLEGAL_FUNCTION),

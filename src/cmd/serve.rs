@@ -1,0 +1,140 @@
+//! `mbtool serve`: a simulated slave on a serial line or TCP.
+
+use std::io::Write;
+use std::net::TcpListener;
+use std::sync::Arc;
+
+use anyhow::{Context, Result};
+
+use mbtool::address::parse_reference_span;
+use mbtool::cli::{Cli, ModeArg, OutputFormat, ServeArgs};
+use mbtool::codec::Mode;
+use mbtool::connection::line_settings;
+use mbtool::error::Error;
+use mbtool::output::serve::write_entry;
+use mbtool::server::{Logger, Server};
+use mbtool::slave::faults::Faults;
+use mbtool::slave::{datafile, DataModel, Identity, Slave};
+use mbtool::transport::serial::Serial;
+use mbtool::transport::Endpoint;
+
+/// The slave id of the manuals' examples, answered when no --slave is given.
+const DEFAULT_SLAVE: u8 = 17;
+
+/// `tcp://:PORT` listens on 127.0.0.1: nothing is exposed unless asked for.
+fn endpoint(cli: &Cli) -> Result<Endpoint, Error> {
+    let port = cli.connection.port.as_deref().ok_or_else(|| {
+        Error::usage(
+            "serve needs --port: a serial device, or tcp://127.0.0.1:5020 to listen on TCP",
+        )
+    })?;
+    let port = port.replacen("tcp://:", "tcp://127.0.0.1:", 1).replacen(
+        "rtu+tcp://:",
+        "rtu+tcp://127.0.0.1:",
+        1,
+    );
+    match Endpoint::parse(&port).map_err(Error::Usage)? {
+        Endpoint::Sim => Err(Error::usage(
+            "--port sim is the built-in slave for the master commands; serve needs a serial device or tcp://ADDRESS:PORT",
+        )),
+        endpoint => Ok(endpoint),
+    }
+}
+
+fn data_model(args: &ServeArgs) -> Result<DataModel> {
+    let mut model = match &args.data {
+        Some(path) => datafile::load(path).map_err(|e| Error::usage(e.to_string()))?,
+        None => DataModel::manual_examples(),
+    };
+    for range in &args.read_only {
+        let span = parse_reference_span(range)
+            .map_err(|e| Error::usage(format!("--read-only {range}: {e}")))?;
+        let start = u32::from(span.address);
+        let end = start + span.count.unwrap_or(1);
+        match span.table {
+            mbtool::address::Table::Coils => model.coils.protect(start, end),
+            mbtool::address::Table::HoldingRegisters => model.holding_registers.protect(start, end),
+            other => {
+                return Err(Error::usage(format!(
+                    "--read-only {range}: {}s are read-only already",
+                    other.name()
+                ))
+                .into())
+            }
+        }
+    }
+    Ok(model)
+}
+
+pub fn run(cli: &Cli, args: &ServeArgs) -> Result<u8> {
+    let endpoint = endpoint(cli)?;
+    let mode = match (&endpoint, cli.connection.mode) {
+        (Endpoint::Tcp { .. }, None | Some(ModeArg::Tcp)) => Mode::Tcp,
+        (Endpoint::Tcp { .. }, Some(_)) => {
+            return Err(Error::usage(
+                "tcp:// serves Modbus TCP: for RTU frames over TCP use rtu+tcp://",
+            )
+            .into())
+        }
+        (_, Some(ModeArg::Tcp)) => {
+            return Err(Error::usage("--mode tcp needs a tcp:// port").into())
+        }
+        (_, Some(mode)) => mode.into(),
+        (_, None) => Mode::Rtu,
+    };
+    let ids = if args.slaves.is_empty() {
+        vec![DEFAULT_SLAVE]
+    } else {
+        args.slaves.clone()
+    };
+    let mut slave = Slave::new(&ids, data_model(args)?);
+    slave.identity = Identity {
+        vendor: args.vendor.clone(),
+        product_code: args.product_code.clone(),
+        ..Identity::default()
+    };
+    let faults = Faults {
+        delay: args.delay.unwrap_or_default(),
+        drop: args.drop.unwrap_or(0.0),
+        corrupt: args.corrupt.unwrap_or(0.0),
+        exceptions: args.exception.clone(),
+        garbage: args.garbage,
+    };
+    let logger: Option<Logger> = (!args.quiet).then(|| {
+        let json = cli.output.format() == OutputFormat::Json;
+        Arc::new(move |entry: &mbtool::server::LogEntry| {
+            // One write a line, so that lines from several clients never mix.
+            let mut line = Vec::with_capacity(160);
+            if write_entry(&mut line, json, entry).is_ok() {
+                let _ = std::io::stderr().lock().write_all(&line);
+            }
+        }) as Logger
+    });
+    let seed = args.seed.unwrap_or_else(|| fastrand::u64(..));
+    let server = Arc::new(Server::new(slave, faults, mode, seed, logger));
+    let ids_text = ids.iter().map(u8::to_string).collect::<Vec<_>>().join(", ");
+    match &endpoint {
+        Endpoint::Serial(path) => {
+            let line = line_settings(cli, mode);
+            let mut transport = Serial::open(path, &line).map_err(Error::Io)?;
+            eprintln!(
+                "mbtool: serving slave {ids_text} on {path} ({mode}, {} baud); Ctrl-C ends",
+                line.baud
+            );
+            let mut rng = fastrand::Rng::with_seed(seed);
+            server
+                .serve_stream(&mut transport, path, None, &mut rng)
+                .with_context(|| format!("serving on {path}"))?;
+            Ok(0)
+        }
+        Endpoint::Tcp { host, port } | Endpoint::RtuOverTcp { host, port } => {
+            let listener = TcpListener::bind((host.as_str(), *port))
+                .with_context(|| format!("cannot listen on {endpoint}"))?;
+            let address = listener.local_addr()?;
+            eprintln!("mbtool: serving slave {ids_text} on {address} ({mode}); Ctrl-C ends");
+            server.serve_tcp(listener, Arc::new(|error| eprintln!("mbtool: {error}")))?;
+            Ok(0)
+        }
+        Endpoint::Sim => Ok(0),
+    }
+}

@@ -1,0 +1,267 @@
+//! The data file of `mbtool serve --data FILE`: which addresses exist and their first values.
+//!
+//! One entry a line; `#` starts a comment:
+//!
+//! ```text
+//! # holding registers 400108-400110, as in the manuals
+//! 400108 = 555 0 100
+//! 400001 = 3.14 f32          # a typed value takes as many registers as its type
+//! 400010 = 1.5 f32 CDAB      # ... in a byte order
+//! 400020 = "PUMP 1" ascii    # text, two characters a register
+//! 400200-400299 = 0          # a range with one value: every address gets it
+//! 000020-000056 = 1 0 1 1    # coils: on/off, 1/0, true/false; the rest of the range 0
+//! 300009 = 10
+//! ```
+//!
+//! With a data file only the addresses it names exist; any other gets exception 02.
+
+use std::path::Path;
+
+use thiserror::Error;
+
+use crate::address::{parse_reference_span, reference, Table};
+use crate::slave::DataModel;
+use crate::values::{ByteOrder, ValueType};
+
+#[derive(Debug, Error)]
+pub enum DataFileError {
+    #[error("cannot read {path}: {error}")]
+    Read { path: String, error: std::io::Error },
+    #[error("{path}:{line}: {message}")]
+    Line {
+        path: String,
+        line: usize,
+        message: String,
+    },
+}
+
+/// Splits the value part into words, a double-quoted string being one word.
+fn words(text: &str) -> Result<Vec<String>, String> {
+    let mut words = Vec::new();
+    let mut rest = text.trim();
+    while !rest.is_empty() {
+        if let Some(quoted) = rest.strip_prefix('"') {
+            let end = quoted
+                .find('"')
+                .ok_or("a quoted text has no closing '\"'")?;
+            words.push(quoted[..end].to_string());
+            rest = quoted[end + 1..].trim_start();
+        } else {
+            let end = rest.find(char::is_whitespace).unwrap_or(rest.len());
+            words.push(rest[..end].to_string());
+            rest = rest[end..].trim_start();
+        }
+    }
+    Ok(words)
+}
+
+fn value_type(word: &str) -> Option<ValueType> {
+    clap::ValueEnum::from_str(word, true).ok()
+}
+
+fn byte_order(word: &str) -> Option<ByteOrder> {
+    clap::ValueEnum::from_str(word, true).ok()
+}
+
+fn coil(word: &str) -> Result<bool, String> {
+    match word.to_ascii_lowercase().as_str() {
+        "1" | "on" | "true" => Ok(true),
+        "0" | "off" | "false" => Ok(false),
+        _ => Err(format!(
+            "'{word}' is not a coil value: give on, off, 1, 0, true or false"
+        )),
+    }
+}
+
+/// One entry: fills `model` and declares the addresses it names.
+fn entry(model: &mut DataModel, line: &str) -> Result<(), String> {
+    let (target, values) = line
+        .split_once('=')
+        .ok_or("an entry is REFERENCE = VALUE..., as in 400108 = 555")?;
+    let span = parse_reference_span(target.trim()).map_err(|e| e.to_string())?;
+    let mut words = words(values)?;
+    let mut order = ByteOrder::Abcd;
+    let mut kind = ValueType::U16;
+    if let Some(o) = words.last().and_then(|w| byte_order(w)) {
+        order = o;
+        words.pop();
+    }
+    if let Some(t) = words.last().and_then(|w| value_type(w)) {
+        kind = t;
+        words.pop();
+    }
+    if words.is_empty() {
+        return Err("no value: give one after '='".into());
+    }
+    let start = u32::from(span.address);
+    if span.table.is_bits() {
+        if kind != ValueType::U16 {
+            return Err(format!(
+                "{}s are bits: a type does not apply",
+                span.table.name()
+            ));
+        }
+        let bits = words
+            .iter()
+            .map(|w| coil(w))
+            .collect::<Result<Vec<_>, _>>()?;
+        let count = fill_count(span.count, bits.len())?;
+        let values = spread(&bits, count);
+        check_end(span.table, start, values.len())?;
+        let table = if span.table == Table::Coils {
+            &mut model.coils
+        } else {
+            &mut model.discrete_inputs
+        };
+        table.preset(span.address, &values);
+        table.declare(start, start + values.len() as u32);
+    } else {
+        let mut registers = Vec::new();
+        for word in &words {
+            registers.extend(kind.parse(word, order)?);
+        }
+        let count = fill_count(span.count, registers.len())?;
+        let values = spread(&registers, count);
+        check_end(span.table, start, values.len())?;
+        let table = if span.table == Table::HoldingRegisters {
+            &mut model.holding_registers
+        } else {
+            &mut model.input_registers
+        };
+        table.preset(span.address, &values);
+        table.declare(start, start + values.len() as u32);
+    }
+    Ok(())
+}
+
+/// How many addresses an entry fills: the range's size, or as many as the values.
+fn fill_count(range: Option<u32>, values: usize) -> Result<usize, String> {
+    match range {
+        None => Ok(values),
+        Some(size) if values <= size as usize => Ok(size as usize),
+        Some(size) => Err(format!("{values} values do not fit in a range of {size}")),
+    }
+}
+
+/// The values repeated to fill `count` addresses when one value (or one typed value) was
+/// given for a range; otherwise the values, then zeros.
+fn spread<T: Copy + Default>(values: &[T], count: usize) -> Vec<T> {
+    if values.is_empty() || count % values.len() != 0 || values.len() > 4 {
+        let mut out = values.to_vec();
+        out.resize(count, T::default());
+        return out;
+    }
+    values.iter().copied().cycle().take(count).collect()
+}
+
+fn check_end(table: Table, start: u32, count: usize) -> Result<(), String> {
+    if start as usize + count > 65536 {
+        return Err(format!(
+            "the values run past the last address of the table ({})",
+            reference(table, 65535)
+        ));
+    }
+    Ok(())
+}
+
+/// Reads a data file's text; `name` is used in error messages.
+pub fn parse(name: &str, text: &str) -> Result<DataModel, DataFileError> {
+    let mut model = DataModel::default();
+    // Only what the file names exists: every table starts with nothing declared.
+    for table in [
+        Table::Coils,
+        Table::DiscreteInputs,
+        Table::InputRegisters,
+        Table::HoldingRegisters,
+    ] {
+        model.declare(table, 0, 0);
+    }
+    for (number, line) in text.lines().enumerate() {
+        let content = match line.find('#') {
+            // A '#' inside a quoted text is part of it.
+            Some(at) if line[..at].matches('"').count() % 2 == 0 => &line[..at],
+            _ => line,
+        };
+        if content.trim().is_empty() {
+            continue;
+        }
+        entry(&mut model, content).map_err(|message| DataFileError::Line {
+            path: name.to_string(),
+            line: number + 1,
+            message,
+        })?;
+    }
+    Ok(model)
+}
+
+pub fn load(path: &Path) -> Result<DataModel, DataFileError> {
+    let name = path.display().to_string();
+    let text = std::fs::read_to_string(path).map_err(|error| DataFileError::Read {
+        path: name.clone(),
+        error,
+    })?;
+    parse(&name, &text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::codec::ExceptionCode;
+
+    #[test]
+    fn the_documented_example() {
+        let text = r#"
+# holding registers 400108-400110, as in the manuals
+400108 = 555 0 100
+400001 = 3.14 f32
+400010 = 1.5 f32 CDAB
+400020 = "PUMP #1" ascii
+400200-400299 = 7
+000020-000023 = 1 0 1 1
+300009 = 10
+"#;
+        let model = parse("data", text).unwrap();
+        assert_eq!(model.holding_registers.read(107, 3), Ok(vec![555, 0, 100]));
+        assert_eq!(model.holding_registers.read(0, 2), Ok(vec![0x4048, 0xF5C3]));
+        assert_eq!(model.holding_registers.read(9, 2), Ok(vec![0x0000, 0x3FC0]));
+        assert_eq!(
+            model.holding_registers.read(19, 4),
+            Ok(vec![
+                u16::from_be_bytes(*b"PU"),
+                u16::from_be_bytes(*b"MP"),
+                u16::from_be_bytes(*b" #"),
+                u16::from_be_bytes(*b"1\0")
+            ])
+        );
+        assert_eq!(model.holding_registers.read(250, 1), Ok(vec![7]));
+        assert_eq!(model.coils.read(19, 4), Ok(vec![true, false, true, true]));
+        assert_eq!(model.input_registers.read(8, 1), Ok(vec![10]));
+        // Only what is named exists.
+        assert_eq!(
+            model.holding_registers.read(300, 1),
+            Err(ExceptionCode::ILLEGAL_DATA_ADDRESS)
+        );
+        assert_eq!(
+            model.discrete_inputs.read(0, 1),
+            Err(ExceptionCode::ILLEGAL_DATA_ADDRESS)
+        );
+    }
+
+    #[test]
+    fn a_bad_line_is_named_with_its_number() {
+        let error = parse("plant.txt", "400001 = 1\n400002 = 12a\n").unwrap_err();
+        assert_eq!(
+            error.to_string(),
+            "plant.txt:2: '12a' is not a number: write it in decimal, 0x hex or 0b binary"
+        );
+        let error = parse("plant.txt", "# ok\n\n400001 555\n").unwrap_err();
+        assert!(
+            error.to_string().starts_with("plant.txt:3: an entry is"),
+            "{error}"
+        );
+        let error = parse("p", "000001 = 2").unwrap_err();
+        assert!(error.to_string().contains("not a coil value"), "{error}");
+        let error = parse("p", "400001-400002 = 1 2 3").unwrap_err();
+        assert!(error.to_string().contains("do not fit"), "{error}");
+    }
+}

@@ -1,0 +1,360 @@
+//! `mbtool serve` as masters we did not write see it (mbpoll, pymodbus) and as mbtool's own
+//! master sees it: every table read and written, exceptions, injected faults, data files,
+//! and a TCP server that one bad client cannot stop.
+
+mod common;
+
+use std::io::Write;
+use std::net::TcpStream;
+use std::process::{Command as Process, Stdio};
+use std::time::{Duration, Instant};
+
+use common::{
+    command_exists, free_port, peer_available, python_has, run_against, values_of,
+    wait_for_listener, writes_read_back, PtyPair, Stopped,
+};
+
+/// Starts `mbtool serve` with `args`; it is stopped when the guard drops.
+fn serve(args: &[&str]) -> Stopped {
+    let child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+        .arg("serve")
+        .args(args)
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .expect("mbtool serve starts");
+    Stopped(child)
+}
+
+/// `mbtool serve` on 127.0.0.1; the connection options for a master.
+fn serve_tcp(extra: &[&str]) -> (Stopped, Vec<String>, u16) {
+    let port = free_port();
+    let address = format!("tcp://127.0.0.1:{port}");
+    let mut args = vec!["--port", address.as_str()];
+    args.extend_from_slice(extra);
+    let server = serve(&args);
+    assert!(
+        wait_for_listener(port, Duration::from_secs(10)),
+        "serve did not listen"
+    );
+    (server, vec!["--port".into(), address], port)
+}
+
+/// `mbtool serve` on one end of a pty pair; the connection options for the other end.
+fn serve_pty(pair: &PtyPair, extra: &[&str]) -> (Stopped, Vec<String>) {
+    let a = pair.a.display().to_string();
+    let mut args = vec!["--port", a.as_str()];
+    args.extend_from_slice(extra);
+    let server = serve(&args);
+    let master = vec!["--port".into(), pair.b.display().to_string()];
+    let mode: Vec<String> = extra
+        .windows(2)
+        .find(|w| w[0] == "--mode")
+        .map(|w| vec!["--mode".into(), w[1].to_string()])
+        .unwrap_or_default();
+    let master = [master, mode].concat();
+    let deadline = Instant::now() + Duration::from_secs(10);
+    while run_against(&master, "read-holding 17 400108 --timeout 200ms").0 != 0 {
+        assert!(Instant::now() < deadline, "serve never answered on the pty");
+    }
+    (server, master)
+}
+
+#[test]
+fn mbtool_against_serve_on_tcp() {
+    let (_server, port, _) = serve_tcp(&[]);
+    assert_eq!(
+        values_of(&port, "read-holding 17 400108 3"),
+        ["555", "0", "100"]
+    );
+    assert_eq!(values_of(&port, "read-input-registers 17 300009"), ["10"]);
+    writes_read_back(&port);
+}
+
+#[test]
+fn mbtool_against_serve_in_rtu_and_ascii_on_a_pty() {
+    for mode in ["rtu", "ascii"] {
+        let Some(pair) = PtyPair::new() else { return };
+        let (_server, port) = serve_pty(&pair, &["--mode", mode]);
+        assert_eq!(
+            values_of(&port, "read-holding 17 400108 3"),
+            ["555", "0", "100"],
+            "{mode}"
+        );
+        writes_read_back(&port);
+        // A broadcast is carried out and not answered.
+        assert_eq!(run_against(&port, "write-register 0 400050 9").0, 0);
+        assert_eq!(values_of(&port, "read-holding 17 400050"), ["9"]);
+        // Another slave id is silent.
+        assert_eq!(
+            run_against(&port, "read-holding 18 400108 --timeout 200ms").0,
+            3
+        );
+    }
+}
+
+#[test]
+fn several_slave_ids_each_with_their_own_data() {
+    let (_server, port, _) = serve_tcp(&["--slave", "17", "--slave", "18"]);
+    assert_eq!(run_against(&port, "write-register 18 400001 5").0, 0);
+    assert_eq!(values_of(&port, "read-holding 18 400001"), ["5"]);
+    assert_eq!(values_of(&port, "read-holding 17 400001"), ["0"]);
+    // Over TCP an unknown unit id is answered as a gateway would.
+    assert_eq!(run_against(&port, "read-holding 19 400001").0, 21);
+}
+
+/// mbpoll's values for a read: the numbers after `[ref]:`.
+fn mbpoll_values(output: &str) -> Vec<String> {
+    output
+        .lines()
+        .filter(|l| l.starts_with('['))
+        .filter_map(|l| l.split(':').nth(1))
+        .map(|v| v.trim().to_string())
+        .collect()
+}
+
+fn mbpoll(connection: &[&str], args: &str) -> Vec<String> {
+    let output = Process::new("mbpoll")
+        .args(connection)
+        .args(args.split_whitespace())
+        .output()
+        .expect("mbpoll runs");
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        output.status.success(),
+        "mbpoll {args}: {text}{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    mbpoll_values(&text)
+}
+
+/// Every table read and written by mbpoll; what it wrote read back by mbtool too.
+fn mbpoll_exercise(connection: &[&str], port: &[String]) {
+    let read = |args: &str| mbpoll(connection, &format!("-a 17 -1 {args}"));
+    assert_eq!(read("-t 4 -r 108 -c 3"), ["555", "0", "100"]);
+    assert_eq!(read("-t 3 -r 9"), ["10"]);
+    assert_eq!(
+        read("-t 0 -r 20 -c 8"),
+        ["1", "0", "1", "1", "0", "0", "1", "1"]
+    );
+    assert_eq!(
+        read("-t 1 -r 197 -c 8"),
+        ["0", "0", "1", "1", "0", "1", "0", "1"]
+    );
+    read("-t 4 -r 2 1234");
+    assert_eq!(read("-t 4 -r 2"), ["1234"]);
+    read("-t 4 -r 30 7 8 9");
+    assert_eq!(values_of(port, "read-holding 17 400030 3"), ["7", "8", "9"]);
+    read("-t 0 -r 173 1");
+    assert_eq!(values_of(port, "read-coils 17 000173"), ["1"]);
+    read("-t 0 -r 300 1 0 1");
+    assert_eq!(values_of(port, "read-coils 17 000300 3"), ["1", "0", "1"]);
+    // mbpoll stores floats low word first unless -B.
+    read("-t 4:float -r 40 3.5");
+    assert_eq!(
+        values_of(port, "read-holding 17 400040 --type f32 --order CDAB"),
+        ["3.5"]
+    );
+}
+
+#[test]
+fn mbpoll_against_serve_on_tcp() {
+    if !peer_available("mbpoll", command_exists("mbpoll")) {
+        return;
+    }
+    let (_server, port, tcp) = serve_tcp(&[]);
+    let tcp = tcp.to_string();
+    mbpoll_exercise(&["-m", "tcp", "-p", &tcp, "127.0.0.1"], &port);
+}
+
+#[test]
+fn mbpoll_against_serve_in_rtu_on_a_pty() {
+    if !peer_available("mbpoll", command_exists("mbpoll")) {
+        return;
+    }
+    let Some(pair) = PtyPair::new() else { return };
+    let (_server, port) = serve_pty(&pair, &[]);
+    let device = pair.b.display().to_string();
+    mbpoll_exercise(&["-m", "rtu", "-b", "19200", "-P", "even", &device], &port);
+}
+
+#[test]
+fn pymodbus_master_in_ascii_against_serve() {
+    if !peer_available("pymodbus (Python)", python_has("pymodbus")) {
+        return;
+    }
+    let Some(pair) = PtyPair::new() else { return };
+    let (_server, _) = serve_pty(&pair, &["--mode", "ascii"]);
+    let script = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/peers/pymodbus_master.py"
+    );
+    let output = Process::new("python3")
+        .args([
+            script,
+            "--framer",
+            "ascii",
+            "--serial",
+            &pair.b.display().to_string(),
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let json: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(json["holding"], serde_json::json!([555, 0, 100]));
+    assert_eq!(json["input_register"], serde_json::json!([10]));
+    assert_eq!(json["coils"], serde_json::json!([1, 0, 1, 1, 0, 0, 1, 1]));
+    assert_eq!(json["inputs"], serde_json::json!([0, 0, 1, 1, 0, 1, 0, 1]));
+    assert_eq!(
+        json["written_registers"],
+        serde_json::json!([1234, 7, 8, 9])
+    );
+    assert_eq!(json["written_coils"], serde_json::json!([1, 0, 1, 1]));
+}
+
+#[test]
+fn real_slave_exceptions() {
+    let (_server, port, _) = serve_tcp(&["--read-only", "400001-400010"]);
+    let (code, out) = run_against(&port, "raw 17 41");
+    assert_eq!(code, 11, "{out}");
+    let (code, out) = run_against(&port, "raw 17 03 00 00 00 00");
+    assert_eq!(code, 13, "{out}");
+    let (code, out) = run_against(&port, "write-register 17 400005 1");
+    assert_eq!(code, 12, "{out}");
+    assert_eq!(run_against(&port, "write-register 17 400011 1").0, 0);
+    let (code, out) = run_against(&port, "raw 17 2B 0E 01 00 --json");
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("\"value\":\"mbtool\""), "{out}");
+}
+
+#[test]
+fn injected_faults_give_what_the_master_promises() {
+    let (_s, port, _) = serve_tcp(&["--exception", "4@400100-400120"]);
+    assert_eq!(run_against(&port, "read-holding 17 400108").0, 14);
+    assert_eq!(run_against(&port, "read-holding 17 400001").0, 0);
+
+    let (_s, port, _) = serve_tcp(&["--drop", "1"]);
+    assert_eq!(
+        run_against(&port, "read-holding 17 400108 --timeout 300ms").0,
+        3
+    );
+
+    let (_s, port, _) = serve_tcp(&["--corrupt", "100%"]);
+    let (code, out) = run_against(&port, "read-holding 17 400108");
+    assert_eq!(code, 4, "{out}");
+
+    let (_s, port, _) = serve_tcp(&["--delay", "600ms"]);
+    assert_eq!(
+        run_against(&port, "read-holding 17 400108 --timeout 200ms").0,
+        3
+    );
+    assert_eq!(
+        run_against(&port, "read-holding 17 400108 --timeout 2s").0,
+        0
+    );
+
+    let Some(pair) = PtyPair::new() else { return };
+    let (_s, port) = serve_pty(&pair, &["--garbage", "--seed", "7"]);
+    // The master passes over the noise in front of each answer.
+    assert_eq!(
+        values_of(&port, "read-holding 17 400108 3"),
+        ["555", "0", "100"]
+    );
+    drop(_s);
+    let Some(pair) = PtyPair::new() else { return };
+    let a = pair.a.display().to_string();
+    let _s = serve(&["--port", &a, "--corrupt", "1"]);
+    let port = vec!["--port".to_string(), pair.b.display().to_string()];
+    std::thread::sleep(Duration::from_millis(300));
+    let (code, out) = run_against(&port, "read-holding 17 400108 --timeout 300ms");
+    assert_eq!(code, 4, "{out}");
+}
+
+#[test]
+fn a_data_file_sets_values_and_the_addresses_that_exist() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("plant.txt");
+    std::fs::write(
+        &path,
+        "# pump station\n400001 = 3.14 f32\n400010-400019 = 7\n000001-000004 = on off on on\n",
+    )
+    .unwrap();
+    let (_s, port, _) = serve_tcp(&["--data", path.to_str().unwrap()]);
+    assert_eq!(
+        values_of(&port, "read-holding 17 400001 --type f32"),
+        ["3.14"]
+    );
+    assert_eq!(values_of(&port, "read-holding 17 400010-400019").len(), 10);
+    assert_eq!(
+        values_of(&port, "read-coils 17 000001 4"),
+        ["1", "0", "1", "1"]
+    );
+    assert_eq!(run_against(&port, "read-holding 17 400020").0, 12);
+    assert_eq!(run_against(&port, "read-input-registers 17 300001").0, 12);
+
+    std::fs::write(&path, "400001 = 1\n400002 = twelve\n").unwrap();
+    let output = common::mbtool()
+        .args([
+            "serve",
+            "--port",
+            "tcp://127.0.0.1:1",
+            "--data",
+            path.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("plant.txt:2: 'twelve' is not a number"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn a_client_sending_garbage_or_nothing_does_not_stop_the_server() {
+    let (_server, port, tcp) = serve_tcp(&[]);
+    // One client connects and never sends; another sends 1 MB of garbage.
+    let _silent = TcpStream::connect(("127.0.0.1", tcp)).unwrap();
+    let mut noisy = TcpStream::connect(("127.0.0.1", tcp)).unwrap();
+    let garbage: Vec<u8> = (0..1_000_000u32)
+        .map(|i| (i.wrapping_mul(2_654_435_761) >> 13) as u8)
+        .collect();
+    // The server may close the connection part way: that is what it should do.
+    let _ = noisy.write_all(&garbage);
+    assert_eq!(
+        values_of(&port, "read-holding 17 400108 3"),
+        ["555", "0", "100"]
+    );
+    drop(noisy);
+    assert_eq!(
+        values_of(&port, "read-holding 17 400108 3"),
+        ["555", "0", "100"]
+    );
+}
+
+#[test]
+fn serve_refuses_what_it_cannot_do() {
+    let output = common::mbtool()
+        .args(["serve", "--port", "sim"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    let output = common::mbtool().args(["serve"]).output().unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    let output = common::mbtool()
+        .args([
+            "serve",
+            "--port",
+            "tcp://127.0.0.1:1",
+            "--exception",
+            "2@nowhere",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+}
