@@ -96,12 +96,11 @@ impl Slave {
     }
 
     fn answer(&mut self, slave: u8, request: &Request) -> Pdu {
-        let identity = self.identity.clone();
         let counters = self.counters.get(&slave).copied().unwrap_or_default();
         let Some(model) = self.models.get_mut(&slave) else {
             return exception(request, ExceptionCode::SERVER_DEVICE_FAILURE);
         };
-        match respond(model, request, &identity, slave, counters) {
+        match respond(model, request, &self.identity, slave, counters) {
             Ok(response) => Pdu::Response(response),
             Err(code) => exception(request, code),
         }
