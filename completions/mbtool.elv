@@ -61,6 +61,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand write-registers 'Write holding registers (function 16)'
             cand write 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
             cand raw 'Send any PDU and decode the answer'
+            cand sniff 'Watch a bus without ever transmitting: every frame as it passes, decoded and paired'
             cand serve 'Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs'
             cand decode 'Decode Modbus frames given as arguments, or one per line on standard input'
             cand encode 'Print the frame that a request command would send, without sending it'
@@ -509,6 +510,42 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --max-per-request 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows'
             cand --poll 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end'
             cand --count 'With --poll: stop after N reads'
+            cand --json 'The same as --output json'
+            cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand --verbose 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand --pdu-addresses 'Take every address as a 0-based protocol address, never as a Modicon reference'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
+        &'mbtool;sniff'= {
+            cand --input 'Read a raw byte capture instead of the port (''-'' for standard input)'
+            cand --save 'Keep every byte seen, exactly as received, to replay it later with --input'
+            cand --pcap 'Also write the frames to a pcap file for Wireshark (link type 147, see above)'
+            cand --slave 'Show only the frames of this slave; repeatable'
+            cand --function 'Show only the frames of this function code (3, 0x10); repeatable'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
+            cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
+            cand -b 'Serial speed'
+            cand --baud 'Serial speed'
+            cand --parity 'Serial parity'
+            cand --data-bits 'Serial data bits [default: 8, 7 in ASCII mode]'
+            cand --stop-bits 'Serial stop bits [default: 1 with parity, 2 without]'
+            cand --timeout 'Response timeout for a whole answer: 500ms, 1s, 2.5s'
+            cand --retries 'Retries after a timeout or a bad answer (never after an exception)'
+            cand --frame-gap 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none'
+            cand -o 'Output format'
+            cand --output 'Output format'
+            cand -t 'Register value type, for showing values read and for converting values to write'
+            cand --type 'Register value type, for showing values read and for converting values to write'
+            cand --order 'Byte order of values wider than 16 bits: A is the most significant byte'
+            cand --max-per-request 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows'
+            cand --poll 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end'
+            cand --count 'With --poll: stop after N reads'
+            cand --low-latency 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen'
             cand --json 'The same as --output json'
             cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
             cand --verbose 'Print every frame sent and received, in hex with a timestamp, on stderr'
@@ -1109,6 +1146,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand write-registers 'Write holding registers (function 16)'
             cand write 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
             cand raw 'Send any PDU and decode the answer'
+            cand sniff 'Watch a bus without ever transmitting: every frame as it passes, decoded and paired'
             cand serve 'Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs'
             cand decode 'Decode Modbus frames given as arguments, or one per line on standard input'
             cand encode 'Print the frame that a request command would send, without sending it'
@@ -1137,6 +1175,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         &'mbtool;help;write'= {
         }
         &'mbtool;help;raw'= {
+        }
+        &'mbtool;help;sniff'= {
         }
         &'mbtool;help;serve'= {
         }

@@ -79,6 +79,7 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-register" -d 'W
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-registers" -d 'Write holding registers (function 16)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "sniff" -d 'Watch a bus without ever transmitting: every frame as it passes, decoded and paired'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "serve" -d 'Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "decode" -d 'Decode Modbus frames given as arguments, or one per line on standard input'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "encode" -d 'Print the frame that a request command would send, without sending it'
@@ -688,6 +689,52 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s v -l verbose -d 'P
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a raw byte capture instead of the port (\'-\' for standard input)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep every byte seen, exactly as received, to replay it later with --input' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pcap -d 'Also write the frames to a pcap file for Wireshark (link type 147, see above)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l slave -d 'Show only the frames of this slave; repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l function -d 'Show only the frames of this function code (3, 0x10); repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s b -l baud -d 'Serial speed' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l parity -d 'Serial parity' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l count -d 'With --poll: stop after N reads' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l low-latency -d 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l slave -d 'Answer as this slave id; repeat for several [default: 17]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data -d 'Initial data and the addresses that exist (see above for the format)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l read-only -d 'Addresses that may not be written (exception 02): a reference or a range; repeatable' -r
@@ -1413,22 +1460,23 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "raw" -d 'Send any PDU and decode the answer'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "read-coils" -d 'Read coils (function 01)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "read-holding" -d 'Read holding registers (function 03)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "write-coil" -d 'Write one coil (function 05)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "write-coils" -d 'Write coils (function 15)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "write-register" -d 'Write one holding register (function 06)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "raw" -d 'Send any PDU and decode the answer'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "serve" -d 'Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "decode" -d 'Decode Modbus frames given as arguments, or one per line on standard input'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "encode" -d 'Print the frame that a request command would send, without sending it'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw serve decode encode help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "sniff" -d 'Watch a bus without ever transmitting: every frame as it passes, decoded and paired'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "serve" -d 'Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "decode" -d 'Decode Modbus frames given as arguments, or one per line on standard input'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "encode" -d 'Print the frame that a request command would send, without sending it'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-coils" -d 'Read coils (function 01)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-holding" -d 'Read holding registers (function 03)'

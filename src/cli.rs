@@ -205,6 +205,10 @@ pub enum Command {
         request: RequestCommand,
     },
 
+    /// Watch a bus without ever transmitting: every frame as it passes, decoded and paired
+    #[command(long_about = SNIFF_ABOUT)]
+    Sniff(SniffArgs),
+
     /// Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs
     #[command(long_about = SERVE_ABOUT)]
     Serve(ServeArgs),
@@ -230,6 +234,22 @@ const ENCODE_ABOUT: &str = "\
 Print the frame that a request command would send, as spaced upper-case hex (RTU or TCP) or \
 as an ASCII line (--mode ascii). A command that needs several requests prints one frame per \
 line. --port tcp://... or --mode tcp prints the MBAP frame, transaction ids counting from 1.";
+
+const SNIFF_ABOUT: &str = "\
+Watch a bus without ever transmitting: every frame as it passes, with its time, the silence \
+before it, slave, function, request or answer, what it says, and its checksum; answers are \
+paired with their requests (400108 = 555), requests that get no answer are shown as such, \
+and bytes that are no frame are counted as noise. A summary ends the capture (Ctrl-C, or \
+the end of --input).
+
+Frames are found by what the bytes say (each frame's length follows from its function code \
+and byte count, and its CRC must hold), so bytes glued together by a USB adapter are split \
+all the same. When they arrive in bursts the gaps between frames are not real: mbtool says \
+so once. The fix is the adapter's latency timer: \
+echo 1 | sudo tee /sys/bus/usb-serial/devices/ttyUSB0/latency_timer, or --low-latency.
+
+--pcap writes the frames for Wireshark with link type DLT_USER0 (147). Once, in Wireshark: \
+Preferences > Protocols > DLT_USER > Edit, add DLT 147 with payload protocol mbrtu.";
 
 const SERVE_ABOUT: &str = "\
 Answer as a simulated slave, for testing masters and HMIs before the device arrives.
@@ -389,6 +409,38 @@ impl From<DirectionArg> for Direction {
             DirectionArg::Response => Direction::Response,
         }
     }
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct SniffArgs {
+    /// Read a raw byte capture instead of the port ('-' for standard input)
+    #[arg(long, value_name = "FILE")]
+    pub input: Option<std::path::PathBuf>,
+
+    /// Keep every byte seen, exactly as received, to replay it later with --input
+    #[arg(long, value_name = "FILE")]
+    pub save: Option<std::path::PathBuf>,
+
+    /// Also write the frames to a pcap file for Wireshark (link type 147, see above)
+    #[arg(long, value_name = "FILE")]
+    pub pcap: Option<std::path::PathBuf>,
+
+    /// Show only the frames of this slave; repeatable
+    #[arg(long = "slave", value_name = "ID")]
+    pub slaves: Vec<u8>,
+
+    /// Show only the frames of this function code (3, 0x10); repeatable
+    #[arg(long = "function", value_name = "CODE", value_parser = parse_function)]
+    pub functions: Vec<u8>,
+
+    /// Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so
+    /// that gaps between frames can be seen
+    #[arg(long)]
+    pub low_latency: bool,
+}
+
+fn parse_function(text: &str) -> Result<u8, String> {
+    crate::number::parse_in_range(text, 1, 127, "function code").map(|f| f as u8)
 }
 
 #[derive(Clone, Debug, Args)]

@@ -129,6 +129,23 @@ const EXAMPLES: &[(&str, &[Example])] = &[
         )],
     ),
     (
+        "sniff",
+        &[
+            ex(
+                "Watch an RS-485 line at 9600 baud, no parity, and keep every byte",
+                "mbtool sniff --port /dev/ttyUSB0 -b 9600 --parity none --save bus.bin",
+            ),
+            ex(
+                "Replay a capture as JSON Lines, slave 17 only",
+                "mbtool sniff --input bus.bin --json --slave 17",
+            ),
+            ex(
+                "Write the frames for Wireshark too",
+                "mbtool sniff --port /dev/ttyUSB0 --pcap bus.pcap",
+            ),
+        ],
+    ),
+    (
         "serve",
         &[
             ex(

@@ -20,5 +20,6 @@ pub mod report;
 pub mod server;
 pub mod sim;
 pub mod slave;
+pub mod sniff;
 pub mod transport;
 pub mod values;

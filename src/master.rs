@@ -190,7 +190,11 @@ impl Master {
                         }
                     },
                     Status::Invalid { error, .. } => {
-                        problem = problem.or(Some(error.to_string()));
+                        // What is wrong with the answer is said by its first bytes; later
+                        // offsets are only attempts to find it behind noise.
+                        if offset == 0 {
+                            problem = problem.or(Some(error.to_string()));
+                        }
                         if self.options.mode == Mode::Tcp {
                             // A TCP stream that lost its framing cannot be trusted further.
                             break;

@@ -298,3 +298,55 @@ proptest! {
         }
     }
 }
+
+mod sniffer {
+    use super::*;
+    use mbtool::sniff::session::{Filter, Record, Session};
+
+    fn sniff(chunks: &[&[u8]], mode: Mode) -> Vec<Record> {
+        let mut session = Session::new(mode, 573.0, 2005, Filter::default());
+        let mut records = Vec::new();
+        for chunk in chunks {
+            session.push(chunk, &mut records);
+        }
+        session.finish(None, &mut records);
+        records
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+
+        #[test]
+        fn arbitrary_bytes_never_panic_the_sniffer(
+            bytes in vec(any::<u8>(), 0..700),
+            gaps in vec(0u64..10_000, 0..700),
+        ) {
+            for mode in [Mode::Rtu, Mode::Ascii] {
+                let _ = sniff(&[&bytes], mode);
+                let mut session = Session::new(mode, 573.0, 2005, Filter::default());
+                let mut records = Vec::new();
+                let mut time = 0;
+                for (byte, gap) in bytes.iter().zip(gaps.iter().chain(std::iter::repeat(&0))) {
+                    time += gap;
+                    session.push_byte_at(*byte, time, &mut records);
+                    session.idle(time + gap, &mut records);
+                }
+                session.finish(Some(time), &mut records);
+            }
+        }
+
+        #[test]
+        fn the_sniffer_reads_the_same_byte_by_byte_and_all_at_once(
+            frames in vec(frame(framed_pdu()), 1..12),
+            noise in vec(any::<u8>(), 0..4),
+        ) {
+            let mut stream = noise.clone();
+            for frame in frames.iter().filter(|f| f.mode == Mode::Rtu) {
+                stream.extend(frame.encode().unwrap());
+            }
+            let whole = sniff(&[&stream], Mode::Rtu);
+            let singles: Vec<&[u8]> = stream.chunks(1).collect();
+            prop_assert_eq!(whole, sniff(&singles, Mode::Rtu));
+        }
+    }
+}

@@ -4,6 +4,7 @@ mod decode;
 mod encode;
 mod request;
 mod serve;
+mod sniff;
 
 use anyhow::Result;
 
@@ -16,6 +17,7 @@ pub fn run(cli: Cli) -> Result<u8> {
         Command::Encode { request } => encode::run(&cli, request),
         Command::Request(request) => request::run(&cli, request),
         Command::Serve(args) => serve::run(&cli, args),
+        Command::Sniff(args) => sniff::run(&cli, args),
         Command::Generate(args) => {
             mbtool::docs::generate(&args.dir)?;
             Ok(0)

@@ -14,6 +14,8 @@ pub enum Length {
     AtLeast(usize),
     /// The layout of this function code is not known: only silence or a checksum can tell.
     Unknown,
+    /// No frame in this direction starts like this (a request with function 00 or 80-FF).
+    Never,
 }
 
 /// `base` bytes, plus the byte count found at `index`.
@@ -29,7 +31,11 @@ pub fn pdu_length(pdu: &[u8], direction: Direction) -> Length {
     let Some(&function) = pdu.first() else {
         return Length::AtLeast(1);
     };
+    if function == 0 {
+        return Length::Never;
+    }
     match direction {
+        Direction::Request if function & EXCEPTION_FLAG != 0 => Length::Never,
         Direction::Request => match function {
             READ_COILS..=WRITE_SINGLE_REGISTER | DIAGNOSTICS => Length::Known(5),
             READ_EXCEPTION_STATUS
@@ -102,7 +108,7 @@ pub fn rtu_frame_length(frame: &[u8], direction: Direction) -> Length {
         Some(pdu) if !pdu.is_empty() => match pdu_length(pdu, direction) {
             Length::Known(len) => Length::Known(1 + len + 2),
             Length::AtLeast(len) => Length::AtLeast(1 + len),
-            Length::Unknown => Length::Unknown,
+            other => other,
         },
         _ => Length::AtLeast(2),
     }
@@ -130,6 +136,18 @@ mod tests {
         assert_eq!(
             rtu_frame_length(&head[..2], Direction::Response),
             Length::AtLeast(3)
+        );
+    }
+
+    #[test]
+    fn no_request_has_function_00_or_80_and_above() {
+        assert_eq!(
+            rtu_frame_length(&[0x11, 0x83], Direction::Request),
+            Length::Never
+        );
+        assert_eq!(
+            rtu_frame_length(&[0x11, 0x00], Direction::Response),
+            Length::Never
         );
     }
 

@@ -68,6 +68,12 @@ impl StreamDecoder {
                 None => Status::Partial,
             },
             Length::AtLeast(_) => Status::Partial,
+            Length::Never => Status::Invalid {
+                error: FrameError::Pdu(crate::codec::PduError::BadField(
+                    "no frame in this direction has this function code",
+                )),
+                len: 1,
+            },
             // A function code without a known layout: the shortest prefix whose CRC holds.
             Length::Unknown => {
                 let limit = buf.len().min(limits::MAX_RTU_ADU);

@@ -5,6 +5,7 @@ pub mod decode;
 pub mod encode;
 pub mod read;
 pub mod serve;
+pub mod sniff;
 
 use std::io::{self, IsTerminal, Write};
 

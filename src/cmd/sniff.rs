@@ -1,0 +1,239 @@
+//! `mbtool sniff`: a passive capture of a bus, live from a port or replayed from a file.
+
+use std::fs::File;
+use std::io::{self, BufWriter, Read, Write};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
+
+use anyhow::{Context, Result};
+
+use mbtool::cli::{Cli, ModeArg, SniffArgs};
+use mbtool::codec::{checksum::crc16, Envelope, Mode};
+use mbtool::connection::line_settings;
+use mbtool::error::Error;
+use mbtool::output::{self, sniff::SniffWriter};
+use mbtool::sniff::pcap::PcapWriter;
+use mbtool::sniff::session::{Filter, Record, Session};
+use mbtool::transport::serial::{LineSettings, Serial};
+use mbtool::transport::{Endpoint, Transport};
+
+/// Where the records go: the screen (or a pipe), and the pcap file.
+struct Sinks {
+    writer: SniffWriter,
+    out: Box<dyn Write>,
+    pcap: Option<PcapWriter<BufWriter<File>>>,
+    /// Microseconds since 1970 of capture time 0, for pcap timestamps.
+    epoch_us: u64,
+    /// Without timing, a frame's time is its position at the line's speed.
+    char_us: f64,
+    mode: Mode,
+    live: bool,
+}
+
+impl Sinks {
+    fn write(&mut self, records: &mut Vec<Record>) -> io::Result<()> {
+        for record in records.drain(..) {
+            if let (Some(pcap), Record::Frame(frame)) = (self.pcap.as_mut(), &record) {
+                let at = frame
+                    .found
+                    .start
+                    .unwrap_or((frame.found.offset as f64 * self.char_us) as u64);
+                pcap.frame(self.epoch_us + at, &rtu_form(self.mode, &frame.found.bytes))?;
+            }
+            self.writer.record(&mut self.out, &record)?;
+        }
+        if self.live {
+            self.out.flush()?;
+        }
+        Ok(())
+    }
+}
+
+/// Wireshark reads Modbus RTU: an ASCII frame is written as the RTU frame it carries.
+fn rtu_form(mode: Mode, bytes: &[u8]) -> Vec<u8> {
+    match (mode, Envelope::open(mode, bytes)) {
+        (Mode::Ascii, Ok(envelope)) => {
+            let mut frame = vec![envelope.slave];
+            frame.extend_from_slice(&envelope.pdu);
+            let crc = crc16(&frame);
+            frame.extend_from_slice(&crc.to_le_bytes());
+            frame
+        }
+        _ => bytes.to_vec(),
+    }
+}
+
+/// One character's time, in microseconds, at the line's settings.
+fn char_us(line: &LineSettings) -> f64 {
+    f64::from(line.bits_per_character()) * 1e6 / f64::from(line.baud.max(1))
+}
+
+/// `--low-latency`: the FTDI latency timer to 1 ms, through sysfs.
+fn low_latency(path: &str) -> Result<(), String> {
+    let device = std::fs::canonicalize(path).map_err(|e| format!("{path}: {e}"))?;
+    let name = device
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let timer = format!("/sys/bus/usb-serial/devices/{name}/latency_timer");
+    std::fs::write(&timer, "1")
+        .map_err(|e| format!("cannot set {timer} ({e}): run `echo 1 | sudo tee {timer}` once"))
+}
+
+pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
+    let mode = match cli.connection.mode {
+        None | Some(ModeArg::Rtu) => Mode::Rtu,
+        Some(ModeArg::Ascii) => Mode::Ascii,
+        Some(ModeArg::Tcp) => {
+            return Err(Error::usage("sniff watches serial lines: --mode rtu or ascii").into())
+        }
+    };
+    let line = line_settings(cli, mode);
+    let filter = Filter {
+        slaves: args.slaves.clone(),
+        functions: args.functions.clone(),
+    };
+    let silence = line.frame_gap();
+    let mut session = Session::new(mode, char_us(&line), silence.as_micros() as u64, filter);
+    let mut save = match &args.save {
+        Some(path) => {
+            Some(BufWriter::new(File::create(path).with_context(|| {
+                format!("cannot create {}", path.display())
+            })?))
+        }
+        None => None,
+    };
+    let pcap = match &args.pcap {
+        Some(path) => Some(PcapWriter::new(BufWriter::new(
+            File::create(path).with_context(|| format!("cannot create {}", path.display()))?,
+        ))?),
+        None => None,
+    };
+    let epoch_us = SystemTime::now()
+        .duration_since(UNIX_EPOCH)
+        .map_or(0, |d| d.as_micros() as u64);
+    let mut sinks = Sinks {
+        writer: SniffWriter::new(cli.output.format(), output::colour_wanted()),
+        out: output::stdout(),
+        pcap,
+        epoch_us: if args.input.is_some() { 0 } else { epoch_us },
+        char_us: char_us(&line),
+        mode,
+        live: args.input.is_none(),
+    };
+    let mut records = Vec::new();
+    let end = match &args.input {
+        Some(path) => {
+            let mut input: Box<dyn Read> = if path.as_os_str() == "-" {
+                Box::new(io::stdin().lock())
+            } else {
+                Box::new(
+                    File::open(path).with_context(|| format!("cannot open {}", path.display()))?,
+                )
+            };
+            let mut chunk = vec![0u8; 1 << 16];
+            loop {
+                let n = match input.read(&mut chunk) {
+                    Ok(0) => break,
+                    Ok(n) => n,
+                    Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+                    Err(e) => return Err(e.into()),
+                };
+                if let Some(save) = save.as_mut() {
+                    save.write_all(&chunk[..n])?;
+                }
+                session.push(&chunk[..n], &mut records);
+                sinks.write(&mut records)?;
+            }
+            None
+        }
+        None => Some(live(
+            cli,
+            args,
+            &line,
+            mode,
+            &mut session,
+            &mut sinks,
+            &mut save,
+        )?),
+    };
+    session.finish(end, &mut records);
+    sinks.write(&mut records)?;
+    sinks.writer.summary(&mut sinks.out, session.counts())?;
+    sinks.out.flush()?;
+    if let Some(pcap) = sinks.pcap.as_mut() {
+        pcap.flush()?;
+    }
+    if let Some(save) = save.as_mut() {
+        save.flush()?;
+    }
+    Ok(0)
+}
+
+/// Reads the port until Ctrl-C; returns the time the capture ended, in microseconds.
+fn live(
+    cli: &Cli,
+    args: &SniffArgs,
+    line: &LineSettings,
+    mode: Mode,
+    session: &mut Session,
+    sinks: &mut Sinks,
+    save: &mut Option<BufWriter<File>>,
+) -> Result<u64> {
+    let path = match cli.connection.port.as_deref().map(Endpoint::parse) {
+        Some(Ok(Endpoint::Serial(path))) => path,
+        Some(Ok(_)) => {
+            return Err(
+                Error::usage("sniff listens on a serial device; for a file give --input").into(),
+            )
+        }
+        Some(Err(e)) => return Err(Error::usage(e).into()),
+        None => {
+            return Err(Error::usage(
+                "sniff needs --port DEVICE, or --input FILE to replay a capture",
+            )
+            .into())
+        }
+    };
+    if args.low_latency {
+        if let Err(message) = low_latency(&path) {
+            eprintln!("mbtool: {message}");
+        }
+    }
+    // Opened like any serial port, but nothing is ever written to it.
+    let mut port = Serial::open(&path, line).map_err(Error::Io)?;
+    let stop = Arc::new(AtomicBool::new(false));
+    let stopper = Arc::clone(&stop);
+    ctrlc::set_handler(move || stopper.store(true, Ordering::SeqCst))
+        .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
+    eprintln!(
+        "mbtool: listening on {path} ({mode}, {} baud); Ctrl-C ends with a summary",
+        line.baud
+    );
+    let start = Instant::now();
+    let mut bytes = Vec::with_capacity(4096);
+    let mut warned = false;
+    while !stop.load(Ordering::SeqCst) {
+        bytes.clear();
+        let n = port.receive(&mut bytes, Instant::now() + Duration::from_millis(20))?;
+        let now = start.elapsed().as_micros() as u64;
+        let mut records = Vec::new();
+        if n > 0 {
+            if let Some(save) = save.as_mut() {
+                save.write_all(&bytes)?;
+            }
+            session.push_at(&bytes, now, &mut records);
+        } else {
+            session.idle(now, &mut records);
+        }
+        sinks.write(&mut records)?;
+        if session.bursty && !warned {
+            warned = true;
+            eprintln!(
+                "mbtool: bytes arrive in bursts, so gaps between frames are not real (frames are still split by content); set the adapter's latency timer: echo 1 | sudo tee /sys/bus/usb-serial/devices/*/latency_timer, or use --low-latency"
+            );
+        }
+    }
+    Ok(start.elapsed().as_micros() as u64)
+}

@@ -1,0 +1,417 @@
+//! How `sniff` shows what passes: a line per frame for people, or JSON Lines.
+
+use std::io::{self, Write};
+
+use serde::Serialize;
+
+use super::csv_field;
+use crate::cli::OutputFormat;
+use crate::codec::function;
+use crate::codec::{ExceptionCode, Request};
+use crate::report::{describe_pdu, spaced_hex, FrameReport, Kind, Values};
+use crate::sniff::session::{Counts, FrameRecord, Record};
+
+const RED: &str = "\x1b[31m";
+const YELLOW: &str = "\x1b[33m";
+const RESET: &str = "\x1b[0m";
+
+fn seconds(us: u64) -> f64 {
+    us as f64 / 1e6
+}
+
+#[derive(Serialize)]
+struct JsonFrame<'a> {
+    #[serde(rename = "type")]
+    kind: &'static str,
+    number: u64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    time: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    gap: Option<f64>,
+    offset: u64,
+    /// The frame as it passed: spaced hex (RTU), or its characters (ASCII).
+    bytes: &'a str,
+    #[serde(flatten)]
+    report: &'a FrameReport,
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    paired: bool,
+}
+
+#[derive(Serialize)]
+struct JsonNoise<'a> {
+    #[serde(rename = "type")]
+    kind: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    time: Option<f64>,
+    offset: u64,
+    count: usize,
+    bytes: &'a str,
+}
+
+#[derive(Serialize)]
+struct JsonUnanswered {
+    #[serde(rename = "type")]
+    kind: &'static str,
+    slave: u8,
+    function: u8,
+    #[serde(flatten)]
+    request: crate::report::Fields,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    waited: Option<f64>,
+}
+
+#[derive(Serialize)]
+struct JsonSummary<'a> {
+    #[serde(rename = "type")]
+    kind: &'static str,
+    #[serde(flatten)]
+    counts: &'a Counts,
+}
+
+pub struct SniffWriter {
+    format: OutputFormat,
+    colour: bool,
+    csv_header_written: bool,
+}
+
+/// What a request asks, in a few words: `400108 x3`, `400002 = 3`.
+pub fn request_summary(request: &Request) -> String {
+    let (_, fields) = describe_pdu(&crate::codec::Pdu::Request(request.clone()));
+    let place = fields
+        .reference
+        .clone()
+        .or_else(|| fields.address.map(|a| a.to_string()))
+        .unwrap_or_default();
+    match (&fields.values, fields.count) {
+        (_, Some(count)) if fields.values.is_none() => format!("{place} x{count}"),
+        (Some(values), _) => format!("{place} = {}", shown_values(values, 8)),
+        _ => place,
+    }
+}
+
+fn shown_values(values: &Values, most: usize) -> String {
+    let all: Vec<String> = match values {
+        Values::Registers(v) => v.iter().map(ToString::to_string).collect(),
+        Values::Bits(v) => v.iter().map(ToString::to_string).collect(),
+    };
+    let mut text = all.iter().take(most).cloned().collect::<Vec<_>>().join(" ");
+    if all.len() > most {
+        text.push_str(&format!(" ... ({} in all)", all.len()));
+    }
+    text
+}
+
+/// What a frame says, in a few words.
+fn frame_summary(report: &FrameReport) -> String {
+    if let Some(error) = &report.error {
+        return error.clone();
+    }
+    let f = &report.fields;
+    if let Some(code) = f.exception {
+        return format!("exception {}", ExceptionCode(code));
+    }
+    let place = f
+        .reference
+        .clone()
+        .or_else(|| f.address.map(|a| a.to_string()));
+    match (report.kind, &f.values, place) {
+        (Kind::Response, Some(values), Some(place)) if f.count.is_some() => {
+            // A read answer located by its request: reference = value pairs.
+            let start = f.address.unwrap_or_default();
+            let table = crate::address::Table::of_function(report.function);
+            let shown: Vec<String> = match values {
+                Values::Registers(v) => v.iter().map(ToString::to_string).collect(),
+                Values::Bits(v) => v.iter().map(ToString::to_string).collect(),
+            };
+            let pairs: Vec<String> = shown
+                .into_iter()
+                .enumerate()
+                .take(6)
+                .map(
+                    |(i, value)| match (table, u16::try_from(u32::from(start) + i as u32)) {
+                        (Some(table), Ok(address)) => {
+                            format!("{} = {value}", crate::address::reference(table, address))
+                        }
+                        _ => format!("{place}+{i} = {value}"),
+                    },
+                )
+                .collect();
+            let more = values.len().saturating_sub(6);
+            let mut text = pairs.join(", ");
+            if more > 0 {
+                text.push_str(&format!(", ... ({} in all)", values.len()));
+            }
+            text
+        }
+        (_, Some(values), Some(place)) => format!("{place} = {}", shown_values(values, 8)),
+        (_, None, Some(place)) => match f.count {
+            Some(count) => format!("{place} x{count}"),
+            None => place,
+        },
+        (_, Some(values), None) => format!("{} values: {}", values.len(), shown_values(values, 8)),
+        _ => f
+            .text
+            .clone()
+            .or_else(|| f.data.clone())
+            .unwrap_or_default(),
+    }
+}
+
+impl SniffWriter {
+    pub fn new(format: OutputFormat, colour: bool) -> Self {
+        Self {
+            format,
+            colour,
+            csv_header_written: false,
+        }
+    }
+
+    fn paint(&self, colour: &str, text: String) -> String {
+        if self.colour {
+            format!("{colour}{text}{RESET}")
+        } else {
+            text
+        }
+    }
+
+    pub fn record(&mut self, out: &mut dyn Write, record: &Record) -> io::Result<()> {
+        match (self.format, record) {
+            (OutputFormat::Json, Record::Frame(frame)) => {
+                let bytes =
+                    crate::output::encode::frame_text(crate::codec::Mode::Rtu, &frame.found.bytes);
+                let bytes = match frame.found.bytes.first() {
+                    Some(b':') => String::from_utf8_lossy(&frame.found.bytes)
+                        .trim_end()
+                        .to_string(),
+                    _ => bytes,
+                };
+                serde_json::to_writer(
+                    &mut *out,
+                    &JsonFrame {
+                        kind: "frame",
+                        number: frame.number,
+                        time: frame.found.start.map(seconds),
+                        gap: frame.gap.map(seconds),
+                        offset: frame.found.offset,
+                        bytes: &bytes,
+                        report: &frame.report,
+                        paired: frame.paired,
+                    },
+                )?;
+                out.write_all(b"\n")
+            }
+            (
+                OutputFormat::Json,
+                Record::Noise {
+                    bytes,
+                    offset,
+                    time,
+                },
+            ) => {
+                serde_json::to_writer(
+                    &mut *out,
+                    &JsonNoise {
+                        kind: "noise",
+                        time: time.map(seconds),
+                        offset: *offset,
+                        count: bytes.len(),
+                        bytes: &spaced_hex(&bytes[..bytes.len().min(64)]),
+                    },
+                )?;
+                out.write_all(b"\n")
+            }
+            (
+                OutputFormat::Json,
+                Record::Unanswered {
+                    slave,
+                    request,
+                    waited,
+                },
+            ) => {
+                let (_, fields) = describe_pdu(&crate::codec::Pdu::Request(request.clone()));
+                serde_json::to_writer(
+                    &mut *out,
+                    &JsonUnanswered {
+                        kind: "unanswered",
+                        slave: *slave,
+                        function: request.function(),
+                        request: fields,
+                        waited: waited.map(seconds),
+                    },
+                )?;
+                out.write_all(b"\n")
+            }
+            (OutputFormat::Csv, Record::Frame(frame)) => self.csv(out, frame),
+            (OutputFormat::Csv, _) => Ok(()),
+            (OutputFormat::Values, Record::Frame(frame)) => match &frame.report.fields.values {
+                Some(values) if frame.report.kind == Kind::Response => {
+                    for value in shown_values(values, usize::MAX).split(' ') {
+                        writeln!(out, "{value}")?;
+                    }
+                    Ok(())
+                }
+                _ => Ok(()),
+            },
+            (OutputFormat::Values, _) => Ok(()),
+            (OutputFormat::Table, record) => self.line(out, record),
+        }
+    }
+
+    fn csv(&mut self, out: &mut dyn Write, frame: &FrameRecord) -> io::Result<()> {
+        if !self.csv_header_written {
+            writeln!(out, "number,time,gap,slave,function,kind,valid,summary")?;
+            self.csv_header_written = true;
+        }
+        let r = &frame.report;
+        writeln!(
+            out,
+            "{},{},{},{},{},{},{},{}",
+            frame.number,
+            frame
+                .found
+                .start
+                .map(|t| format!("{:.6}", seconds(t)))
+                .unwrap_or_default(),
+            frame
+                .gap
+                .map(|t| format!("{:.6}", seconds(t)))
+                .unwrap_or_default(),
+            r.slave,
+            r.function,
+            r.kind.name(),
+            r.valid,
+            csv_field(&frame_summary(r)),
+        )
+    }
+
+    fn when(time: Option<u64>, offset: u64) -> String {
+        match time {
+            Some(us) => format!("{:>12.6}", seconds(us)),
+            None => format!("{:>12}", format!("@{offset}")),
+        }
+    }
+
+    fn line(&mut self, out: &mut dyn Write, record: &Record) -> io::Result<()> {
+        match record {
+            Record::Frame(frame) => {
+                let r = &frame.report;
+                let gap = frame
+                    .gap
+                    .map(|g| {
+                        format!(
+                            "+{}",
+                            crate::duration::show(std::time::Duration::from_micros(g))
+                        )
+                    })
+                    .unwrap_or_default();
+                let kind = match (r.kind, r.ambiguous) {
+                    (_, true) => "request?",
+                    (Kind::Response, _) => "answer",
+                    (kind, _) => kind.name(),
+                };
+                let check = match (&r.checksum, r.valid, &r.error) {
+                    (_, _, Some(e)) if e.starts_with("incomplete") => "incomplete".to_string(),
+                    (crate::codec::Checksum::Lrc { found, expected }, ..) => if found == expected {
+                        "LRC ok"
+                    } else {
+                        "LRC BAD"
+                    }
+                    .to_string(),
+                    (crate::codec::Checksum::Crc { found, expected }, ..) => if found == expected {
+                        "CRC ok"
+                    } else {
+                        "CRC BAD"
+                    }
+                    .to_string(),
+                    _ => String::new(),
+                };
+                let mut text = format!(
+                    "#{:<6}{} {:>12}  slave {:<3} {:02} {:<30} {:<9} {}  [{check}]",
+                    frame.number,
+                    Self::when(frame.found.start, frame.found.offset),
+                    gap,
+                    r.slave,
+                    r.function,
+                    function::name(r.function),
+                    kind,
+                    frame_summary(r),
+                );
+                if !r.valid {
+                    text = self.paint(RED, text);
+                } else if r.kind == Kind::Exception {
+                    text = self.paint(YELLOW, text);
+                }
+                writeln!(out, "{text}")
+            }
+            Record::Noise {
+                bytes,
+                offset,
+                time,
+            } => {
+                let shown = spaced_hex(&bytes[..bytes.len().min(16)]);
+                let more = if bytes.len() > 16 { " ..." } else { "" };
+                writeln!(
+                    out,
+                    "       {} {:>12}  noise: {} byte{}: {shown}{more}",
+                    Self::when(*time, *offset),
+                    "",
+                    bytes.len(),
+                    if bytes.len() == 1 { "" } else { "s" }
+                )
+            }
+            Record::Unanswered {
+                slave,
+                request,
+                waited,
+            } => {
+                let waited = waited
+                    .map(|w| {
+                        format!(
+                            " (waited {})",
+                            crate::duration::show(std::time::Duration::from_micros(w))
+                        )
+                    })
+                    .unwrap_or_default();
+                let text = format!(
+                    "       no answer from slave {slave} to {:02} {} {}{waited}",
+                    request.function(),
+                    function::name(request.function()),
+                    request_summary(request)
+                );
+                writeln!(out, "{}", self.paint(YELLOW, text))
+            }
+        }
+    }
+
+    pub fn summary(&mut self, out: &mut dyn Write, counts: &Counts) -> io::Result<()> {
+        match self.format {
+            OutputFormat::Json => {
+                serde_json::to_writer(
+                    &mut *out,
+                    &JsonSummary {
+                        kind: "summary",
+                        counts,
+                    },
+                )?;
+                out.write_all(b"\n")
+            }
+            OutputFormat::Table => {
+                writeln!(
+                    out,
+                    "summary: {} frames ({} requests, {} answers, {} exceptions), {} unanswered, {} CRC errors, {} noise bytes",
+                    counts.frames, counts.requests, counts.answers, counts.exceptions, counts.unanswered,
+                    counts.crc_errors, counts.noise_bytes
+                )?;
+                for (slave, c) in &counts.slaves {
+                    writeln!(
+                        out,
+                        "  slave {slave}: {} requests, {} answers, {} exceptions, {} unanswered, {} CRC errors",
+                        c.requests, c.answers, c.exceptions, c.unanswered, c.crc_errors
+                    )?;
+                }
+                Ok(())
+            }
+            OutputFormat::Values | OutputFormat::Csv => Ok(()),
+        }
+    }
+}

@@ -1,0 +1,165 @@
+//! Telling requests from answers without a direction line, and pairing each answer with
+//! its request. By shape where the bytes decide (an exception has bit 7 set; a 03 request
+//! is 8 bytes, its answer 5 + 2n), by the pending request where they do not (05/06 echo,
+//! 8-byte 01/02 frames), and saying so when neither settles it.
+
+use crate::codec::answer::check;
+use crate::codec::{Pdu, Reading, Request};
+
+/// A request still waiting for its answer.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Pending {
+    pub slave: u8,
+    pub request: Request,
+    /// When it was sent (its last byte), in microseconds, when known.
+    pub time: Option<u64>,
+}
+
+/// What a frame is, once read against the request before it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Role {
+    Request(Request),
+    /// An answer (or exception), with the request it answers when it follows one.
+    Answer {
+        pdu: Pdu,
+        to: Option<Request>,
+    },
+    /// Reads both ways and no pending request settles it.
+    Unsettled,
+    /// The PDU breaks its function's layout either way.
+    Malformed,
+}
+
+#[derive(Default)]
+pub struct Pairer {
+    pending: Option<Pending>,
+}
+
+/// A request that got no answer, and how long it waited.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Unanswered {
+    pub pending: Pending,
+    pub waited: Option<u64>,
+}
+
+impl Pairer {
+    /// Reads one valid frame; `time` is when it started. A request that was still
+    /// waiting when another came is returned as unanswered.
+    pub fn read(
+        &mut self,
+        slave: u8,
+        pdu_bytes: &[u8],
+        start: Option<u64>,
+        end: Option<u64>,
+    ) -> (Role, Option<Unanswered>) {
+        let answers_pending = |pdu: &Pdu, pending: &Option<Pending>| {
+            pending
+                .as_ref()
+                .is_some_and(|p| p.slave == slave && check(&p.request, pdu).is_ok())
+        };
+        match Reading::infer(pdu_bytes) {
+            Reading::One(Pdu::Request(request)) => (
+                Role::Request(request.clone()),
+                self.wait_for(slave, request, start, end),
+            ),
+            Reading::One(pdu) => (self.answer(pdu, slave), None),
+            Reading::Both { request, response } => {
+                let response = Pdu::Response(response);
+                if answers_pending(&response, &self.pending) {
+                    (self.answer(response, slave), None)
+                } else {
+                    (
+                        Role::Request(request.clone()),
+                        self.wait_for(slave, request, start, end),
+                    )
+                }
+            }
+            Reading::Neither { .. } => (Role::Malformed, None),
+        }
+    }
+
+    fn answer(&mut self, pdu: Pdu, slave: u8) -> Role {
+        let to = match &self.pending {
+            Some(p) if p.slave == slave && check(&p.request, &pdu).is_ok() => {
+                self.pending.take().map(|p| p.request)
+            }
+            _ => None,
+        };
+        Role::Answer { pdu, to }
+    }
+
+    fn wait_for(
+        &mut self,
+        slave: u8,
+        request: Request,
+        start: Option<u64>,
+        end: Option<u64>,
+    ) -> Option<Unanswered> {
+        let previous = self.pending.take();
+        // Broadcasts (slave 0) are never answered, and so never "unanswered".
+        if slave != 0 {
+            self.pending = Some(Pending {
+                slave,
+                request,
+                time: end,
+            });
+        }
+        previous.map(|pending| Unanswered {
+            waited: match (pending.time, start) {
+                (Some(sent), Some(now)) => Some(now.saturating_sub(sent)),
+                _ => None,
+            },
+            pending,
+        })
+    }
+
+    /// The end of the capture: a request still waiting is unanswered.
+    pub fn finish(&mut self, now: Option<u64>) -> Option<Unanswered> {
+        self.pending.take().map(|pending| Unanswered {
+            waited: match (pending.time, now) {
+                (Some(sent), Some(now)) => Some(now.saturating_sub(sent)),
+                _ => None,
+            },
+            pending,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn an_echo_is_the_answer_of_the_request_before_it() {
+        let mut pairer = Pairer::default();
+        let write = [0x06, 0x00, 0x01, 0x00, 0x03];
+        let (first, _) = pairer.read(17, &write, Some(0), Some(1));
+        assert!(matches!(first, Role::Request(_)));
+        let (second, _) = pairer.read(17, &write, Some(2), Some(3));
+        assert!(matches!(second, Role::Answer { to: Some(_), .. }));
+    }
+
+    #[test]
+    fn an_eight_byte_coil_frame_is_settled_by_the_pending_request() {
+        let mut pairer = Pairer::default();
+        // Read 10 coils at 0x0300: its answer 01 03 00 00 0A is 8 bytes on the wire too.
+        let request = [0x01, 0x03, 0x00, 0x00, 0x0A];
+        let (role, _) = pairer.read(17, &request, None, None);
+        assert!(matches!(
+            role,
+            Role::Request(Request::ReadCoils { quantity: 10, .. })
+        ));
+        let answer = [0x01, 0x02, 0xFF, 0x03];
+        let (role, _) = pairer.read(17, &answer, None, None);
+        assert!(matches!(role, Role::Answer { to: Some(_), .. }));
+    }
+
+    #[test]
+    fn a_request_after_an_unanswered_one_reports_it() {
+        let mut pairer = Pairer::default();
+        let read = [0x03, 0x00, 0x6B, 0x00, 0x03];
+        pairer.read(17, &read, Some(0), Some(4000));
+        let (_, unanswered) = pairer.read(17, &read, Some(104_000), Some(108_000));
+        assert_eq!(unanswered.map(|u| u.waited), Some(Some(100_000)));
+    }
+}

@@ -1,0 +1,42 @@
+//! Frames as a pcap file that Wireshark opens: link type DLT_USER0 (147), which Wireshark
+//! decodes as Modbus RTU once told to (Preferences > Protocols > DLT_USER: DLT 147, payload
+//! protocol "mbrtu").
+
+use std::io::{self, Write};
+
+/// DLT_USER0.
+pub const LINK_TYPE: u32 = 147;
+
+pub struct PcapWriter<W: Write> {
+    out: W,
+}
+
+impl<W: Write> PcapWriter<W> {
+    /// Writes the file header.
+    pub fn new(mut out: W) -> io::Result<Self> {
+        out.write_all(&0xA1B2_C3D4u32.to_le_bytes())?; // microsecond timestamps
+        out.write_all(&2u16.to_le_bytes())?;
+        out.write_all(&4u16.to_le_bytes())?;
+        out.write_all(&0i32.to_le_bytes())?; // time zone: UTC
+        out.write_all(&0u32.to_le_bytes())?; // timestamp accuracy
+        out.write_all(&65535u32.to_le_bytes())?; // snapshot length
+        out.write_all(&LINK_TYPE.to_le_bytes())?;
+        Ok(Self { out })
+    }
+
+    /// One frame, at `time_us` microseconds since 1970.
+    pub fn frame(&mut self, time_us: u64, bytes: &[u8]) -> io::Result<()> {
+        let seconds = u32::try_from(time_us / 1_000_000).unwrap_or(u32::MAX);
+        let micros = (time_us % 1_000_000) as u32;
+        let len = u32::try_from(bytes.len()).unwrap_or(u32::MAX);
+        self.out.write_all(&seconds.to_le_bytes())?;
+        self.out.write_all(&micros.to_le_bytes())?;
+        self.out.write_all(&len.to_le_bytes())?;
+        self.out.write_all(&len.to_le_bytes())?;
+        self.out.write_all(bytes)
+    }
+
+    pub fn flush(&mut self) -> io::Result<()> {
+        self.out.flush()
+    }
+}

@@ -1,0 +1,318 @@
+//! A sniffing session: frames found, read as requests and answers, paired, filtered and
+//! counted. Pure, like the framer it drives.
+
+use std::collections::BTreeMap;
+
+use serde::Serialize;
+
+use super::framer::{Broken, Event, Found, Framer};
+use super::pairing::{Pairer, Role, Unanswered};
+use crate::address::{reference, Table};
+use crate::codec::Direction;
+use crate::codec::{Envelope, Mode, Pdu, Request};
+use crate::report::{describe_frame, FrameReport, Kind, Values};
+
+/// What a session reports, in order.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Record {
+    /// Boxed: a frame record is large beside the other records.
+    Frame(Box<FrameRecord>),
+    Noise {
+        bytes: Vec<u8>,
+        offset: u64,
+        time: Option<u64>,
+    },
+    Unanswered {
+        slave: u8,
+        request: Request,
+        waited: Option<u64>,
+    },
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct FrameRecord {
+    pub number: u64,
+    pub found: Found,
+    pub report: FrameReport,
+    /// Silence before the frame since the end of the previous one, in microseconds.
+    pub gap: Option<u64>,
+    /// An answer that follows its request.
+    pub paired: bool,
+}
+
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct SlaveCounts {
+    pub requests: u64,
+    pub answers: u64,
+    pub exceptions: u64,
+    pub unanswered: u64,
+    pub crc_errors: u64,
+}
+
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Counts {
+    pub frames: u64,
+    pub requests: u64,
+    pub answers: u64,
+    pub exceptions: u64,
+    pub unanswered: u64,
+    pub crc_errors: u64,
+    pub malformed: u64,
+    pub noise_bytes: u64,
+    pub slaves: BTreeMap<u8, SlaveCounts>,
+}
+
+/// Which frames to show: by slave and by function; empty shows all.
+#[derive(Clone, Debug, Default)]
+pub struct Filter {
+    pub slaves: Vec<u8>,
+    pub functions: Vec<u8>,
+}
+
+impl Filter {
+    fn shows(&self, slave: u8, function: u8) -> bool {
+        (self.slaves.is_empty() || self.slaves.contains(&slave))
+            && (self.functions.is_empty() || self.functions.contains(&(function & 0x7F)))
+    }
+
+    fn is_empty(&self) -> bool {
+        self.slaves.is_empty() && self.functions.is_empty()
+    }
+}
+
+pub struct Session {
+    mode: Mode,
+    framer: Framer,
+    pairer: Pairer,
+    filter: Filter,
+    counts: Counts,
+    char_us: f64,
+    last_end: Option<u64>,
+    numbered: u64,
+    events: Vec<Event>,
+    /// Frames came glued in one read: timing cannot split them.
+    pub bursty: bool,
+}
+
+impl Session {
+    /// `char_us`: one character's time on the wire; `silence_us`: the gap that ends a frame.
+    pub fn new(mode: Mode, char_us: f64, silence_us: u64, filter: Filter) -> Self {
+        Self {
+            mode,
+            framer: Framer::new(mode, char_us, silence_us),
+            pairer: Pairer::default(),
+            filter,
+            counts: Counts::default(),
+            char_us,
+            last_end: None,
+            numbered: 0,
+            events: Vec::new(),
+            bursty: false,
+        }
+    }
+
+    pub fn counts(&self) -> &Counts {
+        &self.counts
+    }
+
+    /// Bytes of a capture file, without timing.
+    pub fn push(&mut self, bytes: &[u8], out: &mut Vec<Record>) {
+        let mut events = std::mem::take(&mut self.events);
+        self.framer.push(bytes, &mut events);
+        self.read_events(&mut events, out);
+        self.events = events;
+    }
+
+    /// Bytes read together from a port, the last at `time` microseconds.
+    pub fn push_at(&mut self, bytes: &[u8], time: u64, out: &mut Vec<Record>) {
+        let mut events = std::mem::take(&mut self.events);
+        self.framer.push_at(bytes, time, &mut events);
+        if events
+            .iter()
+            .filter(|e| matches!(e, Event::Frame(_)))
+            .count()
+            > 1
+        {
+            self.bursty = true;
+        }
+        self.read_events(&mut events, out);
+        self.events = events;
+    }
+
+    /// One byte at a known time.
+    pub fn push_byte_at(&mut self, byte: u8, time: u64, out: &mut Vec<Record>) {
+        let mut events = std::mem::take(&mut self.events);
+        self.framer.push_byte_at(byte, time, &mut events);
+        self.read_events(&mut events, out);
+        self.events = events;
+    }
+
+    pub fn idle(&mut self, now: u64, out: &mut Vec<Record>) {
+        let mut events = std::mem::take(&mut self.events);
+        self.framer.idle(now, &mut events);
+        self.read_events(&mut events, out);
+        self.events = events;
+    }
+
+    /// The end of the capture, at `now` when known.
+    pub fn finish(&mut self, now: Option<u64>, out: &mut Vec<Record>) {
+        let mut events = std::mem::take(&mut self.events);
+        self.framer.finish(&mut events);
+        self.read_events(&mut events, out);
+        if let Some(unanswered) = self.pairer.finish(now.or(self.last_end)) {
+            self.unanswered(unanswered, out);
+        }
+    }
+
+    fn read_events(&mut self, events: &mut Vec<Event>, out: &mut Vec<Record>) {
+        for event in events.drain(..) {
+            match event {
+                Event::Noise {
+                    bytes,
+                    offset,
+                    start,
+                } => {
+                    self.counts.noise_bytes += bytes.len() as u64;
+                    if self.filter.is_empty() {
+                        out.push(Record::Noise {
+                            bytes,
+                            offset,
+                            time: start,
+                        });
+                    }
+                }
+                Event::Frame(found) => self.frame(found, out),
+            }
+        }
+    }
+
+    fn unanswered(&mut self, unanswered: Unanswered, out: &mut Vec<Record>) {
+        let slave = unanswered.pending.slave;
+        self.counts.unanswered += 1;
+        self.counts.slaves.entry(slave).or_default().unanswered += 1;
+        if self
+            .filter
+            .shows(slave, unanswered.pending.request.function())
+        {
+            out.push(Record::Unanswered {
+                slave,
+                request: unanswered.pending.request,
+                waited: unanswered.waited,
+            });
+        }
+    }
+
+    fn frame(&mut self, found: Found, out: &mut Vec<Record>) {
+        self.counts.frames += 1;
+        let gap = match (self.last_end, found.start) {
+            (Some(end), Some(start)) => Some(start.saturating_sub(end + self.char_us as u64)),
+            _ => None,
+        };
+        self.last_end = found.end.or(self.last_end);
+        let (report, paired) = match found.broken {
+            Some(broken) => {
+                let mut report = describe_frame(&found.bytes, Some(self.mode), None);
+                report.valid = false;
+                if broken == Broken::Incomplete {
+                    report.error = Some("incomplete: the frame was cut off before its end".into());
+                }
+                self.counts.crc_errors += u64::from(broken == Broken::Checksum);
+                self.counts
+                    .slaves
+                    .entry(report.slave)
+                    .or_default()
+                    .crc_errors += u64::from(broken == Broken::Checksum);
+                (report, false)
+            }
+            None => self.valid_frame(&found, out),
+        };
+        let slave_counts = self.counts.slaves.entry(report.slave).or_default();
+        if report.valid {
+            match report.kind {
+                Kind::Request => {
+                    self.counts.requests += 1;
+                    slave_counts.requests += 1;
+                }
+                Kind::Response => {
+                    self.counts.answers += 1;
+                    slave_counts.answers += 1;
+                }
+                Kind::Exception => {
+                    self.counts.answers += 1;
+                    self.counts.exceptions += 1;
+                    slave_counts.answers += 1;
+                    slave_counts.exceptions += 1;
+                }
+            }
+        }
+        self.numbered += 1;
+        if self.filter.shows(report.slave, report.function) {
+            out.push(Record::Frame(Box::new(FrameRecord {
+                number: self.numbered,
+                found,
+                report,
+                gap,
+                paired,
+            })));
+        }
+    }
+
+    fn valid_frame(&mut self, found: &Found, out: &mut Vec<Record>) -> (FrameReport, bool) {
+        let Ok(envelope) = Envelope::open(self.mode, &found.bytes) else {
+            return (describe_frame(&found.bytes, Some(self.mode), None), false);
+        };
+        let (role, unanswered) =
+            self.pairer
+                .read(envelope.slave, &envelope.pdu, found.start, found.end);
+        if let Some(unanswered) = unanswered {
+            self.unanswered(unanswered, out);
+        }
+        match role {
+            Role::Request(_) => (
+                describe_frame(&found.bytes, Some(self.mode), Some(Direction::Request)),
+                false,
+            ),
+            Role::Answer { pdu, to } => {
+                let mut report =
+                    describe_frame(&found.bytes, Some(self.mode), Some(Direction::Response));
+                if let Some(request) = &to {
+                    locate(&mut report, request, &pdu);
+                }
+                (report, to.is_some())
+            }
+            Role::Unsettled | Role::Malformed => {
+                if matches!(role, Role::Malformed) {
+                    self.counts.malformed += 1;
+                }
+                (describe_frame(&found.bytes, Some(self.mode), None), false)
+            }
+        }
+    }
+}
+
+/// Gives a read answer the addresses of the request it answers, and cuts bit answers to
+/// the quantity asked.
+fn locate(report: &mut FrameReport, request: &Request, pdu: &Pdu) {
+    let (address, quantity) = match request {
+        Request::ReadCoils { address, quantity }
+        | Request::ReadDiscreteInputs { address, quantity }
+        | Request::ReadHoldingRegisters { address, quantity }
+        | Request::ReadInputRegisters { address, quantity } => (*address, *quantity),
+        Request::ReadWriteMultipleRegisters {
+            read_address,
+            read_quantity,
+            ..
+        } => (*read_address, *read_quantity),
+        _ => return,
+    };
+    if !matches!(pdu, Pdu::Response(_)) {
+        return;
+    }
+    let table = Table::of_function(request.function()).unwrap_or(Table::HoldingRegisters);
+    report.fields.address = Some(address);
+    report.fields.reference = Some(reference(table, address));
+    report.fields.count = Some(quantity);
+    if let Some(Values::Bits(bits)) = &mut report.fields.values {
+        bits.truncate(usize::from(quantity));
+    }
+}

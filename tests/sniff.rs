@@ -1,0 +1,517 @@
+//! `mbtool sniff`: the real captures come out as listed beside them, glued frames are split,
+//! noise is counted and never invents a frame, a live pty capture reports the gaps the
+//! writer made, and --save replays as --input.
+
+mod common;
+
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::process::{Command as Process, Stdio};
+use std::time::{Duration, Instant};
+
+use common::{mbtool, rtu, write_all, Pty};
+use mbtool::codec::{Frame, Mode, Pdu, Request};
+use mbtool::slave::{DataModel, Slave};
+use mbtool::sniff::session::{Filter, Record, Session};
+use serialport::SerialPort;
+
+fn captures() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/captures")
+}
+
+/// What a capture's frames.txt lists: ("frame", hex, "req"/"resp") or ("noise", hex, "").
+fn listed(name: &str) -> Vec<(String, String, String)> {
+    let text = std::fs::read_to_string(captures().join(format!("{name}.frames.txt"))).unwrap();
+    text.lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .map(|line| {
+            let (data, note) = line.split_once('#').unwrap_or((line, ""));
+            if let Some(noise) = data.trim().strip_prefix("noise:") {
+                ("noise".into(), noise.trim().to_string(), String::new())
+            } else {
+                let hex = data.trim().trim_end_matches("CRC ok").trim().to_string();
+                let direction = note
+                    .split_whitespace()
+                    .nth(1)
+                    .unwrap_or_default()
+                    .to_string();
+                ("frame".into(), hex, direction)
+            }
+        })
+        .collect()
+}
+
+fn json_lines(stdout: &[u8]) -> Vec<serde_json::Value> {
+    String::from_utf8_lossy(stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("JSON Lines"))
+        .collect()
+}
+
+/// What sniff reported, in the same shape as `listed`, and its summary.
+fn reported(lines: &[serde_json::Value]) -> (Vec<(String, String, String)>, serde_json::Value) {
+    let mut seen = Vec::new();
+    let mut summary = serde_json::Value::Null;
+    for line in lines {
+        match line["type"].as_str() {
+            Some("frame") => {
+                let direction = match line["kind"].as_str() {
+                    Some("request") => "req",
+                    _ => "resp",
+                };
+                seen.push((
+                    "frame".into(),
+                    line["bytes"].as_str().unwrap().to_string(),
+                    direction.into(),
+                ));
+            }
+            Some("noise") => seen.push((
+                "noise".into(),
+                line["bytes"].as_str().unwrap().to_string(),
+                String::new(),
+            )),
+            Some("summary") => summary = line.clone(),
+            _ => {}
+        }
+    }
+    (seen, summary)
+}
+
+#[test]
+fn the_real_captures_come_out_as_listed() {
+    for (name, line) in [
+        ("brainchild-io-16do", ["-b", "19200", "--parity", "even"]),
+        ("flowmeter_graph_tool", ["-b", "9600", "--parity", "none"]),
+        ("wizmodbus", ["-b", "9600", "--parity", "none"]),
+    ] {
+        let input = captures().join(format!("{name}.bin"));
+        let output = mbtool()
+            .arg("sniff")
+            .args(line)
+            .args(["--json", "--input"])
+            .arg(&input)
+            .output()
+            .unwrap();
+        assert!(
+            output.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&output.stderr)
+        );
+        let (seen, summary) = reported(&json_lines(&output.stdout));
+        assert_eq!(seen, listed(name), "{name}");
+        let frames = seen.iter().filter(|s| s.0 == "frame").count() as u64;
+        assert_eq!(summary["frames"].as_u64(), Some(frames), "{name}");
+        assert_eq!(
+            summary["answers"], summary["requests"],
+            "{name}: every request answered"
+        );
+        assert_eq!(summary["unanswered"], 0, "{name}");
+        assert_eq!(summary["crc_errors"], 0, "{name}");
+    }
+}
+
+/// Replays a timed capture byte by byte at its recorded times; (frames, gaps in us).
+fn replay_timed(name: &str, char_us: f64, silence_us: u64) -> (usize, Vec<u64>) {
+    let text = std::fs::read_to_string(captures().join(format!("{name}.timed.txt"))).unwrap();
+    let mut session = Session::new(Mode::Rtu, char_us, silence_us, Filter::default());
+    let mut records = Vec::new();
+    for line in text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+    {
+        let mut parts = line.split_whitespace();
+        let time: u64 = parts.next().unwrap().parse().unwrap();
+        let byte = u8::from_str_radix(parts.next().unwrap(), 16).unwrap();
+        session.push_byte_at(byte, time, &mut records);
+    }
+    session.finish(None, &mut records);
+    let frames: Vec<_> = records
+        .iter()
+        .filter_map(|r| match r {
+            Record::Frame(f) => Some(f),
+            _ => None,
+        })
+        .collect();
+    (frames.len(), frames.iter().filter_map(|f| f.gap).collect())
+}
+
+#[test]
+fn timed_captures_give_the_gaps_listed_beside_them() {
+    // brainchild, 19200 8E1: request -> answer 2.058-2.116 ms, answer -> request 3.14 ms
+    // within a pass, 54 ms between the passes.
+    let (frames, gaps) = replay_timed("brainchild-io-16do", 11.0 * 1e6 / 19200.0, 2005);
+    assert_eq!(frames, 30);
+    let turnarounds: Vec<u64> = gaps.iter().step_by(2).copied().collect();
+    assert!(
+        turnarounds.iter().all(|g| (2057..=2117).contains(g)),
+        "{turnarounds:?}"
+    );
+    assert!(
+        gaps.iter().any(|g| (53_000..56_000).contains(g)),
+        "{gaps:?}"
+    );
+    // flowmeter, 9600 8N1 as sigrok decodes it: request -> answer 4.009-4.016 ms.
+    let (frames, gaps) = replay_timed("flowmeter_graph_tool", 10.0 * 1e6 / 9600.0, 3646);
+    assert_eq!(frames, 18);
+    let turnarounds: Vec<u64> = gaps.iter().step_by(2).copied().collect();
+    assert!(
+        turnarounds.iter().all(|g| (4008..=4017).contains(g)),
+        "{turnarounds:?}"
+    );
+    // wizmodbus: the glitch bytes lie inside the gaps, and still 88 frames come out.
+    let (frames, _) = replay_timed("wizmodbus", 10.0 * 1e6 / 9600.0, 3646);
+    assert_eq!(frames, 88);
+}
+
+/// The worked frames of the manuals, requests and answers in turn.
+const WORKED: &[&[u8]] = &[
+    &[0x11, 0x01, 0x00, 0x13, 0x00, 0x25, 0x0E, 0x84],
+    &[0x11, 0x01, 0x05, 0xCD, 0x6B, 0xB2, 0x0E, 0x1B, 0x45, 0xE6],
+    &[0x11, 0x02, 0x00, 0xC4, 0x00, 0x16, 0xBA, 0xA9],
+    &[0x11, 0x02, 0x03, 0xAC, 0xDB, 0x35, 0x20, 0x18],
+    &[0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87],
+    &[
+        0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64, 0xC8, 0xBA,
+    ],
+    &[0x11, 0x04, 0x00, 0x08, 0x00, 0x01, 0xB2, 0x98],
+    &[0x11, 0x04, 0x02, 0x00, 0x0A, 0xF8, 0xF4],
+    &[0x11, 0x05, 0x00, 0xAC, 0xFF, 0x00, 0x4E, 0x8B],
+    &[0x11, 0x05, 0x00, 0xAC, 0xFF, 0x00, 0x4E, 0x8B],
+    &[0x11, 0x06, 0x00, 0x01, 0x00, 0x03, 0x9A, 0x9B],
+    &[0x11, 0x06, 0x00, 0x01, 0x00, 0x03, 0x9A, 0x9B],
+    &[
+        0x11, 0x10, 0x00, 0x01, 0x00, 0x02, 0x04, 0x00, 0x0A, 0x01, 0x02, 0xC6, 0xF0,
+    ],
+    &[0x11, 0x10, 0x00, 0x01, 0x00, 0x02, 0x12, 0x98],
+];
+
+#[test]
+fn the_worked_frames_glued_together_come_out_paired() {
+    let glued: Vec<u8> = WORKED.concat();
+    let output = mbtool()
+        .args(["sniff", "--json", "--input", "-"])
+        .write_stdin(glued)
+        .output()
+        .unwrap();
+    let lines = json_lines(&output.stdout);
+    let frames: Vec<&serde_json::Value> = lines.iter().filter(|l| l["type"] == "frame").collect();
+    assert_eq!(frames.len(), WORKED.len());
+    for (i, (frame, bytes)) in frames.iter().zip(WORKED).enumerate() {
+        let hex: Vec<String> = bytes.iter().map(|b| format!("{b:02X}")).collect();
+        assert_eq!(frame["bytes"], hex.join(" "), "frame {i}");
+        let want = if i % 2 == 0 { "request" } else { "response" };
+        assert_eq!(frame["kind"], want, "frame {i}");
+        if i % 2 == 1 {
+            assert_eq!(frame["paired"], true, "frame {i}");
+        }
+    }
+    // The 03 answer carries the addresses of its request.
+    assert_eq!(frames[5]["ref"], "400108");
+    assert_eq!(frames[5]["values"], serde_json::json!([555, 0, 100]));
+    // The 01 answer is cut to the 37 coils asked.
+    assert_eq!(frames[1]["values"].as_array().unwrap().len(), 37);
+    let summary = lines.last().unwrap();
+    assert_eq!(
+        (summary["requests"].as_u64(), summary["answers"].as_u64()),
+        (Some(7), Some(7))
+    );
+    assert_eq!(summary["noise_bytes"], 0);
+}
+
+#[test]
+fn a_hundred_thousand_pairs_with_noise_lose_and_invent_nothing() {
+    let mut rng = fastrand::Rng::with_seed(20261122);
+    let mut slave = Slave::new(&[1, 2, 17, 247], DataModel::manual_examples());
+    let mut stream = Vec::new();
+    let mut frames = Vec::new();
+    let mut noise = 0u64;
+    for _ in 0..100_000 {
+        let id = [1u8, 2, 17, 247][rng.usize(..4)];
+        let address = rng.u16(..1000);
+        let request = match rng.u8(..6) {
+            0 => Request::ReadCoils {
+                address,
+                quantity: rng.u16(1..=64),
+            },
+            1 => Request::ReadDiscreteInputs {
+                address,
+                quantity: rng.u16(1..=64),
+            },
+            2 => Request::ReadHoldingRegisters {
+                address,
+                quantity: rng.u16(1..=20),
+            },
+            3 => Request::ReadInputRegisters {
+                address,
+                quantity: rng.u16(1..=20),
+            },
+            4 => Request::WriteSingleRegister {
+                address,
+                value: rng.u16(..),
+            },
+            _ => Request::WriteMultipleRegisters {
+                address,
+                values: vec![rng.u16(..); rng.usize(1..8)],
+            },
+        };
+        let answer = slave.handle(id, &request).unwrap();
+        for pdu in [Pdu::Request(request), answer] {
+            let bytes = Frame {
+                mode: Mode::Rtu,
+                slave: id,
+                transaction: 0,
+                pdu,
+            }
+            .encode()
+            .unwrap();
+            stream.extend_from_slice(&bytes);
+            frames.push(bytes);
+        }
+        if rng.u8(..100) == 0 {
+            for _ in 0..rng.usize(1..=3) {
+                stream.push(rng.u8(..));
+                noise += 1;
+            }
+        }
+    }
+    let mut session = Session::new(Mode::Rtu, 573.0, 2005, Filter::default());
+    let mut records = Vec::new();
+    for chunk in stream.chunks(4096) {
+        session.push(chunk, &mut records);
+    }
+    session.finish(None, &mut records);
+    let found: Vec<Vec<u8>> = records
+        .iter()
+        .filter_map(|r| match r {
+            Record::Frame(f) => Some(f.found.bytes.clone()),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(found.len(), frames.len(), "frames lost or invented");
+    if let Some(i) = (0..frames.len()).find(|i| found[*i] != frames[*i]) {
+        panic!(
+            "frame {i} differs: found {:02X?}, sent {:02X?} (before it: {:02X?})",
+            found[i],
+            frames[i],
+            frames[i.saturating_sub(1)]
+        );
+    }
+    assert_eq!(session.counts().noise_bytes, noise);
+    assert_eq!(session.counts().crc_errors, 0);
+    assert_eq!(session.counts().unanswered, 0);
+}
+
+#[test]
+fn an_ascii_capture_with_noise_and_a_cut_frame() {
+    let capture = b"\x00:1103006B00037E\r\n\xFE:110306022B0000006455\r\n:1103006B:1103006B00037E\r\n:110306022B0000006455\r\n";
+    let output = mbtool()
+        .args(["sniff", "--mode", "ascii", "--json", "--input", "-"])
+        .write_stdin(&capture[..])
+        .output()
+        .unwrap();
+    let lines = json_lines(&output.stdout);
+    let kinds: Vec<String> = lines
+        .iter()
+        .map(|l| format!("{} {}", l["type"].as_str().unwrap(), l["valid"]))
+        .collect();
+    assert_eq!(
+        kinds,
+        [
+            "noise null",
+            "frame true",
+            "noise null",
+            "frame true",
+            "frame false",
+            "frame true",
+            "frame true",
+            "summary null"
+        ]
+    );
+    assert!(
+        lines[4]["error"]
+            .as_str()
+            .unwrap()
+            .starts_with("incomplete"),
+        "{}",
+        lines[4]
+    );
+    assert_eq!(lines[4]["bytes"], ":1103006B");
+    assert_eq!(lines[6]["paired"], true);
+}
+
+#[test]
+fn a_corrupt_frame_is_a_crc_error_not_noise() {
+    let mut bad = WORKED[4].to_vec();
+    bad[7] ^= 0x55;
+    let capture = [
+        bad,
+        WORKED[5].to_vec(),
+        WORKED[4].to_vec(),
+        WORKED[5].to_vec(),
+    ]
+    .concat();
+    let output = mbtool()
+        .args(["sniff", "--json", "--input", "-"])
+        .write_stdin(capture)
+        .output()
+        .unwrap();
+    let lines = json_lines(&output.stdout);
+    assert_eq!(lines[0]["valid"], false);
+    assert!(
+        lines[0]["error"].as_str().unwrap().contains("CRC"),
+        "{}",
+        lines[0]
+    );
+    let summary = lines.last().unwrap();
+    assert_eq!(summary["crc_errors"], 1);
+    assert_eq!(summary["noise_bytes"], 0);
+    // The answer after the broken request has no request to pair with.
+    assert!(lines[1].get("paired").is_none());
+}
+
+#[test]
+fn filters_show_one_slave_or_function() {
+    let other = rtu(&[0x05, 0x04, 0x00, 0x00, 0x00, 0x01]);
+    let capture = [WORKED[4].to_vec(), WORKED[5].to_vec(), other].concat();
+    let output = mbtool()
+        .args(["sniff", "--json", "--input", "-", "--slave", "5"])
+        .write_stdin(capture.clone())
+        .output()
+        .unwrap();
+    let lines = json_lines(&output.stdout);
+    assert_eq!(
+        lines.len(),
+        3,
+        "one frame, its unanswered line, and the summary"
+    );
+    assert_eq!(lines[0]["slave"], 5);
+    let output = mbtool()
+        .args(["sniff", "-o", "table", "--input", "-", "--function", "3"])
+        .write_stdin(capture)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        text.contains("400108 = 555, 400109 = 0, 400110 = 100"),
+        "{text}"
+    );
+    assert!(!text.contains("slave 5 "), "{text}");
+}
+
+#[test]
+fn a_pcap_file_holds_every_frame() {
+    let dir = tempfile::tempdir().unwrap();
+    let pcap = dir.path().join("bus.pcap");
+    mbtool()
+        .args(["sniff", "--input", "-", "--pcap"])
+        .arg(&pcap)
+        .write_stdin(WORKED.concat())
+        .assert()
+        .success();
+    let bytes = std::fs::read(&pcap).unwrap();
+    assert_eq!(&bytes[..4], &0xA1B2_C3D4u32.to_le_bytes());
+    assert_eq!(&bytes[20..24], &147u32.to_le_bytes(), "link type DLT_USER0");
+    // Walk the records: each is a 16-byte header and the frame.
+    let (mut at, mut records) = (24, Vec::new());
+    while at < bytes.len() {
+        let len = u32::from_le_bytes(bytes[at + 8..at + 12].try_into().unwrap()) as usize;
+        records.push(bytes[at + 16..at + 16 + len].to_vec());
+        at += 16 + len;
+    }
+    let want: Vec<Vec<u8>> = WORKED.iter().map(|f| f.to_vec()).collect();
+    assert_eq!(records, want);
+}
+
+/// Runs `mbtool sniff` on a pty while the test writes frames with chosen gaps at 9600
+/// baud; returns sniff's JSON Lines and the gaps the writer made, in microseconds.
+fn live_capture(extra: &[&str]) -> (Vec<serde_json::Value>, Vec<u64>) {
+    let pty = Pty::new();
+    let mut port = pty.master.try_clone_native().unwrap();
+    let mut child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+        .args([
+            "sniff", "--json", "-b", "9600", "--parity", "none", "--port", &pty.path,
+        ])
+        .args(extra)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let child_guard_pid = child.id();
+    // Wait until sniff listens (it says so on stderr).
+    let mut stderr = child.stderr.take().unwrap();
+    let mut said = [0u8; 16];
+    let _ = stderr.read(&mut said);
+    // 10 bits a character at 9600 baud; the writer sends each frame whole.
+    let char_us = 10.0 * 1e6 / 9600.0;
+    let pauses = [30_000u64, 90_000, 50_000, 120_000, 40_000];
+    let mut writes: Vec<(Instant, usize)> = Vec::new();
+    for (i, frame) in WORKED[4..10].iter().enumerate() {
+        write_all(&mut port, frame);
+        writes.push((Instant::now(), frame.len()));
+        if let Some(pause) = pauses.get(i) {
+            std::thread::sleep(Duration::from_micros(*pause));
+        }
+    }
+    std::thread::sleep(Duration::from_millis(100));
+    let _ = Process::new("kill")
+        .args(["-INT", &child_guard_pid.to_string()])
+        .status();
+    let output = child.wait_with_output().unwrap();
+    assert!(
+        output.status.success(),
+        "sniff ended with {:?}",
+        output.status
+    );
+    // The gap the writer made: from the end of a frame's last character to the start of
+    // the next frame's first, with frames placed as they arrive whole.
+    let gaps = writes
+        .windows(2)
+        .map(|w| {
+            let (t1, _) = w[0];
+            let (t2, n2) = w[1];
+            let start2 = t2.duration_since(t1).as_micros() as f64 - (n2 as f64 - 1.0) * char_us;
+            (start2 - char_us) as u64
+        })
+        .collect();
+    // Nothing came back to the writer: sniff never transmits.
+    port.set_timeout(Duration::from_millis(50)).unwrap();
+    let mut echo = [0u8; 16];
+    assert!(port.read(&mut echo).is_err(), "sniff wrote to the bus");
+    (json_lines(&output.stdout), gaps)
+}
+
+#[test]
+fn live_on_a_pty_the_gaps_match_and_save_replays() {
+    let dir = tempfile::tempdir().unwrap();
+    let saved = dir.path().join("bus.bin");
+    let (lines, written) = live_capture(&["--save", saved.to_str().unwrap()]);
+    let frames: Vec<&serde_json::Value> = lines.iter().filter(|l| l["type"] == "frame").collect();
+    assert_eq!(frames.len(), 6);
+    let gaps: Vec<u64> = frames[1..]
+        .iter()
+        .map(|f| (f["gap"].as_f64().unwrap() * 1e6) as u64)
+        .collect();
+    for (seen, made) in gaps.iter().zip(&written) {
+        // The pty hands bytes over at once, so the only difference is scheduling.
+        assert!(
+            seen.abs_diff(*made) < 10_000,
+            "gap {seen} us seen, {made} us made ({gaps:?} vs {written:?})"
+        );
+    }
+    // The same bytes replayed give the same frames.
+    let replay = mbtool()
+        .args(["sniff", "--json", "--input"])
+        .arg(&saved)
+        .output()
+        .unwrap();
+    let replayed = json_lines(&replay.stdout);
+    let bytes = |lines: &[serde_json::Value]| -> Vec<serde_json::Value> {
+        lines
+            .iter()
+            .filter(|l| l["type"] == "frame")
+            .map(|l| l["bytes"].clone())
+            .collect()
+    };
+    assert_eq!(bytes(&replayed), bytes(&lines));
+    assert_eq!(std::fs::read(&saved).unwrap(), WORKED[4..10].concat());
+}
