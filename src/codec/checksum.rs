@@ -11,6 +11,25 @@ pub fn crc16(bytes: &[u8]) -> u16 {
     MODBUS_CRC.checksum(bytes)
 }
 
+/// The shortest length in `min_len..=max_len` at which `bytes` ends in its own CRC (low
+/// byte first): how a frame of a function without a known layout is found. The CRC of each
+/// prefix is carried forward a byte at a time, so the scan costs one pass.
+pub fn shortest_crc_match(bytes: &[u8], min_len: usize, max_len: usize) -> Option<usize> {
+    let max_len = max_len.min(bytes.len());
+    if min_len < 3 || min_len > max_len {
+        return None;
+    }
+    let mut digest = MODBUS_CRC.digest();
+    digest.update(&bytes[..min_len - 2]);
+    for len in min_len..=max_len {
+        if digest.clone().finalize().to_le_bytes() == bytes[len - 2..len] {
+            return Some(len);
+        }
+        digest.update(&bytes[len - 2..len - 1]);
+    }
+    None
+}
+
 /// Longitudinal redundancy check: the two's complement of the 8-bit sum of the bytes.
 pub fn lrc(bytes: &[u8]) -> u8 {
     bytes
@@ -27,6 +46,15 @@ mod tests {
     fn crc_of_the_manual_read_holding_request() {
         // 11 03 00 6B 00 03 -> CRC 0x8776, sent as 76 87.
         assert_eq!(crc16(&[0x11, 0x03, 0x00, 0x6B, 0x00, 0x03]), 0x8776);
+    }
+
+    #[test]
+    fn the_shortest_crc_match_is_the_whole_frame() {
+        let mut frame = vec![0x11, 0x41, 0x01, 0x02, 0x03];
+        frame.extend_from_slice(&crc16(&frame).to_le_bytes());
+        frame.extend_from_slice(&[0xAA, 0xBB]);
+        assert_eq!(shortest_crc_match(&frame, 4, 256), Some(7));
+        assert_eq!(shortest_crc_match(&frame[..6], 4, 256), None);
     }
 
     #[test]

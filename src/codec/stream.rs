@@ -3,7 +3,7 @@
 //! Feeding a stream byte by byte or all at once gives the same frames.
 
 use super::adu::{Frame, Mode};
-use super::checksum::crc16;
+use super::checksum::shortest_crc_match;
 use super::error::FrameError;
 use super::length::{rtu_frame_length, tcp_frame_length, Length};
 use super::limits;
@@ -75,27 +75,18 @@ impl StreamDecoder {
                 len: 1,
             },
             // A function code without a known layout: the shortest prefix whose CRC holds.
-            Length::Unknown => {
-                let limit = buf.len().min(limits::MAX_RTU_ADU);
-                for len in 4..=limit {
-                    let (body, crc) = buf[..len].split_at(len - 2);
-                    if crc16(body).to_le_bytes() == crc {
-                        return self.whole(&buf[..len]);
-                    }
-                }
-                if buf.len() >= limits::MAX_RTU_ADU {
-                    Status::Invalid {
-                        error: FrameError::TooLong {
-                            mode: "RTU",
-                            actual: buf.len(),
-                            max: limits::MAX_RTU_ADU,
-                        },
-                        len: buf.len(),
-                    }
-                } else {
-                    Status::Partial
-                }
-            }
+            Length::Unknown => match shortest_crc_match(buf, 4, limits::MAX_RTU_ADU) {
+                Some(len) => self.whole(&buf[..len]),
+                None if buf.len() >= limits::MAX_RTU_ADU => Status::Invalid {
+                    error: FrameError::TooLong {
+                        mode: "RTU",
+                        actual: buf.len(),
+                        max: limits::MAX_RTU_ADU,
+                    },
+                    len: buf.len(),
+                },
+                None => Status::Partial,
+            },
         }
     }
 

@@ -17,6 +17,8 @@ pub struct DecodeWriter {
     order: ByteOrder,
     colour: bool,
     csv_header_written: bool,
+    /// A JSON line is put together here and written at once (see output::sniff).
+    line: Vec<u8>,
 }
 
 const CSV_HEADER: &str = "mode,kind,slave,function,valid,address,ref,count,values,exception,error";
@@ -34,6 +36,7 @@ impl DecodeWriter {
             order,
             colour,
             csv_header_written: false,
+            line: Vec::with_capacity(512),
         }
     }
 
@@ -46,8 +49,10 @@ impl DecodeWriter {
     ) -> io::Result<()> {
         match self.format {
             OutputFormat::Json => {
-                serde_json::to_writer(&mut *out, report)?;
-                out.write_all(b"\n")
+                self.line.clear();
+                serde_json::to_writer(&mut self.line, report)?;
+                self.line.push(b'\n');
+                out.write_all(&self.line)
             }
             OutputFormat::Values => self.write_values(out, &report.fields),
             OutputFormat::Csv => self.write_csv(out, report),

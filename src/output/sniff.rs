@@ -72,6 +72,17 @@ pub struct SniffWriter {
     format: OutputFormat,
     colour: bool,
     csv_header_written: bool,
+    /// One JSON line is put together here and written at once: serde writes token by
+    /// token, and each write through the boxed output costs a dynamic call.
+    line: Vec<u8>,
+}
+
+/// Serializes `value` as one line into `line`, then writes it.
+fn json_line(out: &mut dyn Write, line: &mut Vec<u8>, value: &impl Serialize) -> io::Result<()> {
+    line.clear();
+    serde_json::to_writer(&mut *line, value)?;
+    line.push(b'\n');
+    out.write_all(line)
 }
 
 /// What a request asks, in a few words: `400108 x3`, `400002 = 3`.
@@ -163,6 +174,7 @@ impl SniffWriter {
             format,
             colour,
             csv_header_written: false,
+            line: Vec::with_capacity(512),
         }
     }
 
@@ -185,8 +197,9 @@ impl SniffWriter {
                         .to_string(),
                     _ => bytes,
                 };
-                serde_json::to_writer(
-                    &mut *out,
+                json_line(
+                    out,
+                    &mut self.line,
                     &JsonFrame {
                         kind: "frame",
                         number: frame.number,
@@ -197,8 +210,7 @@ impl SniffWriter {
                         report: &frame.report,
                         paired: frame.paired,
                     },
-                )?;
-                out.write_all(b"\n")
+                )
             }
             (
                 OutputFormat::Json,
@@ -207,19 +219,17 @@ impl SniffWriter {
                     offset,
                     time,
                 },
-            ) => {
-                serde_json::to_writer(
-                    &mut *out,
-                    &JsonNoise {
-                        kind: "noise",
-                        time: time.map(seconds),
-                        offset: *offset,
-                        count: bytes.len(),
-                        bytes: &spaced_hex(&bytes[..bytes.len().min(64)]),
-                    },
-                )?;
-                out.write_all(b"\n")
-            }
+            ) => json_line(
+                out,
+                &mut self.line,
+                &JsonNoise {
+                    kind: "noise",
+                    time: time.map(seconds),
+                    offset: *offset,
+                    count: bytes.len(),
+                    bytes: &spaced_hex(&bytes[..bytes.len().min(64)]),
+                },
+            ),
             (
                 OutputFormat::Json,
                 Record::Unanswered {
@@ -229,8 +239,9 @@ impl SniffWriter {
                 },
             ) => {
                 let (_, fields) = describe_pdu(&crate::codec::Pdu::Request(request.clone()));
-                serde_json::to_writer(
-                    &mut *out,
+                json_line(
+                    out,
+                    &mut self.line,
                     &JsonUnanswered {
                         kind: "unanswered",
                         slave: *slave,
@@ -238,8 +249,7 @@ impl SniffWriter {
                         request: fields,
                         waited: waited.map(seconds),
                     },
-                )?;
-                out.write_all(b"\n")
+                )
             }
             (OutputFormat::Csv, Record::Frame(frame)) => self.csv(out, frame),
             (OutputFormat::Csv, _) => Ok(()),

@@ -8,7 +8,7 @@
 //! count; no byte is dropped and no frame is reported twice. Silence (3.5 character times)
 //! ends a frame that was broken off, when the timing can be trusted.
 
-use crate::codec::checksum::{crc16, lrc};
+use crate::codec::checksum::{crc16, lrc, shortest_crc_match};
 use crate::codec::length::{rtu_frame_length, Length};
 use crate::codec::{limits, Direction, Mode};
 
@@ -213,8 +213,7 @@ impl Framer {
                 }
                 Length::Unknown => {
                     // No layout known: the shortest prefix whose CRC holds.
-                    let limit = data.len().min(limits::MAX_RTU_ADU);
-                    let found = (4..=limit).find(|len| crc_holds(&data[..*len]));
+                    let found = shortest_crc_match(data, 4, limits::MAX_RTU_ADU);
                     need_more |= found.is_none() && data.len() < limits::MAX_RTU_ADU;
                     found
                 }
