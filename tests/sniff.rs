@@ -515,3 +515,21 @@ fn live_on_a_pty_the_gaps_match_and_save_replays() {
     assert_eq!(bytes(&replayed), bytes(&lines));
     assert_eq!(std::fs::read(&saved).unwrap(), WORKED[4..10].concat());
 }
+
+#[test]
+fn an_exception_line_names_its_function_and_code() {
+    let capture = [WORKED[4].to_vec(), rtu(&[0x11, 0x83, 0x02])].concat();
+    let output = mbtool()
+        .args(["sniff", "--input", "-"])
+        .write_stdin(capture)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&output.stdout);
+    let line = text.lines().nth(1).unwrap_or_default();
+    assert!(
+        line.contains("slave 17  03 Read Holding Registers"),
+        "{line}"
+    );
+    assert!(line.contains("exception 02 illegal data address"), "{line}");
+    assert!(text.contains("1 exceptions"), "{text}");
+}

@@ -119,7 +119,8 @@ fn frame_summary(report: &FrameReport) -> String {
     }
     let f = &report.fields;
     if let Some(code) = f.exception {
-        return format!("exception {}", ExceptionCode(code));
+        // The kind column already says "exception".
+        return ExceptionCode(code).to_string();
     }
     let place = f
         .reference
@@ -341,7 +342,7 @@ impl SniffWriter {
                     Self::when(frame.found.start, frame.found.offset),
                     gap,
                     r.slave,
-                    r.function,
+                    r.function & 0x7F,
                     function::name(r.function),
                     kind,
                     frame_summary(r),
