@@ -190,10 +190,12 @@ impl Framer {
     }
 
     /// The lengths at `at` whose CRC holds, each with the direction it reads in (`None`:
-    /// either), ascending; and whether more bytes could still make one.
-    fn crc_lengths(&self, at: usize) -> (Vec<(usize, Option<Direction>)>, bool) {
+    /// either), ascending; the lengths predicted but not yet all here; and whether more
+    /// bytes could still make a frame.
+    fn crc_lengths(&self, at: usize) -> (Vec<(usize, Option<Direction>)>, Vec<usize>, bool) {
         let data = &self.buffer[at..];
         let mut need_more = false;
+        let mut waiting = Vec::new();
         let mut lengths: Vec<(usize, Option<Direction>)> = Vec::with_capacity(2);
         for direction in [Direction::Request, Direction::Response] {
             let found = match rtu_frame_length(data, direction) {
@@ -204,6 +206,7 @@ impl Framer {
                     Some(_) => None,
                     None => {
                         need_more = true;
+                        waiting.push(len);
                         None
                     }
                 },
@@ -226,31 +229,53 @@ impl Framer {
             }
         }
         lengths.sort_unstable_by_key(|(len, _)| *len);
-        (lengths, need_more)
+        (lengths, waiting, need_more)
     }
 
-    /// The valid frame at `at`: its length and direction; `Err` if more bytes are needed.
+    /// The valid frame at `at`: its length and direction; `Err` if more bytes are needed to
+    /// tell. A decision is only made on bytes that are here, so that a stream fed byte by
+    /// byte and all at once gives the same frames.
     fn valid_rtu(&self, at: usize, at_end: bool) -> Result<Option<(usize, Option<Direction>)>, ()> {
-        let (lengths, need_more) = self.crc_lengths(at);
+        let (lengths, waiting, need_more) = self.crc_lengths(at);
+        let settled = at_end || self.silence_after(self.buffer.len() - 1);
         match lengths.as_slice() {
-            [] if need_more && !at_end && !self.silence_after(self.buffer.len() - 1) => Err(()),
+            [] if need_more && !settled => Err(()),
             [] => Ok(None),
+            // A frame that ends in 00 leaves its prefix one byte shorter valid too, and a
+            // frame followed by a 00 reads as valid one byte longer: wait for that byte.
+            [(len, _)] if waiting.contains(&(len + 1)) && !settled => Err(()),
             [one] => Ok(Some(*one)),
             // Valid at two lengths: the direction the bus expects next, else the reading
             // after which the bytes go on as frames do, else the shorter.
             [shortest, ..] => {
-                let expected = self
+                if let Some(expected) = self
                     .expect
-                    .and_then(|d| lengths.iter().find(|(_, dir)| *dir == Some(d)).copied());
-                let followed = || {
-                    lengths.iter().copied().find(|(len, _)| {
-                        let next = at + len;
-                        next == self.buffer.len()
-                            || self.silence_after(next - 1)
-                            || !self.crc_lengths(next).0.is_empty()
-                    })
-                };
-                Ok(Some(expected.or_else(followed).unwrap_or(*shortest)))
+                    .and_then(|d| lengths.iter().find(|(_, dir)| *dir == Some(d)))
+                {
+                    return Ok(Some(*expected));
+                }
+                for (len, direction) in &lengths {
+                    let next = at + len;
+                    if next == self.buffer.len() {
+                        if at_end {
+                            return Ok(Some((*len, *direction)));
+                        }
+                        // What follows is not here yet.
+                        return Err(());
+                    }
+                    if self.silence_after(next - 1) {
+                        return Ok(Some((*len, *direction)));
+                    }
+                    let (frames_next, _, more_next) = self.crc_lengths(next);
+                    if !frames_next.is_empty() {
+                        return Ok(Some((*len, *direction)));
+                    }
+                    if more_next && !settled {
+                        // Whether a frame follows is not known yet.
+                        return Err(());
+                    }
+                }
+                Ok(Some(*shortest))
             }
         }
     }
