@@ -44,6 +44,16 @@ pub enum Event {
     },
 }
 
+/// What the bytes at one position could be, by their CRC.
+struct Candidates {
+    /// Lengths whose CRC holds, with the direction each reads in (`None`: either), ascending.
+    valid: Vec<(usize, Option<Direction>)>,
+    /// Lengths predicted whose bytes are not all here yet.
+    waiting: Vec<usize>,
+    /// More bytes could still make a frame.
+    need_more: bool,
+}
+
 /// What the start of the buffer holds.
 enum Look {
     Frame(usize, Option<Broken>),
@@ -189,10 +199,8 @@ impl Framer {
         }
     }
 
-    /// The lengths at `at` whose CRC holds, each with the direction it reads in (`None`:
-    /// either), ascending; the lengths predicted but not yet all here; and whether more
-    /// bytes could still make a frame.
-    fn crc_lengths(&self, at: usize) -> (Vec<(usize, Option<Direction>)>, Vec<usize>, bool) {
+    /// What the bytes at `at` could be, in either direction.
+    fn crc_lengths(&self, at: usize) -> Candidates {
         let data = &self.buffer[at..];
         let mut need_more = false;
         let mut waiting = Vec::new();
@@ -229,14 +237,22 @@ impl Framer {
             }
         }
         lengths.sort_unstable_by_key(|(len, _)| *len);
-        (lengths, waiting, need_more)
+        Candidates {
+            valid: lengths,
+            waiting,
+            need_more,
+        }
     }
 
     /// The valid frame at `at`: its length and direction; `Err` if more bytes are needed to
     /// tell. A decision is only made on bytes that are here, so that a stream fed byte by
     /// byte and all at once gives the same frames.
     fn valid_rtu(&self, at: usize, at_end: bool) -> Result<Option<(usize, Option<Direction>)>, ()> {
-        let (lengths, waiting, need_more) = self.crc_lengths(at);
+        let Candidates {
+            valid: lengths,
+            waiting,
+            need_more,
+        } = self.crc_lengths(at);
         let settled = at_end || self.silence_after(self.buffer.len() - 1);
         match lengths.as_slice() {
             [] if need_more && !settled => Err(()),
@@ -266,11 +282,11 @@ impl Framer {
                     if self.silence_after(next - 1) {
                         return Ok(Some((*len, *direction)));
                     }
-                    let (frames_next, _, more_next) = self.crc_lengths(next);
-                    if !frames_next.is_empty() {
+                    let after = self.crc_lengths(next);
+                    if !after.valid.is_empty() {
                         return Ok(Some((*len, *direction)));
                     }
-                    if more_next && !settled {
+                    if after.need_more && !settled {
                         // Whether a frame follows is not known yet.
                         return Err(());
                     }
