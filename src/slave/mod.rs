@@ -33,8 +33,10 @@ impl Default for Identity {
 /// Counters of the diagnostics function (08), per slave id.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Counters {
+    /// Requests answered (an exception counts).
     pub messages: u16,
     pub exceptions: u16,
+    /// Broadcasts carried out, never answered.
     pub broadcasts: u16,
 }
 
@@ -63,10 +65,6 @@ impl Slave {
 
     pub fn answers_for(&self, slave: u8) -> bool {
         self.models.contains_key(&slave)
-    }
-
-    pub fn model(&self, slave: u8) -> Option<&DataModel> {
-        self.models.get(&slave)
     }
 
     /// Handles a request addressed to `slave`. `None`: no answer is due (another slave's
@@ -228,19 +226,21 @@ fn respond(
     })
 }
 
-/// The diagnostics sub-functions a simple slave keeps: loopback and its counters.
+/// The diagnostics sub-functions a simple slave keeps: loopback and its counters. A
+/// broadcast is a message it received and did not answer.
 fn diagnostics(
     sub_function: u16,
     data: &[u8],
     counters: Counters,
 ) -> Result<Vec<u8>, ExceptionCode> {
     let counter = |value: u16| Ok(value.to_be_bytes().to_vec());
+    let received = counters.messages.wrapping_add(counters.broadcasts);
     match sub_function {
-        0x0000 => Ok(data.to_vec()),
-        0x000A => Ok(data.to_vec()),
-        0x000B | 0x000E => counter(counters.messages),
-        0x000C | 0x000F => counter(0),
+        0x0000 | 0x000A => Ok(data.to_vec()),
+        0x000B | 0x000E => counter(received),
+        0x000C => counter(0),
         0x000D => counter(counters.exceptions),
+        0x000F => counter(counters.broadcasts),
         _ => Err(ILLEGAL_FUNCTION),
     }
 }
@@ -285,4 +285,42 @@ fn device_identification(
         next_object_id: 0,
         objects: chosen,
     }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn counter(slave: &mut Slave, sub_function: u16) -> Vec<u8> {
+        let request = Request::Diagnostics {
+            sub_function,
+            data: vec![0, 0],
+        };
+        match slave.handle(17, &request) {
+            Some(Pdu::Response(Response::Diagnostics { data, .. })) => data,
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn diagnostics_counters_count_answers_exceptions_and_broadcasts() {
+        let mut slave = Slave::new(&[17], DataModel::default());
+        let write = Request::WriteSingleRegister {
+            address: 1,
+            value: 2,
+        };
+        assert_eq!(slave.handle(0, &write), None);
+        slave.handle(
+            17,
+            &Request::Other {
+                function: 0x41,
+                data: vec![],
+            },
+        );
+        // Bus message count: the broadcast and the exception; a request is counted once
+        // it has been answered.
+        assert_eq!(counter(&mut slave, 0x000B), [0, 2]);
+        assert_eq!(counter(&mut slave, 0x000D), [0, 1]);
+        assert_eq!(counter(&mut slave, 0x000F), [0, 1]);
+    }
 }
