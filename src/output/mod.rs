@@ -11,6 +11,9 @@ use std::io::{self, IsTerminal, Write};
 
 use comfy_table::{presets, Table};
 
+use crate::codec::{Pdu, Request};
+use crate::report::{describe_pdu, Fields, Values};
+
 /// Standard output, buffered unless it is a terminal, where each line shows at once.
 pub fn stdout() -> Box<dyn Write> {
     let stdout = io::stdout();
@@ -37,6 +40,45 @@ pub fn new_table(colour: bool) -> Table {
         table.force_no_tty();
     }
     table
+}
+
+/// Values in a line: the first `most`, then how many there are in all.
+pub fn shown_values(values: &Values, most: usize) -> String {
+    let all: Vec<String> = match values {
+        Values::Registers(v) => v.iter().map(ToString::to_string).collect(),
+        Values::Bits(v) => v.iter().map(ToString::to_string).collect(),
+    };
+    let mut text = all.iter().take(most).cloned().collect::<Vec<_>>().join(" ");
+    if all.len() > most {
+        text.push_str(&format!(" ... ({} in all)", all.len()));
+    }
+    text
+}
+
+/// What a PDU's fields say in a few words, for the one-line views of `sniff` and `serve`:
+/// `400108 x3`, `400002 = 10 258`, `3 values: 555 0 100`.
+pub fn fields_summary(fields: &Fields) -> String {
+    let place = fields
+        .reference
+        .clone()
+        .or_else(|| fields.address.map(|a| a.to_string()));
+    match (&fields.values, place, fields.count) {
+        (Some(values), Some(place), _) => format!("{place} = {}", shown_values(values, 8)),
+        (Some(values), None, _) => format!("{} values: {}", values.len(), shown_values(values, 8)),
+        (None, Some(place), Some(count)) => format!("{place} x{count}"),
+        (None, Some(place), None) => place,
+        (None, None, _) => fields
+            .text
+            .clone()
+            .or_else(|| fields.data.clone())
+            .unwrap_or_default(),
+    }
+}
+
+/// A request in a few words.
+pub fn request_summary(request: &Request) -> String {
+    let (_, fields) = describe_pdu(&Pdu::Request(request.clone()));
+    fields_summary(&fields)
 }
 
 /// A CSV field, quoted when it needs to be.

@@ -43,24 +43,6 @@ fn answer_of(outcome: &Outcome) -> (&'static str, Option<u8>, Option<&'static st
     }
 }
 
-/// What a request asked, in a few words: `400108 x3`, `000173 = 1`.
-fn asked(fields: &Fields) -> String {
-    let mut text = String::new();
-    if let Some(reference) = &fields.reference {
-        text.push_str(reference);
-    } else if let Some(address) = fields.address {
-        text.push_str(&address.to_string());
-    }
-    if let Some(count) = fields.count {
-        text.push_str(&format!(" x{count}"));
-    } else if let Some(crate::report::Values::Registers(v)) = &fields.values {
-        text.push_str(&format!(" = {}", v.first().copied().unwrap_or_default()));
-    } else if let Some(crate::report::Values::Bits(v)) = &fields.values {
-        text.push_str(&format!(" = {}", v.first().copied().unwrap_or_default()));
-    }
-    text
-}
-
 pub fn write_entry(out: &mut dyn Write, json: bool, entry: &LogEntry) -> io::Result<()> {
     let (_, request) = describe_pdu(&Pdu::Request(entry.request.clone()));
     let (answer, exception, fault) = answer_of(entry.outcome);
@@ -95,6 +77,6 @@ pub fn write_entry(out: &mut dyn Write, json: bool, entry: &LogEntry) -> io::Res
         entry.slave,
         function,
         function::name(function),
-        asked(&request),
+        super::fields_summary(&request),
     )
 }

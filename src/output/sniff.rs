@@ -4,10 +4,10 @@ use std::io::{self, Write};
 
 use serde::Serialize;
 
-use super::csv_field;
+use super::{csv_field, fields_summary, request_summary, shown_values};
 use crate::cli::OutputFormat;
 use crate::codec::function;
-use crate::codec::{ExceptionCode, Request};
+use crate::codec::ExceptionCode;
 use crate::report::{describe_pdu, spaced_hex, FrameReport, Kind, Values};
 use crate::sniff::session::{Counts, FrameRecord, Record};
 
@@ -85,33 +85,6 @@ fn json_line(out: &mut dyn Write, line: &mut Vec<u8>, value: &impl Serialize) ->
     out.write_all(line)
 }
 
-/// What a request asks, in a few words: `400108 x3`, `400002 = 3`.
-pub fn request_summary(request: &Request) -> String {
-    let (_, fields) = describe_pdu(&crate::codec::Pdu::Request(request.clone()));
-    let place = fields
-        .reference
-        .clone()
-        .or_else(|| fields.address.map(|a| a.to_string()))
-        .unwrap_or_default();
-    match (&fields.values, fields.count) {
-        (_, Some(count)) if fields.values.is_none() => format!("{place} x{count}"),
-        (Some(values), _) => format!("{place} = {}", shown_values(values, 8)),
-        _ => place,
-    }
-}
-
-fn shown_values(values: &Values, most: usize) -> String {
-    let all: Vec<String> = match values {
-        Values::Registers(v) => v.iter().map(ToString::to_string).collect(),
-        Values::Bits(v) => v.iter().map(ToString::to_string).collect(),
-    };
-    let mut text = all.iter().take(most).cloned().collect::<Vec<_>>().join(" ");
-    if all.len() > most {
-        text.push_str(&format!(" ... ({} in all)", all.len()));
-    }
-    text
-}
-
 /// What a frame says, in a few words.
 fn frame_summary(report: &FrameReport) -> String {
     if let Some(error) = &report.error {
@@ -155,17 +128,7 @@ fn frame_summary(report: &FrameReport) -> String {
             }
             text
         }
-        (_, Some(values), Some(place)) => format!("{place} = {}", shown_values(values, 8)),
-        (_, None, Some(place)) => match f.count {
-            Some(count) => format!("{place} x{count}"),
-            None => place,
-        },
-        (_, Some(values), None) => format!("{} values: {}", values.len(), shown_values(values, 8)),
-        _ => f
-            .text
-            .clone()
-            .or_else(|| f.data.clone())
-            .unwrap_or_default(),
+        _ => fields_summary(f),
     }
 }
 
