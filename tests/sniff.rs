@@ -210,6 +210,13 @@ fn the_worked_frames_glued_together_come_out_paired() {
     assert_eq!(frames[5]["values"], serde_json::json!([555, 0, 100]));
     // The 01 answer is cut to the 37 coils asked.
     assert_eq!(frames[1]["values"].as_array().unwrap().len(), 37);
+    // Without timing, a frame's time is where it stands at the line's speed (19200 8E1,
+    // 11 bits a character): the 03 request starts 34 bytes in, at 19.479 ms.
+    assert_eq!(frames[4]["time"].as_f64(), Some(0.019479));
+    assert!(
+        frames[4].get("gap").is_none(),
+        "no gap is made up without timing"
+    );
     let summary = lines.last().unwrap();
     assert_eq!(
         (summary["requests"].as_u64(), summary["answers"].as_u64()),

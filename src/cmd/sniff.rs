@@ -25,8 +25,6 @@ struct Sinks {
     pcap: Option<PcapWriter<BufWriter<File>>>,
     /// Microseconds since 1970 of capture time 0, for pcap timestamps.
     epoch_us: u64,
-    /// Without timing, a frame's time is its position at the line's speed.
-    char_us: f64,
     mode: Mode,
     live: bool,
 }
@@ -35,11 +33,10 @@ impl Sinks {
     fn write(&mut self, records: &mut Vec<Record>) -> io::Result<()> {
         for record in records.drain(..) {
             if let (Some(pcap), Record::Frame(frame)) = (self.pcap.as_mut(), &record) {
-                let at = frame
-                    .found
-                    .start
-                    .unwrap_or((frame.found.offset as f64 * self.char_us) as u64);
-                pcap.frame(self.epoch_us + at, &rtu_form(self.mode, &frame.found.bytes))?;
+                pcap.frame(
+                    self.epoch_us + frame.at,
+                    &rtu_form(self.mode, &frame.found.bytes),
+                )?;
             }
             self.writer.record(&mut self.out, &record)?;
         }
@@ -118,7 +115,6 @@ pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
         out: output::stdout(),
         pcap,
         epoch_us: if args.input.is_some() { 0 } else { epoch_us },
-        char_us: char_us(&line),
         mode,
         live: args.input.is_none(),
     };

@@ -24,8 +24,7 @@ struct JsonFrame<'a> {
     #[serde(rename = "type")]
     kind: &'static str,
     number: u64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    time: Option<f64>,
+    time: f64,
     #[serde(skip_serializing_if = "Option::is_none")]
     gap: Option<f64>,
     offset: u64,
@@ -41,8 +40,7 @@ struct JsonFrame<'a> {
 struct JsonNoise<'a> {
     #[serde(rename = "type")]
     kind: &'static str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    time: Option<f64>,
+    time: f64,
     offset: u64,
     count: usize,
     bytes: &'a str,
@@ -167,7 +165,7 @@ impl SniffWriter {
                     &JsonFrame {
                         kind: "frame",
                         number: frame.number,
-                        time: frame.found.start.map(seconds),
+                        time: seconds(frame.at),
                         gap: frame.gap.map(seconds),
                         offset: frame.found.offset,
                         bytes: &bytes,
@@ -179,16 +177,14 @@ impl SniffWriter {
             (
                 OutputFormat::Json,
                 Record::Noise {
-                    bytes,
-                    offset,
-                    time,
+                    bytes, offset, at, ..
                 },
             ) => json_line(
                 out,
                 &mut self.line,
                 &JsonNoise {
                     kind: "noise",
-                    time: time.map(seconds),
+                    time: seconds(*at),
                     offset: *offset,
                     count: bytes.len(),
                     bytes: &spaced_hex(&bytes[..bytes.len().min(64)]),
@@ -321,6 +317,7 @@ impl SniffWriter {
                 bytes,
                 offset,
                 time,
+                ..
             } => {
                 let shown = spaced_hex(&bytes[..bytes.len().min(16)]);
                 let more = if bytes.len() > 16 { " ..." } else { "" };

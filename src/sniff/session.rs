@@ -20,7 +20,10 @@ pub enum Record {
     Noise {
         bytes: Vec<u8>,
         offset: u64,
+        /// When the first byte arrived, when known.
         time: Option<u64>,
+        /// `time`, or without timing where the bytes stand at the line's speed.
+        at: u64,
     },
     Unanswered {
         slave: u8,
@@ -33,6 +36,9 @@ pub enum Record {
 pub struct FrameRecord {
     pub number: u64,
     pub found: Found,
+    /// Microseconds from the start of the capture: when the first byte arrived, or, without
+    /// timing, where the frame stands at the line's speed.
+    pub at: u64,
     pub report: FrameReport,
     /// Silence before the frame since the end of the previous one, in microseconds.
     pub gap: Option<u64>,
@@ -174,16 +180,23 @@ impl Session {
                 } => {
                     self.counts.noise_bytes += bytes.len() as u64;
                     if self.filter.is_empty() {
+                        let at = self.at(start, offset);
                         out.push(Record::Noise {
                             bytes,
                             offset,
                             time: start,
+                            at,
                         });
                     }
                 }
                 Event::Frame(found) => self.frame(found, out),
             }
         }
+    }
+
+    /// The time of bytes at `offset`: as they arrived, or at the line's speed.
+    fn at(&self, time: Option<u64>, offset: u64) -> u64 {
+        time.unwrap_or((offset as f64 * self.char_us) as u64)
     }
 
     fn unanswered(&mut self, unanswered: Unanswered, out: &mut Vec<Record>) {
@@ -249,6 +262,7 @@ impl Session {
         if self.filter.shows(report.slave, report.function) {
             out.push(Record::Frame(Box::new(FrameRecord {
                 number: self.numbered,
+                at: self.at(found.start, found.offset),
                 found,
                 report,
                 gap,
