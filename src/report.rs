@@ -342,8 +342,26 @@ pub fn describe_frame(
         Ok(envelope) => envelope,
         Err(error) => return unreadable(mode, bytes, error),
     };
+    let reading = match direction {
+        Some(direction) => match Pdu::decode(&envelope.pdu, direction) {
+            Ok(pdu) => Reading::One(pdu),
+            Err(error) => {
+                let mut report = opened(mode, &envelope);
+                report.kind = kind_of(report.function, direction);
+                report.valid = false;
+                report.error = Some(error.to_string());
+                return with_checksum(report, envelope.checksum);
+            }
+        },
+        None => Reading::infer(&envelope.pdu),
+    };
+    describe_reading(mode, &envelope, reading)
+}
+
+/// What an opened frame carries before its PDU is read.
+fn opened(mode: Mode, envelope: &Envelope) -> FrameReport {
     let function = envelope.pdu.first().copied().unwrap_or_default();
-    let mut report = FrameReport {
+    FrameReport {
         mode: mode.name(),
         kind: Kind::Request,
         slave: envelope.slave,
@@ -356,19 +374,14 @@ pub fn describe_frame(
         checksum: envelope.checksum,
         ambiguous: false,
         alternative: None,
-    };
-    let reading = match direction {
-        Some(direction) => match Pdu::decode(&envelope.pdu, direction) {
-            Ok(pdu) => Reading::One(pdu),
-            Err(error) => {
-                report.kind = kind_of(function, direction);
-                report.valid = false;
-                report.error = Some(error.to_string());
-                return with_checksum(report, envelope.checksum);
-            }
-        },
-        None => Reading::infer(&envelope.pdu),
-    };
+    }
+}
+
+/// Describes a frame whose PDU was already read, so that nothing is parsed twice (the
+/// sniffer reads each PDU once, to pair it, and describes that reading).
+pub fn describe_reading(mode: Mode, envelope: &Envelope, reading: Reading) -> FrameReport {
+    let mut report = opened(mode, envelope);
+    let function = report.function;
     match reading {
         Reading::One(pdu) => (report.kind, report.fields) = describe_pdu(&pdu),
         Reading::Both { request, response } => {

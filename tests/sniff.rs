@@ -540,3 +540,34 @@ fn an_exception_line_names_its_function_and_code() {
     assert!(line.contains("exception 02 illegal data address"), "{line}");
     assert!(text.contains("1 exceptions"), "{text}");
 }
+
+#[test]
+fn a_first_frame_that_reads_both_ways_says_so() {
+    // 8 bytes, function 01, third byte 3: a request for 10 coils, or an answer with 3 bytes
+    // of bits. Nothing before it settles which; the 8-byte answer after it does.
+    let both = rtu(&[0x11, 0x01, 0x03, 0x00, 0x00, 0x0A]);
+    let answer = rtu(&[0x11, 0x01, 0x02, 0xFF, 0x03]);
+    let capture = [both.clone(), answer].concat();
+    let output = mbtool()
+        .args(["sniff", "--json", "--input", "-"])
+        .write_stdin(capture.clone())
+        .output()
+        .unwrap();
+    let lines = json_lines(&output.stdout);
+    assert_eq!(lines[0]["ambiguous"], true);
+    assert_eq!(lines[0]["alternative"]["kind"], "response");
+    assert_eq!(
+        lines[1]["paired"], true,
+        "the answer settles the first frame as a request"
+    );
+    let output = mbtool()
+        .args(["sniff", "--input", "-"])
+        .write_stdin(capture)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        text.lines().next().unwrap_or_default().contains("request?"),
+        "{text}"
+    );
+}

@@ -4,7 +4,7 @@
 //! 8-byte 01/02 frames), and saying so when neither settles it.
 
 use crate::codec::answer::check;
-use crate::codec::{Pdu, Reading, Request};
+use crate::codec::{Pdu, Reading, Request, Response};
 
 /// A request still waiting for its answer.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -24,15 +24,21 @@ pub enum Role {
         pdu: Pdu,
         to: Option<Request>,
     },
-    /// Reads both ways and no pending request settles it.
-    Unsettled,
+    /// Reads both ways, and nothing before it settles which: the first frame of a capture.
+    Unsettled {
+        request: Request,
+        response: Response,
+    },
     /// The PDU breaks its function's layout either way.
-    Malformed,
+    Malformed(Reading),
 }
 
 #[derive(Default)]
 pub struct Pairer {
     pending: Option<Pending>,
+    /// Whether any frame came before: after one, a frame that reads both ways and answers
+    /// nothing pending is the master's next request.
+    seen: bool,
 }
 
 /// A request that got no answer, and how long it waited.
@@ -43,38 +49,41 @@ pub struct Unanswered {
 }
 
 impl Pairer {
-    /// Reads one valid frame; `time` is when it started. A request that was still
-    /// waiting when another came is returned as unanswered.
+    /// Reads one valid frame, its PDU already read; `start` and `end` are the arrival
+    /// times of its first and last byte. A request that was still waiting when another
+    /// came is returned as unanswered.
     pub fn read(
         &mut self,
         slave: u8,
-        pdu_bytes: &[u8],
+        reading: Reading,
         start: Option<u64>,
         end: Option<u64>,
     ) -> (Role, Option<Unanswered>) {
-        let answers_pending = |pdu: &Pdu, pending: &Option<Pending>| {
-            pending
-                .as_ref()
-                .is_some_and(|p| p.slave == slave && check(&p.request, pdu).is_ok())
-        };
-        match Reading::infer(pdu_bytes) {
-            Reading::One(Pdu::Request(request)) => (
-                Role::Request(request.clone()),
-                self.wait_for(slave, request, start, end),
-            ),
+        let first = !std::mem::replace(&mut self.seen, true);
+        match reading {
+            Reading::One(Pdu::Request(request)) => {
+                let unanswered = self.wait_for(slave, request.clone(), start, end);
+                (Role::Request(request), unanswered)
+            }
             Reading::One(pdu) => (self.answer(pdu, slave), None),
             Reading::Both { request, response } => {
                 let response = Pdu::Response(response);
-                if answers_pending(&response, &self.pending) {
-                    (self.answer(response, slave), None)
-                } else {
-                    (
-                        Role::Request(request.clone()),
-                        self.wait_for(slave, request, start, end),
-                    )
+                let answers_pending = self
+                    .pending
+                    .as_ref()
+                    .is_some_and(|p| p.slave == slave && check(&p.request, &response).is_ok());
+                if answers_pending {
+                    return (self.answer(response, slave), None);
+                }
+                let unanswered = self.wait_for(slave, request.clone(), start, end);
+                match (first, response) {
+                    (true, Pdu::Response(response)) => {
+                        (Role::Unsettled { request, response }, unanswered)
+                    }
+                    _ => (Role::Request(request), unanswered),
                 }
             }
-            Reading::Neither { .. } => (Role::Malformed, None),
+            neither @ Reading::Neither { .. } => (Role::Malformed(neither), None),
         }
     }
 
@@ -133,24 +142,28 @@ mod tests {
     fn an_echo_is_the_answer_of_the_request_before_it() {
         let mut pairer = Pairer::default();
         let write = [0x06, 0x00, 0x01, 0x00, 0x03];
-        let (first, _) = pairer.read(17, &write, Some(0), Some(1));
-        assert!(matches!(first, Role::Request(_)));
-        let (second, _) = pairer.read(17, &write, Some(2), Some(3));
+        let (first, _) = pairer.read(17, Reading::infer(&write), Some(0), Some(1));
+        // Nothing came before it: it could be either.
+        assert!(matches!(first, Role::Unsettled { .. }));
+        let (second, _) = pairer.read(17, Reading::infer(&write), Some(2), Some(3));
         assert!(matches!(second, Role::Answer { to: Some(_), .. }));
     }
 
     #[test]
     fn an_eight_byte_coil_frame_is_settled_by_the_pending_request() {
         let mut pairer = Pairer::default();
-        // Read 10 coils at 0x0300: its answer 01 03 00 00 0A is 8 bytes on the wire too.
+        let exception = [0x83, 0x02];
+        pairer.read(17, Reading::infer(&exception), None, None);
+        // Read 10 coils at 0x0300: the bytes 01 03 00 00 0A also read as an answer with
+        // 3 bytes of bits. After another frame, it is the master's next request.
         let request = [0x01, 0x03, 0x00, 0x00, 0x0A];
-        let (role, _) = pairer.read(17, &request, None, None);
+        let (role, _) = pairer.read(17, Reading::infer(&request), None, None);
         assert!(matches!(
             role,
             Role::Request(Request::ReadCoils { quantity: 10, .. })
         ));
         let answer = [0x01, 0x02, 0xFF, 0x03];
-        let (role, _) = pairer.read(17, &answer, None, None);
+        let (role, _) = pairer.read(17, Reading::infer(&answer), None, None);
         assert!(matches!(role, Role::Answer { to: Some(_), .. }));
     }
 
@@ -158,8 +171,8 @@ mod tests {
     fn a_request_after_an_unanswered_one_reports_it() {
         let mut pairer = Pairer::default();
         let read = [0x03, 0x00, 0x6B, 0x00, 0x03];
-        pairer.read(17, &read, Some(0), Some(4000));
-        let (_, unanswered) = pairer.read(17, &read, Some(104_000), Some(108_000));
+        pairer.read(17, Reading::infer(&read), Some(0), Some(4000));
+        let (_, unanswered) = pairer.read(17, Reading::infer(&read), Some(104_000), Some(108_000));
         assert_eq!(unanswered.map(|u| u.waited), Some(Some(100_000)));
     }
 }

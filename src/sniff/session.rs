@@ -8,9 +8,8 @@ use serde::Serialize;
 use super::framer::{Broken, Event, Found, Framer};
 use super::pairing::{Pairer, Role, Unanswered};
 use crate::address::{reference, Table};
-use crate::codec::Direction;
-use crate::codec::{Envelope, Mode, Pdu, Request};
-use crate::report::{describe_frame, FrameReport, Kind, Values};
+use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
+use crate::report::{describe_frame, describe_reading, FrameReport, Kind, Values};
 
 /// What a session reports, in order.
 #[derive(Clone, Debug, PartialEq)]
@@ -275,30 +274,31 @@ impl Session {
         let Ok(envelope) = Envelope::open(self.mode, &found.bytes) else {
             return (describe_frame(&found.bytes, Some(self.mode), None), false);
         };
-        let (role, unanswered) =
-            self.pairer
-                .read(envelope.slave, &envelope.pdu, found.start, found.end);
+        // The PDU is read once: to pair it, and then to describe that reading.
+        let reading = Reading::infer(&envelope.pdu);
+        let (role, unanswered) = self
+            .pairer
+            .read(envelope.slave, reading, found.start, found.end);
         if let Some(unanswered) = unanswered {
             self.unanswered(unanswered, out);
         }
+        let describe = |reading| describe_reading(self.mode, &envelope, reading);
         match role {
-            Role::Request(_) => (
-                describe_frame(&found.bytes, Some(self.mode), Some(Direction::Request)),
-                false,
-            ),
+            Role::Request(request) => (describe(Reading::One(Pdu::Request(request))), false),
             Role::Answer { pdu, to } => {
-                let mut report =
-                    describe_frame(&found.bytes, Some(self.mode), Some(Direction::Response));
-                if let Some(request) = &to {
-                    locate(&mut report, request, &pdu);
+                let answer_to_read = matches!(pdu, Pdu::Response(_));
+                let mut report = describe(Reading::One(pdu));
+                if let (Some(request), true) = (&to, answer_to_read) {
+                    locate(&mut report, request);
                 }
                 (report, to.is_some())
             }
-            Role::Unsettled | Role::Malformed => {
-                if matches!(role, Role::Malformed) {
-                    self.counts.malformed += 1;
-                }
-                (describe_frame(&found.bytes, Some(self.mode), None), false)
+            Role::Unsettled { request, response } => {
+                (describe(Reading::Both { request, response }), false)
+            }
+            Role::Malformed(reading) => {
+                self.counts.malformed += 1;
+                (describe(reading), false)
             }
         }
     }
@@ -306,7 +306,7 @@ impl Session {
 
 /// Gives a read answer the addresses of the request it answers, and cuts bit answers to
 /// the quantity asked.
-fn locate(report: &mut FrameReport, request: &Request, pdu: &Pdu) {
+fn locate(report: &mut FrameReport, request: &Request) {
     let (address, quantity) = match request {
         Request::ReadCoils { address, quantity }
         | Request::ReadDiscreteInputs { address, quantity }
@@ -319,9 +319,6 @@ fn locate(report: &mut FrameReport, request: &Request, pdu: &Pdu) {
         } => (*read_address, *read_quantity),
         _ => return,
     };
-    if !matches!(pdu, Pdu::Response(_)) {
-        return;
-    }
     let table = Table::of_function(request.function()).unwrap_or(Table::HoldingRegisters);
     report.fields.address = Some(address);
     report.fields.reference = Some(reference(table, address));
