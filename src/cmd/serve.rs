@@ -21,19 +21,14 @@ use mbtool::transport::Endpoint;
 /// The slave id of the manuals' examples, answered when no --slave is given.
 const DEFAULT_SLAVE: u8 = 17;
 
-/// `tcp://:PORT` listens on 127.0.0.1: nothing is exposed unless asked for.
+/// The port to serve on; `tcp://:PORT` listens on 127.0.0.1.
 fn endpoint(cli: &Cli) -> Result<Endpoint, Error> {
     let port = cli.connection.port.as_deref().ok_or_else(|| {
         Error::usage(
             "serve needs --port: a serial device, or tcp://127.0.0.1:5020 to listen on TCP",
         )
     })?;
-    let port = port.replacen("tcp://:", "tcp://127.0.0.1:", 1).replacen(
-        "rtu+tcp://:",
-        "rtu+tcp://127.0.0.1:",
-        1,
-    );
-    match Endpoint::parse(&port).map_err(Error::Usage)? {
+    match Endpoint::parse_listen(port).map_err(Error::Usage)? {
         Endpoint::Sim => Err(Error::usage(
             "--port sim is the built-in slave for the master commands; serve needs a serial device or tcp://ADDRESS:PORT",
         )),

@@ -34,7 +34,15 @@ impl fmt::Display for Endpoint {
 /// The standard Modbus TCP port.
 pub const MODBUS_TCP_PORT: u16 = 502;
 
-fn host_port(rest: &str, default_port: Option<u16>, scheme: &str) -> Result<(String, u16), String> {
+/// Where a listener binds when its address leaves out the host: this machine only.
+pub const LISTEN_HOST: &str = "127.0.0.1";
+
+fn host_port(
+    rest: &str,
+    default_port: Option<u16>,
+    scheme: &str,
+    listening: bool,
+) -> Result<(String, u16), String> {
     // [v6]:port, host:port, or host alone.
     let (host, port) = if let Some(v6) = rest.strip_prefix('[') {
         let (host, after) = v6
@@ -47,11 +55,15 @@ fn host_port(rest: &str, default_port: Option<u16>, scheme: &str) -> Result<(Str
             None => (rest, None),
         }
     };
-    if host.is_empty() {
-        return Err(format!(
-            "{scheme}{rest}: give a host, as in {scheme}127.0.0.1:502"
-        ));
-    }
+    let host = match host {
+        "" if listening => LISTEN_HOST,
+        "" => {
+            return Err(format!(
+                "{scheme}{rest}: give a host, as in {scheme}127.0.0.1:502"
+            ))
+        }
+        host => host,
+    };
     let port = match (port, default_port) {
         (Some(port), _) => port
             .parse::<u16>()
@@ -69,17 +81,28 @@ fn host_port(rest: &str, default_port: Option<u16>, scheme: &str) -> Result<(Str
 }
 
 impl Endpoint {
+    /// A port to connect to.
     pub fn parse(text: &str) -> Result<Endpoint, String> {
+        Self::parse_as(text, false)
+    }
+
+    /// A port to listen on: `tcp://:5020` binds 127.0.0.1, so nothing is exposed to
+    /// other machines unless an address says so.
+    pub fn parse_listen(text: &str) -> Result<Endpoint, String> {
+        Self::parse_as(text, true)
+    }
+
+    fn parse_as(text: &str, listening: bool) -> Result<Endpoint, String> {
         let text = text.trim();
         if text.eq_ignore_ascii_case("sim") {
             return Ok(Endpoint::Sim);
         }
         if let Some(rest) = text.strip_prefix("tcp://") {
-            let (host, port) = host_port(rest, Some(MODBUS_TCP_PORT), "tcp://")?;
+            let (host, port) = host_port(rest, Some(MODBUS_TCP_PORT), "tcp://", listening)?;
             return Ok(Endpoint::Tcp { host, port });
         }
         if let Some(rest) = text.strip_prefix("rtu+tcp://") {
-            let (host, port) = host_port(rest, None, "rtu+tcp://")?;
+            let (host, port) = host_port(rest, None, "rtu+tcp://", listening)?;
             return Ok(Endpoint::RtuOverTcp { host, port });
         }
         if text.contains("://") {
@@ -127,6 +150,14 @@ mod tests {
             })
         );
         assert!(Endpoint::parse("rtu+tcp://gw").is_err());
+        assert!(Endpoint::parse("tcp://:5020").is_err());
+        assert_eq!(
+            Endpoint::parse_listen("tcp://:5020"),
+            Ok(Endpoint::Tcp {
+                host: "127.0.0.1".into(),
+                port: 5020
+            })
+        );
         assert!(Endpoint::parse("udp://x").is_err());
         assert!(Endpoint::parse("tcp://x:99999").is_err());
     }
