@@ -123,3 +123,24 @@ fn polling_counts_and_summarises() {
     let (code, out) = run("write-register 17 400002 3 --poll 1s");
     assert_eq!(code, 2, "{out}");
 }
+
+#[test]
+fn wide_values_carry_their_registers_in_json_and_csv() {
+    // 400108-400109 hold 555 and 0: as a u32 (ABCD) that is 555 << 16.
+    let (code, out) = run("read-holding 17 400108 --type u32 --json");
+    assert_eq!(code, 0, "{out}");
+    let json: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(
+        json["values"][0],
+        serde_json::json!({"address": 107, "ref": "400108", "value": 555u64 << 16, "registers": [555, 0]})
+    );
+    // 16-bit values carry no registers key.
+    let (_, out) = run("read-holding 17 400108 --json");
+    assert!(!out.contains("registers"), "{out}");
+    let (code, out) = run("read-holding 17 400108 2 -o csv");
+    assert_eq!(code, 0);
+    assert_eq!(
+        out,
+        "ref,address,hex,value\n400108,107,022B,555\n400109,108,0000,0\n"
+    );
+}
