@@ -44,9 +44,15 @@ fn one_line_usage_error(rendered: &str) -> String {
     let mut lines = rendered.lines().map(str::trim).filter(|l| !l.is_empty());
     let first = lines.next().unwrap_or("bad command line");
     let mut message = first.strip_prefix("error: ").unwrap_or(first).to_string();
-    for tip in lines.filter_map(|l| l.strip_prefix("tip: ")) {
-        message.push_str("; ");
-        message.push_str(tip);
+    // What clap says after its first line that helps: tips, and the values allowed.
+    for line in lines {
+        let help = line
+            .strip_prefix("tip: ")
+            .or_else(|| line.strip_prefix('[').and_then(|l| l.strip_suffix(']')));
+        if let Some(help) = help {
+            message.push_str("; ");
+            message.push_str(help);
+        }
     }
     let usage = rendered
         .lines()

@@ -211,6 +211,10 @@ fn usage_errors_are_one_line() {
     refused("encode read-holding", "required");
     refused("bogus", "unrecognized subcommand");
     refused("decode --output nope", "invalid value");
+    refused(
+        "encode write 17 400001 1 --function 7",
+        "possible values: 5, 6, 15, 16",
+    );
 }
 
 #[test]
