@@ -3,7 +3,7 @@
 //! cargo bench --bench codec
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
-use mbtool::codec::stream::StreamDecoder;
+use mbtool::codec::framing::Framer;
 use mbtool::codec::{Direction, Frame, Mode, Pdu, Request};
 use mbtool::report::describe_frame;
 
@@ -50,13 +50,16 @@ fn codec(c: &mut Criterion) {
         })
     });
 
-    let request = FRAMES[4];
-    let decoder = StreamDecoder::new(Mode::Rtu, Direction::Request);
-    group.bench_function("stream-decode read-holding request x12", |b| {
+    // The worked frames glued into one stream, as a sniffer or a slave receives them.
+    let stream: Vec<u8> = FRAMES.concat();
+    group.bench_function("frame a stream of the 12 worked frames", |b| {
+        let mut events = Vec::with_capacity(FRAMES.len());
         b.iter(|| {
-            for _ in FRAMES {
-                std::hint::black_box(decoder.decode(request));
-            }
+            let mut framer = Framer::new(Mode::Rtu, 573.0, 2005);
+            framer.push(&stream, &mut events);
+            framer.finish(&mut events);
+            std::hint::black_box(events.len());
+            events.clear();
         })
     });
 

@@ -81,15 +81,17 @@ pub fn master(cli: &Cli) -> Result<Master> {
     let endpoint = endpoint(cli)?;
     let mode = mode(cli, &endpoint)?;
     let transport = open(cli, &endpoint, mode)?;
-    let gap = cli
-        .connection
-        .frame_gap
-        .unwrap_or_else(|| match (mode, &endpoint) {
-            (Mode::Rtu, Endpoint::Serial(_) | Endpoint::RtuOverTcp { .. }) => {
-                line_settings(cli, mode).frame_gap()
-            }
-            _ => std::time::Duration::ZERO,
-        });
+    let serial_line = matches!(endpoint, Endpoint::Serial(_) | Endpoint::RtuOverTcp { .. });
+    let line = line_settings(cli, mode);
+    let gap = cli.connection.frame_gap.unwrap_or_else(|| match mode {
+        Mode::Rtu if serial_line => line.frame_gap(),
+        _ => std::time::Duration::ZERO,
+    });
+    let (character, silence) = if serial_line {
+        (line.character_time(), line.frame_gap())
+    } else {
+        (std::time::Duration::ZERO, std::time::Duration::ZERO)
+    };
     Ok(Master::new(
         transport,
         MasterOptions {
@@ -97,6 +99,8 @@ pub fn master(cli: &Cli) -> Result<Master> {
             timeout: cli.connection.timeout,
             retries: cli.connection.retries,
             frame_gap: gap,
+            character,
+            silence,
             turnaround: BROADCAST_TURNAROUND,
         },
     ))

@@ -6,7 +6,7 @@ use std::time::{Duration, Instant};
 use thiserror::Error;
 
 use crate::codec::answer::check;
-use crate::codec::stream::{Status, StreamDecoder};
+use crate::codec::framing::{Event, Framer};
 use crate::codec::{Direction, Exception, Frame, Mode, Pdu, Request, Response};
 use crate::duration::show;
 use crate::transport::Transport;
@@ -15,13 +15,17 @@ use crate::transport::Transport;
 #[derive(Clone, Copy, Debug)]
 pub struct MasterOptions {
     pub mode: Mode,
-    /// For the whole answer, from the end of sending.
+    /// For the whole answer, from the end of sending; under a millisecond counts as one.
     pub timeout: Duration,
     /// After a timeout or a bad answer; never after an exception.
     pub retries: u32,
     /// Silence kept between transactions on a serial line, counted from the last byte
     /// received.
     pub frame_gap: Duration,
+    /// One character's time on a serial line (zero over TCP), and the silence that ends a
+    /// frame there: how the answer is framed.
+    pub character: Duration,
+    pub silence: Duration,
     /// How long a broadcast waits for the slaves to act before the next request.
     pub turnaround: Duration,
 }
@@ -60,27 +64,50 @@ pub type Tracer = Box<dyn FnMut(Traffic, &[u8]) + Send>;
 /// noise, say) before giving up: longer than a USB adapter's 16 ms latency timer.
 const SETTLE: Duration = Duration::from_millis(50);
 
+/// The shortest timeout honoured: below it a deadline would pass before a byte could come.
+const MIN_TIMEOUT: Duration = Duration::from_millis(1);
+
 pub struct Master {
     transport: Box<dyn Transport>,
     options: MasterOptions,
     last_traffic: Option<Instant>,
     transaction: u16,
     tracer: Option<Tracer>,
-    buffer: Vec<u8>,
+    /// Frames the answers; over TCP it keeps what arrived after an answer (a duplicate,
+    /// say) for the next transaction to pass over.
+    framer: Framer,
+    /// When the framer's clock started: it takes times in microseconds from here.
+    started: Instant,
     /// The last transaction ended on a whole answer, so nothing stale can be waiting
-    /// on a TCP connection.
+    /// on a TCP connection but whole frames with other transaction ids.
     in_step: bool,
+}
+
+/// What the bytes received so far came to.
+#[derive(Default)]
+struct Heard {
+    answer: Option<Pdu>,
+    /// What was wrong with the first frame that was not the answer.
+    problem: Option<String>,
+    /// Bytes of whole frames that belong to other transactions: not this one's fault.
+    stale_bytes: usize,
 }
 
 impl Master {
     pub fn new(transport: Box<dyn Transport>, options: MasterOptions) -> Self {
+        let framer = Framer::new(
+            options.mode,
+            options.character.as_secs_f64() * 1e6,
+            options.silence.as_micros() as u64,
+        );
         Self {
             transport,
             options,
             last_traffic: None,
             transaction: 0,
             tracer: None,
-            buffer: Vec::with_capacity(512),
+            framer,
+            started: Instant::now(),
             in_step: false,
         }
     }
@@ -128,6 +155,7 @@ impl Master {
         // follow a transaction that failed (and would be told by its transaction id).
         if self.transport.is_serial_line() || !self.in_step {
             self.transport.discard_input()?;
+            self.framer.clear();
         }
         self.in_step = false;
         self.transaction = self.transaction.wrapping_add(1);
@@ -139,6 +167,9 @@ impl Master {
         };
         let bytes = frame.encode()?;
         self.note(Traffic::Sent, &bytes);
+        if self.options.mode != Mode::Tcp {
+            self.framer.await_answer(slave, request.function());
+        }
         self.transport.send(&bytes)?;
         self.last_traffic = Some(Instant::now());
         if self.is_broadcast(slave) {
@@ -158,7 +189,8 @@ impl Master {
     /// Whether a whole, valid frame is the answer to this request.
     fn belongs(&self, frame: &Frame, slave: u8, request: &Request) -> Result<(), Option<String>> {
         if self.options.mode == Mode::Tcp && frame.transaction != self.transaction {
-            // A late answer to an earlier request: not ours, and no fault of this one.
+            // A late or repeated answer to an earlier request: not ours, and no fault of
+            // this one.
             return Err(None);
         }
         if frame.slave != slave {
@@ -167,85 +199,117 @@ impl Master {
         check(request, &frame.pdu).map_err(|mismatch| Some(mismatch.to_string()))
     }
 
-    fn await_answer(&mut self, slave: u8, request: &Request) -> Result<Pdu, MasterError> {
-        let decoder = StreamDecoder::new(self.options.mode, Direction::Response);
-        let deadline = Instant::now() + self.options.timeout;
-        let mut buffer = std::mem::take(&mut self.buffer);
-        buffer.clear();
-        let mut problem: Option<String> = None;
-        let outcome = loop {
-            // The answer may stand after noise: look for it at every offset.
-            let mut offset = 0;
-            let mut found = None;
-            while offset < buffer.len() {
-                match decoder.decode(&buffer[offset..]) {
-                    Status::Complete { frame, len } => match self.belongs(&frame, slave, request) {
-                        Ok(()) => {
-                            found = Some(frame.pdu);
-                            break;
+    /// Reads what the framer found, in order, until the answer.
+    fn hear(&self, events: &mut Vec<Event>, heard: &mut Heard, slave: u8, request: &Request) {
+        for event in events.drain(..) {
+            if heard.answer.is_some() {
+                // Whatever follows the answer is for later transactions.
+                continue;
+            }
+            match event {
+                Event::Frame(found) => {
+                    match Frame::decode(self.options.mode, &found.bytes, Direction::Response) {
+                        Ok(frame) => match self.belongs(&frame, slave, request) {
+                            Ok(()) => heard.answer = Some(frame.pdu),
+                            Err(None) => heard.stale_bytes += found.bytes.len(),
+                            Err(Some(reason)) => {
+                                heard.problem.get_or_insert(reason);
+                            }
+                        },
+                        Err(error) => {
+                            heard.problem.get_or_insert(error.to_string());
                         }
-                        Err(reason) => {
-                            problem = problem.or(reason);
-                            offset += len;
-                        }
-                    },
-                    Status::Invalid { error, .. } => {
-                        // What is wrong with the answer is said by its first bytes; later
-                        // offsets are only attempts to find it behind noise.
-                        if offset == 0 {
-                            problem = problem.or(Some(error.to_string()));
-                        }
-                        if self.options.mode == Mode::Tcp {
-                            // A TCP stream that lost its framing cannot be trusted further.
-                            break;
-                        }
-                        offset += 1;
                     }
-                    Status::Partial => offset += 1,
                 }
+                Event::Noise(noise) if self.options.mode == Mode::Tcp => {
+                    heard.problem.get_or_insert(format!(
+                        "{} bytes that are no Modbus TCP frame ({})",
+                        noise.len,
+                        crate::report::spaced_hex(&noise.kept[..noise.kept.len().min(12)])
+                    ));
+                }
+                // Noise on a serial line: the answer may still stand after it.
+                Event::Noise(_) => {}
             }
-            if let Some(pdu) = found {
-                break Ok(pdu);
+        }
+    }
+
+    fn await_answer(&mut self, slave: u8, request: &Request) -> Result<Pdu, MasterError> {
+        let deadline = Instant::now() + self.options.timeout.max(MIN_TIMEOUT);
+        let timed = self.options.mode != Mode::Tcp;
+        let mut received = Vec::new();
+        let mut chunk = Vec::with_capacity(512);
+        let mut events = Vec::new();
+        let mut heard = Heard::default();
+        let outcome = loop {
+            self.hear(&mut events, &mut heard, slave, request);
+            if heard.answer.is_some() {
+                break Ok(());
             }
-            if problem.is_some() && self.options.mode == Mode::Tcp {
+            if self.framer.is_lost() {
                 break Err(None);
             }
-            let wait_until = match problem {
+            // After a frame that is wrong, wait a little for the right one (behind noise,
+            // say) before giving up.
+            let wait_until = match heard.problem {
                 Some(_) => deadline.min(Instant::now() + SETTLE),
                 None => deadline,
             };
-            match self.transport.receive(&mut buffer, wait_until) {
-                Ok(0) => break Err(None),
-                Ok(_) => self.last_traffic = Some(Instant::now()),
+            chunk.clear();
+            match self.transport.receive(&mut chunk, wait_until) {
+                Ok(0) => {
+                    // No more is awaited: what is held is decided now.
+                    self.framer.finish(&mut events);
+                    self.hear(&mut events, &mut heard, slave, request);
+                    break if heard.answer.is_some() {
+                        Ok(())
+                    } else {
+                        Err(None)
+                    };
+                }
+                Ok(_) => {
+                    self.last_traffic = Some(Instant::now());
+                    received.extend_from_slice(&chunk);
+                    if timed {
+                        let now = self.started.elapsed().as_micros() as u64;
+                        self.framer.push_at(&chunk, now, &mut events);
+                    } else {
+                        self.framer.push(&chunk, &mut events);
+                    }
+                }
                 Err(error) => break Err(Some(error)),
             }
         };
-        if !buffer.is_empty() {
-            self.note(Traffic::Received, &buffer);
+        if !received.is_empty() {
+            self.note(Traffic::Received, &received);
         }
-        let received = buffer.len();
-        let shown = crate::report::spaced_hex(&buffer[..received.min(32)]);
-        self.buffer = buffer;
-        match outcome {
-            Ok(pdu) => {
+        match (outcome, heard.answer) {
+            (Ok(()), Some(pdu)) => {
                 self.in_step = true;
                 Ok(pdu)
             }
-            Err(Some(io_error)) => Err(MasterError::Io(io_error)),
-            Err(None) => Err(match problem {
-                Some(reason) => MasterError::BadFrame { slave, reason },
-                None if received > 0 => MasterError::BadFrame {
-                    slave,
-                    reason: format!(
-                        "incomplete answer: {received} bytes ({shown}{}) and then silence",
-                        if received > 32 { " ..." } else { "" }
-                    ),
-                },
-                None => MasterError::Timeout {
-                    slave,
-                    timeout: self.options.timeout,
-                },
-            }),
+            (Err(Some(io_error)), _) => Err(MasterError::Io(io_error)),
+            _ => {
+                let unexplained = received.len().saturating_sub(heard.stale_bytes);
+                Err(match heard.problem {
+                    Some(reason) => MasterError::BadFrame { slave, reason },
+                    None if unexplained > 0 => {
+                        let shown = crate::report::spaced_hex(&received[..received.len().min(32)]);
+                        MasterError::BadFrame {
+                            slave,
+                            reason: format!(
+                                "incomplete answer: {} bytes ({shown}{}) and then silence",
+                                received.len(),
+                                if received.len() > 32 { " ..." } else { "" }
+                            ),
+                        }
+                    }
+                    None => MasterError::Timeout {
+                        slave,
+                        timeout: self.options.timeout,
+                    },
+                })
+            }
         }
     }
 }

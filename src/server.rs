@@ -2,13 +2,13 @@
 //! slave's data model and the faults it was told to make; every request is logged.
 
 use std::io;
-use std::net::TcpListener;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::net::{Shutdown, TcpListener, TcpStream};
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
-use std::time::{Duration, Instant};
+use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 
 use crate::codec::adu::{opaque_request, wrap};
-use crate::codec::stream::{Status, StreamDecoder};
+use crate::codec::framing::{Event, Found, Framer, ASCII_CHARACTER_TIMEOUT_US};
 use crate::codec::{Direction, Exception, ExceptionCode, Frame, FrameError, Mode, Pdu, Request};
 use crate::slave::faults::Faults;
 use crate::slave::Slave;
@@ -40,8 +40,12 @@ pub type Logger = Arc<dyn Fn(&LogEntry) + Send + Sync>;
 
 /// A TCP client that sends nothing for this long is dropped.
 pub const CLIENT_IDLE: Duration = Duration::from_secs(60);
-/// More clients than this at once are turned away.
+/// At most this many clients at once; a new one takes the place of the one silent the
+/// longest.
 pub const MAX_CLIENTS: usize = 64;
+/// A client that has not taken its answers within this time is dropped: it holds a
+/// thread and the answers that wait for it.
+pub const WRITE_DEADLINE: Duration = Duration::from_secs(5);
 
 pub struct Server {
     slave: Mutex<Slave>,
@@ -149,93 +153,105 @@ impl Server {
         Some(bytes)
     }
 
-    /// Answers the requests that come over `transport` until it fails, closes, or (`idle`)
-    /// stays silent too long. Over TCP a frame that cannot be read ends the connection; on
-    /// a serial line the decoder moves on a byte and looks again.
+    /// Answers the requests that come over `transport` until it fails or closes, or (a
+    /// TCP client) stays silent too long. Bytes are framed as every receiver of mbtool
+    /// frames them: on a serial line noise and other slaves' traffic are passed over and
+    /// silence ends a frame; over TCP the MBAP length frames, and what is not Modbus TCP
+    /// ends the connection.
     pub fn serve_stream(
         &self,
         transport: &mut dyn Transport,
         peer: &str,
-        idle: Option<Duration>,
+        link: &Link,
         rng: &mut fastrand::Rng,
     ) -> io::Result<()> {
-        let decoder = StreamDecoder::new(self.mode, Direction::Request);
-        let mut buffer = Vec::with_capacity(1024);
+        let (character, silence) = match link {
+            Link::Serial { character, silence } => (*character, *silence),
+            Link::Tcp { .. } => (Duration::ZERO, Duration::ZERO),
+        };
+        let mut framer = Framer::new(
+            self.mode,
+            character.as_secs_f64() * 1e6,
+            silence.as_micros() as u64,
+        );
+        // What ends a frame on this line: 3.5 characters in RTU, a second in ASCII.
+        let frame_end = match self.mode {
+            Mode::Ascii => Duration::from_micros(ASCII_CHARACTER_TIMEOUT_US),
+            _ => silence + character,
+        };
+        let started = Instant::now();
+        let mut chunk = Vec::with_capacity(512);
+        let mut events = Vec::new();
+        // Something waits for the silence after the last byte to be decided.
+        let mut undecided = false;
         loop {
-            let mut offset = 0;
-            while offset < buffer.len() {
-                match decoder.decode(&buffer[offset..]) {
-                    Status::Complete { frame, len } => {
-                        offset += len;
-                        if let Pdu::Request(request) = &frame.pdu {
-                            if let Some(answer) = self.respond(&frame, request, peer, rng) {
-                                transport.send(&answer)?;
-                            }
-                        }
-                    }
-                    Status::Invalid {
-                        error: FrameError::Pdu(_),
-                        len,
-                    } => {
-                        // A sound frame with a bad PDU: answered with an exception.
-                        let bytes = &buffer[offset..offset + len];
-                        offset += len;
-                        if let Ok(frame) = opaque_request(self.mode, bytes) {
+            for event in events.drain(..) {
+                match event {
+                    Event::Frame(found) => {
+                        if let Some(frame) = request_in(self.mode, &found) {
                             if let Pdu::Request(request) = &frame.pdu {
                                 if let Some(answer) = self.respond(&frame, request, peer, rng) {
                                     transport.send(&answer)?;
+                                    framer.answered();
                                 }
                             }
                         }
                     }
-                    Status::Invalid { error, len } => {
-                        if self.mode == Mode::Tcp {
-                            return Err(io::Error::new(
-                                io::ErrorKind::InvalidData,
-                                format!("{peer} sent what is not Modbus TCP ({error}): connection closed"),
-                            ));
-                        }
-                        // Noise or a broken frame: resynchronise.
-                        offset += if self.mode == Mode::Ascii {
-                            len.max(1)
-                        } else {
-                            1
-                        };
+                    Event::Noise(noise) if self.mode == Mode::Tcp => {
+                        return Err(io::Error::new(
+                            io::ErrorKind::InvalidData,
+                            format!(
+                                "{peer} sent what is not Modbus TCP ({}): connection closed",
+                                crate::report::spaced_hex(&noise.kept[..noise.kept.len().min(12)])
+                            ),
+                        ));
                     }
-                    Status::Partial => break,
+                    // Noise on a serial line: the next frame may stand right after it.
+                    Event::Noise(_) => {}
                 }
             }
-            buffer.drain(..offset.min(buffer.len()));
-            let wait = idle.unwrap_or(Duration::from_secs(3600));
-            // A partial frame followed by silence was broken off: forget it.
-            let deadline = if buffer.is_empty() {
-                Instant::now() + wait
-            } else {
-                Instant::now() + Duration::from_millis(100).min(wait)
+            let deadline = match link {
+                Link::Serial { .. } if undecided => Instant::now() + frame_end,
+                Link::Serial { .. } => Instant::now() + Duration::from_secs(3600),
+                Link::Tcp { idle, .. } => Instant::now() + *idle,
             };
-            match transport.receive(&mut buffer, deadline)? {
-                0 if !buffer.is_empty() => buffer.clear(),
-                0 if idle.is_some() => {
+            chunk.clear();
+            let received = transport.receive(&mut chunk, deadline)?;
+            let now = started.elapsed().as_micros() as u64;
+            match (received, link) {
+                (0, Link::Serial { .. }) => {
+                    framer.idle(now, &mut events);
+                    undecided = false;
+                }
+                (0, Link::Tcp { idle, .. }) => {
                     return Err(io::Error::new(
                         io::ErrorKind::TimedOut,
                         format!(
                             "{peer} sent nothing for {} s: connection closed",
-                            wait.as_secs()
+                            idle.as_secs()
                         ),
                     ))
                 }
-                _ => {}
+                (_, Link::Serial { .. }) => {
+                    framer.push_at(&chunk, now, &mut events);
+                    undecided = true;
+                }
+                (_, Link::Tcp { activity, .. }) => {
+                    activity.store(now_ms(), Ordering::Relaxed);
+                    framer.push(&chunk, &mut events);
+                }
             }
         }
     }
 
-    /// Accepts TCP clients, each served on its own thread so that none can hold up another.
+    /// Accepts TCP clients, each served on its own thread so that none can hold up
+    /// another. When all places are taken, the client silent the longest gives way.
     pub fn serve_tcp(
         self: Arc<Self>,
         listener: TcpListener,
         on_error: Arc<dyn Fn(io::Error) + Send + Sync>,
     ) -> io::Result<()> {
-        let clients = Arc::new(AtomicUsize::new(0));
+        let clients: Arc<Mutex<Vec<Client>>> = Arc::new(Mutex::new(Vec::new()));
         for (number, stream) in listener.incoming().enumerate() {
             let stream = match stream {
                 Ok(stream) => stream,
@@ -244,32 +260,137 @@ impl Server {
                     continue;
                 }
             };
-            if clients.load(Ordering::SeqCst) >= MAX_CLIENTS {
-                on_error(io::Error::other(format!(
-                    "more than {MAX_CLIENTS} clients: one turned away"
-                )));
-                continue;
-            }
             let peer = stream
                 .peer_addr()
                 .map_or_else(|_| "?".to_string(), |a| a.to_string());
+            let activity = Arc::new(AtomicU64::new(now_ms()));
+            let registered = stream.try_clone().map(|handle| Client {
+                number,
+                handle,
+                activity: Arc::clone(&activity),
+            });
+            match registered {
+                Ok(client) => make_room_and_add(&clients, client, &on_error),
+                Err(error) => {
+                    on_error(error);
+                    continue;
+                }
+            }
             let server = Arc::clone(&self);
             let (clients, on_error) = (Arc::clone(&clients), Arc::clone(&on_error));
-            clients.fetch_add(1, Ordering::SeqCst);
             std::thread::spawn(move || {
                 let mut rng = fastrand::Rng::with_seed(server.seed.wrapping_add(number as u64));
-                let served =
-                    Tcp::from_stream(stream, server.mode != Mode::Tcp).and_then(|mut transport| {
-                        server.serve_stream(&mut transport, &peer, Some(CLIENT_IDLE), &mut rng)
+                let link = Link::Tcp {
+                    idle: CLIENT_IDLE,
+                    activity,
+                };
+                // A client that does not read its answers is dropped, not waited for.
+                let served = stream
+                    .set_write_timeout(Some(WRITE_DEADLINE))
+                    .and_then(|()| Tcp::from_stream(stream, server.mode != Mode::Tcp))
+                    .and_then(|mut transport| {
+                        server.serve_stream(&mut transport, &peer, &link, &mut rng)
                     });
                 if let Err(error) = served {
-                    if error.kind() != io::ErrorKind::ConnectionAborted {
-                        on_error(error);
+                    let quiet = matches!(
+                        error.kind(),
+                        io::ErrorKind::ConnectionAborted
+                            | io::ErrorKind::ConnectionReset
+                            | io::ErrorKind::NotConnected
+                    );
+                    if !quiet {
+                        on_error(match error.kind() {
+                            io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut
+                                if error.get_ref().is_none() =>
+                            {
+                                io::Error::other(format!(
+                                    "{peer} did not read its answers for {} s: connection closed",
+                                    WRITE_DEADLINE.as_secs()
+                                ))
+                            }
+                            _ => error,
+                        });
                     }
                 }
-                clients.fetch_sub(1, Ordering::SeqCst);
+                lock(&clients).retain(|c| c.number != number);
             });
         }
         Ok(())
+    }
+}
+
+/// How a stream reaches the server.
+pub enum Link {
+    /// A serial line, or RTU/ASCII through a gateway: silence matters.
+    Serial {
+        character: Duration,
+        silence: Duration,
+    },
+    /// A TCP client, dropped after `idle` without a byte; `activity` is when it last
+    /// sent one, in milliseconds.
+    Tcp {
+        idle: Duration,
+        activity: Arc<AtomicU64>,
+    },
+}
+
+/// A connected TCP client, as the accepting thread sees it.
+struct Client {
+    number: usize,
+    /// Another handle on the client's socket, to close it when it must give way.
+    handle: TcpStream,
+    activity: Arc<AtomicU64>,
+}
+
+fn lock<T>(mutex: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    match mutex.lock() {
+        Ok(guard) => guard,
+        Err(poisoned) => poisoned.into_inner(),
+    }
+}
+
+/// Adds a client; when all places are taken, the one silent the longest is closed first.
+fn make_room_and_add(
+    clients: &Mutex<Vec<Client>>,
+    client: Client,
+    on_error: &Arc<dyn Fn(io::Error) + Send + Sync>,
+) {
+    let mut clients = lock(clients);
+    if clients.len() >= MAX_CLIENTS {
+        if let Some(index) =
+            (0..clients.len()).min_by_key(|&i| clients[i].activity.load(Ordering::Relaxed))
+        {
+            let idlest = clients.swap_remove(index);
+            let _ = idlest.handle.shutdown(Shutdown::Both);
+            on_error(io::Error::other(format!(
+                "{MAX_CLIENTS} clients connected: the one silent the longest ({}) was closed to make room",
+                idlest
+                    .handle
+                    .peer_addr()
+                    .map_or_else(|_| "?".to_string(), |a| a.to_string())
+            )));
+        }
+    }
+    clients.push(client);
+}
+
+/// Milliseconds since 1970, for telling which client has been silent the longest.
+fn now_ms() -> u64 {
+    SystemTime::now()
+        .duration_since(UNIX_EPOCH)
+        .map_or(0, |d| d.as_millis() as u64)
+}
+
+/// The request a frame found on the line carries, if it is one. A frame whose checksum
+/// holds but whose PDU breaks its function's layout is read as an opaque request, to be
+/// answered with an exception as a real device does.
+pub fn request_in(mode: Mode, found: &Found) -> Option<Frame> {
+    if found.broken.is_some() || found.direction == Some(Direction::Response) {
+        return None;
+    }
+    match Frame::decode(mode, &found.bytes, Direction::Request) {
+        Ok(frame) => Some(frame),
+        Err(FrameError::Pdu(_)) => opaque_request(mode, &found.bytes).ok(),
+        Err(_) => None,
     }
 }

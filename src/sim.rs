@@ -4,9 +4,10 @@
 use std::io;
 use std::time::Instant;
 
-use crate::codec::adu::{opaque_request, wrap};
-use crate::codec::stream::{Status, StreamDecoder};
-use crate::codec::{Direction, FrameError, Mode};
+use crate::codec::adu::wrap;
+use crate::codec::framing::{Event, Framer};
+use crate::codec::Mode;
+use crate::server::request_in;
 use crate::slave::{DataModel, Slave};
 use crate::transport::Transport;
 
@@ -36,18 +37,17 @@ impl Transport for SimTransport {
     }
 
     fn send(&mut self, frame: &[u8]) -> io::Result<()> {
-        let decoder = StreamDecoder::new(self.mode, Direction::Request);
-        // Like a device: a sound frame with a bad PDU gets an exception, a broken frame
-        // gets no answer.
-        let request = match decoder.decode(frame) {
-            Status::Complete { frame, .. } => Some(frame),
-            Status::Invalid {
-                error: FrameError::Pdu(_),
-                len,
-            } => opaque_request(self.mode, &frame[..len.min(frame.len())]).ok(),
-            _ => None,
-        };
-        if let Some(frame) = request {
+        // Framed as a slave on a line frames it: a sound frame with a bad PDU gets an
+        // exception, a broken frame no answer.
+        let mut framer = Framer::new(self.mode, 0.0, 0);
+        let mut events = Vec::new();
+        framer.push(frame, &mut events);
+        framer.finish(&mut events);
+        for event in events {
+            let Event::Frame(found) = event else { continue };
+            let Some(frame) = request_in(self.mode, &found) else {
+                continue;
+            };
             if let crate::codec::Pdu::Request(request) = &frame.pdu {
                 if let Some(answer) = self.slave.handle(frame.slave, request) {
                     let mut pdu = Vec::new();

@@ -1,8 +1,8 @@
 //! Properties of the codec: every frame we encode decodes back to itself in all three ADUs,
 //! a stream decodes the same fed byte by byte or all at once, and no input panics.
 
+use mbtool::codec::framing::{Event, Framer};
 use mbtool::codec::pdu::{DeviceIdentification, DeviceObject};
-use mbtool::codec::stream::{Status, StreamDecoder};
 use mbtool::codec::{
     Direction, Envelope, Exception, ExceptionCode, Frame, Mode, Pdu, Reading, Request, Response,
 };
@@ -193,26 +193,21 @@ fn direction_of(pdu: &Pdu) -> Direction {
     }
 }
 
-/// Feeds `stream` to the decoder in pieces of `piece` bytes, collecting complete frames.
-fn decode_stream(decoder: StreamDecoder, stream: &[u8], piece: usize) -> Vec<Frame> {
-    let mut frames = Vec::new();
-    let mut buffer = Vec::new();
+/// Feeds `stream` to a framer in pieces of `piece` bytes, collecting the frames it finds.
+fn decode_stream(mode: Mode, direction: Direction, stream: &[u8], piece: usize) -> Vec<Frame> {
+    let mut framer = Framer::new(mode, 0.0, 0);
+    let mut events = Vec::new();
     for chunk in stream.chunks(piece.max(1)) {
-        buffer.extend_from_slice(chunk);
-        loop {
-            match decoder.decode(&buffer) {
-                Status::Complete { frame, len } => {
-                    frames.push(frame);
-                    buffer.drain(..len);
-                }
-                Status::Invalid { len, .. } => {
-                    buffer.drain(..len.max(1));
-                }
-                Status::Partial => break,
-            }
-        }
+        framer.push(chunk, &mut events);
     }
-    frames
+    framer.finish(&mut events);
+    events
+        .into_iter()
+        .filter_map(|event| match event {
+            Event::Frame(found) => Frame::decode(mode, &found.bytes, direction).ok(),
+            Event::Noise(_) => None,
+        })
+        .collect()
 }
 
 proptest! {
@@ -249,17 +244,16 @@ proptest! {
         piece in 1usize..40,
     ) {
         let stream: Vec<u8> = frames.iter().flat_map(|f| f.encode().unwrap()).collect();
-        let decoder = StreamDecoder::new(frames[0].mode, direction_of(&frames[0].pdu));
-        prop_assert_eq!(&decode_stream(decoder, &stream, 1), &frames);
-        prop_assert_eq!(&decode_stream(decoder, &stream, stream.len()), &frames);
-        prop_assert_eq!(&decode_stream(decoder, &stream, piece), &frames);
+        let (mode, direction) = (frames[0].mode, direction_of(&frames[0].pdu));
+        prop_assert_eq!(&decode_stream(mode, direction, &stream, 1), &frames);
+        prop_assert_eq!(&decode_stream(mode, direction, &stream, stream.len()), &frames);
+        prop_assert_eq!(&decode_stream(mode, direction, &stream, piece), &frames);
     }
 
     #[test]
-    fn the_stream_decoder_finds_each_framed_pdu(frame in frame(framed_pdu())) {
+    fn the_framer_finds_each_framed_pdu(frame in frame(framed_pdu())) {
         let bytes = frame.encode().unwrap();
-        let decoder = StreamDecoder::new(frame.mode, direction_of(&frame.pdu));
-        prop_assert_eq!(decoder.decode(&bytes), Status::Complete { frame: frame.clone(), len: bytes.len() });
+        prop_assert_eq!(decode_stream(frame.mode, direction_of(&frame.pdu), &bytes, bytes.len()), vec![frame.clone()]);
     }
 
     #[test]
@@ -268,12 +262,14 @@ proptest! {
             let _ = Envelope::open(mode, &bytes);
             for direction in [Direction::Request, Direction::Response] {
                 let _ = Frame::decode(mode, &bytes, direction);
-                let _ = StreamDecoder::new(mode, direction).decode(&bytes);
                 let _ = describe_frame(&bytes, Some(mode), Some(direction));
             }
             let _ = describe_frame(&bytes, Some(mode), None);
         }
         let _ = describe_frame(&bytes, None, None);
+        for mode in [Mode::Rtu, Mode::Ascii, Mode::Tcp] {
+            let _ = decode_stream(mode, Direction::Request, &bytes, 3);
+        }
         let _ = Reading::infer(&bytes);
         let _ = frame_bytes(&bytes, &mut Vec::new());
     }
@@ -286,7 +282,7 @@ proptest! {
         let _ = describe_frame(&frame, Some(Mode::Rtu), None);
         for direction in [Direction::Request, Direction::Response] {
             let _ = describe_frame(&frame, Some(Mode::Rtu), Some(direction));
-            let _ = StreamDecoder::new(Mode::Rtu, direction).decode(&frame);
+            let _ = decode_stream(Mode::Rtu, direction, &frame, 7);
         }
     }
 

@@ -342,7 +342,8 @@ fn an_ascii_capture_with_noise_and_a_cut_frame() {
         "{}",
         lines[4]
     );
-    assert_eq!(lines[4]["bytes"], ":1103006B");
+    // JSON bytes are hex in every mode.
+    assert_eq!(lines[4]["bytes"], "3A 31 31 30 33 30 30 36 42");
     assert_eq!(lines[6]["paired"], true);
 }
 

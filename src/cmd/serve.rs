@@ -12,7 +12,7 @@ use mbtool::codec::Mode;
 use mbtool::connection::line_settings;
 use mbtool::error::Error;
 use mbtool::output::serve::write_entry;
-use mbtool::server::{Logger, Server};
+use mbtool::server::{Link, Logger, Server};
 use mbtool::slave::faults::Faults;
 use mbtool::slave::{datafile, DataModel, Identity, Slave};
 use mbtool::transport::serial::Serial;
@@ -121,8 +121,12 @@ pub fn run(cli: &Cli, args: &ServeArgs) -> Result<u8> {
                 line.baud
             );
             let mut rng = fastrand::Rng::with_seed(seed);
+            let link = Link::Serial {
+                character: line.character_time(),
+                silence: line.frame_gap(),
+            };
             server
-                .serve_stream(&mut transport, path, None, &mut rng)
+                .serve_stream(&mut transport, path, &link, &mut rng)
                 .with_context(|| format!("serving on {path}"))?;
             Ok(0)
         }

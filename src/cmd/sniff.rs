@@ -2,6 +2,7 @@
 
 use std::fs::File;
 use std::io::{self, BufWriter, Read, Write};
+use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
@@ -15,6 +16,7 @@ use mbtool::error::Error;
 use mbtool::output::{self, sniff::SniffWriter};
 use mbtool::sniff::pcap::PcapWriter;
 use mbtool::sniff::session::{Filter, Record, Session};
+use mbtool::sniff::timing;
 use mbtool::transport::serial::{LineSettings, Serial};
 use mbtool::transport::{Endpoint, Transport};
 
@@ -94,11 +96,7 @@ pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
     let silence = line.frame_gap();
     let mut session = Session::new(mode, char_us(&line), silence.as_micros() as u64, filter);
     let mut save = match &args.save {
-        Some(path) => {
-            Some(BufWriter::new(File::create(path).with_context(|| {
-                format!("cannot create {}", path.display())
-            })?))
-        }
+        Some(path) => Some(Save::create(path, args.input.is_none())?),
         None => None,
     };
     let pcap = match &args.pcap {
@@ -128,19 +126,11 @@ pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
                     File::open(path).with_context(|| format!("cannot open {}", path.display()))?,
                 )
             };
-            let mut chunk = vec![0u8; 1 << 16];
-            loop {
-                let n = match input.read(&mut chunk) {
-                    Ok(0) => break,
-                    Ok(n) => n,
-                    Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
-                    Err(e) => return Err(e.into()),
-                };
-                if let Some(save) = save.as_mut() {
-                    save.write_all(&chunk[..n])?;
+            match replay_timing(path)? {
+                Some(events) => {
+                    replay_timed(&mut input, &events, &mut session, &mut sinks, &mut save)?
                 }
-                session.push(&chunk[..n], &mut records);
-                sinks.write(&mut records)?;
+                None => replay(&mut input, &mut session, &mut sinks, &mut save)?,
             }
             None
         }
@@ -167,6 +157,148 @@ pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
     Ok(0)
 }
 
+/// `--save`: the bytes as received and, from a port, their timing beside them.
+struct Save {
+    bytes: BufWriter<File>,
+    timing: Option<BufWriter<File>>,
+}
+
+impl Save {
+    fn create(path: &Path, timed: bool) -> Result<Save> {
+        let create = |path: &Path| {
+            File::create(path)
+                .map(BufWriter::new)
+                .with_context(|| format!("cannot create {}", path.display()))
+        };
+        let timing = if timed {
+            let mut file = create(&timing::beside(path))?;
+            writeln!(file, "{}", timing::HEADER)?;
+            Some(file)
+        } else {
+            None
+        };
+        Ok(Save {
+            bytes: create(path)?,
+            timing,
+        })
+    }
+
+    fn bytes(&mut self, bytes: &[u8], time: Option<u64>) -> io::Result<()> {
+        self.bytes.write_all(bytes)?;
+        match (self.timing.as_mut(), time) {
+            (Some(timing), Some(time)) => writeln!(
+                timing,
+                "{}",
+                timing::Event::Bytes {
+                    time,
+                    count: bytes.len()
+                }
+            ),
+            _ => Ok(()),
+        }
+    }
+
+    fn idle(&mut self, time: u64) -> io::Result<()> {
+        match self.timing.as_mut() {
+            Some(timing) => writeln!(timing, "{}", timing::Event::Idle { time }),
+            None => Ok(()),
+        }
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        self.bytes.flush()?;
+        match self.timing.as_mut() {
+            Some(timing) => timing.flush(),
+            None => Ok(()),
+        }
+    }
+}
+
+/// The timing saved beside a capture file, when there is one.
+fn replay_timing(path: &Path) -> Result<Option<Vec<timing::Event>>> {
+    let beside = timing::beside(path);
+    if path.as_os_str() == "-" || !beside.exists() {
+        return Ok(None);
+    }
+    let text = std::fs::read_to_string(&beside)
+        .with_context(|| format!("cannot read {}", beside.display()))?;
+    let mut events = Vec::new();
+    for (number, line) in text.lines().enumerate() {
+        match timing::parse(line) {
+            Ok(Some(event)) => events.push(event),
+            Ok(None) => {}
+            Err(message) => {
+                return Err(Error::usage(format!(
+                    "{}:{}: {message}; move the file away to replay without timing",
+                    beside.display(),
+                    number + 1
+                ))
+                .into())
+            }
+        }
+    }
+    Ok(Some(events))
+}
+
+/// A capture without timing: framed by content alone.
+fn replay(
+    input: &mut dyn Read,
+    session: &mut Session,
+    sinks: &mut Sinks,
+    save: &mut Option<Save>,
+) -> Result<()> {
+    let mut records = Vec::new();
+    let mut chunk = vec![0u8; 1 << 16];
+    loop {
+        let n = match input.read(&mut chunk) {
+            Ok(0) => return Ok(()),
+            Ok(n) => n,
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e.into()),
+        };
+        if let Some(save) = save.as_mut() {
+            save.bytes(&chunk[..n], None)?;
+        }
+        session.push(&chunk[..n], &mut records);
+        sinks.write(&mut records)?;
+    }
+}
+
+/// A capture with its timing: the bytes are given to the session exactly as the live
+/// session was given them, so the same frames come out.
+fn replay_timed(
+    input: &mut dyn Read,
+    events: &[timing::Event],
+    session: &mut Session,
+    sinks: &mut Sinks,
+    save: &mut Option<Save>,
+) -> Result<()> {
+    let mut records = Vec::new();
+    let mut chunk = Vec::new();
+    for event in events {
+        match *event {
+            timing::Event::Bytes { time, count } => {
+                chunk.resize(count, 0);
+                input.read_exact(&mut chunk).map_err(|_| {
+                    Error::usage(
+                        "the capture is shorter than its .timing file says: move the .timing file away to replay without timing",
+                    )
+                })?;
+                if let Some(save) = save.as_mut() {
+                    save.bytes(&chunk, None)?;
+                }
+                session.push_at(&chunk, time, &mut records);
+            }
+            timing::Event::Idle { time } => {
+                session.idle(time, &mut records);
+            }
+        }
+        sinks.write(&mut records)?;
+    }
+    // Bytes the timing does not cover (a capture appended to later) come untimed.
+    replay(input, session, sinks, save)
+}
+
 /// Reads the port until Ctrl-C; returns the time the capture ended, in microseconds.
 fn live(
     cli: &Cli,
@@ -175,7 +307,7 @@ fn live(
     mode: Mode,
     session: &mut Session,
     sinks: &mut Sinks,
-    save: &mut Option<BufWriter<File>>,
+    save: &mut Option<Save>,
 ) -> Result<u64> {
     let path = match cli.connection.port.as_deref().map(Endpoint::parse) {
         Some(Ok(Endpoint::Serial(path))) => path,
@@ -217,11 +349,14 @@ fn live(
         let mut records = Vec::new();
         if n > 0 {
             if let Some(save) = save.as_mut() {
-                save.write_all(&bytes)?;
+                save.bytes(&bytes, Some(now))?;
             }
             session.push_at(&bytes, now, &mut records);
-        } else {
-            session.idle(now, &mut records);
+        } else if session.idle(now, &mut records) {
+            // Only the calls that told the framer something: a replay repeats them.
+            if let Some(save) = save.as_mut() {
+                save.idle(now)?;
+            }
         }
         sinks.write(&mut records)?;
         if session.bursty && !warned {

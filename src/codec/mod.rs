@@ -7,11 +7,11 @@ pub mod bits;
 pub mod checksum;
 pub mod error;
 pub mod exception;
+pub mod framing;
 pub mod function;
 pub mod length;
 pub mod limits;
 pub mod pdu;
-pub mod stream;
 
 pub use adu::{Checksum, Envelope, Frame, Mode};
 pub use error::{FrameError, PduError};

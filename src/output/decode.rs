@@ -7,7 +7,7 @@ use comfy_table::{Cell, Color};
 use super::{csv_field, new_table};
 use crate::address::{reference, Table};
 use crate::cli::OutputFormat;
-use crate::codec::{Checksum, ExceptionCode};
+use crate::codec::{Checksum, ExceptionCode, Mode};
 use crate::report::{spaced_hex, Fields, FrameReport, Values};
 use crate::values::{ByteOrder, ValueType};
 
@@ -116,7 +116,8 @@ impl DecodeWriter {
         report: &FrameReport,
     ) -> io::Result<()> {
         let mut table = new_table(self.colour);
-        let frame = if shown.first() == Some(&b':') {
+        // By the mode, not by the first byte: an RTU frame from slave 58 starts with ':'.
+        let frame = if report.mode == Mode::Ascii.name() {
             String::from_utf8_lossy(shown).trim_end().to_string()
         } else {
             spaced_hex(shown)

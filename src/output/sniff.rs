@@ -42,7 +42,7 @@ struct JsonNoise<'a> {
     kind: &'static str,
     time: f64,
     offset: u64,
-    count: usize,
+    count: u64,
     bytes: &'a str,
 }
 
@@ -151,14 +151,8 @@ impl SniffWriter {
     pub fn record(&mut self, out: &mut dyn Write, record: &Record) -> io::Result<()> {
         match (self.format, record) {
             (OutputFormat::Json, Record::Frame(frame)) => {
-                let bytes =
-                    crate::output::encode::frame_text(crate::codec::Mode::Rtu, &frame.found.bytes);
-                let bytes = match frame.found.bytes.first() {
-                    Some(b':') => String::from_utf8_lossy(&frame.found.bytes)
-                        .trim_end()
-                        .to_string(),
-                    _ => bytes,
-                };
+                // Always hex, whatever the mode: a JSON reader gets the bytes as they were.
+                let bytes = spaced_hex(&frame.found.bytes);
                 json_line(
                     out,
                     &mut self.line,
@@ -177,7 +171,11 @@ impl SniffWriter {
             (
                 OutputFormat::Json,
                 Record::Noise {
-                    bytes, offset, at, ..
+                    kept,
+                    len,
+                    offset,
+                    at,
+                    ..
                 },
             ) => json_line(
                 out,
@@ -186,8 +184,8 @@ impl SniffWriter {
                     kind: "noise",
                     time: seconds(*at),
                     offset: *offset,
-                    count: bytes.len(),
-                    bytes: &spaced_hex(&bytes[..bytes.len().min(64)]),
+                    count: *len,
+                    bytes: &spaced_hex(kept),
                 },
             ),
             (
@@ -314,20 +312,21 @@ impl SniffWriter {
                 writeln!(out, "{text}")
             }
             Record::Noise {
-                bytes,
+                kept,
+                len,
                 offset,
                 time,
                 ..
             } => {
-                let shown = spaced_hex(&bytes[..bytes.len().min(16)]);
-                let more = if bytes.len() > 16 { " ..." } else { "" };
+                let shown = spaced_hex(&kept[..kept.len().min(16)]);
+                let more = if *len > 16 { " ..." } else { "" };
                 writeln!(
                     out,
                     "       {} {:>12}  noise: {} byte{}: {shown}{more}",
                     Self::when(*time, *offset),
                     "",
-                    bytes.len(),
-                    if bytes.len() == 1 { "" } else { "s" }
+                    len,
+                    if *len == 1 { "" } else { "s" }
                 )
             }
             Record::Unanswered {

@@ -1,7 +1,8 @@
-//! Watching a bus: finding frames in what passes (`framer`), telling requests from
-//! answers and pairing them (`pairing`), and writing what was seen as pcap (`pcap`).
+//! Watching a bus: the codec's framer finds the frames in what passes; here they are told
+//! apart as requests and answers and paired (`pairing`, `session`), and written as pcap
+//! (`pcap`); a saved capture keeps its timing beside it (`timing`).
 
-pub mod framer;
 pub mod pairing;
 pub mod pcap;
 pub mod session;
+pub mod timing;

@@ -5,9 +5,9 @@ use std::collections::BTreeMap;
 
 use serde::Serialize;
 
-use super::framer::{Broken, Event, Found, Framer};
 use super::pairing::{Pairer, Role, Unanswered};
 use crate::address::{reference, Table};
+use crate::codec::framing::{Broken, Event, Found, Framer, Noise};
 use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
 use crate::report::{describe_frame, describe_reading, FrameReport, Kind, Values};
 
@@ -17,7 +17,10 @@ pub enum Record {
     /// Boxed: a frame record is large beside the other records.
     Frame(Box<FrameRecord>),
     Noise {
-        bytes: Vec<u8>,
+        /// The first bytes of the run (`codec::framing::NOISE_KEPT`).
+        kept: Vec<u8>,
+        /// How many bytes the run holds.
+        len: u64,
         offset: u64,
         /// When the first byte arrived, when known.
         time: Option<u64>,
@@ -152,11 +155,14 @@ impl Session {
         self.events = events;
     }
 
-    pub fn idle(&mut self, now: u64, out: &mut Vec<Record>) {
+    /// The line has been quiet until `now`. Returns whether that was news to the framer:
+    /// a replay must repeat exactly those calls to find the same frames.
+    pub fn idle(&mut self, now: u64, out: &mut Vec<Record>) -> bool {
         let mut events = std::mem::take(&mut self.events);
-        self.framer.idle(now, &mut events);
+        let news = self.framer.idle(now, &mut events);
         self.read_events(&mut events, out);
         self.events = events;
+        news
     }
 
     /// The end of the capture, at `now` when known.
@@ -172,16 +178,18 @@ impl Session {
     fn read_events(&mut self, events: &mut Vec<Event>, out: &mut Vec<Record>) {
         for event in events.drain(..) {
             match event {
-                Event::Noise {
-                    bytes,
+                Event::Noise(Noise {
+                    kept,
+                    len,
                     offset,
                     start,
-                } => {
-                    self.counts.noise_bytes += bytes.len() as u64;
+                }) => {
+                    self.counts.noise_bytes += len;
                     if self.filter.is_empty() {
                         let at = self.at(start, offset);
                         out.push(Record::Noise {
-                            bytes,
+                            kept,
+                            len,
                             offset,
                             time: start,
                             at,

@@ -31,6 +31,11 @@ impl LineSettings {
             + u32::from(self.stop_bits)
     }
 
+    /// One character's time on the wire.
+    pub fn character_time(&self) -> Duration {
+        Duration::from_secs_f64(f64::from(self.bits_per_character()) / f64::from(self.baud.max(1)))
+    }
+
     /// The silence that ends an RTU frame: 3.5 character times, and 1.75 ms above 19200
     /// baud, as the Modbus serial line specification fixes it.
     pub fn frame_gap(&self) -> Duration {

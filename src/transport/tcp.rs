@@ -74,8 +74,9 @@ impl Transport for Tcp {
             let Some(left) = time_left(deadline) else {
                 return Ok(0);
             };
-            // Rounded up to whole milliseconds, so that it is rarely changed.
-            let left_ms = left.as_micros().div_ceil(1000) as u64;
+            // Rounded up to whole milliseconds, so that it is rarely changed; never 0,
+            // which would mean no timeout at all.
+            let left_ms = (left.as_micros().div_ceil(1000) as u64).max(1);
             if left_ms != self.read_timeout_ms {
                 self.stream
                     .set_read_timeout(Some(Duration::from_millis(left_ms)))?;

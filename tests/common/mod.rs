@@ -5,7 +5,7 @@ use std::io::{Read, Write};
 use std::time::{Duration, Instant};
 
 use assert_cmd::Command;
-use mbtool::codec::stream::{Status, StreamDecoder};
+use mbtool::codec::framing::{Event, Framer};
 use mbtool::codec::{Direction, Frame, Mode};
 use serialport::{SerialPort, TTYPort};
 
@@ -76,20 +76,22 @@ pub fn read_frame(
     direction: Direction,
     wait: Duration,
 ) -> Option<(Frame, Vec<u8>)> {
-    let decoder = StreamDecoder::new(mode, direction);
+    let mut framer = Framer::new(mode, 0.0, 0);
     let deadline = Instant::now() + wait;
-    let mut buffer = Vec::new();
     let mut chunk = [0u8; 512];
+    let mut events = Vec::new();
     while Instant::now() < deadline {
         port.set_timeout(Duration::from_millis(20)).ok()?;
-        // A read that times out leaves the buffer as it was.
+        // A read that times out gives nothing.
         if let Ok(n) = port.read(&mut chunk) {
-            buffer.extend_from_slice(&chunk[..n]);
+            framer.push(&chunk[..n], &mut events);
         }
-        match decoder.decode(&buffer) {
-            Status::Complete { frame, len } => return Some((frame, buffer[..len].to_vec())),
-            Status::Invalid { .. } => buffer.clear(),
-            Status::Partial => {}
+        for event in events.drain(..) {
+            if let Event::Frame(found) = event {
+                if let Ok(frame) = Frame::decode(mode, &found.bytes, direction) {
+                    return Some((frame, found.bytes));
+                }
+            }
         }
     }
     None
