@@ -6,25 +6,13 @@ mod common;
 
 use std::io::Write;
 use std::net::TcpStream;
-use std::process::{Command as Process, Stdio};
+use std::process::Command as Process;
 use std::time::{Duration, Instant};
 
 use common::{
-    command_exists, free_port, peer_available, python_has, run_against, values_of,
+    command_exists, free_port, peer_available, python_has, run_against, serve, values_of,
     wait_for_listener, writes_read_back, PtyPair, Stopped,
 };
-
-/// Starts `mbtool serve` with `args`; it is stopped when the guard drops.
-fn serve(args: &[&str]) -> Stopped {
-    let child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
-        .arg("serve")
-        .args(args)
-        .stdout(Stdio::null())
-        .stderr(Stdio::null())
-        .spawn()
-        .expect("mbtool serve starts");
-    Stopped(child)
-}
 
 /// `mbtool serve` on 127.0.0.1; the connection options for a master.
 fn serve_tcp(extra: &[&str]) -> (Stopped, Vec<String>, u16) {

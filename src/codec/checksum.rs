@@ -11,23 +11,24 @@ pub fn crc16(bytes: &[u8]) -> u16 {
     MODBUS_CRC.checksum(bytes)
 }
 
-/// The shortest length in `min_len..=max_len` at which `bytes` ends in its own CRC (low
-/// byte first): how a frame of a function without a known layout is found. The CRC of each
-/// prefix is carried forward a byte at a time, so the scan costs one pass.
-pub fn shortest_crc_match(bytes: &[u8], min_len: usize, max_len: usize) -> Option<usize> {
+/// The lengths in `min_len..=max_len` at which `bytes` ends in its own CRC (low byte
+/// first), shortest first: how a frame of a function without a known layout is found. The
+/// CRC of each prefix is carried forward a byte at a time, so the scan costs one pass.
+pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
     let max_len = max_len.min(bytes.len());
+    let mut matches = Vec::new();
     if min_len < 3 || min_len > max_len {
-        return None;
+        return matches;
     }
     let mut digest = MODBUS_CRC.digest();
     digest.update(&bytes[..min_len - 2]);
     for len in min_len..=max_len {
         if digest.clone().finalize().to_le_bytes() == bytes[len - 2..len] {
-            return Some(len);
+            matches.push(len);
         }
         digest.update(&bytes[len - 2..len - 1]);
     }
-    None
+    matches
 }
 
 /// Longitudinal redundancy check: the two's complement of the 8-bit sum of the bytes.
@@ -49,12 +50,18 @@ mod tests {
     }
 
     #[test]
-    fn the_shortest_crc_match_is_the_whole_frame() {
+    fn a_frame_and_its_trailing_zeros_match_its_crc() {
         let mut frame = vec![0x11, 0x41, 0x01, 0x02, 0x03];
         frame.extend_from_slice(&crc16(&frame).to_le_bytes());
         frame.extend_from_slice(&[0xAA, 0xBB]);
-        assert_eq!(shortest_crc_match(&frame, 4, 256), Some(7));
-        assert_eq!(shortest_crc_match(&frame[..6], 4, 256), None);
+        assert_eq!(crc_matches(&frame, 4, 256), vec![7]);
+        assert_eq!(crc_matches(&frame[..6], 4, 256), Vec::<usize>::new());
+        // The CRC of a frame and its own CRC is zero, so that a frame followed by 00
+        // bytes matches at every longer length: one byte longer as a frame whose CRC is
+        // its own CRC's high byte and 00, and further as a frame whose CRC is 00 00.
+        frame.truncate(7);
+        frame.extend_from_slice(&[0, 0, 0]);
+        assert_eq!(crc_matches(&frame, 4, 256), vec![7, 8, 9, 10]);
     }
 
     #[test]

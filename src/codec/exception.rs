@@ -12,6 +12,11 @@ impl ExceptionCode {
     pub const SERVER_DEVICE_FAILURE: Self = Self(0x04);
     pub const GATEWAY_TARGET_FAILED: Self = Self(0x0B);
 
+    /// Whether the specification defines the code (01-08, 0A, 0B).
+    pub fn is_defined(self) -> bool {
+        matches!(self.0, 0x01..=0x08 | 0x0A | 0x0B)
+    }
+
     pub fn name(self) -> &'static str {
         match self.0 {
             0x01 => "illegal function",

@@ -25,8 +25,10 @@
 //! ASCII: ':' starts a frame and CR LF ends it; up to a second may pass between characters.
 //! TCP: the MBAP length alone frames, however the bytes were segmented.
 
-use super::checksum::{crc16, lrc, shortest_crc_match};
-use super::function::{ENCAPSULATED_INTERFACE, EXCEPTION_FLAG, MEI_READ_DEVICE_IDENTIFICATION};
+use super::checksum::{crc16, crc_matches, lrc};
+use super::function::{
+    self, ENCAPSULATED_INTERFACE, EXCEPTION_FLAG, MEI_READ_DEVICE_IDENTIFICATION,
+};
 use super::length::{rtu_frame_length, tcp_frame_length, Length};
 use super::limits::{MAX_ASCII_ADU, MAX_RTU_ADU, MAX_TCP_ADU};
 use super::{Direction, Mode, Pdu};
@@ -466,10 +468,28 @@ impl Framer {
         }
         let mut acceptable: Vec<Candidate> = Vec::with_capacity(found.valid.len());
         for candidate in &found.valid {
-            let tell = if in_step && candidate.known_layout {
-                Tell::Yes
+            // In step with the bus, a frame of known layout on its turn stands on its CRC;
+            // one against the turn needs what follows it too. While a request awaits its
+            // answer, only that answer is on the turn.
+            let frame = &self.buffer[at..at + candidate.len];
+            let on_turn = match self.expect {
+                Some(Direction::Response) => {
+                    candidate.direction != Some(Direction::Request)
+                        && (self.awaiting.is_none()
+                            || self.answers_awaited(frame, candidate.direction))
+                }
+                _ => expected(candidate.direction),
+            };
+            let tell = if in_step && candidate.known_layout && on_turn {
+                // One whose PDU does not read is a master's mistake to be shown, or bytes
+                // that only happen to pass: what follows must be sound too.
+                if pdu_reads(frame, candidate.direction, false) {
+                    Tell::Yes
+                } else {
+                    self.followed_well(at + candidate.len, 1, true, self.asked_by(at, candidate))
+                }
             } else {
-                self.supported(at, candidate, 1)
+                self.supported(at, candidate, 1, in_step)
             };
             match tell {
                 Tell::Yes => acceptable.push(*candidate),
@@ -503,8 +523,13 @@ impl Framer {
         several: &[Candidate],
         expected: impl Fn(Option<Direction>) -> bool,
     ) -> Result<Candidate, ()> {
-        let followed = |candidate: &Candidate, past_zeros| {
-            self.followed_well(at + candidate.len, 1, past_zeros)
+        let followed = |candidate: &Candidate, past_runs| {
+            self.followed_well(
+                at + candidate.len,
+                1,
+                past_runs,
+                self.asked_by(at, candidate),
+            )
         };
         let on_turn: Vec<Candidate> = several
             .iter()
@@ -575,30 +600,22 @@ impl Framer {
         found
     }
 
-    /// A function without a known layout: the shortest length whose CRC holds, and one
-    /// byte longer when that byte is 00 (a frame whose CRC ends in 00 leaves its prefix one
-    /// byte shorter valid too). No length may swallow a whole frame of known layout.
-    /// Also says whether more bytes could still give a length.
+    /// A function without a known layout: every length whose CRC holds, save those that
+    /// only add 00 bytes to a shorter one (the CRC of a frame and its own CRC is zero). No
+    /// length may swallow a whole frame of known layout. Also says whether more bytes could
+    /// still give a length.
     fn unknown_lengths(&self, at: usize) -> (Vec<usize>, bool) {
         let data = &self.buffer[at..];
         let reach = data.len().min(MAX_RTU_ADU);
         let inner_end = self.inner_frame_end(at, at + reach);
         let limit = inner_end.map_or(reach, |end| end - at - 1);
-        let Some(shortest) = shortest_crc_match(data, MIN_RTU_FRAME, limit) else {
-            let more_could_come =
-                inner_end.is_none() && data.len() < MAX_RTU_ADU && !self.quiet && !self.ended;
-            return (Vec::new(), more_could_come);
-        };
-        let mut lengths = vec![shortest];
-        match data.get(shortest) {
-            Some(0) if shortest < limit && crc_holds(&data[..=shortest]) => {
-                lengths.push(shortest + 1)
-            }
-            Some(_) => {}
-            // Whether the byte after it is 00 is not known yet.
-            None => return (lengths, !self.quiet && !self.ended),
-        }
-        (lengths, false)
+        let lengths = crc_matches(data, MIN_RTU_FRAME, limit)
+            .into_iter()
+            .filter(|len| len - 2 < MIN_RTU_FRAME || data[len - 2..*len] != [0, 0])
+            .collect();
+        let more_could_come =
+            inner_end.is_none() && data.len() < MAX_RTU_ADU && !self.quiet && !self.ended;
+        (lengths, more_could_come)
     }
 
     /// Where the first whole frame of known layout that lies entirely after `at` and
@@ -620,19 +637,36 @@ impl Framer {
             .find_map(|direction| match rtu_frame_length(data, direction) {
                 Length::Known(len) if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len) => data
                     .get(..len)
-                    .filter(|frame| crc_holds(frame) && pdu_reads(frame, Some(direction)))
+                    .filter(|frame| crc_holds(frame) && pdu_reads(frame, Some(direction), true))
                     .map(|_| len),
                 _ => None,
             })
     }
 
-    /// Whether what follows the candidate at `at` supports it as a frame.
-    fn supported(&self, at: usize, candidate: &Candidate, depth: u8) -> Tell {
+    /// Whether what follows the candidate at `at` supports it as a frame. `in_step`: it
+    /// follows a frame or silence, so that a frame of known layout needs what stands right
+    /// after it, not a frame further on, and one of unknown layout may be followed past a
+    /// run of 00 or FF.
+    fn supported(&self, at: usize, candidate: &Candidate, depth: u8, in_step: bool) -> Tell {
+        let strict = in_step && candidate.known_layout;
         let frame = &self.buffer[at..at + candidate.len];
         let end = at + candidate.len;
-        // After noise a frame of known layout must at least read as a PDU.
-        if candidate.known_layout && !pdu_reads(frame, candidate.direction) {
+        // After noise a frame of known layout must at least read as a PDU, and may not
+        // swallow a whole frame.
+        if candidate.known_layout
+            && !(pdu_reads(frame, candidate.direction, !in_step)
+                && (in_step || self.inner_frame_end(at, end).is_none()))
+        {
             return Tell::No;
+        }
+        // A frame of unknown layout may be any length, so that bytes that broke on the way
+        // pass their CRC by borrowing the start of the next frame far more often.
+        if !candidate.known_layout && !self.silence_after(end - 1) {
+            match self.overlapped(at, end) {
+                Tell::Yes => return Tell::No,
+                Tell::NotYet => return Tell::NotYet,
+                Tell::No => {}
+            }
         }
         if self.silence_after(end - 1) || self.answers_awaited(frame, candidate.direction) {
             return Tell::Yes;
@@ -640,24 +674,47 @@ impl Framer {
         if end == self.buffer.len() {
             return if self.ended { Tell::Yes } else { Tell::NotYet };
         }
-        match self.followed_well(end, depth, true) {
-            Tell::No if candidate.known_layout => self.frame_further_on(end),
+        // A frame without a known layout must be followed right after it; one of known
+        // layout may be followed past a run of 00 or FF.
+        let past_runs = candidate.known_layout || in_step;
+        let asked = self.asked_by(at, candidate);
+        match self.followed_well(end, depth, past_runs, asked) {
+            Tell::No if candidate.known_layout && !strict => match self.overlapped(at, end) {
+                Tell::No => self.frame_further_on(end),
+                Tell::Yes => Tell::No,
+                Tell::NotYet => Tell::NotYet,
+            },
+            // A request of unknown layout is supported by its answer further on too, past
+            // a run of 00 or FF or a frame that broke on the way.
+            Tell::No => match asked {
+                Some(asked) if !candidate.known_layout => self.answer_further_on(end, asked),
+                _ => Tell::No,
+            },
             tell => tell,
         }
     }
 
-    /// Whether a valid frame starts right at `at` (of known layout, or itself supported),
-    /// or silence or the end of the input is there. `past_zeros`: after a run of 00 bytes,
-    /// which is what a line held low for a while gives, not data.
-    fn followed_well(&self, at: usize, depth: u8, past_zeros: bool) -> Tell {
-        let at = if past_zeros {
-            at + self.buffer[at.min(self.buffer.len())..]
-                .iter()
-                .take_while(|b| **b == 0)
-                .count()
-        } else {
-            at
-        };
+    /// Whether a valid frame starts right at `at` (of known layout, the answer to
+    /// `asked`, or itself supported), or silence or the end of the input is there.
+    /// `past_runs`: after a run of 00 or FF bytes, which is what a line held low or
+    /// glitching gives, not data.
+    fn followed_well(
+        &self,
+        at: usize,
+        depth: u8,
+        past_runs: bool,
+        asked: Option<(u8, u8)>,
+    ) -> Tell {
+        if past_runs {
+            let run = line_state_run(&self.buffer[at.min(self.buffer.len())..]);
+            if run > 0 {
+                // The run's last byte may be the address of a broadcast.
+                return match self.followed_well(at + run - 1, depth, false, asked) {
+                    Tell::No => self.followed_well(at + run, depth, false, asked),
+                    tell => tell,
+                };
+            }
+        }
         if at >= self.buffer.len() {
             return if self.quiet || self.ended {
                 Tell::Yes
@@ -669,12 +726,14 @@ impl Framer {
             return Tell::Yes;
         }
         let next = self.candidates(at);
-        if next.valid.iter().any(|c| c.known_layout) {
+        if next.valid.iter().any(|c| c.known_layout)
+            || asked.is_some_and(|asked| self.answer_at(at, asked) == Tell::Yes)
+        {
             return Tell::Yes;
         }
         if depth > 0 {
             for candidate in &next.valid {
-                match self.supported(at, candidate, depth - 1) {
+                match self.supported(at, candidate, depth - 1, true) {
                     Tell::Yes => return Tell::Yes,
                     Tell::NotYet => return Tell::NotYet,
                     Tell::No => {}
@@ -687,17 +746,99 @@ impl Framer {
         Tell::No
     }
 
+    /// Whether the answer to `asked` starts within the longest frame's reach after `at`,
+    /// past 00 or FF bytes.
+    fn answer_further_on(&self, at: usize, asked: (u8, u8)) -> Tell {
+        let at = after_run(&self.buffer, at);
+        let reach = at + MAX_RTU_ADU;
+        for p in at..reach.min(self.buffer.len()) {
+            match self.answer_at(p, asked) {
+                Tell::Yes => return Tell::Yes,
+                Tell::NotYet => return Tell::NotYet,
+                Tell::No => {}
+            }
+        }
+        if reach > self.buffer.len() && !self.quiet && !self.ended {
+            return Tell::NotYet;
+        }
+        Tell::No
+    }
+
+    /// Whether a frame whose CRC holds, with the slave and function `asked` for, starts at
+    /// `at`.
+    fn answer_at(&self, at: usize, (slave, function): (u8, u8)) -> Tell {
+        match self.buffer.get(at..at + 2) {
+            Some([s, f]) if *s == slave && f & !EXCEPTION_FLAG == function => {
+                let next = self.candidates(at);
+                if !next.valid.is_empty() {
+                    Tell::Yes
+                } else if !next.pending.is_empty() && !self.ended && !self.quiet {
+                    Tell::NotYet
+                } else {
+                    Tell::No
+                }
+            }
+            Some(_) => Tell::No,
+            None if self.ended || self.quiet => Tell::No,
+            None => Tell::NotYet,
+        }
+    }
+
+    /// Whether a frame starts inside `at..end` and runs past its end, of known layout, CRC
+    /// and PDU sound, or of unknown layout and followed well: then the bytes at `at` make
+    /// a frame only by borrowing the start of another.
+    fn overlapped(&self, at: usize, end: usize) -> Tell {
+        let mut more_could_come = false;
+        for inner in at + 1..end {
+            if self
+                .known_frame_len(inner)
+                .is_some_and(|len| inner + len > end)
+            {
+                return Tell::Yes;
+            }
+            let found = self.candidates(inner);
+            more_could_come |= !found.pending.is_empty();
+            for candidate in found.valid.iter().filter(|c| inner + c.len > end) {
+                if candidate.known_layout {
+                    continue;
+                }
+                let asked = self.asked_by(inner, candidate);
+                match self.followed_well(inner + candidate.len, 0, false, asked) {
+                    Tell::Yes => return Tell::Yes,
+                    Tell::NotYet => more_could_come = true,
+                    Tell::No => {}
+                }
+            }
+        }
+        if more_could_come && !self.quiet && !self.ended {
+            Tell::NotYet
+        } else {
+            Tell::No
+        }
+    }
+
     /// Whether a frame of known layout, CRC and PDU sound, starts within the longest
     /// frame's reach after `at`, past bytes that are no frame.
     fn frame_further_on(&self, at: usize) -> Tell {
+        let at = after_run(&self.buffer, at);
         let reach = at + MAX_RTU_ADU;
-        if (at + 1..reach.min(self.buffer.len())).any(|p| self.known_frame_len(p).is_some()) {
+        if (at..reach.min(self.buffer.len())).any(|p| self.known_frame_len(p).is_some()) {
             return Tell::Yes;
         }
         if reach > self.buffer.len() && !self.quiet && !self.ended {
             return Tell::NotYet;
         }
         Tell::No
+    }
+
+    /// The slave and function a candidate asks for, when it can be a request: a request
+    /// is supported by its answer right after it.
+    fn asked_by(&self, at: usize, candidate: &Candidate) -> Option<(u8, u8)> {
+        match (candidate.direction, self.buffer.get(at..at + 2)) {
+            (Some(Direction::Response), _) => None,
+            (_, Some([slave, function])) => Some((*slave, function & !EXCEPTION_FLAG)),
+            _ => None,
+        }
     }
 
     /// Whether `frame` is the answer the last request awaits: its slave and function.
@@ -743,16 +884,28 @@ impl Framer {
                 Direction::Request => in_step,
                 Direction::Response => self.answers_awaited(frame, Some(direction)),
             };
-            if !plausible || self.inner_frame_end(at, at + len).is_some() {
+            if !plausible
+                || self.inner_frame_end(at, at + len).is_some()
+                || self.holds_unknown_frame(at, at + len)
+            {
                 continue;
             }
-            match self.followed_well(at + len, 0, false) {
+            match self.followed_well(at + len, 0, false, None) {
                 Tell::Yes => return (Tell::Yes, Some((len, direction))),
                 Tell::NotYet => return (Tell::NotYet, None),
                 Tell::No => {}
             }
         }
         (Tell::No, None)
+    }
+
+    /// Whether a frame of a function without a known layout, its CRC sound, lies inside
+    /// `at..end` after its first byte.
+    fn holds_unknown_frame(&self, at: usize, end: usize) -> bool {
+        (at + 1..end).any(|inner| {
+            let data = &self.buffer[inner..end];
+            may_lack_layout(data) && !crc_matches(data, MIN_RTU_FRAME, data.len()).is_empty()
+        })
     }
 
     // ---- ASCII ----
@@ -831,17 +984,39 @@ fn may_lack_layout(frame: &[u8]) -> bool {
     }
 }
 
+/// Where a frame may start after the run of 00 or FF at `at`: at its last byte, which may
+/// be the address of a broadcast.
+fn after_run(buffer: &[u8], at: usize) -> usize {
+    at + line_state_run(&buffer[at..]).saturating_sub(1)
+}
+
+/// How many bytes at the start of `bytes` are a run of 00 or FF: a line held low, or
+/// glitching, rather than data.
+fn line_state_run(bytes: &[u8]) -> usize {
+    match bytes.first() {
+        Some(&run @ (0x00 | 0xFF)) => bytes.iter().take_while(|b| **b == run).count(),
+        _ => 0,
+    }
+}
+
 /// Whether the PDU inside an RTU frame reads in `direction` (either, for `None`).
-fn pdu_reads(frame: &[u8], direction: Option<Direction>) -> bool {
+/// `after_noise`: an exception must also answer a defined function with a defined code, as
+/// a frame found after noise must, being found among bytes that pass their CRC by chance.
+fn pdu_reads(frame: &[u8], direction: Option<Direction>, after_noise: bool) -> bool {
     let Some(pdu) = frame.get(1..frame.len().saturating_sub(2)) else {
         return false;
     };
-    match direction {
-        Some(direction) => Pdu::decode(pdu, direction).is_ok(),
-        None => {
-            Pdu::decode(pdu, Direction::Request).is_ok()
-                || Pdu::decode(pdu, Direction::Response).is_ok()
+    let reads = |direction| match Pdu::decode(pdu, direction) {
+        Ok(Pdu::Exception(exception)) => {
+            !after_noise
+                || (exception.code.is_defined() && function::is_defined(exception.function))
         }
+        Ok(_) => true,
+        Err(_) => false,
+    };
+    match direction {
+        Some(direction) => reads(direction),
+        None => reads(Direction::Request) || reads(Direction::Response),
     }
 }
 

@@ -41,6 +41,12 @@ pub fn has_layout(function: u8, data: &[u8]) -> bool {
     }
 }
 
+/// Whether a function code (without its exception flag) is one the specification defines,
+/// public or user-defined (65-72, 100-110).
+pub fn is_defined(function: u8) -> bool {
+    matches!(function, 65..=72 | 100..=110) || name(function) != name(0)
+}
+
 /// The name of a function code as the Modbus specification gives it.
 pub fn name(function: u8) -> &'static str {
     match function & !EXCEPTION_FLAG {

@@ -202,6 +202,18 @@ pub fn writes_read_back(port: &[String]) {
     assert_eq!(values_of(port, "read-input-registers 17 1 125").len(), 125);
 }
 
+/// Starts `mbtool serve` with `args`; it is stopped when the guard drops.
+pub fn serve(args: &[&str]) -> Stopped {
+    let child = std::process::Command::new(assert_cmd::cargo::cargo_bin("mbtool"))
+        .arg("serve")
+        .args(args)
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .expect("mbtool serve starts");
+    Stopped(child)
+}
+
 /// A child process that is stopped when the test ends, however it ends.
 pub struct Stopped(pub std::process::Child);
 
