@@ -540,7 +540,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         }
         'mbtool;sniff' {
             [CompletionResult]::new('--input', '--input', [CompletionResultType]::ParameterName, 'Read a raw byte capture instead of the port (''-'' for standard input)')
-            [CompletionResult]::new('--save', '--save', [CompletionResultType]::ParameterName, 'Keep every byte seen, exactly as received, to replay it later with --input')
+            [CompletionResult]::new('--save', '--save', [CompletionResultType]::ParameterName, 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it')
             [CompletionResult]::new('--pcap', '--pcap', [CompletionResultType]::ParameterName, 'Also write the frames to a pcap file for Wireshark (link type 147, see above)')
             [CompletionResult]::new('--slave', '--slave', [CompletionResultType]::ParameterName, 'Show only the frames of this slave; repeatable')
             [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Show only the frames of this function code (3, 0x10); repeatable')

@@ -521,7 +521,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         }
         &'mbtool;sniff'= {
             cand --input 'Read a raw byte capture instead of the port (''-'' for standard input)'
-            cand --save 'Keep every byte seen, exactly as received, to replay it later with --input'
+            cand --save 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it'
             cand --pcap 'Also write the frames to a pcap file for Wireshark (link type 147, see above)'
             cand --slave 'Show only the frames of this slave; repeatable'
             cand --function 'Show only the frames of this function code (3, 0x10); repeatable'

@@ -690,7 +690,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l pdu-addresses -d '
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a raw byte capture instead of the port (\'-\' for standard input)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep every byte seen, exactly as received, to replay it later with --input' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pcap -d 'Also write the frames to a pcap file for Wireshark (link type 147, see above)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l slave -d 'Show only the frames of this slave; repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l function -d 'Show only the frames of this function code (3, 0x10); repeatable' -r

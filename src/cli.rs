@@ -244,9 +244,21 @@ the end of --input).
 
 Frames are found by what the bytes say (each frame's length follows from its function code \
 and byte count, and its CRC must hold), so bytes glued together by a USB adapter are split \
-all the same. When they arrive in bursts the gaps between frames are not real: mbtool says \
-so once. The fix is the adapter's latency timer: \
+all the same, and noise or a cut frame never costs the frame after it. Since random bytes \
+pass a CRC once in 65,536 tries, a frame found right after noise, or of a function whose \
+layout is not known (user-defined 65-72 and 100-110), is only taken when what follows \
+supports it: 3.5 characters of silence on a live line, a frame right after it, the end of \
+the input, or, for a request, its answer. A frame whose CRC fails is shown as a CRC error \
+where the conversation expects a frame (a request in turn, the answer a request awaits); \
+elsewhere its bytes are noise. A long run of noise is counted, and only its first 64 bytes \
+kept. When bytes arrive in bursts the gaps between frames are not real: mbtool says so once. \
+The fix is the adapter's latency timer: \
 echo 1 | sudo tee /sys/bus/usb-serial/devices/ttyUSB0/latency_timer, or --low-latency.
+
+--save FILE keeps every byte as received; live, the times the bytes came go to FILE.timing \
+beside it (one line per read: '<us> <count>', or '<us> idle' when the line went quiet), and \
+--input FILE reads them back when they are there, so that a replay finds the frames the live \
+session found.
 
 --pcap writes the frames for Wireshark with link type DLT_USER0 (147). Once, in Wireshark: \
 Preferences > Protocols > DLT_USER > Edit, add DLT 147 with payload protocol mbrtu.";
@@ -257,8 +269,13 @@ Answer as a simulated slave, for testing masters and HMIs before the device arri
 --port is a serial device or pseudo-terminal (RTU, or ASCII with --mode ascii), or \
 tcp://ADDRESS:PORT (Modbus TCP; tcp://:5020 listens on 127.0.0.1, give 0.0.0.0 to listen on \
 every interface), or rtu+tcp://ADDRESS:PORT (RTU frames over TCP, as behind a gateway). Many \
-TCP clients are served at once; one that sends what is not Modbus, or nothing for 60 s, is \
-dropped without holding up the others.
+TCP clients are served at once; one that sends what is not Modbus, or nothing for 60 s, or \
+does not read its answers for 5 s, is dropped without holding up the others, and when 64 \
+are connected the one silent the longest makes room for a new one. Requests are framed by \
+the MBAP length however the client's bytes are split or delayed, and several in one segment \
+are answered in order. On a serial line the slave finds its requests among other slaves' \
+traffic, noise and cut frames, as sniff does; an ASCII sender may pause up to a second \
+between characters.
 
 Without --data every address of the four tables exists, holding the example values of the \
 Modbus manuals (coils 000020-000056 = CD 6B B2 0E 1B, inputs 100197-100218 = AC DB 35, \
@@ -417,7 +434,8 @@ pub struct SniffArgs {
     #[arg(long, value_name = "FILE")]
     pub input: Option<std::path::PathBuf>,
 
-    /// Keep every byte seen, exactly as received, to replay it later with --input
+    /// Keep every byte seen, exactly as received, to replay it later with --input; live,
+    /// their times go to FILE.timing beside it
     #[arg(long, value_name = "FILE")]
     pub save: Option<std::path::PathBuf>,
 

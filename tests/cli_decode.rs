@@ -383,3 +383,18 @@ fn a_closed_pipe_ends_quietly_with_status_0() {
     assert_eq!(output.status.code(), Some(0));
     assert_eq!(String::from_utf8_lossy(&output.stderr), "");
 }
+
+#[test]
+fn an_rtu_frame_from_slave_58_is_shown_as_hex_though_it_starts_with_a_colon() {
+    // 0x3A is ':', the first character of an ASCII frame; the mode, not the first byte,
+    // says how bytes are shown.
+    let frame = rtu(&[0x3A, 0x03, 0x00, 0x6B, 0x00, 0x03]);
+    let run = decode(&[&frame], b"");
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert!(run.stdout.contains(&frame), "{}", run.stdout);
+    assert!(run.stdout.contains("slave    ┆ 58"), "{}", run.stdout);
+    let json = decode(&["-o", "json", &frame], b"");
+    let value: serde_json::Value = serde_json::from_str(json.stdout.trim()).unwrap();
+    assert_eq!(value["slave"], 58);
+    assert_eq!(value["mode"], "rtu");
+}

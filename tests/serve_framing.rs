@@ -9,7 +9,9 @@ use std::net::TcpStream;
 use std::thread;
 use std::time::Duration;
 
-use common::{free_port, read_frame, serve, values_of, wait_for_listener, write_all, Pty};
+use common::{
+    free_port, random_request, read_frame, serve, values_of, wait_for_listener, write_all, Pty,
+};
 use mbtool::codec::framing::{Event, Framer};
 use mbtool::codec::{Direction, Frame, Mode, Pdu, Request};
 use mbtool::slave::{DataModel, Slave};
@@ -19,29 +21,6 @@ const SERVED: u8 = 17;
 /// Well above 3.5 characters at the default 19200 baud (1.75 ms): the silence a real bus
 /// leaves between frames.
 const SILENCE: Duration = Duration::from_millis(8);
-
-/// A request of the common functions.
-fn request(rng: &mut fastrand::Rng) -> Request {
-    let address = rng.u16(..200);
-    match rng.u8(..4) {
-        0 => Request::ReadHoldingRegisters {
-            address,
-            quantity: rng.u16(1..=10),
-        },
-        1 => Request::ReadCoils {
-            address,
-            quantity: rng.u16(1..=40),
-        },
-        2 => Request::WriteSingleRegister {
-            address,
-            value: rng.u16(..),
-        },
-        _ => Request::WriteMultipleRegisters {
-            address,
-            values: (0..rng.usize(1..6)).map(|_| rng.u16(..)).collect(),
-        },
-    }
-}
 
 fn encode(mode: Mode, slave: u8, transaction: u16, pdu: Pdu) -> Vec<u8> {
     Frame {
@@ -58,7 +37,7 @@ fn encode(mode: Mode, slave: u8, transaction: u16, pdu: Pdu) -> Vec<u8> {
 /// or a frame cut short.
 fn bus_traffic(rng: &mut fastrand::Rng, others: &mut Slave) -> Vec<u8> {
     let other = [5u8, 9, 200][rng.usize(..3)];
-    let asked = request(rng);
+    let asked = random_request(rng);
     let answer = others
         .handle(other, &asked)
         .expect("the other slave answers");
@@ -118,7 +97,7 @@ fn every_request_answered(before: impl Fn(&mut fastrand::Rng, &mut Slave) -> (Ve
     thread::sleep(Duration::from_millis(200));
     for i in 0..100 {
         let (traffic, glued) = before(&mut rng, &mut others);
-        let asked = request(&mut rng);
+        let asked = random_request(&mut rng);
         let expected = encode(
             Mode::Rtu,
             SERVED,
@@ -255,7 +234,7 @@ fn a_hundred_tcp_requests_in_one_write_are_all_answered_in_order() {
     let mut requests = Vec::new();
     let mut expected = Vec::new();
     for transaction in 1..=100u16 {
-        let asked = request(&mut rng);
+        let asked = random_request(&mut rng);
         expected.push(encode(
             Mode::Tcp,
             SERVED,

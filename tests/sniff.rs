@@ -9,8 +9,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command as Process, Stdio};
 use std::time::{Duration, Instant};
 
-use common::{mbtool, rtu, write_all, Pty};
-use mbtool::codec::{Frame, Mode, Pdu, Request};
+use common::{mbtool, random_request, rtu, write_all, Pty};
+use mbtool::codec::{Frame, Mode, Pdu};
 use mbtool::slave::{DataModel, Slave};
 use mbtool::sniff::session::{Filter, Record, Session};
 use serialport::SerialPort;
@@ -234,33 +234,7 @@ fn a_hundred_thousand_pairs_with_noise_lose_and_invent_nothing() {
     let mut noise = 0u64;
     for _ in 0..100_000 {
         let id = [1u8, 2, 17, 247][rng.usize(..4)];
-        let address = rng.u16(..1000);
-        let request = match rng.u8(..6) {
-            0 => Request::ReadCoils {
-                address,
-                quantity: rng.u16(1..=64),
-            },
-            1 => Request::ReadDiscreteInputs {
-                address,
-                quantity: rng.u16(1..=64),
-            },
-            2 => Request::ReadHoldingRegisters {
-                address,
-                quantity: rng.u16(1..=20),
-            },
-            3 => Request::ReadInputRegisters {
-                address,
-                quantity: rng.u16(1..=20),
-            },
-            4 => Request::WriteSingleRegister {
-                address,
-                value: rng.u16(..),
-            },
-            _ => Request::WriteMultipleRegisters {
-                address,
-                values: vec![rng.u16(..); rng.usize(1..8)],
-            },
-        };
+        let request = random_request(&mut rng);
         let answer = slave.handle(id, &request).unwrap();
         for pdu in [Pdu::Request(request), answer] {
             let bytes = Frame {
@@ -430,9 +404,12 @@ fn a_pcap_file_holds_every_frame() {
     assert_eq!(records, want);
 }
 
-/// Runs `mbtool sniff` on a pty while the test writes frames with chosen gaps at 9600
-/// baud; returns sniff's JSON Lines and the gaps the writer made, in microseconds.
-fn live_capture(extra: &[&str]) -> (Vec<serde_json::Value>, Vec<u64>) {
+/// Runs `mbtool sniff` at 9600 baud on a pty while the test writes `chunks`, each followed
+/// by its pause; returns sniff's JSON Lines and when each chunk was written.
+fn sniff_live(
+    chunks: &[(Vec<u8>, Duration)],
+    extra: &[&str],
+) -> (Vec<serde_json::Value>, Vec<Instant>) {
     let pty = Pty::new();
     let mut port = pty.master.try_clone_native().unwrap();
     let mut child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
@@ -449,16 +426,11 @@ fn live_capture(extra: &[&str]) -> (Vec<serde_json::Value>, Vec<u64>) {
     let mut stderr = child.stderr.take().unwrap();
     let mut said = [0u8; 16];
     let _ = stderr.read(&mut said);
-    // 10 bits a character at 9600 baud; the writer sends each frame whole.
-    let char_us = 10.0 * 1e6 / 9600.0;
-    let pauses = [30_000u64, 90_000, 50_000, 120_000, 40_000];
-    let mut writes: Vec<(Instant, usize)> = Vec::new();
-    for (i, frame) in WORKED[4..10].iter().enumerate() {
-        write_all(&mut port, frame);
-        writes.push((Instant::now(), frame.len()));
-        if let Some(pause) = pauses.get(i) {
-            std::thread::sleep(Duration::from_micros(*pause));
-        }
+    let mut written = Vec::new();
+    for (bytes, pause) in chunks {
+        write_all(&mut port, bytes);
+        written.push(Instant::now());
+        std::thread::sleep(*pause);
     }
     std::thread::sleep(Duration::from_millis(100));
     let _ = Process::new("kill")
@@ -470,22 +442,46 @@ fn live_capture(extra: &[&str]) -> (Vec<serde_json::Value>, Vec<u64>) {
         "sniff ended with {:?}",
         output.status
     );
-    // The gap the writer made: from the end of a frame's last character to the start of
-    // the next frame's first, with frames placed as they arrive whole.
-    let gaps = writes
-        .windows(2)
-        .map(|w| {
-            let (t1, _) = w[0];
-            let (t2, n2) = w[1];
-            let start2 = t2.duration_since(t1).as_micros() as f64 - (n2 as f64 - 1.0) * char_us;
-            (start2 - char_us) as u64
-        })
-        .collect();
     // Nothing came back to the writer: sniff never transmits.
     port.set_timeout(Duration::from_millis(50)).unwrap();
     let mut echo = [0u8; 16];
     assert!(port.read(&mut echo).is_err(), "sniff wrote to the bus");
-    (json_lines(&output.stdout), gaps)
+    (json_lines(&output.stdout), written)
+}
+
+/// Runs `mbtool sniff` on a pty while the test writes frames with chosen gaps at 9600
+/// baud; returns sniff's JSON Lines and the gaps the writer made, in microseconds.
+fn live_capture(extra: &[&str]) -> (Vec<serde_json::Value>, Vec<u64>) {
+    let pauses = [30_000u64, 90_000, 50_000, 120_000, 40_000, 0];
+    let chunks: Vec<(Vec<u8>, Duration)> = WORKED[4..10]
+        .iter()
+        .zip(pauses)
+        .map(|(frame, pause)| (frame.to_vec(), Duration::from_micros(pause)))
+        .collect();
+    let (lines, written) = sniff_live(&chunks, extra);
+    // 10 bits a character at 9600 baud; the writer sends each frame whole. The gap the
+    // writer made: from the end of a frame's last character to the start of the next
+    // frame's first, with frames placed as they arrive whole.
+    let char_us = 10.0 * 1e6 / 9600.0;
+    let gaps = written
+        .windows(2)
+        .zip(&chunks[1..])
+        .map(|(w, (next, _))| {
+            let start2 =
+                w[1].duration_since(w[0]).as_micros() as f64 - (next.len() as f64 - 1.0) * char_us;
+            (start2 - char_us) as u64
+        })
+        .collect();
+    (lines, gaps)
+}
+
+/// The frames of a sniff's JSON Lines: bytes and whether valid.
+fn frames_of(lines: &[serde_json::Value]) -> Vec<(serde_json::Value, serde_json::Value)> {
+    lines
+        .iter()
+        .filter(|l| l["type"] == "frame")
+        .map(|l| (l["bytes"].clone(), l["valid"].clone()))
+        .collect()
 }
 
 #[test]
@@ -512,15 +508,7 @@ fn live_on_a_pty_the_gaps_match_and_save_replays() {
         .arg(&saved)
         .output()
         .unwrap();
-    let replayed = json_lines(&replay.stdout);
-    let bytes = |lines: &[serde_json::Value]| -> Vec<serde_json::Value> {
-        lines
-            .iter()
-            .filter(|l| l["type"] == "frame")
-            .map(|l| l["bytes"].clone())
-            .collect()
-    };
-    assert_eq!(bytes(&replayed), bytes(&lines));
+    assert_eq!(frames_of(&json_lines(&replay.stdout)), frames_of(&lines));
     assert_eq!(std::fs::read(&saved).unwrap(), WORKED[4..10].concat());
 }
 
@@ -571,4 +559,108 @@ fn a_first_frame_that_reads_both_ways_says_so() {
         text.lines().next().unwrap_or_default().contains("request?"),
         "{text}"
     );
+}
+
+#[test]
+fn an_rtu_frame_from_slave_58_is_hex_in_json() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("slave58.bin");
+    let frame = rtu(&[0x3A, 0x03, 0x00, 0x6B, 0x00, 0x03]);
+    std::fs::write(&path, &frame).unwrap();
+    let output = mbtool()
+        .args(["sniff", "--json", "--input"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    let lines = json_lines(&output.stdout);
+    assert_eq!(lines[0]["type"], "frame");
+    assert_eq!(lines[0]["bytes"], "3A 03 00 6B 00 03 70 9C");
+    assert_eq!(lines[0]["slave"], 58);
+}
+
+#[test]
+fn where_only_silence_tells_a_replay_of_save_agrees_with_the_live_session() {
+    // A user-defined function (no layout: only the silence after it supports it), noise
+    // glued to a request, a frame cut short, and the frames after them.
+    let quiet = Duration::from_millis(40);
+    let user = rtu(&[0x11, 0x41, 0x05, 0x06, 0x07]);
+    let request = WORKED[4].to_vec();
+    let chunks = vec![
+        (user.clone(), quiet),
+        ([&[0x5A, 0x11, 0x03][..], &request].concat(), quiet),
+        (WORKED[5].to_vec(), quiet),
+        (request[..5].to_vec(), quiet),
+        (request.clone(), quiet),
+        (WORKED[5].to_vec(), quiet),
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    let saved = dir.path().join("bus.bin");
+    let (lines, _) = sniff_live(&chunks, &["--save", saved.to_str().unwrap()]);
+    let live = frames_of(&lines);
+    let hex = |bytes: &[u8]| serde_json::Value::from(common::spaced_hex(bytes));
+    let valid: Vec<serde_json::Value> = live
+        .iter()
+        .filter(|(_, valid)| *valid == true)
+        .map(|(bytes, _)| bytes.clone())
+        .collect();
+    assert_eq!(
+        valid,
+        [
+            &user,
+            &request,
+            &WORKED[5].to_vec(),
+            &request,
+            &WORKED[5].to_vec()
+        ]
+        .map(|f| hex(f))
+    );
+    assert!(
+        saved.with_extension("bin.timing").exists(),
+        "the timing is kept beside the bytes"
+    );
+    let replay = mbtool()
+        .args([
+            "sniff", "--json", "-b", "9600", "--parity", "none", "--input",
+        ])
+        .arg(&saved)
+        .output()
+        .unwrap();
+    assert_eq!(frames_of(&json_lines(&replay.stdout)), live);
+}
+
+/// The peak resident memory of a running process, in kB.
+fn peak_memory_kb(pid: u32) -> u64 {
+    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap();
+    status
+        .lines()
+        .find_map(|line| line.strip_prefix("VmHWM:"))
+        .and_then(|rest| rest.trim().trim_end_matches("kB").trim().parse().ok())
+        .expect("VmHWM in /proc/PID/status")
+}
+
+#[test]
+fn two_hundred_mebibytes_of_00_take_under_50_mb() {
+    let mut child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+        .args(["sniff", "--json", "--input", "-"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let pid = child.id();
+    let mut stdin = child.stdin.take().unwrap();
+    let zeros = vec![0u8; 1 << 20];
+    for _ in 0..200 {
+        std::io::Write::write_all(&mut stdin, &zeros).unwrap();
+    }
+    // Read while sniff still runs: all but a pipe's worth is framed by now.
+    let peak = peak_memory_kb(pid);
+    drop(stdin);
+    let output = child.wait_with_output().unwrap();
+    assert!(output.status.success());
+    assert!(peak < 50_000, "sniff held {peak} kB");
+    let lines = json_lines(&output.stdout);
+    let summary = lines.last().unwrap();
+    assert_eq!(summary["noise_bytes"], 200u64 << 20);
+    assert_eq!(summary["frames"], 0);
 }

@@ -327,6 +327,18 @@ impl Framer {
         let mut in_step = self.in_step;
         while at < self.buffer.len() {
             in_step |= at > 0 && self.silence_after(at - 1);
+            // No frame starts with 00 00 (there is no function 00): a line held low for
+            // hours is passed over a run at a time.
+            let zeros = match self.mode {
+                Mode::Rtu => self.buffer[at..].iter().take_while(|b| **b == 0).count(),
+                _ => 0,
+            };
+            if zeros > 1 {
+                self.add_noise(at, zeros - 1);
+                at += zeros - 1;
+                in_step = false;
+                continue;
+            }
             let look = match self.mode {
                 Mode::Rtu => self.look_rtu(at, in_step),
                 Mode::Ascii => self.look_ascii(at),
@@ -355,17 +367,15 @@ impl Framer {
                     in_step = true;
                 }
                 Look::Noise => {
-                    self.add_noise(at);
+                    self.add_noise(at, 1);
                     at += 1;
                     in_step = false;
                 }
                 Look::NeedMore => break,
                 Look::Lost => {
                     self.lost = true;
-                    while at < self.buffer.len() {
-                        self.add_noise(at);
-                        at += 1;
-                    }
+                    self.add_noise(at, self.buffer.len() - at);
+                    at = self.buffer.len();
                     self.flush_noise(out);
                 }
             }
@@ -403,24 +413,17 @@ impl Framer {
         }
     }
 
-    fn add_noise(&mut self, at: usize) {
-        let byte = self.buffer[at];
-        match self.noise.as_mut() {
-            Some(noise) => {
-                noise.len += 1;
-                if noise.kept.len() < NOISE_KEPT {
-                    noise.kept.push(byte);
-                }
-            }
-            None => {
-                self.noise = Some(Noise {
-                    kept: vec![byte],
-                    len: 1,
-                    offset: self.offset + at as u64,
-                    start: self.times[at],
-                })
-            }
-        }
+    /// Counts `count` bytes from `at` as noise, keeping the first of a run.
+    fn add_noise(&mut self, at: usize, count: usize) {
+        let noise = self.noise.get_or_insert_with(|| Noise {
+            kept: Vec::new(),
+            len: 0,
+            offset: self.offset + at as u64,
+            start: self.times[at],
+        });
+        let room = NOISE_KEPT.saturating_sub(noise.kept.len()).min(count);
+        noise.kept.extend_from_slice(&self.buffer[at..at + room]);
+        noise.len += count as u64;
     }
 
     fn flush_noise(&mut self, out: &mut Vec<Event>) {

@@ -6,7 +6,7 @@ use std::time::{Duration, Instant};
 
 use assert_cmd::Command;
 use mbtool::codec::framing::{Event, Framer};
-use mbtool::codec::{Direction, Frame, Mode};
+use mbtool::codec::{Direction, Frame, Mode, Request};
 use serialport::{SerialPort, TTYPort};
 
 /// mbtool with no connection settings from the environment.
@@ -69,22 +69,29 @@ impl Pty {
 }
 
 /// Reads one whole frame of `mode` travelling in `direction` from `port`, or `None` when
-/// nothing came within `wait`.
+/// nothing came within `wait`. Frames end as on a line at 19200 baud: at 1.75 ms of
+/// silence, where their bytes alone do not tell.
 pub fn read_frame(
     port: &mut TTYPort,
     mode: Mode,
     direction: Direction,
     wait: Duration,
 ) -> Option<(Frame, Vec<u8>)> {
-    let mut framer = Framer::new(mode, 0.0, 0);
-    let deadline = Instant::now() + wait;
+    let mut framer = Framer::new(mode, 573.0, 1750);
+    let started = Instant::now();
+    let deadline = started + wait;
     let mut chunk = [0u8; 512];
     let mut events = Vec::new();
     while Instant::now() < deadline {
-        port.set_timeout(Duration::from_millis(20)).ok()?;
-        // A read that times out gives nothing.
-        if let Ok(n) = port.read(&mut chunk) {
-            framer.push(&chunk[..n], &mut events);
+        port.set_timeout(Duration::from_millis(5)).ok()?;
+        let read = port.read(&mut chunk);
+        let now = started.elapsed().as_micros() as u64;
+        match read {
+            Ok(n) => framer.push_at(&chunk[..n], now, &mut events),
+            // A read that times out gives nothing: the line is quiet.
+            Err(_) => {
+                framer.idle(now, &mut events);
+            }
         }
         for event in events.drain(..) {
             if let Event::Frame(found) = event {
@@ -107,6 +114,50 @@ pub fn rtu(body: &[u8]) -> Vec<u8> {
     let mut frame = body.to_vec();
     frame.extend_from_slice(&mbtool::codec::checksum::crc16(body).to_le_bytes());
     frame
+}
+
+/// A request of the common functions, as a master polling a plant sends them.
+pub fn random_request(rng: &mut fastrand::Rng) -> Request {
+    let address = rng.u16(..1000);
+    match rng.u8(..7) {
+        0 => Request::ReadCoils {
+            address,
+            quantity: rng.u16(1..=64),
+        },
+        1 => Request::ReadDiscreteInputs {
+            address,
+            quantity: rng.u16(1..=64),
+        },
+        2 => Request::ReadHoldingRegisters {
+            address,
+            quantity: rng.u16(1..=20),
+        },
+        3 => Request::ReadInputRegisters {
+            address,
+            quantity: rng.u16(1..=20),
+        },
+        4 => Request::WriteSingleRegister {
+            address,
+            value: rng.u16(..),
+        },
+        5 => Request::WriteSingleCoil {
+            address,
+            value: rng.bool(),
+        },
+        _ => Request::WriteMultipleRegisters {
+            address,
+            values: (0..rng.usize(1..8)).map(|_| rng.u16(..)).collect(),
+        },
+    }
+}
+
+/// Bytes as spaced upper-case hex, as mbtool shows them.
+pub fn spaced_hex(bytes: &[u8]) -> String {
+    bytes
+        .iter()
+        .map(|b| format!("{b:02X}"))
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 /// A free TCP port on 127.0.0.1.
