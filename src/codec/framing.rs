@@ -626,15 +626,15 @@ impl Framer {
     /// bytes and not on when they came.
     fn inner_frame_end(&self, at: usize, end: usize) -> Option<usize> {
         let end = end.min(self.buffer.len());
-        (at + 1..end)
-            .filter_map(|inner| self.known_frame_len(inner).map(|len| inner + len))
-            .filter(|inner_end| *inner_end <= end)
+        (at + 1..end.saturating_sub(MIN_RTU_FRAME - 1))
+            .filter_map(|inner| self.known_frame_len(inner, end).map(|len| inner + len))
             .min()
     }
 
-    /// The length of the whole frame of known layout, CRC and PDU sound, at `at`.
-    fn known_frame_len(&self, at: usize) -> Option<usize> {
-        let data = &self.buffer[at..];
+    /// The length of the whole frame of known layout, CRC and PDU sound, at `at` and ending
+    /// by `end`.
+    fn known_frame_len(&self, at: usize, end: usize) -> Option<usize> {
+        let data = &self.buffer[at..end.min(self.buffer.len())];
         [Direction::Request, Direction::Response]
             .into_iter()
             .find_map(|direction| match rtu_frame_length(data, direction) {
@@ -651,17 +651,37 @@ impl Framer {
     /// after it, not a frame further on, and one of unknown layout may be followed past a
     /// run of 00 or FF.
     fn supported(&self, at: usize, candidate: &Candidate, depth: u8, in_step: bool) -> Tell {
-        let strict = in_step && candidate.known_layout;
         let frame = &self.buffer[at..at + candidate.len];
         let end = at + candidate.len;
-        // After noise a frame of known layout must at least read as a PDU, and may not
-        // swallow a whole frame.
-        if candidate.known_layout
-            && !(pdu_reads(frame, candidate.direction, !in_step)
-                && (in_step || self.inner_frame_end(at, end).is_none()))
+        // After noise a frame of known layout must at least read as a PDU.
+        if candidate.known_layout && !pdu_reads(frame, candidate.direction, !in_step) {
+            return Tell::No;
+        }
+        let tell = self.followed_or_answered(at, candidate, depth, in_step);
+        // Nor may it swallow a whole frame, unless it is the answer awaited. What follows
+        // is cheaper to tell, so it is asked first.
+        if tell == Tell::Yes
+            && candidate.known_layout
+            && !in_step
+            && !self.answers_awaited(frame, candidate.direction)
+            && self.inner_frame_end(at, end).is_some()
         {
             return Tell::No;
         }
+        tell
+    }
+
+    /// The support of `supported` past the candidate's own bytes: silence, the conversation,
+    /// the end of the input, or what follows.
+    fn followed_or_answered(
+        &self,
+        at: usize,
+        candidate: &Candidate,
+        depth: u8,
+        in_step: bool,
+    ) -> Tell {
+        let frame = &self.buffer[at..at + candidate.len];
+        let end = at + candidate.len;
         // A frame of unknown layout may be any length, so that bytes that broke on the way
         // pass their CRC by borrowing the start of the next frame far more often.
         if !candidate.known_layout && !self.silence_after(end - 1) {
@@ -677,12 +697,13 @@ impl Framer {
         if end == self.buffer.len() {
             return if self.ended { Tell::Yes } else { Tell::NotYet };
         }
-        // A frame without a known layout must be followed right after it; one of known
-        // layout may be followed past a run of 00 or FF.
+        // A frame without a known layout must be followed right after it, or past a run of
+        // 00 or FF only in step; one of known layout may be followed past such a run, and,
+        // after noise, by a frame further on.
         let past_runs = candidate.known_layout || in_step;
         let asked = self.asked_by(at, candidate);
         match self.followed_well(end, depth, past_runs, asked) {
-            Tell::No if candidate.known_layout && !strict => match self.overlapped(at, end) {
+            Tell::No if candidate.known_layout && !in_step => match self.overlapped(at, end) {
                 Tell::No => self.frame_further_on(end),
                 Tell::Yes => Tell::No,
                 Tell::NotYet => Tell::NotYet,
@@ -794,7 +815,7 @@ impl Framer {
         let mut more_could_come = false;
         for inner in at + 1..end {
             if self
-                .known_frame_len(inner)
+                .known_frame_len(inner, self.buffer.len())
                 .is_some_and(|len| inner + len > end)
             {
                 return Tell::Yes;
@@ -825,7 +846,9 @@ impl Framer {
     fn frame_further_on(&self, at: usize) -> Tell {
         let at = after_run(&self.buffer, at);
         let reach = at + MAX_RTU_ADU;
-        if (at..reach.min(self.buffer.len())).any(|p| self.known_frame_len(p).is_some()) {
+        if (at..reach.min(self.buffer.len()))
+            .any(|p| self.known_frame_len(p, self.buffer.len()).is_some())
+        {
             return Tell::Yes;
         }
         if reach > self.buffer.len() && !self.quiet && !self.ended {
@@ -887,16 +910,19 @@ impl Framer {
                 Direction::Request => in_step,
                 Direction::Response => self.answers_awaited(frame, Some(direction)),
             };
-            if !plausible
-                || self.inner_frame_end(at, at + len).is_some()
-                || self.holds_unknown_frame(at, at + len)
-            {
+            if !plausible {
                 continue;
             }
+            // What follows first: it is cheaper to tell than what lies inside.
             match self.followed_well(at + len, 0, false, None) {
-                Tell::Yes => return (Tell::Yes, Some((len, direction))),
+                Tell::Yes
+                    if self.inner_frame_end(at, at + len).is_none()
+                        && !self.holds_unknown_frame(at, at + len) =>
+                {
+                    return (Tell::Yes, Some((len, direction)))
+                }
                 Tell::NotYet => return (Tell::NotYet, None),
-                Tell::No => {}
+                _ => {}
             }
         }
         (Tell::No, None)
