@@ -38,6 +38,11 @@ pub struct LogEntry<'a> {
 
 pub type Logger = Arc<dyn Fn(&LogEntry) + Send + Sync>;
 
+/// RTU over TCP has no line to time; a gateway passes each frame whole, so the pause that
+/// ends a frame is taken to be that of a line at 19200 baud (11 bits a character).
+const RTU_OVER_TCP_CHARACTER: Duration = Duration::from_micros(573);
+const RTU_OVER_TCP_SILENCE: Duration = Duration::from_micros(1750);
+
 /// A TCP client that sends nothing for this long is dropped.
 pub const CLIENT_IDLE: Duration = Duration::from_secs(60);
 /// At most this many clients at once; a new one takes the place of the one silent the
@@ -167,8 +172,14 @@ impl Server {
     ) -> io::Result<()> {
         let (character, silence) = match link {
             Link::Serial { character, silence } => (*character, *silence),
+            Link::Tcp { .. } if self.mode != Mode::Tcp => {
+                (RTU_OVER_TCP_CHARACTER, RTU_OVER_TCP_SILENCE)
+            }
             Link::Tcp { .. } => (Duration::ZERO, Duration::ZERO),
         };
+        // Modbus TCP is framed by the MBAP length alone; RTU and ASCII by their bytes and
+        // the pauses between them, over TCP too.
+        let timed = self.mode != Mode::Tcp;
         let mut framer = Framer::new(
             self.mode,
             character.as_secs_f64() * 1e6,
@@ -211,7 +222,7 @@ impl Server {
                 }
             }
             let deadline = match link {
-                Link::Serial { .. } if undecided => Instant::now() + frame_end,
+                _ if undecided => Instant::now() + frame_end,
                 Link::Serial { .. } => Instant::now() + Duration::from_secs(3600),
                 Link::Tcp { idle, .. } => Instant::now() + *idle,
             };
@@ -219,10 +230,11 @@ impl Server {
             let received = transport.receive(&mut chunk, deadline)?;
             let now = started.elapsed().as_micros() as u64;
             match (received, link) {
-                (0, Link::Serial { .. }) => {
+                (0, _) if undecided => {
                     framer.idle(now, &mut events);
                     undecided = false;
                 }
+                (0, Link::Serial { .. }) => {}
                 (0, Link::Tcp { idle, .. }) => {
                     return Err(io::Error::new(
                         io::ErrorKind::TimedOut,
@@ -232,13 +244,16 @@ impl Server {
                         ),
                     ))
                 }
-                (_, Link::Serial { .. }) => {
-                    framer.push_at(&chunk, now, &mut events);
-                    undecided = true;
-                }
-                (_, Link::Tcp { activity, .. }) => {
-                    activity.store(now_ms(), Ordering::Relaxed);
-                    framer.push(&chunk, &mut events);
+                (_, link) => {
+                    if let Link::Tcp { activity, .. } = link {
+                        activity.store(now_ms(), Ordering::Relaxed);
+                    }
+                    if timed {
+                        framer.push_at(&chunk, now, &mut events);
+                        undecided = true;
+                    } else {
+                        framer.push(&chunk, &mut events);
+                    }
                 }
             }
         }

@@ -285,3 +285,22 @@ fn a_client_that_pipelines_and_never_reads_does_not_stop_another() {
     );
     drop(writer.join().unwrap());
 }
+
+#[test]
+fn over_rtu_tcp_a_request_that_breaks_its_layout_gets_its_exception() {
+    let port = free_port();
+    let address = format!("rtu+tcp://127.0.0.1:{port}");
+    let _server = serve(&["--port", &address, "--slave", "17"]);
+    assert!(wait_for_listener(port, Duration::from_secs(10)));
+    let mut client = TcpStream::connect(("127.0.0.1", port)).unwrap();
+    client
+        .set_read_timeout(Some(Duration::from_secs(5)))
+        .unwrap();
+    // Read 0 holding registers: the CRC holds, the quantity does not.
+    client
+        .write_all(&common::rtu(&[17, 0x03, 0x00, 0x6B, 0x00, 0x00]))
+        .unwrap();
+    let mut answer = [0u8; 5];
+    client.read_exact(&mut answer).expect("an answer");
+    assert_eq!(answer.to_vec(), common::rtu(&[17, 0x83, 0x03]));
+}
