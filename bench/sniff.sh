@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Throughput of `mbtool sniff --input capture.bin` over a 100 MB capture: the real wizmodbus
-# recording (../shared/captures, 9600 8N1, frames with turnaround noise bytes) repeated.
+# recording (tests/captures, 9600 8N1, frames with turnaround noise bytes) repeated.
 # Three runs: JSON Lines, the table, and a filter that shows nothing (`--slave 250`: the
 # framing and pairing alone). Prints MB/s and frames/s.
 #
@@ -13,7 +13,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 python3 - "$megabytes" "$work/capture.bin" <<'PY'
 import sys
-source = open("../shared/captures/wizmodbus.bin", "rb").read()
+source = open("tests/captures/wizmodbus.bin", "rb").read()
 size = int(sys.argv[1]) * 1000 * 1000
 with open(sys.argv[2], "wb") as out:
     out.write(source * (size // len(source)))

@@ -1,4 +1,4 @@
-//! The worked frames of the source manuals (../shared/seeds/README.md, every CRC checked):
+//! The worked frames of the Modbus manuals (every CRC checked):
 //! each decodes to the fields the manuals describe, and `encode` builds each request byte
 //! for byte.
 

@@ -16,7 +16,7 @@ use mbtool::sniff::session::{Filter, Record, Session};
 use serialport::SerialPort;
 
 fn captures() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/captures")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/captures")
 }
 
 /// What a capture's frames.txt lists: ("frame", hex, "req"/"resp") or ("noise", hex, "").
