@@ -5,7 +5,7 @@
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
 use mbtool::codec::framing::Framer;
 use mbtool::codec::{Direction, Frame, Mode, Pdu, Request};
-use mbtool::report::describe_frame;
+use mbtool::describe::describe_frame;
 
 /// The worked frames of the manuals: requests and answers of functions 01-06 and 16.
 const FRAMES: &[&[u8]] = &[

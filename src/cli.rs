@@ -7,6 +7,7 @@ use crate::address::Table;
 use crate::codec::{Direction, Mode};
 use crate::transport::serial::Parity;
 use crate::values::{ByteOrder, ValueType};
+use mbtool_core::choice::Choice;
 
 const ABOUT: &str = "Modbus RTU/ASCII/TCP diagnostics: read, write, decode, encode";
 
@@ -69,7 +70,7 @@ pub struct ConnectionArgs {
     pub baud: u32,
 
     /// Serial parity
-    #[arg(long, global = true, env = "MBTOOL_PARITY", value_enum, default_value_t = Parity::Even)]
+    #[arg(long, global = true, env = "MBTOOL_PARITY", value_parser = choice::<Parity>(), default_value = Parity::Even.name())]
     pub parity: Parity,
 
     /// Serial data bits [default: 8, 7 in ASCII mode]
@@ -157,11 +158,11 @@ pub struct DataArgs {
     pub pdu_addresses: bool,
 
     /// Register value type, for showing values read and for converting values to write
-    #[arg(short = 't', long = "type", global = true, value_enum, default_value_t)]
+    #[arg(short = 't', long = "type", global = true, value_parser = choice::<ValueType>(), default_value = ValueType::default().name())]
     pub value_type: ValueType,
 
     /// Byte order of values wider than 16 bits: A is the most significant byte
-    #[arg(long, global = true, value_enum, default_value_t)]
+    #[arg(long, global = true, value_parser = choice::<ByteOrder>(), default_value = ByteOrder::default().name())]
     pub order: ByteOrder,
 
     /// Split reads and writes into requests of at most N coils or registers, for devices
@@ -518,4 +519,18 @@ pub struct GenerateArgs {
     /// The folder that receives completions/ and man/
     #[arg(long, default_value = ".")]
     pub dir: std::path::PathBuf,
+}
+
+/// The parser of a setting the core offers by name: its names, each with its help, are
+/// what clap lists in `--help`, the man pages and the completions.
+fn choice<T: Choice + Clone + Send + Sync>() -> impl clap::builder::TypedValueParser<Value = T> {
+    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+    PossibleValuesParser::new(T::ALL.iter().map(|choice| {
+        let value = PossibleValue::new(choice.name());
+        match choice.help() {
+            Some(help) => value.help(help),
+            None => value,
+        }
+    }))
+    .try_map(|name| T::from_name(&name).ok_or("not one of the possible values"))
 }

@@ -1,25 +1,17 @@
-//! mbtool: Modbus diagnostics. The library holds everything but the command-line edge:
-//! the pure codec, addresses and value types, request planning, frame reports and their
-//! output formats.
+//! mbtool's command line: the clap definition, the settings it resolves, one module per
+//! command, the output formats, the docs generator and the exit codes. The Modbus work is
+//! done by `mbtool-core`, re-exported here under its own module names.
 
-pub mod address;
+pub use mbtool_core::{
+    address, codec, describe, duration, hexinput, master, number, server, sim, slave, sniff,
+    transport, values,
+};
+
 pub mod cli;
-pub mod codec;
 pub mod connection;
 pub mod docs;
-pub mod duration;
 pub mod error;
-pub mod hexinput;
 pub mod lines;
-pub mod master;
-pub mod number;
 pub mod output;
 pub mod plan;
 pub mod poll;
-pub mod report;
-pub mod server;
-pub mod sim;
-pub mod slave;
-pub mod sniff;
-pub mod transport;
-pub mod values;

@@ -9,6 +9,7 @@ use crate::codec::{limits, Request};
 use crate::error::{Error, Result};
 use crate::number::{parse_in_range, parse_int};
 use crate::values::{ByteOrder, ValueType};
+use mbtool_core::choice::Choice;
 
 /// What the options say about addresses, values and request sizes.
 #[derive(Clone, Copy, Debug, Default)]

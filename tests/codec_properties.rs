@@ -6,8 +6,8 @@ use mbtool::codec::pdu::{DeviceIdentification, DeviceObject};
 use mbtool::codec::{
     Direction, Envelope, Exception, ExceptionCode, Frame, Mode, Pdu, Reading, Request, Response,
 };
+use mbtool::describe::describe_frame;
 use mbtool::hexinput::frame_bytes;
-use mbtool::report::describe_frame;
 use proptest::collection::vec;
 use proptest::prelude::*;
 

@@ -4,8 +4,8 @@
 
 use assert_cmd::Command;
 use mbtool::codec::{bits, Direction, Frame, Mode, Pdu, Request, Response};
+use mbtool::describe::{describe_frame, Kind, Values};
 use mbtool::hexinput::parse_hex;
-use mbtool::report::{describe_frame, Kind, Values};
 
 fn bytes(hex: &str) -> Vec<u8> {
     let mut out = Vec::new();

@@ -27,5 +27,5 @@ if ! python3 -c 'import pymodbus, serial' 2>/dev/null; then
 fi
 
 cargo fmt --all -- --check
-cargo clippy --all-targets --quiet -- -D warnings
-cargo test --all-targets
+cargo clippy --workspace --all-targets --quiet -- -D warnings
+cargo test --workspace --all-targets

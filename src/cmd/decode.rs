@@ -6,10 +6,10 @@ use anyhow::Result;
 
 use mbtool::cli::{Cli, DecodeArgs};
 use mbtool::codec::{limits, Direction, Mode};
+use mbtool::describe::describe_frame;
 use mbtool::hexinput::frame_bytes;
 use mbtool::lines::{Line, Lines};
 use mbtool::output::{self, decode::DecodeWriter};
-use mbtool::report::describe_frame;
 
 /// Longer lines cannot be a frame: even spaced hex of the longest ASCII frame is shorter.
 const MAX_LINE: usize = 4 * limits::MAX_ASCII_ADU;

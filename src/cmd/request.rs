@@ -10,6 +10,7 @@ use mbtool::address::{reference, Table};
 use mbtool::cli::{Cli, RequestCommand};
 use mbtool::codec::{Frame, Mode, Pdu, Request, Response};
 use mbtool::connection;
+use mbtool::describe::describe_frame;
 use mbtool::error::Error;
 use mbtool::master::{Master, Reply, Traffic};
 use mbtool::output::decode::DecodeWriter;
@@ -17,7 +18,6 @@ use mbtool::output::read::{write_done, ReadData, ReadResult, ReadWriter, WriteDo
 use mbtool::output::{self, encode::frame_text};
 use mbtool::plan::Plan;
 use mbtool::poll::PollStats;
-use mbtool::report::describe_frame;
 
 pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
     // The whole command line is checked before a port is opened.

@@ -1,5 +1,6 @@
 //! How `decode` shows frames: a table per frame, JSON Lines, bare values, or CSV.
 
+use mbtool_core::choice::Choice;
 use std::io::{self, Write};
 
 use comfy_table::{Cell, Color};
@@ -8,7 +9,7 @@ use super::{csv_field, new_table};
 use crate::address::{reference, Table};
 use crate::cli::OutputFormat;
 use crate::codec::{Checksum, ExceptionCode, Mode};
-use crate::report::{spaced_hex, Fields, FrameReport, Values};
+use crate::describe::{spaced_hex, Fields, FrameReport, Values};
 use crate::values::{ByteOrder, ValueType};
 
 pub struct DecodeWriter {
@@ -224,7 +225,7 @@ impl DecodeWriter {
         };
         match values {
             Values::Registers(registers) => {
-                header.extend(["hex".to_string(), self.value_type.name()]);
+                header.extend(["hex".to_string(), self.value_type.name().to_string()]);
                 table.set_header(header);
                 let width = self.value_type.width();
                 for (i, chunk) in registers.chunks_exact(width).enumerate() {

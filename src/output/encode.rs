@@ -6,7 +6,7 @@ use serde::Serialize;
 
 use crate::cli::OutputFormat;
 use crate::codec::Mode;
-use crate::report::spaced_hex;
+use crate::describe::spaced_hex;
 
 #[derive(Serialize)]
 struct EncodedFrame<'a> {

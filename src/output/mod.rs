@@ -12,7 +12,7 @@ use std::io::{self, IsTerminal, Write};
 use comfy_table::{presets, Table};
 
 use crate::codec::{Pdu, Request};
-use crate::report::{describe_pdu, Fields, Values};
+use crate::describe::{describe_pdu, Fields, Values};
 
 /// Standard output, buffered unless it is a terminal, where each line shows at once.
 pub fn stdout() -> Box<dyn Write> {

@@ -1,5 +1,6 @@
 //! How read results and write confirmations are shown.
 
+use mbtool_core::choice::Choice;
 use std::io::{self, Write};
 
 use comfy_table::{Cell, Color};
@@ -171,7 +172,7 @@ impl ReadWriter {
                 if bits {
                     header.push("state".into());
                 } else {
-                    header.extend(["hex".to_string(), self.value_type.name()]);
+                    header.extend(["hex".to_string(), self.value_type.name().to_string()]);
                 }
                 if self.previous.is_some() {
                     header.push("changed".into());

@@ -6,7 +6,7 @@ use serde::Serialize;
 
 use crate::codec::function;
 use crate::codec::Pdu;
-use crate::report::{describe_pdu, Fields};
+use crate::describe::{describe_pdu, Fields};
 use crate::server::{LogEntry, Outcome};
 
 #[derive(Serialize)]

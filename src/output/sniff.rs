@@ -8,7 +8,7 @@ use super::{csv_field, fields_summary, request_summary, shown_values};
 use crate::cli::OutputFormat;
 use crate::codec::function;
 use crate::codec::ExceptionCode;
-use crate::report::{describe_pdu, spaced_hex, FrameReport, Kind, Values};
+use crate::describe::{describe_pdu, spaced_hex, FrameReport, Kind, Values};
 use crate::sniff::session::{Counts, FrameRecord, Record};
 
 const RED: &str = "\x1b[31m";
@@ -53,7 +53,7 @@ struct JsonUnanswered {
     slave: u8,
     function: u8,
     #[serde(flatten)]
-    request: crate::report::Fields,
+    request: crate::describe::Fields,
     #[serde(skip_serializing_if = "Option::is_none")]
     waited: Option<f64>,
 }

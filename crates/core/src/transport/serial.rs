@@ -1,5 +1,6 @@
 //! A serial line (RS-485/RS-232 adapter, or a pseudo-terminal in tests).
 
+use crate::choice::Choice;
 use std::io::{self, Read, Write};
 use std::time::{Duration, Instant};
 
@@ -16,11 +17,23 @@ pub struct LineSettings {
     pub stop_bits: u8,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Parity {
     None,
     Even,
     Odd,
+}
+
+impl Choice for Parity {
+    const ALL: &'static [Self] = &[Parity::None, Parity::Even, Parity::Odd];
+
+    fn name(self) -> &'static str {
+        match self {
+            Parity::None => "none",
+            Parity::Even => "even",
+            Parity::Odd => "odd",
+        }
+    }
 }
 
 impl LineSettings {

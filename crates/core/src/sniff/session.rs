@@ -9,7 +9,7 @@ use super::pairing::{Pairer, Role, Unanswered};
 use crate::address::{reference, Table};
 use crate::codec::framing::{Broken, Event, Found, Framer, Noise};
 use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
-use crate::report::{describe_frame, describe_reading, FrameReport, Kind, Values};
+use crate::describe::{describe_frame, describe_reading, FrameReport, Kind, Values};
 
 /// What a session reports, in order.
 #[derive(Clone, Debug, PartialEq)]

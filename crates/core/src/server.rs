@@ -213,7 +213,9 @@ impl Server {
                             io::ErrorKind::InvalidData,
                             format!(
                                 "{peer} sent what is not Modbus TCP ({}): connection closed",
-                                crate::report::spaced_hex(&noise.kept[..noise.kept.len().min(12)])
+                                crate::describe::spaced_hex(
+                                    &noise.kept[..noise.kept.len().min(12)]
+                                )
                             ),
                         ));
                     }

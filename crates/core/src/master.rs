@@ -225,7 +225,7 @@ impl Master {
                     heard.problem.get_or_insert(format!(
                         "{} bytes that are no Modbus TCP frame ({})",
                         noise.len,
-                        crate::report::spaced_hex(&noise.kept[..noise.kept.len().min(12)])
+                        crate::describe::spaced_hex(&noise.kept[..noise.kept.len().min(12)])
                     ));
                 }
                 // Noise on a serial line: the answer may still stand after it.
@@ -294,7 +294,8 @@ impl Master {
                 Err(match heard.problem {
                     Some(reason) => MasterError::BadFrame { slave, reason },
                     None if unexplained > 0 => {
-                        let shown = crate::report::spaced_hex(&received[..received.len().min(32)]);
+                        let shown =
+                            crate::describe::spaced_hex(&received[..received.len().min(32)]);
                         MasterError::BadFrame {
                             slave,
                             reason: format!(

@@ -20,6 +20,7 @@ use std::path::Path;
 use thiserror::Error;
 
 use crate::address::{parse_reference_span, reference, Table};
+use crate::choice::Choice;
 use crate::slave::DataModel;
 use crate::values::{ByteOrder, ValueType};
 
@@ -55,14 +56,6 @@ fn words(text: &str) -> Result<Vec<String>, String> {
     Ok(words)
 }
 
-fn value_type(word: &str) -> Option<ValueType> {
-    clap::ValueEnum::from_str(word, true).ok()
-}
-
-fn byte_order(word: &str) -> Option<ByteOrder> {
-    clap::ValueEnum::from_str(word, true).ok()
-}
-
 fn coil(word: &str) -> Result<bool, String> {
     match word.to_ascii_lowercase().as_str() {
         "1" | "on" | "true" => Ok(true),
@@ -82,11 +75,11 @@ fn entry(model: &mut DataModel, line: &str) -> Result<(), String> {
     let mut words = words(values)?;
     let mut order = ByteOrder::Abcd;
     let mut kind = ValueType::U16;
-    if let Some(o) = words.last().and_then(|w| byte_order(w)) {
+    if let Some(o) = words.last().and_then(|w| ByteOrder::from_name(w)) {
         order = o;
         words.pop();
     }
-    if let Some(t) = words.last().and_then(|w| value_type(w)) {
+    if let Some(t) = words.last().and_then(|w| ValueType::from_name(w)) {
         kind = t;
         words.pop();
     }

@@ -5,9 +5,10 @@ use std::fmt;
 
 use serde::Serialize;
 
+use crate::choice::Choice;
 use crate::number::parse_int;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum ValueType {
     #[default]
     U16,
@@ -24,21 +25,76 @@ pub enum ValueType {
 }
 
 /// Byte order of a value wider than one register, A being the most significant byte.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum ByteOrder {
     /// Big-endian: high word first, high byte first.
     #[default]
-    #[value(name = "ABCD")]
     Abcd,
     /// Low word first (word swap), as many PLCs store 32-bit values.
-    #[value(name = "CDAB")]
     Cdab,
     /// High word first, bytes swapped within each word.
-    #[value(name = "BADC")]
     Badc,
     /// Little-endian.
-    #[value(name = "DCBA")]
     Dcba,
+}
+
+impl Choice for ValueType {
+    const ALL: &'static [Self] = &[
+        ValueType::U16,
+        ValueType::I16,
+        ValueType::U32,
+        ValueType::I32,
+        ValueType::F32,
+        ValueType::U64,
+        ValueType::I64,
+        ValueType::F64,
+        ValueType::Hex,
+        ValueType::Bin,
+        ValueType::Ascii,
+    ];
+
+    fn name(self) -> &'static str {
+        match self {
+            ValueType::U16 => "u16",
+            ValueType::I16 => "i16",
+            ValueType::U32 => "u32",
+            ValueType::I32 => "i32",
+            ValueType::F32 => "f32",
+            ValueType::U64 => "u64",
+            ValueType::I64 => "i64",
+            ValueType::F64 => "f64",
+            ValueType::Hex => "hex",
+            ValueType::Bin => "bin",
+            ValueType::Ascii => "ascii",
+        }
+    }
+}
+
+impl Choice for ByteOrder {
+    const ALL: &'static [Self] = &[
+        ByteOrder::Abcd,
+        ByteOrder::Cdab,
+        ByteOrder::Badc,
+        ByteOrder::Dcba,
+    ];
+
+    fn name(self) -> &'static str {
+        match self {
+            ByteOrder::Abcd => "ABCD",
+            ByteOrder::Cdab => "CDAB",
+            ByteOrder::Badc => "BADC",
+            ByteOrder::Dcba => "DCBA",
+        }
+    }
+
+    fn help(self) -> Option<&'static str> {
+        Some(match self {
+            ByteOrder::Abcd => "Big-endian: high word first, high byte first",
+            ByteOrder::Cdab => "Low word first (word swap), as many PLCs store 32-bit values",
+            ByteOrder::Badc => "High word first, bytes swapped within each word",
+            ByteOrder::Dcba => "Little-endian",
+        })
+    }
 }
 
 /// A value read from registers, ready to be shown.
@@ -66,13 +122,6 @@ impl fmt::Display for Value {
 }
 
 impl ValueType {
-    /// The name as `--type` spells it.
-    pub fn name(self) -> String {
-        clap::ValueEnum::to_possible_value(&self)
-            .map(|value| value.get_name().to_string())
-            .unwrap_or_default()
-    }
-
     /// How many registers one value takes.
     pub fn width(self) -> usize {
         match self {
