@@ -1,6 +1,7 @@
 //! Codec throughput: frames decoded and described per second, without any I/O.
 //!
 //! cargo bench --bench codec
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
 use mbtool::codec::framing::Framer;

@@ -1,4 +1,5 @@
 //! `mbtool decode` as a user meets it: input spellings, nasty input, exit codes, output.
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 use std::io::{BufRead, BufReader, Write};
 use std::process::{Command as Process, Stdio};

@@ -1,5 +1,6 @@
 //! `mbtool encode` and the rule that a bad command line is refused before anything happens.
 //! Expected CRCs were computed with an independent CRC-16/MODBUS (bit by bit, poly 0xA001).
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 use assert_cmd::Command;
 

@@ -1,5 +1,6 @@
 //! Properties of the codec: every frame we encode decodes back to itself in all three ADUs,
 //! a stream decodes the same fed byte by byte or all at once, and no input panics.
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 use mbtool::codec::framing::{Event, Framer};
 use mbtool::codec::pdu::{DeviceIdentification, DeviceObject};

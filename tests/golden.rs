@@ -1,6 +1,7 @@
 //! The worked frames of the Modbus manuals (every CRC checked):
 //! each decodes to the fields the manuals describe, and `encode` builds each request byte
 //! for byte.
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 use assert_cmd::Command;
 use mbtool::codec::{bits, Direction, Frame, Mode, Pdu, Request, Response};

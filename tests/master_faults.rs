@@ -1,5 +1,6 @@
 //! The master against a strict scripted slave on a pseudo-terminal, which plays exact bytes:
 //! every fault a real bus produces gets the exit status and message CLI.md promises.
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 mod common;
 

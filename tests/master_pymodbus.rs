@@ -1,6 +1,7 @@
 //! mbtool's master against pymodbus as a slave: RTU and ASCII over a socat pty pair, and
 //! TCP on 127.0.0.1. pymodbus is a happy-path peer (it answers for slave ids it does not
 //! have and answers broadcasts), so only the writes and reads of a healthy bus are checked.
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 mod common;
 

@@ -1,5 +1,6 @@
 //! Every request command against `--port sim`, the built-in slave: it holds the manuals'
 //! example values, and each run of mbtool starts from them.
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 mod common;
 

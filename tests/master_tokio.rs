@@ -1,6 +1,7 @@
 //! mbtool's master against tokio-modbus, an implementation we did not write, as a slave on
 //! TCP (127.0.0.1) and in RTU on a pseudo-terminal pair: every read and write command,
 //! counts at the protocol limits, and values read back after writing them.
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 mod common;
 

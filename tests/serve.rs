@@ -1,6 +1,7 @@
 //! `mbtool serve` as masters we did not write see it (mbpoll, pymodbus) and as mbtool's own
 //! master sees it: every table read and written, exceptions, injected faults, data files,
 //! and a TCP server that one bad client cannot stop.
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 mod common;
 

@@ -1,6 +1,7 @@
 //! `mbtool sniff`: the real captures come out as listed beside them, glued frames are split,
 //! noise is counted and never invents a frame, a live pty capture reports the gaps the
 //! writer made, and --save replays as --input.
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 mod common;
 

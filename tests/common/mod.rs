@@ -1,5 +1,6 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 use std::io::{Read, Write};
 use std::time::{Duration, Instant};
