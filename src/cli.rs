@@ -506,7 +506,7 @@ pub struct ServeArgs {
     pub quiet: bool,
 
     /// Device identification: vendor name
-    #[arg(long, default_value = "mbtool")]
+    #[arg(long, default_value = crate::slave::DEFAULT_VENDOR)]
     pub vendor: String,
 
     /// Device identification: product code

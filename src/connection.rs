@@ -24,16 +24,41 @@ pub fn endpoint(cli: &Cli) -> Result<Endpoint> {
     Endpoint::parse(port).map_err(Error::Usage)
 }
 
-/// The framing on the wire: TCP for tcp://, otherwise --mode (RTU by default).
-pub fn mode(cli: &Cli, endpoint: &Endpoint) -> Result<Mode> {
-    match (endpoint, cli.connection.mode) {
-        (Endpoint::Tcp { .. }, None | Some(ModeArg::Tcp)) => Ok(Mode::Tcp),
-        (Endpoint::Tcp { .. }, Some(_)) => Err(Error::usage(
+/// What a command does with `--port`. The framing rules are the same for every command;
+/// the role changes only what a mistake is told, and `encode`, which sends nothing, takes
+/// any `--mode`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Role {
+    Master,
+    Serve,
+    Sniff,
+    Encode,
+}
+
+/// The framing on the wire: TCP for tcp://, otherwise --mode (RTU by default). `endpoint`
+/// is `None` where the command has no port to go by.
+pub fn mode(cli: &Cli, endpoint: Option<&Endpoint>, role: Role) -> Result<Mode> {
+    let tcp_port = matches!(endpoint, Some(Endpoint::Tcp { .. }));
+    match (tcp_port, cli.connection.mode, role) {
+        (_, Some(mode), Role::Encode) => Ok(mode.into()),
+        (_, Some(ModeArg::Tcp), Role::Sniff) => Err(Error::usage(
+            "sniff watches serial lines: --mode rtu or ascii",
+        )),
+        (true, None | Some(ModeArg::Tcp), _) => Ok(Mode::Tcp),
+        (true, Some(_), Role::Serve) => Err(Error::usage(
+            "tcp:// serves Modbus TCP: for RTU frames over TCP use rtu+tcp://",
+        )),
+        (true, Some(_), _) => Err(Error::usage(
             "tcp:// carries Modbus TCP frames: for RTU through a gateway use rtu+tcp://HOST:PORT",
         )),
-        (_, Some(ModeArg::Tcp)) => Err(Error::usage("--mode tcp needs a tcp://HOST[:PORT] port")),
-        (_, Some(mode)) => Ok(mode.into()),
-        (_, None) => Ok(Mode::Rtu),
+        (false, Some(ModeArg::Tcp), Role::Serve) => {
+            Err(Error::usage("--mode tcp needs a tcp:// port"))
+        }
+        (false, Some(ModeArg::Tcp), _) => {
+            Err(Error::usage("--mode tcp needs a tcp://HOST[:PORT] port"))
+        }
+        (false, Some(mode), _) => Ok(mode.into()),
+        (false, None, _) => Ok(Mode::Rtu),
     }
 }
 
@@ -76,11 +101,9 @@ pub fn open(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Box<dyn Transp
     })
 }
 
-/// A master on the port the options name.
-pub fn master(cli: &Cli) -> Result<Master> {
-    let endpoint = endpoint(cli)?;
-    let mode = mode(cli, &endpoint)?;
-    let transport = open(cli, &endpoint, mode)?;
+/// A master on `endpoint`, framing in `mode`, as the options resolved them.
+pub fn master(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
+    let transport = open(cli, endpoint, mode)?;
     let serial_line = matches!(endpoint, Endpoint::Serial(_) | Endpoint::RtuOverTcp { .. });
     let line = line_settings(cli, mode);
     let gap = cli.connection.frame_gap.unwrap_or_else(|| match mode {

@@ -8,7 +8,7 @@ use crate::cli::RequestCommand;
 use crate::codec::{limits, Request};
 use crate::error::{Error, Result};
 use crate::number::{parse_in_range, parse_int};
-use crate::values::{ByteOrder, ValueType};
+use crate::values::{parse_coil, ByteOrder, ValueType};
 use mbtool_core::choice::Choice;
 
 /// What the options say about addresses, values and request sizes.
@@ -143,17 +143,6 @@ fn read_plan(slave: u8, span: Span, count: Option<&str>, options: &PlanOptions) 
     })
 }
 
-/// A coil value: on/off, 1/0, true/false.
-fn parse_coil(text: &str) -> Result<bool> {
-    match text.to_ascii_lowercase().as_str() {
-        "on" | "1" | "true" => Ok(true),
-        "off" | "0" | "false" => Ok(false),
-        _ => Err(Error::usage(format!(
-            "'{text}' is not a coil value: give on, off, 1, 0, true or false"
-        ))),
-    }
-}
-
 /// Coil values: each on/off/1/0/true/false, or one bit string such as `10110`.
 fn parse_coils(values: &[String]) -> Result<Vec<bool>> {
     if let [bits] = values {
@@ -161,7 +150,10 @@ fn parse_coils(values: &[String]) -> Result<Vec<bool>> {
             return Ok(bits.bytes().map(|b| b == b'1').collect());
         }
     }
-    values.iter().map(|v| parse_coil(v)).collect()
+    values
+        .iter()
+        .map(|v| parse_coil(v).map_err(Error::Usage))
+        .collect()
 }
 
 fn parse_registers(values: &[String], options: &PlanOptions) -> Result<Vec<u16>> {

@@ -4,18 +4,21 @@ use anyhow::Result;
 
 use mbtool::cli::{Cli, RequestCommand};
 use mbtool::codec::{Frame, Mode, Pdu};
+use mbtool::connection::{self, Role};
 use mbtool::error::Error;
 use mbtool::output::{self, encode::write_frame};
 use mbtool::plan::{plan, Plan, PlanOptions};
+use mbtool::transport::Endpoint;
 
 /// The framing: --mode, else TCP for a tcp:// port, else RTU. Unlike a connection, encode
 /// accepts --mode tcp without a port.
 fn mode(cli: &Cli) -> Mode {
-    match (cli.connection.mode, cli.connection.port.as_deref()) {
-        (Some(mode), _) => mode.into(),
-        (None, Some(port)) if port.starts_with("tcp://") => Mode::Tcp,
-        _ => Mode::Rtu,
-    }
+    let endpoint = cli
+        .connection
+        .port
+        .as_deref()
+        .and_then(|port| Endpoint::parse(port).ok());
+    connection::mode(cli, endpoint.as_ref(), Role::Encode).unwrap_or(Mode::Rtu)
 }
 
 /// Checks the command line of a request command and plans its requests.

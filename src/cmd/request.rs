@@ -25,8 +25,9 @@ pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
     if cli.poll.poll.is_some() && plan.reads.is_none() {
         return Err(Error::usage("--poll repeats reads; a write or raw request runs once").into());
     }
-    let mode = connection::mode(cli, &connection::endpoint(cli)?)?;
-    let mut master = connection::master(cli)?;
+    let endpoint = connection::endpoint(cli)?;
+    let mode = connection::mode(cli, Some(&endpoint), connection::Role::Master)?;
+    let mut master = connection::master(cli, &endpoint, mode)?;
     if cli.output.verbose {
         master.trace(tracer(mode));
     }

@@ -7,9 +7,8 @@ use std::sync::Arc;
 use anyhow::{Context, Result};
 
 use mbtool::address::parse_reference_span;
-use mbtool::cli::{Cli, ModeArg, OutputFormat, ServeArgs};
-use mbtool::codec::Mode;
-use mbtool::connection::line_settings;
+use mbtool::cli::{Cli, OutputFormat, ServeArgs};
+use mbtool::connection::{line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::output::serve::write_entry;
 use mbtool::server::{Link, Logger, Server};
@@ -17,9 +16,6 @@ use mbtool::slave::faults::Faults;
 use mbtool::slave::{datafile, DataModel, Identity, Slave};
 use mbtool::transport::serial::Serial;
 use mbtool::transport::Endpoint;
-
-/// The slave id of the manuals' examples, answered when no --slave is given.
-const DEFAULT_SLAVE: u8 = 17;
 
 /// The port to serve on; `tcp://:PORT` listens on 127.0.0.1.
 fn endpoint(cli: &Cli) -> Result<Endpoint, Error> {
@@ -67,22 +63,9 @@ fn data_model(args: &ServeArgs) -> Result<DataModel> {
 
 pub fn run(cli: &Cli, args: &ServeArgs) -> Result<u8> {
     let endpoint = endpoint(cli)?;
-    let mode = match (&endpoint, cli.connection.mode) {
-        (Endpoint::Tcp { .. }, None | Some(ModeArg::Tcp)) => Mode::Tcp,
-        (Endpoint::Tcp { .. }, Some(_)) => {
-            return Err(Error::usage(
-                "tcp:// serves Modbus TCP: for RTU frames over TCP use rtu+tcp://",
-            )
-            .into())
-        }
-        (_, Some(ModeArg::Tcp)) => {
-            return Err(Error::usage("--mode tcp needs a tcp:// port").into())
-        }
-        (_, Some(mode)) => mode.into(),
-        (_, None) => Mode::Rtu,
-    };
+    let mode = mode(cli, Some(&endpoint), Role::Serve)?;
     let ids = if args.slaves.is_empty() {
-        vec![DEFAULT_SLAVE]
+        vec![mbtool::slave::EXAMPLE_SLAVE]
     } else {
         args.slaves.clone()
     };

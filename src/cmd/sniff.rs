@@ -9,15 +9,15 @@ use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 
 use anyhow::{Context, Result};
 
-use mbtool::cli::{Cli, ModeArg, SniffArgs};
-use mbtool::codec::{checksum::crc16, Envelope, Mode};
-use mbtool::connection::line_settings;
+use mbtool::cli::{Cli, SniffArgs};
+use mbtool::codec::Mode;
+use mbtool::connection::{line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::output::{self, sniff::SniffWriter};
-use mbtool::sniff::pcap::PcapWriter;
+use mbtool::sniff::pcap::{self, PcapWriter};
 use mbtool::sniff::session::{Filter, Record, Session};
 use mbtool::sniff::timing;
-use mbtool::transport::serial::{LineSettings, Serial};
+use mbtool::transport::serial::{self, LineSettings, Serial};
 use mbtool::transport::{Endpoint, Transport};
 
 /// Where the records go: the screen (or a pipe), and the pcap file.
@@ -37,7 +37,7 @@ impl Sinks {
             if let (Some(pcap), Record::Frame(frame)) = (self.pcap.as_mut(), &record) {
                 pcap.frame(
                     self.epoch_us + frame.at,
-                    &rtu_form(self.mode, &frame.found.bytes),
+                    &pcap::rtu_form(self.mode, &frame.found.bytes),
                 )?;
             }
             self.writer.record(&mut self.out, &record)?;
@@ -49,52 +49,20 @@ impl Sinks {
     }
 }
 
-/// Wireshark reads Modbus RTU: an ASCII frame is written as the RTU frame it carries.
-fn rtu_form(mode: Mode, bytes: &[u8]) -> Vec<u8> {
-    match (mode, Envelope::open(mode, bytes)) {
-        (Mode::Ascii, Ok(envelope)) => {
-            let mut frame = vec![envelope.slave];
-            frame.extend_from_slice(&envelope.pdu);
-            let crc = crc16(&frame);
-            frame.extend_from_slice(&crc.to_le_bytes());
-            frame
-        }
-        _ => bytes.to_vec(),
-    }
-}
-
-/// One character's time, in microseconds, at the line's settings.
-fn char_us(line: &LineSettings) -> f64 {
-    f64::from(line.bits_per_character()) * 1e6 / f64::from(line.baud.max(1))
-}
-
-/// `--low-latency`: the FTDI latency timer to 1 ms, through sysfs.
-fn low_latency(path: &str) -> Result<(), String> {
-    let device = std::fs::canonicalize(path).map_err(|e| format!("{path}: {e}"))?;
-    let name = device
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let timer = format!("/sys/bus/usb-serial/devices/{name}/latency_timer");
-    std::fs::write(&timer, "1")
-        .map_err(|e| format!("cannot set {timer} ({e}): run `echo 1 | sudo tee {timer}` once"))
-}
-
 pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
-    let mode = match cli.connection.mode {
-        None | Some(ModeArg::Rtu) => Mode::Rtu,
-        Some(ModeArg::Ascii) => Mode::Ascii,
-        Some(ModeArg::Tcp) => {
-            return Err(Error::usage("sniff watches serial lines: --mode rtu or ascii").into())
-        }
-    };
+    let mode = mode(cli, None, Role::Sniff)?;
     let line = line_settings(cli, mode);
     let filter = Filter {
         slaves: args.slaves.clone(),
         functions: args.functions.clone(),
     };
     let silence = line.frame_gap();
-    let mut session = Session::new(mode, char_us(&line), silence.as_micros() as u64, filter);
+    let mut session = Session::new(
+        mode,
+        line.character_us(),
+        silence.as_micros() as u64,
+        filter,
+    );
     let mut save = match &args.save {
         Some(path) => Some(Save::create(path, args.input.is_none())?),
         None => None,
@@ -325,7 +293,7 @@ fn live(
         }
     };
     if args.low_latency {
-        if let Err(message) = low_latency(&path) {
+        if let Err(message) = serial::set_low_latency(&path) {
             eprintln!("mbtool: {message}");
         }
     }

@@ -3,6 +3,8 @@
 
 use thiserror::Error;
 
+use crate::codec::adu::hex_digit;
+
 #[derive(Clone, Debug, Error, PartialEq, Eq)]
 pub enum HexError {
     #[error("empty: no hex digits")]
@@ -17,15 +19,6 @@ pub enum HexError {
 
 fn is_separator(b: u8) -> bool {
     b.is_ascii_whitespace() || matches!(b, b',' | b';')
-}
-
-fn hex_value(b: u8) -> Option<u8> {
-    match b {
-        b'0'..=b'9' => Some(b - b'0'),
-        b'a'..=b'f' => Some(b - b'a' + 10),
-        b'A'..=b'F' => Some(b - b'A' + 10),
-        _ => None,
-    }
 }
 
 /// Shows a byte of the input in an error message without printing it raw.
@@ -63,7 +56,7 @@ pub fn parse_hex(text: &[u8], out: &mut Vec<u8>) -> Result<(), HexError> {
             if text[i] == b'\\' && text.get(i + 1) == Some(&b'x') {
                 break;
             }
-            if hex_value(text[i]).is_none() {
+            if hex_digit(text[i]).is_none() {
                 return Err(HexError::NotHex(shown(text, i), i + 1));
             }
             i += 1;
@@ -74,13 +67,13 @@ pub fn parse_hex(text: &[u8], out: &mut Vec<u8>) -> Result<(), HexError> {
                 let token = String::from_utf8_lossy(&text[token_start..i]);
                 return Err(HexError::NoDigits(token.into_owned()));
             }
-            1 if prefixed => out.push(hex_value(digits[0]).unwrap_or_default()),
+            1 if prefixed => out.push(hex_digit(digits[0]).unwrap_or_default()),
             n if n % 2 == 1 => {
                 let token = String::from_utf8_lossy(&text[token_start..i]);
                 return Err(HexError::OddDigits(token.chars().take(40).collect()));
             }
             _ => out.extend(digits.chunks_exact(2).map(|pair| {
-                hex_value(pair[0]).unwrap_or_default() << 4 | hex_value(pair[1]).unwrap_or_default()
+                hex_digit(pair[0]).unwrap_or_default() << 4 | hex_digit(pair[1]).unwrap_or_default()
             })),
         }
     }

@@ -79,6 +79,16 @@ impl Server {
         }
     }
 
+    /// The answer to a frame found on the wire, as bytes to send (`None`: stay silent):
+    /// the one answer path of `serve` and of the sim port.
+    pub fn answer(&self, found: &Found, peer: &str, rng: &mut fastrand::Rng) -> Option<Vec<u8>> {
+        let frame = request_in(self.mode, found)?;
+        let Pdu::Request(request) = &frame.pdu else {
+            return None;
+        };
+        self.respond(&frame, request, peer, rng)
+    }
+
     /// The answer to one request frame, as bytes to send (`None`: stay silent).
     fn respond(
         &self,
@@ -199,13 +209,9 @@ impl Server {
             for event in events.drain(..) {
                 match event {
                     Event::Frame(found) => {
-                        if let Some(frame) = request_in(self.mode, &found) {
-                            if let Pdu::Request(request) = &frame.pdu {
-                                if let Some(answer) = self.respond(&frame, request, peer, rng) {
-                                    transport.send(&answer)?;
-                                    framer.answered();
-                                }
-                            }
+                        if let Some(answer) = self.answer(&found, peer, rng) {
+                            transport.send(&answer)?;
+                            framer.answered();
                         }
                     }
                     Event::Noise(noise) if self.mode == Mode::Tcp => {
@@ -401,7 +407,7 @@ fn now_ms() -> u64 {
 /// The request a frame found on the line carries, if it is one. A frame whose checksum
 /// holds but whose PDU breaks its function's layout is read as an opaque request, to be
 /// answered with an exception as a real device does.
-pub fn request_in(mode: Mode, found: &Found) -> Option<Frame> {
+fn request_in(mode: Mode, found: &Found) -> Option<Frame> {
     if found.broken.is_some() || found.direction == Some(Direction::Response) {
         return None;
     }

@@ -1,30 +1,34 @@
 //! `--port sim`: the simulated slave, in process. Requests go through the codec both ways,
-//! as they would on a wire.
+//! as they would on a wire, and are answered by the answer path of `serve`.
 
 use std::io;
 use std::time::Instant;
 
-use crate::codec::adu::wrap;
 use crate::codec::framing::{Event, Framer};
 use crate::codec::Mode;
-use crate::server::request_in;
-use crate::slave::{DataModel, Slave};
+use crate::server::Server;
+use crate::slave::faults::Faults;
+use crate::slave::{DataModel, Slave, EXAMPLE_SLAVE};
 use crate::transport::Transport;
 
 /// The slave id of the built-in slave, as in the manuals' examples.
-pub const SIM_SLAVE: u8 = 17;
+pub const SIM_SLAVE: u8 = EXAMPLE_SLAVE;
 
 pub struct SimTransport {
-    slave: Slave,
+    server: Server,
     mode: Mode,
+    /// No faults are injected, so nothing is drawn from it; the answer path asks for one.
+    rng: fastrand::Rng,
     pending: Vec<u8>,
 }
 
 impl SimTransport {
     pub fn new(mode: Mode) -> Self {
+        let slave = Slave::new(&[SIM_SLAVE], DataModel::manual_examples());
         Self {
-            slave: Slave::new(&[SIM_SLAVE], DataModel::manual_examples()),
+            server: Server::new(slave, Faults::default(), mode, 0, None),
             mode,
+            rng: fastrand::Rng::with_seed(0),
             pending: Vec::new(),
         }
     }
@@ -44,22 +48,9 @@ impl Transport for SimTransport {
         framer.push(frame, &mut events);
         framer.finish(&mut events);
         for event in events {
-            let Event::Frame(found) = event else { continue };
-            let Some(frame) = request_in(self.mode, &found) else {
-                continue;
-            };
-            if let crate::codec::Pdu::Request(request) = &frame.pdu {
-                if let Some(answer) = self.slave.handle(frame.slave, request) {
-                    let mut pdu = Vec::new();
-                    if answer.encode(&mut pdu).is_ok() {
-                        wrap(
-                            self.mode,
-                            frame.slave,
-                            frame.transaction,
-                            &pdu,
-                            &mut self.pending,
-                        );
-                    }
+            if let Event::Frame(found) = event {
+                if let Some(answer) = self.server.answer(&found, "sim", &mut self.rng) {
+                    self.pending.extend(answer);
                 }
             }
         }

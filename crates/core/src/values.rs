@@ -97,6 +97,17 @@ impl Choice for ByteOrder {
     }
 }
 
+/// A coil value as people write it: on/off, 1/0, true/false, in any case.
+pub fn parse_coil(word: &str) -> Result<bool, String> {
+    match word.to_ascii_lowercase().as_str() {
+        "1" | "on" | "true" => Ok(true),
+        "0" | "off" | "false" => Ok(false),
+        _ => Err(format!(
+            "'{word}' is not a coil value: give on, off, 1, 0, true or false"
+        )),
+    }
+}
+
 /// A value read from registers, ready to be shown.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]

@@ -4,7 +4,7 @@
 use std::borrow::Cow;
 use std::fmt;
 
-use super::checksum::{crc16, lrc};
+use super::checksum::{crc16, crc_holds, lrc};
 use super::error::{FrameError, PduError};
 use super::limits;
 use super::pdu::{Direction, Pdu};
@@ -36,7 +36,7 @@ impl Mode {
                 return Mode::Ascii;
             }
         }
-        if rtu_crc_holds(frame) {
+        if crc_holds(frame) {
             return Mode::Rtu;
         }
         if let [_, _, 0, 0, hi, lo, _, _, ..] = frame {
@@ -55,16 +55,6 @@ impl fmt::Display for Mode {
             Mode::Ascii => "ASCII",
             Mode::Tcp => "TCP",
         })
-    }
-}
-
-fn rtu_crc_holds(frame: &[u8]) -> bool {
-    match frame.len().checked_sub(2) {
-        Some(body) if body >= 2 => {
-            let (body, crc) = frame.split_at(body);
-            crc16(body).to_le_bytes() == crc
-        }
-        _ => false,
     }
 }
 
@@ -147,13 +137,13 @@ fn open_rtu(frame: &[u8]) -> Result<Envelope<'_>, FrameError> {
     }
 }
 
+/// The value of a hex digit, in either case.
+pub(crate) fn hex_digit(c: u8) -> Option<u8> {
+    char::from(c).to_digit(16).map(|d| d as u8)
+}
+
 fn hex_value(c: u8) -> Result<u8, FrameError> {
-    match c {
-        b'0'..=b'9' => Ok(c - b'0'),
-        b'A'..=b'F' => Ok(c - b'A' + 10),
-        b'a'..=b'f' => Ok(c - b'a' + 10),
-        _ => Err(FrameError::AsciiNotHex(char::from(c))),
-    }
+    hex_digit(c).ok_or(FrameError::AsciiNotHex(char::from(c)))
 }
 
 /// Opens ':' hex LRC, with or without its CR LF (a line-oriented input has removed it).

@@ -11,6 +11,17 @@ pub fn crc16(bytes: &[u8]) -> u16 {
     MODBUS_CRC.checksum(bytes)
 }
 
+/// Whether an RTU frame (address, PDU, CRC) ends in the CRC of what comes before it.
+pub fn crc_holds(frame: &[u8]) -> bool {
+    match frame.len().checked_sub(2) {
+        Some(body) if body >= 2 => {
+            let (body, crc) = frame.split_at(body);
+            crc16(body).to_le_bytes() == crc
+        }
+        _ => false,
+    }
+}
+
 /// The lengths in `min_len..=max_len` at which `bytes` ends in its own CRC (low byte
 /// first), shortest first: how a frame of a function without a known layout is found. The
 /// CRC of each prefix is carried forward a byte at a time, so the scan costs one pass.

@@ -25,7 +25,7 @@
 //! ASCII: ':' starts a frame and CR LF ends it; up to a second may pass between characters.
 //! TCP: the MBAP length alone frames, however the bytes were segmented.
 
-use super::checksum::{crc16, crc_matches, lrc};
+use super::checksum::{crc_holds, crc_matches, lrc};
 use super::function::{
     self, ENCAPSULATED_INTERFACE, EXCEPTION_FLAG, MEI_READ_DEVICE_IDENTIFICATION,
 };
@@ -1049,13 +1049,6 @@ fn pdu_reads(frame: &[u8], direction: Option<Direction>, after_noise: bool) -> b
     }
 }
 
-fn crc_holds(frame: &[u8]) -> bool {
-    match frame.len().checked_sub(2) {
-        Some(body) if body > 0 => crc16(&frame[..body]).to_le_bytes() == frame[body..],
-        _ => false,
-    }
-}
-
 /// Whether an ASCII frame (':' hex LRC CR LF) is well formed and its LRC holds.
 fn lrc_holds(frame: &[u8]) -> bool {
     let Some(body) = frame
@@ -1084,6 +1077,7 @@ fn lrc_holds(frame: &[u8]) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::codec::checksum::crc16;
 
     const REQUEST: [u8; 8] = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
     const ANSWER: [u8; 11] = [

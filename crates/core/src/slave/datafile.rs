@@ -22,7 +22,7 @@ use thiserror::Error;
 use crate::address::{parse_reference_span, reference, Table};
 use crate::choice::Choice;
 use crate::slave::DataModel;
-use crate::values::{ByteOrder, ValueType};
+use crate::values::{parse_coil, ByteOrder, ValueType};
 
 #[derive(Debug, Error)]
 pub enum DataFileError {
@@ -56,16 +56,6 @@ fn words(text: &str) -> Result<Vec<String>, String> {
     Ok(words)
 }
 
-fn coil(word: &str) -> Result<bool, String> {
-    match word.to_ascii_lowercase().as_str() {
-        "1" | "on" | "true" => Ok(true),
-        "0" | "off" | "false" => Ok(false),
-        _ => Err(format!(
-            "'{word}' is not a coil value: give on, off, 1, 0, true or false"
-        )),
-    }
-}
-
 /// One entry: fills `model` and declares the addresses it names.
 fn entry(model: &mut DataModel, line: &str) -> Result<(), String> {
     let (target, values) = line
@@ -96,7 +86,7 @@ fn entry(model: &mut DataModel, line: &str) -> Result<(), String> {
         }
         let bits = words
             .iter()
-            .map(|w| coil(w))
+            .map(|w| parse_coil(w))
             .collect::<Result<Vec<_>, _>>()?;
         let count = fill_count(span.count, bits.len())?;
         let values = spread(&bits, count);

@@ -20,10 +20,16 @@ pub struct Identity {
     pub revision: String,
 }
 
+/// The slave id of the manuals' examples: the built-in slave's, and `serve`'s by default.
+pub const EXAMPLE_SLAVE: u8 = 17;
+
+/// The vendor name a simulated slave gives by default.
+pub const DEFAULT_VENDOR: &str = "mbtool";
+
 impl Default for Identity {
     fn default() -> Self {
         Self {
-            vendor: "mbtool".into(),
+            vendor: DEFAULT_VENDOR.into(),
             product_code: "mbtool-sim".into(),
             revision: env!("CARGO_PKG_VERSION").into(),
         }

@@ -4,8 +4,26 @@
 
 use std::io::{self, Write};
 
+use crate::codec::checksum::crc16;
+use crate::codec::{Envelope, Mode};
+
 /// DLT_USER0.
 pub const LINK_TYPE: u32 = 147;
+
+/// The frame as Wireshark reads it, Modbus RTU: an ASCII frame is written as the RTU frame
+/// it carries.
+pub fn rtu_form(mode: Mode, bytes: &[u8]) -> Vec<u8> {
+    match (mode, Envelope::open(mode, bytes)) {
+        (Mode::Ascii, Ok(envelope)) => {
+            let mut frame = vec![envelope.slave];
+            frame.extend_from_slice(&envelope.pdu);
+            let crc = crc16(&frame);
+            frame.extend_from_slice(&crc.to_le_bytes());
+            frame
+        }
+        _ => bytes.to_vec(),
+    }
+}
 
 pub struct PcapWriter<W: Write> {
     out: W,

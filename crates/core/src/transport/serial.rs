@@ -44,6 +44,11 @@ impl LineSettings {
             + u32::from(self.stop_bits)
     }
 
+    /// One character's time on the wire, in microseconds.
+    pub fn character_us(&self) -> f64 {
+        f64::from(self.bits_per_character()) * 1e6 / f64::from(self.baud.max(1))
+    }
+
     /// One character's time on the wire.
     pub fn character_time(&self) -> Duration {
         Duration::from_secs_f64(f64::from(self.bits_per_character()) / f64::from(self.baud.max(1)))
@@ -121,6 +126,19 @@ impl Transport for Serial {
     fn is_serial_line(&self) -> bool {
         true
     }
+}
+
+/// `--low-latency`: the FTDI latency timer of the USB serial adapter behind `path` to 1 ms,
+/// through sysfs, so that the gaps between frames can be seen.
+pub fn set_low_latency(path: &str) -> Result<(), String> {
+    let device = std::fs::canonicalize(path).map_err(|e| format!("{path}: {e}"))?;
+    let name = device
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let timer = format!("/sys/bus/usb-serial/devices/{name}/latency_timer");
+    std::fs::write(&timer, "1")
+        .map_err(|e| format!("cannot set {timer} ({e}): run `echo 1 | sudo tee {timer}` once"))
 }
 
 #[cfg(test)]
