@@ -1,13 +1,10 @@
 //! The master against a strict scripted slave on a pseudo-terminal, which plays exact bytes:
 //! every fault a real bus produces gets the exit status and message CLI.md promises.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
-
-mod common;
 
 use std::thread;
 use std::time::Duration;
 
-use common::{mbtool, read_frame, rtu, write_all, Pty};
+use crate::support::{mbtool, read_frame, rtu, write_all, Pty, WORKED_FRAMES};
 use mbtool::codec::{Direction, Mode};
 
 /// What the scripted slave does with each request it receives, in order.
@@ -75,10 +72,14 @@ fn against(acts: Vec<Act>, args: &[&str]) -> Outcome {
 }
 
 const READ: &[&str] = &["read-holding", "17", "400108", "3", "-o", "values"];
-const REQUEST: [u8; 8] = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
-const ANSWER: [u8; 11] = [
-    0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64, 0xC8, 0xBA,
-];
+/// The manuals' read of 400108-400110 from slave 17, and its answer.
+fn request() -> Vec<u8> {
+    WORKED_FRAMES[4].clone()
+}
+
+fn answer() -> Vec<u8> {
+    WORKED_FRAMES[5].clone()
+}
 
 fn now(bytes: &[u8]) -> Act {
     Act::Answer(Duration::ZERO, bytes.to_vec())
@@ -98,15 +99,15 @@ fn assert_fails(outcome: &Outcome, code: i32, says: &str) {
 
 #[test]
 fn a_good_answer_is_read() {
-    let outcome = against(vec![now(&ANSWER)], READ);
+    let outcome = against(vec![now(&answer())], READ);
     assert_eq!(outcome.code, 0, "{}", outcome.stderr);
     assert_eq!(outcome.stdout, "555\n0\n100\n");
-    assert_eq!(outcome.requests, [REQUEST.to_vec()]);
+    assert_eq!(outcome.requests, [request()]);
 }
 
 #[test]
 fn a_bad_crc_is_a_bad_frame() {
-    let mut answer = ANSWER;
+    let mut answer = answer();
     answer[10] ^= 0xFF;
     assert_fails(&against(vec![now(&answer)], READ), 4, "CRC mismatch");
 }
@@ -132,7 +133,7 @@ fn fewer_registers_than_asked_is_a_bad_frame() {
 #[test]
 fn a_truncated_answer_is_a_bad_frame() {
     assert_fails(
-        &against(vec![now(&ANSWER[..7])], READ),
+        &against(vec![now(&answer()[..7])], READ),
         4,
         "incomplete answer: 7 bytes",
     );
@@ -141,7 +142,7 @@ fn a_truncated_answer_is_a_bad_frame() {
 #[test]
 fn noise_before_the_answer_is_passed_over() {
     let mut noisy = vec![0x00, 0xFE, 0x11];
-    noisy.extend_from_slice(&ANSWER);
+    noisy.extend_from_slice(&answer());
     let outcome = against(vec![now(&noisy)], READ);
     assert_eq!(outcome.code, 0, "{}", outcome.stderr);
     assert_eq!(outcome.stdout, "555\n0\n100\n");
@@ -149,7 +150,7 @@ fn noise_before_the_answer_is_passed_over() {
 
 #[test]
 fn a_late_answer_is_a_timeout() {
-    let late = Act::Answer(Duration::from_millis(700), ANSWER.to_vec());
+    let late = Act::Answer(Duration::from_millis(700), answer());
     assert_fails(
         &against(vec![late], READ),
         3,
@@ -182,7 +183,7 @@ fn an_exception_gives_10_plus_its_code_and_its_name() {
 fn a_timeout_is_retried_and_an_exception_never() {
     let mut args = READ.to_vec();
     args.extend(["--retries", "2"]);
-    let outcome = against(vec![Act::Silence, now(&ANSWER)], &args);
+    let outcome = against(vec![Act::Silence, now(&answer())], &args);
     assert_eq!(outcome.code, 0, "{}", outcome.stderr);
     assert_eq!(outcome.requests.len(), 2);
 
@@ -194,11 +195,11 @@ fn a_timeout_is_retried_and_an_exception_never() {
 
 #[test]
 fn a_bad_frame_is_retried() {
-    let mut bad = ANSWER;
+    let mut bad = answer();
     bad[3] ^= 1;
     let mut args = READ.to_vec();
     args.extend(["--retries", "1"]);
-    let outcome = against(vec![now(&bad), now(&ANSWER)], &args);
+    let outcome = against(vec![now(&bad), now(&answer())], &args);
     assert_eq!(outcome.code, 0, "{}", outcome.stderr);
     assert_eq!(outcome.requests.len(), 2);
 }
@@ -226,7 +227,7 @@ fn a_broadcast_write_expects_no_answer() {
 fn verbose_shows_every_frame_with_a_timestamp() {
     let mut args = READ.to_vec();
     args.push("-v");
-    let outcome = against(vec![now(&ANSWER)], &args);
+    let outcome = against(vec![now(&answer())], &args);
     assert_eq!(outcome.code, 0);
     let lines: Vec<&str> = outcome.stderr.lines().collect();
     assert_eq!(lines.len(), 2, "{}", outcome.stderr);

@@ -1,9 +1,8 @@
 //! The worked frames of the Modbus manuals (every CRC checked):
 //! each decodes to the fields the manuals describe, and `encode` builds each request byte
 //! for byte.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
-use assert_cmd::Command;
+use crate::support::{mbtool, WORKED};
 use mbtool::codec::{bits, Direction, Frame, Mode, Pdu, Request, Response};
 use mbtool::describe::{describe_frame, Kind, Values};
 use mbtool::hexinput::parse_hex;
@@ -19,51 +18,6 @@ fn decode(hex: &str, direction: Direction) -> Pdu {
         .expect("a worked frame decodes")
         .pdu
 }
-
-fn mbtool() -> Command {
-    let mut cmd = Command::cargo_bin("mbtool").expect("the binary is built");
-    cmd.env_remove("MBTOOL_PORT").env_remove("MBTOOL_MODE");
-    cmd
-}
-
-/// (encode arguments, request on the wire, response on the wire)
-const WORKED: &[(&str, &str, &str)] = &[
-    (
-        "read-coils 17 000020 37",
-        "11 01 00 13 00 25 0E 84",
-        "11 01 05 CD 6B B2 0E 1B 45 E6",
-    ),
-    (
-        "read-inputs 17 100197-100218",
-        "11 02 00 C4 00 16 BA A9",
-        "11 02 03 AC DB 35 20 18",
-    ),
-    (
-        "read-holding 17 400108 3",
-        "11 03 00 6B 00 03 76 87",
-        "11 03 06 02 2B 00 00 00 64 C8 BA",
-    ),
-    (
-        "read-input-registers 17 300009",
-        "11 04 00 08 00 01 B2 98",
-        "11 04 02 00 0A F8 F4",
-    ),
-    (
-        "write-coil 17 000173 on",
-        "11 05 00 AC FF 00 4E 8B",
-        "11 05 00 AC FF 00 4E 8B",
-    ),
-    (
-        "write-register 17 400002 0x0003",
-        "11 06 00 01 00 03 9A 9B",
-        "11 06 00 01 00 03 9A 9B",
-    ),
-    (
-        "write-registers 17 400002-400003 0x000A 0x0102",
-        "11 10 00 01 00 02 04 00 0A 01 02 C6 F0",
-        "11 10 00 01 00 02 12 98",
-    ),
-];
 
 #[test]
 fn encode_builds_every_worked_request_byte_for_byte() {

@@ -1,5 +1,4 @@
 //! The completions and man pages in the tree are those the clap definition generates now.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 use std::fs;
 use std::path::Path;

@@ -1,10 +1,7 @@
 //! Every request command against `--port sim`, the built-in slave: it holds the manuals'
 //! example values, and each run of mbtool starts from them.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
-mod common;
-
-use common::{mbtool, run_against};
+use crate::support::{mbtool, run_against};
 
 fn sim() -> Vec<String> {
     vec!["--port".into(), "sim".into()]

@@ -1,6 +1,5 @@
-//! Helpers shared by the integration tests.
-#![allow(dead_code)]
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
+//! What the tests share: one hermetic `mbtool` command, pseudo-terminals, peers, the
+//! network, and the worked frames of the Modbus manuals.
 
 use std::io::{Read, Write};
 use std::time::{Duration, Instant};
@@ -9,6 +8,56 @@ use assert_cmd::Command;
 use mbtool::codec::framing::{Event, Framer};
 use mbtool::codec::{Direction, Frame, Mode, Request};
 use serialport::{SerialPort, TTYPort};
+
+/// The worked frames of the Modbus manuals (every CRC checked): the `encode` arguments of
+/// each request, the request on the wire, and the answer.
+pub const WORKED: &[(&str, &str, &str)] = &[
+    (
+        "read-coils 17 000020 37",
+        "11 01 00 13 00 25 0E 84",
+        "11 01 05 CD 6B B2 0E 1B 45 E6",
+    ),
+    (
+        "read-inputs 17 100197-100218",
+        "11 02 00 C4 00 16 BA A9",
+        "11 02 03 AC DB 35 20 18",
+    ),
+    (
+        "read-holding 17 400108 3",
+        "11 03 00 6B 00 03 76 87",
+        "11 03 06 02 2B 00 00 00 64 C8 BA",
+    ),
+    (
+        "read-input-registers 17 300009",
+        "11 04 00 08 00 01 B2 98",
+        "11 04 02 00 0A F8 F4",
+    ),
+    (
+        "write-coil 17 000173 on",
+        "11 05 00 AC FF 00 4E 8B",
+        "11 05 00 AC FF 00 4E 8B",
+    ),
+    (
+        "write-register 17 400002 0x0003",
+        "11 06 00 01 00 03 9A 9B",
+        "11 06 00 01 00 03 9A 9B",
+    ),
+    (
+        "write-registers 17 400002-400003 0x000A 0x0102",
+        "11 10 00 01 00 02 04 00 0A 01 02 C6 F0",
+        "11 10 00 01 00 02 12 98",
+    ),
+];
+
+/// The worked frames as bytes, requests and answers in turn: [4] and [5] are the read of
+/// 400108-400110 from slave 17 and its answer (555, 0, 100).
+pub static WORKED_FRAMES: std::sync::LazyLock<Vec<Vec<u8>>> = std::sync::LazyLock::new(|| {
+    WORKED
+        .iter()
+        .flat_map(|(_, request, answer)| [request, answer])
+        .map(|spaced| hex::decode(spaced.replace(' ', "")).expect("the worked frames are hex"))
+        .collect()
+});
 
 /// mbtool with no connection settings from the environment.
 pub fn mbtool() -> Command {

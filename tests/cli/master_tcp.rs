@@ -1,16 +1,13 @@
 //! The master over Modbus TCP against a scripted server on 127.0.0.1 that plays exact
 //! bytes: a server that never answers, answers with another transaction id, answers twice,
 //! or puts two answers in one segment. The MBAP length frames, whatever the segments.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
-
-mod common;
 
 use std::io::{Read, Write};
 use std::net::TcpListener;
 use std::thread;
 use std::time::Duration;
 
-use common::mbtool;
+use crate::support::mbtool;
 use mbtool::codec::framing::{Event, Framer};
 use mbtool::codec::{Direction, Frame, Mode, Pdu, Request};
 use mbtool::master::{Master, MasterOptions, Reply};

@@ -1,16 +1,13 @@
 //! `mbtool sniff`: the real captures come out as listed beside them, glued frames are split,
 //! noise is counted and never invents a frame, a live pty capture reports the gaps the
 //! writer made, and --save replays as --input.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
-
-mod common;
 
 use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::process::{Command as Process, Stdio};
 use std::time::{Duration, Instant};
 
-use common::{mbtool, random_request, rtu, write_all, Pty};
+use crate::support::{mbtool, random_request, rtu, write_all, Pty, WORKED_FRAMES as WORKED};
 use mbtool::codec::{Frame, Mode, Pdu};
 use mbtool::slave::{DataModel, Slave};
 use mbtool::sniff::session::{Filter, Record, Session};
@@ -164,28 +161,6 @@ fn timed_captures_give_the_gaps_listed_beside_them() {
     assert_eq!(frames, 88);
 }
 
-/// The worked frames of the manuals, requests and answers in turn.
-const WORKED: &[&[u8]] = &[
-    &[0x11, 0x01, 0x00, 0x13, 0x00, 0x25, 0x0E, 0x84],
-    &[0x11, 0x01, 0x05, 0xCD, 0x6B, 0xB2, 0x0E, 0x1B, 0x45, 0xE6],
-    &[0x11, 0x02, 0x00, 0xC4, 0x00, 0x16, 0xBA, 0xA9],
-    &[0x11, 0x02, 0x03, 0xAC, 0xDB, 0x35, 0x20, 0x18],
-    &[0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87],
-    &[
-        0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64, 0xC8, 0xBA,
-    ],
-    &[0x11, 0x04, 0x00, 0x08, 0x00, 0x01, 0xB2, 0x98],
-    &[0x11, 0x04, 0x02, 0x00, 0x0A, 0xF8, 0xF4],
-    &[0x11, 0x05, 0x00, 0xAC, 0xFF, 0x00, 0x4E, 0x8B],
-    &[0x11, 0x05, 0x00, 0xAC, 0xFF, 0x00, 0x4E, 0x8B],
-    &[0x11, 0x06, 0x00, 0x01, 0x00, 0x03, 0x9A, 0x9B],
-    &[0x11, 0x06, 0x00, 0x01, 0x00, 0x03, 0x9A, 0x9B],
-    &[
-        0x11, 0x10, 0x00, 0x01, 0x00, 0x02, 0x04, 0x00, 0x0A, 0x01, 0x02, 0xC6, 0xF0,
-    ],
-    &[0x11, 0x10, 0x00, 0x01, 0x00, 0x02, 0x12, 0x98],
-];
-
 #[test]
 fn the_worked_frames_glued_together_come_out_paired() {
     let glued: Vec<u8> = WORKED.concat();
@@ -197,7 +172,7 @@ fn the_worked_frames_glued_together_come_out_paired() {
     let lines = json_lines(&output.stdout);
     let frames: Vec<&serde_json::Value> = lines.iter().filter(|l| l["type"] == "frame").collect();
     assert_eq!(frames.len(), WORKED.len());
-    for (i, (frame, bytes)) in frames.iter().zip(WORKED).enumerate() {
+    for (i, (frame, bytes)) in frames.iter().zip(WORKED.iter()).enumerate() {
         let hex: Vec<String> = bytes.iter().map(|b| format!("{b:02X}")).collect();
         assert_eq!(frame["bytes"], hex.join(" "), "frame {i}");
         let want = if i % 2 == 0 { "request" } else { "response" };
@@ -598,7 +573,7 @@ fn where_only_silence_tells_a_replay_of_save_agrees_with_the_live_session() {
     let saved = dir.path().join("bus.bin");
     let (lines, _) = sniff_live(&chunks, &["--save", saved.to_str().unwrap()]);
     let live = frames_of(&lines);
-    let hex = |bytes: &[u8]| serde_json::Value::from(common::spaced_hex(bytes));
+    let hex = |bytes: &[u8]| serde_json::Value::from(crate::support::spaced_hex(bytes));
     let valid: Vec<serde_json::Value> = live
         .iter()
         .filter(|(_, valid)| *valid == true)

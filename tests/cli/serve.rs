@@ -1,16 +1,13 @@
 //! `mbtool serve` as masters we did not write see it (mbpoll, pymodbus) and as mbtool's own
 //! master sees it: every table read and written, exceptions, injected faults, data files,
 //! and a TCP server that one bad client cannot stop.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
-
-mod common;
 
 use std::io::Write;
 use std::net::TcpStream;
 use std::process::Command as Process;
 use std::time::{Duration, Instant};
 
-use common::{
+use crate::support::{
     command_exists, free_port, peer_available, python_has, run_against, serve, values_of,
     wait_for_listener, writes_read_back, PtyPair, Stopped,
 };
@@ -286,7 +283,7 @@ fn a_data_file_sets_values_and_the_addresses_that_exist() {
     assert_eq!(run_against(&port, "read-input-registers 17 300001").0, 12);
 
     std::fs::write(&path, "400001 = 1\n400002 = twelve\n").unwrap();
-    let output = common::mbtool()
+    let output = crate::support::mbtool()
         .args([
             "serve",
             "--port",
@@ -328,14 +325,14 @@ fn a_client_sending_garbage_or_nothing_does_not_stop_the_server() {
 
 #[test]
 fn serve_refuses_what_it_cannot_do() {
-    let output = common::mbtool()
+    let output = crate::support::mbtool()
         .args(["serve", "--port", "sim"])
         .output()
         .unwrap();
     assert_eq!(output.status.code(), Some(2));
-    let output = common::mbtool().args(["serve"]).output().unwrap();
+    let output = crate::support::mbtool().args(["serve"]).output().unwrap();
     assert_eq!(output.status.code(), Some(2));
-    let output = common::mbtool()
+    let output = crate::support::mbtool()
         .args([
             "serve",
             "--port",

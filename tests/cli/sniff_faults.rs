@@ -2,14 +2,11 @@
 //! flips, truncated frames, user-defined function codes, long runs of 00 and FF, and all of
 //! them mixed. Each holds at least 20,000 real frames; every one must come out, whole and
 //! valid, no frame may be invented, and a frame with flipped bits is never shown as valid.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
-
-mod common;
 
 use std::collections::HashMap;
 use std::io::Write;
 
-use common::{mbtool, random_request, rtu};
+use crate::support::{mbtool, random_request, rtu};
 use mbtool::codec::checksum::crc_matches;
 use mbtool::codec::{Frame, Mode, Pdu};
 use mbtool::slave::{DataModel, Slave};

@@ -1,16 +1,13 @@
 //! `mbtool serve` finding its requests as a real slave must: on a shared RS-485 line among
 //! other slaves' traffic, noise and cut frames; from a slow ASCII sender; over TCP however
 //! a client's bytes are segmented; and with clients that hog connections or never read.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
-
-mod common;
 
 use std::io::{Read, Write};
 use std::net::TcpStream;
 use std::thread;
 use std::time::Duration;
 
-use common::{
+use crate::support::{
     free_port, random_request, read_frame, serve, values_of, wait_for_listener, write_all, Pty,
 };
 use mbtool::codec::framing::{Event, Framer};
@@ -54,7 +51,7 @@ fn bus_traffic(rng: &mut fastrand::Rng, others: &mut Slave) -> Vec<u8> {
 }
 
 /// `mbtool serve --slave 17` on a pty; the test's end of the line.
-fn serve_on_pty(extra: &[&str]) -> (common::Stopped, Pty) {
+fn serve_on_pty(extra: &[&str]) -> (crate::support::Stopped, Pty) {
     let pty = Pty::new();
     let mut args = vec!["--port", pty.path.as_str(), "--slave", "17"];
     args.extend_from_slice(extra);
@@ -174,7 +171,7 @@ fn an_ascii_request_with_half_a_second_between_characters_is_answered() {
 }
 
 /// `mbtool serve` on 127.0.0.1; the `--port` options for a master, and the TCP port.
-fn serve_on_tcp() -> (common::Stopped, Vec<String>, u16) {
+fn serve_on_tcp() -> (crate::support::Stopped, Vec<String>, u16) {
     let port = free_port();
     let address = format!("tcp://127.0.0.1:{port}");
     let server = serve(&["--port", &address, "--slave", "17"]);
@@ -299,9 +296,9 @@ fn over_rtu_tcp_a_request_that_breaks_its_layout_gets_its_exception() {
         .unwrap();
     // Read 0 holding registers: the CRC holds, the quantity does not.
     client
-        .write_all(&common::rtu(&[17, 0x03, 0x00, 0x6B, 0x00, 0x00]))
+        .write_all(&crate::support::rtu(&[17, 0x03, 0x00, 0x6B, 0x00, 0x00]))
         .unwrap();
     let mut answer = [0u8; 5];
     client.read_exact(&mut answer).expect("an answer");
-    assert_eq!(answer.to_vec(), common::rtu(&[17, 0x83, 0x03]));
+    assert_eq!(answer.to_vec(), crate::support::rtu(&[17, 0x83, 0x03]));
 }

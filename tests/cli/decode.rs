@@ -1,19 +1,10 @@
 //! `mbtool decode` as a user meets it: input spellings, nasty input, exit codes, output.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 use std::io::{BufRead, BufReader, Write};
 use std::process::{Command as Process, Stdio};
 
-use assert_cmd::Command;
+use crate::support::mbtool;
 use mbtool::codec::checksum::crc16;
-
-fn mbtool() -> Command {
-    let mut cmd = Command::cargo_bin("mbtool").expect("the binary is built");
-    cmd.env_remove("MBTOOL_PORT")
-        .env_remove("MBTOOL_MODE")
-        .env("NO_COLOR", "1");
-    cmd
-}
 
 /// An RTU frame with its CRC, as spaced hex.
 fn rtu(body: &[u8]) -> String {

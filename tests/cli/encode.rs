@@ -1,14 +1,7 @@
 //! `mbtool encode` and the rule that a bad command line is refused before anything happens.
 //! Expected CRCs were computed with an independent CRC-16/MODBUS (bit by bit, poly 0xA001).
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
-use assert_cmd::Command;
-
-fn mbtool() -> Command {
-    let mut cmd = Command::cargo_bin("mbtool").expect("the binary is built");
-    cmd.env_remove("MBTOOL_PORT").env_remove("MBTOOL_MODE");
-    cmd
-}
+use crate::support::mbtool;
 
 /// The frames `mbtool encode ARGS` prints, one per line.
 fn encode(args: &str) -> Vec<String> {

@@ -1,14 +1,11 @@
 //! mbtool's master against tokio-modbus, an implementation we did not write, as a slave on
 //! TCP (127.0.0.1) and in RTU on a pseudo-terminal pair: every read and write command,
 //! counts at the protocol limits, and values read back after writing them.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
-
-mod common;
 
 use std::future::{ready, Ready};
 use std::sync::{Arc, Mutex};
 
-use common::{run_against as run, values_of as values, writes_read_back, PtyPair};
+use crate::support::{run_against as run, values_of as values, writes_read_back, PtyPair};
 use tokio_modbus::prelude::{ExceptionCode, Request, Response, SlaveRequest};
 
 /// The slave's tables: 1000 addresses each, so that address 1000 and above is exception 02.

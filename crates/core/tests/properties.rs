@@ -2,13 +2,13 @@
 //! a stream decodes the same fed byte by byte or all at once, and no input panics.
 #![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
-use mbtool::codec::framing::{Event, Framer};
-use mbtool::codec::pdu::{DeviceIdentification, DeviceObject};
-use mbtool::codec::{
+use mbtool_core::codec::framing::{Event, Framer};
+use mbtool_core::codec::pdu::{DeviceIdentification, DeviceObject};
+use mbtool_core::codec::{
     Direction, Envelope, Exception, ExceptionCode, Frame, Mode, Pdu, Reading, Request, Response,
 };
-use mbtool::describe::describe_frame;
-use mbtool::hexinput::frame_bytes;
+use mbtool_core::describe::describe_frame;
+use mbtool_core::hexinput::frame_bytes;
 use proptest::collection::vec;
 use proptest::prelude::*;
 
@@ -289,7 +289,7 @@ proptest! {
     fn arbitrary_frames_with_a_good_crc_never_panic(body in vec(any::<u8>(), 1..300)) {
         // Most random bytes fail the CRC first; these reach the PDU parsers.
         let mut frame = body.clone();
-        frame.extend_from_slice(&mbtool::codec::checksum::crc16(&body).to_le_bytes());
+        frame.extend_from_slice(&mbtool_core::codec::checksum::crc16(&body).to_le_bytes());
         let _ = describe_frame(&frame, Some(Mode::Rtu), None);
         for direction in [Direction::Request, Direction::Response] {
             let _ = describe_frame(&frame, Some(Mode::Rtu), Some(direction));
@@ -308,7 +308,7 @@ proptest! {
 
 mod sniffer {
     use super::*;
-    use mbtool::sniff::session::{Filter, Record, Session};
+    use mbtool_core::sniff::session::{Filter, Record, Session};
 
     fn sniff(chunks: &[&[u8]], mode: Mode) -> Vec<Record> {
         let mut session = Session::new(mode, 573.0, 2005, Filter::default());

@@ -1,14 +1,11 @@
 //! mbtool's master against pymodbus as a slave: RTU and ASCII over a socat pty pair, and
 //! TCP on 127.0.0.1. pymodbus is a happy-path peer (it answers for slave ids it does not
 //! have and answers broadcasts), so only the writes and reads of a healthy bus are checked.
-#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
-
-mod common;
 
 use std::process::{Command as Process, Stdio};
 use std::time::{Duration, Instant};
 
-use common::{
+use crate::support::{
     free_port, peer_available, python_has, run_against, wait_for_listener, writes_read_back,
     PtyPair, Stopped,
 };

@@ -1,0 +1,19 @@
+//! mbtool as its users and the peers it talks to meet it, in one test binary: each module
+//! one part of the tool, all sharing `support`.
+#![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
+
+mod support;
+
+mod decode;
+mod docs;
+mod encode;
+mod golden;
+mod master_faults;
+mod master_pymodbus;
+mod master_sim;
+mod master_tcp;
+mod master_tokio;
+mod serve;
+mod serve_framing;
+mod sniff;
+mod sniff_faults;
