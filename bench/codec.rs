@@ -4,9 +4,9 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion, Throughput};
-use mbtool::codec::framing::Framer;
-use mbtool::codec::{Direction, Frame, Mode, Pdu, Request};
-use mbtool::describe::describe_frame;
+use mbtool_core::codec::framing::Framer;
+use mbtool_core::codec::{Direction, Frame, Mode, Pdu, Request};
+use mbtool_core::describe::describe_frame;
 
 /// The worked frames of the manuals: requests and answers of functions 01-06 and 16.
 const FRAMES: &[&[u8]] = &[

@@ -3,11 +3,11 @@
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
-use crate::address::Table;
-use crate::codec::{Direction, Mode};
-use crate::transport::serial::Parity;
-use crate::values::{ByteOrder, ValueType};
-use mbtool_core::choice::Choice;
+use mbtool_core::codec::{Direction, Mode};
+use mbtool_core::model::address::Table;
+use mbtool_core::model::choice::Choice;
+use mbtool_core::model::values::{ByteOrder, ValueType};
+use mbtool_core::transport::serial::Parity;
 
 const ABOUT: &str = "Modbus RTU/ASCII/TCP diagnostics: read, write, decode, encode";
 
@@ -82,7 +82,7 @@ pub struct ConnectionArgs {
     pub stop_bits: Option<u8>,
 
     /// Response timeout for a whole answer: 500ms, 1s, 2.5s
-    #[arg(long, global = true, env = "MBTOOL_TIMEOUT", default_value = "1s", value_parser = crate::duration::parse_duration)]
+    #[arg(long, global = true, env = "MBTOOL_TIMEOUT", default_value = "1s", value_parser = mbtool_core::model::duration::parse_duration)]
     pub timeout: std::time::Duration,
 
     /// Retries after a timeout or a bad answer (never after an exception)
@@ -91,7 +91,7 @@ pub struct ConnectionArgs {
 
     /// Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200
     /// baud]; 0 for gateways and devices that need none
-    #[arg(long, global = true, value_name = "DURATION", value_parser = crate::duration::parse_duration)]
+    #[arg(long, global = true, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]
     pub frame_gap: Option<std::time::Duration>,
 }
 
@@ -176,7 +176,7 @@ pub struct DataArgs {
 pub struct PollArgs {
     /// Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing
     /// what changed, with a summary on stderr at the end
-    #[arg(long, global = true, value_name = "INTERVAL", value_parser = crate::duration::parse_duration)]
+    #[arg(long, global = true, value_name = "INTERVAL", value_parser = mbtool_core::model::duration::parse_duration)]
     pub poll: Option<std::time::Duration>,
 
     /// With --poll: stop after N reads
@@ -459,7 +459,7 @@ pub struct SniffArgs {
 }
 
 fn parse_function(text: &str) -> Result<u8, String> {
-    crate::number::parse_in_range(text, 1, 127, "function code").map(|f| f as u8)
+    mbtool_core::model::number::parse_in_range(text, 1, 127, "function code").map(|f| f as u8)
 }
 
 #[derive(Clone, Debug, Args)]
@@ -477,21 +477,21 @@ pub struct ServeArgs {
     pub read_only: Vec<String>,
 
     /// Wait this long before each answer
-    #[arg(long, value_name = "DURATION", value_parser = crate::duration::parse_duration)]
+    #[arg(long, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]
     pub delay: Option<std::time::Duration>,
 
     /// Leave this share of requests unanswered: 0 to 1, or 5%
-    #[arg(long, value_name = "RATE", value_parser = crate::slave::faults::parse_rate)]
+    #[arg(long, value_name = "RATE", value_parser = mbtool_core::slave::faults::parse_rate)]
     pub drop: Option<f64>,
 
     /// Corrupt this share of answers (a bad checksum; over TCP a wrong function): 0 to 1, or 5%
-    #[arg(long, value_name = "RATE", value_parser = crate::slave::faults::parse_rate)]
+    #[arg(long, value_name = "RATE", value_parser = mbtool_core::slave::faults::parse_rate)]
     pub corrupt: Option<f64>,
 
     /// Answer exception CODE to every request, or to those touching RANGE (CODE@RANGE, as in
     /// 2@400100-400120); repeatable
-    #[arg(long, value_name = "CODE[@RANGE]", value_parser = crate::slave::faults::InjectedException::parse)]
-    pub exception: Vec<crate::slave::faults::InjectedException>,
+    #[arg(long, value_name = "CODE[@RANGE]", value_parser = mbtool_core::slave::faults::InjectedException::parse)]
+    pub exception: Vec<mbtool_core::slave::faults::InjectedException>,
 
     /// Send a few noise bytes (00, FE) before each answer, as a bus being handed over does
     #[arg(long)]
@@ -506,7 +506,7 @@ pub struct ServeArgs {
     pub quiet: bool,
 
     /// Device identification: vendor name
-    #[arg(long, default_value = crate::slave::DEFAULT_VENDOR)]
+    #[arg(long, default_value = mbtool_core::slave::DEFAULT_VENDOR)]
     pub vendor: String,
 
     /// Device identification: product code

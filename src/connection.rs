@@ -3,12 +3,12 @@
 use std::io;
 
 use crate::cli::{Cli, ModeArg};
-use crate::codec::Mode;
 use crate::error::{Error, Result};
-use crate::master::{Master, MasterOptions};
-use crate::transport::serial::{LineSettings, Parity, Serial};
-use crate::transport::tcp::Tcp;
-use crate::transport::{Endpoint, Transport};
+use mbtool_core::codec::Mode;
+use mbtool_core::master::{Master, MasterOptions};
+use mbtool_core::transport::serial::{LineSettings, Parity, Serial};
+use mbtool_core::transport::tcp::Tcp;
+use mbtool_core::transport::{Endpoint, Transport};
 
 /// After a broadcast, the slaves need time to act before the next request (the Modbus
 /// serial line specification suggests 100-200 ms).
@@ -90,7 +90,9 @@ pub fn open(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Box<dyn Transp
         Endpoint::RtuOverTcp { host, port } => {
             Tcp::connect(host, *port, timeout, true).map(|t| Box::new(t) as Box<dyn Transport>)
         }
-        Endpoint::Sim => Ok(Box::new(crate::sim::SimTransport::new(mode))),
+        Endpoint::Sim => Ok(Box::new(mbtool_core::transport::sim::SimTransport::new(
+            mode,
+        ))),
     };
     opened.map_err(|e| match endpoint {
         Endpoint::Serial(_) => Error::Io(e),

@@ -2,9 +2,9 @@
 
 use thiserror::Error;
 
-use crate::address::AddressError;
-use crate::codec::ExceptionCode;
-use crate::master::MasterError;
+use mbtool_core::codec::ExceptionCode;
+use mbtool_core::master::MasterError;
+use mbtool_core::model::address::AddressError;
 
 #[derive(Debug, Error)]
 pub enum Error {
@@ -17,7 +17,7 @@ pub enum Error {
     Io(#[from] std::io::Error),
     #[error(transparent)]
     Master(#[from] MasterError),
-    #[error("slave {slave} answered exception {code} to function {function} ({})", crate::codec::function::name(*function))]
+    #[error("slave {slave} answered exception {code} to function {function} ({})", mbtool_core::codec::function::name(*function))]
     Exception {
         slave: u8,
         function: u8,

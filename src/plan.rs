@@ -3,13 +3,13 @@
 //! Every argument is checked here, before anything is sent: a plan either holds every
 //! request of the command, or the command line was wrong and nothing happens.
 
-use crate::address::{parse_reference_span, parse_span, Span, Table};
 use crate::cli::RequestCommand;
-use crate::codec::{limits, Request};
 use crate::error::{Error, Result};
-use crate::number::{parse_in_range, parse_int};
-use crate::values::{parse_coil, ByteOrder, ValueType};
-use mbtool_core::choice::Choice;
+use mbtool_core::codec::{limits, Request};
+use mbtool_core::model::address::{parse_reference_span, parse_span, Span, Table};
+use mbtool_core::model::choice::Choice;
+use mbtool_core::model::number::{parse_in_range, parse_int};
+use mbtool_core::model::values::{parse_coil, ByteOrder, ValueType};
 
 /// What the options say about addresses, values and request sizes.
 #[derive(Clone, Copy, Debug, Default)]
@@ -361,7 +361,7 @@ pub fn plan(command: &RequestCommand, options: &PlanOptions) -> Result<Plan> {
         }
         C::Raw(a) => {
             let slave = parse_slave(&a.slave, true, options)?;
-            let pdu = crate::hexinput::parse_hex_words(&a.pdu)
+            let pdu = mbtool_core::model::hexinput::parse_hex_words(&a.pdu)
                 .map_err(|e| Error::usage(format!("PDU_HEX: {e}")))?;
             Ok(Plan {
                 slave,

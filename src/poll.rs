@@ -2,9 +2,9 @@
 
 use std::time::Duration;
 
-use crate::duration::show;
 use crate::error::Error;
-use crate::master::MasterError;
+use mbtool_core::master::MasterError;
+use mbtool_core::model::duration::show;
 
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct PollStats {

@@ -5,11 +5,11 @@ use std::io::{self, Write};
 use anyhow::Result;
 
 use mbtool::cli::{Cli, DecodeArgs};
-use mbtool::codec::{limits, Direction, Mode};
-use mbtool::describe::describe_frame;
-use mbtool::hexinput::frame_bytes;
 use mbtool::lines::{Line, Lines};
 use mbtool::output::{self, decode::DecodeWriter};
+use mbtool_core::codec::{limits, Direction, Mode};
+use mbtool_core::describe::describe_frame;
+use mbtool_core::model::hexinput::frame_bytes;
 
 /// Longer lines cannot be a frame: even spaced hex of the longest ASCII frame is shorter.
 const MAX_LINE: usize = 4 * limits::MAX_ASCII_ADU;

@@ -3,12 +3,12 @@
 use anyhow::Result;
 
 use mbtool::cli::{Cli, RequestCommand};
-use mbtool::codec::{Frame, Mode, Pdu};
 use mbtool::connection::{self, Role};
 use mbtool::error::Error;
 use mbtool::output::{self, encode::write_frame};
 use mbtool::plan::{plan, Plan, PlanOptions};
-use mbtool::transport::Endpoint;
+use mbtool_core::codec::{Frame, Mode, Pdu};
+use mbtool_core::transport::Endpoint;
 
 /// The framing: --mode, else TCP for a tcp:// port, else RTU. Unlike a connection, encode
 /// accepts --mode tcp without a port.

@@ -6,18 +6,18 @@ use std::time::Instant;
 
 use anyhow::Result;
 
-use mbtool::address::{reference, Table};
 use mbtool::cli::{Cli, RequestCommand};
-use mbtool::codec::{Frame, Mode, Pdu, Request, Response};
 use mbtool::connection;
-use mbtool::describe::describe_frame;
 use mbtool::error::Error;
-use mbtool::master::{Master, Reply, Traffic};
 use mbtool::output::decode::DecodeWriter;
 use mbtool::output::read::{write_done, ReadData, ReadResult, ReadWriter, WriteDone};
 use mbtool::output::{self, encode::frame_text};
 use mbtool::plan::Plan;
 use mbtool::poll::PollStats;
+use mbtool_core::codec::{Frame, Mode, Pdu, Request, Response};
+use mbtool_core::describe::describe_frame;
+use mbtool_core::master::{Master, Reply, Traffic};
+use mbtool_core::model::address::{reference, Table};
 
 pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
     // The whole command line is checked before a port is opened.
@@ -42,7 +42,7 @@ pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
 }
 
 /// `-v`: each frame on stderr with the seconds since the start.
-fn tracer(mode: Mode) -> mbtool::master::Tracer {
+fn tracer(mode: Mode) -> mbtool_core::master::Tracer {
     let start = Instant::now();
     Box::new(move |traffic, bytes| {
         let arrow = match traffic {
@@ -235,7 +235,11 @@ fn raw(
         pdu,
     };
     let bytes = frame.encode().map_err(|e| Error::usage(e.to_string()))?;
-    let report = describe_frame(&bytes, Some(mode), Some(mbtool::codec::Direction::Response));
+    let report = describe_frame(
+        &bytes,
+        Some(mode),
+        Some(mbtool_core::codec::Direction::Response),
+    );
     let mut writer = DecodeWriter::new(
         cli.output.format(),
         cli.data.value_type,

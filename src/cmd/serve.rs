@@ -6,16 +6,16 @@ use std::sync::Arc;
 
 use anyhow::{Context, Result};
 
-use mbtool::address::parse_reference_span;
 use mbtool::cli::{Cli, OutputFormat, ServeArgs};
 use mbtool::connection::{line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::output::serve::write_entry;
-use mbtool::server::{Link, Logger, Server};
-use mbtool::slave::faults::Faults;
-use mbtool::slave::{datafile, DataModel, Identity, Slave};
-use mbtool::transport::serial::Serial;
-use mbtool::transport::Endpoint;
+use mbtool_core::model::address::parse_reference_span;
+use mbtool_core::slave::faults::Faults;
+use mbtool_core::slave::server::{Link, Logger, Server};
+use mbtool_core::slave::{datafile, DataModel, Identity, Slave};
+use mbtool_core::transport::serial::Serial;
+use mbtool_core::transport::Endpoint;
 
 /// The port to serve on; `tcp://:PORT` listens on 127.0.0.1.
 fn endpoint(cli: &Cli) -> Result<Endpoint, Error> {
@@ -47,8 +47,10 @@ fn data_model(args: &ServeArgs) -> Result<DataModel> {
         let start = u32::from(span.address);
         let end = start + span.count.unwrap_or(1);
         match span.table {
-            mbtool::address::Table::Coils => model.coils.protect(start, end),
-            mbtool::address::Table::HoldingRegisters => model.holding_registers.protect(start, end),
+            mbtool_core::model::address::Table::Coils => model.coils.protect(start, end),
+            mbtool_core::model::address::Table::HoldingRegisters => {
+                model.holding_registers.protect(start, end)
+            }
             other => {
                 return Err(Error::usage(format!(
                     "--read-only {range}: {}s are read-only already",
@@ -65,7 +67,7 @@ pub fn run(cli: &Cli, args: &ServeArgs) -> Result<u8> {
     let endpoint = endpoint(cli)?;
     let mode = mode(cli, Some(&endpoint), Role::Serve)?;
     let ids = if args.slaves.is_empty() {
-        vec![mbtool::slave::EXAMPLE_SLAVE]
+        vec![mbtool_core::slave::EXAMPLE_SLAVE]
     } else {
         args.slaves.clone()
     };
@@ -84,7 +86,7 @@ pub fn run(cli: &Cli, args: &ServeArgs) -> Result<u8> {
     };
     let logger: Option<Logger> = (!args.quiet).then(|| {
         let json = cli.output.format() == OutputFormat::Json;
-        Arc::new(move |entry: &mbtool::server::LogEntry| {
+        Arc::new(move |entry: &mbtool_core::slave::server::LogEntry| {
             // One write a line, so that lines from several clients never mix.
             let mut line = Vec::with_capacity(160);
             if write_entry(&mut line, json, entry).is_ok() {

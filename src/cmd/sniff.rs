@@ -10,15 +10,15 @@ use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 use anyhow::{Context, Result};
 
 use mbtool::cli::{Cli, SniffArgs};
-use mbtool::codec::Mode;
 use mbtool::connection::{line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::output::{self, sniff::SniffWriter};
-use mbtool::sniff::pcap::{self, PcapWriter};
-use mbtool::sniff::session::{Filter, Record, Session};
-use mbtool::sniff::timing;
-use mbtool::transport::serial::{self, LineSettings, Serial};
-use mbtool::transport::{Endpoint, Transport};
+use mbtool_core::codec::Mode;
+use mbtool_core::sniff::pcap::{self, PcapWriter};
+use mbtool_core::sniff::session::{Filter, Record, Session};
+use mbtool_core::sniff::timing;
+use mbtool_core::transport::serial::{self, LineSettings, Serial};
+use mbtool_core::transport::{Endpoint, Transport};
 
 /// Where the records go: the screen (or a pipe), and the pcap file.
 struct Sinks {

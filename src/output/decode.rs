@@ -1,16 +1,16 @@
 //! How `decode` shows frames: a table per frame, JSON Lines, bare values, or CSV.
 
-use mbtool_core::choice::Choice;
+use mbtool_core::model::choice::Choice;
 use std::io::{self, Write};
 
 use comfy_table::{Cell, Color};
 
 use super::{csv_field, new_table};
-use crate::address::{reference, Table};
 use crate::cli::OutputFormat;
-use crate::codec::{Checksum, ExceptionCode, Mode};
-use crate::describe::{spaced_hex, Fields, FrameReport, Values};
-use crate::values::{ByteOrder, ValueType};
+use mbtool_core::codec::{Checksum, ExceptionCode, Mode};
+use mbtool_core::describe::{spaced_hex, Fields, FrameReport, Values};
+use mbtool_core::model::address::{reference, Table};
+use mbtool_core::model::values::{ByteOrder, ValueType};
 
 pub struct DecodeWriter {
     format: OutputFormat,

@@ -5,8 +5,8 @@ use std::io::{self, Write};
 use serde::Serialize;
 
 use crate::cli::OutputFormat;
-use crate::codec::Mode;
-use crate::describe::spaced_hex;
+use mbtool_core::codec::Mode;
+use mbtool_core::describe::spaced_hex;
 
 #[derive(Serialize)]
 struct EncodedFrame<'a> {

@@ -11,8 +11,8 @@ use std::io::{self, IsTerminal, Write};
 
 use comfy_table::{presets, Table};
 
-use crate::codec::{Pdu, Request};
-use crate::describe::{describe_pdu, Fields, Values};
+use mbtool_core::codec::{Pdu, Request};
+use mbtool_core::describe::{describe_pdu, Fields, Values};
 
 /// Standard output, buffered unless it is a terminal, where each line shows at once.
 pub fn stdout() -> Box<dyn Write> {

@@ -1,15 +1,15 @@
 //! How read results and write confirmations are shown.
 
-use mbtool_core::choice::Choice;
+use mbtool_core::model::choice::Choice;
 use std::io::{self, Write};
 
 use comfy_table::{Cell, Color};
 use serde::Serialize;
 
 use super::{csv_field, new_table};
-use crate::address::{reference, Table};
 use crate::cli::OutputFormat;
-use crate::values::{ByteOrder, Value, ValueType};
+use mbtool_core::model::address::{reference, Table};
+use mbtool_core::model::values::{ByteOrder, Value, ValueType};
 
 /// What one read returned, all requests of a split read put together.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -265,7 +265,7 @@ pub fn write_done(out: &mut dyn Write, format: OutputFormat, done: &WriteDone) -
                 if done.count == 1 { "value" } else { "values" },
                 done.reference,
                 done.function,
-                crate::codec::function::name(done.function)
+                mbtool_core::codec::function::name(done.function)
             )
         }
         OutputFormat::Values | OutputFormat::Csv => Ok(()),

@@ -4,10 +4,10 @@ use std::io::{self, Write};
 
 use serde::Serialize;
 
-use crate::codec::function;
-use crate::codec::Pdu;
-use crate::describe::{describe_pdu, Fields};
-use crate::server::{LogEntry, Outcome};
+use mbtool_core::codec::function;
+use mbtool_core::codec::Pdu;
+use mbtool_core::describe::{describe_pdu, Fields};
+use mbtool_core::slave::server::{LogEntry, Outcome};
 
 #[derive(Serialize)]
 struct JsonEntry<'a> {
@@ -64,7 +64,9 @@ pub fn write_entry(out: &mut dyn Write, json: bool, entry: &LogEntry) -> io::Res
         return writeln!(out);
     }
     let result = match (answer, exception) {
-        ("exception", Some(code)) => format!("exception {}", crate::codec::ExceptionCode(code)),
+        ("exception", Some(code)) => {
+            format!("exception {}", mbtool_core::codec::ExceptionCode(code))
+        }
         ("none", _) if fault.is_none() => "no answer (broadcast)".to_string(),
         (other, _) => other.to_string(),
     };

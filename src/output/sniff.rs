@@ -6,10 +6,10 @@ use serde::Serialize;
 
 use super::{csv_field, fields_summary, request_summary, shown_values};
 use crate::cli::OutputFormat;
-use crate::codec::function;
-use crate::codec::ExceptionCode;
-use crate::describe::{describe_pdu, spaced_hex, FrameReport, Kind, Values};
-use crate::sniff::session::{Counts, FrameRecord, Record};
+use mbtool_core::codec::function;
+use mbtool_core::codec::ExceptionCode;
+use mbtool_core::describe::{describe_pdu, spaced_hex, FrameReport, Kind, Values};
+use mbtool_core::sniff::session::{Counts, FrameRecord, Record};
 
 const RED: &str = "\x1b[31m";
 const YELLOW: &str = "\x1b[33m";
@@ -53,7 +53,7 @@ struct JsonUnanswered {
     slave: u8,
     function: u8,
     #[serde(flatten)]
-    request: crate::describe::Fields,
+    request: mbtool_core::describe::Fields,
     #[serde(skip_serializing_if = "Option::is_none")]
     waited: Option<f64>,
 }
@@ -101,7 +101,7 @@ fn frame_summary(report: &FrameReport) -> String {
         (Kind::Response, Some(values), Some(place)) if f.count.is_some() => {
             // A read answer located by its request: reference = value pairs.
             let start = f.address.unwrap_or_default();
-            let table = crate::address::Table::of_function(report.function);
+            let table = mbtool_core::model::address::Table::of_function(report.function);
             let shown: Vec<String> = match values {
                 Values::Registers(v) => v.iter().map(ToString::to_string).collect(),
                 Values::Bits(v) => v.iter().map(ToString::to_string).collect(),
@@ -113,7 +113,10 @@ fn frame_summary(report: &FrameReport) -> String {
                 .map(
                     |(i, value)| match (table, u16::try_from(u32::from(start) + i as u32)) {
                         (Some(table), Ok(address)) => {
-                            format!("{} = {value}", crate::address::reference(table, address))
+                            format!(
+                                "{} = {value}",
+                                mbtool_core::model::address::reference(table, address)
+                            )
                         }
                         _ => format!("{place}+{i} = {value}"),
                     },
@@ -196,7 +199,7 @@ impl SniffWriter {
                     waited,
                 },
             ) => {
-                let (_, fields) = describe_pdu(&crate::codec::Pdu::Request(request.clone()));
+                let (_, fields) = describe_pdu(&mbtool_core::codec::Pdu::Request(request.clone()));
                 json_line(
                     out,
                     &mut self.line,
@@ -268,7 +271,7 @@ impl SniffWriter {
                     .map(|g| {
                         format!(
                             "+{}",
-                            crate::duration::show(std::time::Duration::from_micros(g))
+                            mbtool_core::model::duration::show(std::time::Duration::from_micros(g))
                         )
                     })
                     .unwrap_or_default();
@@ -279,18 +282,22 @@ impl SniffWriter {
                 };
                 let check = match (&r.checksum, r.valid, &r.error) {
                     (_, _, Some(e)) if e.starts_with("incomplete") => "incomplete".to_string(),
-                    (crate::codec::Checksum::Lrc { found, expected }, ..) => if found == expected {
-                        "LRC ok"
-                    } else {
-                        "LRC BAD"
+                    (mbtool_core::codec::Checksum::Lrc { found, expected }, ..) => {
+                        if found == expected {
+                            "LRC ok"
+                        } else {
+                            "LRC BAD"
+                        }
+                        .to_string()
                     }
-                    .to_string(),
-                    (crate::codec::Checksum::Crc { found, expected }, ..) => if found == expected {
-                        "CRC ok"
-                    } else {
-                        "CRC BAD"
+                    (mbtool_core::codec::Checksum::Crc { found, expected }, ..) => {
+                        if found == expected {
+                            "CRC ok"
+                        } else {
+                            "CRC BAD"
+                        }
+                        .to_string()
                     }
-                    .to_string(),
                     _ => String::new(),
                 };
                 let mut text = format!(
@@ -338,7 +345,7 @@ impl SniffWriter {
                     .map(|w| {
                         format!(
                             " (waited {})",
-                            crate::duration::show(std::time::Duration::from_micros(w))
+                            mbtool_core::model::duration::show(std::time::Duration::from_micros(w))
                         )
                     })
                     .unwrap_or_default();

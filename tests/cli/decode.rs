@@ -4,7 +4,7 @@ use std::io::{BufRead, BufReader, Write};
 use std::process::{Command as Process, Stdio};
 
 use crate::support::mbtool;
-use mbtool::codec::checksum::crc16;
+use mbtool_core::codec::checksum::crc16;
 
 /// An RTU frame with its CRC, as spaced hex.
 fn rtu(body: &[u8]) -> String {

@@ -5,7 +5,7 @@ use std::thread;
 use std::time::Duration;
 
 use crate::support::{mbtool, read_frame, rtu, write_all, Pty, WORKED_FRAMES};
-use mbtool::codec::{Direction, Mode};
+use mbtool_core::codec::{Direction, Mode};
 
 /// What the scripted slave does with each request it receives, in order.
 enum Act {

@@ -8,11 +8,11 @@ use std::thread;
 use std::time::Duration;
 
 use crate::support::mbtool;
-use mbtool::codec::framing::{Event, Framer};
-use mbtool::codec::{Direction, Frame, Mode, Pdu, Request};
-use mbtool::master::{Master, MasterOptions, Reply};
-use mbtool::slave::{DataModel, Slave};
-use mbtool::transport::tcp::Tcp;
+use mbtool_core::codec::framing::{Event, Framer};
+use mbtool_core::codec::{Direction, Frame, Mode, Pdu, Request};
+use mbtool_core::master::{Master, MasterOptions, Reply};
+use mbtool_core::slave::{DataModel, Slave};
+use mbtool_core::transport::tcp::Tcp;
 
 /// What the server does with a request: the bytes it writes back, in one segment, made
 /// from the request's transaction id and its true answer.

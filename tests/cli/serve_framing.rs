@@ -10,9 +10,9 @@ use std::time::Duration;
 use crate::support::{
     free_port, random_request, read_frame, serve, values_of, wait_for_listener, write_all, Pty,
 };
-use mbtool::codec::framing::{Event, Framer};
-use mbtool::codec::{Direction, Frame, Mode, Pdu, Request};
-use mbtool::slave::{DataModel, Slave};
+use mbtool_core::codec::framing::{Event, Framer};
+use mbtool_core::codec::{Direction, Frame, Mode, Pdu, Request};
+use mbtool_core::slave::{DataModel, Slave};
 
 const SERVED: u8 = 17;
 

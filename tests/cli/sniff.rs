@@ -8,9 +8,9 @@ use std::process::{Command as Process, Stdio};
 use std::time::{Duration, Instant};
 
 use crate::support::{mbtool, random_request, rtu, write_all, Pty, WORKED_FRAMES as WORKED};
-use mbtool::codec::{Frame, Mode, Pdu};
-use mbtool::slave::{DataModel, Slave};
-use mbtool::sniff::session::{Filter, Record, Session};
+use mbtool_core::codec::{Frame, Mode, Pdu};
+use mbtool_core::slave::{DataModel, Slave};
+use mbtool_core::sniff::session::{Filter, Record, Session};
 use serialport::SerialPort;
 
 fn captures() -> PathBuf {

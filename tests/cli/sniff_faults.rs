@@ -7,9 +7,9 @@ use std::collections::HashMap;
 use std::io::Write;
 
 use crate::support::{mbtool, random_request, rtu};
-use mbtool::codec::checksum::crc_matches;
-use mbtool::codec::{Frame, Mode, Pdu};
-use mbtool::slave::{DataModel, Slave};
+use mbtool_core::codec::checksum::crc_matches;
+use mbtool_core::codec::{Frame, Mode, Pdu};
+use mbtool_core::slave::{DataModel, Slave};
 
 /// What goes on the line between two real frames.
 #[derive(Clone, Copy, PartialEq)]

@@ -5,8 +5,8 @@ use std::io::{Read, Write};
 use std::time::{Duration, Instant};
 
 use assert_cmd::Command;
-use mbtool::codec::framing::{Event, Framer};
-use mbtool::codec::{Direction, Frame, Mode, Request};
+use mbtool_core::codec::framing::{Event, Framer};
+use mbtool_core::codec::{Direction, Frame, Mode, Request};
 use serialport::{SerialPort, TTYPort};
 
 /// The worked frames of the Modbus manuals (every CRC checked): the `encode` arguments of
@@ -162,7 +162,7 @@ pub fn write_all(port: &mut TTYPort, bytes: &[u8]) {
 /// An RTU frame with its CRC.
 pub fn rtu(body: &[u8]) -> Vec<u8> {
     let mut frame = body.to_vec();
-    frame.extend_from_slice(&mbtool::codec::checksum::crc16(body).to_le_bytes());
+    frame.extend_from_slice(&mbtool_core::codec::checksum::crc16(body).to_le_bytes());
     frame
 }
 

@@ -3,7 +3,6 @@
 
 use serde::Serialize;
 
-use crate::address::{reference, Table};
 use crate::codec::function::{self, EXCEPTION_FLAG};
 use crate::codec::length::pdu_length;
 use crate::codec::pdu::DeviceIdentification;
@@ -11,7 +10,8 @@ use crate::codec::{
     bits, Checksum, Direction, Envelope, Exception, FrameError, Mode, Pdu, Reading, Request,
     Response,
 };
-use crate::values::escape_text;
+use crate::model::address::{reference, Table};
+use crate::model::values::escape_text;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]

@@ -8,7 +8,7 @@ use thiserror::Error;
 use crate::codec::answer::check;
 use crate::codec::framing::{Event, Framer};
 use crate::codec::{Direction, Exception, Frame, Mode, Pdu, Request, Response};
-use crate::duration::show;
+use crate::model::duration::show;
 use crate::transport::Transport;
 
 /// How the master behaves; the connection options fill it in.

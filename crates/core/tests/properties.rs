@@ -8,7 +8,7 @@ use mbtool_core::codec::{
     Direction, Envelope, Exception, ExceptionCode, Frame, Mode, Pdu, Reading, Request, Response,
 };
 use mbtool_core::describe::describe_frame;
-use mbtool_core::hexinput::frame_bytes;
+use mbtool_core::model::hexinput::frame_bytes;
 use proptest::collection::vec;
 use proptest::prelude::*;
 

@@ -19,10 +19,10 @@ use std::path::Path;
 
 use thiserror::Error;
 
-use crate::address::{parse_reference_span, reference, Table};
-use crate::choice::Choice;
+use crate::model::address::{parse_reference_span, reference, Table};
+use crate::model::choice::Choice;
+use crate::model::values::{parse_coil, ByteOrder, ValueType};
 use crate::slave::DataModel;
-use crate::values::{parse_coil, ByteOrder, ValueType};
 
 #[derive(Debug, Error)]
 pub enum DataFileError {

@@ -3,9 +3,9 @@
 
 use std::time::Duration;
 
-use crate::address::{parse_reference_span, Table};
 use crate::codec::{ExceptionCode, Request};
-use crate::number::parse_int;
+use crate::model::address::{parse_reference_span, Table};
+use crate::model::number::parse_int;
 
 /// An exception to answer instead of the data, for every request or for those that touch
 /// a range.

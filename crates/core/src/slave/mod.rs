@@ -4,6 +4,7 @@
 pub mod datafile;
 pub mod faults;
 pub mod model;
+pub mod server;
 
 use std::collections::BTreeMap;
 

@@ -1,7 +1,7 @@
 //! The four tables of one slave id, and which of their addresses exist.
 
-use crate::address::Table;
 use crate::codec::ExceptionCode;
+use crate::model::address::Table;
 
 /// One table: its values, which addresses exist, and which may not be written.
 #[derive(Clone, Debug, PartialEq, Eq)]

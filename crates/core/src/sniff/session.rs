@@ -6,10 +6,10 @@ use std::collections::BTreeMap;
 use serde::Serialize;
 
 use super::pairing::{Pairer, Role, Unanswered};
-use crate::address::{reference, Table};
 use crate::codec::framing::{Broken, Event, Found, Framer, Noise};
 use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
 use crate::describe::{describe_frame, describe_reading, FrameReport, Kind, Values};
+use crate::model::address::{reference, Table};
 
 /// What a session reports, in order.
 #[derive(Clone, Debug, PartialEq)]

@@ -3,6 +3,7 @@
 
 pub mod endpoint;
 pub mod serial;
+pub mod sim;
 pub mod tcp;
 
 use std::io;

@@ -1,6 +1,6 @@
 //! A serial line (RS-485/RS-232 adapter, or a pseudo-terminal in tests).
 
-use crate::choice::Choice;
+use crate::model::choice::Choice;
 use std::io::{self, Read, Write};
 use std::time::{Duration, Instant};
 

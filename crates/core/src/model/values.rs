@@ -5,8 +5,8 @@ use std::fmt;
 
 use serde::Serialize;
 
-use crate::choice::Choice;
-use crate::number::parse_int;
+use crate::model::choice::Choice;
+use crate::model::number::parse_int;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum ValueType {

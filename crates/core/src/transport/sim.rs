@@ -6,8 +6,8 @@ use std::time::Instant;
 
 use crate::codec::framing::{Event, Framer};
 use crate::codec::Mode;
-use crate::server::Server;
 use crate::slave::faults::Faults;
+use crate::slave::server::Server;
 use crate::slave::{DataModel, Slave, EXAMPLE_SLAVE};
 use crate::transport::Transport;
 

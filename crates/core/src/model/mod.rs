@@ -1,0 +1,9 @@
+//! The model: Modicon references and protocol addresses, value types and byte orders, and
+//! the spellings of what users type (numbers, durations, pasted frames, named settings).
+
+pub mod address;
+pub mod choice;
+pub mod duration;
+pub mod hexinput;
+pub mod number;
+pub mod values;
