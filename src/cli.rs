@@ -4,6 +4,7 @@
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use mbtool_core::codec::{Direction, Mode};
+use mbtool_core::master::plan::{How, Operation};
 use mbtool_core::model::address::Table;
 use mbtool_core::model::choice::Choice;
 use mbtool_core::model::values::{ByteOrder, ValueType};
@@ -327,18 +328,59 @@ pub enum RequestCommand {
 }
 
 impl RequestCommand {
-    /// The table a table-specific command works on.
-    pub fn table(&self) -> Option<Table> {
+    /// The operation the command asks of the core's planner, its words as typed.
+    pub fn operation(&self) -> Operation<'_> {
+        use RequestCommand as C;
+        fn read(a: &ReadArgs, table: Option<Table>) -> Operation<'_> {
+            Operation::Read {
+                slave: &a.slave,
+                address: &a.address,
+                table,
+                count: a.count.as_deref(),
+            }
+        }
         match self {
-            RequestCommand::ReadCoils(_)
-            | RequestCommand::WriteCoil(_)
-            | RequestCommand::WriteCoils(_) => Some(Table::Coils),
-            RequestCommand::ReadInputs(_) => Some(Table::DiscreteInputs),
-            RequestCommand::ReadInputRegisters(_) => Some(Table::InputRegisters),
-            RequestCommand::ReadHolding(_)
-            | RequestCommand::WriteRegister(_)
-            | RequestCommand::WriteRegisters(_) => Some(Table::HoldingRegisters),
-            RequestCommand::Read(_) | RequestCommand::Write(_) | RequestCommand::Raw(_) => None,
+            C::ReadCoils(a) => read(a, Some(Table::Coils)),
+            C::ReadInputs(a) => read(a, Some(Table::DiscreteInputs)),
+            C::ReadHolding(a) => read(a, Some(Table::HoldingRegisters)),
+            C::ReadInputRegisters(a) => read(a, Some(Table::InputRegisters)),
+            C::Read(a) => read(a, None),
+            C::WriteCoil(a) => Operation::Write {
+                slave: &a.slave,
+                address: &a.address,
+                table: Some(Table::Coils),
+                values: std::slice::from_ref(&a.value),
+                how: How::Single,
+            },
+            C::WriteRegister(a) => Operation::Write {
+                slave: &a.slave,
+                address: &a.address,
+                table: Some(Table::HoldingRegisters),
+                values: std::slice::from_ref(&a.value),
+                how: How::OneRegister,
+            },
+            C::WriteCoils(a) | C::WriteRegisters(a) => Operation::Write {
+                slave: &a.slave,
+                address: &a.address,
+                table: Some(if matches!(self, C::WriteCoils(_)) {
+                    Table::Coils
+                } else {
+                    Table::HoldingRegisters
+                }),
+                values: &a.values,
+                how: How::Multiple,
+            },
+            C::Write(a) => Operation::Write {
+                slave: &a.write.slave,
+                address: &a.write.address,
+                table: None,
+                values: &a.write.values,
+                how: How::Function(a.function.as_deref().and_then(|f| f.parse().ok())),
+            },
+            C::Raw(a) => Operation::Raw {
+                slave: &a.slave,
+                pdu: &a.pdu,
+            },
         }
     }
 }

@@ -3,6 +3,7 @@
 use thiserror::Error;
 
 use mbtool_core::codec::ExceptionCode;
+use mbtool_core::master::plan::PlanError;
 use mbtool_core::master::MasterError;
 use mbtool_core::model::address::AddressError;
 
@@ -13,6 +14,8 @@ pub enum Error {
     Usage(String),
     #[error(transparent)]
     Address(#[from] AddressError),
+    #[error(transparent)]
+    Plan(#[from] PlanError),
     #[error(transparent)]
     Io(#[from] std::io::Error),
     #[error(transparent)]
@@ -33,7 +36,7 @@ impl Error {
     /// The process exit status for this error (CLI.md, "Exit status").
     pub fn exit_code(&self) -> u8 {
         match self {
-            Error::Usage(_) | Error::Address(_) => 2,
+            Error::Usage(_) | Error::Address(_) | Error::Plan(_) => 2,
             Error::Io(_) => 1,
             Error::Master(MasterError::Timeout { .. }) => 3,
             Error::Master(MasterError::BadFrame { .. }) => 4,

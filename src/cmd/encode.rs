@@ -6,8 +6,8 @@ use mbtool::cli::{Cli, RequestCommand};
 use mbtool::connection::{self, Role};
 use mbtool::error::Error;
 use mbtool::output::{self, encode::write_frame};
-use mbtool::plan::{plan, Plan, PlanOptions};
 use mbtool_core::codec::{Frame, Mode, Pdu};
+use mbtool_core::master::plan::{plan, Plan, PlanOptions};
 use mbtool_core::transport::Endpoint;
 
 /// The framing: --mode, else TCP for a tcp:// port, else RTU. Unlike a connection, encode
@@ -30,7 +30,7 @@ pub fn plan_for(cli: &Cli, request: &RequestCommand) -> Result<Plan, Error> {
         max_per_request: cli.data.max_per_request,
         tcp: mode(cli) == Mode::Tcp,
     };
-    plan(request, &options)
+    Ok(plan(&request.operation(), &options)?)
 }
 
 pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {

@@ -12,10 +12,10 @@ use mbtool::error::Error;
 use mbtool::output::decode::DecodeWriter;
 use mbtool::output::read::{write_done, ReadData, ReadResult, ReadWriter, WriteDone};
 use mbtool::output::{self, encode::frame_text};
-use mbtool::plan::Plan;
 use mbtool::poll::PollStats;
 use mbtool_core::codec::{Frame, Mode, Pdu, Request, Response};
 use mbtool_core::describe::describe_frame;
+use mbtool_core::master::plan::Plan;
 use mbtool_core::master::{Master, Reply, Traffic};
 use mbtool_core::model::address::{reference, Table};
 

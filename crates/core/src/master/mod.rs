@@ -11,6 +11,8 @@ use crate::codec::{Direction, Exception, Frame, Mode, Pdu, Request, Response};
 use crate::model::duration::show;
 use crate::transport::Transport;
 
+pub mod plan;
+
 /// How the master behaves; the connection options fill it in.
 #[derive(Clone, Copy, Debug)]
 pub struct MasterOptions {

@@ -1,0 +1,542 @@
+//! From an operation as the user words it (slave, address, count or values, as typed) to
+//! the requests that carry it out, split to the protocol's limits.
+//!
+//! Every word is checked here, before anything is sent: a plan either holds every request
+//! of the operation, or the operation was wrong and nothing happens.
+
+use thiserror::Error;
+
+use crate::codec::{limits, Request};
+use crate::model::address::{parse_reference_span, parse_span, AddressError, Span, Table};
+use crate::model::choice::Choice;
+use crate::model::hexinput::HexError;
+use crate::model::number::{parse_in_range, parse_int, NumberError};
+use crate::model::values::{parse_coil, ByteOrder, ValueType};
+
+/// Why an operation cannot be planned: what the user gave is wrong, and nothing is sent.
+#[derive(Debug, Error, PartialEq, Eq)]
+pub enum PlanError {
+    #[error(transparent)]
+    Address(#[from] AddressError),
+    #[error("slave {0}")]
+    Slave(NumberError),
+    #[error("unit id {0} is out of range 0-255")]
+    UnitId(String),
+    #[error("slave 0 is broadcast, which only writes may use: give the slave's address 1-247")]
+    BroadcastRead,
+    #[error("slave {0} is reserved on serial lines: give 1-247")]
+    ReservedSlave(String),
+    #[error("slave {0} is out of range 1-247")]
+    SlaveRange(String),
+    #[error("COUNT must be at least 1")]
+    ZeroCount,
+    /// The count as typed was no number in range.
+    #[error("{0}")]
+    Count(String),
+    #[error("{span} with {count} items goes past address 65535")]
+    PastEnd { span: String, count: u32 },
+    #[error("--max-per-request must be at least {0}")]
+    MaxPerRequest(u16),
+    #[error("--type applies to registers; {0}s are bits")]
+    TypeOfBits(&'static str),
+    #[error("give either a range (400108-400110) or a COUNT, not both")]
+    RangeAndCount,
+    #[error(
+        "the range holds {registers} registers, not a whole number of {width}-register values"
+    )]
+    RangeNotWhole { registers: u32, width: u32 },
+    #[error("{span} is a {table} reference, and that table is read-only: write to coils (0xxxxx) or holding registers (4xxxxx)")]
+    ReadOnly { span: String, table: &'static str },
+    #[error("give at least one VALUE to write")]
+    NoValues,
+    /// A value as typed does not read as the table's or the value type's.
+    #[error("{0}")]
+    Value(String),
+    #[error("the range holds {count} addresses but {values} values were given")]
+    RangeValues { count: u32, values: usize },
+    #[error("coils are written with --function 5 (one at a time) or 15 (several)")]
+    CoilFunction,
+    #[error("registers are written with --function 6 (one at a time) or 16 (several)")]
+    RegisterFunction,
+    #[error("write-register writes one 16-bit register and a {value_type} value takes {width}: use write-registers")]
+    WideRegister {
+        value_type: &'static str,
+        width: usize,
+    },
+    #[error("PDU_HEX: {0}")]
+    PduHex(HexError),
+    #[error("PDU_HEX is empty: give at least a function code")]
+    EmptyPdu,
+    #[error("function code {0:02X} is not a request: give 01-7F")]
+    NotRequest(u8),
+    #[error("a PDU is at most {max} bytes; this one has {len}")]
+    PduTooLong { max: usize, len: usize },
+}
+
+type Result<T, E = PlanError> = std::result::Result<T, E>;
+
+/// An operation as the user words it.
+#[derive(Clone, Copy, Debug)]
+pub enum Operation<'a> {
+    /// Read `count` items (one value by default) from `address`: of `table`, or, for
+    /// `None`, of the table its Modicon reference names.
+    Read {
+        slave: &'a str,
+        address: &'a str,
+        table: Option<Table>,
+        count: Option<&'a str>,
+    },
+    /// Write `values` from `address`, of `table` or of the table its reference names.
+    Write {
+        slave: &'a str,
+        address: &'a str,
+        table: Option<Table>,
+        values: &'a [String],
+        how: How,
+    },
+    /// Send a PDU given as hex words.
+    Raw { slave: &'a str, pdu: &'a [String] },
+}
+
+/// Which write function carries the values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum How {
+    /// One request per value (05, 06).
+    Single,
+    /// As few requests as the limits allow (15, 16).
+    Multiple,
+    /// One 16-bit register (06): a wider value type is refused.
+    OneRegister,
+    /// As a function code asks (5, 6, 15, 16), or by the number of values.
+    Function(Option<u8>),
+}
+
+/// What the options say about addresses, values and request sizes.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct PlanOptions {
+    pub pdu_addresses: bool,
+    pub value_type: ValueType,
+    pub order: ByteOrder,
+    pub max_per_request: Option<u16>,
+    /// Over TCP the unit id is 0-255; on a serial line the slave is 1-247 (0 to broadcast).
+    pub tcp: bool,
+}
+
+/// The requests of one command, in order, and what they read (to label the answers).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Plan {
+    pub slave: u8,
+    pub requests: Vec<Request>,
+    /// For reads: the table and first address, so that answers can carry references.
+    pub reads: Option<(Table, u16)>,
+}
+
+fn parse_slave(text: &str, is_write: bool, options: &PlanOptions) -> Result<u8> {
+    let value = parse_int(text).map_err(PlanError::Slave)?;
+    if options.tcp {
+        return u8::try_from(value).map_err(|_| PlanError::UnitId(text.to_string()));
+    }
+    match value {
+        1..=247 => Ok(value as u8),
+        0 if is_write => Ok(0),
+        0 => Err(PlanError::BroadcastRead),
+        248..=255 => Err(PlanError::ReservedSlave(text.to_string())),
+        _ => Err(PlanError::SlaveRange(text.to_string())),
+    }
+}
+
+/// Splits `count` items from `address` into runs of at most `max`, keeping runs a multiple
+/// of `unit` so that no value wider than one register is cut in two.
+fn runs(address: u16, count: u32, max: u16, unit: u16) -> Vec<(u16, u16)> {
+    let step = u32::from(max - max % unit);
+    let mut out = Vec::new();
+    let mut done = 0u32;
+    while done < count {
+        let n = step.min(count - done);
+        // address + count <= 65536 was checked, so both fit.
+        out.push(((u32::from(address) + done) as u16, n as u16));
+        done += n;
+    }
+    out
+}
+
+fn check_end(span_text: &str, address: u16, count: u32) -> Result<()> {
+    if count == 0 {
+        return Err(PlanError::ZeroCount);
+    }
+    if u32::from(address) + count > 65536 {
+        return Err(PlanError::PastEnd {
+            span: span_text.to_string(),
+            count,
+        });
+    }
+    Ok(())
+}
+
+fn per_request(limit: u16, options: &PlanOptions, unit: u16) -> Result<u16> {
+    let max = options.max_per_request.map_or(limit, |m| m.min(limit));
+    if max < unit.max(1) {
+        return Err(PlanError::MaxPerRequest(unit.max(1)));
+    }
+    Ok(max)
+}
+
+fn register_type(table: Table, options: &PlanOptions) -> Result<ValueType> {
+    if table.is_bits() && options.value_type != ValueType::U16 {
+        return Err(PlanError::TypeOfBits(table.name()));
+    }
+    Ok(options.value_type)
+}
+
+fn read_plan(slave: u8, span: Span, count: Option<&str>, options: &PlanOptions) -> Result<Plan> {
+    let value_type = register_type(span.table, options)?;
+    let width = value_type.width() as u32;
+    let items = match (span.count, count) {
+        (Some(_), Some(_)) => return Err(PlanError::RangeAndCount),
+        (Some(registers), None) => {
+            if registers % width != 0 {
+                return Err(PlanError::RangeNotWhole { registers, width });
+            }
+            registers
+        }
+        (None, Some(text)) => {
+            parse_in_range(text, 1, 65536, "COUNT").map_err(PlanError::Count)? as u32 * width
+        }
+        (None, None) => width,
+    };
+    check_end(&span.to_string(), span.address, items)?;
+    let limit = if span.table.is_bits() {
+        limits::MAX_READ_BITS
+    } else {
+        limits::MAX_READ_REGISTERS
+    };
+    let max = per_request(limit, options, width as u16)?;
+    let requests = runs(span.address, items, max, width as u16)
+        .into_iter()
+        .map(|(address, quantity)| match span.table {
+            Table::Coils => Request::ReadCoils { address, quantity },
+            Table::DiscreteInputs => Request::ReadDiscreteInputs { address, quantity },
+            Table::InputRegisters => Request::ReadInputRegisters { address, quantity },
+            Table::HoldingRegisters => Request::ReadHoldingRegisters { address, quantity },
+        })
+        .collect();
+    Ok(Plan {
+        slave,
+        requests,
+        reads: Some((span.table, span.address)),
+    })
+}
+
+/// Coil values: each on/off/1/0/true/false, or one bit string such as `10110`.
+fn parse_coils(values: &[String]) -> Result<Vec<bool>> {
+    if let [bits] = values {
+        if bits.len() > 1 && bits.bytes().all(|b| b == b'0' || b == b'1') {
+            return Ok(bits.bytes().map(|b| b == b'1').collect());
+        }
+    }
+    values
+        .iter()
+        .map(|v| parse_coil(v).map_err(PlanError::Value))
+        .collect()
+}
+
+fn parse_registers(values: &[String], options: &PlanOptions) -> Result<Vec<u16>> {
+    let mut registers = Vec::with_capacity(values.len());
+    for value in values {
+        registers.extend(
+            options
+                .value_type
+                .parse(value, options.order)
+                .map_err(PlanError::Value)?,
+        );
+    }
+    Ok(registers)
+}
+
+/// How a write is carried: one value per request (05/06) or many (15/16).
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum WriteStyle {
+    Single,
+    Multiple,
+}
+
+fn write_plan(
+    slave: u8,
+    span: Span,
+    values: &[String],
+    style: Option<WriteStyle>,
+    options: &PlanOptions,
+) -> Result<Plan> {
+    let what = span.to_string();
+    if !span.table.is_writable() {
+        return Err(PlanError::ReadOnly {
+            span: what,
+            table: span.table.name(),
+        });
+    }
+    if values.is_empty() {
+        return Err(PlanError::NoValues);
+    }
+    let requests = if span.table == Table::Coils {
+        register_type(span.table, options)?;
+        let coils = WriteValues {
+            values: parse_coils(values)?,
+            unit: 1,
+            limit: limits::MAX_WRITE_BITS,
+            single: |address, value| Request::WriteSingleCoil { address, value },
+            multiple: |address, values| Request::WriteMultipleCoils { address, values },
+        };
+        coils.requests(&span, style, options)?
+    } else {
+        let registers = WriteValues {
+            values: parse_registers(values, options)?,
+            unit: options.value_type.width() as u16,
+            limit: limits::MAX_WRITE_REGISTERS,
+            single: |address, value| Request::WriteSingleRegister { address, value },
+            multiple: |address, values| Request::WriteMultipleRegisters { address, values },
+        };
+        registers.requests(&span, style, options)?
+    };
+    Ok(Plan {
+        slave,
+        requests,
+        reads: None,
+    })
+}
+
+/// Values to write to one table, and how that table's write requests are made.
+struct WriteValues<T> {
+    values: Vec<T>,
+    /// Registers per value: a request never cuts a value in two.
+    unit: u16,
+    limit: u16,
+    single: fn(u16, T) -> Request,
+    multiple: fn(u16, Vec<T>) -> Request,
+}
+
+impl<T: Copy> WriteValues<T> {
+    fn requests(
+        &self,
+        span: &Span,
+        style: Option<WriteStyle>,
+        options: &PlanOptions,
+    ) -> Result<Vec<Request>> {
+        let count = self.values.len();
+        check_span_count(span, count)?;
+        check_end(&span.to_string(), span.address, count as u32)?;
+        let single = matches!(style, Some(WriteStyle::Single)) || (style.is_none() && count == 1);
+        if single {
+            return Ok(self
+                .values
+                .iter()
+                .zip(span.address..)
+                .map(|(value, address)| (self.single)(address, *value))
+                .collect());
+        }
+        let max = per_request(self.limit, options, self.unit)?;
+        let mut rest = self.values.as_slice();
+        Ok(runs(span.address, count as u32, max, self.unit)
+            .into_iter()
+            .map(|(address, quantity)| {
+                let (chunk, after) = rest.split_at(usize::from(quantity));
+                rest = after;
+                (self.multiple)(address, chunk.to_vec())
+            })
+            .collect())
+    }
+}
+
+/// A range given to a write must hold exactly the values given.
+fn check_span_count(span: &Span, values: usize) -> Result<()> {
+    match span.count {
+        Some(count) if count as usize != values => Err(PlanError::RangeValues { count, values }),
+        _ => Ok(()),
+    }
+}
+
+/// The write style `--function` forces, checked against the table.
+fn forced_style(table: Table, function: Option<u8>) -> Result<Option<WriteStyle>> {
+    let Some(function) = function else {
+        return Ok(None);
+    };
+    match (table, function) {
+        (Table::Coils, 5) | (Table::HoldingRegisters, 6) => Ok(Some(WriteStyle::Single)),
+        (Table::Coils, 15) | (Table::HoldingRegisters, 16) => Ok(Some(WriteStyle::Multiple)),
+        (Table::Coils, _) => Err(PlanError::CoilFunction),
+        _ => Err(PlanError::RegisterFunction),
+    }
+}
+
+/// Plans an operation.
+pub fn plan(operation: &Operation, options: &PlanOptions) -> Result<Plan> {
+    let span = |address: &str, table: Option<Table>| match table {
+        Some(table) => parse_span(address, table, options.pdu_addresses),
+        None => parse_reference_span(address),
+    };
+    match *operation {
+        Operation::Read {
+            slave,
+            address,
+            table,
+            count,
+        } => {
+            let slave = parse_slave(slave, false, options)?;
+            read_plan(slave, span(address, table)?, count, options)
+        }
+        Operation::Write {
+            slave,
+            address,
+            table,
+            values,
+            how,
+        } => {
+            let slave = parse_slave(slave, true, options)?;
+            if how == How::OneRegister {
+                let width = options.value_type.width();
+                if width > 1 {
+                    return Err(PlanError::WideRegister {
+                        value_type: options.value_type.name(),
+                        width,
+                    });
+                }
+            }
+            let span = span(address, table)?;
+            let style = match how {
+                How::Single | How::OneRegister => Some(WriteStyle::Single),
+                How::Multiple => Some(WriteStyle::Multiple),
+                How::Function(function) => forced_style(span.table, function)?,
+            };
+            write_plan(slave, span, values, style, options)
+        }
+        Operation::Raw { slave, pdu } => {
+            let slave = parse_slave(slave, true, options)?;
+            let pdu = crate::model::hexinput::parse_hex_words(pdu).map_err(PlanError::PduHex)?;
+            Ok(Plan {
+                slave,
+                requests: vec![raw_request(&pdu)?],
+                reads: None,
+            })
+        }
+    }
+}
+
+/// A raw PDU: typed when it reads as a valid request, otherwise kept as given, so that a
+/// device's answer to a malformed request can be tested too.
+fn raw_request(pdu: &[u8]) -> Result<Request> {
+    let Some((&function, data)) = pdu.split_first() else {
+        return Err(PlanError::EmptyPdu);
+    };
+    if function == 0 || function >= 0x80 {
+        return Err(PlanError::NotRequest(function));
+    }
+    if pdu.len() > limits::MAX_PDU {
+        return Err(PlanError::PduTooLong {
+            max: limits::MAX_PDU,
+            len: pdu.len(),
+        });
+    }
+    Ok(Request::decode(pdu).unwrap_or_else(|_| Request::Other {
+        function,
+        data: data.to_vec(),
+    }))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn read(address: &str, count: Option<&str>, options: &PlanOptions) -> Result<Plan> {
+        plan(
+            &Operation::Read {
+                slave: "17",
+                address,
+                table: None,
+                count,
+            },
+            options,
+        )
+    }
+
+    #[test]
+    fn a_long_read_is_split_at_the_limit_without_cutting_a_value() {
+        let options = PlanOptions {
+            value_type: ValueType::F32,
+            max_per_request: Some(5),
+            ..PlanOptions::default()
+        };
+        let plan = read("400001", Some("4"), &options).unwrap();
+        // Four f32 values are eight registers; five per request would cut one in two.
+        assert_eq!(
+            plan.requests,
+            [
+                Request::ReadHoldingRegisters {
+                    address: 0,
+                    quantity: 4
+                },
+                Request::ReadHoldingRegisters {
+                    address: 4,
+                    quantity: 4
+                },
+            ]
+        );
+        assert_eq!(plan.reads, Some((Table::HoldingRegisters, 0)));
+    }
+
+    #[test]
+    fn coils_as_a_bit_string_are_one_write() {
+        let values = ["10110".to_string()];
+        let plan = plan(
+            &Operation::Write {
+                slave: "0",
+                address: "000020",
+                table: None,
+                values: &values,
+                how: How::Function(None),
+            },
+            &PlanOptions::default(),
+        )
+        .unwrap();
+        assert_eq!(plan.slave, 0);
+        assert_eq!(
+            plan.requests,
+            [Request::WriteMultipleCoils {
+                address: 19,
+                values: vec![true, false, true, true, false]
+            }]
+        );
+    }
+
+    #[test]
+    fn what_is_wrong_is_said_before_anything_is_sent() {
+        let options = PlanOptions::default();
+        assert_eq!(
+            read("400108", Some("0"), &options),
+            Err(PlanError::Count("COUNT 0 is out of range 1-65536".into()))
+        );
+        assert_eq!(
+            read("465536", Some("2"), &options),
+            Err(PlanError::PastEnd {
+                span: "465536".into(),
+                count: 2
+            })
+        );
+        let broadcast_read = plan(
+            &Operation::Read {
+                slave: "0",
+                address: "400108",
+                table: None,
+                count: None,
+            },
+            &options,
+        );
+        assert_eq!(broadcast_read, Err(PlanError::BroadcastRead));
+        let raw = plan(
+            &Operation::Raw {
+                slave: "17",
+                pdu: &["83".to_string()],
+            },
+            &options,
+        );
+        assert_eq!(raw, Err(PlanError::NotRequest(0x83)));
+    }
+}
