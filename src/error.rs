@@ -4,6 +4,7 @@ use thiserror::Error;
 
 use mbtool_core::codec::ExceptionCode;
 use mbtool_core::master::plan::PlanError;
+use mbtool_core::master::run::RunError;
 use mbtool_core::master::MasterError;
 use mbtool_core::model::address::AddressError;
 
@@ -26,6 +27,24 @@ pub enum Error {
         function: u8,
         code: ExceptionCode,
     },
+}
+
+/// A request that got no usable answer: the master's error, or the slave's exception.
+impl From<RunError> for Error {
+    fn from(error: RunError) -> Self {
+        match error {
+            RunError::Master(error) => Error::Master(error),
+            RunError::Exception {
+                slave,
+                function,
+                code,
+            } => Error::Exception {
+                slave,
+                function,
+                code,
+            },
+        }
+    }
 }
 
 impl Error {

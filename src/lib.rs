@@ -8,4 +8,3 @@ pub mod docs;
 pub mod error;
 pub mod lines;
 pub mod output;
-pub mod poll;

@@ -10,12 +10,12 @@ use mbtool::cli::{Cli, RequestCommand};
 use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output::decode::DecodeWriter;
-use mbtool::output::read::{write_done, ReadData, ReadResult, ReadWriter, WriteDone};
+use mbtool::output::read::{write_done, ReadWriter, WriteDone};
 use mbtool::output::{self, encode::frame_text};
-use mbtool::poll::PollStats;
-use mbtool_core::codec::{Frame, Mode, Pdu, Request, Response};
+use mbtool_core::codec::{Frame, Mode, Pdu, Request};
 use mbtool_core::describe::describe_frame;
 use mbtool_core::master::plan::Plan;
+use mbtool_core::master::run::PollStats;
 use mbtool_core::master::{Master, Reply, Traffic};
 use mbtool_core::model::address::{reference, Table};
 
@@ -58,60 +58,6 @@ fn tracer(mode: Mode) -> mbtool_core::master::Tracer {
     })
 }
 
-/// The answer to one request, exceptions turned into errors.
-fn transact(master: &mut Master, slave: u8, request: &Request) -> Result<Option<Response>, Error> {
-    match master.transact(slave, request)? {
-        Reply::Response(response) => Ok(Some(response)),
-        Reply::Broadcast => Ok(None),
-        Reply::Exception(exception) => Err(Error::Exception {
-            slave,
-            function: exception.function,
-            code: exception.code,
-        }),
-    }
-}
-
-/// Every request of a read, put together.
-fn read_once(
-    master: &mut Master,
-    plan: &Plan,
-    table: Table,
-    address: u16,
-) -> Result<ReadResult, Error> {
-    let mut registers = Vec::new();
-    let mut bits = Vec::new();
-    for request in &plan.requests {
-        let response = transact(master, plan.slave, request)?;
-        let quantity = match request {
-            Request::ReadCoils { quantity, .. } | Request::ReadDiscreteInputs { quantity, .. } => {
-                usize::from(*quantity)
-            }
-            _ => 0,
-        };
-        match response {
-            Some(
-                Response::ReadHoldingRegisters { values } | Response::ReadInputRegisters { values },
-            ) => registers.extend(values),
-            Some(response @ (Response::ReadCoils { .. } | Response::ReadDiscreteInputs { .. })) => {
-                bits.extend(response.bits(quantity).unwrap_or_default())
-            }
-            // The master checked that the answer fits the request.
-            _ => {}
-        }
-    }
-    Ok(ReadResult {
-        slave: plan.slave,
-        function: plan.requests.first().map_or(0, Request::function),
-        table,
-        address,
-        data: if table.is_bits() {
-            ReadData::Bits(bits)
-        } else {
-            ReadData::Registers(registers)
-        },
-    })
-}
-
 fn reads(
     cli: &Cli,
     master: &mut Master,
@@ -127,7 +73,7 @@ fn reads(
         output::colour_wanted(),
     );
     let Some(interval) = cli.poll.poll else {
-        let result = read_once(master, plan, table, address)?;
+        let result = master.read(plan, table, address).map_err(Error::from)?;
         writer.write(out, &result)?;
         return Ok(0);
     };
@@ -143,7 +89,7 @@ fn reads(
     let mut done = 0u64;
     loop {
         let started = Instant::now();
-        let outcome = read_once(master, plan, table, address);
+        let outcome = master.read(plan, table, address);
         stats.record(outcome.as_ref().map(|_| ()), started.elapsed());
         match outcome {
             Ok(result) => {
@@ -153,7 +99,7 @@ fn reads(
             }
             Err(error) => {
                 eprintln!("mbtool: {error}");
-                last_status = error.exit_code();
+                last_status = Error::from(error).exit_code();
             }
         }
         done += 1;
@@ -171,15 +117,7 @@ fn reads(
 }
 
 fn writes(cli: &Cli, master: &mut Master, plan: &Plan, out: &mut Box<dyn Write>) -> Result<u8> {
-    let mut count = 0;
-    for request in &plan.requests {
-        transact(master, plan.slave, request)?;
-        count += match request {
-            Request::WriteMultipleCoils { values, .. } => values.len(),
-            Request::WriteMultipleRegisters { values, .. } => values.len(),
-            _ => 1,
-        };
-    }
+    let count = master.write(plan).map_err(Error::from)?;
     let Some(first) = plan.requests.first() else {
         return Ok(0);
     };

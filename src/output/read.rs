@@ -8,24 +8,9 @@ use serde::Serialize;
 
 use super::{csv_field, new_table};
 use crate::cli::OutputFormat;
-use mbtool_core::model::address::{reference, Table};
+use mbtool_core::master::run::{ReadData, ReadResult};
+use mbtool_core::model::address::reference;
 use mbtool_core::model::values::{ByteOrder, Value, ValueType};
-
-/// What one read returned, all requests of a split read put together.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ReadResult {
-    pub slave: u8,
-    pub function: u8,
-    pub table: Table,
-    pub address: u16,
-    pub data: ReadData,
-}
-
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum ReadData {
-    Registers(Vec<u16>),
-    Bits(Vec<bool>),
-}
 
 #[derive(Serialize)]
 struct JsonEntry<'a> {
@@ -109,7 +94,7 @@ impl ReadWriter {
     fn changed(&self, result: &ReadResult) -> Vec<bool> {
         let now = self.rows(result);
         match &self.previous {
-            Some(previous) if previous.data_len() == result.data_len() => {
+            Some(previous) if previous.data.len() == result.data.len() => {
                 let before = self.rows(previous);
                 now.iter()
                     .zip(&before)
@@ -213,15 +198,6 @@ impl ReadWriter {
     /// Keeps the first result, so that the next poll's changes show.
     pub fn polling(&mut self, result: &ReadResult) {
         self.previous.get_or_insert_with(|| result.clone());
-    }
-}
-
-impl ReadResult {
-    fn data_len(&self) -> usize {
-        match &self.data {
-            ReadData::Registers(r) => r.len(),
-            ReadData::Bits(b) => b.len(),
-        }
     }
 }
 
