@@ -21,7 +21,7 @@ pub fn endpoint(cli: &Cli) -> Result<Endpoint> {
             "no --port: give a serial device (/dev/ttyUSB0), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim to try the built-in slave",
         )
     })?;
-    Endpoint::parse(port).map_err(Error::Usage)
+    Ok(Endpoint::parse(port)?)
 }
 
 /// What a command does with `--port`. The framing rules are the same for every command;

@@ -7,6 +7,7 @@ use mbtool_core::master::plan::PlanError;
 use mbtool_core::master::run::RunError;
 use mbtool_core::master::MasterError;
 use mbtool_core::model::address::AddressError;
+use mbtool_core::transport::endpoint::EndpointError;
 
 #[derive(Debug, Error)]
 pub enum Error {
@@ -17,6 +18,8 @@ pub enum Error {
     Address(#[from] AddressError),
     #[error(transparent)]
     Plan(#[from] PlanError),
+    #[error(transparent)]
+    Endpoint(#[from] EndpointError),
     #[error(transparent)]
     Io(#[from] std::io::Error),
     #[error(transparent)]
@@ -55,7 +58,7 @@ impl Error {
     /// The process exit status for this error (CLI.md, "Exit status").
     pub fn exit_code(&self) -> u8 {
         match self {
-            Error::Usage(_) | Error::Address(_) | Error::Plan(_) => 2,
+            Error::Usage(_) | Error::Address(_) | Error::Plan(_) | Error::Endpoint(_) => 2,
             Error::Io(_) => 1,
             Error::Master(MasterError::Timeout { .. }) => 3,
             Error::Master(MasterError::BadFrame { .. }) => 4,

@@ -24,7 +24,7 @@ fn endpoint(cli: &Cli) -> Result<Endpoint, Error> {
             "serve needs --port: a serial device, or tcp://127.0.0.1:5020 to listen on TCP",
         )
     })?;
-    match Endpoint::parse_listen(port).map_err(Error::Usage)? {
+    match Endpoint::parse_listen(port)? {
         Endpoint::Sim => Err(Error::usage(
             "--port sim is the built-in slave for the master commands; serve needs a serial device or tcp://ADDRESS:PORT",
         )),

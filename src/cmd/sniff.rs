@@ -284,7 +284,7 @@ fn live(
                 Error::usage("sniff listens on a serial device; for a file give --input").into(),
             )
         }
-        Some(Err(e)) => return Err(Error::usage(e).into()),
+        Some(Err(e)) => return Err(Error::from(e).into()),
         None => {
             return Err(Error::usage(
                 "sniff needs --port DEVICE, or --input FILE to replay a capture",

@@ -5,9 +5,9 @@ use std::time::{Duration, Instant};
 
 use thiserror::Error;
 
-use crate::codec::answer::check;
+use crate::codec::answer::{check, Mismatch};
 use crate::codec::framing::{Event, Framer};
-use crate::codec::{Direction, Exception, Frame, Mode, Pdu, Request, Response};
+use crate::codec::{Direction, Exception, Frame, FrameError, Mode, Pdu, Request, Response};
 use crate::model::duration::show;
 use crate::transport::Transport;
 
@@ -47,11 +47,29 @@ pub enum MasterError {
     #[error("no answer from slave {slave} within {}", show(*.timeout))]
     Timeout { slave: u8, timeout: Duration },
     #[error("bad answer from slave {slave}: {reason}")]
-    BadFrame { slave: u8, reason: String },
+    BadFrame { slave: u8, reason: BadAnswer },
     #[error("request cannot be encoded: {0}")]
     Encode(#[from] crate::codec::PduError),
     #[error(transparent)]
     Io(#[from] std::io::Error),
+}
+
+/// What was wrong with what came back instead of the answer.
+#[derive(Debug, Error)]
+pub enum BadAnswer {
+    #[error(transparent)]
+    Frame(#[from] FrameError),
+    /// A frame of the right slave that does not answer the request.
+    #[error(transparent)]
+    Mismatch(#[from] Mismatch),
+    #[error("the answer came from slave {0}")]
+    OtherSlave(u8),
+    #[error("the answer reads as a request")]
+    Request,
+    #[error("{len} bytes that are no Modbus TCP frame ({shown})")]
+    NotTcp { len: u64, shown: String },
+    #[error("incomplete answer: {len} bytes ({shown}) and then silence")]
+    Incomplete { len: usize, shown: String },
 }
 
 /// What the master saw, for `-v`.
@@ -91,7 +109,7 @@ pub struct Master {
 struct Heard {
     answer: Option<Pdu>,
     /// What was wrong with the first frame that was not the answer.
-    problem: Option<String>,
+    problem: Option<BadAnswer>,
     /// Bytes of whole frames that belong to other transactions: not this one's fault.
     stale_bytes: usize,
 }
@@ -184,22 +202,27 @@ impl Master {
             Pdu::Response(response) => Ok(Reply::Response(response)),
             Pdu::Request(_) => Err(MasterError::BadFrame {
                 slave,
-                reason: "the answer reads as a request".into(),
+                reason: BadAnswer::Request,
             }),
         }
     }
 
     /// Whether a whole, valid frame is the answer to this request.
-    fn belongs(&self, frame: &Frame, slave: u8, request: &Request) -> Result<(), Option<String>> {
+    fn belongs(
+        &self,
+        frame: &Frame,
+        slave: u8,
+        request: &Request,
+    ) -> Result<(), Option<BadAnswer>> {
         if self.options.mode == Mode::Tcp && frame.transaction != self.transaction {
             // A late or repeated answer to an earlier request: not ours, and no fault of
             // this one.
             return Err(None);
         }
         if frame.slave != slave {
-            return Err(Some(format!("the answer came from slave {}", frame.slave)));
+            return Err(Some(BadAnswer::OtherSlave(frame.slave)));
         }
-        check(request, &frame.pdu).map_err(|mismatch| Some(mismatch.to_string()))
+        check(request, &frame.pdu).map_err(|mismatch| Some(mismatch.into()))
     }
 
     /// Reads what the framer found, in order, until the answer.
@@ -220,16 +243,15 @@ impl Master {
                             }
                         },
                         Err(error) => {
-                            heard.problem.get_or_insert(error.to_string());
+                            heard.problem.get_or_insert(error.into());
                         }
                     }
                 }
                 Event::Noise(noise) if self.options.mode == Mode::Tcp => {
-                    heard.problem.get_or_insert(format!(
-                        "{} bytes that are no Modbus TCP frame ({})",
-                        noise.len,
-                        crate::describe::spaced_hex(&noise.kept[..noise.kept.len().min(12)])
-                    ));
+                    heard.problem.get_or_insert(BadAnswer::NotTcp {
+                        len: noise.len,
+                        shown: crate::describe::spaced_hex(&noise.kept[..noise.kept.len().min(12)]),
+                    });
                 }
                 // Noise on a serial line: the answer may still stand after it.
                 Event::Noise(_) => {}
@@ -301,11 +323,14 @@ impl Master {
                             crate::describe::spaced_hex(&received[..received.len().min(32)]);
                         MasterError::BadFrame {
                             slave,
-                            reason: format!(
-                                "incomplete answer: {} bytes ({shown}{}) and then silence",
-                                received.len(),
-                                if received.len() > 32 { " ..." } else { "" }
-                            ),
+                            reason: BadAnswer::Incomplete {
+                                len: received.len(),
+                                shown: if received.len() > 32 {
+                                    format!("{shown} ...")
+                                } else {
+                                    shown
+                                },
+                            },
                         }
                     }
                     None => MasterError::Timeout {

@@ -3,6 +3,8 @@
 
 use std::fmt;
 
+use thiserror::Error;
+
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Endpoint {
     Serial(String),
@@ -37,17 +39,45 @@ pub const MODBUS_TCP_PORT: u16 = 502;
 /// Where a listener binds when its address leaves out the host: this machine only.
 pub const LISTEN_HOST: &str = "127.0.0.1";
 
+/// Why a `--port` text names no endpoint.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum EndpointError {
+    #[error("{scheme}{rest}: an IPv6 address needs its closing ']'")]
+    OpenBracket { scheme: &'static str, rest: String },
+    #[error("{scheme}{rest}: give a host, as in {scheme}127.0.0.1:502")]
+    NoHost { scheme: &'static str, rest: String },
+    #[error("{scheme}{rest}: '{port}' is not a TCP port (1-65535)")]
+    BadPort {
+        scheme: &'static str,
+        rest: String,
+        port: String,
+    },
+    #[error("{scheme}{rest}: give the gateway's port, as in {scheme}{host}:4001")]
+    NoPort {
+        scheme: &'static str,
+        rest: String,
+        host: String,
+    },
+    #[error("'{0}': the port is a serial device, tcp://HOST[:PORT], rtu+tcp://HOST:PORT or sim")]
+    UnknownScheme(String),
+    #[error("--port is empty: give a serial device, tcp://HOST[:PORT] or sim")]
+    Empty,
+}
+
 fn host_port(
     rest: &str,
     default_port: Option<u16>,
-    scheme: &str,
+    scheme: &'static str,
     listening: bool,
-) -> Result<(String, u16), String> {
+) -> Result<(String, u16), EndpointError> {
     // [v6]:port, host:port, or host alone.
     let (host, port) = if let Some(v6) = rest.strip_prefix('[') {
         let (host, after) = v6
             .split_once(']')
-            .ok_or_else(|| format!("{scheme}{rest}: an IPv6 address needs its closing ']'"))?;
+            .ok_or_else(|| EndpointError::OpenBracket {
+                scheme,
+                rest: rest.to_string(),
+            })?;
         (host, after.strip_prefix(':'))
     } else {
         match rest.rsplit_once(':') {
@@ -58,41 +88,47 @@ fn host_port(
     let host = match host {
         "" if listening => LISTEN_HOST,
         "" => {
-            return Err(format!(
-                "{scheme}{rest}: give a host, as in {scheme}127.0.0.1:502"
-            ))
+            return Err(EndpointError::NoHost {
+                scheme,
+                rest: rest.to_string(),
+            })
         }
         host => host,
     };
-    let port = match (port, default_port) {
-        (Some(port), _) => port
-            .parse::<u16>()
-            .ok()
-            .filter(|p| *p > 0)
-            .ok_or_else(|| format!("{scheme}{rest}: '{port}' is not a TCP port (1-65535)"))?,
-        (None, Some(default)) => default,
-        (None, None) => {
-            return Err(format!(
-                "{scheme}{rest}: give the gateway's port, as in {scheme}{host}:4001"
-            ))
-        }
-    };
+    let port =
+        match (port, default_port) {
+            (Some(port), _) => port.parse::<u16>().ok().filter(|p| *p > 0).ok_or_else(|| {
+                EndpointError::BadPort {
+                    scheme,
+                    rest: rest.to_string(),
+                    port: port.to_string(),
+                }
+            })?,
+            (None, Some(default)) => default,
+            (None, None) => {
+                return Err(EndpointError::NoPort {
+                    scheme,
+                    rest: rest.to_string(),
+                    host: host.to_string(),
+                })
+            }
+        };
     Ok((host.to_string(), port))
 }
 
 impl Endpoint {
     /// A port to connect to.
-    pub fn parse(text: &str) -> Result<Endpoint, String> {
+    pub fn parse(text: &str) -> Result<Endpoint, EndpointError> {
         Self::parse_as(text, false)
     }
 
     /// A port to listen on: `tcp://:5020` binds 127.0.0.1, so nothing is exposed to
     /// other machines unless an address says so.
-    pub fn parse_listen(text: &str) -> Result<Endpoint, String> {
+    pub fn parse_listen(text: &str) -> Result<Endpoint, EndpointError> {
         Self::parse_as(text, true)
     }
 
-    fn parse_as(text: &str, listening: bool) -> Result<Endpoint, String> {
+    fn parse_as(text: &str, listening: bool) -> Result<Endpoint, EndpointError> {
         let text = text.trim();
         if text.eq_ignore_ascii_case("sim") {
             return Ok(Endpoint::Sim);
@@ -106,12 +142,10 @@ impl Endpoint {
             return Ok(Endpoint::RtuOverTcp { host, port });
         }
         if text.contains("://") {
-            return Err(format!(
-                "'{text}': the port is a serial device, tcp://HOST[:PORT], rtu+tcp://HOST:PORT or sim"
-            ));
+            return Err(EndpointError::UnknownScheme(text.to_string()));
         }
         if text.is_empty() {
-            return Err("--port is empty: give a serial device, tcp://HOST[:PORT] or sim".into());
+            return Err(EndpointError::Empty);
         }
         Ok(Endpoint::Serial(text.to_string()))
     }
