@@ -7,11 +7,13 @@ use crc::{Crc, Table, CRC_16_MODBUS};
 static MODBUS_CRC: Crc<u16, Table<16>> = Crc::<u16, Table<16>>::new(&CRC_16_MODBUS);
 
 /// CRC-16/MODBUS of `bytes`. On the wire it is sent low byte first.
+#[inline]
 pub fn crc16(bytes: &[u8]) -> u16 {
     MODBUS_CRC.checksum(bytes)
 }
 
 /// Whether an RTU frame (address, PDU, CRC) ends in the CRC of what comes before it.
+#[inline]
 pub fn crc_holds(frame: &[u8]) -> bool {
     match frame.len().checked_sub(2) {
         Some(body) if body >= 2 => {
