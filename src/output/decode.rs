@@ -333,3 +333,35 @@ fn field_rows(f: &Fields) -> Vec<(&'static str, String)> {
     }
     rows
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use mbtool_core::codec::Mode;
+    use mbtool_core::describe::describe_frame;
+
+    fn shown(format: OutputFormat, frame: &[u8]) -> String {
+        let report = describe_frame(frame, Some(Mode::Rtu), None);
+        let mut writer = DecodeWriter::new(format, ValueType::U16, ByteOrder::Abcd, false);
+        let mut out = Vec::new();
+        writer.write(&mut out, frame, &report).unwrap();
+        String::from_utf8(out).unwrap()
+    }
+
+    const REQUEST: [u8; 8] = [0x3A, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x70, 0x9C];
+
+    #[test]
+    fn json_holds_the_decode_keys() {
+        assert_eq!(
+            shown(OutputFormat::Json, &REQUEST),
+            "{\"mode\":\"rtu\",\"kind\":\"request\",\"slave\":58,\"function\":3,\"valid\":true,\"function_name\":\"Read Holding Registers\",\"address\":107,\"ref\":\"400108\",\"count\":3}\n"
+        );
+    }
+
+    #[test]
+    fn a_table_shows_an_rtu_frame_as_hex_whatever_its_first_byte() {
+        let table = shown(OutputFormat::Table, &REQUEST);
+        assert!(table.contains("3A 03 00 6B 00 03 70 9C"), "{table}");
+        assert!(!table.contains(":\u{3}"), "{table}");
+    }
+}

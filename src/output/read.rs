@@ -247,3 +247,85 @@ pub fn write_done(out: &mut dyn Write, format: OutputFormat, done: &WriteDone) -
         OutputFormat::Values | OutputFormat::Csv => Ok(()),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use mbtool_core::model::address::Table;
+
+    fn holding(registers: Vec<u16>) -> ReadResult {
+        ReadResult {
+            slave: 17,
+            function: 3,
+            table: Table::HoldingRegisters,
+            address: 107,
+            data: ReadData::Registers(registers),
+        }
+    }
+
+    fn shown(format: OutputFormat, value_type: ValueType, result: &ReadResult) -> String {
+        let mut writer = ReadWriter::new(format, value_type, ByteOrder::Abcd, false);
+        let mut out = Vec::new();
+        writer.write(&mut out, result).unwrap();
+        String::from_utf8(out).unwrap()
+    }
+
+    #[test]
+    fn values_are_one_a_line_for_scripts() {
+        let result = holding(vec![555, 0, 100]);
+        assert_eq!(
+            shown(OutputFormat::Values, ValueType::U16, &result),
+            "555\n0\n100\n"
+        );
+    }
+
+    #[test]
+    fn csv_has_a_header_and_a_row_per_value() {
+        let result = holding(vec![555, 0, 100]);
+        assert_eq!(
+            shown(OutputFormat::Csv, ValueType::U16, &result),
+            "ref,address,hex,value\n400108,107,022B,555\n400109,108,0000,0\n400110,109,0064,100\n"
+        );
+    }
+
+    #[test]
+    fn json_wide_values_carry_their_registers() {
+        // 1.5 as an f32, high word first.
+        let result = holding(vec![0x3FC0, 0x0000]);
+        let line = shown(OutputFormat::Json, ValueType::F32, &result);
+        let json: serde_json::Value = serde_json::from_str(line.trim()).unwrap();
+        assert_eq!(json["slave"], 17);
+        assert_eq!(json["values"][0]["ref"], "400108");
+        assert_eq!(
+            json["values"][0]["registers"],
+            serde_json::json!([0x3FC0, 0])
+        );
+        assert_eq!(json["values"][0]["value"], 1.5);
+    }
+
+    #[test]
+    fn a_table_shows_reference_address_hex_and_value() {
+        let table = shown(OutputFormat::Table, ValueType::U16, &holding(vec![555]));
+        assert!(table.contains("400108"), "{table}");
+        assert!(table.contains("022B"), "{table}");
+        assert!(table.contains("555"), "{table}");
+    }
+
+    #[test]
+    fn a_write_is_confirmed_in_json() {
+        let done = WriteDone {
+            slave: 17,
+            function: 6,
+            address: 1,
+            reference: reference(Table::HoldingRegisters, 1),
+            count: 1,
+            broadcast: false,
+        };
+        let mut out = Vec::new();
+        write_done(&mut out, OutputFormat::Json, &done).unwrap();
+        assert_eq!(
+            String::from_utf8(out).unwrap(),
+            "{\"slave\":17,\"function\":6,\"address\":1,\"ref\":\"400002\",\"count\":1}\n"
+        );
+    }
+}
