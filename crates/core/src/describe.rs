@@ -5,7 +5,7 @@ use serde::Serialize;
 
 use crate::codec::function::{self, EXCEPTION_FLAG};
 use crate::codec::length::pdu_length;
-use crate::codec::pdu::DeviceIdentification;
+use crate::codec::DeviceIdentification;
 use crate::codec::{
     bits, Checksum, Direction, Envelope, Exception, FrameError, Mode, Pdu, Reading, Request,
     Response,

@@ -3,7 +3,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 use mbtool_core::codec::framing::{Event, Framer};
-use mbtool_core::codec::pdu::{DeviceIdentification, DeviceObject};
+use mbtool_core::codec::{DeviceIdentification, DeviceObject};
 use mbtool_core::codec::{
     Direction, Envelope, Exception, ExceptionCode, Frame, Mode, Pdu, Reading, Request, Response,
 };

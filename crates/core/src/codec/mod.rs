@@ -1,19 +1,22 @@
 //! The codec: bytes in, typed frames out. No I/O and no clocks; it is the one place that
 //! knows frame layouts, and the master, sniffer, simulator and `decode` all go through it.
 
-pub mod adu;
-pub mod answer;
+pub(crate) mod adu;
+pub(crate) mod answer;
 pub mod bits;
 pub mod checksum;
-pub mod error;
-pub mod exception;
+mod error;
+mod exception;
 pub mod framing;
 pub mod function;
-pub mod length;
+pub(crate) mod length;
 pub mod limits;
-pub mod pdu;
+mod pdu;
 
 pub use adu::{Checksum, Envelope, Frame, Mode};
+pub use answer::Mismatch;
 pub use error::{FrameError, PduError};
 pub use exception::ExceptionCode;
-pub use pdu::{Direction, Exception, Pdu, Reading, Request, Response};
+pub use pdu::{
+    DeviceIdentification, DeviceObject, Direction, Exception, Pdu, Reading, Request, Response,
+};

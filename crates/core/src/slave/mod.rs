@@ -3,13 +3,13 @@
 
 pub mod datafile;
 pub mod faults;
-pub mod model;
+mod model;
 pub mod server;
 
 use std::collections::BTreeMap;
 
 use crate::codec::function;
-use crate::codec::pdu::{DeviceIdentification, DeviceObject};
+use crate::codec::{DeviceIdentification, DeviceObject};
 use crate::codec::{Exception, ExceptionCode, Pdu, Request, Response};
 pub use model::{DataModel, TableData};
 

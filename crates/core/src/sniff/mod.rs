@@ -2,7 +2,7 @@
 //! apart as requests and answers and paired (`pairing`, `session`), and written as pcap
 //! (`pcap`); a saved capture keeps its timing beside it (`timing`).
 
-pub mod pairing;
+mod pairing;
 pub mod pcap;
 pub mod session;
 pub mod timing;
