@@ -3,18 +3,11 @@
 use std::io::{BufRead, BufReader, Write};
 use std::process::{Command as Process, Stdio};
 
-use crate::support::mbtool;
-use mbtool_core::codec::checksum::crc16;
+use crate::support::{mbtool, spaced_hex};
 
 /// An RTU frame with its CRC, as spaced hex.
 fn rtu(body: &[u8]) -> String {
-    let mut frame = body.to_vec();
-    frame.extend_from_slice(&crc16(body).to_le_bytes());
-    frame
-        .iter()
-        .map(|b| format!("{b:02X}"))
-        .collect::<Vec<_>>()
-        .join(" ")
+    spaced_hex(&crate::support::rtu(body))
 }
 
 struct Run {

@@ -201,7 +201,8 @@ pub fn random_request(rng: &mut fastrand::Rng) -> Request {
     }
 }
 
-/// Bytes as spaced upper-case hex, as mbtool shows them.
+/// Bytes as spaced upper-case hex, as mbtool shows them; written apart from mbtool's own,
+/// so that a test does not take mbtool's word for what it should print.
 pub fn spaced_hex(bytes: &[u8]) -> String {
     bytes
         .iter()
