@@ -55,12 +55,7 @@ pub fn run(cli: &Cli, args: &DecodeArgs) -> Result<u8> {
     let mut decoder = Decoder {
         mode: cli.connection.mode.map(Mode::from),
         direction: args.direction.map(Direction::from),
-        writer: DecodeWriter::new(
-            cli.output.format(),
-            cli.data.value_type,
-            cli.data.order,
-            output::colour_wanted(),
-        ),
+        writer: DecodeWriter::new(output::Style::of(cli)),
         out: output::stdout(),
         bytes: Vec::with_capacity(limits::MAX_ASCII_ADU),
         frames: 0,

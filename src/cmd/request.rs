@@ -66,12 +66,7 @@ fn reads(
     address: u16,
     out: &mut Box<dyn Write>,
 ) -> Result<u8> {
-    let mut writer = ReadWriter::new(
-        cli.output.format(),
-        cli.data.value_type,
-        cli.data.order,
-        output::colour_wanted(),
-    );
+    let mut writer = ReadWriter::new(output::Style::of(cli));
     let Some(interval) = cli.poll.poll else {
         let result = master.read(plan, table, address).map_err(Error::from)?;
         writer.write(out, &result)?;
@@ -178,12 +173,7 @@ fn raw(
         Some(mode),
         Some(mbtool_core::codec::Direction::Response),
     );
-    let mut writer = DecodeWriter::new(
-        cli.output.format(),
-        cli.data.value_type,
-        cli.data.order,
-        output::colour_wanted(),
-    );
+    let mut writer = DecodeWriter::new(output::Style::of(cli));
     writer.write(out, &bytes, &report)?;
     Ok(code)
 }

@@ -5,18 +5,14 @@ use std::io::{self, Write};
 
 use comfy_table::{Cell, Color};
 
-use super::{csv_field, new_table};
+use super::{csv_field, new_table, Style};
 use crate::cli::OutputFormat;
 use mbtool_core::codec::{Checksum, ExceptionCode, Mode};
 use mbtool_core::describe::{spaced_hex, Fields, FrameReport, Values};
 use mbtool_core::model::address::{reference, Table};
-use mbtool_core::model::values::{ByteOrder, ValueType};
 
 pub struct DecodeWriter {
-    format: OutputFormat,
-    value_type: ValueType,
-    order: ByteOrder,
-    colour: bool,
+    style: Style,
     csv_header_written: bool,
     /// A JSON line is put together here and written at once (see output::sniff).
     line: Vec<u8>,
@@ -25,17 +21,9 @@ pub struct DecodeWriter {
 const CSV_HEADER: &str = "mode,kind,slave,function,valid,address,ref,count,values,exception,error";
 
 impl DecodeWriter {
-    pub fn new(
-        format: OutputFormat,
-        value_type: ValueType,
-        order: ByteOrder,
-        colour: bool,
-    ) -> Self {
+    pub fn new(style: Style) -> Self {
         Self {
-            format,
-            value_type,
-            order,
-            colour,
+            style,
             csv_header_written: false,
             line: Vec::with_capacity(512),
         }
@@ -48,7 +36,7 @@ impl DecodeWriter {
         shown: &[u8],
         report: &FrameReport,
     ) -> io::Result<()> {
-        match self.format {
+        match self.style.format {
             OutputFormat::Json => {
                 self.line.clear();
                 serde_json::to_writer(&mut self.line, report)?;
@@ -62,8 +50,9 @@ impl DecodeWriter {
     }
 
     fn typed(&self, registers: &[u16]) -> Vec<String> {
-        self.value_type
-            .read_all(registers, self.order)
+        self.style
+            .value_type
+            .read_all(registers, self.style.order)
             .iter()
             .map(ToString::to_string)
             .collect()
@@ -116,7 +105,7 @@ impl DecodeWriter {
         shown: &[u8],
         report: &FrameReport,
     ) -> io::Result<()> {
-        let mut table = new_table(self.colour);
+        let mut table = new_table(self.style.colour);
         // By the mode, not by the first byte: an RTU frame from slave 58 starts with ':'.
         let frame = if report.mode == Mode::Ascii.name() {
             String::from_utf8_lossy(shown).trim_end().to_string()
@@ -182,7 +171,7 @@ impl DecodeWriter {
 
     fn ok(&self, text: String) -> Cell {
         let cell = Cell::new(text);
-        if self.colour {
+        if self.style.colour {
             cell.fg(Color::Green)
         } else {
             cell
@@ -191,7 +180,7 @@ impl DecodeWriter {
 
     fn bad(&self, text: String) -> Cell {
         let cell = Cell::new(text);
-        if self.colour {
+        if self.style.colour {
             cell.fg(Color::Red)
         } else {
             cell
@@ -205,7 +194,7 @@ impl DecodeWriter {
         address: Option<u16>,
         table_of: Option<Table>,
     ) -> comfy_table::Table {
-        let mut table = new_table(self.colour);
+        let mut table = new_table(self.style.colour);
         let located = address.zip(table_of);
         let place = |offset: usize| -> Vec<String> {
             match located {
@@ -225,9 +214,9 @@ impl DecodeWriter {
         };
         match values {
             Values::Registers(registers) => {
-                header.extend(["hex".to_string(), self.value_type.name().to_string()]);
+                header.extend(["hex".to_string(), self.style.value_type.name().to_string()]);
                 table.set_header(header);
-                let width = self.value_type.width();
+                let width = self.style.value_type.width();
                 for (i, chunk) in registers.chunks_exact(width).enumerate() {
                     let hex = chunk
                         .iter()
@@ -236,7 +225,12 @@ impl DecodeWriter {
                         .join(" ");
                     let mut row = place(i * width);
                     row.push(hex);
-                    row.push(self.value_type.read(chunk, self.order).to_string());
+                    row.push(
+                        self.style
+                            .value_type
+                            .read(chunk, self.style.order)
+                            .to_string(),
+                    );
                     table.add_row(row);
                 }
             }
@@ -339,10 +333,16 @@ mod tests {
     use super::*;
     use mbtool_core::codec::Mode;
     use mbtool_core::describe::describe_frame;
+    use mbtool_core::model::values::{ByteOrder, ValueType};
 
     fn shown(format: OutputFormat, frame: &[u8]) -> String {
         let report = describe_frame(frame, Some(Mode::Rtu), None);
-        let mut writer = DecodeWriter::new(format, ValueType::U16, ByteOrder::Abcd, false);
+        let mut writer = DecodeWriter::new(Style {
+            format,
+            value_type: ValueType::U16,
+            order: ByteOrder::Abcd,
+            colour: false,
+        });
         let mut out = Vec::new();
         writer.write(&mut out, frame, &report).unwrap();
         String::from_utf8(out).unwrap()

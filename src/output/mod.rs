@@ -11,8 +11,10 @@ use std::io::{self, IsTerminal, Write};
 
 use comfy_table::{presets, Table};
 
+use crate::cli::{Cli, OutputFormat};
 use mbtool_core::codec::{Pdu, Request};
 use mbtool_core::describe::{describe_pdu, Fields, Values};
+use mbtool_core::model::values::{ByteOrder, ValueType};
 
 /// Standard output, buffered unless it is a terminal, where each line shows at once.
 pub fn stdout() -> Box<dyn Write> {
@@ -21,6 +23,27 @@ pub fn stdout() -> Box<dyn Write> {
         Box::new(stdout.lock())
     } else {
         Box::new(io::BufWriter::with_capacity(1 << 16, stdout.lock()))
+    }
+}
+
+/// How values are shown, as the options resolve it once: the format, how registers are
+/// read as values, and whether there is colour.
+#[derive(Clone, Copy, Debug)]
+pub struct Style {
+    pub format: OutputFormat,
+    pub value_type: ValueType,
+    pub order: ByteOrder,
+    pub colour: bool,
+}
+
+impl Style {
+    pub fn of(cli: &Cli) -> Self {
+        Self {
+            format: cli.output.format(),
+            value_type: cli.data.value_type,
+            order: cli.data.order,
+            colour: colour_wanted(),
+        }
     }
 }
 

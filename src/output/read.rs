@@ -6,11 +6,11 @@ use std::io::{self, Write};
 use comfy_table::{Cell, Color};
 use serde::Serialize;
 
-use super::{csv_field, new_table};
+use super::{csv_field, new_table, Style};
 use crate::cli::OutputFormat;
 use mbtool_core::master::run::{ReadData, ReadResult};
 use mbtool_core::model::address::reference;
-use mbtool_core::model::values::{ByteOrder, Value, ValueType};
+use mbtool_core::model::values::Value;
 
 #[derive(Serialize)]
 struct JsonEntry<'a> {
@@ -37,27 +37,16 @@ struct Row<'a> {
 }
 
 pub struct ReadWriter {
-    format: OutputFormat,
-    value_type: ValueType,
-    order: ByteOrder,
-    colour: bool,
+    style: Style,
     /// The previous result, when polling: changed values are marked.
     previous: Option<ReadResult>,
     csv_header_written: bool,
 }
 
 impl ReadWriter {
-    pub fn new(
-        format: OutputFormat,
-        value_type: ValueType,
-        order: ByteOrder,
-        colour: bool,
-    ) -> Self {
+    pub fn new(style: Style) -> Self {
         Self {
-            format,
-            value_type,
-            order,
-            colour,
+            style,
             previous: None,
             csv_header_written: false,
         }
@@ -67,14 +56,14 @@ impl ReadWriter {
         let start = u32::from(result.address);
         match &result.data {
             ReadData::Registers(registers) => {
-                let width = self.value_type.width();
+                let width = self.style.value_type.width();
                 registers
                     .chunks_exact(width)
                     .enumerate()
                     .map(|(i, chunk)| Row {
                         address: start + (i * width) as u32,
                         registers: chunk,
-                        value: self.value_type.read(chunk, self.order),
+                        value: self.style.value_type.read(chunk, self.style.order),
                     })
                     .collect()
             }
@@ -109,9 +98,9 @@ impl ReadWriter {
         let changed = self.changed(result);
         let rows = self.rows(result);
         let ref_of = |address: u32| reference(result.table, address as u16);
-        match self.format {
+        match self.style.format {
             OutputFormat::Json => {
-                let wide = self.value_type.width() > 1;
+                let wide = self.style.value_type.width() > 1;
                 let values = rows
                     .iter()
                     .map(|row| JsonEntry {
@@ -151,13 +140,13 @@ impl ReadWriter {
                 }
             }
             OutputFormat::Table => {
-                let mut table = new_table(self.colour);
+                let mut table = new_table(self.style.colour);
                 let bits = matches!(result.data, ReadData::Bits(_));
                 let mut header = vec!["ref".to_string(), "address".to_string()];
                 if bits {
                     header.push("state".into());
                 } else {
-                    header.extend(["hex".to_string(), self.value_type.name().to_string()]);
+                    header.extend(["hex".to_string(), self.style.value_type.name().to_string()]);
                 }
                 if self.previous.is_some() {
                     header.push("changed".into());
@@ -175,7 +164,7 @@ impl ReadWriter {
                         row.value.to_string()
                     };
                     let mut value = Cell::new(shown);
-                    if *changed && self.colour {
+                    if *changed && self.style.colour {
                         value = value.fg(Color::Yellow);
                     }
                     let mut cells = vec![Cell::new(ref_of(row.address)), Cell::new(row.address)];
@@ -252,6 +241,7 @@ pub fn write_done(out: &mut dyn Write, format: OutputFormat, done: &WriteDone) -
 mod tests {
     use super::*;
     use mbtool_core::model::address::Table;
+    use mbtool_core::model::values::{ByteOrder, ValueType};
 
     fn holding(registers: Vec<u16>) -> ReadResult {
         ReadResult {
@@ -264,7 +254,12 @@ mod tests {
     }
 
     fn shown(format: OutputFormat, value_type: ValueType, result: &ReadResult) -> String {
-        let mut writer = ReadWriter::new(format, value_type, ByteOrder::Abcd, false);
+        let mut writer = ReadWriter::new(Style {
+            format,
+            value_type,
+            order: ByteOrder::Abcd,
+            colour: false,
+        });
         let mut out = Vec::new();
         writer.write(&mut out, result).unwrap();
         String::from_utf8(out).unwrap()
