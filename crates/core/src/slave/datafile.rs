@@ -19,7 +19,7 @@ use std::path::Path;
 
 use thiserror::Error;
 
-use crate::model::address::{parse_reference_span, reference, Table};
+use crate::model::address::{parse_reference_span, reference, AddressError, Table};
 use crate::model::choice::Choice;
 use crate::model::values::{parse_coil, ByteOrder, ValueType};
 use crate::slave::DataModel;
@@ -28,23 +28,43 @@ use crate::slave::DataModel;
 pub enum DataFileError {
     #[error("cannot read {path}: {error}")]
     Read { path: String, error: std::io::Error },
-    #[error("{path}:{line}: {message}")]
+    #[error("{path}:{line}: {error}")]
     Line {
         path: String,
         line: usize,
-        message: String,
+        error: EntryError,
     },
 }
 
+/// What is wrong with one entry of a data file.
+#[derive(Debug, Error, PartialEq, Eq)]
+pub enum EntryError {
+    #[error("an entry is REFERENCE = VALUE..., as in 400108 = 555")]
+    NotAnEntry,
+    #[error(transparent)]
+    Reference(#[from] AddressError),
+    #[error("a quoted text has no closing '\"'")]
+    OpenQuote,
+    #[error("no value: give one after '='")]
+    NoValue,
+    #[error("{0}s are bits: a type does not apply")]
+    TypeOfBits(&'static str),
+    /// A value that does not read as the table's or the type's.
+    #[error("{0}")]
+    Value(String),
+    #[error("{values} values do not fit in a range of {size}")]
+    TooMany { values: usize, size: u32 },
+    #[error("the values run past the last address of the table ({0})")]
+    PastEnd(String),
+}
+
 /// Splits the value part into words, a double-quoted string being one word.
-fn words(text: &str) -> Result<Vec<String>, String> {
+fn words(text: &str) -> Result<Vec<String>, EntryError> {
     let mut words = Vec::new();
     let mut rest = text.trim();
     while !rest.is_empty() {
         if let Some(quoted) = rest.strip_prefix('"') {
-            let end = quoted
-                .find('"')
-                .ok_or("a quoted text has no closing '\"'")?;
+            let end = quoted.find('"').ok_or(EntryError::OpenQuote)?;
             words.push(quoted[..end].to_string());
             rest = quoted[end + 1..].trim_start();
         } else {
@@ -57,11 +77,9 @@ fn words(text: &str) -> Result<Vec<String>, String> {
 }
 
 /// One entry: fills `model` and declares the addresses it names.
-fn entry(model: &mut DataModel, line: &str) -> Result<(), String> {
-    let (target, values) = line
-        .split_once('=')
-        .ok_or("an entry is REFERENCE = VALUE..., as in 400108 = 555")?;
-    let span = parse_reference_span(target.trim()).map_err(|e| e.to_string())?;
+fn entry(model: &mut DataModel, line: &str) -> Result<(), EntryError> {
+    let (target, values) = line.split_once('=').ok_or(EntryError::NotAnEntry)?;
+    let span = parse_reference_span(target.trim())?;
     let mut words = words(values)?;
     let mut order = ByteOrder::Abcd;
     let mut kind = ValueType::U16;
@@ -74,19 +92,16 @@ fn entry(model: &mut DataModel, line: &str) -> Result<(), String> {
         words.pop();
     }
     if words.is_empty() {
-        return Err("no value: give one after '='".into());
+        return Err(EntryError::NoValue);
     }
     let start = u32::from(span.address);
     if span.table.is_bits() {
         if kind != ValueType::U16 {
-            return Err(format!(
-                "{}s are bits: a type does not apply",
-                span.table.name()
-            ));
+            return Err(EntryError::TypeOfBits(span.table.name()));
         }
         let bits = words
             .iter()
-            .map(|w| parse_coil(w))
+            .map(|w| parse_coil(w).map_err(EntryError::Value))
             .collect::<Result<Vec<_>, _>>()?;
         let count = fill_count(span.count, bits.len())?;
         let values = spread(&bits, count);
@@ -101,7 +116,7 @@ fn entry(model: &mut DataModel, line: &str) -> Result<(), String> {
     } else {
         let mut registers = Vec::new();
         for word in &words {
-            registers.extend(kind.parse(word, order)?);
+            registers.extend(kind.parse(word, order).map_err(EntryError::Value)?);
         }
         let count = fill_count(span.count, registers.len())?;
         let values = spread(&registers, count);
@@ -118,11 +133,11 @@ fn entry(model: &mut DataModel, line: &str) -> Result<(), String> {
 }
 
 /// How many addresses an entry fills: the range's size, or as many as the values.
-fn fill_count(range: Option<u32>, values: usize) -> Result<usize, String> {
+fn fill_count(range: Option<u32>, values: usize) -> Result<usize, EntryError> {
     match range {
         None => Ok(values),
         Some(size) if values <= size as usize => Ok(size as usize),
-        Some(size) => Err(format!("{values} values do not fit in a range of {size}")),
+        Some(size) => Err(EntryError::TooMany { values, size }),
     }
 }
 
@@ -137,12 +152,9 @@ fn spread<T: Copy + Default>(values: &[T], count: usize) -> Vec<T> {
     values.iter().copied().cycle().take(count).collect()
 }
 
-fn check_end(table: Table, start: u32, count: usize) -> Result<(), String> {
+fn check_end(table: Table, start: u32, count: usize) -> Result<(), EntryError> {
     if start as usize + count > 65536 {
-        return Err(format!(
-            "the values run past the last address of the table ({})",
-            reference(table, 65535)
-        ));
+        return Err(EntryError::PastEnd(reference(table, 65535)));
     }
     Ok(())
 }
@@ -168,10 +180,10 @@ pub fn parse(name: &str, text: &str) -> Result<DataModel, DataFileError> {
         if content.trim().is_empty() {
             continue;
         }
-        entry(&mut model, content).map_err(|message| DataFileError::Line {
+        entry(&mut model, content).map_err(|error| DataFileError::Line {
             path: name.to_string(),
             line: number + 1,
-            message,
+            error,
         })?;
     }
     Ok(model)
