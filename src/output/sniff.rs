@@ -392,3 +392,51 @@ impl SniffWriter {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use mbtool_core::codec::Mode;
+    use mbtool_core::sniff::session::{Filter, Session};
+
+    /// Sniff's JSON Lines for a stream of bytes without timing.
+    fn json_of(stream: &[u8]) -> Vec<serde_json::Value> {
+        let mut session = Session::new(Mode::Rtu, 1145.8, 4010, Filter::default());
+        let mut records = Vec::new();
+        session.push(stream, &mut records);
+        session.finish(None, &mut records);
+        let mut writer = SniffWriter::new(OutputFormat::Json, false);
+        let mut out = Vec::new();
+        for record in &records {
+            writer.record(&mut out, record).unwrap();
+        }
+        writer.summary(&mut out, session.counts()).unwrap();
+        String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(|line| serde_json::from_str(line).unwrap())
+            .collect()
+    }
+
+    #[test]
+    fn a_request_noise_and_its_answer_as_json_lines() {
+        let stream = [
+            &[0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87][..],
+            &[0x00],
+            &[
+                0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64, 0xC8, 0xBA,
+            ],
+        ]
+        .concat();
+        let lines = json_of(&stream);
+        let kinds: Vec<&str> = lines.iter().map(|l| l["type"].as_str().unwrap()).collect();
+        assert_eq!(kinds, ["frame", "noise", "frame", "summary"]);
+        assert_eq!(lines[0]["bytes"], "11 03 00 6B 00 03 76 87");
+        assert_eq!(lines[0]["kind"], "request");
+        assert_eq!(lines[1]["count"], 1);
+        assert_eq!(lines[1]["bytes"], "00");
+        assert_eq!(lines[2]["kind"], "response");
+        assert_eq!(lines[3]["frames"], 2);
+        assert_eq!(lines[3]["noise_bytes"], 1);
+    }
+}
