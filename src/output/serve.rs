@@ -82,3 +82,48 @@ pub fn write_entry(out: &mut dyn Write, json: bool, entry: &LogEntry) -> io::Res
         super::fields_summary(&request),
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use mbtool_core::codec::{Exception, ExceptionCode, Request};
+    use std::time::Duration;
+
+    fn logged(json: bool, outcome: &Outcome) -> String {
+        let request = Request::ReadHoldingRegisters {
+            address: 107,
+            quantity: 3,
+        };
+        let entry = LogEntry {
+            elapsed: Duration::from_millis(1500),
+            peer: "127.0.0.1:5020",
+            slave: 17,
+            request: &request,
+            outcome,
+        };
+        let mut out = Vec::new();
+        write_entry(&mut out, json, &entry).unwrap();
+        String::from_utf8(out).unwrap()
+    }
+
+    #[test]
+    fn a_line_for_people_names_the_request_and_what_came_of_it() {
+        let exception = Outcome::Answered(Pdu::Exception(Exception {
+            function: 3,
+            code: ExceptionCode::ILLEGAL_DATA_ADDRESS,
+        }));
+        let line = logged(false, &exception);
+        assert!(line.starts_with("[    1.500000] 127.0.0.1:5020 slave 17: 03 Read Holding Registers 400108 x3 -> exception 02"), "{line}");
+        assert!(logged(false, &Outcome::Dropped).ends_with("-> none [dropped]\n"));
+    }
+
+    #[test]
+    fn json_lines_carry_the_request_fields_and_the_fault() {
+        let json: serde_json::Value =
+            serde_json::from_str(logged(true, &Outcome::Dropped).trim()).unwrap();
+        assert_eq!(json["slave"], 17);
+        assert_eq!(json["ref"], "400108");
+        assert_eq!(json["answer"], "none");
+        assert_eq!(json["fault"], "dropped");
+    }
+}
