@@ -44,6 +44,9 @@ pub const ASCII_CHARACTER_TIMEOUT_US: u64 = 1_000_000;
 /// The shortest RTU frame: address, function, CRC.
 const MIN_RTU_FRAME: usize = 4;
 
+/// The highest slave address on a serial line; 248-255 are reserved.
+const MAX_SLAVE: u8 = 247;
+
 /// A frame as found in the stream.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Found {
@@ -653,7 +656,11 @@ impl Framer {
     fn supported(&self, at: usize, candidate: &Candidate, depth: u8, in_step: bool) -> Tell {
         let frame = &self.buffer[at..at + candidate.len];
         let end = at + candidate.len;
-        // After noise a frame of known layout must at least read as a PDU.
+        // After noise a frame must come from an address a serial line uses (1-247, or 0
+        // to broadcast; 248-255 are reserved), and one of known layout must read as a PDU.
+        if !in_step && frame.first().is_some_and(|slave| *slave > MAX_SLAVE) {
+            return Tell::No;
+        }
         if candidate.known_layout && !pdu_reads(frame, candidate.direction, !in_step) {
             return Tell::No;
         }
