@@ -17,6 +17,7 @@ pub mod run;
 /// How the master behaves; the connection options fill it in.
 #[derive(Clone, Copy, Debug)]
 pub struct MasterOptions {
+    /// The framing on the wire: RTU, ASCII, TCP or RTU over TCP.
     pub mode: Mode,
     /// For the whole answer, from the end of sending; under a millisecond counts as one.
     pub timeout: Duration,
@@ -28,6 +29,7 @@ pub struct MasterOptions {
     /// One character's time on a serial line (zero over TCP), and the silence that ends a
     /// frame there: how the answer is framed.
     pub character: Duration,
+    /// The silence that ends a frame on a serial line (3.5 characters, or as set).
     pub silence: Duration,
     /// How long a broadcast waits for the slaves to act before the next request.
     pub turnaround: Duration,
@@ -36,20 +38,37 @@ pub struct MasterOptions {
 /// What came back.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Reply {
+    /// The slave's answer to the request.
     Response(Response),
+    /// The slave refused the request with an exception code.
     Exception(Exception),
     /// A broadcast: no answer is given.
     Broadcast,
 }
 
+/// Why a transaction gave no answer.
 #[derive(Debug, Error)]
 pub enum MasterError {
+    /// Nothing that answers the request came in time, after every retry.
     #[error("no answer from slave {slave} within {}", show(*.timeout))]
-    Timeout { slave: u8, timeout: Duration },
+    Timeout {
+        /// The slave asked.
+        slave: u8,
+        /// How long the master waited.
+        timeout: Duration,
+    },
+    /// What came back was not the answer, after every retry.
     #[error("bad answer from slave {slave}: {reason}")]
-    BadFrame { slave: u8, reason: BadAnswer },
+    BadFrame {
+        /// The slave asked.
+        slave: u8,
+        /// What was wrong.
+        reason: BadAnswer,
+    },
+    /// The request does not fit in a PDU.
     #[error("request cannot be encoded: {0}")]
     Encode(#[from] crate::codec::PduError),
+    /// The transport failed: the port went away or the connection closed.
     #[error(transparent)]
     Io(#[from] std::io::Error),
 }
@@ -57,28 +76,46 @@ pub enum MasterError {
 /// What was wrong with what came back instead of the answer.
 #[derive(Debug, Error)]
 pub enum BadAnswer {
+    /// The bytes are no valid frame (bad checksum, cut short, garbled).
     #[error(transparent)]
     Frame(#[from] FrameError),
     /// A frame of the right slave that does not answer the request.
     #[error(transparent)]
     Mismatch(#[from] Mismatch),
+    /// A whole frame from another slave, on a line where only ours should answer.
     #[error("the answer came from slave {0}")]
     OtherSlave(u8),
+    /// A frame that reads as a request: another master on the line, or an echo.
     #[error("the answer reads as a request")]
     Request,
+    /// Over TCP, bytes with no MBAP header.
     #[error("{len} bytes that are no Modbus TCP frame ({shown})")]
-    NotTcp { len: u64, shown: String },
+    NotTcp {
+        /// How many bytes came.
+        len: u64,
+        /// The first of them, in hex.
+        shown: String,
+    },
+    /// Part of a frame, then nothing until the timeout.
     #[error("incomplete answer: {len} bytes ({shown}) and then silence")]
-    Incomplete { len: usize, shown: String },
+    Incomplete {
+        /// How many bytes came.
+        len: usize,
+        /// The bytes, in hex.
+        shown: String,
+    },
 }
 
 /// What the master saw, for `-v`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Traffic {
+    /// Bytes the master sent.
     Sent,
+    /// Bytes the master received.
     Received,
 }
 
+/// Sees every byte sent and received, for `-v`.
 pub type Tracer = Box<dyn FnMut(Traffic, &[u8]) + Send>;
 
 /// After a frame that is wrong, wait this long for more bytes (the right answer after
@@ -88,6 +125,7 @@ const SETTLE: Duration = Duration::from_millis(50);
 /// The shortest timeout honoured: below it a deadline would pass before a byte could come.
 const MIN_TIMEOUT: Duration = Duration::from_millis(1);
 
+/// A master on one transport: one transaction at a time, with retries.
 pub struct Master {
     transport: Box<dyn Transport>,
     options: MasterOptions,
@@ -115,6 +153,7 @@ struct Heard {
 }
 
 impl Master {
+    /// A master on `transport`; nothing is sent until the first transaction.
     pub fn new(transport: Box<dyn Transport>, options: MasterOptions) -> Self {
         let framer = Framer::new(
             options.mode,

@@ -16,61 +16,110 @@ use crate::model::values::{parse_coil, ByteOrder, ValueType};
 /// Why an operation cannot be planned: what the user gave is wrong, and nothing is sent.
 #[derive(Debug, Error, PartialEq, Eq)]
 pub enum PlanError {
+    /// The address or range does not read as a reference.
     #[error(transparent)]
     Address(#[from] AddressError),
+    /// The slave as typed is no number.
     #[error("slave {0}")]
     Slave(NumberError),
+    /// Over TCP, a unit id above 255.
     #[error("unit id {0} is out of range 0-255")]
     UnitId(String),
+    /// A read addressed to slave 0, which no slave answers.
     #[error("slave 0 is broadcast, which only writes may use: give the slave's address 1-247")]
     BroadcastRead,
+    /// On a serial line, one of the reserved addresses 248-255.
     #[error("slave {0} is reserved on serial lines: give 1-247")]
     ReservedSlave(String),
+    /// On a serial line, a slave above 255.
     #[error("slave {0} is out of range 1-247")]
     SlaveRange(String),
+    /// A count of zero items.
     #[error("COUNT must be at least 1")]
     ZeroCount,
     /// The count as typed was no number in range.
     #[error("{0}")]
     Count(String),
+    /// The items asked for run past the last address of the table.
     #[error("{span} with {count} items goes past address 65535")]
-    PastEnd { span: String, count: u32 },
+    PastEnd {
+        /// The address or range as typed.
+        span: String,
+        /// How many items were asked for.
+        count: u32,
+    },
+    /// `--max-per-request` is below what one value needs (the value's width in registers).
     #[error("--max-per-request must be at least {0}")]
     MaxPerRequest(u16),
+    /// A value type other than u16 for coils or discrete inputs.
     #[error("--type applies to registers; {0}s are bits")]
     TypeOfBits(&'static str),
+    /// Both a range and a count: one of them says how many.
     #[error("give either a range (400108-400110) or a COUNT, not both")]
     RangeAndCount,
+    /// A range that cuts the last multi-register value in two.
     #[error(
         "the range holds {registers} registers, not a whole number of {width}-register values"
     )]
-    RangeNotWhole { registers: u32, width: u32 },
+    RangeNotWhole {
+        /// Registers in the range.
+        registers: u32,
+        /// Registers per value of the value type.
+        width: u32,
+    },
+    /// A write to discrete inputs or input registers.
     #[error("{span} is a {table} reference, and that table is read-only: write to coils (0xxxxx) or holding registers (4xxxxx)")]
-    ReadOnly { span: String, table: &'static str },
+    ReadOnly {
+        /// The reference as typed.
+        span: String,
+        /// The name of the read-only table.
+        table: &'static str,
+    },
+    /// A write with nothing to write.
     #[error("give at least one VALUE to write")]
     NoValues,
     /// A value as typed does not read as the table's or the value type's.
     #[error("{0}")]
     Value(String),
+    /// A range whose length differs from the number of values given.
     #[error("the range holds {count} addresses but {values} values were given")]
-    RangeValues { count: u32, values: usize },
+    RangeValues {
+        /// Addresses in the range.
+        count: u32,
+        /// Values given.
+        values: usize,
+    },
+    /// `--function` names a register write for coils.
     #[error("coils are written with --function 5 (one at a time) or 15 (several)")]
     CoilFunction,
+    /// `--function` names a coil write for registers.
     #[error("registers are written with --function 6 (one at a time) or 16 (several)")]
     RegisterFunction,
+    /// `write-register` with a value type wider than one register.
     #[error("write-register writes one 16-bit register and a {value_type} value takes {width}: use write-registers")]
     WideRegister {
+        /// The value type's name.
         value_type: &'static str,
+        /// Registers one value of that type takes.
         width: usize,
     },
+    /// The raw PDU is not hex.
     #[error("PDU_HEX: {0}")]
     PduHex(HexError),
+    /// The raw PDU has no bytes.
     #[error("PDU_HEX is empty: give at least a function code")]
     EmptyPdu,
+    /// The raw PDU's first byte has the exception bit set, so no slave would take it.
     #[error("function code {0:02X} is not a request: give 01-7F")]
     NotRequest(u8),
+    /// The raw PDU is longer than a PDU may be.
     #[error("a PDU is at most {max} bytes; this one has {len}")]
-    PduTooLong { max: usize, len: usize },
+    PduTooLong {
+        /// The longest PDU the protocol allows.
+        max: usize,
+        /// The length given.
+        len: usize,
+    },
 }
 
 type Result<T, E = PlanError> = std::result::Result<T, E>;
@@ -81,21 +130,35 @@ pub enum Operation<'a> {
     /// Read `count` items (one value by default) from `address`: of `table`, or, for
     /// `None`, of the table its Modicon reference names.
     Read {
+        /// The slave address or unit id as typed.
         slave: &'a str,
+        /// The address, Modicon reference or range as typed.
         address: &'a str,
+        /// The table the command names, if it names one.
         table: Option<Table>,
+        /// How many values, as typed.
         count: Option<&'a str>,
     },
     /// Write `values` from `address`, of `table` or of the table its reference names.
     Write {
+        /// The slave address or unit id as typed (0 broadcasts).
         slave: &'a str,
+        /// The address, Modicon reference or range as typed.
         address: &'a str,
+        /// The table the command names, if it names one.
         table: Option<Table>,
+        /// The values as typed, in address order.
         values: &'a [String],
+        /// Which write function carries them.
         how: How,
     },
     /// Send a PDU given as hex words.
-    Raw { slave: &'a str, pdu: &'a [String] },
+    Raw {
+        /// The slave address or unit id as typed.
+        slave: &'a str,
+        /// The PDU as hex words, function code first.
+        pdu: &'a [String],
+    },
 }
 
 /// Which write function carries the values.
@@ -114,9 +177,13 @@ pub enum How {
 /// What the options say about addresses, values and request sizes.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct PlanOptions {
+    /// Every address is a 0-based protocol address, never a Modicon reference.
     pub pdu_addresses: bool,
+    /// How registers are read as values.
     pub value_type: ValueType,
+    /// The order of bytes and words in a multi-register value.
     pub order: ByteOrder,
+    /// At most this many items per request, below the protocol's limit.
     pub max_per_request: Option<u16>,
     /// Over TCP the unit id is 0-255; on a serial line the slave is 1-247 (0 to broadcast).
     pub tcp: bool,
@@ -125,7 +192,9 @@ pub struct PlanOptions {
 /// The requests of one command, in order, and what they read (to label the answers).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Plan {
+    /// The slave every request goes to.
     pub slave: u8,
+    /// The requests, in address order.
     pub requests: Vec<Request>,
     /// For reads: the table and first address, so that answers can carry references.
     pub reads: Option<(Table, u16)>,

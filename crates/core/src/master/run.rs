@@ -15,12 +15,17 @@ use crate::model::duration::show;
 /// Why a request of a plan got no answer to use.
 #[derive(Debug, Error)]
 pub enum RunError {
+    /// No answer, or no usable one.
     #[error(transparent)]
     Master(#[from] MasterError),
+    /// The slave answered with an exception.
     #[error("slave {slave} answered exception {code} to function {function} ({})", function::name(*function))]
     Exception {
+        /// The slave that answered.
         slave: u8,
+        /// The function code of the request.
         function: u8,
+        /// Why the slave refused.
         code: ExceptionCode,
     },
 }
@@ -28,16 +33,24 @@ pub enum RunError {
 /// What one read returned, all requests of a split read put together.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ReadResult {
+    /// The slave read.
     pub slave: u8,
+    /// The read function used (01-04).
     pub function: u8,
+    /// The table read.
     pub table: Table,
+    /// The first address read, 0-based.
     pub address: u16,
+    /// The values, in address order.
     pub data: ReadData,
 }
 
+/// The coils or registers a read returned.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum ReadData {
+    /// Register values, as received.
     Registers(Vec<u16>),
+    /// Coil or discrete input states, exactly as many as asked for.
     Bits(Vec<bool>),
 }
 
@@ -50,6 +63,7 @@ impl ReadData {
         }
     }
 
+    /// Nothing was read.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
@@ -129,11 +143,17 @@ impl Master {
 /// What a poll saw, for the summary at its end.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct PollStats {
+    /// Reads made, one per poll.
     pub requests: u64,
+    /// Reads answered.
     pub answers: u64,
+    /// Reads that got no answer in time, retries included.
     pub timeouts: u64,
+    /// Reads answered only with wrong or garbled frames.
     pub bad_frames: u64,
+    /// Reads answered with an exception.
     pub exceptions: u64,
+    /// Reads that failed otherwise (the transport, say).
     pub other_errors: u64,
     fastest: Option<Duration>,
     slowest: Duration,

@@ -1,4 +1,4 @@
-//! Modicon references (`400108`) and protocol addresses (`107`), as CLI.md defines them.
+//! Modicon references (`400108`) and protocol addresses (`107`): which table, which address.
 
 use std::fmt;
 
@@ -9,9 +9,13 @@ use crate::model::number::parse_int;
 /// The four data tables of Modbus.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Table {
+    /// Read-write bits: references 0xxxxx.
     Coils,
+    /// Read-only bits: references 1xxxxx.
     DiscreteInputs,
+    /// Read-only 16-bit registers: references 3xxxxx.
     InputRegisters,
+    /// Read-write 16-bit registers: references 4xxxxx.
     HoldingRegisters,
 }
 
@@ -26,6 +30,7 @@ impl Table {
         }
     }
 
+    /// The table whose Modicon references start with `digit` (0, 1, 3 or 4).
     pub fn from_digit(digit: u8) -> Option<Table> {
         match digit {
             0 => Some(Table::Coils),
@@ -46,10 +51,12 @@ impl Table {
         }
     }
 
+    /// Coils and discrete inputs hold bits; the other two hold registers.
     pub fn is_bits(self) -> bool {
         matches!(self, Table::Coils | Table::DiscreteInputs)
     }
 
+    /// Coils and holding registers can be written.
     pub fn is_writable(self) -> bool {
         matches!(self, Table::Coils | Table::HoldingRegisters)
     }
@@ -70,6 +77,7 @@ impl Table {
         }
     }
 
+    /// The table's name for one item, as messages use it ("holding register").
     pub fn name(self) -> &'static str {
         match self {
             Table::Coils => "coil",
@@ -88,7 +96,9 @@ pub fn reference(table: Table, address: u16) -> String {
 /// A run of addresses in one table.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Span {
+    /// The table the addresses are in.
     pub table: Table,
+    /// The first address, 0-based.
     pub address: u16,
     /// Given by a range (`400108-400110`); otherwise the COUNT argument decides.
     pub count: Option<u32>,
@@ -100,26 +110,37 @@ impl fmt::Display for Span {
     }
 }
 
+/// Why an address or range as typed names no addresses.
 #[derive(Clone, Debug, Error, PartialEq, Eq)]
 pub enum AddressError {
+    /// Neither a reference nor a number.
     #[error("'{0}' is not an address: give a Modicon reference (400108) or a protocol address (107, 0x6B)")]
     NotANumber(String),
+    /// A reference to another table than the command's.
     #[error("{text} is a {table} reference: use {command}{hint}")]
     WrongTable {
+        /// The reference as typed.
         text: String,
+        /// The table it names.
         table: &'static str,
+        /// The command that reads that table.
         command: &'static str,
         /// How to mean a protocol address instead, where the number can be one.
         hint: String,
     },
+    /// A reference to item 0 of a table (references count from 1).
     #[error("{0} is not a valid reference: references count from 1 ({1}00001 is the first)")]
     ZeroReference(String, u8),
+    /// A protocol address above 65535.
     #[error("address {0} is out of range 0-65535")]
     OutOfRange(String),
+    /// A number that should be a reference and is not one: no table digit, or too many digits.
     #[error("'{0}' is not a Modicon reference: give 5 or 6 digits whose first is 0 (coils), 1 (discrete inputs), 3 (input registers) or 4 (holding registers)")]
     NotAReference(String),
+    /// A range whose end comes before its start.
     #[error("range {0} ends before it starts")]
     BackwardRange(String),
+    /// A range whose ends are in different tables.
     #[error("range {0} spans two tables")]
     MixedRange(String),
 }

@@ -2,6 +2,7 @@
 //! names with a line of help, and reads a name back whatever its case, so that a front end
 //! can offer them without the core knowing it.
 
+/// A setting with a fixed set of named choices.
 pub trait Choice: Copy + Sized + 'static {
     /// Every choice, in the order they are listed.
     const ALL: &'static [Self];

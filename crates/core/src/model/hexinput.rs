@@ -5,14 +5,19 @@ use thiserror::Error;
 
 use crate::codec::adu::hex_digit;
 
+/// Why pasted text is no run of hex bytes.
 #[derive(Clone, Debug, Error, PartialEq, Eq)]
 pub enum HexError {
+    /// Nothing but separators.
     #[error("empty: no hex digits")]
     Empty,
+    /// A word whose hex digits do not pair into bytes.
     #[error("odd number of hex digits in '{0}': every byte takes two")]
     OddDigits(String),
+    /// A `0x` or `\x` prefix with nothing after it.
     #[error("'{0}' has no hex digits after its prefix")]
     NoDigits(String),
+    /// A character that is no hex digit, with its column (1-based).
     #[error("'{0}' at column {1} is not a hex digit")]
     NotHex(String, usize),
 }

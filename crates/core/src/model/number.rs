@@ -2,9 +2,11 @@
 
 use thiserror::Error;
 
+/// Text that is no whole number.
 #[derive(Clone, Debug, Error, PartialEq, Eq)]
 #[error("'{text}' is not a number: write it in decimal, 0x hex or 0b binary")]
 pub struct NumberError {
+    /// The text as typed.
     pub text: String,
 }
 

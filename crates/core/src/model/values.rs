@@ -8,19 +8,31 @@ use serde::Serialize;
 use crate::model::choice::Choice;
 use crate::model::number::parse_int;
 
+/// How registers are read as values, and values written as registers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum ValueType {
+    /// One register, unsigned.
     #[default]
     U16,
+    /// One register, two's complement.
     I16,
+    /// Two registers, unsigned.
     U32,
+    /// Two registers, two's complement.
     I32,
+    /// Two registers, an IEEE 754 single.
     F32,
+    /// Four registers, unsigned.
     U64,
+    /// Four registers, two's complement.
     I64,
+    /// Four registers, an IEEE 754 double.
     F64,
+    /// One register, shown as hex.
     Hex,
+    /// One register, shown as 16 binary digits.
     Bin,
+    /// One register, shown as its two bytes as characters, high byte first.
     Ascii,
 }
 
@@ -112,11 +124,15 @@ pub fn parse_coil(word: &str) -> Result<bool, String> {
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum Value {
+    /// An unsigned whole number.
     Unsigned(u64),
+    /// A signed whole number.
     Signed(i64),
     /// Kept as f32, so that 3.14 shows as 3.14 and not as its nearest f64.
     Float32(f32),
+    /// A double.
     Float(f64),
+    /// Hex, binary or ASCII text.
     Text(String),
 }
 

@@ -24,14 +24,25 @@ use crate::model::choice::Choice;
 use crate::model::values::{parse_coil, ByteOrder, ValueType};
 use crate::slave::DataModel;
 
+/// Why a data file cannot be loaded.
 #[derive(Debug, Error)]
 pub enum DataFileError {
+    /// The file cannot be read.
     #[error("cannot read {path}: {error}")]
-    Read { path: String, error: std::io::Error },
+    Read {
+        /// The file as named.
+        path: String,
+        /// Why it could not be read.
+        error: std::io::Error,
+    },
+    /// An entry of the file is wrong.
     #[error("{path}:{line}: {error}")]
     Line {
+        /// The file as named.
         path: String,
+        /// The entry's line, from 1.
         line: usize,
+        /// What is wrong with it.
         error: EntryError,
     },
 }
@@ -39,21 +50,33 @@ pub enum DataFileError {
 /// What is wrong with one entry of a data file.
 #[derive(Debug, Error, PartialEq, Eq)]
 pub enum EntryError {
+    /// A line that is neither an entry, a comment nor blank.
     #[error("an entry is REFERENCE = VALUE..., as in 400108 = 555")]
     NotAnEntry,
+    /// The reference does not read as one.
     #[error(transparent)]
     Reference(#[from] AddressError),
+    /// A quoted text without its closing quote.
     #[error("a quoted text has no closing '\"'")]
     OpenQuote,
+    /// Nothing after `=`.
     #[error("no value: give one after '='")]
     NoValue,
+    /// A value type given for coils or discrete inputs.
     #[error("{0}s are bits: a type does not apply")]
     TypeOfBits(&'static str),
     /// A value that does not read as the table's or the type's.
     #[error("{0}")]
     Value(String),
+    /// More values than the range has addresses.
     #[error("{values} values do not fit in a range of {size}")]
-    TooMany { values: usize, size: u32 },
+    TooMany {
+        /// Values given.
+        values: usize,
+        /// Addresses in the range.
+        size: u32,
+    },
+    /// Values that run past address 65535.
     #[error("the values run past the last address of the table ({0})")]
     PastEnd(String),
 }
@@ -189,6 +212,7 @@ pub fn parse(name: &str, text: &str) -> Result<DataModel, DataFileError> {
     Ok(model)
 }
 
+/// Reads the data file at `path` into a data model: every entry or none.
 pub fn load(path: &Path) -> Result<DataModel, DataFileError> {
     let name = path.display().to_string();
     let text = std::fs::read_to_string(path).map_err(|error| DataFileError::Read {

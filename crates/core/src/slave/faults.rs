@@ -11,6 +11,7 @@ use crate::model::number::parse_int;
 /// a range.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct InjectedException {
+    /// The exception code answered.
     pub code: ExceptionCode,
     /// `None`: every request. Otherwise the table and the addresses `[start, end)`.
     pub range: Option<(Table, u32, u32)>,
@@ -109,11 +110,13 @@ fn touched(request: &Request) -> Vec<(Table, u32, u32)> {
 /// Every fault the slave is told to make.
 #[derive(Clone, Debug, Default)]
 pub struct Faults {
+    /// Wait this long before each answer.
     pub delay: Duration,
     /// Share of requests left unanswered, 0 to 1.
     pub drop: f64,
     /// Share of answers corrupted on the wire, 0 to 1.
     pub corrupt: f64,
+    /// Exceptions to answer instead of the data; the first that applies wins.
     pub exceptions: Vec<InjectedException>,
     /// Noise bytes before each answer.
     pub garbage: bool,

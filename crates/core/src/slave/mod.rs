@@ -16,8 +16,11 @@ pub use model::{DataModel, TableData};
 /// What a slave says about itself (report slave id, device identification).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Identity {
+    /// Vendor name: device identification object 0.
     pub vendor: String,
+    /// Product code: object 1.
     pub product_code: String,
+    /// Major and minor revision: object 2.
     pub revision: String,
 }
 
@@ -42,6 +45,7 @@ impl Default for Identity {
 pub struct Counters {
     /// Requests answered (an exception counts).
     pub messages: u16,
+    /// Exception answers sent.
     pub exceptions: u16,
     /// Broadcasts carried out, never answered.
     pub broadcasts: u16,
@@ -52,6 +56,7 @@ pub struct Counters {
 pub struct Slave {
     models: BTreeMap<u8, DataModel>,
     counters: BTreeMap<u8, Counters>,
+    /// What every id says about itself.
     pub identity: Identity,
 }
 
@@ -70,6 +75,7 @@ impl Slave {
         self.models.keys().next().copied().unwrap_or(1)
     }
 
+    /// Whether `slave` is one of its ids.
     pub fn answers_for(&self, slave: u8) -> bool {
         self.models.contains_key(&slave)
     }

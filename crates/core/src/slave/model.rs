@@ -56,12 +56,14 @@ impl<T: Copy + Default> TableData<T> {
         Ok(())
     }
 
+    /// The values of `quantity` addresses from `address`, or the exception a slave answers.
     pub fn read(&self, address: u16, quantity: u16) -> Result<Vec<T>, ExceptionCode> {
         self.check(address, quantity, false)?;
         let start = usize::from(address);
         Ok(self.values[start..start + usize::from(quantity)].to_vec())
     }
 
+    /// Writes `values` from `address`, or gives the exception a slave answers.
     pub fn write(&mut self, address: u16, values: &[T]) -> Result<(), ExceptionCode> {
         let quantity =
             u16::try_from(values.len()).map_err(|_| ExceptionCode::ILLEGAL_DATA_VALUE)?;
@@ -84,6 +86,7 @@ impl<T: Copy + Default> TableData<T> {
         self.exists.get_or_insert_with(Vec::new).push((start, end));
     }
 
+    /// Makes `[start, end)` read-only: a write that touches it is refused.
     pub fn protect(&mut self, start: u32, end: u32) {
         self.read_only.push((start, end));
     }
@@ -92,9 +95,13 @@ impl<T: Copy + Default> TableData<T> {
 /// The four tables of one slave id.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct DataModel {
+    /// Coils (0xxxxx).
     pub coils: TableData<bool>,
+    /// Discrete inputs (1xxxxx).
     pub discrete_inputs: TableData<bool>,
+    /// Input registers (3xxxxx).
     pub input_registers: TableData<u16>,
+    /// Holding registers (4xxxxx).
     pub holding_registers: TableData<u16>,
 }
 

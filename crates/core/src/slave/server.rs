@@ -18,6 +18,7 @@ use crate::transport::Transport;
 /// What became of one request.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Outcome {
+    /// Answered with this PDU (data or an exception).
     Answered(Pdu),
     /// Answered, but the bytes were corrupted on purpose.
     Corrupted(Pdu),
@@ -29,13 +30,19 @@ pub enum Outcome {
 
 /// One logged request.
 pub struct LogEntry<'a> {
+    /// Time since the server started.
     pub elapsed: Duration,
+    /// Who sent the request: the TCP client's address, or the serial port.
     pub peer: &'a str,
+    /// The slave id the request was addressed to.
     pub slave: u8,
+    /// The request.
     pub request: &'a Request,
+    /// What became of it.
     pub outcome: &'a Outcome,
 }
 
+/// Told of every request the server handles, from any thread.
 pub type Logger = Arc<dyn Fn(&LogEntry) + Send + Sync>;
 
 /// RTU over TCP has no line to time; a gateway passes each frame whole, so the pause that
@@ -52,6 +59,7 @@ pub const MAX_CLIENTS: usize = 64;
 /// thread and the answers that wait for it.
 pub const WRITE_DEADLINE: Duration = Duration::from_secs(5);
 
+/// A slave behind a transport: takes requests, answers them, makes the faults asked for.
 pub struct Server {
     slave: Mutex<Slave>,
     faults: Faults,
@@ -62,6 +70,7 @@ pub struct Server {
 }
 
 impl Server {
+    /// A server for `slave`, making `faults` with random draws from `seed`, framing as `mode` does, telling `logger` of each request.
     pub fn new(
         slave: Slave,
         faults: Faults,
@@ -346,13 +355,17 @@ impl Server {
 pub enum Link {
     /// A serial line, or RTU/ASCII through a gateway: silence matters.
     Serial {
+        /// One character's time on the line.
         character: Duration,
+        /// The silence that ends a frame.
         silence: Duration,
     },
     /// A TCP client, dropped after `idle` without a byte; `activity` is when it last
     /// sent one, in milliseconds.
     Tcp {
+        /// How long a silent client is kept.
         idle: Duration,
+        /// When the client last sent a byte, in milliseconds since the Unix epoch.
         activity: Arc<AtomicU64>,
     },
 }

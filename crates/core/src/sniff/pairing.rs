@@ -8,7 +8,7 @@ use crate::codec::{Pdu, Reading, Request, Response};
 
 /// A request still waiting for its answer.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Pending {
+pub(super) struct Pending {
     pub slave: u8,
     pub request: Request,
     /// When it was sent (its last byte), in microseconds, when known.
@@ -17,7 +17,7 @@ pub struct Pending {
 
 /// What a frame is, once read against the request before it.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Role {
+pub(super) enum Role {
     Request(Request),
     /// An answer (or exception), with the request it answers when it follows one.
     Answer {
@@ -34,7 +34,7 @@ pub enum Role {
 }
 
 #[derive(Default)]
-pub struct Pairer {
+pub(super) struct Pairer {
     pending: Option<Pending>,
     /// Whether any frame came before: after one, a frame that reads both ways and answers
     /// nothing pending is the master's next request.
@@ -43,7 +43,7 @@ pub struct Pairer {
 
 /// A request that got no answer, and how long it waited.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Unanswered {
+pub(super) struct Unanswered {
     pub pending: Pending,
     pub waited: Option<u64>,
 }
@@ -52,7 +52,7 @@ impl Pairer {
     /// Reads one valid frame, its PDU already read; `start` and `end` are the arrival
     /// times of its first and last byte. A request that was still waiting when another
     /// came is returned as unanswered.
-    pub fn read(
+    pub(super) fn read(
         &mut self,
         slave: u8,
         reading: Reading,
@@ -123,7 +123,7 @@ impl Pairer {
     }
 
     /// The end of the capture: a request still waiting is unanswered.
-    pub fn finish(&mut self, now: Option<u64>) -> Option<Unanswered> {
+    pub(super) fn finish(&mut self, now: Option<u64>) -> Option<Unanswered> {
         self.pending.take().map(|pending| Unanswered {
             waited: match (pending.time, now) {
                 (Some(sent), Some(now)) => Some(now.saturating_sub(sent)),

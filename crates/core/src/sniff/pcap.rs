@@ -25,6 +25,7 @@ pub fn rtu_form(mode: Mode, bytes: &[u8]) -> Vec<u8> {
     }
 }
 
+/// Writes frames to a pcap file that Wireshark opens.
 pub struct PcapWriter<W: Write> {
     out: W,
 }
@@ -54,6 +55,7 @@ impl<W: Write> PcapWriter<W> {
         self.out.write_all(bytes)
     }
 
+    /// Writes out what is buffered.
     pub fn flush(&mut self) -> io::Result<()> {
         self.out.flush()
     }

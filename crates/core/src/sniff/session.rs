@@ -12,35 +12,47 @@ use crate::describe::{describe_frame, describe_reading, FrameReport, Kind, Value
 use crate::model::address::{reference, Table};
 
 /// What a session reports, in order.
+/// What a session found in the bytes, in the order it happened.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Record {
     /// Boxed: a frame record is large beside the other records.
+    /// A frame, valid or broken.
     Frame(Box<FrameRecord>),
+    /// A run of bytes that belong to no frame.
     Noise {
         /// The first bytes of the run (`codec::framing::NOISE_KEPT`).
         kept: Vec<u8>,
         /// How many bytes the run holds.
         len: u64,
+        /// Where the run starts, in bytes from the start of the capture.
         offset: u64,
         /// When the first byte arrived, when known.
         time: Option<u64>,
         /// `time`, or without timing where the bytes stand at the line's speed.
         at: u64,
     },
+    /// A request that no answer followed before the next request.
     Unanswered {
+        /// The slave asked.
         slave: u8,
+        /// The request.
         request: Request,
+        /// Microseconds from the end of the request until the next frame (or the end of the capture), when known.
         waited: Option<u64>,
     },
 }
 
+/// A frame as a session shows it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FrameRecord {
+    /// Its number in the capture, from 1, counting the frames a filter hides.
     pub number: u64,
+    /// The bytes, where they were and when, and what is broken.
     pub found: Found,
     /// Microseconds from the start of the capture: when the first byte arrived, or, without
     /// timing, where the frame stands at the line's speed.
     pub at: u64,
+    /// What the frame says, field by field.
     pub report: FrameReport,
     /// Silence before the frame since the end of the previous one, in microseconds.
     pub gap: Option<u64>,
@@ -48,32 +60,50 @@ pub struct FrameRecord {
     pub paired: bool,
 }
 
+/// The tally of one slave address.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct SlaveCounts {
+    /// Valid requests.
     pub requests: u64,
+    /// Valid answers, exceptions included.
     pub answers: u64,
+    /// Exception answers.
     pub exceptions: u64,
+    /// Requests no answer followed.
     pub unanswered: u64,
+    /// Frames whose checksum failed.
     pub crc_errors: u64,
 }
 
+/// The tally of a whole session, and of each slave address.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct Counts {
+    /// Frames, valid or broken.
     pub frames: u64,
+    /// Valid requests.
     pub requests: u64,
+    /// Valid answers, exceptions included.
     pub answers: u64,
+    /// Exception answers.
     pub exceptions: u64,
+    /// Requests no answer followed.
     pub unanswered: u64,
+    /// Frames whose checksum failed.
     pub crc_errors: u64,
+    /// Frames with a good checksum whose PDU reads as no request or answer.
     pub malformed: u64,
+    /// Bytes that belong to no frame.
     pub noise_bytes: u64,
+    /// The same per slave address.
     pub slaves: BTreeMap<u8, SlaveCounts>,
 }
 
 /// Which frames to show: by slave and by function; empty shows all.
 #[derive(Clone, Debug, Default)]
 pub struct Filter {
+    /// Show only these slave addresses.
     pub slaves: Vec<u8>,
+    /// Show only these function codes (an exception counts as its function).
     pub functions: Vec<u8>,
 }
 
@@ -88,6 +118,7 @@ impl Filter {
     }
 }
 
+/// A sniffing session: frames a stream of bytes, pairs requests with answers, and keeps the tally.
 pub struct Session {
     mode: Mode,
     framer: Framer,
@@ -119,6 +150,7 @@ impl Session {
         }
     }
 
+    /// The tally so far.
     pub fn counts(&self) -> &Counts {
         &self.counts
     }

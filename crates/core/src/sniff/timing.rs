@@ -21,10 +21,21 @@ pub fn beside(capture: &std::path::Path) -> std::path::PathBuf {
     name.into()
 }
 
+/// One line of a timing file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Event {
-    Bytes { time: u64, count: usize },
-    Idle { time: u64 },
+    /// Bytes read together.
+    Bytes {
+        /// When the last of them was read, in microseconds.
+        time: u64,
+        /// How many bytes.
+        count: usize,
+    },
+    /// The line had been quiet.
+    Idle {
+        /// Until when, in microseconds.
+        time: u64,
+    },
 }
 
 impl fmt::Display for Event {

@@ -5,17 +5,23 @@ use std::fmt;
 
 use thiserror::Error;
 
+/// Where the bus is: what `--port` names.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Endpoint {
+    /// A serial device by its path (`/dev/ttyUSB0`, `COM3`).
     Serial(String),
     /// Modbus TCP (MBAP framing).
     Tcp {
+        /// Host name or IP address.
         host: String,
+        /// TCP port.
         port: u16,
     },
     /// RTU frames through a transparent serial gateway.
     RtuOverTcp {
+        /// Host name or IP address of the gateway.
         host: String,
+        /// TCP port of the gateway.
         port: u16,
     },
     /// The built-in simulated slave, in process.
@@ -42,24 +48,46 @@ pub const LISTEN_HOST: &str = "127.0.0.1";
 /// Why a `--port` text names no endpoint.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum EndpointError {
+    /// An IPv6 address without its closing `]`.
     #[error("{scheme}{rest}: an IPv6 address needs its closing ']'")]
-    OpenBracket { scheme: &'static str, rest: String },
+    OpenBracket {
+        /// The scheme as typed (`tcp://`, `rtu+tcp://`).
+        scheme: &'static str,
+        /// What followed the scheme.
+        rest: String,
+    },
+    /// No host before the port.
     #[error("{scheme}{rest}: give a host, as in {scheme}127.0.0.1:502")]
-    NoHost { scheme: &'static str, rest: String },
+    NoHost {
+        /// The scheme as typed (`tcp://`, `rtu+tcp://`).
+        scheme: &'static str,
+        /// What followed the scheme.
+        rest: String,
+    },
+    /// A port that is no number 1-65535.
     #[error("{scheme}{rest}: '{port}' is not a TCP port (1-65535)")]
     BadPort {
+        /// The scheme as typed (`tcp://`, `rtu+tcp://`).
         scheme: &'static str,
+        /// What followed the scheme.
         rest: String,
+        /// The port as typed.
         port: String,
     },
+    /// An RTU-over-TCP gateway without a port: gateways have no standard one.
     #[error("{scheme}{rest}: give the gateway's port, as in {scheme}{host}:4001")]
     NoPort {
+        /// The scheme as typed (`tcp://`, `rtu+tcp://`).
         scheme: &'static str,
+        /// What followed the scheme.
         rest: String,
+        /// The host given.
         host: String,
     },
+    /// A `scheme://` that mbtool does not know.
     #[error("'{0}': the port is a serial device, tcp://HOST[:PORT], rtu+tcp://HOST:PORT or sim")]
     UnknownScheme(String),
+    /// An empty `--port`.
     #[error("--port is empty: give a serial device, tcp://HOST[:PORT] or sim")]
     Empty,
 }

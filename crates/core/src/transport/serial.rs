@@ -11,16 +11,24 @@ use super::{time_left, Transport};
 /// Line settings, as the connection options give them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LineSettings {
+    /// Bits per second.
     pub baud: u32,
+    /// The parity bit, if any.
     pub parity: Parity,
+    /// 7 or 8; Modbus RTU uses 8.
     pub data_bits: u8,
+    /// 1 or 2.
     pub stop_bits: u8,
 }
 
+/// The parity bit of each character.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Parity {
+    /// No parity bit; the specification then asks for 2 stop bits.
     None,
+    /// Even parity, the specification's default.
     Even,
+    /// Odd parity.
     Odd,
 }
 
@@ -51,7 +59,7 @@ impl LineSettings {
 
     /// One character's time on the wire.
     pub fn character_time(&self) -> Duration {
-        Duration::from_secs_f64(f64::from(self.bits_per_character()) / f64::from(self.baud.max(1)))
+        Duration::from_secs_f64(self.character_us() / 1e6)
     }
 
     /// The silence that ends an RTU frame: 3.5 character times, and 1.75 ms above 19200
@@ -60,16 +68,17 @@ impl LineSettings {
         if self.baud > 19200 {
             return Duration::from_micros(1750);
         }
-        let character = f64::from(self.bits_per_character()) / f64::from(self.baud.max(1));
-        Duration::from_secs_f64(3.5 * character)
+        self.character_time().mul_f64(3.5)
     }
 }
 
+/// A serial port as a transport.
 pub struct Serial {
     port: Box<dyn SerialPort>,
 }
 
 impl Serial {
+    /// Opens the device at `path` with `settings`.
     pub fn open(path: &str, settings: &LineSettings) -> io::Result<Serial> {
         let port = serialport::new(path, settings.baud)
             .data_bits(match settings.data_bits {

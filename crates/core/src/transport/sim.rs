@@ -14,6 +14,7 @@ use crate::transport::Transport;
 /// The slave id of the built-in slave, as in the manuals' examples.
 pub const SIM_SLAVE: u8 = EXAMPLE_SLAVE;
 
+/// The built-in slave as a transport: a request sent is answered at once, in process.
 pub struct SimTransport {
     server: Server,
     mode: Mode,
@@ -23,6 +24,7 @@ pub struct SimTransport {
 }
 
 impl SimTransport {
+    /// The sim, framing as `mode` does, holding the manuals' example data.
     pub fn new(mode: Mode) -> Self {
         let slave = Slave::new(&[SIM_SLAVE], DataModel::manual_examples());
         Self {

@@ -6,6 +6,7 @@ use std::time::{Duration, Instant};
 
 use super::{time_left, Transport};
 
+/// A TCP connection as a transport.
 pub struct Tcp {
     stream: TcpStream,
     /// The read timeout last set, in whole milliseconds: setting it is a system call, and
