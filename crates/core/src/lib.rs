@@ -11,6 +11,8 @@
 //! - [`sniff`]: pairing, the session of a capture, pcap and timing files.
 //! - [`describe`]: what a frame says, as fields.
 
+#![warn(missing_docs, unreachable_pub)]
+
 pub mod codec;
 pub mod describe;
 pub mod master;
