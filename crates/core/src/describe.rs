@@ -13,15 +13,20 @@ use crate::codec::{
 use crate::model::address::{reference, Table};
 use crate::model::values::escape_text;
 
+/// Which kind of PDU a frame carries.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Kind {
+    /// A request, master to slave.
     Request,
+    /// A normal response.
     Response,
+    /// An exception response (function code with 0x80 set).
     Exception,
 }
 
 impl Kind {
+    /// The lower-case name ("request", "response", "exception"), as JSON gives it.
     pub fn name(self) -> &'static str {
         match self {
             Kind::Request => "request",
@@ -35,7 +40,9 @@ impl Kind {
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 #[serde(untagged)]
 pub enum Values {
+    /// 16-bit register values, first address first.
     Registers(Vec<u16>),
+    /// Coil or input states, 0 or 1, first address first.
     Bits(Vec<u8>),
 }
 
@@ -44,6 +51,7 @@ impl Values {
         Values::Bits(bits.iter().map(|b| u8::from(*b)).collect())
     }
 
+    /// How many values: registers or bits.
     pub fn len(&self) -> usize {
         match self {
             Values::Registers(v) => v.len(),
@@ -51,14 +59,18 @@ impl Values {
         }
     }
 
+    /// Whether there are no values.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
 }
 
+/// One device identification object, described.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct DeviceObjectField {
+    /// The object id (00 VendorName, 01 ProductCode, ...).
     pub id: u8,
+    /// The object's name in the specification; "reserved" for 07-7F, "private" for 80-FF.
     pub name: &'static str,
     /// The object's bytes as text, control characters escaped.
     pub value: String,
@@ -67,40 +79,61 @@ pub struct DeviceObjectField {
 /// The fields a PDU carries; absent ones are left out of JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct Fields {
+    /// First address, 0-based as on the wire; for function 23, the write address.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub address: Option<u16>,
+    /// The Modicon reference of `address` (holding register 107 is "400108"), where the
+    /// function names a table.
     #[serde(rename = "ref", skip_serializing_if = "Option::is_none")]
     pub reference: Option<String>,
+    /// How many coils or registers are asked, written or carried; for a bit answer, every bit
+    /// of its bytes, since the quantity asked is unknown.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub count: Option<u16>,
+    /// The values written or read.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub values: Option<Values>,
+    /// The exception code of an exception response.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub exception: Option<u8>,
+    /// The exception code's name, such as "illegal data address".
     #[serde(skip_serializing_if = "Option::is_none")]
     pub exception_name: Option<&'static str>,
+    /// Function 23: the first register to read, 0-based as on the wire.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub read_address: Option<u16>,
+    /// Function 23: how many registers to read.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub read_count: Option<u16>,
+    /// Function 22: the AND mask (bits that keep their value).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub and_mask: Option<u16>,
+    /// Function 22: the OR mask (bits set where the AND mask is 0).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub or_mask: Option<u16>,
+    /// Function 8: the diagnostic sub-function.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sub_function: Option<u16>,
+    /// Function 7: the eight exception status outputs, one per bit.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub status: Option<u8>,
+    /// Function 43/14: the read device ID code (01 basic, 02 regular, 03 extended, 04 one
+    /// object).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub read_code: Option<u8>,
+    /// Function 43/14 request: the object to start from, or the one object to read.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub object_id: Option<u8>,
+    /// Function 43/14 answer: the device's conformity level.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub conformity: Option<u8>,
+    /// Function 43/14 answer: more objects remain to be asked for.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub more_follows: Option<bool>,
+    /// Function 43/14 answer: the object to ask for next when more follow.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub next_object_id: Option<u8>,
+    /// Function 43/14 answer: the identification objects.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub objects: Option<Vec<DeviceObjectField>>,
     /// Bytes the frame carries without a layout mbtool knows, as spaced hex.
@@ -114,7 +147,9 @@ pub struct Fields {
 /// The other reading of a frame that reads both ways.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Alternative {
+    /// The kind of PDU this other reading makes.
     pub kind: Kind,
+    /// The fields as this other reading has them.
     #[serde(flatten)]
     pub fields: Fields,
 }
@@ -122,23 +157,35 @@ pub struct Alternative {
 /// One frame, described.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct FrameReport {
+    /// The framing: "rtu", "ascii" or "tcp".
     pub mode: &'static str,
+    /// Request, normal response or exception.
     pub kind: Kind,
+    /// The slave address (RTU, ASCII) or unit identifier (TCP).
     pub slave: u8,
+    /// The function code as on the wire, with the 0x80 flag of an exception.
     pub function: u8,
+    /// Whether the frame opens, its checksum holds and its PDU follows its layout.
     pub valid: bool,
+    /// The MBAP transaction identifier; TCP frames only.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub transaction: Option<u16>,
+    /// The function's name in the specification, such as "Read Holding Registers".
     pub function_name: &'static str,
+    /// What the PDU carries.
     #[serde(flatten)]
     pub fields: Fields,
+    /// Why the frame is not valid; a checksum mismatch comes first.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<String>,
     /// The checksum found and expected, for the table view.
     #[serde(skip)]
     pub checksum: Checksum,
+    /// The PDU reads both as a request and as a response; `fields` give the request and
+    /// `alternative` the response.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub ambiguous: bool,
+    /// The response reading of an ambiguous frame.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub alternative: Option<Alternative>,
 }

@@ -9,14 +9,20 @@ use super::error::{FrameError, PduError};
 use super::limits;
 use super::pdu::{Direction, Pdu};
 
+/// How PDUs are framed on the line or the connection.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Mode {
+    /// Binary on a serial line: slave address, PDU, CRC-16 sent low byte first.
     Rtu,
+    /// Text on a serial line: ':', address, PDU and LRC as hex pairs, then CR LF.
     Ascii,
+    /// Modbus TCP: the MBAP header (transaction, protocol 0, length, unit id), then the PDU;
+    /// no checksum.
     Tcp,
 }
 
 impl Mode {
+    /// The lower-case name ("rtu", "ascii", "tcp") that reports give; `Display` writes capitals.
     pub fn name(self) -> &'static str {
         match self {
             Mode::Rtu => "rtu",
@@ -61,12 +67,18 @@ impl fmt::Display for Mode {
 /// The checksum a frame carried, against the one its bytes give.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Checksum {
+    /// An RTU frame's CRC-16.
     Crc {
+        /// The CRC at the end of the frame (sent low byte first).
         found: u16,
+        /// The CRC of the frame's address and PDU.
         expected: u16,
     },
+    /// An ASCII frame's LRC.
     Lrc {
+        /// The LRC the frame carries, its last hex pair.
         found: u8,
+        /// The LRC of the frame's address and PDU.
         expected: u8,
     },
     /// TCP frames carry none.
@@ -74,6 +86,8 @@ pub enum Checksum {
 }
 
 impl Checksum {
+    /// The error a mismatch makes: `FrameError::Crc` or `FrameError::Lrc`; `None` when the
+    /// checksum holds or there is none.
     pub fn error(self) -> Option<FrameError> {
         match self {
             Checksum::Crc { found, expected } if found != expected => {
@@ -91,12 +105,16 @@ impl Checksum {
 /// here rather than failing, so that a diagnostic tool can still show what the frame says.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Envelope<'a> {
+    /// The framing the frame was opened in.
     pub mode: Mode,
     /// The slave address (RTU, ASCII) or unit identifier (TCP).
     pub slave: u8,
     /// The MBAP transaction identifier; 0 on serial lines.
     pub transaction: u16,
+    /// The PDU bytes, function code first: borrowed from an RTU or TCP frame, decoded from
+    /// hex for ASCII.
     pub pdu: Cow<'a, [u8]>,
+    /// The checksum found against the one computed; a mismatch is kept here, not raised.
     pub checksum: Checksum,
 }
 
@@ -262,10 +280,13 @@ pub fn wrap(mode: Mode, slave: u8, transaction: u16, pdu: &[u8], out: &mut Vec<u
 /// A whole frame: envelope fields and a typed PDU.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Frame {
+    /// The framing the frame travels in.
     pub mode: Mode,
+    /// The slave address (RTU, ASCII; 0 broadcasts) or unit identifier (TCP).
     pub slave: u8,
     /// The MBAP transaction identifier; 0 on serial lines.
     pub transaction: u16,
+    /// The typed PDU: a request, a normal response or an exception.
     pub pdu: Pdu,
 }
 

@@ -5,16 +5,28 @@ use thiserror::Error;
 
 use super::pdu::{Pdu, Request, Response};
 
+/// Why an answer does not fit the request it answers.
 #[derive(Clone, Debug, Error, PartialEq, Eq)]
 pub enum Mismatch {
+    /// The answer is for another function than the request.
     #[error("answer is for function {answered:02X}, the request was {asked:02X}")]
-    Function { asked: u8, answered: u8 },
+    Function {
+        /// The request's function code.
+        asked: u8,
+        /// The answer's function code, without the exception flag.
+        answered: u8,
+    },
+    /// The answer carries more or fewer values than the request asked for.
     #[error("answer carries {answered} {what}, the request asked for {asked}")]
     Count {
+        /// What was counted: "registers", or "bytes of bits" for coils and discrete inputs.
         what: &'static str,
+        /// How many the request asked for (for bits, the quantity over 8, rounded up).
         asked: usize,
+        /// How many the answer carries.
         answered: usize,
     },
+    /// The answer to a write does not echo the request; carries which fields differ.
     #[error("answer does not echo the write request ({0})")]
     Echo(&'static str),
 }

@@ -2,14 +2,21 @@
 
 use std::fmt;
 
+/// The code of an exception response: why the device refused a request. The inner byte is
+/// the code as it came on the wire, defined or not.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct ExceptionCode(pub u8);
 
 impl ExceptionCode {
+    /// 01: the device does not support the function code.
     pub const ILLEGAL_FUNCTION: Self = Self(0x01);
+    /// 02: the address, or address plus quantity, falls outside what the device has.
     pub const ILLEGAL_DATA_ADDRESS: Self = Self(0x02);
+    /// 03: a value in the request is not allowed, such as a quantity out of range.
     pub const ILLEGAL_DATA_VALUE: Self = Self(0x03);
+    /// 04: an unrecoverable error happened while the device carried out the request.
     pub const SERVER_DEVICE_FAILURE: Self = Self(0x04);
+    /// 0B: a gateway got no response from the target device.
     pub const GATEWAY_TARGET_FAILED: Self = Self(0x0B);
 
     /// Whether the specification defines the code (01-08, 0A, 0B).
@@ -17,6 +24,8 @@ impl ExceptionCode {
         matches!(self.0, 0x01..=0x08 | 0x0A | 0x0B)
     }
 
+    /// The specification's name for the code, in lower case; "unknown exception" for
+    /// codes it does not define.
     pub fn name(self) -> &'static str {
         match self.0 {
             0x01 => "illegal function",

@@ -50,11 +50,13 @@ const MAX_SLAVE: u8 = 247;
 /// A frame as found in the stream.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Found {
+    /// The whole frame as received: envelope, PDU and checksum (CR LF included in ASCII).
     pub bytes: Vec<u8>,
     /// Position of the first byte in the whole stream.
     pub offset: u64,
     /// Arrival time of the first and of the last byte, in microseconds, when known.
     pub start: Option<u64>,
+    /// Arrival time of the last byte, in microseconds, when known.
     pub end: Option<u64>,
     /// Why the frame is not valid: a checksum mismatch, or an ASCII frame cut off.
     pub broken: Option<Broken>,
@@ -63,6 +65,7 @@ pub struct Found {
     pub direction: Option<Direction>,
 }
 
+/// Why a frame found in the stream is not valid.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Broken {
     /// The frame has the length its bytes predict, but its checksum fails.
@@ -78,14 +81,18 @@ pub struct Noise {
     pub kept: Vec<u8>,
     /// How many bytes the run holds.
     pub len: u64,
+    /// Position of the run's first byte in the whole stream.
     pub offset: u64,
     /// Arrival time of the first byte, when known.
     pub start: Option<u64>,
 }
 
+/// What a [`Framer`] hands out, in stream order.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Event {
+    /// A frame, valid or broken.
     Frame(Found),
+    /// A run of bytes that belong to no frame.
     Noise(Noise),
 }
 
