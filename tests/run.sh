@@ -29,3 +29,5 @@ fi
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets --quiet -- -D warnings
 cargo test --workspace --all-targets
+# The core's API documentation builds without a broken link.
+RUSTDOCFLAGS="-D warnings" cargo doc --package mbtool-core --no-deps --quiet

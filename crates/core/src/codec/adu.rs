@@ -241,7 +241,7 @@ fn open_tcp(frame: &[u8]) -> Result<Envelope<'_>, FrameError> {
 }
 
 /// Wraps PDU bytes in the envelope of `mode`, appending to `out`.
-pub fn wrap(mode: Mode, slave: u8, transaction: u16, pdu: &[u8], out: &mut Vec<u8>) {
+pub(crate) fn wrap(mode: Mode, slave: u8, transaction: u16, pdu: &[u8], out: &mut Vec<u8>) {
     match mode {
         Mode::Rtu => {
             let start = out.len();
@@ -318,7 +318,7 @@ impl Frame {
 /// Reads a request whose envelope and checksum are sound but whose PDU breaks its
 /// function's layout (quantity 0, say) as an opaque request, so that a slave can answer it
 /// with an exception as a real device does, rather than stay silent.
-pub fn opaque_request(mode: Mode, bytes: &[u8]) -> Result<Frame, FrameError> {
+pub(crate) fn opaque_request(mode: Mode, bytes: &[u8]) -> Result<Frame, FrameError> {
     let envelope = Envelope::open(mode, bytes)?;
     if let Some(error) = envelope.checksum.error() {
         return Err(error);

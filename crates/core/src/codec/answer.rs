@@ -32,7 +32,7 @@ pub enum Mismatch {
 }
 
 /// Checks `answer` against `request`. An exception for the request's function fits.
-pub fn check(request: &Request, answer: &Pdu) -> Result<(), Mismatch> {
+pub(crate) fn check(request: &Request, answer: &Pdu) -> Result<(), Mismatch> {
     let asked = request.function();
     let answered = match answer {
         Pdu::Request(r) => r.function(),

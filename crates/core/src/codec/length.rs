@@ -7,7 +7,7 @@ use super::pdu::Direction;
 
 /// The predicted length of a PDU or a frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Length {
+pub(crate) enum Length {
     /// Exactly this many bytes.
     Known(usize),
     /// At least this many bytes must be seen before the length can be told.
@@ -27,7 +27,7 @@ fn counted(pdu: &[u8], index: usize, base: usize) -> Length {
 }
 
 /// The length of the PDU that starts `pdu` (function code first).
-pub fn pdu_length(pdu: &[u8], direction: Direction) -> Length {
+pub(crate) fn pdu_length(pdu: &[u8], direction: Direction) -> Length {
     let Some(&function) = pdu.first() else {
         return Length::AtLeast(1);
     };
@@ -102,7 +102,7 @@ fn device_identification_length(pdu: &[u8]) -> Length {
 }
 
 /// The length of the RTU frame that starts `frame`: address, PDU, CRC.
-pub fn rtu_frame_length(frame: &[u8], direction: Direction) -> Length {
+pub(crate) fn rtu_frame_length(frame: &[u8], direction: Direction) -> Length {
     match frame.get(1..) {
         // The address byte before the PDU; the CRC after it is not needed to tell the length.
         Some(pdu) if !pdu.is_empty() => match pdu_length(pdu, direction) {
@@ -115,7 +115,7 @@ pub fn rtu_frame_length(frame: &[u8], direction: Direction) -> Length {
 }
 
 /// The length of the TCP frame that starts `frame`, from its MBAP length field.
-pub fn tcp_frame_length(frame: &[u8]) -> Length {
+pub(crate) fn tcp_frame_length(frame: &[u8]) -> Length {
     match frame.get(4..6) {
         Some([hi, lo]) => Length::Known(6 + usize::from(u16::from_be_bytes([*hi, *lo]))),
         _ => Length::AtLeast(6),
