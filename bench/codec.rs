@@ -39,7 +39,7 @@ fn codec(c: &mut Criterion) {
             for _ in FRAMES {
                 std::hint::black_box(Frame::decode(Mode::Rtu, answer, Direction::Response).ok());
             }
-        })
+        });
     });
 
     // Direction inferred and every field described, as `decode` does.
@@ -48,7 +48,7 @@ fn codec(c: &mut Criterion) {
             for frame in FRAMES {
                 std::hint::black_box(describe_frame(frame, None, None));
             }
-        })
+        });
     });
 
     // The worked frames glued into one stream, as a sniffer or a slave receives them.
@@ -61,7 +61,7 @@ fn codec(c: &mut Criterion) {
             framer.finish(&mut events);
             std::hint::black_box(events.len());
             events.clear();
-        })
+        });
     });
 
     let frame = Frame {
@@ -82,7 +82,7 @@ fn codec(c: &mut Criterion) {
                 }
             },
             BatchSize::SmallInput,
-        )
+        );
     });
     group.finish();
 }

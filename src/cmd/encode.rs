@@ -30,7 +30,7 @@ pub fn plan_for(cli: &Cli, request: &RequestCommand) -> Result<Plan, Error> {
         max_per_request: cli.data.max_per_request,
         tcp: mode(cli) == Mode::Tcp,
     };
-    Ok(plan(&request.operation(), &options)?)
+    Ok(plan(&request.operation(), options)?)
 }
 
 pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {

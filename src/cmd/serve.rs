@@ -49,7 +49,7 @@ fn data_model(args: &ServeArgs) -> Result<DataModel> {
         match span.table {
             mbtool_core::model::address::Table::Coils => model.coils.protect(start, end),
             mbtool_core::model::address::Table::HoldingRegisters => {
-                model.holding_registers.protect(start, end)
+                model.holding_registers.protect(start, end);
             }
             other => {
                 return Err(Error::usage(format!(

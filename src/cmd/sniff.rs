@@ -96,7 +96,7 @@ pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
             };
             match replay_timing(path)? {
                 Some(events) => {
-                    replay_timed(&mut input, &events, &mut session, &mut sinks, &mut save)?
+                    replay_timed(&mut input, &events, &mut session, &mut sinks, &mut save)?;
                 }
                 None => replay(&mut input, &mut session, &mut sinks, &mut save)?,
             }
@@ -105,7 +105,7 @@ pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
         None => Some(live(
             cli,
             args,
-            &line,
+            line,
             mode,
             &mut session,
             &mut sinks,
@@ -271,7 +271,7 @@ fn replay_timed(
 fn live(
     cli: &Cli,
     args: &SniffArgs,
-    line: &LineSettings,
+    line: LineSettings,
     mode: Mode,
     session: &mut Session,
     sinks: &mut Sinks,
@@ -298,7 +298,7 @@ fn live(
         }
     }
     // Opened like any serial port, but nothing is ever written to it.
-    let mut port = Serial::open(&path, line).map_err(Error::Io)?;
+    let mut port = Serial::open(&path, &line).map_err(Error::Io)?;
     let stop = Arc::new(AtomicBool::new(false));
     let stopper = Arc::clone(&stop);
     ctrlc::set_handler(move || stopper.store(true, Ordering::SeqCst))

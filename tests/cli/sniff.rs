@@ -299,15 +299,9 @@ fn an_ascii_capture_with_noise_and_a_cut_frame() {
 
 #[test]
 fn a_corrupt_frame_is_a_crc_error_not_noise() {
-    let mut bad = WORKED[4].to_vec();
+    let mut bad = WORKED[4].clone();
     bad[7] ^= 0x55;
-    let capture = [
-        bad,
-        WORKED[5].to_vec(),
-        WORKED[4].to_vec(),
-        WORKED[5].to_vec(),
-    ]
-    .concat();
+    let capture = [bad, WORKED[5].clone(), WORKED[4].clone(), WORKED[5].clone()].concat();
     let output = mbtool()
         .args(["sniff", "--json", "--input", "-"])
         .write_stdin(capture)
@@ -330,7 +324,7 @@ fn a_corrupt_frame_is_a_crc_error_not_noise() {
 #[test]
 fn filters_show_one_slave_or_function() {
     let other = rtu(&[0x05, 0x04, 0x00, 0x00, 0x00, 0x01]);
-    let capture = [WORKED[4].to_vec(), WORKED[5].to_vec(), other].concat();
+    let capture = [WORKED[4].clone(), WORKED[5].clone(), other].concat();
     let output = mbtool()
         .args(["sniff", "--json", "--input", "-", "--slave", "5"])
         .write_stdin(capture.clone())
@@ -376,7 +370,7 @@ fn a_pcap_file_holds_every_frame() {
         records.push(bytes[at + 16..at + 16 + len].to_vec());
         at += 16 + len;
     }
-    let want: Vec<Vec<u8>> = WORKED.iter().map(|f| f.to_vec()).collect();
+    let want: Vec<Vec<u8>> = WORKED.to_vec();
     assert_eq!(records, want);
 }
 
@@ -432,7 +426,7 @@ fn live_capture(extra: &[&str]) -> (Vec<serde_json::Value>, Vec<u64>) {
     let chunks: Vec<(Vec<u8>, Duration)> = WORKED[4..10]
         .iter()
         .zip(pauses)
-        .map(|(frame, pause)| (frame.to_vec(), Duration::from_micros(pause)))
+        .map(|(frame, pause)| (frame.clone(), Duration::from_micros(pause)))
         .collect();
     let (lines, written) = sniff_live(&chunks, extra);
     // 10 bits a character at 9600 baud; the writer sends each frame whole. The gap the
@@ -490,7 +484,7 @@ fn live_on_a_pty_the_gaps_match_and_save_replays() {
 
 #[test]
 fn an_exception_line_names_its_function_and_code() {
-    let capture = [WORKED[4].to_vec(), rtu(&[0x11, 0x83, 0x02])].concat();
+    let capture = [WORKED[4].clone(), rtu(&[0x11, 0x83, 0x02])].concat();
     let output = mbtool()
         .args(["sniff", "--input", "-"])
         .write_stdin(capture)
@@ -560,14 +554,14 @@ fn where_only_silence_tells_a_replay_of_save_agrees_with_the_live_session() {
     // glued to a request, a frame cut short, and the frames after them.
     let quiet = Duration::from_millis(40);
     let user = rtu(&[0x11, 0x41, 0x05, 0x06, 0x07]);
-    let request = WORKED[4].to_vec();
+    let request = WORKED[4].clone();
     let chunks = vec![
         (user.clone(), quiet),
         ([&[0x5A, 0x11, 0x03][..], &request].concat(), quiet),
-        (WORKED[5].to_vec(), quiet),
+        (WORKED[5].clone(), quiet),
         (request[..5].to_vec(), quiet),
         (request.clone(), quiet),
-        (WORKED[5].to_vec(), quiet),
+        (WORKED[5].clone(), quiet),
     ];
     let dir = tempfile::tempdir().unwrap();
     let saved = dir.path().join("bus.bin");
@@ -584,9 +578,9 @@ fn where_only_silence_tells_a_replay_of_save_agrees_with_the_live_session() {
         [
             &user,
             &request,
-            &WORKED[5].to_vec(),
+            &WORKED[5].clone(),
             &request,
-            &WORKED[5].to_vec()
+            &WORKED[5].clone()
         ]
         .map(|f| hex(f))
     );

@@ -360,7 +360,7 @@ fn response_fields(response: &Response) -> Fields {
     f
 }
 
-fn exception_fields(exception: &Exception) -> Fields {
+fn exception_fields(exception: Exception) -> Fields {
     Fields {
         exception: Some(exception.code.0),
         exception_name: Some(exception.code.name()),
@@ -373,7 +373,7 @@ pub fn describe_pdu(pdu: &Pdu) -> (Kind, Fields) {
     match pdu {
         Pdu::Request(request) => (Kind::Request, request_fields(request)),
         Pdu::Response(response) => (Kind::Response, response_fields(response)),
-        Pdu::Exception(exception) => (Kind::Exception, exception_fields(exception)),
+        Pdu::Exception(exception) => (Kind::Exception, exception_fields(*exception)),
     }
 }
 

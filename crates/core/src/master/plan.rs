@@ -200,7 +200,7 @@ pub struct Plan {
     pub reads: Option<(Table, u16)>,
 }
 
-fn parse_slave(text: &str, is_write: bool, options: &PlanOptions) -> Result<u8> {
+fn parse_slave(text: &str, is_write: bool, options: PlanOptions) -> Result<u8> {
     let value = parse_int(text).map_err(PlanError::Slave)?;
     if options.tcp {
         return u8::try_from(value).map_err(|_| PlanError::UnitId(text.to_string()));
@@ -242,7 +242,7 @@ fn check_end(span_text: &str, address: u16, count: u32) -> Result<()> {
     Ok(())
 }
 
-fn per_request(limit: u16, options: &PlanOptions, unit: u16) -> Result<u16> {
+fn per_request(limit: u16, options: PlanOptions, unit: u16) -> Result<u16> {
     let max = options.max_per_request.map_or(limit, |m| m.min(limit));
     if max < unit.max(1) {
         return Err(PlanError::MaxPerRequest(unit.max(1)));
@@ -250,14 +250,14 @@ fn per_request(limit: u16, options: &PlanOptions, unit: u16) -> Result<u16> {
     Ok(max)
 }
 
-fn register_type(table: Table, options: &PlanOptions) -> Result<ValueType> {
+fn register_type(table: Table, options: PlanOptions) -> Result<ValueType> {
     if table.is_bits() && options.value_type != ValueType::U16 {
         return Err(PlanError::TypeOfBits(table.name()));
     }
     Ok(options.value_type)
 }
 
-fn read_plan(slave: u8, span: Span, count: Option<&str>, options: &PlanOptions) -> Result<Plan> {
+fn read_plan(slave: u8, span: Span, count: Option<&str>, options: PlanOptions) -> Result<Plan> {
     let value_type = register_type(span.table, options)?;
     let width = value_type.width() as u32;
     let items = match (span.count, count) {
@@ -309,7 +309,7 @@ fn parse_coils(values: &[String]) -> Result<Vec<bool>> {
         .collect()
 }
 
-fn parse_registers(values: &[String], options: &PlanOptions) -> Result<Vec<u16>> {
+fn parse_registers(values: &[String], options: PlanOptions) -> Result<Vec<u16>> {
     let mut registers = Vec::with_capacity(values.len());
     for value in values {
         registers.extend(
@@ -334,7 +334,7 @@ fn write_plan(
     span: Span,
     values: &[String],
     style: Option<WriteStyle>,
-    options: &PlanOptions,
+    options: PlanOptions,
 ) -> Result<Plan> {
     let what = span.to_string();
     if !span.table.is_writable() {
@@ -388,7 +388,7 @@ impl<T: Copy> WriteValues<T> {
         &self,
         span: &Span,
         style: Option<WriteStyle>,
-        options: &PlanOptions,
+        options: PlanOptions,
     ) -> Result<Vec<Request>> {
         let count = self.values.len();
         check_span_count(span, count)?;
@@ -437,7 +437,7 @@ fn forced_style(table: Table, function: Option<u8>) -> Result<Option<WriteStyle>
 }
 
 /// Plans an operation.
-pub fn plan(operation: &Operation, options: &PlanOptions) -> Result<Plan> {
+pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
     let span = |address: &str, table: Option<Table>| match table {
         Some(table) => parse_span(address, table, options.pdu_addresses),
         None => parse_reference_span(address),
@@ -514,7 +514,7 @@ fn raw_request(pdu: &[u8]) -> Result<Request> {
 mod tests {
     use super::*;
 
-    fn read(address: &str, count: Option<&str>, options: &PlanOptions) -> Result<Plan> {
+    fn read(address: &str, count: Option<&str>, options: PlanOptions) -> Result<Plan> {
         plan(
             &Operation::Read {
                 slave: "17",
@@ -533,7 +533,7 @@ mod tests {
             max_per_request: Some(5),
             ..PlanOptions::default()
         };
-        let plan = read("400001", Some("4"), &options).unwrap();
+        let plan = read("400001", Some("4"), options).unwrap();
         // Four f32 values are eight registers; five per request would cut one in two.
         assert_eq!(
             plan.requests,
@@ -562,7 +562,7 @@ mod tests {
                 values: &values,
                 how: How::Function(None),
             },
-            &PlanOptions::default(),
+            PlanOptions::default(),
         )
         .unwrap();
         assert_eq!(plan.slave, 0);
@@ -579,11 +579,11 @@ mod tests {
     fn what_is_wrong_is_said_before_anything_is_sent() {
         let options = PlanOptions::default();
         assert_eq!(
-            read("400108", Some("0"), &options),
+            read("400108", Some("0"), options),
             Err(PlanError::Count("COUNT 0 is out of range 1-65536".into()))
         );
         assert_eq!(
-            read("465536", Some("2"), &options),
+            read("465536", Some("2"), options),
             Err(PlanError::PastEnd {
                 span: "465536".into(),
                 count: 2
@@ -596,7 +596,7 @@ mod tests {
                 table: None,
                 count: None,
             },
-            &options,
+            options,
         );
         assert_eq!(broadcast_read, Err(PlanError::BroadcastRead));
         let raw = plan(
@@ -604,7 +604,7 @@ mod tests {
                 slave: "17",
                 pdu: &["83".to_string()],
             },
-            &options,
+            options,
         );
         assert_eq!(raw, Err(PlanError::NotRequest(0x83)));
     }

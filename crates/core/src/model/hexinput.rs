@@ -117,7 +117,7 @@ mod tests {
 
     fn hex(text: &str) -> Result<Vec<u8>, HexError> {
         let mut out = Vec::new();
-        parse_hex(text.as_bytes(), &mut out).map(|_| out)
+        parse_hex(text.as_bytes(), &mut out).map(|()| out)
     }
 
     #[test]

@@ -171,9 +171,13 @@ impl ValueType {
         let unsigned = u64::from_be_bytes(wide);
         match self {
             ValueType::U16 | ValueType::U32 | ValueType::U64 => Value::Unsigned(unsigned),
-            ValueType::I16 => Value::Signed(i64::from(unsigned as u16 as i16)),
-            ValueType::I32 => Value::Signed(i64::from(unsigned as u32 as i32)),
-            ValueType::I64 => Value::Signed(unsigned as i64),
+            ValueType::I16 => Value::Signed(i64::from(i16::from_be_bytes(
+                (unsigned as u16).to_be_bytes(),
+            ))),
+            ValueType::I32 => Value::Signed(i64::from(i32::from_be_bytes(
+                (unsigned as u32).to_be_bytes(),
+            ))),
+            ValueType::I64 => Value::Signed(i64::from_be_bytes(wide)),
             ValueType::F32 => Value::Float32(f32::from_bits(unsigned as u32)),
             ValueType::F64 => Value::Float(f64::from_bits(unsigned)),
             ValueType::Hex => Value::Text(format!("0x{unsigned:04X}")),
