@@ -103,6 +103,40 @@ pub fn open(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Box<dyn Transp
     })
 }
 
+/// Where and how a master asked, for a timeout's message, and what usually causes one there.
+pub fn tried(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> (String, &'static str) {
+    match endpoint {
+        Endpoint::Serial(path) => {
+            let line = line_settings(cli, mode);
+            let parity = match line.parity {
+                Parity::None => "no parity",
+                Parity::Even => "even parity",
+                Parity::Odd => "odd parity",
+            };
+            (
+                format!(
+                    "on {path} ({mode}, {} baud, {parity}, {} data bits, {} stop {})",
+                    line.baud,
+                    line.data_bits,
+                    line.stop_bits,
+                    if line.stop_bits == 1 { "bit" } else { "bits" },
+                ),
+                "check the slave id, and --baud, --parity and --mode against the device's \
+                 settings, and the wiring (A and B swapped, no common ground)",
+            )
+        }
+        Endpoint::RtuOverTcp { .. } => (
+            format!("through {endpoint} ({mode})"),
+            "check the slave id, and the gateway's serial settings and wiring to the device",
+        ),
+        Endpoint::Tcp { .. } | Endpoint::Sim => (
+            format!("from {endpoint}"),
+            "check the unit id (a gateway passes it on as the slave id) and that the device \
+             behind it answers",
+        ),
+    }
+}
+
 /// A master on `endpoint`, framing in `mode`, as the options resolved them.
 pub fn master(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
     let transport = open(cli, endpoint, mode)?;

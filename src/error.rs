@@ -24,6 +24,13 @@ pub enum Error {
     Io(#[from] std::io::Error),
     #[error(transparent)]
     Master(#[from] MasterError),
+    /// No answer, with what was tried and what usually causes it.
+    #[error("{error} {tried}: {advice}")]
+    NoAnswer {
+        error: MasterError,
+        tried: String,
+        advice: &'static str,
+    },
     #[error("slave {slave} answered exception {code} to function {function} ({})", mbtool_core::codec::function::name(*function))]
     Exception {
         slave: u8,
@@ -55,12 +62,25 @@ impl Error {
         Error::Usage(message.into())
     }
 
+    /// A timeout told with what was tried (`on /dev/ttyUSB0 (rtu, 19200 baud, ...)`) and
+    /// what usually causes it; other errors as they are.
+    pub fn tried(self, tried: String, advice: &'static str) -> Self {
+        match self {
+            Error::Master(error @ MasterError::Timeout { .. }) => Error::NoAnswer {
+                error,
+                tried,
+                advice,
+            },
+            other => other,
+        }
+    }
+
     /// The process exit status for this error (CLI.md, "Exit status").
     pub fn exit_code(&self) -> u8 {
         match self {
             Error::Usage(_) | Error::Address(_) | Error::Plan(_) | Error::Endpoint(_) => 2,
             Error::Io(_) => 1,
-            Error::Master(MasterError::Timeout { .. }) => 3,
+            Error::Master(MasterError::Timeout { .. }) | Error::NoAnswer { .. } => 3,
             Error::Master(MasterError::BadFrame { .. }) => 4,
             Error::Master(MasterError::Encode(_)) => 2,
             Error::Master(MasterError::Io(_)) => 1,

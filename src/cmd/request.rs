@@ -33,10 +33,17 @@ pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
     }
     let mut out = output::stdout();
     let code = match (request, plan.reads) {
-        (RequestCommand::Raw(_), _) => raw(cli, &mut master, &plan, mode, &mut out)?,
-        (_, Some((table, address))) => reads(cli, &mut master, &plan, table, address, &mut out)?,
-        (_, None) => writes(cli, &mut master, &plan, &mut out)?,
-    };
+        (RequestCommand::Raw(_), _) => raw(cli, &mut master, &plan, mode, &mut out),
+        (_, Some((table, address))) => reads(cli, &mut master, &plan, table, address, &mut out),
+        (_, None) => writes(cli, &mut master, &plan, &mut out),
+    }
+    .map_err(|error| match error.downcast::<Error>() {
+        Ok(error) => {
+            let (tried, advice) = connection::tried(cli, &endpoint, mode);
+            error.tried(tried, advice).into()
+        }
+        Err(error) => error,
+    })?;
     out.flush()?;
     Ok(code)
 }
@@ -148,7 +155,7 @@ fn raw(
     let Some(request) = plan.requests.first() else {
         return Ok(0);
     };
-    let (pdu, code) = match master.transact(plan.slave, request)? {
+    let (pdu, code) = match master.transact(plan.slave, request).map_err(Error::from)? {
         Reply::Broadcast => return Ok(0),
         Reply::Response(response) => (Pdu::Response(response), 0),
         Reply::Exception(exception) => {

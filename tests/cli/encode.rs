@@ -98,7 +98,7 @@ fn counts_past_the_protocol_limit_are_split() {
 
 #[test]
 fn bad_counts_and_ranges_are_refused() {
-    refused("encode read-holding 17 465536 2", "past address 65535");
+    refused("encode read-holding 17 465536 2", "past the last address, 65535");
     refused("encode read-holding 17 400001 0", "COUNT");
     refused(
         "encode read-holding 17 400010-400001",
@@ -141,7 +141,7 @@ fn typed_writes_and_byte_orders() {
     );
     refused(
         "encode write-register 17 400001 70000",
-        "does not fit in 16 bits",
+        "does not fit in u16: give 0 to 65535",
     );
     // --function forces single writes, one request per register.
     assert_eq!(encode("write 17 400001 1 2 --function 6").len(), 2);

@@ -317,15 +317,21 @@ impl Frame {
 
 /// Reads a request whose envelope and checksum are sound but whose PDU breaks its
 /// function's layout (quantity 0, say) as an opaque request, so that a slave can answer it
-/// with an exception as a real device does, rather than stay silent.
-pub(crate) fn opaque_request(mode: Mode, bytes: &[u8]) -> Result<Frame, FrameError> {
+/// with an exception as a real device does, rather than stay silent. Function codes 00 and
+/// 80-FF are taken only with `any_function`: over TCP everything a server receives is a
+/// request, while on a serial line such a frame is another slave's answer.
+pub(crate) fn opaque_request(
+    mode: Mode,
+    bytes: &[u8],
+    any_function: bool,
+) -> Result<Frame, FrameError> {
     let envelope = Envelope::open(mode, bytes)?;
     if let Some(error) = envelope.checksum.error() {
         return Err(error);
     }
     match envelope.pdu.split_first() {
         Some((&function, data))
-            if function != 0 && function & super::function::EXCEPTION_FLAG == 0 =>
+            if any_function || (function != 0 && function & super::function::EXCEPTION_FLAG == 0) =>
         {
             Ok(Frame {
                 mode,

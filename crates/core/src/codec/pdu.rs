@@ -889,11 +889,11 @@ impl Response {
 
 impl Exception {
     /// Appends the two PDU bytes (function code with 0x80 set, exception code) to `out`;
-    /// the function must be 01-7F.
+    /// the function must be 00-7F (00 only to refuse a request of function 00).
     pub fn encode(&self, out: &mut Vec<u8>) -> Result<(), PduError> {
-        if self.function & EXCEPTION_FLAG != 0 || self.function == 0 {
+        if self.function & EXCEPTION_FLAG != 0 {
             return Err(PduError::BadField(
-                "an exception answers a function code 01-7F",
+                "an exception answers a function code 00-7F",
             ));
         }
         out.push(self.function | EXCEPTION_FLAG);

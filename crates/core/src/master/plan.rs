@@ -7,7 +7,7 @@
 use thiserror::Error;
 
 use crate::codec::{limits, Request};
-use crate::model::address::{parse_reference_span, parse_span, AddressError, Span, Table};
+use crate::model::address::{parse_reference_span, parse_span, Access, AddressError, Span, Table};
 use crate::model::choice::Choice;
 use crate::model::hexinput::HexError;
 use crate::model::number::{parse_in_range, parse_int, NumberError};
@@ -41,7 +41,7 @@ pub enum PlanError {
     #[error("{0}")]
     Count(String),
     /// The items asked for run past the last address of the table.
-    #[error("{span} with {count} items goes past address 65535")]
+    #[error("{span} with {count} items goes past the last address, 65535")]
     PastEnd {
         /// The address or range as typed.
         span: String,
@@ -66,14 +66,6 @@ pub enum PlanError {
         registers: u32,
         /// Registers per value of the value type.
         width: u32,
-    },
-    /// A write to discrete inputs or input registers.
-    #[error("{span} is a {table} reference, and that table is read-only: write to coils (0xxxxx) or holding registers (4xxxxx)")]
-    ReadOnly {
-        /// The reference as typed.
-        span: String,
-        /// The name of the read-only table.
-        table: &'static str,
     },
     /// A write with nothing to write.
     #[error("give at least one VALUE to write")]
@@ -257,7 +249,12 @@ fn register_type(table: Table, options: PlanOptions) -> Result<ValueType> {
     Ok(options.value_type)
 }
 
-fn read_plan(slave: u8, span: Span, count: Option<&str>, options: PlanOptions) -> Result<Plan> {
+fn read_plan(
+    slave: u8,
+    (text, span): (&str, Span),
+    count: Option<&str>,
+    options: PlanOptions,
+) -> Result<Plan> {
     let value_type = register_type(span.table, options)?;
     let width = value_type.width() as u32;
     let items = match (span.count, count) {
@@ -273,7 +270,7 @@ fn read_plan(slave: u8, span: Span, count: Option<&str>, options: PlanOptions) -
         }
         (None, None) => width,
     };
-    check_end(&span.to_string(), span.address, items)?;
+    check_end(text, span.address, items)?;
     let limit = if span.table.is_bits() {
         limits::MAX_READ_BITS
     } else {
@@ -331,17 +328,17 @@ enum WriteStyle {
 
 fn write_plan(
     slave: u8,
-    span: Span,
+    (text, span): (&str, Span),
     values: &[String],
     style: Option<WriteStyle>,
     options: PlanOptions,
 ) -> Result<Plan> {
-    let what = span.to_string();
     if !span.table.is_writable() {
-        return Err(PlanError::ReadOnly {
-            span: what,
-            table: span.table.name(),
-        });
+        return Err(AddressError::ReadOnly {
+            text: text.to_string(),
+            table: span.table.a_name(),
+        }
+        .into());
     }
     if values.is_empty() {
         return Err(PlanError::NoValues);
@@ -355,7 +352,7 @@ fn write_plan(
             single: |address, value| Request::WriteSingleCoil { address, value },
             multiple: |address, values| Request::WriteMultipleCoils { address, values },
         };
-        coils.requests(&span, style, options)?
+        coils.requests(text, &span, style, options)?
     } else {
         let registers = WriteValues {
             values: parse_registers(values, options)?,
@@ -364,7 +361,7 @@ fn write_plan(
             single: |address, value| Request::WriteSingleRegister { address, value },
             multiple: |address, values| Request::WriteMultipleRegisters { address, values },
         };
-        registers.requests(&span, style, options)?
+        registers.requests(text, &span, style, options)?
     };
     Ok(Plan {
         slave,
@@ -386,13 +383,14 @@ struct WriteValues<T> {
 impl<T: Copy> WriteValues<T> {
     fn requests(
         &self,
+        text: &str,
         span: &Span,
         style: Option<WriteStyle>,
         options: PlanOptions,
     ) -> Result<Vec<Request>> {
         let count = self.values.len();
         check_span_count(span, count)?;
-        check_end(&span.to_string(), span.address, count as u32)?;
+        check_end(text, span.address, count as u32)?;
         let single = matches!(style, Some(WriteStyle::Single)) || (style.is_none() && count == 1);
         if single {
             return Ok(self
@@ -438,9 +436,12 @@ fn forced_style(table: Table, function: Option<u8>) -> Result<Option<WriteStyle>
 
 /// Plans an operation.
 pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
-    let span = |address: &str, table: Option<Table>| match table {
-        Some(table) => parse_span(address, table, options.pdu_addresses),
-        None => parse_reference_span(address),
+    let span = |address, table: Option<Table>, access| -> Result<(&str, Span)> {
+        let span = match table {
+            Some(table) => parse_span(address, table, access, options.pdu_addresses),
+            None => parse_reference_span(address),
+        };
+        Ok((address, span?))
     };
     match *operation {
         Operation::Read {
@@ -450,7 +451,7 @@ pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
             count,
         } => {
             let slave = parse_slave(slave, false, options)?;
-            read_plan(slave, span(address, table)?, count, options)
+            read_plan(slave, span(address, table, Access::Read)?, count, options)
         }
         Operation::Write {
             slave,
@@ -469,11 +470,15 @@ pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
                     });
                 }
             }
-            let span = span(address, table)?;
+            let access = match how {
+                How::Multiple => Access::WriteMany,
+                _ => Access::WriteOne,
+            };
+            let span = span(address, table, access)?;
             let style = match how {
                 How::Single | How::OneRegister => Some(WriteStyle::Single),
                 How::Multiple => Some(WriteStyle::Multiple),
-                How::Function(function) => forced_style(span.table, function)?,
+                How::Function(function) => forced_style(span.1.table, function)?,
             };
             write_plan(slave, span, values, style, options)
         }
@@ -588,6 +593,11 @@ mod tests {
                 span: "465536".into(),
                 count: 2
             })
+        );
+        // The address as typed, not a reference the user never wrote.
+        assert_eq!(
+            read("65535", Some("2"), options).unwrap_err().to_string(),
+            "65535 with 2 items goes past the last address, 65535"
         );
         let broadcast_read = plan(
             &Operation::Read {

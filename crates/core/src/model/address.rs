@@ -41,14 +41,20 @@ impl Table {
         }
     }
 
-    /// The mbtool command that reads this table.
-    pub fn read_command(self) -> &'static str {
-        match self {
-            Table::Coils => "read-coils",
-            Table::DiscreteInputs => "read-inputs",
-            Table::InputRegisters => "read-input-registers",
-            Table::HoldingRegisters => "read-holding",
-        }
+    /// The mbtool command that works on this table as `access` does; `None` for a write to
+    /// a read-only table.
+    pub fn command(self, access: Access) -> Option<&'static str> {
+        Some(match (self, access) {
+            (Table::Coils, Access::Read) => "read-coils",
+            (Table::DiscreteInputs, Access::Read) => "read-inputs",
+            (Table::InputRegisters, Access::Read) => "read-input-registers",
+            (Table::HoldingRegisters, Access::Read) => "read-holding",
+            (Table::Coils, Access::WriteOne) => "write-coil",
+            (Table::Coils, Access::WriteMany) => "write-coils",
+            (Table::HoldingRegisters, Access::WriteOne) => "write-register",
+            (Table::HoldingRegisters, Access::WriteMany) => "write-registers",
+            (Table::DiscreteInputs | Table::InputRegisters, _) => return None,
+        })
     }
 
     /// Coils and discrete inputs hold bits; the other two hold registers.
@@ -86,11 +92,32 @@ impl Table {
             Table::HoldingRegisters => "holding register",
         }
     }
+
+    /// The name with its article, for messages ("an input register").
+    pub fn a_name(self) -> &'static str {
+        match self {
+            Table::Coils => "a coil",
+            Table::DiscreteInputs => "a discrete input",
+            Table::InputRegisters => "an input register",
+            Table::HoldingRegisters => "a holding register",
+        }
+    }
 }
 
 /// The 6-digit Modicon reference of a protocol address: holding register 107 is `400108`.
 pub fn reference(table: Table, address: u16) -> String {
     format!("{}{:05}", table.digit(), u32::from(address) + 1)
+}
+
+/// What a command does with a table, which decides the command a wrong reference is sent to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Access {
+    /// A read.
+    Read,
+    /// A write of one coil or register (05, 06).
+    WriteOne,
+    /// A write of several (15, 16).
+    WriteMany,
 }
 
 /// A run of addresses in one table.
@@ -117,20 +144,28 @@ pub enum AddressError {
     #[error("'{0}' is not an address: give a Modicon reference (400108) or a protocol address (107, 0x6B)")]
     NotANumber(String),
     /// A reference to another table than the command's.
-    #[error("{text} is a {table} reference: use {command}{hint}")]
+    #[error("{text} is {table} reference: use {command}{hint}")]
     WrongTable {
         /// The reference as typed.
         text: String,
-        /// The table it names.
+        /// The table it names, with its article.
         table: &'static str,
-        /// The command that reads that table.
+        /// The command that works on that table as the one given would have.
         command: &'static str,
         /// How to mean a protocol address instead, where the number can be one.
         hint: String,
     },
     /// A reference to item 0 of a table (references count from 1).
-    #[error("{0} is not a valid reference: references count from 1 ({1}00001 is the first)")]
+    #[error("{0} is not a valid reference: references count from 1 ({1}00001 is the first){hint}", hint = pdu_hint(.0))]
     ZeroReference(String, u8),
+    /// A write to a reference of a read-only table.
+    #[error("{text} is {table} reference, and that table is read-only: write to coils (0xxxxx) or holding registers (4xxxxx)")]
+    ReadOnly {
+        /// The reference as typed.
+        text: String,
+        /// The table it names, with its article.
+        table: &'static str,
+    },
     /// A protocol address above 65535.
     #[error("address {0} is out of range 0-65535")]
     OutOfRange(String),
@@ -143,6 +178,14 @@ pub enum AddressError {
     /// A range whose ends are in different tables.
     #[error("range {0} spans two tables")]
     MixedRange(String),
+}
+
+/// How to mean `text` as a protocol address, where it can be one.
+fn pdu_hint(text: &str) -> String {
+    match protocol_address(text) {
+        Ok(_) => format!(", or give --pdu-addresses to mean protocol address {text}"),
+        Err(_) => String::new(),
+    }
 }
 
 /// A 5- or 6-digit decimal Modicon reference: its table and 0-based address.
@@ -167,21 +210,28 @@ fn protocol_address(text: &str) -> Result<u16, AddressError> {
     u16::try_from(value).map_err(|_| AddressError::OutOfRange(text.to_string()))
 }
 
-/// One address for a command that works on `table`.
-pub fn parse_address(text: &str, table: Table, pdu_addresses: bool) -> Result<u16, AddressError> {
+/// One address for a command that works on `table` as `access` says.
+pub fn parse_address(
+    text: &str,
+    table: Table,
+    access: Access,
+    pdu_addresses: bool,
+) -> Result<u16, AddressError> {
     if !pdu_addresses {
         if let Some(reference) = as_reference(text) {
             let (found, address) = reference?;
             if found != table {
-                let hint = match protocol_address(text) {
-                    Ok(_) => format!(", or --pdu-addresses to mean protocol address {text}"),
-                    Err(_) => String::new(),
+                let Some(command) = found.command(access) else {
+                    return Err(AddressError::ReadOnly {
+                        text: text.to_string(),
+                        table: found.a_name(),
+                    });
                 };
                 return Err(AddressError::WrongTable {
                     text: text.to_string(),
-                    table: found.name(),
-                    command: found.read_command(),
-                    hint,
+                    table: found.a_name(),
+                    command,
+                    hint: pdu_hint(text),
                 });
             }
             return Ok(address);
@@ -225,9 +275,14 @@ where
 }
 
 /// An ADDRESS argument of a table command: one address or an inclusive range.
-pub fn parse_span(text: &str, table: Table, pdu_addresses: bool) -> Result<Span, AddressError> {
+pub fn parse_span(
+    text: &str,
+    table: Table,
+    access: Access,
+    pdu_addresses: bool,
+) -> Result<Span, AddressError> {
     parse_range(text, |one| {
-        parse_address(one, table, pdu_addresses).map(|address| (table, address))
+        parse_address(one, table, access, pdu_addresses).map(|address| (table, address))
     })
 }
 
@@ -243,30 +298,88 @@ mod tests {
     #[test]
     fn five_and_six_digit_references() {
         let holding = Table::HoldingRegisters;
-        assert_eq!(parse_address("400108", holding, false), Ok(107));
-        assert_eq!(parse_address("40108", holding, false), Ok(107));
-        assert_eq!(parse_address("107", holding, false), Ok(107));
-        assert_eq!(parse_address("0x6B", holding, false), Ok(107));
-        assert_eq!(parse_address("000020", Table::Coils, false), Ok(19));
-        assert_eq!(parse_address("465536", holding, false), Ok(65535));
+        assert_eq!(
+            parse_address("400108", holding, Access::Read, false),
+            Ok(107)
+        );
+        assert_eq!(
+            parse_address("40108", holding, Access::Read, false),
+            Ok(107)
+        );
+        assert_eq!(parse_address("107", holding, Access::Read, false), Ok(107));
+        assert_eq!(parse_address("0x6B", holding, Access::Read, false), Ok(107));
+        assert_eq!(
+            parse_address("000020", Table::Coils, Access::Read, false),
+            Ok(19)
+        );
+        assert_eq!(
+            parse_address("465536", holding, Access::Read, false),
+            Ok(65535)
+        );
     }
 
     #[test]
     fn pdu_addresses_turns_references_off() {
-        assert_eq!(parse_address("40108", Table::Coils, true), Ok(40108));
+        assert_eq!(
+            parse_address("40108", Table::Coils, Access::Read, true),
+            Ok(40108)
+        );
     }
 
     #[test]
     fn a_reference_of_another_table_names_the_right_command() {
-        let error = parse_address("400108", Table::Coils, false).unwrap_err();
+        let error = parse_address("400108", Table::Coils, Access::Read, false).unwrap_err();
         assert!(error.to_string().contains("read-holding"), "{error}");
     }
 
     #[test]
+    fn a_write_names_the_write_command_or_says_the_table_is_read_only() {
+        let holding = Table::HoldingRegisters;
+        let error = parse_address("400001", Table::Coils, Access::WriteOne, false).unwrap_err();
+        // 400001 is no protocol address (above 65535), so no --pdu-addresses hint.
+        assert_eq!(
+            error.to_string(),
+            "400001 is a holding register reference: use write-register"
+        );
+        let error = parse_address("000001", holding, Access::WriteMany, false).unwrap_err();
+        assert!(error
+            .to_string()
+            .starts_with("000001 is a coil reference: use write-coils"));
+        let error = parse_address("300009", holding, Access::WriteOne, false).unwrap_err();
+        assert_eq!(
+            error.to_string(),
+            "300009 is an input register reference, and that table is read-only: write to \
+             coils (0xxxxx) or holding registers (4xxxxx)"
+        );
+    }
+
+    #[test]
+    fn reference_zero_offers_the_protocol_address() {
+        let error = parse_address("40000", Table::HoldingRegisters, Access::Read, false);
+        assert_eq!(
+            error.unwrap_err().to_string(),
+            "40000 is not a valid reference: references count from 1 (400001 is the first), \
+             or give --pdu-addresses to mean protocol address 40000"
+        );
+    }
+
+    #[test]
     fn ranges() {
-        let span = parse_span("400108-400110", Table::HoldingRegisters, false).unwrap();
+        let span = parse_span(
+            "400108-400110",
+            Table::HoldingRegisters,
+            Access::Read,
+            false,
+        )
+        .unwrap();
         assert_eq!((span.address, span.count), (107, Some(3)));
-        assert!(parse_span("400110-400108", Table::HoldingRegisters, false).is_err());
+        assert!(parse_span(
+            "400110-400108",
+            Table::HoldingRegisters,
+            Access::Read,
+            false
+        )
+        .is_err());
         assert!(parse_reference_span("400001-300002").is_err());
     }
 

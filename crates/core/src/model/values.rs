@@ -158,6 +158,18 @@ impl ValueType {
         }
     }
 
+    /// The values a whole-number type takes when written. An unsigned type takes negative
+    /// values too, stored as two's complement, as a register holds no sign of its own.
+    fn range(self) -> (i128, i128) {
+        let bits = 16 * self.width() as u32;
+        match self {
+            ValueType::I16 | ValueType::I32 | ValueType::I64 => {
+                (-(1i128 << (bits - 1)), (1i128 << (bits - 1)) - 1)
+            }
+            _ => (-(1i128 << (bits - 1)), (1i128 << bits) - 1),
+        }
+    }
+
     /// Reads one value from exactly `self.width()` registers.
     pub fn read(self, registers: &[u16], order: ByteOrder) -> Value {
         let mut bytes = [0u8; 8];
@@ -197,12 +209,18 @@ impl ValueType {
     /// Turns a value typed by the user into registers; `Err` says why it does not fit.
     pub fn parse(self, text: &str, order: ByteOrder) -> Result<Vec<u16>, String> {
         let bytes: Vec<u8> = match self {
-            ValueType::F32 => parse_float(text)
-                .map(|v| (v as f32).to_be_bytes().to_vec())
-                .ok_or_else(|| format!("'{text}' is not a number for type f32"))?,
-            ValueType::F64 => parse_float(text)
-                .map(|v| v.to_be_bytes().to_vec())
-                .ok_or_else(|| format!("'{text}' is not a number for type f64"))?,
+            ValueType::F32 => {
+                let value = parse_float(text, "f32")?;
+                let single = value as f32;
+                if !single.is_finite() {
+                    return Err(format!(
+                        "{text} does not fit in f32: give at most ±{:e} in size (or --type f64)",
+                        f32::MAX
+                    ));
+                }
+                single.to_be_bytes().to_vec()
+            }
+            ValueType::F64 => parse_float(text, "f64")?.to_be_bytes().to_vec(),
             ValueType::Ascii => {
                 if !text.is_ascii() {
                     return Err(format!("'{text}' has characters outside ASCII"));
@@ -215,15 +233,10 @@ impl ValueType {
             }
             integer => {
                 let bits = 16 * integer.width() as u32;
-                let value = parse_int(text).map_err(|e| e.to_string())?;
-                // Negative values are stored as two's complement, so an unsigned type takes
-                // the signed range too.
-                let min = -(1i128 << (bits - 1));
-                let max = (1i128 << bits) - 1;
+                let value = parse_int(text).map_err(|_| not_whole(text, integer))?;
+                let (min, max) = integer.range();
                 if value < min || value > max {
-                    return Err(format!(
-                        "{text} does not fit in {bits} bits ({min} to {max})"
-                    ));
+                    return Err(out_of_range(text, integer));
                 }
                 let raw = (value as u64) & (u64::MAX >> (64 - bits));
                 raw.to_be_bytes()[(8 - bits as usize / 8)..].to_vec()
@@ -245,11 +258,45 @@ impl ValueType {
     }
 }
 
-fn parse_float(text: &str) -> Option<f64> {
-    text.trim()
+/// A finite number for a float type, in decimal (`-2.5`, `1e-3`) or as a whole number in
+/// any spelling.
+fn parse_float(text: &str, type_name: &str) -> Result<f64, String> {
+    let value = text
+        .trim()
         .parse::<f64>()
         .ok()
         .or_else(|| parse_int(text).ok().map(|v| v as f64))
+        .ok_or_else(|| format!("'{text}' is not a number for type {type_name}"))?;
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(format!(
+            "'{text}' is not a finite number: {type_name} values must be"
+        ))
+    }
+}
+
+/// Why `text` is no value of the whole-number type `value_type`.
+fn not_whole(text: &str, value_type: ValueType) -> String {
+    let name = value_type.name();
+    if text.trim().parse::<f64>().is_ok() {
+        format!("'{text}' is not a whole number, which {name} takes: give --type f32 or f64 for it")
+    } else {
+        format!("'{text}' is not a number: write it in decimal, 0x hex or 0b binary")
+    }
+}
+
+/// Why `text` is out of the range of the whole-number type `value_type`, and what would take it.
+fn out_of_range(text: &str, value_type: ValueType) -> String {
+    let name = value_type.name();
+    let (min, max) = value_type.range();
+    if max < -min {
+        // A signed type: its unsigned twin takes the upper half.
+        let unsigned = max * 2 + 1;
+        format!("{text} does not fit in {name}: give {min} to {max} (or an unsigned --type for 0 to {unsigned})")
+    } else {
+        format!("{text} does not fit in {name}: give 0 to {max} (or {min} to -1, stored as two's complement)")
+    }
 }
 
 /// Puts bytes in wire order `order` into big-endian order, or back: each order is its own
@@ -358,6 +405,37 @@ mod tests {
         );
         assert!(ValueType::U16.parse("65536", ByteOrder::Abcd).is_err());
         assert!(ValueType::U16.parse("-32769", ByteOrder::Abcd).is_err());
+    }
+
+    #[test]
+    fn a_value_outside_its_type_is_refused_naming_the_range() {
+        let refused =
+            |value_type: ValueType, text| value_type.parse(text, ByteOrder::Abcd).unwrap_err();
+        assert_eq!(
+            refused(ValueType::I16, "40000"),
+            "40000 does not fit in i16: give -32768 to 32767 (or an unsigned --type for 0 to 65535)"
+        );
+        assert_eq!(
+            refused(ValueType::U16, "70000"),
+            "70000 does not fit in u16: give 0 to 65535 (or -32768 to -1, stored as two's complement)"
+        );
+        assert_eq!(
+            refused(ValueType::F32, "1e39"),
+            "1e39 does not fit in f32: give at most ±3.4028235e38 in size (or --type f64)"
+        );
+        assert_eq!(
+            refused(ValueType::U16, "3.7"),
+            "'3.7' is not a whole number, which u16 takes: give --type f32 or f64 for it"
+        );
+        assert_eq!(
+            refused(ValueType::F64, "inf"),
+            "'inf' is not a finite number: f64 values must be"
+        );
+        assert_eq!(
+            ValueType::I32.parse("-1", ByteOrder::Abcd),
+            Ok(vec![0xFFFF, 0xFFFF])
+        );
+        assert!(ValueType::I16.parse("32768", ByteOrder::Abcd).is_err());
     }
 
     #[test]

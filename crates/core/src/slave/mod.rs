@@ -10,7 +10,7 @@ use std::collections::BTreeMap;
 
 use crate::codec::function;
 use crate::codec::{DeviceIdentification, DeviceObject};
-use crate::codec::{Exception, ExceptionCode, Pdu, Request, Response};
+use crate::codec::{Exception, ExceptionCode, Pdu, PduError, Request, Response};
 pub use model::{DataModel, TableData};
 
 /// What a slave says about itself (report slave id, device identification).
@@ -118,9 +118,11 @@ impl Slave {
     }
 }
 
+/// The exception answering `request`; a request of function 80-FF (possible over TCP) is
+/// refused as its function 00-7F.
 fn exception(request: &Request, code: ExceptionCode) -> Pdu {
     Pdu::Exception(Exception {
-        function: request.function(),
+        function: request.function() & !function::EXCEPTION_FLAG,
         code,
     })
 }
@@ -231,9 +233,15 @@ fn respond(
             read_code,
             object_id,
         } => device_identification(*read_code, *object_id, identity)?,
-        // A known function whose request broke its layout: a bad quantity or byte count.
+        // A known function whose request broke its layout: a bad quantity or byte count
+        // (03), or, the quantity being good, a range past the last address (02), in the
+        // order the specification checks them.
         Request::Other { function, data } if function::has_layout(*function, data) => {
-            return Err(ExceptionCode::ILLEGAL_DATA_VALUE)
+            let pdu = [&[*function], data.as_slice()].concat();
+            return Err(match Request::decode(&pdu) {
+                Err(PduError::AddressOverflow { .. }) => ExceptionCode::ILLEGAL_DATA_ADDRESS,
+                _ => ExceptionCode::ILLEGAL_DATA_VALUE,
+            });
         }
         Request::Other { .. } => return Err(ILLEGAL_FUNCTION),
     })

@@ -9,7 +9,7 @@ use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 
 use crate::codec::adu::{opaque_request, wrap};
 use crate::codec::framing::{Event, Found, Framer, ASCII_CHARACTER_TIMEOUT_US};
-use crate::codec::{Direction, Exception, ExceptionCode, Frame, FrameError, Mode, Pdu, Request};
+use crate::codec::{Direction, ExceptionCode, Frame, FrameError, Mode, Pdu, Request};
 use crate::slave::faults::Faults;
 use crate::slave::Slave;
 use crate::transport::tcp::Tcp;
@@ -91,7 +91,24 @@ impl Server {
     /// The answer to a frame found on the wire, as bytes to send (`None`: stay silent):
     /// the one answer path of `serve` and of the sim port.
     pub fn answer(&self, found: &Found, peer: &str, rng: &mut fastrand::Rng) -> Option<Vec<u8>> {
-        let frame = request_in(self.mode, found)?;
+        // Over TCP everything a server receives is a request, however it reads.
+        let answer_on_the_line = self.mode != Mode::Tcp && found.direction == Some(Direction::Response);
+        if found.broken.is_some() || answer_on_the_line {
+            return None;
+        }
+        self.answer_frame(&found.bytes, peer, rng)
+    }
+
+    /// The answer to bytes that are one whole frame, as a transport that delimits frames
+    /// itself (the sim port) hands them over: a frame whose PDU is malformed still gets
+    /// its exception.
+    pub fn answer_frame(
+        &self,
+        bytes: &[u8],
+        peer: &str,
+        rng: &mut fastrand::Rng,
+    ) -> Option<Vec<u8>> {
+        let frame = request_in(self.mode, bytes)?;
         let Pdu::Request(request) = &frame.pdu else {
             return None;
         };
@@ -122,12 +139,7 @@ impl Server {
             if !known && self.mode != Mode::Tcp {
                 return None;
             }
-            let exception = |code| {
-                Some(Pdu::Exception(Exception {
-                    function: request.function(),
-                    code,
-                }))
-            };
+            let exception = |code| Some(super::exception(request, code));
             let answer = match self.faults.exception_for(request) {
                 _ if !known => exception(ExceptionCode::GATEWAY_TARGET_FAILED),
                 Some(code) if slave_id != 0 => exception(code),
@@ -420,13 +432,14 @@ fn now_ms() -> u64 {
 /// The request a frame found on the line carries, if it is one. A frame whose checksum
 /// holds but whose PDU breaks its function's layout is read as an opaque request, to be
 /// answered with an exception as a real device does.
-fn request_in(mode: Mode, found: &Found) -> Option<Frame> {
-    if found.broken.is_some() || found.direction == Some(Direction::Response) {
-        return None;
-    }
-    match Frame::decode(mode, &found.bytes, Direction::Request) {
+fn request_in(mode: Mode, bytes: &[u8]) -> Option<Frame> {
+    let tcp = mode == Mode::Tcp;
+    match Frame::decode(mode, bytes, Direction::Request) {
+        Ok(frame) if tcp && !matches!(frame.pdu, Pdu::Request(_)) => {
+            opaque_request(mode, bytes, true).ok()
+        }
         Ok(frame) => Some(frame),
-        Err(FrameError::Pdu(_)) => opaque_request(mode, &found.bytes).ok(),
+        Err(FrameError::Pdu(_)) => opaque_request(mode, bytes, tcp).ok(),
         Err(_) => None,
     }
 }

@@ -175,8 +175,36 @@ impl Endpoint {
         if text.is_empty() {
             return Err(EndpointError::Empty);
         }
+        if names_tcp(text) {
+            let (host, port) = host_port(text, Some(MODBUS_TCP_PORT), "tcp://", listening)?;
+            return Ok(Endpoint::Tcp { host, port });
+        }
         Ok(Endpoint::Serial(text.to_string()))
     }
+}
+
+/// Whether a port without a scheme means Modbus TCP, as mbpoll users type it: a bare IPv4
+/// address (`192.168.1.10`) or `HOST:PORT` (`127.0.0.1:5020`, `plc1:502`, `[::1]:502`). A
+/// path (`/dev/ttyUSB0`, `./pty`) or `COMn` is a serial line.
+fn names_tcp(text: &str) -> bool {
+    if text.starts_with(['/', '.', '\\']) || is_com_port(text) {
+        return false;
+    }
+    if text.parse::<std::net::Ipv4Addr>().is_ok() || text.starts_with('[') {
+        return true;
+    }
+    matches!(
+        text.rsplit_once(':'),
+        Some((host, port)) if !host.contains(':') && !port.is_empty()
+            && port.bytes().all(|b| b.is_ascii_digit())
+    )
+}
+
+fn is_com_port(text: &str) -> bool {
+    text.get(..3)
+        .is_some_and(|com| com.eq_ignore_ascii_case("com"))
+        && text.len() > 3
+        && text.bytes().skip(3).all(|b| b.is_ascii_digit())
 }
 
 #[cfg(test)]
@@ -212,6 +240,24 @@ mod tests {
             })
         );
         assert!(Endpoint::parse("rtu+tcp://gw").is_err());
+        // Without a scheme, as mbpoll users type them.
+        let tcp = |host: &str, port| {
+            Ok(Endpoint::Tcp {
+                host: host.into(),
+                port,
+            })
+        };
+        assert_eq!(Endpoint::parse("192.168.1.10"), tcp("192.168.1.10", 502));
+        assert_eq!(Endpoint::parse("127.0.0.1:5020"), tcp("127.0.0.1", 5020));
+        assert_eq!(Endpoint::parse("plc1:502"), tcp("plc1", 502));
+        assert_eq!(Endpoint::parse("[::1]:502"), tcp("::1", 502));
+        assert_eq!(Endpoint::parse_listen(":5020"), tcp("127.0.0.1", 5020));
+        assert_eq!(Endpoint::parse("COM3"), Ok(Endpoint::Serial("COM3".into())));
+        assert_eq!(
+            Endpoint::parse("./pty0"),
+            Ok(Endpoint::Serial("./pty0".into()))
+        );
+        assert!(Endpoint::parse("10.0.0.5:0").is_err());
         assert!(Endpoint::parse("tcp://:5020").is_err());
         assert_eq!(
             Endpoint::parse_listen("tcp://:5020"),

@@ -4,7 +4,6 @@
 use std::io;
 use std::time::Instant;
 
-use crate::codec::framing::{Event, Framer};
 use crate::codec::Mode;
 use crate::slave::faults::Faults;
 use crate::slave::server::Server;
@@ -17,7 +16,6 @@ pub const SIM_SLAVE: u8 = EXAMPLE_SLAVE;
 /// The built-in slave as a transport: a request sent is answered at once, in process.
 pub struct SimTransport {
     server: Server,
-    mode: Mode,
     /// No faults are injected, so nothing is drawn from it; the answer path asks for one.
     rng: fastrand::Rng,
     pending: Vec<u8>,
@@ -29,7 +27,6 @@ impl SimTransport {
         let slave = Slave::new(&[SIM_SLAVE], DataModel::manual_examples());
         Self {
             server: Server::new(slave, Faults::default(), mode, 0, None),
-            mode,
             rng: fastrand::Rng::with_seed(0),
             pending: Vec::new(),
         }
@@ -43,18 +40,10 @@ impl Transport for SimTransport {
     }
 
     fn send(&mut self, frame: &[u8]) -> io::Result<()> {
-        // Framed as a slave on a line frames it: a sound frame with a bad PDU gets an
-        // exception, a broken frame no answer.
-        let mut framer = Framer::new(self.mode, 0.0, 0);
-        let mut events = Vec::new();
-        framer.push(frame, &mut events);
-        framer.finish(&mut events);
-        for event in events {
-            if let Event::Frame(found) = event {
-                if let Some(answer) = self.server.answer(&found, "sim", &mut self.rng) {
-                    self.pending.extend(answer);
-                }
-            }
+        // Each send is one whole frame: a sound frame with a bad PDU gets an exception, a
+        // broken frame no answer.
+        if let Some(answer) = self.server.answer_frame(frame, "sim", &mut self.rng) {
+            self.pending.extend(answer);
         }
         Ok(())
     }

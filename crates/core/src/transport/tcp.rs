@@ -14,6 +14,8 @@ pub struct Tcp {
     read_timeout_ms: u64,
     /// RTU frames through a gateway: silence between frames still matters on its line.
     serial_behind: bool,
+    /// Whom the connection is with, for messages.
+    peer: String,
 }
 
 impl Tcp {
@@ -40,8 +42,12 @@ impl Tcp {
     pub fn from_stream(stream: TcpStream, serial_behind: bool) -> io::Result<Tcp> {
         // Frames are small and each waits for an answer: send at once.
         stream.set_nodelay(true)?;
+        let peer = stream
+            .peer_addr()
+            .map_or_else(|_| "the other end".into(), |peer| peer.to_string());
         Ok(Tcp {
             stream,
+            peer,
             read_timeout_ms: 0,
             serial_behind,
         })
@@ -54,7 +60,7 @@ impl Transport for Tcp {
         let mut scratch = [0u8; 512];
         let result = loop {
             match self.stream.read(&mut scratch) {
-                Ok(0) => break Err(closed()),
+                Ok(0) => break Err(closed(&self.peer)),
                 Ok(_) => continue,
                 Err(e) if e.kind() == io::ErrorKind::WouldBlock => break Ok(()),
                 Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
@@ -84,7 +90,7 @@ impl Transport for Tcp {
                 self.read_timeout_ms = left_ms;
             }
             match self.stream.read(&mut chunk) {
-                Ok(0) => return Err(closed()),
+                Ok(0) => return Err(closed(&self.peer)),
                 Ok(n) => {
                     buf.extend_from_slice(&chunk[..n]);
                     return Ok(n);
@@ -108,9 +114,9 @@ impl Transport for Tcp {
     }
 }
 
-fn closed() -> io::Error {
+fn closed(peer: &str) -> io::Error {
     io::Error::new(
         io::ErrorKind::ConnectionAborted,
-        "the other end closed the connection",
+        format!("{peer} closed the connection"),
     )
 }
