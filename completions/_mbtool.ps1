@@ -21,8 +21,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
 
     $completions = @(switch ($command) {
         'mbtool' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -57,24 +57,24 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('read-holding-registers', 'read-holding-registers', [CompletionResultType]::ParameterValue, 'Read holding registers (function 03)')
             [CompletionResult]::new('read-input-registers', 'read-input-registers', [CompletionResultType]::ParameterValue, 'Read input registers (function 04)')
             [CompletionResult]::new('read-input-regs', 'read-input-regs', [CompletionResultType]::ParameterValue, 'Read input registers (function 04)')
-            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)')
+            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by reference: its first digit picks the table')
             [CompletionResult]::new('write-coil', 'write-coil', [CompletionResultType]::ParameterValue, 'Write one coil (function 05)')
             [CompletionResult]::new('write-coils', 'write-coils', [CompletionResultType]::ParameterValue, 'Write coils (function 15)')
             [CompletionResult]::new('write-register', 'write-register', [CompletionResultType]::ParameterValue, 'Write one holding register (function 06)')
             [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
-            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by Modicon reference: 05/06 for one value, 15/16 for several')
+            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
-            [CompletionResult]::new('sniff', 'sniff', [CompletionResultType]::ParameterValue, 'Watch a bus without ever transmitting: every frame as it passes, decoded and paired')
-            [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs')
-            [CompletionResult]::new('decode', 'decode', [CompletionResultType]::ParameterValue, 'Decode Modbus frames given as arguments, or one per line on standard input')
-            [CompletionResult]::new('encode', 'encode', [CompletionResultType]::ParameterValue, 'Print the frame that a request command would send, without sending it')
+            [CompletionResult]::new('sniff', 'sniff', [CompletionResultType]::ParameterValue, 'Watch a bus without transmitting; frames decoded, paired')
+            [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Stand in for a slave on a serial line or TCP')
+            [CompletionResult]::new('decode', 'decode', [CompletionResultType]::ParameterValue, 'Decode frames given as arguments or on standard input')
+            [CompletionResult]::new('encode', 'encode', [CompletionResultType]::ParameterValue, 'Print the frame a request command would send')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
         'mbtool;generate' {
             [CompletionResult]::new('--dir', '--dir', [CompletionResultType]::ParameterName, 'The folder that receives completions/ and man/')
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -104,8 +104,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-coils' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -135,8 +135,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-inputs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -166,8 +166,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-discrete-inputs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -197,8 +197,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-holding' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -228,8 +228,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-holding-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -259,8 +259,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-input-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -290,8 +290,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-input-regs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -321,8 +321,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -352,8 +352,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;write-coil' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -383,8 +383,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;write-coils' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -414,8 +414,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;write-register' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -445,8 +445,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;write-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -477,8 +477,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         }
         'mbtool;write' {
             [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Force the function: 5 or 15 for coils, 6 or 16 for registers')
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -508,8 +508,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;raw' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -544,8 +544,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--pcap', '--pcap', [CompletionResultType]::ParameterName, 'Also write the frames to a pcap file for Wireshark (link type 147, see above)')
             [CompletionResult]::new('--slave', '--slave', [CompletionResultType]::ParameterName, 'Show only the frames of this slave; repeatable')
             [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Show only the frames of this function code (3, 0x10); repeatable')
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -586,8 +586,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--seed', '--seed', [CompletionResultType]::ParameterName, 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run')
             [CompletionResult]::new('--vendor', '--vendor', [CompletionResultType]::ParameterName, 'Device identification: vendor name')
             [CompletionResult]::new('--product-code', '--product-code', [CompletionResultType]::ParameterName, 'Device identification: product code')
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -621,8 +621,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         }
         'mbtool;decode' {
             [CompletionResult]::new('--direction', '--direction', [CompletionResultType]::ParameterName, 'Read every frame as a request or as a response instead of inferring it')
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -652,8 +652,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -687,19 +687,19 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('read-holding-registers', 'read-holding-registers', [CompletionResultType]::ParameterValue, 'Read holding registers (function 03)')
             [CompletionResult]::new('read-input-registers', 'read-input-registers', [CompletionResultType]::ParameterValue, 'Read input registers (function 04)')
             [CompletionResult]::new('read-input-regs', 'read-input-regs', [CompletionResultType]::ParameterValue, 'Read input registers (function 04)')
-            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)')
+            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by reference: its first digit picks the table')
             [CompletionResult]::new('write-coil', 'write-coil', [CompletionResultType]::ParameterValue, 'Write one coil (function 05)')
             [CompletionResult]::new('write-coils', 'write-coils', [CompletionResultType]::ParameterValue, 'Write coils (function 15)')
             [CompletionResult]::new('write-register', 'write-register', [CompletionResultType]::ParameterValue, 'Write one holding register (function 06)')
             [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
-            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by Modicon reference: 05/06 for one value, 15/16 for several')
+            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
         'mbtool;encode;read-coils' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -729,8 +729,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;read-inputs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -760,8 +760,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;read-discrete-inputs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -791,8 +791,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;read-holding' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -822,8 +822,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;read-holding-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -853,8 +853,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;read-input-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -884,8 +884,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;read-input-regs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -915,8 +915,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;read' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -946,8 +946,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;write-coil' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -977,8 +977,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;write-coils' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -1008,8 +1008,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;write-register' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -1039,8 +1039,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;write-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -1071,8 +1071,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         }
         'mbtool;encode;write' {
             [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Force the function: 5 or 15 for coils, 6 or 16 for registers')
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -1102,8 +1102,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;raw' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
@@ -1137,12 +1137,12 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('read-inputs', 'read-inputs', [CompletionResultType]::ParameterValue, 'Read discrete inputs (function 02)')
             [CompletionResult]::new('read-holding', 'read-holding', [CompletionResultType]::ParameterValue, 'Read holding registers (function 03)')
             [CompletionResult]::new('read-input-registers', 'read-input-registers', [CompletionResultType]::ParameterValue, 'Read input registers (function 04)')
-            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)')
+            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by reference: its first digit picks the table')
             [CompletionResult]::new('write-coil', 'write-coil', [CompletionResultType]::ParameterValue, 'Write one coil (function 05)')
             [CompletionResult]::new('write-coils', 'write-coils', [CompletionResultType]::ParameterValue, 'Write coils (function 15)')
             [CompletionResult]::new('write-register', 'write-register', [CompletionResultType]::ParameterValue, 'Write one holding register (function 06)')
             [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
-            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by Modicon reference: 05/06 for one value, 15/16 for several')
+            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
@@ -1189,17 +1189,17 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('read-inputs', 'read-inputs', [CompletionResultType]::ParameterValue, 'Read discrete inputs (function 02)')
             [CompletionResult]::new('read-holding', 'read-holding', [CompletionResultType]::ParameterValue, 'Read holding registers (function 03)')
             [CompletionResult]::new('read-input-registers', 'read-input-registers', [CompletionResultType]::ParameterValue, 'Read input registers (function 04)')
-            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)')
+            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by reference: its first digit picks the table')
             [CompletionResult]::new('write-coil', 'write-coil', [CompletionResultType]::ParameterValue, 'Write one coil (function 05)')
             [CompletionResult]::new('write-coils', 'write-coils', [CompletionResultType]::ParameterValue, 'Write coils (function 15)')
             [CompletionResult]::new('write-register', 'write-register', [CompletionResultType]::ParameterValue, 'Write one holding register (function 06)')
             [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
-            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by Modicon reference: 05/06 for one value, 15/16 for several')
+            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
-            [CompletionResult]::new('sniff', 'sniff', [CompletionResultType]::ParameterValue, 'Watch a bus without ever transmitting: every frame as it passes, decoded and paired')
-            [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs')
-            [CompletionResult]::new('decode', 'decode', [CompletionResultType]::ParameterValue, 'Decode Modbus frames given as arguments, or one per line on standard input')
-            [CompletionResult]::new('encode', 'encode', [CompletionResultType]::ParameterValue, 'Print the frame that a request command would send, without sending it')
+            [CompletionResult]::new('sniff', 'sniff', [CompletionResultType]::ParameterValue, 'Watch a bus without transmitting; frames decoded, paired')
+            [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Stand in for a slave on a serial line or TCP')
+            [CompletionResult]::new('decode', 'decode', [CompletionResultType]::ParameterValue, 'Decode frames given as arguments or on standard input')
+            [CompletionResult]::new('encode', 'encode', [CompletionResultType]::ParameterValue, 'Print the frame a request command would send')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
@@ -1253,12 +1253,12 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('read-inputs', 'read-inputs', [CompletionResultType]::ParameterValue, 'Read discrete inputs (function 02)')
             [CompletionResult]::new('read-holding', 'read-holding', [CompletionResultType]::ParameterValue, 'Read holding registers (function 03)')
             [CompletionResult]::new('read-input-registers', 'read-input-registers', [CompletionResultType]::ParameterValue, 'Read input registers (function 04)')
-            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)')
+            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by reference: its first digit picks the table')
             [CompletionResult]::new('write-coil', 'write-coil', [CompletionResultType]::ParameterValue, 'Write one coil (function 05)')
             [CompletionResult]::new('write-coils', 'write-coils', [CompletionResultType]::ParameterValue, 'Write coils (function 15)')
             [CompletionResult]::new('write-register', 'write-register', [CompletionResultType]::ParameterValue, 'Write one holding register (function 06)')
             [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
-            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by Modicon reference: 05/06 for one value, 15/16 for several')
+            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
             break
         }

@@ -18,8 +18,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
     }
     var completions = [
         &'mbtool'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -54,23 +54,23 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand read-holding-registers 'Read holding registers (function 03)'
             cand read-input-registers 'Read input registers (function 04)'
             cand read-input-regs 'Read input registers (function 04)'
-            cand read 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+            cand read 'Read by reference: its first digit picks the table'
             cand write-coil 'Write one coil (function 05)'
             cand write-coils 'Write coils (function 15)'
             cand write-register 'Write one holding register (function 06)'
             cand write-registers 'Write holding registers (function 16)'
-            cand write 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+            cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand raw 'Send any PDU and decode the answer'
-            cand sniff 'Watch a bus without ever transmitting: every frame as it passes, decoded and paired'
-            cand serve 'Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs'
-            cand decode 'Decode Modbus frames given as arguments, or one per line on standard input'
-            cand encode 'Print the frame that a request command would send, without sending it'
+            cand sniff 'Watch a bus without transmitting; frames decoded, paired'
+            cand serve 'Stand in for a slave on a serial line or TCP'
+            cand decode 'Decode frames given as arguments or on standard input'
+            cand encode 'Print the frame a request command would send'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'mbtool;generate'= {
             cand --dir 'The folder that receives completions/ and man/'
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -99,8 +99,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;read-coils'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -129,8 +129,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;read-inputs'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -159,8 +159,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;read-discrete-inputs'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -189,8 +189,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;read-holding'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -219,8 +219,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;read-holding-registers'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -249,8 +249,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;read-input-registers'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -279,8 +279,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;read-input-regs'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -309,8 +309,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;read'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -339,8 +339,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;write-coil'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -369,8 +369,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;write-coils'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -399,8 +399,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;write-register'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -429,8 +429,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;write-registers'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -460,8 +460,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         }
         &'mbtool;write'= {
             cand --function 'Force the function: 5 or 15 for coils, 6 or 16 for registers'
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -490,8 +490,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;raw'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -525,8 +525,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --pcap 'Also write the frames to a pcap file for Wireshark (link type 147, see above)'
             cand --slave 'Show only the frames of this slave; repeatable'
             cand --function 'Show only the frames of this function code (3, 0x10); repeatable'
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -566,8 +566,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --seed 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run'
             cand --vendor 'Device identification: vendor name'
             cand --product-code 'Device identification: product code'
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -600,8 +600,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         }
         &'mbtool;decode'= {
             cand --direction 'Read every frame as a request or as a response instead of inferring it'
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -630,8 +630,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -665,18 +665,18 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand read-holding-registers 'Read holding registers (function 03)'
             cand read-input-registers 'Read input registers (function 04)'
             cand read-input-regs 'Read input registers (function 04)'
-            cand read 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+            cand read 'Read by reference: its first digit picks the table'
             cand write-coil 'Write one coil (function 05)'
             cand write-coils 'Write coils (function 15)'
             cand write-register 'Write one holding register (function 06)'
             cand write-registers 'Write holding registers (function 16)'
-            cand write 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+            cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand raw 'Send any PDU and decode the answer'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'mbtool;encode;read-coils'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -705,8 +705,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;read-inputs'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -735,8 +735,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;read-discrete-inputs'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -765,8 +765,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;read-holding'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -795,8 +795,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;read-holding-registers'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -825,8 +825,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;read-input-registers'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -855,8 +855,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;read-input-regs'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -885,8 +885,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;read'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -915,8 +915,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;write-coil'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -945,8 +945,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;write-coils'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -975,8 +975,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;write-register'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -1005,8 +1005,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;write-registers'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -1036,8 +1036,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         }
         &'mbtool;encode;write'= {
             cand --function 'Force the function: 5 or 15 for coils, 6 or 16 for registers'
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -1066,8 +1066,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;raw'= {
-            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
-            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
             cand -b 'Serial speed'
@@ -1100,12 +1100,12 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand read-inputs 'Read discrete inputs (function 02)'
             cand read-holding 'Read holding registers (function 03)'
             cand read-input-registers 'Read input registers (function 04)'
-            cand read 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+            cand read 'Read by reference: its first digit picks the table'
             cand write-coil 'Write one coil (function 05)'
             cand write-coils 'Write coils (function 15)'
             cand write-register 'Write one holding register (function 06)'
             cand write-registers 'Write holding registers (function 16)'
-            cand write 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+            cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand raw 'Send any PDU and decode the answer'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
@@ -1139,17 +1139,17 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand read-inputs 'Read discrete inputs (function 02)'
             cand read-holding 'Read holding registers (function 03)'
             cand read-input-registers 'Read input registers (function 04)'
-            cand read 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+            cand read 'Read by reference: its first digit picks the table'
             cand write-coil 'Write one coil (function 05)'
             cand write-coils 'Write coils (function 15)'
             cand write-register 'Write one holding register (function 06)'
             cand write-registers 'Write holding registers (function 16)'
-            cand write 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+            cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand raw 'Send any PDU and decode the answer'
-            cand sniff 'Watch a bus without ever transmitting: every frame as it passes, decoded and paired'
-            cand serve 'Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs'
-            cand decode 'Decode Modbus frames given as arguments, or one per line on standard input'
-            cand encode 'Print the frame that a request command would send, without sending it'
+            cand sniff 'Watch a bus without transmitting; frames decoded, paired'
+            cand serve 'Stand in for a slave on a serial line or TCP'
+            cand decode 'Decode frames given as arguments or on standard input'
+            cand encode 'Print the frame a request command would send'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'mbtool;help;generate'= {
@@ -1187,12 +1187,12 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand read-inputs 'Read discrete inputs (function 02)'
             cand read-holding 'Read holding registers (function 03)'
             cand read-input-registers 'Read input registers (function 04)'
-            cand read 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+            cand read 'Read by reference: its first digit picks the table'
             cand write-coil 'Write one coil (function 05)'
             cand write-coils 'Write coils (function 15)'
             cand write-register 'Write one holding register (function 06)'
             cand write-registers 'Write holding registers (function 16)'
-            cand write 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+            cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand raw 'Send any PDU and decode the answer'
         }
         &'mbtool;help;encode;read-coils'= {

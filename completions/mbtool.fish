@@ -24,7 +24,7 @@ function __fish_mbtool_using_subcommand
     contains -- $cmd[1] $argv
 end
 
-complete -c mbtool -n "__fish_mbtool_needs_command" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -72,20 +72,20 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-holding" -d 'Rea
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-holding-registers" -d 'Read holding registers (function 03)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-input-registers" -d 'Read input registers (function 04)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-input-regs" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read" -d 'Read by reference: its first digit picks the table'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-coil" -d 'Write one coil (function 05)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-coils" -d 'Write coils (function 15)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-register" -d 'Write one holding register (function 06)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "raw" -d 'Send any PDU and decode the answer'
-complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "sniff" -d 'Watch a bus without ever transmitting: every frame as it passes, decoded and paired'
-complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "serve" -d 'Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs'
-complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "decode" -d 'Decode Modbus frames given as arguments, or one per line on standard input'
-complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "encode" -d 'Print the frame that a request command would send, without sending it'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "encode" -d 'Print the frame a request command would send'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l dir -d 'The folder that receives completions/ and man/' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -125,7 +125,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s v -l verbose 
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -165,7 +165,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s v -l verbos
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -205,7 +205,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s v -l verbo
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -245,7 +245,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s v
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -285,7 +285,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s v -l verb
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -325,7 +325,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -365,7 +365,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s v
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -405,7 +405,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s v -l v
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -445,7 +445,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s v -l verbose -d '
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -485,7 +485,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s v -l verbos
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -525,7 +525,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s v -l verbo
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -565,7 +565,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s v -l ve
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -609,7 +609,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l function -d 'For
 6\t''
 15\t''
 16\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -649,7 +649,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s v -l verbose -d 
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -694,7 +694,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep ev
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pcap -d 'Also write the frames to a pcap file for Wireshark (link type 147, see above)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l slave -d 'Show only the frames of this slave; repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l function -d 'Show only the frames of this function code (3, 0x10); repeatable' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -745,7 +745,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l exception -d 'An
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l seed -d 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l vendor -d 'Device identification: vendor name' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l product-code -d 'Device identification: product code' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -789,7 +789,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s h -l help -d 'Pr
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l direction -d 'Read every frame as a request or as a response instead of inferring it' -r -f -a "request\t''
 response\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -829,7 +829,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s v -l verbose -d
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -876,15 +876,15 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_see
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-holding-registers" -d 'Read holding registers (function 03)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-input-regs" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read" -d 'Read by reference: its first digit picks the table'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-coil" -d 'Write one coil (function 05)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-coils" -d 'Write coils (function 15)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-register" -d 'Write one holding register (function 06)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "raw" -d 'Send any PDU and decode the answer'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -924,7 +924,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -964,7 +964,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1004,7 +1004,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1044,7 +1044,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1084,7 +1084,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1124,7 +1124,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1164,7 +1164,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1204,7 +1204,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1244,7 +1244,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1284,7 +1284,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1324,7 +1324,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1368,7 +1368,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 6\t''
 15\t''
 16\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1408,7 +1408,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1452,12 +1452,12 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-holding" -d 'Read holding registers (function 03)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read" -d 'Read by reference: its first digit picks the table'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write-coil" -d 'Write one coil (function 05)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write-coils" -d 'Write coils (function 15)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write-register" -d 'Write one holding register (function 06)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "raw" -d 'Send any PDU and decode the answer'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
@@ -1465,26 +1465,26 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read-holding" -d 'Read holding registers (function 03)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read" -d 'Read by reference: its first digit picks the table'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-coil" -d 'Write one coil (function 05)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-coils" -d 'Write coils (function 15)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-register" -d 'Write one holding register (function 06)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "raw" -d 'Send any PDU and decode the answer'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "sniff" -d 'Watch a bus without ever transmitting: every frame as it passes, decoded and paired'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "serve" -d 'Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "decode" -d 'Decode Modbus frames given as arguments, or one per line on standard input'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "encode" -d 'Print the frame that a request command would send, without sending it'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "encode" -d 'Print the frame a request command would send'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-coils" -d 'Read coils (function 01)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-holding" -d 'Read holding registers (function 03)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-input-registers" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read" -d 'Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read" -d 'Read by reference: its first digit picks the table'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-coil" -d 'Write one coil (function 05)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-coils" -d 'Write coils (function 15)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-register" -d 'Write one holding register (function 06)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write" -d 'Write by Modicon reference: 05/06 for one value, 15/16 for several'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "raw" -d 'Send any PDU and decode the answer'

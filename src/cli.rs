@@ -50,8 +50,8 @@ pub struct Cli {
 #[derive(Clone, Debug, Args)]
 #[command(next_help_heading = "Connection")]
 pub struct ConnectionArgs {
-    /// Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT],
-    /// rtu+tcp://HOST:PORT, or sim
+    /// Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare
+    /// 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim
     #[arg(short, long, global = true, env = "MBTOOL_PORT", value_name = "PORT")]
     pub port: Option<String>,
 
@@ -66,7 +66,8 @@ pub struct ConnectionArgs {
         long,
         global = true,
         env = "MBTOOL_BAUD",
-        default_value_t = 19200
+        default_value_t = 19200,
+        value_parser = whole::<u32>(50, 12_000_000)
     )]
     pub baud: u32,
 
@@ -75,19 +76,19 @@ pub struct ConnectionArgs {
     pub parity: Parity,
 
     /// Serial data bits [default: 8, 7 in ASCII mode]
-    #[arg(long, global = true, env = "MBTOOL_DATA_BITS", value_parser = clap::value_parser!(u8).range(7..=8))]
+    #[arg(long, global = true, env = "MBTOOL_DATA_BITS", value_parser = whole::<u8>(7, 8))]
     pub data_bits: Option<u8>,
 
     /// Serial stop bits [default: 1 with parity, 2 without]
-    #[arg(long, global = true, env = "MBTOOL_STOP_BITS", value_parser = clap::value_parser!(u8).range(1..=2))]
+    #[arg(long, global = true, env = "MBTOOL_STOP_BITS", value_parser = whole::<u8>(1, 2))]
     pub stop_bits: Option<u8>,
 
     /// Response timeout for a whole answer: 500ms, 1s, 2.5s
-    #[arg(long, global = true, env = "MBTOOL_TIMEOUT", default_value = "1s", value_parser = mbtool_core::model::duration::parse_duration)]
+    #[arg(long, global = true, env = "MBTOOL_TIMEOUT", default_value = "1s", value_parser = positive_duration)]
     pub timeout: std::time::Duration,
 
     /// Retries after a timeout or a bad answer (never after an exception)
-    #[arg(long, global = true, env = "MBTOOL_RETRIES", default_value_t = 0)]
+    #[arg(long, global = true, env = "MBTOOL_RETRIES", default_value_t = 0, value_name = "N", allow_negative_numbers = true, value_parser = whole::<u32>(0, 100))]
     pub retries: u32,
 
     /// Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200
@@ -168,7 +169,7 @@ pub struct DataArgs {
 
     /// Split reads and writes into requests of at most N coils or registers, for devices
     /// that take fewer than the protocol allows
-    #[arg(long, global = true, value_name = "N", value_parser = clap::value_parser!(u16).range(1..))]
+    #[arg(long, global = true, value_name = "N", value_parser = whole::<u16>(1, 2000))]
     pub max_per_request: Option<u16>,
 }
 
@@ -186,7 +187,8 @@ pub struct PollArgs {
         id = "poll_count",
         global = true,
         value_name = "N",
-        requires = "poll"
+        requires = "poll",
+        value_parser = whole::<u64>(1, i128::from(u64::MAX))
     )]
     pub count: Option<u64>,
 }
@@ -196,22 +198,22 @@ pub enum Command {
     #[command(flatten)]
     Request(RequestCommand),
 
-    /// Decode Modbus frames given as arguments, or one per line on standard input
+    /// Decode frames given as arguments or on standard input
     #[command(long_about = DECODE_ABOUT)]
     Decode(DecodeArgs),
 
-    /// Print the frame that a request command would send, without sending it
+    /// Print the frame a request command would send
     #[command(long_about = ENCODE_ABOUT)]
     Encode {
         #[command(subcommand)]
         request: RequestCommand,
     },
 
-    /// Watch a bus without ever transmitting: every frame as it passes, decoded and paired
+    /// Watch a bus without transmitting; frames decoded, paired
     #[command(long_about = SNIFF_ABOUT)]
     Sniff(SniffArgs),
 
-    /// Answer as a simulated slave on a serial line or TCP, for testing masters and HMIs
+    /// Stand in for a slave on a serial line or TCP
     #[command(long_about = SERVE_ABOUT)]
     Serve(ServeArgs),
 
@@ -311,7 +313,7 @@ pub enum RequestCommand {
     /// Read input registers (function 04)
     #[command(visible_alias = "read-input-regs")]
     ReadInputRegisters(ReadArgs),
-    /// Read by Modicon reference; the first digit picks the table (0, 1, 3, 4)
+    /// Read by reference: its first digit picks the table
     Read(ReadArgs),
     /// Write one coil (function 05)
     WriteCoil(WriteCoilArgs),
@@ -321,7 +323,7 @@ pub enum RequestCommand {
     WriteRegister(WriteRegisterArgs),
     /// Write holding registers (function 16)
     WriteRegisters(WriteArgs),
-    /// Write by Modicon reference: 05/06 for one value, 15/16 for several
+    /// Write by reference: 05/06 for one value, 15/16 for more
     Write(WriteByReferenceArgs),
     /// Send any PDU and decode the answer
     Raw(RawArgs),
@@ -443,7 +445,7 @@ pub struct RawArgs {
     /// Slave address: 1-247, or 0 to broadcast
     pub slave: String,
     /// The PDU in hex, function code first (03 00 6B 00 03)
-    #[arg(required = true, num_args = 1..)]
+    #[arg(required = true, num_args = 1.., value_name = "PDU_HEX")]
     pub pdu: Vec<String>,
 }
 
@@ -561,6 +563,29 @@ pub struct GenerateArgs {
     /// The folder that receives completions/ and man/
     #[arg(long, default_value = ".")]
     pub dir: std::path::PathBuf,
+}
+
+/// The parser of a whole number option: any spelling users type (19200, 0x4B00), in
+/// `min..=max`, the range said when it is not.
+fn whole<T>(min: i128, max: i128) -> impl Fn(&str) -> Result<T, String> + Clone + Send + Sync
+where
+    T: TryFrom<i128>,
+{
+    move |text| {
+        mbtool_core::model::number::parse_int(text)
+            .ok()
+            .filter(|value| (min..=max).contains(value))
+            .and_then(|value| T::try_from(value).ok())
+            .ok_or_else(|| format!("give a whole number from {min} to {max}"))
+    }
+}
+
+/// A duration that must not be zero: a timeout of 0 would give up before a byte could come.
+fn positive_duration(text: &str) -> Result<std::time::Duration, String> {
+    match mbtool_core::model::duration::parse_duration(text)? {
+        std::time::Duration::ZERO => Err("give a timeout above zero, as 500ms or 1s".into()),
+        duration => Ok(duration),
+    }
 }
 
 /// The parser of a setting the core offers by name: its names, each with its help, are

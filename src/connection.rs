@@ -129,7 +129,11 @@ pub fn tried(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> (String, &'static st
             format!("through {endpoint} ({mode})"),
             "check the slave id, and the gateway's serial settings and wiring to the device",
         ),
-        Endpoint::Tcp { .. } | Endpoint::Sim => (
+        Endpoint::Sim => (
+            "from the built-in slave (sim)".into(),
+            "it answers as slave 17 only",
+        ),
+        Endpoint::Tcp { .. } => (
             format!("from {endpoint}"),
             "check the unit id (a gateway passes it on as the slave id) and that the device \
              behind it answers",

@@ -241,6 +241,33 @@ pub fn command() -> clap::Command {
     command
 }
 
+/// What `mbtool` alone prints: the usage line, the commands, and where to go next, as
+/// `git` does.
+pub fn short_usage(command: &clap::Command) -> String {
+    let commands: Vec<(&str, String)> = command
+        .get_subcommands()
+        .filter(|sub| !sub.is_hide_set() && sub.get_name() != "help")
+        .map(|sub| {
+            let about = sub.get_about().map(ToString::to_string).unwrap_or_default();
+            (sub.get_name(), about)
+        })
+        .collect();
+    let width = commands
+        .iter()
+        .map(|(name, _)| name.len())
+        .max()
+        .unwrap_or(0);
+    let mut text = String::from("Usage: mbtool [OPTIONS] <COMMAND> [ARGS]\n\nCommands:\n");
+    for (name, about) in &commands {
+        text.push_str(&format!("  {name:width$}  {about}\n"));
+    }
+    text.push_str(
+        "\nTry it without hardware: mbtool --port sim read-holding 17 400108 3\n\
+         'mbtool --help' lists the options; 'mbtool <COMMAND> --help' explains a command.",
+    );
+    text
+}
+
 /// Escapes text for roff: hyphens stay hyphens, backslashes stay backslashes, and a line
 /// may not start with a control character.
 fn roff_text(text: &str) -> String {

@@ -6,7 +6,7 @@ mod cmd;
 use std::io;
 use std::process::ExitCode;
 
-use clap::error::ErrorKind;
+use clap::error::{ContextKind, ContextValue, ErrorKind};
 use clap::FromArgMatches;
 
 use mbtool::cli::Cli;
@@ -22,29 +22,130 @@ fn main() -> ExitCode {
     }
 }
 
-/// Parses the command line. Help and version are printed as clap renders them; every
-/// usage error becomes one `mbtool: ` line with exit status 2.
+/// Parses the command line. Help and version are printed as clap renders them; `mbtool`
+/// alone prints a short usage with the commands; every other usage error becomes one
+/// `mbtool: ` line. Both end with exit status 2.
 fn parse() -> Result<Cli, ExitCode> {
-    let matches = mbtool::docs::command().try_get_matches();
+    let mut command = mbtool::docs::command();
+    let matches = command.try_get_matches_from_mut(std::env::args_os());
     let result = matches.and_then(|m| Cli::from_arg_matches(&m));
     result.map_err(|error| match error.kind() {
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
             let _ = error.print();
             ExitCode::SUCCESS
         }
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
+            mbtool::note!("{}", mbtool::docs::short_usage(&command));
+            ExitCode::from(2)
+        }
         _ => {
-            eprintln!("mbtool: {}", one_line_usage_error(&error.to_string()));
+            mbtool::note!("mbtool: {}", usage_error(&error, &command));
             ExitCode::from(2)
         }
     })
 }
 
-/// clap's message, its tips and a pointer to --help, on one line.
-fn one_line_usage_error(rendered: &str) -> String {
+/// A usage error on one line: what is wrong, clap's tips and the values allowed, and where
+/// to read more.
+fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
+    let rendered = error.to_string();
+    // The command the error is about, as its usage line names it: `mbtool encode raw`.
+    let path: Vec<&str> = rendered
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("Usage: "))
+        .map(|usage| {
+            usage
+                .split_whitespace()
+                .take_while(|word| !word.starts_with(['[', '<', '-']))
+                .collect()
+        })
+        .unwrap_or_default();
+    let subcommand = path
+        .get(1..)
+        .map(|words| words.join(" "))
+        .unwrap_or_default();
+    let mut message = match error.kind() {
+        ErrorKind::MissingRequiredArgument => missing(error, &subcommand),
+        ErrorKind::InvalidSubcommand => unknown_command(error, command, &path),
+        _ => first_line(&rendered, error, command),
+    };
+    let see = if path.len() > 1 {
+        path.join(" ")
+    } else {
+        "mbtool".into()
+    };
+    message.push_str(&format!(" (see '{see} --help')"));
+    message
+}
+
+/// `read-holding needs ADDRESS`; `--count` without `--poll` says what each count means.
+fn missing(error: &clap::Error, subcommand: &str) -> String {
+    let names: Vec<String> = match error.get(ContextKind::InvalidArg) {
+        Some(ContextValue::Strings(args)) => args
+            .iter()
+            .map(|arg| {
+                arg.trim_end_matches("...")
+                    .trim_matches(['<', '>'])
+                    .to_string()
+            })
+            .collect(),
+        _ => Vec::new(),
+    };
+    if names.iter().any(|name| name.starts_with("--poll")) {
+        return "--count N stops a --poll after N reads: give --poll INTERVAL too, or, for N \
+                values, give COUNT after the address (read-holding 17 400108 3)"
+            .into();
+    }
+    let who = if subcommand.is_empty() {
+        "mbtool"
+    } else {
+        subcommand
+    };
+    match names.split_last() {
+        Some((last, [])) => format!("{who} needs {last}"),
+        Some((last, rest)) => format!("{who} needs {} and {last}", rest.join(", ")),
+        None => format!("{who} needs more arguments"),
+    }
+}
+
+/// An unknown command, and the one nearest to it, by name only: aliases and hidden
+/// commands are not offered.
+fn unknown_command(error: &clap::Error, command: &clap::Command, path: &[&str]) -> String {
+    let Some(ContextValue::String(typed)) = error.get(ContextKind::InvalidSubcommand) else {
+        return "unknown command".into();
+    };
+    // The commands offered where the unknown one stood: under `encode`, its request commands.
+    let parent = path
+        .iter()
+        .skip(1)
+        .try_fold(command, |parent, name| parent.find_subcommand(name));
+    let nearest = parent.and_then(|parent| {
+        parent
+            .get_subcommands()
+            .filter(|sub| !sub.is_hide_set() && sub.get_name() != "help")
+            .map(|sub| (strsim::jaro_winkler(typed, sub.get_name()), sub.get_name()))
+            .filter(|(likeness, _)| *likeness > 0.8)
+            .max_by(|a, b| a.0.total_cmp(&b.0))
+    });
+    match nearest {
+        Some((_, name)) => format!("unknown command '{typed}': did you mean '{name}'?"),
+        None => format!("unknown command '{typed}'"),
+    }
+}
+
+/// clap's first line, its tips and the values allowed; a bad value that came from the
+/// environment names its variable, not the option.
+fn first_line(rendered: &str, error: &clap::Error, command: &clap::Command) -> String {
     let mut lines = rendered.lines().map(str::trim).filter(|l| !l.is_empty());
     let first = lines.next().unwrap_or("bad command line");
     let mut message = first.strip_prefix("error: ").unwrap_or(first).to_string();
-    // What clap says after its first line that helps: tips, and the values allowed.
+    if let Some((variable, option)) = from_environment(error, command) {
+        let flag = option.split_whitespace().next().unwrap_or(&option);
+        message = message.replace(
+            &format!("for '{option}'"),
+            &format!("in {variable} (which sets {flag})"),
+        );
+    }
     for line in lines {
         let help = line
             .strip_prefix("tip: ")
@@ -54,24 +155,28 @@ fn one_line_usage_error(rendered: &str) -> String {
             message.push_str(help);
         }
     }
-    let usage = rendered
-        .lines()
-        .find_map(|l| l.trim().strip_prefix("Usage: "))
-        .and_then(|u| u.split(" [").next().map(str::to_string));
-    match usage {
-        Some(command) if command.starts_with("mbtool ") => {
-            message.push_str(&format!(
-                " (see '{} --help')",
-                command
-                    .split_whitespace()
-                    .take(2)
-                    .collect::<Vec<_>>()
-                    .join(" ")
-            ));
-        }
-        _ => message.push_str(" (see 'mbtool --help')"),
-    }
     message
+}
+
+/// The environment variable a bad value came from, with the option as clap named it
+/// (`--baud <BAUD>`): the option has one, it is set, and the command line does not give
+/// the option itself.
+fn from_environment(error: &clap::Error, command: &clap::Command) -> Option<(String, String)> {
+    let Some(ContextValue::String(option)) = error.get(ContextKind::InvalidArg) else {
+        return None;
+    };
+    let long = option.split_whitespace().next()?.strip_prefix("--")?;
+    let arg = command
+        .get_arguments()
+        .find(|arg| arg.get_long() == Some(long))?;
+    let variable = arg.get_env()?.to_string_lossy().into_owned();
+    std::env::var_os(&variable)?;
+    let flag = format!("--{long}");
+    let given = std::env::args().any(|word| word == flag || word.starts_with(&format!("{flag}=")))
+        || arg.get_short().is_some_and(|short| {
+            std::env::args().any(|word| word.starts_with(&format!("-{short}")))
+        });
+    (!given).then(|| (variable, option.clone()))
 }
 
 fn fail(error: &anyhow::Error) -> ExitCode {
@@ -93,6 +198,6 @@ fn fail(error: &anyhow::Error) -> ExitCode {
         .collect::<Vec<_>>()
         .join(": ")
         .replace('\n', " ");
-    eprintln!("mbtool: {message}");
+    mbtool::note!("mbtool: {message}");
     ExitCode::from(code)
 }

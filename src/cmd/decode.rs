@@ -34,7 +34,7 @@ impl Decoder {
         self.bytes.clear();
         if let Err(error) = frame_bytes(text, &mut self.bytes) {
             self.unreadable += 1;
-            eprintln!("mbtool: {}: {error}", place());
+            mbtool::note!("mbtool: {}: {error}", place());
             return Ok(());
         }
         let report = describe_frame(&self.bytes, self.mode, self.direction);
@@ -45,7 +45,7 @@ impl Decoder {
 
     fn too_long(&mut self, place: String) {
         self.unreadable += 1;
-        eprintln!(
+        mbtool::note!(
             "mbtool: {place}: longer than {MAX_LINE} characters, which no Modbus frame is: give one frame per line"
         );
     }
@@ -94,9 +94,10 @@ pub fn run(cli: &Cli, args: &DecodeArgs) -> Result<u8> {
     }
     decoder.out.flush()?;
     if decoder.failed > 0 {
-        eprintln!(
+        mbtool::note!(
             "mbtool: {} of {} frames failed their check",
-            decoder.failed, decoder.frames
+            decoder.failed,
+            decoder.frames
         );
     }
     Ok(if decoder.unreadable > 0 {

@@ -61,7 +61,7 @@ fn tracer(mode: Mode) -> mbtool_core::master::Tracer {
             Mode::Ascii if bytes.is_ascii() => frame_text(mode, bytes).replace(['\r', '\n'], ""),
             _ => frame_text(Mode::Rtu, bytes),
         };
-        eprintln!("[{:>12.6}] {arrow} {text}", start.elapsed().as_secs_f64());
+        mbtool::note!("[{:>12.6}] {arrow} {text}", start.elapsed().as_secs_f64());
     })
 }
 
@@ -100,7 +100,7 @@ fn reads(
                 last_status = 0;
             }
             Err(error) => {
-                eprintln!("mbtool: {error}");
+                mbtool::note!("mbtool: {error}");
                 last_status = Error::from(error).exit_code();
             }
         }
@@ -114,7 +114,7 @@ fn reads(
             _ => break,
         }
     }
-    eprintln!("mbtool: {}", stats.summary());
+    mbtool::note!("mbtool: {}", stats.summary());
     Ok(last_status)
 }
 
@@ -136,7 +136,11 @@ fn writes(cli: &Cli, master: &mut Master, plan: &Plan, out: &mut Box<dyn Write>)
         function: first.function(),
         address,
         reference: reference(table, address),
-        count,
+        // Values as the user typed them: one f32 is two registers.
+        count: match table {
+            Table::HoldingRegisters => count / cli.data.value_type.width(),
+            _ => count,
+        },
         broadcast: plan.slave == 0,
     };
     write_done(out, cli.output.format(), &done)?;

@@ -101,7 +101,7 @@ pub fn run(cli: &Cli, args: &ServeArgs) -> Result<u8> {
         Endpoint::Serial(path) => {
             let line = line_settings(cli, mode);
             let mut transport = Serial::open(path, &line).map_err(Error::Io)?;
-            eprintln!(
+            mbtool::note!(
                 "mbtool: serving slave {ids_text} on {path} ({mode}, {} baud); Ctrl-C ends",
                 line.baud
             );
@@ -119,8 +119,8 @@ pub fn run(cli: &Cli, args: &ServeArgs) -> Result<u8> {
             let listener = TcpListener::bind((host.as_str(), *port))
                 .with_context(|| format!("cannot listen on {endpoint}"))?;
             let address = listener.local_addr()?;
-            eprintln!("mbtool: serving slave {ids_text} on {address} ({mode}); Ctrl-C ends");
-            server.serve_tcp(listener, Arc::new(|error| eprintln!("mbtool: {error}")))?;
+            mbtool::note!("mbtool: serving slave {ids_text} on {address} ({mode}); Ctrl-C ends");
+            server.serve_tcp(listener, Arc::new(|error| mbtool::note!("mbtool: {error}")))?;
             Ok(0)
         }
         Endpoint::Sim => Ok(0),

@@ -294,7 +294,7 @@ fn live(
     };
     if args.low_latency {
         if let Err(message) = serial::set_low_latency(&path) {
-            eprintln!("mbtool: {message}");
+            mbtool::note!("mbtool: {message}");
         }
     }
     // Opened like any serial port, but nothing is ever written to it.
@@ -303,7 +303,7 @@ fn live(
     let stopper = Arc::clone(&stop);
     ctrlc::set_handler(move || stopper.store(true, Ordering::SeqCst))
         .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
-    eprintln!(
+    mbtool::note!(
         "mbtool: listening on {path} ({mode}, {} baud); Ctrl-C ends with a summary",
         line.baud
     );
@@ -329,7 +329,7 @@ fn live(
         sinks.write(&mut records)?;
         if session.bursty && !warned {
             warned = true;
-            eprintln!(
+            mbtool::note!(
                 "mbtool: bytes arrive in bursts, so gaps between frames are not real (frames are still split by content); set the adapter's latency timer: echo 1 | sudo tee /sys/bus/usb-serial/devices/*/latency_timer, or use --low-latency"
             );
         }

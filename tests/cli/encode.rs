@@ -98,7 +98,10 @@ fn counts_past_the_protocol_limit_are_split() {
 
 #[test]
 fn bad_counts_and_ranges_are_refused() {
-    refused("encode read-holding 17 465536 2", "past the last address, 65535");
+    refused(
+        "encode read-holding 17 465536 2",
+        "past the last address, 65535",
+    );
     refused("encode read-holding 17 400001 0", "COUNT");
     refused(
         "encode read-holding 17 400010-400001",
@@ -202,7 +205,7 @@ fn raw_sends_the_pdu_as_given_even_when_malformed() {
 
 #[test]
 fn usage_errors_are_one_line() {
-    refused("encode read-holding", "required");
+    refused("encode read-holding", "encode read-holding needs SLAVE and ADDRESS");
     refused("bogus", "unrecognized subcommand");
     refused("decode --output nope", "invalid value");
     refused(

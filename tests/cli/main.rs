@@ -1,12 +1,14 @@
 //! mbtool as its users and the peers it talks to meet it, in one test binary: each module
 //! one part of the tool, all sharing `support`.
 #![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
+#![allow(clippy::print_stderr)] // a skipped test says why
 
 mod support;
 
 mod decode;
 mod docs;
 mod encode;
+mod first_contact;
 mod golden;
 mod master_faults;
 mod master_pymodbus;

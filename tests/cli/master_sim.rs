@@ -53,7 +53,7 @@ fn writes_are_confirmed() {
         ),
         (
             "write 17 400001 3.14 --type f32",
-            "wrote 2 values from 400001",
+            "wrote 1 value from 400001",
         ),
     ] {
         let (code, out) = run(args);

@@ -331,7 +331,8 @@ pub(crate) fn opaque_request(
     }
     match envelope.pdu.split_first() {
         Some((&function, data))
-            if any_function || (function != 0 && function & super::function::EXCEPTION_FLAG == 0) =>
+            if any_function
+                || (function != 0 && function & super::function::EXCEPTION_FLAG == 0) =>
         {
             Ok(Frame {
                 mode,

@@ -92,7 +92,8 @@ impl Server {
     /// the one answer path of `serve` and of the sim port.
     pub fn answer(&self, found: &Found, peer: &str, rng: &mut fastrand::Rng) -> Option<Vec<u8>> {
         // Over TCP everything a server receives is a request, however it reads.
-        let answer_on_the_line = self.mode != Mode::Tcp && found.direction == Some(Direction::Response);
+        let answer_on_the_line =
+            self.mode != Mode::Tcp && found.direction == Some(Direction::Response);
         if found.broken.is_some() || answer_on_the_line {
             return None;
         }

@@ -1,0 +1,237 @@
+//! What a new user meets first: `mbtool` alone, usage errors, messages that say what to do,
+//! values refused for their type, and a closed pipe.
+
+use std::process::Stdio;
+
+use crate::support::{free_port, mbtool, serve, wait_for_listener};
+
+/// Runs mbtool; (exit status, stdout, stderr).
+fn run(args: &str) -> (i32, String, String) {
+    let output = mbtool()
+        .args(args.split_whitespace())
+        .output()
+        .expect("mbtool runs");
+    (
+        output.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&output.stdout).into_owned(),
+        String::from_utf8_lossy(&output.stderr).into_owned(),
+    )
+}
+
+/// A usage error: exit status 2, nothing on stdout, and exactly `message` as the one line.
+fn refused_with(args: &str, message: &str) {
+    let (code, stdout, stderr) = run(args);
+    assert_eq!(code, 2, "{args}: {stderr}");
+    assert_eq!(stdout, "", "{args}");
+    assert_eq!(stderr, format!("mbtool: {message}\n"), "{args}");
+}
+
+#[test]
+fn mbtool_alone_prints_a_short_usage_and_the_commands() {
+    let (code, stdout, stderr) = run("");
+    assert_eq!(code, 2);
+    assert_eq!(stdout, "");
+    assert!(stderr.starts_with("Usage: mbtool [OPTIONS] <COMMAND> [ARGS]\n\nCommands:\n"));
+    assert!(stderr.contains("\n  read-holding "), "{stderr}");
+    assert!(stderr.contains("mbtool --port sim read-holding 17 400108 3"));
+    // Neither the hidden command nor the aliases are offered.
+    for hidden in ["generate", "read-holding-registers", "read-input-regs"] {
+        assert!(!stderr.contains(hidden), "{hidden} listed:\n{stderr}");
+    }
+    assert!(
+        stderr.lines().all(|line| line.chars().count() <= 80),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn a_missing_argument_is_named() {
+    refused_with(
+        "read-holding 17",
+        "read-holding needs ADDRESS (see 'mbtool read-holding --help')",
+    );
+    refused_with("raw 17", "raw needs PDU_HEX (see 'mbtool raw --help')");
+    refused_with(
+        "encode raw 17",
+        "encode raw needs PDU_HEX (see 'mbtool encode raw --help')",
+    );
+    let (code, _, stderr) = run("--port sim read 17 400108 --count 3");
+    assert_eq!(code, 2);
+    assert!(
+        stderr.starts_with("mbtool: --count N stops a --poll after N reads"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn a_mistyped_command_suggests_the_nearest_one() {
+    refused_with(
+        "read-holdin 17 1",
+        "unknown command 'read-holdin': did you mean 'read-holding'? (see 'mbtool --help')",
+    );
+    refused_with(
+        "frobnicate",
+        "unknown command 'frobnicate' (see 'mbtool --help')",
+    );
+}
+
+#[test]
+fn a_reference_of_the_wrong_table_names_the_command_that_fits() {
+    refused_with(
+        "--port sim write-coil 17 400001 on",
+        "400001 is a holding register reference: use write-register",
+    );
+    refused_with(
+        "--port sim write-registers 17 000001 1 2",
+        "000001 is a coil reference: use write-coils, or give --pdu-addresses to mean \
+         protocol address 000001",
+    );
+    refused_with(
+        "--port sim write-register 17 300009 5",
+        "300009 is an input register reference, and that table is read-only: write to coils \
+         (0xxxxx) or holding registers (4xxxxx)",
+    );
+    refused_with(
+        "--port sim read-holding 17 40000",
+        "40000 is not a valid reference: references count from 1 (400001 is the first), or \
+         give --pdu-addresses to mean protocol address 40000",
+    );
+    refused_with(
+        "--port sim read-holding 17 65535 2",
+        "65535 with 2 items goes past the last address, 65535",
+    );
+}
+
+#[test]
+fn a_value_outside_its_type_is_refused_and_nothing_is_written() {
+    refused_with(
+        "--port sim write 17 400001 1e39 --type f32",
+        "1e39 does not fit in f32: give at most ±3.4028235e38 in size (or --type f64)",
+    );
+    refused_with(
+        "--port sim write-register 17 400200 40000 --type i16",
+        "40000 does not fit in i16: give -32768 to 32767 (or an unsigned --type for 0 to 65535)",
+    );
+    refused_with(
+        "--port sim write-registers 17 400001 3.7",
+        "'3.7' is not a whole number, which u16 takes: give --type f32 or f64 for it",
+    );
+}
+
+#[test]
+fn one_f32_written_is_one_value() {
+    let (code, stdout, _) = run("--port sim write 17 400001 1.5 --type f32");
+    assert_eq!(code, 0);
+    assert_eq!(
+        stdout,
+        "wrote 1 value from 400001 (slave 17, function 16 Write Multiple Registers)\n"
+    );
+}
+
+#[test]
+fn options_out_of_range_say_the_range_and_whose_value_it_was() {
+    refused_with(
+        "--port sim -b 0 read-holding 17 1",
+        "invalid value '0' for '--baud <BAUD>': give a whole number from 50 to 12000000 (see \
+         'mbtool --help')",
+    );
+    refused_with(
+        "--port sim read-holding 17 1 --timeout 0",
+        "invalid value '0' for '--timeout <TIMEOUT>': give a timeout above zero, as 500ms or \
+         1s (see 'mbtool --help')",
+    );
+    refused_with(
+        "--port sim --retries -1 read-holding 17 1",
+        "invalid value '-1' for '--retries <N>': give a whole number from 0 to 100 (see \
+         'mbtool --help')",
+    );
+    let output = mbtool()
+        .env("MBTOOL_BAUD", "fast")
+        .args(["--port", "sim", "read-holding", "17", "1"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&output.stderr),
+        "mbtool: invalid value 'fast' in MBTOOL_BAUD (which sets --baud): give a whole number \
+         from 50 to 12000000 (see 'mbtool --help')\n"
+    );
+}
+
+#[test]
+fn a_timeout_says_what_was_tried_and_exits_3_for_raw_too() {
+    let (code, _, stderr) = run("--port sim --timeout 50ms read-holding 5 1");
+    assert_eq!(code, 3);
+    assert_eq!(
+        stderr,
+        "mbtool: no answer from slave 5 within 50.00 ms from the built-in slave (sim): it \
+         answers as slave 17 only\n"
+    );
+    let (code, _, stderr) = run("--port sim --timeout 50ms raw 5 03 00 6B 00 03");
+    assert_eq!(code, 3, "{stderr}");
+}
+
+#[test]
+fn the_sim_answers_a_malformed_pdu_with_its_exception() {
+    let (code, stdout, _) = run("--port sim --json raw 17 03 00");
+    assert_eq!(code, 13, "{stdout}");
+    assert!(stdout.contains(r#""exception":3"#), "{stdout}");
+}
+
+#[test]
+fn a_bare_address_and_port_is_modbus_tcp() {
+    let port = free_port();
+    let _server = serve(&["--port", &format!("tcp://127.0.0.1:{port}")]);
+    assert!(wait_for_listener(port, std::time::Duration::from_secs(10)));
+    let (code, stdout, stderr) = run(&format!(
+        "--port 127.0.0.1:{port} read-holding 17 400108 -o values"
+    ));
+    assert_eq!((code, stdout.as_str()), (0, "555\n"), "{stderr}");
+}
+
+#[test]
+fn a_serial_timeout_names_the_line_settings_and_the_usual_causes() {
+    let Some(pair) = crate::support::PtyPair::new() else {
+        return;
+    };
+    let (code, _, stderr) = run(&format!(
+        "--port {} -b 9600 --parity none --timeout 50ms read-holding 7 1",
+        pair.a.display()
+    ));
+    assert_eq!(code, 3);
+    assert_eq!(
+        stderr,
+        format!(
+            "mbtool: no answer from slave 7 within 50.00 ms on {} (RTU, 9600 baud, no parity, \
+             8 data bits, 2 stop bits): check the slave id, and --baud, --parity and --mode \
+             against the device's settings, and the wiring (A and B swapped, no common \
+             ground)\n",
+            pair.a.display()
+        )
+    );
+}
+
+#[test]
+fn a_closed_stderr_or_stdout_ends_quietly() {
+    // `2>&1 | head -1`: the reader goes away while mbtool still has lines to say.
+    let frames: String = (0..2000).map(|_| "11 03 00\n").collect();
+    let mut child = std::process::Command::new(assert_cmd::cargo::cargo_bin("mbtool"))
+        .arg("decode")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let writer = std::thread::spawn(move || {
+        use std::io::Write;
+        let _ = stdin.write_all(frames.as_bytes());
+    });
+    // Both pipes closed at once, before mbtool has written anything.
+    drop(child.stdout.take());
+    drop(child.stderr.take());
+    let status = child.wait().unwrap();
+    writer.join().unwrap();
+    assert_ne!(status.code(), Some(101), "mbtool panicked");
+    assert!(status.code().is_some(), "killed by a signal: {status:?}");
+}
