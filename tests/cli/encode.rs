@@ -205,8 +205,11 @@ fn raw_sends_the_pdu_as_given_even_when_malformed() {
 
 #[test]
 fn usage_errors_are_one_line() {
-    refused("encode read-holding", "encode read-holding needs SLAVE and ADDRESS");
-    refused("bogus", "unrecognized subcommand");
+    refused(
+        "encode read-holding",
+        "encode read-holding needs SLAVE and ADDRESS",
+    );
+    refused("bogus", "unknown command 'bogus'");
     refused("decode --output nope", "invalid value");
     refused(
         "encode write 17 400001 1 --function 7",
