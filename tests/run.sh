@@ -4,12 +4,13 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-# Debian packages: socat (pty pairs), mbpoll (a master we did not write), libmodbus-dev
+# Debian packages: socat (pty pairs), tmux (a real terminal), mbpoll (a master we did not write), libmodbus-dev
 # (the C slave of the benchmarks), libudev-dev and pkg-config (tokio-serial, under the
 # tokio-modbus slave of the tests).
 missing=()
 command -v socat >/dev/null || missing+=(socat)
 command -v mbpoll >/dev/null || missing+=(mbpoll)
+command -v tmux >/dev/null || missing+=(tmux)
 command -v pkg-config >/dev/null || missing+=(pkg-config)
 pkg-config --exists libudev 2>/dev/null || missing+=(libudev-dev)
 pkg-config --exists libmodbus 2>/dev/null || missing+=(libmodbus-dev)

@@ -131,7 +131,14 @@ impl DecodeWriter {
         table.add_row(vec!["slave".to_string(), slave]);
         table.add_row(vec![
             "function".to_string(),
-            format!("{:02X} {}", report.function, report.function_name),
+            // In decimal as everywhere else, and as the byte on the wire (an exception's
+            // has 0x80 set).
+            format!(
+                "{} (0x{:02X}) {}",
+                report.function & 0x7F,
+                report.function,
+                report.function_name
+            ),
         ]);
         for (name, value) in field_rows(&report.fields) {
             table.add_row(vec![name.to_string(), value]);

@@ -52,11 +52,16 @@ pub fn colour_wanted() -> bool {
     io::stdout().is_terminal() && std::env::var_os("NO_COLOR").is_none_or(|v| v.is_empty())
 }
 
-/// A table in the house style.
+/// A table in the house style; on a terminal it fits the terminal's width, long cells
+/// wrapping inside their column.
 pub fn new_table(colour: bool) -> Table {
     let mut table = Table::new();
     table.load_preset(presets::UTF8_FULL_CONDENSED);
     table.apply_modifier(comfy_table::modifiers::UTF8_ROUND_CORNERS);
+    if let Some((terminal_size::Width(width), _)) = terminal_size::terminal_size_of(io::stdout()) {
+        table.set_content_arrangement(comfy_table::ContentArrangement::Dynamic);
+        table.set_width(width);
+    }
     if colour {
         table.enforce_styling();
     } else {

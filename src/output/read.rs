@@ -10,7 +10,7 @@ use super::{csv_field, new_table, Style};
 use crate::cli::OutputFormat;
 use mbtool_core::master::run::{ReadData, ReadResult};
 use mbtool_core::model::address::reference;
-use mbtool_core::model::values::Value;
+use mbtool_core::model::values::{text, Value, ValueType};
 
 #[derive(Serialize)]
 struct JsonEntry<'a> {
@@ -55,6 +55,14 @@ impl ReadWriter {
     fn rows<'a>(&self, result: &'a ReadResult) -> Vec<Row<'a>> {
         let start = u32::from(result.address);
         match &result.data {
+            // Text is one value, whatever the number of registers that hold it.
+            ReadData::Registers(registers) if self.style.value_type == ValueType::Ascii => {
+                vec![Row {
+                    address: start,
+                    registers,
+                    value: text(registers, self.style.order),
+                }]
+            }
             ReadData::Registers(registers) => {
                 let width = self.style.value_type.width();
                 registers
@@ -124,17 +132,28 @@ impl ReadWriter {
                 }
             }
             OutputFormat::Csv => {
+                // Bits have no registers, so no hex column.
+                let bits = matches!(result.data, ReadData::Bits(_));
                 if !self.csv_header_written {
-                    writeln!(out, "ref,address,hex,value")?;
+                    let header = if bits {
+                        "ref,address,value"
+                    } else {
+                        "ref,address,hex,value"
+                    };
+                    writeln!(out, "{header}")?;
                     self.csv_header_written = true;
                 }
                 for row in &rows {
+                    let hex = if bits {
+                        String::new()
+                    } else {
+                        format!("{},", hex_of(row.registers))
+                    };
                     writeln!(
                         out,
-                        "{},{},{},{}",
+                        "{},{},{hex}{}",
                         ref_of(row.address),
                         row.address,
-                        hex_of(row.registers),
                         csv_field(&row.value.to_string())
                     )?;
                 }

@@ -73,7 +73,7 @@ pub fn write_entry(out: &mut dyn Write, json: bool, entry: &LogEntry) -> io::Res
     let fault = fault.map(|f| format!(" [{f}]")).unwrap_or_default();
     writeln!(
         out,
-        "[{:>12.6}] {} slave {}: {:02} {} {} -> {result}{fault}",
+        "[{:>12.6}] {} slave {}: {} {} {} -> {result}{fault}",
         entry.elapsed.as_secs_f64(),
         entry.peer,
         entry.slave,
@@ -113,7 +113,7 @@ mod tests {
             code: ExceptionCode::ILLEGAL_DATA_ADDRESS,
         }));
         let line = logged(false, &exception);
-        assert!(line.starts_with("[    1.500000] 127.0.0.1:5020 slave 17: 03 Read Holding Registers 400108 x3 -> exception 02"), "{line}");
+        assert!(line.starts_with("[    1.500000] 127.0.0.1:5020 slave 17: 3 Read Holding Registers 400108 x3 -> exception 02"), "{line}");
         assert!(logged(false, &Outcome::Dropped).ends_with("-> none [dropped]\n"));
     }
 

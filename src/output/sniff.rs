@@ -301,7 +301,7 @@ impl SniffWriter {
                     _ => String::new(),
                 };
                 let mut text = format!(
-                    "#{:<6}{} {:>12}  slave {:<3} {:02} {:<30} {:<9} {}  [{check}]",
+                    "#{:<6}{} {:>12}  slave {:<3} {:>2} {:<30} {:<9} {}  [{check}]",
                     frame.number,
                     Self::when(frame.found.start, frame.found.offset),
                     gap,
@@ -350,7 +350,7 @@ impl SniffWriter {
                     })
                     .unwrap_or_default();
                 let text = format!(
-                    "       no answer from slave {slave} to {:02} {} {}{waited}",
+                    "       no answer from slave {slave} to {} {} {}{waited}",
                     request.function(),
                     function::name(request.function()),
                     request_summary(request)

@@ -325,7 +325,7 @@ fn the_table_shows_the_fields_and_values() {
     assert_eq!(run.code, 0);
     for expected in [
         "RTU response",
-        "03 Read Holding Registers",
+        "3 (0x03) Read Holding Registers",
         "022B",
         "555",
         "100",

@@ -235,3 +235,105 @@ fn a_closed_stderr_or_stdout_ends_quietly() {
     assert_ne!(status.code(), Some(101), "mbtool panicked");
     assert!(status.code().is_some(), "killed by a signal: {status:?}");
 }
+
+#[test]
+fn ascii_is_one_string_floats_are_short_and_bits_in_csv_have_no_hex_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("data.txt");
+    std::fs::write(
+        &data,
+        "400020 = \"PUMP 1\" ascii\n400023 = 0\n400030 = 0 0x3FC2\n000020 = on off\n",
+    )
+    .unwrap();
+    let port = free_port();
+    let _server = serve(&[
+        "--port",
+        &format!("tcp://127.0.0.1:{port}"),
+        "--data",
+        data.to_str().unwrap(),
+    ]);
+    assert!(wait_for_listener(port, std::time::Duration::from_secs(10)));
+    let at = format!("--port tcp://127.0.0.1:{port}");
+    let (code, stdout, stderr) = run(&format!(
+        "{at} read-holding 17 400020 4 --type ascii -o values"
+    ));
+    assert_eq!((code, stdout.as_str()), (0, "PUMP 1\n"), "{stderr}");
+    let (_, stdout, _) = run(&format!("{at} read-coils 17 000020 2 -o csv"));
+    assert_eq!(stdout, "ref,address,value\n000020,19,1\n000021,20,0\n");
+    // A denormal f32 in its shortest form, not forty zeros.
+    let (_, stdout, _) = run(&format!("{at} read-holding 17 400030 --type f32 -o values"));
+    assert_eq!(stdout, "2.2872e-41\n");
+}
+
+/// The lines of `command` as an 80-column terminal shows them (tmux, capture-pane).
+fn in_a_terminal(command: &str) -> Option<Vec<String>> {
+    if !crate::support::peer_available("tmux", crate::support::command_exists("tmux")) {
+        return None;
+    }
+    let socket = tempfile::tempdir().unwrap();
+    let socket = socket.path().join("tmux");
+    let tmux = |args: &[&str]| {
+        std::process::Command::new("tmux")
+            .arg("-S")
+            .arg(&socket)
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let mbtool = assert_cmd::cargo::cargo_bin("mbtool");
+    let done = socket.with_extension("done");
+    let script = format!(
+        "NO_COLOR=1 {} {command}; touch {}; sleep 60",
+        mbtool.display(),
+        done.display()
+    );
+    tmux(&[
+        "new-session",
+        "-d",
+        "-x",
+        "80",
+        "-y",
+        "60",
+        "sh",
+        "-c",
+        &script,
+    ]);
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(20);
+    while !done.exists() && std::time::Instant::now() < deadline {
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    let pane = tmux(&["capture-pane", "-p", "-J"]);
+    tmux(&["kill-server"]);
+    Some(
+        String::from_utf8_lossy(&pane.stdout)
+            .lines()
+            .map(str::to_string)
+            .collect(),
+    )
+}
+
+#[test]
+fn tables_fit_an_80_column_terminal() {
+    let long_frame = "11 10 00 01 00 0A 14 00 01 00 02 00 03 00 04 00 05 00 06 00 07 00 08 00 09 \
+                      00 0A 00 00";
+    for command in [
+        format!("decode {long_frame}"),
+        "--port sim raw 17 2B0E0100".to_string(),
+        "--port sim read-holding 17 400108 3 --type f64".to_string(),
+    ] {
+        let Some(lines) = in_a_terminal(&command) else {
+            return;
+        };
+        assert!(
+            lines.iter().any(|l| l.contains('│')),
+            "{command}: no table in {lines:#?}"
+        );
+        for line in &lines {
+            assert!(
+                line.chars().count() <= 80,
+                "{command}: {} columns: {line}",
+                line.chars().count()
+            );
+        }
+    }
+}

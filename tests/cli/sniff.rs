@@ -493,7 +493,7 @@ fn an_exception_line_names_its_function_and_code() {
     let text = String::from_utf8_lossy(&output.stdout);
     let line = text.lines().nth(1).unwrap_or_default();
     assert!(
-        line.contains("slave 17  03 Read Holding Registers"),
+        line.contains("slave 17   3 Read Holding Registers"),
         "{line}"
     );
     assert!(line.contains("exception 02 illegal data address"), "{line}");

@@ -141,10 +141,25 @@ impl fmt::Display for Value {
         match self {
             Value::Unsigned(v) => write!(f, "{v}"),
             Value::Signed(v) => write!(f, "{v}"),
-            Value::Float32(v) => write!(f, "{v}"),
-            Value::Float(v) => write!(f, "{v}"),
+            Value::Float32(v) => show_float(f, f64::from(*v), *v),
+            Value::Float(v) => show_float(f, *v, *v),
             Value::Text(v) => f.write_str(v),
         }
+    }
+}
+
+/// A float in its shortest form that reads back the same, with an exponent when it is
+/// very small or very large (`2.2869e-41`, not 41 zeros).
+fn show_float<T: fmt::Display + fmt::LowerExp>(
+    f: &mut fmt::Formatter<'_>,
+    magnitude: f64,
+    value: T,
+) -> fmt::Result {
+    let size = magnitude.abs();
+    if size != 0.0 && size.is_finite() && !(1e-4..1e15).contains(&size) {
+        write!(f, "{value:e}")
+    } else {
+        write!(f, "{value}")
     }
 }
 
@@ -199,7 +214,11 @@ impl ValueType {
     }
 
     /// Reads every value of `registers`; a short tail that fills no whole value is left out.
+    /// ASCII is one string of all the registers.
     pub fn read_all(self, registers: &[u16], order: ByteOrder) -> Vec<Value> {
+        if self == ValueType::Ascii {
+            return vec![text(registers, order)];
+        }
         registers
             .chunks_exact(self.width())
             .map(|chunk| self.read(chunk, order))
@@ -315,6 +334,20 @@ fn reorder(bytes: &mut [u8], order: ByteOrder) {
             }
         }
     }
+}
+
+/// The text that `registers` hold, two characters each, high byte first (BADC and DCBA swap
+/// the two); the NULs a device pads a string with are left out.
+pub fn text(registers: &[u16], order: ByteOrder) -> Value {
+    let mut bytes: Vec<u8> = registers.iter().flat_map(|r| r.to_be_bytes()).collect();
+    if matches!(order, ByteOrder::Badc | ByteOrder::Dcba) {
+        reorder(&mut bytes, ByteOrder::Badc);
+    }
+    let end = bytes
+        .iter()
+        .rposition(|b| *b != 0)
+        .map_or(0, |last| last + 1);
+    Value::Text(escape_text(&bytes[..end]))
 }
 
 /// Text from a device, safe to print: control and non-ASCII bytes become escapes, so a
@@ -444,6 +477,31 @@ mod tests {
             .parse("0x0102030405060708", ByteOrder::Cdab)
             .unwrap();
         assert_eq!(registers, [0x0708, 0x0506, 0x0304, 0x0102]);
+    }
+
+    #[test]
+    fn floats_show_in_their_shortest_form() {
+        assert_eq!(Value::Float32(2.1).to_string(), "2.1");
+        assert_eq!(
+            Value::Float32(f32::from_bits(0x3FC2)).to_string(),
+            "2.2872e-41"
+        );
+        assert_eq!(Value::Float(1e20).to_string(), "1e20");
+        assert_eq!(Value::Float(-0.5).to_string(), "-0.5");
+        assert_eq!(Value::Float(0.0).to_string(), "0");
+    }
+
+    #[test]
+    fn ascii_is_one_string_without_its_padding() {
+        let registers = [0x5055, 0x4D50, 0x2031, 0x0000];
+        assert_eq!(
+            ValueType::Ascii.read_all(&registers, ByteOrder::Abcd),
+            [Value::Text("PUMP 1".into())]
+        );
+        assert_eq!(
+            text(&[0x5550, 0x504D], ByteOrder::Badc),
+            Value::Text("PUMP".into())
+        );
     }
 
     #[test]
