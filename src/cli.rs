@@ -52,12 +52,26 @@ pub struct Cli {
 pub struct ConnectionArgs {
     /// Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare
     /// 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim
-    #[arg(short, long, global = true, env = "MBTOOL_PORT", value_name = "PORT")]
+    #[arg(
+        short,
+        long,
+        global = true,
+        env = "MBTOOL_PORT",
+        hide_env_values = true,
+        value_name = "PORT"
+    )]
     pub port: Option<String>,
 
     /// Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp://
     /// ports; decode detects it]
-    #[arg(short, long, global = true, env = "MBTOOL_MODE", value_enum)]
+    #[arg(
+        short,
+        long,
+        global = true,
+        env = "MBTOOL_MODE",
+        hide_env_values = true,
+        value_enum
+    )]
     pub mode: Option<ModeArg>,
 
     /// Serial speed
@@ -65,30 +79,30 @@ pub struct ConnectionArgs {
         short,
         long,
         global = true,
-        env = "MBTOOL_BAUD",
+        env = "MBTOOL_BAUD", hide_env_values = true,
         default_value_t = 19200,
         value_parser = whole::<u32>(50, 12_000_000)
     )]
     pub baud: u32,
 
     /// Serial parity
-    #[arg(long, global = true, env = "MBTOOL_PARITY", value_parser = choice::<Parity>(), default_value = Parity::Even.name())]
+    #[arg(long, global = true, env = "MBTOOL_PARITY", hide_env_values = true, value_parser = choice::<Parity>(), default_value = Parity::Even.name())]
     pub parity: Parity,
 
     /// Serial data bits [default: 8, 7 in ASCII mode]
-    #[arg(long, global = true, env = "MBTOOL_DATA_BITS", value_parser = whole::<u8>(7, 8))]
+    #[arg(long, global = true, env = "MBTOOL_DATA_BITS", hide_env_values = true, value_parser = whole::<u8>(7, 8))]
     pub data_bits: Option<u8>,
 
     /// Serial stop bits [default: 1 with parity, 2 without]
-    #[arg(long, global = true, env = "MBTOOL_STOP_BITS", value_parser = whole::<u8>(1, 2))]
+    #[arg(long, global = true, env = "MBTOOL_STOP_BITS", hide_env_values = true, value_parser = whole::<u8>(1, 2))]
     pub stop_bits: Option<u8>,
 
     /// Response timeout for a whole answer: 500ms, 1s, 2.5s
-    #[arg(long, global = true, env = "MBTOOL_TIMEOUT", default_value = "1s", value_parser = positive_duration)]
+    #[arg(long, global = true, env = "MBTOOL_TIMEOUT", hide_env_values = true, default_value = "1s", value_parser = positive_duration)]
     pub timeout: std::time::Duration,
 
     /// Retries after a timeout or a bad answer (never after an exception)
-    #[arg(long, global = true, env = "MBTOOL_RETRIES", default_value_t = 0, value_name = "N", allow_negative_numbers = true, value_parser = whole::<u32>(0, 100))]
+    #[arg(long, global = true, env = "MBTOOL_RETRIES", hide_env_values = true, default_value_t = 0, value_name = "N", allow_negative_numbers = true, value_parser = whole::<u32>(0, 100))]
     pub retries: u32,
 
     /// Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200

@@ -337,3 +337,11 @@ fn tables_fit_an_80_column_terminal() {
         }
     }
 }
+
+#[test]
+fn help_names_the_environment_variables_without_empty_values() {
+    let output = mbtool().args(["read-holding", "--help"]).output().unwrap();
+    let help = String::from_utf8_lossy(&output.stdout);
+    assert!(help.contains("[env: MBTOOL_PORT]"), "{help}");
+    assert!(!help.contains("MBTOOL_PORT=]"), "{help}");
+}
