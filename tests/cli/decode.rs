@@ -339,10 +339,16 @@ fn the_table_shows_the_fields_and_values() {
     }
 }
 
-#[test]
-fn a_closed_pipe_ends_quietly_with_status_0() {
+/// `mbtool decode ARGS` fed `line` `times` over, or until it stops reading, and the thread
+/// that feeds it.
+fn fed_decode(
+    args: &[&str],
+    line: &'static [u8],
+    times: usize,
+) -> (std::process::Child, std::thread::JoinHandle<()>) {
     let mut child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
-        .args(["decode", "--json"])
+        .arg("decode")
+        .args(args)
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -350,13 +356,19 @@ fn a_closed_pipe_ends_quietly_with_status_0() {
         .unwrap();
     let mut stdin = child.stdin.take().unwrap();
     let feeder = std::thread::spawn(move || {
-        let line = b"11 03 06 02 2B 00 00 00 64 C8 BA\n";
-        for _ in 0..200_000 {
+        for _ in 0..times {
             if stdin.write_all(line).is_err() {
                 break;
             }
         }
     });
+    (child, feeder)
+}
+
+#[test]
+fn a_closed_pipe_ends_quietly_with_status_0() {
+    let (mut child, feeder) =
+        fed_decode(&["--json"], b"11 03 06 02 2B 00 00 00 64 C8 BA\n", 200_000);
     let mut first = String::new();
     BufReader::new(child.stdout.take().unwrap())
         .read_line(&mut first)
@@ -367,6 +379,20 @@ fn a_closed_pipe_ends_quietly_with_status_0() {
     feeder.join().unwrap();
     assert_eq!(output.status.code(), Some(0));
     assert_eq!(String::from_utf8_lossy(&output.stderr), "");
+}
+
+#[test]
+fn a_closed_stderr_ends_quietly_too() {
+    // `2>&1 | head -1` closes stderr while mbtool still has malformed frames to report.
+    let (mut child, feeder) = fed_decode(&[], b"11 03 00\n", 2_000);
+    drop(child.stderr.take());
+    let mut stdout = child.stdout.take().unwrap();
+    let reader = std::thread::spawn(move || std::io::copy(&mut stdout, &mut std::io::sink()));
+    feeder.join().unwrap();
+    let status = child.wait().unwrap();
+    reader.join().unwrap().unwrap();
+    // Not 101 (a panic), nor a signal: the status decode gives malformed frames.
+    assert_eq!(status.code(), Some(4), "{status:?}");
 }
 
 #[test]

@@ -209,12 +209,40 @@ fn real_slave_exceptions() {
     assert_eq!(code, 11, "{out}");
     let (code, out) = run_against(&port, "raw 17 03 00 00 00 00");
     assert_eq!(code, 13, "{out}");
+    // A good quantity past the last address: 02, as the specification checks in that order.
+    let (code, out) = run_against(&port, "raw 17 03 FF FF 00 02");
+    assert_eq!(code, 12, "{out}");
     let (code, out) = run_against(&port, "write-register 17 400005 1");
     assert_eq!(code, 12, "{out}");
     assert_eq!(run_against(&port, "write-register 17 400011 1").0, 0);
     let (code, out) = run_against(&port, "raw 17 2B 0E 01 00 --json");
     assert_eq!(code, 0, "{out}");
     assert!(out.contains("\"value\":\"mbtool\""), "{out}");
+}
+
+#[test]
+fn over_tcp_function_00_and_80_ff_get_exception_01() {
+    let (_server, _, tcp) = serve_tcp(&[]);
+    for (pdu, answer) in [
+        (&[0x00][..], [0x80, 0x01]),
+        (&[0x83, 0x02][..], [0x83, 0x01]),
+    ] {
+        let mut client = TcpStream::connect(("127.0.0.1", tcp)).unwrap();
+        client
+            .set_read_timeout(Some(Duration::from_secs(5)))
+            .unwrap();
+        let len = u8::try_from(pdu.len() + 1).unwrap();
+        client
+            .write_all(&[&[0, 7, 0, 0, 0, len, 17][..], pdu].concat())
+            .unwrap();
+        let mut got = [0u8; 9];
+        std::io::Read::read_exact(&mut client, &mut got).unwrap();
+        assert_eq!(
+            got,
+            [0, 7, 0, 0, 0, 3, 17, answer[0], answer[1]],
+            "{pdu:02X?}"
+        );
+    }
 }
 
 #[test]
