@@ -64,7 +64,6 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -s v -l verbose -d 'Print ev
 complete -c mbtool -n "__fish_mbtool_needs_command" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_needs_command" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-coils" -d 'Read coils (function 01)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-discrete-inputs" -d 'Read discrete inputs (function 02)'
@@ -79,52 +78,12 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-register" -d 'W
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-registers" -d 'Write holding registers (function 16)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "raw" -d 'Send any PDU and decode the answer'
-complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
-complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "encode" -d 'Print the frame a request command would send'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l dir -d 'The folder that receives completions/ and man/' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
@@ -142,21 +101,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s o -l output
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l count -d 'With --poll: stop after N reads' -r
@@ -182,21 +126,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s o -l outpu
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l count -d 'With --poll: stop after N reads' -r
@@ -222,21 +151,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s o
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l count -d 'With --poll: stop after N reads' -r
@@ -462,24 +376,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s o -l output
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -502,24 +398,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s o -l outpu
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -557,9 +436,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l order -
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -598,8 +474,6 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -642,8 +516,6 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -681,127 +553,15 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l order -d 'Byte ord
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a raw byte capture instead of the port (\'-\' for standard input)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pcap -d 'Also write the frames to a pcap file for Wireshark (link type 147, see above)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l slave -d 'Show only the frames of this slave; repeatable' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l function -d 'Show only the frames of this function code (3, 0x10); repeatable' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l low-latency -d 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l slave -d 'Answer as this slave id; repeat for several [default: 17]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data -d 'Initial data and the addresses that exist (see above for the format)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l read-only -d 'Addresses that may not be written (exception 02): a reference or a range; repeatable' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l delay -d 'Wait this long before each answer' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l drop -d 'Leave this share of requests unanswered: 0 to 1, or 5%' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l corrupt -d 'Corrupt this share of answers (a bad checksum; over TCP a wrong function): 0 to 1, or 5%' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l exception -d 'Answer exception CODE to every request, or to those touching RANGE (CODE@RANGE, as in 2@400100-400120); repeatable' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l seed -d 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l vendor -d 'Device identification: vendor name' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l product-code -d 'Device identification: product code' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l garbage -d 'Send a few noise bytes (00, FE) before each answer, as a bus being handed over does'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s q -l quiet -d 'No log line per request'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l direction -d 'Read every frame as a request or as a response instead of inferring it' -r -f -a "request\t''
 response\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -821,27 +581,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l order -d 'Byte 
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -862,10 +608,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s V -l version -d 'Print version'
@@ -888,39 +631,12 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s V -l version -d 'Print version'
@@ -928,39 +644,12 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s V -l version -d 'Print version'
@@ -968,39 +657,12 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s V -l version -d 'Print version'
@@ -1008,15 +670,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -1037,10 +690,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s V -l version -d 'Print version'
@@ -1048,15 +698,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -1077,10 +718,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s V -l version -d 'Print version'
@@ -1088,15 +726,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -1117,10 +746,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s V -l version -d 'Print version'
@@ -1128,15 +754,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -1157,10 +774,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s V -l version -d 'Print version'
@@ -1168,15 +782,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -1197,10 +802,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s V -l version -d 'Print version'
@@ -1208,39 +810,11 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s V -l version -d 'Print version'
@@ -1248,39 +822,12 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s V -l version -d 'Print version'
@@ -1288,15 +835,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -1316,11 +854,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s V -l version -d 'Print version'
@@ -1328,15 +862,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -1357,10 +882,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s V -l version -d 'Print version'
@@ -1372,15 +894,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -1401,10 +914,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s V -l version -d 'Print version'
@@ -1412,15 +922,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l parity -d 'Serial parity' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -1440,12 +941,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-coils" -d 'Read coils (function 01)'
@@ -1460,23 +956,78 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "raw" -d 'Send any PDU and decode the answer'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read-coils" -d 'Read coils (function 01)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read-holding" -d 'Read holding registers (function 03)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "read" -d 'Read by reference: its first digit picks the table'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-coil" -d 'Write one coil (function 05)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-coils" -d 'Write coils (function 15)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-register" -d 'Write one holding register (function 06)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "raw" -d 'Send any PDU and decode the answer'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "encode" -d 'Print the frame a request command would send'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from generate read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw sniff serve decode encode help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a raw byte capture instead of the port (\'-\' for standard input)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pcap -d 'Also write the frames to a pcap file for Wireshark (link type 147, see above)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l slave -d 'Show only the frames of this slave; repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l function -d 'Show only the frames of this function code (3, 0x10); repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s b -l baud -d 'Serial speed' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l parity -d 'Serial parity' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l low-latency -d 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l slave -d 'Answer as this slave id; repeat for several [default: 17]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data -d 'Initial data and the addresses that exist (see above for the format)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l read-only -d 'Addresses that may not be written (exception 02): a reference or a range; repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l delay -d 'Wait this long before each answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l drop -d 'Leave this share of requests unanswered: 0 to 1, or 5%' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l corrupt -d 'Corrupt this share of answers (a bad checksum; over TCP a wrong function): 0 to 1, or 5%' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l exception -d 'Answer exception CODE to every request, or to those touching RANGE (CODE@RANGE, as in 2@400100-400120); repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l seed -d 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l vendor -d 'Device identification: vendor name' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l product-code -d 'Device identification: product code' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s b -l baud -d 'Serial speed' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l parity -d 'Serial parity' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l garbage -d 'Send a few noise bytes (00, FE) before each answer, as a bus being handed over does'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s q -l quiet -d 'No log line per request'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l dir -d 'The folder that receives completions/ and man/' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "read" -d 'Read by reference: its first digit picks the table'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "encode" -d 'Print the frame a request command would send'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-coils" -d 'Read coils (function 01)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-holding" -d 'Read holding registers (function 03)'

@@ -174,7 +174,7 @@ pub struct DataArgs {
     pub pdu_addresses: bool,
 
     /// Register value type, for showing values read and for converting values to write
-    #[arg(short = 't', long = "type", global = true, value_parser = choice::<ValueType>(), default_value = ValueType::default().name())]
+    #[arg(short = 't', long = "type", global = true, value_name = "TYPE", value_parser = choice::<ValueType>(), default_value = ValueType::default().name())]
     pub value_type: ValueType,
 
     /// Byte order of values wider than 16 bits: A is the most significant byte
@@ -405,9 +405,9 @@ impl RequestCommand {
 pub struct ReadArgs {
     /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
     pub slave: String,
-    /// First address (400108, 107, 0x6B) or an inclusive range (400108-400110)
+    /// First holding register (400108, 107, 0x6B) or an inclusive range (400108-400110)
     pub address: String,
-    /// How many values to read [default: 1]; with --type wider than 16 bits, values of
+    /// How many registers to read [default: 1]; with --type wider than 16 bits, values of
     /// that type
     pub count: Option<String>,
 }
@@ -437,9 +437,9 @@ pub struct WriteRegisterArgs {
 pub struct WriteArgs {
     /// Slave address: 1-247, or 0 to broadcast
     pub slave: String,
-    /// First address, or a range that holds exactly the values given
+    /// First holding register (400002, 1), or a range that holds exactly the values given
     pub address: String,
-    /// The values: registers converted by --type; coils each 0/1/on/off, or one bit
+    /// The values: registers each converted by --type; coils each 0/1/on/off, or one bit
     /// string such as 10110
     #[arg(required = true, allow_negative_numbers = true)]
     pub values: Vec<String>,
@@ -614,4 +614,100 @@ fn choice<T: Choice + Clone + Send + Sync>() -> impl clap::builder::TypedValuePa
         }
     }))
     .try_map(|name| T::from_name(&name).ok_or("not one of the possible values"))
+}
+
+/// What an argument shared by several commands means in each: (command, argument id,
+/// value name, help). The derived definitions above say it for holding registers.
+const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
+    ("read-coils", "address", "ADDRESS", "First coil (000020, 19) or an inclusive range (000020-000056)"),
+    ("read-coils", "count", "COUNT", "How many coils to read [default: 1]"),
+    ("read-inputs", "address", "ADDRESS", "First discrete input (100197, 196) or an inclusive range (100197-100218)"),
+    ("read-inputs", "count", "COUNT", "How many inputs to read [default: 1]"),
+    ("read-input-registers", "address", "ADDRESS", "First input register (300009, 8) or an inclusive range (300009-300011)"),
+    ("read", "address", "REFERENCE", "A reference whose first digit picks the table (000020 coils, 100197 discrete inputs, 300009 input registers, 400108 holding registers), or an inclusive range (400108-400110)"),
+    ("read", "count", "COUNT", "How many values to read [default: 1]; for registers with --type wider than 16 bits, values of that type"),
+    ("write-coils", "address", "ADDRESS", "First coil (000020, 19), or a range that holds exactly the values given"),
+    ("write-coils", "values", "VALUES", "Each 0/1/on/off, or one bit string such as 10110"),
+    ("write-registers", "values", "VALUES", "The values, each converted by --type"),
+    ("write", "address", "REFERENCE", "A coil (000020) or holding register (400001) reference, or a range that holds exactly the values given"),
+];
+
+/// A built command's argument `id` of `command` (also under `encode`), described as
+/// [`ARGUMENT_HELP`] says.
+pub fn with_argument_help(command: clap::Command) -> clap::Command {
+    fn describe(sub: clap::Command) -> clap::Command {
+        let name = sub.get_name().to_string();
+        sub.mut_args(|arg| {
+            let entry = ARGUMENT_HELP
+                .iter()
+                .find(|(command, id, ..)| *command == name && arg.get_id() == *id);
+            match entry {
+                Some((_, _, value_name, help)) => arg.value_name(*value_name).help(*help),
+                None => arg,
+            }
+        })
+    }
+    command.mut_subcommands(|sub| describe(sub).mut_subcommands(describe))
+}
+
+/// Whether the command at `path` (`["read-holding"]`, `["encode", "write-coil"]`) takes the
+/// global option `id`. The options a command does not take are hidden from its help and
+/// refused when typed on its command line; a value from the environment is never refused.
+pub fn takes_option(path: &[&str], id: &str) -> bool {
+    const LINE: &[&str] = &["port", "mode", "baud", "parity", "data_bits", "stop_bits"];
+    const MASTER: &[&str] = &["timeout", "retries", "frame_gap", "verbose"];
+    const FORMAT: &[&str] = &["output", "json"];
+    const ADDRESSES: &[&str] = &["pdu_addresses"];
+    const SPLIT: &[&str] = &["max_per_request"];
+    const REGISTERS: &[&str] = &["value_type", "order"];
+    const POLL: &[&str] = &["poll", "poll_count"];
+    let groups: &[&[&str]] = match path {
+        ["decode"] => &[&["mode"], FORMAT, REGISTERS],
+        ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
+        ["sniff" | "serve"] => &[LINE, FORMAT],
+        // What the request command takes, less what only matters on the wire.
+        ["encode", request] => {
+            let wire = [LINE, MASTER, POLL].concat();
+            return ["port", "mode"].contains(&id)
+                || (takes_option(&[request], id) && !wire.contains(&id));
+        }
+        ["read-coils" | "read-inputs"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, POLL],
+        ["read-holding" | "read-input-registers" | "read"] => {
+            &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS, POLL]
+        }
+        ["write-coil"] => &[LINE, MASTER, FORMAT, ADDRESSES],
+        ["write-coils"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT],
+        ["write-register"] => &[LINE, MASTER, FORMAT, ADDRESSES, REGISTERS],
+        ["write-registers" | "write"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS],
+        // raw decodes the answer: --type shows its registers.
+        ["raw"] => &[LINE, MASTER, FORMAT, REGISTERS],
+        _ => &[],
+    };
+    groups.iter().any(|group| group.contains(&id))
+}
+
+/// The first global option typed on the command line that the command given does not
+/// take, as a one-line message: `decode does not take --baud (see 'mbtool decode --help')`.
+pub fn untaken_option(command: &clap::Command, matches: &clap::ArgMatches) -> Option<String> {
+    let mut path = Vec::new();
+    let mut leaf = matches;
+    while let Some((name, sub)) = leaf.subcommand() {
+        path.push(name);
+        leaf = sub;
+    }
+    let typed = command.get_arguments().find(|arg| {
+        let id = arg.get_id().as_str();
+        arg.is_global_set()
+            && !takes_option(&path, id)
+            && leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine)
+    })?;
+    let name = match (typed.get_long(), typed.get_short()) {
+        (Some(long), _) => format!("--{long}"),
+        (None, Some(short)) => format!("-{short}"),
+        (None, None) => typed.get_id().to_string(),
+    };
+    let path = path.join(" ");
+    Some(format!(
+        "{path} does not take {name} (see 'mbtool {path} --help' for the options it takes)"
+    ))
 }

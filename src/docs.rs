@@ -216,6 +216,11 @@ const ENVIRONMENT: &[(&str, &str)] = &[
     ("NO_COLOR", "when set and not empty, no colour is used"),
 ];
 
+/// Every example of every help page.
+pub fn examples() -> impl Iterator<Item = &'static Example> {
+    EXAMPLES.iter().flat_map(|(_, examples)| examples.iter())
+}
+
 fn examples_of(name: &str) -> &'static [Example] {
     EXAMPLES
         .iter()
@@ -231,14 +236,39 @@ fn examples_help(examples: &[Example]) -> String {
     text
 }
 
-/// The clap command with examples attached to each `--help`.
+/// The clap command, built: examples attached to each `--help`, and each command's help
+/// showing only the global options it takes.
 pub fn command() -> clap::Command {
     let mut command = Cli::command().after_long_help(examples_help(examples_of("")));
     for (name, examples) in EXAMPLES.iter().filter(|(name, _)| !name.is_empty()) {
         let help = examples_help(examples);
         command = command.mut_subcommand(*name, |sub| sub.after_long_help(help));
     }
-    command
+    // Building copies the global options into every subcommand; only then can each copy
+    // be hidden where it does not apply.
+    command.build();
+    hide_untaken_options(crate::cli::with_argument_help(command), &[])
+}
+
+fn hide_untaken_options(command: clap::Command, parent: &[String]) -> clap::Command {
+    command.mut_subcommands(|sub| {
+        let path: Vec<String> = parent
+            .iter()
+            .cloned()
+            .chain([sub.get_name().to_string()])
+            .collect();
+        let words: Vec<&str> = path.iter().map(String::as_str).collect();
+        let sub = sub.mut_args(|arg| {
+            let hide =
+                arg.is_global_set() && !crate::cli::takes_option(&words, arg.get_id().as_str());
+            if hide {
+                arg.hide(true)
+            } else {
+                arg
+            }
+        });
+        hide_untaken_options(sub, &path)
+    })
 }
 
 /// What `mbtool` alone prints: the usage line, the commands, and where to go next, as
@@ -287,15 +317,64 @@ fn roff_list(out: &mut dyn Write, title: &str, items: &[(&str, &str)]) -> io::Re
     Ok(())
 }
 
+/// The SYNOPSIS: every option the command takes with its value placeholder
+/// (`[--baud BAUD]`), then its arguments, as `--help`'s usage line gives them.
+fn render_synopsis(out: &mut dyn Write, command: &clap::Command) -> io::Result<()> {
+    let bold = |text: &str| format!("\\fB{}\\fR", roff_text(text));
+    let italic = |text: &str| format!("\\fI{}\\fR", roff_text(text));
+    let name = command.get_bin_name().unwrap_or(command.get_name());
+    let mut words = vec![bold(name)];
+    let visible: Vec<&clap::Arg> = command
+        .get_arguments()
+        .filter(|arg| !arg.is_hide_set())
+        .collect();
+    for arg in visible.iter().filter(|arg| !arg.is_positional()) {
+        let mut names: Vec<String> = arg
+            .get_short()
+            .map(|s| bold(&format!("-{s}")))
+            .into_iter()
+            .collect();
+        names.extend(arg.get_long().map(|l| bold(&format!("--{l}"))));
+        let takes_value = arg.get_num_args().is_some_and(|n| n.takes_values());
+        let value = match arg.get_value_names() {
+            Some([value, ..]) if takes_value => format!(" {}", italic(value)),
+            _ => String::new(),
+        };
+        words.push(format!("[{}{value}]", names.join("|")));
+    }
+    for arg in visible.iter().filter(|arg| arg.is_positional()) {
+        let value = arg
+            .get_value_names()
+            .and_then(|names| names.first())
+            .map_or_else(|| arg.get_id().to_string(), ToString::to_string);
+        let many = if arg.get_num_args().is_some_and(|n| n.max_values() > 1) {
+            "..."
+        } else {
+            ""
+        };
+        words.push(if arg.is_required_set() {
+            format!("<{}>{many}", italic(&value))
+        } else {
+            format!("[{}]{many}", italic(&value))
+        });
+    }
+    if command.has_subcommands() {
+        words.push(format!("<{}>", italic("COMMAND")));
+        words.push(format!("[{}]", italic("ARGS")));
+    }
+    writeln!(out, ".SH SYNOPSIS\n{}", words.join(" "))
+}
+
 fn render_man(
     man: &clap_mangen::Man,
+    man_command: &clap::Command,
     name: &str,
     top: bool,
     out: &mut dyn Write,
 ) -> io::Result<()> {
     man.render_title(out)?;
     man.render_name_section(out)?;
-    man.render_synopsis_section(out)?;
+    render_synopsis(out, man_command)?;
     man.render_description_section(out)?;
     man.render_options_section(out)?;
     if top {
@@ -330,18 +409,58 @@ fn render_man(
 /// Writes `man/*.1`: one page for mbtool and one per visible subcommand.
 pub fn write_man_pages(dir: &Path) -> io::Result<()> {
     fs::create_dir_all(dir)?;
-    let mut command = command().disable_help_subcommand(true);
-    command.build();
+    // `mbtool help COMMAND` is the same as `--help`: no page of its own.
+    let command = command().mut_subcommand("help", |help| help.hide(true));
     let mut page = Vec::new();
-    render_man(&clap_mangen::Man::new(command.clone()), "", true, &mut page)?;
+    render_man(
+        &clap_mangen::Man::new(command.clone()),
+        &command,
+        "",
+        true,
+        &mut page,
+    )?;
     fs::write(dir.join("mbtool.1"), &page)?;
     for sub in command.get_subcommands().filter(|s| !s.is_hide_set()) {
         let man = clap_mangen::Man::new(sub.clone());
         let mut page = Vec::new();
-        render_man(&man, sub.get_name(), false, &mut page)?;
+        render_man(&man, sub, sub.get_name(), false, &mut page)?;
         fs::write(dir.join(man.get_filename()), &page)?;
     }
     Ok(())
+}
+
+/// The command as the shells complete it. The completion generators offer hidden options
+/// too, so here each command is given only the global options it takes, instead of all of
+/// them with the others hidden.
+fn completion_command() -> clap::Command {
+    let top = Cli::command();
+    let globals: Vec<clap::Arg> = top
+        .get_arguments()
+        .filter(|arg| arg.is_global_set())
+        .map(|arg| arg.clone().global(false))
+        .collect();
+    fn give_taken(
+        command: clap::Command,
+        parent: &[String],
+        globals: &[clap::Arg],
+    ) -> clap::Command {
+        command.mut_subcommands(|sub| {
+            let path: Vec<String> = parent
+                .iter()
+                .cloned()
+                .chain([sub.get_name().to_string()])
+                .collect();
+            let words: Vec<&str> = path.iter().map(String::as_str).collect();
+            let taken = globals
+                .iter()
+                .filter(|arg| crate::cli::takes_option(&words, arg.get_id().as_str()));
+            let sub = sub.args(taken.cloned());
+            give_taken(sub, &path, globals)
+        })
+    }
+    let mut command = give_taken(top.mut_args(|arg| arg.global(false)), &[], &globals);
+    command.build();
+    crate::cli::with_argument_help(command)
 }
 
 /// Writes `completions/` for bash, zsh, fish, PowerShell and elvish.
@@ -354,7 +473,7 @@ pub fn write_completions(dir: &Path) -> io::Result<()> {
         Shell::PowerShell,
         Shell::Elvish,
     ] {
-        clap_complete::generate_to(shell, &mut command(), "mbtool", dir)?;
+        clap_complete::generate_to(shell, &mut completion_command(), "mbtool", dir)?;
     }
     Ok(())
 }

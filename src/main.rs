@@ -23,26 +23,38 @@ fn main() -> ExitCode {
 }
 
 /// Parses the command line. Help and version are printed as clap renders them; `mbtool`
-/// alone prints a short usage with the commands; every other usage error becomes one
-/// `mbtool: ` line. Both end with exit status 2.
+/// alone prints a short usage with the commands; every other usage error, including an
+/// option the command does not take, becomes one `mbtool: ` line. Both end with exit
+/// status 2.
 fn parse() -> Result<Cli, ExitCode> {
     let mut command = mbtool::docs::command();
     let matches = command.try_get_matches_from_mut(std::env::args_os());
-    let result = matches.and_then(|m| Cli::from_arg_matches(&m));
-    result.map_err(|error| match error.kind() {
-        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
-            let _ = error.print();
-            ExitCode::SUCCESS
-        }
-        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            mbtool::note!("{}", mbtool::docs::short_usage(&command));
-            ExitCode::from(2)
-        }
-        _ => {
-            mbtool::note!("mbtool: {}", usage_error(&error, &command));
-            ExitCode::from(2)
-        }
-    })
+    let result = matches.and_then(|m| Ok((Cli::from_arg_matches(&m)?, m)));
+    if let Ok((cli, matches)) = result {
+        return match mbtool::cli::untaken_option(&command, &matches) {
+            None => Ok(cli),
+            Some(message) => {
+                mbtool::note!("mbtool: {message}");
+                Err(ExitCode::from(2))
+            }
+        };
+    }
+    result
+        .map(|(cli, _)| cli)
+        .map_err(|error| match error.kind() {
+            ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+                let _ = error.print();
+                ExitCode::SUCCESS
+            }
+            ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
+                mbtool::note!("{}", mbtool::docs::short_usage(&command));
+                ExitCode::from(2)
+            }
+            _ => {
+                mbtool::note!("mbtool: {}", usage_error(&error, &command));
+                ExitCode::from(2)
+            }
+        })
 }
 
 /// A usage error on one line: what is wrong, clap's tips and the values allowed, and where

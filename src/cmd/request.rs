@@ -22,9 +22,6 @@ use mbtool_core::model::address::{reference, Table};
 pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
     // The whole command line is checked before a port is opened.
     let plan = super::encode::plan_for(cli, request)?;
-    if cli.poll.poll.is_some() && plan.reads.is_none() {
-        return Err(Error::usage("--poll repeats reads; a write or raw request runs once").into());
-    }
     let endpoint = connection::endpoint(cli)?;
     let mode = connection::mode(cli, Some(&endpoint), connection::Role::Master)?;
     let mut master = connection::master(cli, &endpoint, mode)?;

@@ -1,7 +1,10 @@
-//! The completions and man pages in the tree are those the clap definition generates now.
+//! The completions and man pages in the tree are those the clap definition generates now,
+//! and every example they show is one mbtool accepts.
 
 use std::fs;
 use std::path::Path;
+
+use crate::support::mbtool;
 
 #[test]
 fn the_clap_definition_is_consistent() {
@@ -53,5 +56,125 @@ fn every_man_page_has_exit_status_and_examples() {
         let page = String::from_utf8(page).unwrap();
         assert!(page.contains(".SH \"EXIT STATUS\""), "{name}");
         assert!(page.contains(".SH EXAMPLES"), "{name} has no examples");
+    }
+}
+
+/// The SYNOPSIS of a page: the line after `.SH SYNOPSIS`.
+fn synopsis(page: &str) -> &str {
+    page.split(".SH SYNOPSIS\n")
+        .nth(1)
+        .and_then(|rest| rest.lines().next())
+        .unwrap_or_default()
+}
+
+#[test]
+fn a_man_synopsis_shows_each_option_it_takes_with_its_value() {
+    let fresh = tempfile::tempdir().unwrap();
+    mbtool::docs::write_man_pages(fresh.path()).unwrap();
+    let page = |name: &str| fs::read_to_string(fresh.path().join(name)).unwrap();
+    let read = page("mbtool-read-holding.1");
+    let read = synopsis(&read);
+    for option in [
+        r"[\fB\-b\fR|\fB\-\-baud\fR \fIBAUD\fR]",
+        r"[\fB\-t\fR|\fB\-\-type\fR \fITYPE\fR]",
+        r"[\fB\-\-poll\fR \fIINTERVAL\fR]",
+        r"[\fB\-\-json\fR]",
+        r"<\fISLAVE\fR> <\fIADDRESS\fR> [\fICOUNT\fR]",
+    ] {
+        assert!(read.contains(option), "{option} not in {read}");
+    }
+    let decode = page("mbtool-decode.1");
+    let decode = synopsis(&decode);
+    assert!(
+        decode.contains(r"[\fB\-m\fR|\fB\-\-mode\fR \fIMODE\fR]"),
+        "{decode}"
+    );
+    assert!(
+        !decode.contains("baud") && !decode.contains("poll"),
+        "{decode}"
+    );
+    assert!(decode.ends_with(r"[\fIFRAMES\fR]..."), "{decode}");
+}
+
+/// Each example of `--help` and the man pages is accepted as it stands; a request command's
+/// is carried out as far as its frames (`encode`), since its port is not here.
+#[test]
+fn every_help_example_is_one_the_command_accepts() {
+    for example in mbtool::docs::examples() {
+        // `decode --json < frames.txt` reads standard input, here empty.
+        let line = example.command.split(" < ").next().unwrap();
+        let words: Vec<&str> = line.split_whitespace().collect();
+        let matches = mbtool::docs::command()
+            .try_get_matches_from(&words)
+            .unwrap_or_else(|e| panic!("{line}: {e}"));
+        let taken = mbtool::cli::untaken_option(&mbtool::docs::command(), &matches);
+        assert_eq!(taken, None, "{line}");
+        let name = matches.subcommand_name().unwrap();
+        if ["sniff", "serve"].contains(&name) {
+            continue;
+        }
+        let mut args: Vec<&str> = Vec::new();
+        let mut rest = words.iter().skip(1);
+        while let Some(word) = rest.next() {
+            if ["--port", "-p"].contains(word) {
+                rest.next();
+            } else {
+                args.push(word);
+            }
+        }
+        if !["decode", "encode"].contains(&name) {
+            args.insert(0, "encode");
+        }
+        let output = mbtool().args(&args).output().unwrap();
+        assert!(output.status.success(), "{line}: {output:?}");
+    }
+}
+
+/// What bash offers after `mbtool WORDS --`, from the completions in the tree.
+fn bash_offers(words: &str) -> Vec<String> {
+    let script = format!(
+        "source completions/mbtool.bash; COMP_WORDS=(mbtool {words} --); \
+         COMP_CWORD=${{#COMP_WORDS[@]}}; COMP_CWORD=$((COMP_CWORD - 1)); \
+         _mbtool mbtool -- x; printf '%s\\n' \"${{COMPREPLY[@]}}\""
+    );
+    let output = std::process::Command::new("bash")
+        .args(["-c", &script])
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .map(str::to_string)
+        .collect()
+}
+
+#[test]
+fn completion_offers_only_the_options_a_command_takes() {
+    let decode = bash_offers("decode");
+    assert!(decode.contains(&"--direction".to_string()), "{decode:?}");
+    assert!(decode.contains(&"--type".to_string()), "{decode:?}");
+    assert!(!decode.contains(&"--baud".to_string()), "{decode:?}");
+    let coils = bash_offers("read-coils 17");
+    assert!(coils.contains(&"--poll".to_string()), "{coils:?}");
+    assert!(!coils.contains(&"--type".to_string()), "{coils:?}");
+}
+
+/// A command added without saying which global options it takes would take none.
+#[test]
+fn every_command_says_which_options_it_takes() {
+    let command = mbtool::docs::command();
+    let commands = command.get_subcommands();
+    for sub in commands.filter(|sub| !sub.is_hide_set() && sub.get_name() != "help") {
+        let leaves: Vec<Vec<&str>> = if sub.has_subcommands() {
+            sub.get_subcommands()
+                .filter(|leaf| leaf.get_name() != "help")
+                .map(|leaf| vec![sub.get_name(), leaf.get_name()])
+                .collect()
+        } else {
+            vec![vec![sub.get_name()]]
+        };
+        for path in &leaves {
+            assert!(mbtool::cli::takes_option(path, "output"), "{path:?}");
+        }
     }
 }

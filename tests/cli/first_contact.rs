@@ -62,6 +62,95 @@ fn a_missing_argument_is_named() {
 }
 
 #[test]
+fn each_command_shows_and_takes_only_its_options() {
+    let help = |command: &str| run(&format!("{command} --help")).1;
+    let options = |text: &str| -> Vec<String> {
+        text.lines()
+            .filter_map(|line| {
+                line.trim_start()
+                    .split([' ', ','])
+                    .find(|w| w.starts_with("--"))
+            })
+            .map(str::to_string)
+            .collect()
+    };
+    let decode = options(&help("decode"));
+    for taken in [
+        "--mode",
+        "--output",
+        "--json",
+        "--type",
+        "--order",
+        "--direction",
+    ] {
+        assert!(
+            decode.iter().any(|o| o == taken),
+            "decode lacks {taken}: {decode:?}"
+        );
+    }
+    for untaken in [
+        "--port",
+        "--baud",
+        "--timeout",
+        "--poll",
+        "--verbose",
+        "--max-per-request",
+    ] {
+        assert!(
+            !decode.iter().any(|o| o == untaken),
+            "decode shows {untaken}"
+        );
+    }
+    let coils = options(&help("read-coils"));
+    assert!(coils.iter().any(|o| o == "--poll") && coils.iter().any(|o| o == "--baud"));
+    assert!(
+        !coils.iter().any(|o| o == "--type" || o == "--order"),
+        "{coils:?}"
+    );
+    let encode = options(&help("encode write-register"));
+    assert!(encode.iter().any(|o| o == "--type") && encode.iter().any(|o| o == "--mode"));
+    assert!(
+        !encode.iter().any(|o| o == "--timeout" || o == "--baud"),
+        "{encode:?}"
+    );
+
+    // Typed before or after the command name, an option the command does not take is refused.
+    refused_with(
+        "decode --poll 1s 11 03 00 6B 00 03 76 87",
+        "decode does not take --poll (see 'mbtool decode --help' for the options it takes)",
+    );
+    refused_with(
+        "-b 9600 decode 11 03 00 6B 00 03 76 87",
+        "decode does not take --baud (see 'mbtool decode --help' for the options it takes)",
+    );
+    refused_with(
+        "--port sim read-coils 17 000020 3 --type f32",
+        "read-coils does not take --type (see 'mbtool read-coils --help' for the options it takes)",
+    );
+    refused_with(
+        "--port sim write-register 17 400002 3 --poll 1s",
+        "write-register does not take --poll (see 'mbtool write-register --help' for the options it takes)",
+    );
+    refused_with(
+        "encode --timeout 2s read-holding 17 400108 3",
+        "encode read-holding does not take --timeout (see 'mbtool encode read-holding --help' for the options it takes)",
+    );
+    // A value from the environment, exported for a whole shell session, is never refused.
+    let output = mbtool()
+        .env("MBTOOL_PORT", "sim")
+        .env("MBTOOL_BAUD", "9600")
+        .args(["decode", "11 03 00 6B 00 03 76 87"])
+        .output()
+        .expect("mbtool runs");
+    assert!(output.status.success(), "{output:?}");
+    let (code, stdout, _) = run("encode --port tcp://plc1 read-holding 17 400108 3");
+    assert_eq!(
+        (code, stdout.trim()),
+        (0, "00 01 00 00 00 06 11 03 00 6B 00 03")
+    );
+}
+
+#[test]
 fn a_mistyped_command_suggests_the_nearest_one() {
     refused_with(
         "read-holdin 17 1",

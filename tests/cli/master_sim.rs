@@ -117,9 +117,6 @@ fn polling_counts_and_summarises() {
         "{stderr}"
     );
     assert!(stderr.contains("response time min"), "{stderr}");
-    // --poll is for reads only.
-    let (code, out) = run("write-register 17 400002 3 --poll 1s");
-    assert_eq!(code, 2, "{out}");
 }
 
 #[test]
