@@ -240,10 +240,18 @@ const DECODE_ABOUT: &str = "\
 Decode Modbus frames given as arguments, or one per line on standard input.
 
 A frame may be hex bytes in any common spelling (11 03 00 6B 00 03 76 87, 1103006B00037687, \
-0x11,0x03,...), an ASCII frame as text (:1103006B00037E), or the hex of an ASCII frame's \
-bytes (3A 31 31 ...). The framing (RTU, ASCII, TCP) is detected unless --mode says; request \
-or response is inferred from the bytes, and a frame that reads both ways says so \
-(--direction settles it).
+0x11,0x03,..., 11:03:00:6B as Wireshark copies it, 11-03-00-6B, [11][03]... as libmodbus \
+prints it, {0x11, 0x03, ...} from C source), an ASCII frame as text (:1103006B00037E), or \
+the hex of an ASCII frame's bytes (3A 31 31 ...).
+
+Lines from logs are read as they are: the frame is the longest run of hex bytes on the line, \
+and what stands around it (a time stamp, words such as CRC ok, a # comment) is set aside. A \
+direction mark before it (> or TX for a request, < or RX for a response, as in mbtool's own \
+-v trace) settles which way it went. A line that starts with # is a comment. Frames glued \
+together on one line are split as sniff splits them.
+
+The framing (RTU, ASCII, TCP) is detected unless --mode says; request or response is \
+inferred from the bytes, and a frame that reads both ways says so (--direction settles it).
 
 Exit status 4 when any frame fails its checksum or is malformed; 2 when a line is not hex \
 (which outranks 4).";

@@ -7,9 +7,10 @@ use anyhow::Result;
 use mbtool::cli::{Cli, DecodeArgs};
 use mbtool::lines::{Line, Lines};
 use mbtool::output::{self, decode::DecodeWriter};
+use mbtool_core::codec::framing::split_glued;
 use mbtool_core::codec::{limits, Direction, Mode};
-use mbtool_core::describe::describe_frame;
-use mbtool_core::model::hexinput::frame_bytes;
+use mbtool_core::describe::{describe_frame, FrameReport};
+use mbtool_core::model::hexinput::read_line;
 
 /// Longer lines cannot be a frame: even spaced hex of the longest ASCII frame is shorter.
 const MAX_LINE: usize = 4 * limits::MAX_ASCII_ADU;
@@ -19,7 +20,6 @@ struct Decoder {
     direction: Option<Direction>,
     writer: DecodeWriter,
     out: Box<dyn Write>,
-    bytes: Vec<u8>,
     frames: u64,
     failed: u64,
     unreadable: u64,
@@ -28,19 +28,40 @@ struct Decoder {
 impl Decoder {
     /// Decodes one line (or argument); `place` names it in error messages.
     fn line(&mut self, text: &[u8], place: impl Fn() -> String) -> io::Result<()> {
-        if text.trim_ascii().is_empty() {
-            return Ok(());
+        let frame = match read_line(text) {
+            Ok(Some(frame)) => frame,
+            Ok(None) => return Ok(()),
+            Err(error) => {
+                self.unreadable += 1;
+                mbtool::note!("mbtool: {}: {error}", place());
+                return Ok(());
+            }
+        };
+        let direction = self.direction.or(frame.direction);
+        let report = describe_frame(&frame.bytes, self.mode, direction);
+        if !report.valid {
+            // Frames glued together on one line are shown one by one, as sniff finds them.
+            let modes = match self.mode {
+                Some(mode) => vec![mode],
+                None => vec![Mode::Rtu, Mode::Tcp, Mode::Ascii],
+            };
+            if let Some((mode, frames)) = modes
+                .into_iter()
+                .find_map(|mode| split_glued(mode, &frame.bytes).map(|frames| (mode, frames)))
+            {
+                for bytes in frames {
+                    self.show(&bytes, &describe_frame(&bytes, Some(mode), direction))?;
+                }
+                return Ok(());
+            }
         }
-        self.bytes.clear();
-        if let Err(error) = frame_bytes(text, &mut self.bytes) {
-            self.unreadable += 1;
-            mbtool::note!("mbtool: {}: {error}", place());
-            return Ok(());
-        }
-        let report = describe_frame(&self.bytes, self.mode, self.direction);
+        self.show(&frame.bytes, &report)
+    }
+
+    fn show(&mut self, bytes: &[u8], report: &FrameReport) -> io::Result<()> {
         self.frames += 1;
         self.failed += u64::from(!report.valid);
-        self.writer.write(&mut self.out, &self.bytes, &report)
+        self.writer.write(&mut self.out, bytes, report)
     }
 
     fn too_long(&mut self, place: String) {
@@ -57,7 +78,6 @@ pub fn run(cli: &Cli, args: &DecodeArgs) -> Result<u8> {
         direction: args.direction.map(Direction::from),
         writer: DecodeWriter::new(output::Style::of(cli)),
         out: output::stdout(),
-        bytes: Vec::with_capacity(limits::MAX_ASCII_ADU),
         frames: 0,
         failed: 0,
         unreadable: 0,
@@ -76,9 +96,10 @@ pub fn run(cli: &Cli, args: &DecodeArgs) -> Result<u8> {
         }
     } else {
         // Arguments: one frame per argument, unless the frame was split into words
-        // (`mbtool decode 11 03 00 6B ...`), which is one frame.
+        // (`mbtool decode 11 03 00 6B ...`, `mbtool decode TX 11 03 ...`): a lone byte is no
+        // frame, so words with one among them are one line.
         let joined;
-        let frames: Vec<&str> = if args.frames.iter().all(|f| f.trim().len() <= 2) {
+        let frames: Vec<&str> = if args.frames.iter().any(|f| f.trim().len() <= 2) {
             joined = args.frames.join(" ");
             vec![joined.as_str()]
         } else {

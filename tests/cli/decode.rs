@@ -409,3 +409,86 @@ fn an_rtu_frame_from_slave_58_is_shown_as_hex_though_it_starts_with_a_colon() {
     assert_eq!(value["slave"], 58);
     assert_eq!(value["mode"], "rtu");
 }
+
+/// A log as commissioning tools and libraries write it: each line decodes to the frame
+/// on it, whatever stands around it, and a direction mark settles a frame that reads both
+/// ways.
+#[test]
+fn log_lines_are_read_as_they_are() {
+    // Function 06: the request and its echo are the same bytes, so only the mark tells.
+    let write = rtu(&[0x11, 0x06, 0x00, 0x01, 0x00, 0x03]);
+    let log = format!(
+        "# commissioning log, panel 3\n\
+         [    0.000021] > 11 03 00 6B 00 03 76 87\n\
+         [    0.000190] < 11 03 06 02 2B 00 00 00 64 C8 BA\n\
+         [11][03][00][6B][00][03][76][87]\n\
+         <11><03><06><02><2B><00><00><00><64><C8><BA>\n\
+         11:03:00:6b:00:03:76:87\n\
+         11-03-00-6B-00-03-76-87\n\
+         {{0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87}};\n\
+         01 03 03 E8 00 02 44 7B  CRC ok  # t=0 req slave=1 fc=3\n\
+         2026-11-23 08:15:02.125 TX: {write}\n\
+         2026-11-23 08:15:02.141 RX: {write}\n\
+         \n\
+         11 03 00 6B 00 03 76 87 11 03 06 02 2B 00 00 00 64 C8 BA\n"
+    );
+    let run = decode(&["--json"], log.as_bytes());
+    assert_eq!((run.code, run.stderr.as_str()), (0, ""), "{}", run.stdout);
+    let frames = json_lines(&run.stdout);
+    let seen: Vec<(String, u64, bool)> = frames
+        .iter()
+        .map(|f| {
+            let kind = f["kind"].as_str().unwrap().to_string();
+            (kind, f["slave"].as_u64().unwrap(), f["valid"] == true)
+        })
+        .collect();
+    let want = |kind: &str, slave| (kind.to_string(), slave, true);
+    assert_eq!(
+        seen,
+        [
+            want("request", 17),
+            want("response", 17),
+            want("request", 17),
+            want("response", 17),
+            want("request", 17),
+            want("request", 17),
+            want("request", 17),
+            want("request", 1),
+            want("request", 17),
+            want("response", 17),
+            // Two frames glued on one line, split as sniff splits them.
+            want("request", 17),
+            want("response", 17),
+        ]
+    );
+    // A direction from the log is no guess: the frame is not called ambiguous.
+    assert!(frames[8].get("ambiguous").is_none(), "{}", frames[8]);
+    assert_eq!(frames[1]["values"], serde_json::json!([555, 0, 100]));
+}
+
+/// What mbtool's own `-v` prints can be piped straight back into `decode`.
+#[test]
+fn the_verbose_trace_decodes() {
+    let trace = mbtool()
+        .args(["--port", "sim", "read-holding", "17", "400108", "3", "-v"])
+        .output()
+        .unwrap();
+    assert!(trace.status.success());
+    let run = decode(&["--json"], &trace.stderr);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let frames = json_lines(&run.stdout);
+    let kinds: Vec<&str> = frames.iter().map(|f| f["kind"].as_str().unwrap()).collect();
+    assert_eq!(kinds, ["request", "response"]);
+    assert_eq!(frames[1]["values"], serde_json::json!([555, 0, 100]));
+}
+
+/// A line whose hex bytes are too few for a frame, such as a sniffer's noise, is named.
+#[test]
+fn a_log_line_without_a_frame_is_named() {
+    let run = decode(&[], b"noise: 00  # t=8339\n11 03 00 6B 00 03 76 87\n");
+    assert_eq!(run.code, 2);
+    assert_eq!(
+        run.stderr,
+        "mbtool: line 1: no frame: the line's longest run of hex bytes, 00, is too short for one\n"
+    );
+}

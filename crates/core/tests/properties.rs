@@ -8,7 +8,7 @@ use mbtool_core::codec::{
     Direction, Envelope, Exception, ExceptionCode, Frame, Mode, Pdu, Reading, Request, Response,
 };
 use mbtool_core::describe::describe_frame;
-use mbtool_core::model::hexinput::frame_bytes;
+use mbtool_core::model::hexinput::read_line;
 use proptest::collection::vec;
 use proptest::prelude::*;
 
@@ -282,7 +282,7 @@ proptest! {
             let _ = decode_stream(mode, Direction::Request, &bytes, 3);
         }
         let _ = Reading::infer(&bytes);
-        let _ = frame_bytes(&bytes, &mut Vec::new());
+        let _ = read_line(&bytes);
     }
 
     #[test]
@@ -298,10 +298,31 @@ proptest! {
     }
 
     #[test]
+    fn a_frame_on_a_log_line_reads_back_whatever_its_spelling_and_its_words(
+        bytes in vec(any::<u8>(), 4..60),
+        spelling in 0..5usize,
+        mark in 0..3usize,
+    ) {
+        let hex: Vec<String> = bytes.iter().map(|b| format!("{b:02X}")).collect();
+        let spelled = match spelling {
+            0 => hex.join(" "),
+            1 => hex.join(":"),
+            2 => hex.iter().map(|h| format!("[{h}]")).collect(),
+            3 => format!("{{{}}};", hex.iter().map(|h| format!("0x{h}")).collect::<Vec<_>>().join(", ")),
+            _ => hex.join("-"),
+        };
+        let (word, direction) = [("", None), ("TX:", Some(Direction::Request)), ("<", Some(Direction::Response))][mark];
+        let text = format!("2026-11-23 08:15:02.125 {word} {spelled}  CRC ok  # from the panel");
+        let frame = read_line(text.as_bytes()).map_err(|e| TestCaseError::fail(format!("{text}: {e}")))?;
+        let frame = frame.ok_or_else(|| TestCaseError::fail(text.clone()))?;
+        prop_assert_eq!(frame.bytes, bytes, "{}", text);
+        prop_assert_eq!(frame.direction, direction);
+    }
+
+    #[test]
     fn arbitrary_text_never_panics(text in ".{0,300}") {
-        let mut bytes = Vec::new();
-        if frame_bytes(text.as_bytes(), &mut bytes).is_ok() {
-            let _ = describe_frame(&bytes, None, None);
+        if let Ok(Some(frame)) = read_line(text.as_bytes()) {
+            let _ = describe_frame(&frame.bytes, None, frame.direction);
         }
     }
 }

@@ -1088,9 +1088,48 @@ fn lrc_holds(frame: &[u8]) -> bool {
     }
 }
 
+/// The frames of bytes given whole and without timing, such as a line of a log that holds
+/// a request and its answer glued together: `Some` when the bytes are two or more valid
+/// frames of `mode` end to end and nothing else.
+pub fn split_glued(mode: Mode, bytes: &[u8]) -> Option<Vec<Vec<u8>>> {
+    let mut framer = Framer::new(mode, 0.0, 0);
+    let mut events = Vec::new();
+    framer.push(bytes, &mut events);
+    framer.finish(&mut events);
+    let frames: Vec<Vec<u8>> = events
+        .into_iter()
+        .map(|event| match event {
+            Event::Frame(found) if found.broken.is_none() => Some(found.bytes),
+            _ => None,
+        })
+        .collect::<Option<_>>()?;
+    (frames.len() >= 2).then_some(frames)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn frames_glued_on_one_line_are_split_and_nothing_else_is() {
+        let request = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
+        let response = [
+            0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64, 0xC8, 0xBA,
+        ];
+        let glued = [&request[..], &response[..]].concat();
+        assert_eq!(
+            split_glued(Mode::Rtu, &glued),
+            Some(vec![request.to_vec(), response.to_vec()])
+        );
+        assert_eq!(split_glued(Mode::Rtu, &request), None);
+        let mut bad = glued.clone();
+        bad[12] ^= 1;
+        assert_eq!(split_glued(Mode::Rtu, &bad), None);
+        assert_eq!(
+            split_glued(Mode::Rtu, &[&glued[..], &[0xFF][..]].concat()),
+            None
+        );
+    }
     use crate::codec::checksum::crc16;
 
     const REQUEST: [u8; 8] = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];

@@ -1,9 +1,11 @@
 //! Frames as people paste them: `11 03 00 6B`, `1103006B`, `0x11,0x03`, `\x11\x03`, or an
-//! ASCII frame as text (`:1103006B00037E`).
+//! ASCII frame as text (`:1103006B00037E`); and frames as logs print them, with a time,
+//! a direction and words around them.
 
 use thiserror::Error;
 
 use crate::codec::adu::hex_digit;
+use crate::codec::Direction;
 
 /// Why pasted text is no run of hex bytes.
 #[derive(Clone, Debug, Error, PartialEq, Eq)]
@@ -20,6 +22,9 @@ pub enum HexError {
     /// A character that is no hex digit, with its column (1-based).
     #[error("'{0}' at column {1} is not a hex digit")]
     NotHex(String, usize),
+    /// A log line whose hex bytes are too few for a frame.
+    #[error("no frame: the line's longest run of hex bytes, {0}, is too short for one")]
+    TooShort(String),
 }
 
 fn is_separator(b: u8) -> bool {
@@ -100,15 +105,214 @@ pub fn parse_hex_words(words: &[String]) -> Result<Vec<u8>, HexError> {
     Ok(out)
 }
 
-/// The bytes of one frame as written on a line: an ASCII frame as its own characters,
-/// anything else as hex.
-pub fn frame_bytes(line: &[u8], out: &mut Vec<u8>) -> Result<(), HexError> {
-    let line = line.trim_ascii();
-    if line.first() == Some(&b':') {
-        out.extend_from_slice(line);
-        return Ok(());
+/// The shortest run of hex bytes taken for a frame among other words on a log line: an
+/// RTU address, function and CRC.
+const SHORTEST_FRAME: usize = 4;
+
+/// The frame a line holds, as [`read_line`] finds it.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct LineFrame {
+    /// The frame's bytes: the hex spelled out, or an ASCII frame's own characters (CR LF
+    /// after each, when several are glued together).
+    pub bytes: Vec<u8>,
+    /// The way the log says the frame went: `>` or `TX` before it is a request, `<` or
+    /// `RX` a response.
+    pub direction: Option<Direction>,
+}
+
+/// How the bytes of a run are spelled; a run keeps to one spelling, so that a time such
+/// as `12:03:04` does not join the frame after it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Spelling {
+    /// `11 03`, `1103`, `11,03`.
+    Plain,
+    /// `0x11`, `\x11`.
+    Prefixed,
+    /// `11:03:00`, as Wireshark copies bytes.
+    Colons,
+    /// `11-03-00`.
+    Hyphens,
+    /// `[11][03]`, `<11><03>`, as libmodbus prints them.
+    Bracketed,
+}
+
+/// A run of hex bytes on a line, or an ASCII frame.
+#[derive(Default)]
+struct Run {
+    bytes: Vec<u8>,
+    spelling: Option<Spelling>,
+    direction: Option<Direction>,
+    ascii: bool,
+}
+
+/// A direction mark: `>`, `<`, `TX`, `RX`, `Tx:`, `[RX]`.
+fn direction_mark(word: &[u8]) -> Option<Direction> {
+    let word = word.strip_suffix(b":").unwrap_or(word);
+    let word = word
+        .strip_prefix(b"[")
+        .and_then(|w| w.strip_suffix(b"]"))
+        .unwrap_or(word);
+    match word.to_ascii_uppercase().as_slice() {
+        b">" | b"TX" => Some(Direction::Request),
+        b"<" | b"RX" => Some(Direction::Response),
+        _ => None,
     }
-    parse_hex(line, out)
+}
+
+/// The bytes one piece of a word spells in one spelling, or `None` when it is no hex.
+fn piece_bytes(piece: &[u8], bracketed: bool) -> Option<(Spelling, Vec<u8>)> {
+    let mut bytes = Vec::new();
+    for (separator, spelling) in [(b':', Spelling::Colons), (b'-', Spelling::Hyphens)] {
+        if piece.contains(&separator) {
+            for pair in piece.split(|b| *b == separator) {
+                let [high, low] = pair else { return None };
+                bytes.push(hex_digit(*high)? << 4 | hex_digit(*low)?);
+            }
+            return Some((spelling, bytes));
+        }
+    }
+    parse_hex(piece, &mut bytes).ok()?;
+    let spelling =
+        if piece.starts_with(b"0x") || piece.starts_with(b"0X") || piece.starts_with(b"\\x") {
+            Spelling::Prefixed
+        } else if bracketed {
+            Spelling::Bracketed
+        } else {
+            Spelling::Plain
+        };
+    Some((spelling, bytes))
+}
+
+/// An ASCII frame written as text, `:1103006B00037E`, or several glued together: their
+/// characters, each frame ended by CR LF.
+fn ascii_frames(word: &[u8]) -> Option<Vec<u8>> {
+    let body = word.strip_prefix(b":")?;
+    let mut bytes = Vec::with_capacity(word.len() + 2);
+    for frame in body.split(|b| *b == b':') {
+        if frame.len() < 2 || !frame.iter().all(u8::is_ascii_hexdigit) {
+            return None;
+        }
+        bytes.push(b':');
+        bytes.extend_from_slice(frame);
+        bytes.extend_from_slice(b"\r\n");
+    }
+    Some(bytes)
+}
+
+/// Reads one line of pasted frames or of a log. A line that is all hex is one frame as
+/// given, and one that starts with ':' an ASCII frame. On any other line the frame is the
+/// longest run of hex bytes (or an ASCII frame), and what stands around it, a time stamp,
+/// `CRC ok`, a `#` comment, is set aside; a direction mark before it says which way it
+/// went. `Ok(None)`: a blank line, or a comment (`#` first).
+pub fn read_line(line: &[u8]) -> Result<Option<LineFrame>, HexError> {
+    let line = line.trim_ascii();
+    if line.is_empty() || line.starts_with(b"#") {
+        return Ok(None);
+    }
+    let line = line
+        .split(|b| *b == b'#')
+        .next()
+        .unwrap_or_default()
+        .trim_ascii();
+    if line.starts_with(b":") {
+        return Ok(Some(LineFrame {
+            bytes: ascii_frames(line).unwrap_or_else(|| line.to_vec()),
+            direction: None,
+        }));
+    }
+    let mut strict = Vec::new();
+    let strict_error = match parse_hex(line, &mut strict) {
+        Ok(()) => {
+            return Ok(Some(LineFrame {
+                bytes: strict,
+                direction: None,
+            }))
+        }
+        Err(error) => error,
+    };
+    // A byte mistyped among hex bytes (`8G`, `1O`) is a mistake to point at, not a word
+    // of a log to set aside.
+    if line.split(u8::is_ascii_whitespace).any(mistyped_byte) {
+        return Err(strict_error);
+    }
+    match longest_run(line) {
+        Some(run) if run.ascii || run.bytes.len() >= SHORTEST_FRAME => Ok(Some(LineFrame {
+            bytes: run.bytes,
+            direction: run.direction,
+        })),
+        Some(run) => Err(HexError::TooShort(crate::describe::spaced_hex(&run.bytes))),
+        None => Err(strict_error),
+    }
+}
+
+/// A word of one or two letters and digits, some hex and some not.
+fn mistyped_byte(word: &[u8]) -> bool {
+    (1..=2).contains(&word.len())
+        && word.iter().all(u8::is_ascii_alphanumeric)
+        && word.iter().any(u8::is_ascii_hexdigit)
+        && !word.iter().all(u8::is_ascii_hexdigit)
+}
+
+/// The longest run of hex bytes on a log line, or its ASCII frame, with the direction
+/// mark last seen before it.
+fn longest_run(line: &[u8]) -> Option<Run> {
+    let mut best: Option<Run> = None;
+    let mut run = Run::default();
+    let mut mark = None;
+    let keep = |run: &mut Run, best: &mut Option<Run>| {
+        let run = std::mem::take(run);
+        let longer = best
+            .as_ref()
+            .is_none_or(|b| run.bytes.len() > b.bytes.len());
+        if !run.bytes.is_empty() && longer {
+            *best = Some(run);
+        }
+    };
+    for word in line
+        .split(u8::is_ascii_whitespace)
+        .filter(|w| !w.is_empty())
+    {
+        if let Some(direction) = direction_mark(word) {
+            keep(&mut run, &mut best);
+            mark = Some(direction);
+            continue;
+        }
+        if let Some(bytes) = ascii_frames(word) {
+            keep(&mut run, &mut best);
+            run = Run {
+                bytes,
+                spelling: None,
+                direction: mark,
+                ascii: true,
+            };
+            keep(&mut run, &mut best);
+            continue;
+        }
+        let bracketed = word.iter().any(|b| matches!(b, b'[' | b'<'));
+        let pieces = word.split(|b| {
+            matches!(
+                b,
+                b'[' | b']' | b'<' | b'>' | b'{' | b'}' | b'(' | b')' | b',' | b';'
+            )
+        });
+        for piece in pieces.filter(|p| !p.is_empty()) {
+            match piece_bytes(piece, bracketed) {
+                Some((spelling, bytes)) => {
+                    if run.spelling.is_some_and(|s| s != spelling) {
+                        keep(&mut run, &mut best);
+                    }
+                    if run.bytes.is_empty() {
+                        run.direction = mark;
+                    }
+                    run.spelling = Some(spelling);
+                    run.bytes.extend_from_slice(&bytes);
+                }
+                None => keep(&mut run, &mut best),
+            }
+        }
+    }
+    keep(&mut run, &mut best);
+    best
 }
 
 #[cfg(test)]
@@ -137,5 +341,85 @@ mod tests {
         assert_eq!(hex("  "), Err(HexError::Empty));
         assert!(matches!(hex("11 é"), Err(HexError::NotHex(c, _)) if c == "é"));
         assert!(matches!(hex("0x"), Err(HexError::NoDigits(_))));
+    }
+    const REQUEST: [u8; 8] = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
+
+    fn line(text: &str) -> Result<Option<LineFrame>, HexError> {
+        read_line(text.as_bytes())
+    }
+
+    fn frame(bytes: &[u8], direction: Option<Direction>) -> Result<Option<LineFrame>, HexError> {
+        Ok(Some(LineFrame {
+            bytes: bytes.to_vec(),
+            direction,
+        }))
+    }
+
+    #[test]
+    fn log_spellings_give_the_frame() {
+        for text in [
+            "11 03 00 6B 00 03 76 87",
+            "[11][03][00][6B][00][03][76][87]",
+            "<11><03><00><6B><00><03><76><87>",
+            "11:03:00:6b:00:03:76:87",
+            "11-03-00-6B-00-03-76-87",
+            "{0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87};",
+            "11 03 00 6B 00 03 76 87  CRC ok  # t=0 req slave=17 fc=3",
+            "frame 1103006B00037687 sent",
+            "12:03:04 11 03 00 6B 00 03 76 87",
+            "2024-01-05 12:03:04.512 DEBUG modbus: 11 03 00 6B 00 03 76 87 (8 bytes)",
+        ] {
+            assert_eq!(line(text), frame(&REQUEST, None), "{text}");
+        }
+    }
+
+    #[test]
+    fn a_direction_mark_before_the_frame_says_which_way_it_went() {
+        let request = frame(&REQUEST, Some(Direction::Request));
+        let response = frame(&REQUEST, Some(Direction::Response));
+        assert_eq!(line("[    0.000021] > 11 03 00 6B 00 03 76 87"), request);
+        assert_eq!(line("[    0.000190] < 11 03 00 6B 00 03 76 87"), response);
+        assert_eq!(line("TX 11 03 00 6B 00 03 76 87"), request);
+        assert_eq!(line("Rx: 11 03 00 6B 00 03 76 87"), response);
+        assert_eq!(line("12:00:01 [RX] 11:03:00:6B:00:03:76:87"), response);
+        // Only a mark before the frame counts.
+        assert_eq!(
+            line("11 03 00 6B 00 03 76 87 < reply"),
+            frame(&REQUEST, None)
+        );
+    }
+
+    #[test]
+    fn ascii_frames_as_text_alone_glued_or_logged() {
+        let one = frame(b":1103006B00037E\r\n", None);
+        assert_eq!(line(":1103006B00037E"), one);
+        assert_eq!(
+            line("[  0.000100] > :1103006B00037E"),
+            frame(b":1103006B00037E\r\n", Some(Direction::Request))
+        );
+        assert_eq!(
+            line(":1103006B00037E:110306022B0000006455"),
+            frame(b":1103006B00037E\r\n:110306022B0000006455\r\n", None)
+        );
+    }
+
+    #[test]
+    fn comments_blank_lines_and_lines_without_a_frame() {
+        assert_eq!(line("# a comment"), Ok(None));
+        assert_eq!(line("   "), Ok(None));
+        assert_eq!(
+            line("11 03 00 6B 00 03 76 87 # the request"),
+            frame(&REQUEST, None)
+        );
+        assert_eq!(
+            line("noise: 00  # t=8339"),
+            Err(HexError::TooShort("00".into()))
+        );
+        assert!(matches!(line("hello world"), Err(HexError::NotHex(c, 1)) if c == "h"));
+        // A mistyped byte is pointed at, not set aside as a word of a log.
+        assert!(
+            matches!(line("11 03 00 6B 00 03 76 8G"), Err(HexError::NotHex(c, 23)) if c == "G")
+        );
+        assert!(matches!(line("11 O3 00 6B 00 03 76 87"), Err(HexError::NotHex(c, 4)) if c == "O"));
     }
 }
