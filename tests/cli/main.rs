@@ -15,6 +15,7 @@ mod master_pymodbus;
 mod master_sim;
 mod master_tcp;
 mod master_tokio;
+mod readme;
 mod serve;
 mod serve_framing;
 mod sniff;
