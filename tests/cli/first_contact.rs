@@ -150,6 +150,31 @@ fn each_command_shows_and_takes_only_its_options() {
     );
 }
 
+/// What each command's help says of its arguments fits that command.
+#[test]
+fn each_command_describes_its_own_arguments() {
+    let arguments = |command: &str| -> String {
+        let help = run(&format!("{command} --help")).1;
+        let start = help.find("Arguments:").unwrap_or(0);
+        let end = help.find("Options:").unwrap_or(help.len());
+        help[start..end].to_string()
+    };
+    for (command, says, never) in [
+        ("read-coils", "000020", "400108"),
+        ("read-inputs", "100197", "400108"),
+        ("read-input-registers", "300009", "400108"),
+        ("read", "<REFERENCE>", "0x6B"),
+        ("write-registers", "--type", "coil"),
+        ("write-coils", "10110", "--type"),
+        ("write", "<REFERENCE>", "0x6B"),
+        ("encode read-coils", "000020", "400108"),
+    ] {
+        let text = arguments(command);
+        assert!(text.contains(says), "{command}: {text}");
+        assert!(!text.contains(never), "{command}: {text}");
+    }
+}
+
 #[test]
 fn a_mistyped_command_suggests_the_nearest_one() {
     refused_with(
