@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Frames per second of `mbtool decode --json` over a file of 1,000,000 RTU frames (the
-# worked frames of the manuals, repeated), with output to /dev/null.
+# Frames per second of `mbtool decode` over a file of 1,000,000 RTU frames (the worked
+# frames of the manuals, repeated), with output to /dev/null: as bare hex, and as log
+# lines (mbtool's own -v trace, a time stamp and a direction mark before each frame).
 #
 #   bash bench/decode.sh [FRAMES]
 set -euo pipefail
@@ -24,12 +25,16 @@ out = sys.stdout
 for i in range(n):
     out.write(worked[i % len(worked)] + "\n")
 PY
-size=$(du -h "$work/frames.txt" | cut -f1)
-for format in json values; do
-    start=$(date +%s.%N)
-    ./target/release/mbtool decode -o "$format" < "$work/frames.txt" > /dev/null
-    end=$(date +%s.%N)
-    python3 -c "
+awk '{ printf "[%12.6f] %s %s\n", NR / 1000, (NR % 2 ? ">" : "<"), $0 }' \
+    "$work/frames.txt" > "$work/trace.txt"
+for input in frames trace; do
+    size=$(du -h "$work/$input.txt" | cut -f1)
+    for format in json values; do
+        start=$(date +%s.%N)
+        ./target/release/mbtool decode -o "$format" < "$work/$input.txt" > /dev/null
+        end=$(date +%s.%N)
+        python3 -c "
 s = $end - $start
-print(f'mbtool decode -o $format: $frames frames ($size) in {s:.2f} s = {$frames / s:,.0f} frames/s')"
+print(f'mbtool decode -o $format, $input: $frames frames ($size) in {s:.2f} s = {$frames / s:,.0f} frames/s')"
+    done
 done
