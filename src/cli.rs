@@ -201,7 +201,6 @@ pub struct PollArgs {
         id = "poll_count",
         global = true,
         value_name = "N",
-        requires = "poll",
         value_parser = whole::<u64>(1, i128::from(u64::MAX))
     )]
     pub count: Option<u64>,
@@ -211,6 +210,14 @@ pub struct PollArgs {
 pub enum Command {
     #[command(flatten)]
     Request(RequestCommand),
+
+    /// Ask a device who it is: identification (43/14), server id (17)
+    #[command(long_about = INFO_ABOUT)]
+    Info(InfoArgs),
+
+    /// A device's health: round trips (08/00), its counters (08), status (07)
+    #[command(long_about = DIAG_ABOUT)]
+    Diag(DiagArgs),
 
     /// Decode frames given as arguments or on standard input
     #[command(long_about = DECODE_ABOUT)]
@@ -235,6 +242,30 @@ pub enum Command {
     #[command(hide = true)]
     Generate(GenerateArgs),
 }
+
+const INFO_ABOUT: &str = "\
+Ask a device who it is. Read device identification (function 43/14) at the basic level, \
+then at the regular or extended level when the device says it has one, following 'more \
+follows' across as many requests as the objects need; and report server id (function 17): \
+the id byte, the run status, and the rest as text where printable, else hex. Objects are \
+shown by name (VendorName, ProductCode, MajorMinorRevision, VendorUrl, ProductName, \
+ModelName, UserApplicationName), private ones by number (0x80). Text from the device is \
+escaped, never printed raw.
+
+A function the device does not have is shown as such, and is no failure as long as the \
+other answered. Exit status 3 when neither answered in time; 10+N when the device refused \
+both with exception N.";
+
+const DIAG_ABOUT: &str = "\
+A device's health, from the device itself. Times --count round trips of return query data \
+(function 08/00; 5 by default: min, mean, max, and whether every echo came back intact), \
+reads the diagnostic counters (08/0B-12: bus messages, bus communication errors, bus \
+exception errors, slave messages, slave no response, NAK, busy, character overruns) and the \
+exception status (07). A counter the device does not keep is shown as such.
+
+--clear then clears the counters (08/0A), the only thing diag ever changes on a device.
+
+Exit status 3 when the device does not answer.";
 
 const DECODE_ABOUT: &str = "\
 Decode Modbus frames given as arguments, or one per line on standard input.
@@ -472,6 +503,21 @@ pub struct RawArgs {
 }
 
 #[derive(Clone, Debug, Args)]
+pub struct InfoArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct DiagArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+    /// After reading them, clear the device's counters (08/0A)
+    #[arg(long)]
+    pub clear: bool,
+}
+
+#[derive(Clone, Debug, Args)]
 pub struct DecodeArgs {
     /// Frames to decode; without any, one frame per line of standard input
     pub frames: Vec<String>,
@@ -578,6 +624,11 @@ pub struct ServeArgs {
     /// Device identification: product code
     #[arg(long, default_value = "mbtool-sim")]
     pub product_code: String,
+
+    /// Device identification: any object, by name or id (VendorUrl=https://example.com,
+    /// ProductName=Pump, 0x80=serial 4711); repeatable
+    #[arg(long, value_name = "NAME=VALUE", value_parser = mbtool_core::slave::parse_object)]
+    pub identity: Vec<(u8, Vec<u8>)>,
 }
 
 #[derive(Clone, Debug, Args)]
@@ -625,7 +676,8 @@ fn choice<T: Choice + Clone + Send + Sync>() -> impl clap::builder::TypedValuePa
 }
 
 /// What an argument shared by several commands means in each: (command, argument id,
-/// value name, help). The derived definitions above say it for holding registers.
+/// value name, help). The derived definitions above say it for holding registers, and
+/// `--count` for polling.
 const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
     ("read-coils", "address", "ADDRESS", "First coil (000020, 19) or an inclusive range (000020-000056)"),
     ("read-coils", "count", "COUNT", "How many coils to read [default: 1]"),
@@ -638,6 +690,7 @@ const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
     ("write-coils", "values", "VALUES", "Each 0/1/on/off, or one bit string such as 10110"),
     ("write-registers", "values", "VALUES", "The values, each converted by --type"),
     ("write", "address", "REFERENCE", "A coil (000020) or holding register (400001) reference, or a range that holds exactly the values given"),
+    ("diag", "poll_count", "N", "How many round trips of return query data to time [default: 5]"),
 ];
 
 /// A built command's argument `id` of `command` (also under `encode`), described as
@@ -650,7 +703,10 @@ pub fn with_argument_help(command: clap::Command) -> clap::Command {
                 .iter()
                 .find(|(command, id, ..)| *command == name && arg.get_id() == *id);
             match entry {
-                Some((_, _, value_name, help)) => arg.value_name(*value_name).help(*help),
+                Some((_, _, value_name, help)) => arg
+                    .value_name(*value_name)
+                    .help(*help)
+                    .help_heading(None::<&str>),
                 None => arg,
             }
         })
@@ -673,6 +729,8 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
         ["decode"] => &[&["mode"], FORMAT, REGISTERS],
         ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
         ["sniff" | "serve"] => &[LINE, FORMAT],
+        ["info"] => &[LINE, MASTER, FORMAT],
+        ["diag"] => &[LINE, MASTER, FORMAT, &["poll_count"]],
         // What the request command takes, less what only matters on the wire.
         ["encode", request] => {
             let wire = [LINE, MASTER, POLL].concat();

@@ -168,3 +168,36 @@ pub fn master(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
         },
     ))
 }
+
+/// A master on the port of the options, with what a timeout on it should tell.
+pub struct Connection {
+    pub master: Master,
+    pub endpoint: Endpoint,
+    pub mode: Mode,
+}
+
+/// Connects as the options say: the endpoint of `--port`, its framing, a master on it.
+pub fn connect(cli: &Cli) -> Result<Connection> {
+    let endpoint = endpoint(cli)?;
+    let mode = mode(cli, Some(&endpoint), Role::Master)?;
+    let master = master(cli, &endpoint, mode)?;
+    Ok(Connection {
+        master,
+        endpoint,
+        mode,
+    })
+}
+
+impl Connection {
+    /// Whether slave ids are TCP unit ids here.
+    pub fn is_tcp(&self) -> bool {
+        self.mode == Mode::Tcp
+    }
+
+    /// `error`, a timeout told with where and how the master asked and what usually
+    /// causes one there.
+    pub fn explain(&self, cli: &Cli, error: Error) -> Error {
+        let (tried, advice) = tried(cli, &self.endpoint, self.mode);
+        error.tried(tried, advice)
+    }
+}

@@ -90,7 +90,7 @@ fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
     message
 }
 
-/// `read-holding needs ADDRESS`; `--count` without `--poll` says what each count means.
+/// `read-holding needs ADDRESS`.
 fn missing(error: &clap::Error, subcommand: &str) -> String {
     let names: Vec<String> = match error.get(ContextKind::InvalidArg) {
         Some(ContextValue::Strings(args)) => args
@@ -103,11 +103,6 @@ fn missing(error: &clap::Error, subcommand: &str) -> String {
             .collect(),
         _ => Vec::new(),
     };
-    if names.iter().any(|name| name.starts_with("--poll")) {
-        return "--count N stops a --poll after N reads: give --poll INTERVAL too, or, for N \
-                values, give COUNT after the address (read-holding 17 400108 3)"
-            .into();
-    }
     let who = if subcommand.is_empty() {
         "mbtool"
     } else {

@@ -1,7 +1,9 @@
 //! One module per command: each wires the library's logic to its output.
 
 mod decode;
+mod diag;
 mod encode;
+mod info;
 mod request;
 mod serve;
 mod sniff;
@@ -13,6 +15,8 @@ use mbtool::cli::{Cli, Command};
 /// Runs the command; `Ok` carries the exit status of a command that finished its work.
 pub fn run(cli: Cli) -> Result<u8> {
     match &cli.command {
+        Command::Info(args) => info::run(&cli, args),
+        Command::Diag(args) => diag::run(&cli, args),
         Command::Decode(args) => decode::run(&cli, args),
         Command::Encode { request } => encode::run(&cli, request),
         Command::Request(request) => request::run(&cli, request),

@@ -21,24 +21,28 @@ use mbtool_core::model::address::{reference, Table};
 
 pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
     // The whole command line is checked before a port is opened.
+    if cli.poll.count.is_some() && cli.poll.poll.is_none() {
+        return Err(Error::usage(
+            "--count N stops a --poll after N reads: give --poll INTERVAL too, or, for N \
+             values, give COUNT after the address (read-holding 17 400108 3)",
+        )
+        .into());
+    }
     let plan = super::encode::plan_for(cli, request)?;
-    let endpoint = connection::endpoint(cli)?;
-    let mode = connection::mode(cli, Some(&endpoint), connection::Role::Master)?;
-    let mut master = connection::master(cli, &endpoint, mode)?;
+    let mut connection = connection::connect(cli)?;
+    let mode = connection.mode;
+    let master = &mut connection.master;
     if cli.output.verbose {
         master.trace(tracer(mode));
     }
     let mut out = output::stdout();
     let code = match (request, plan.reads) {
-        (RequestCommand::Raw(_), _) => raw(cli, &mut master, &plan, mode, &mut out),
-        (_, Some((table, address))) => reads(cli, &mut master, &plan, table, address, &mut out),
-        (_, None) => writes(cli, &mut master, &plan, &mut out),
+        (RequestCommand::Raw(_), _) => raw(cli, master, &plan, mode, &mut out),
+        (_, Some((table, address))) => reads(cli, master, &plan, table, address, &mut out),
+        (_, None) => writes(cli, master, &plan, &mut out),
     }
     .map_err(|error| match error.downcast::<Error>() {
-        Ok(error) => {
-            let (tried, advice) = connection::tried(cli, &endpoint, mode);
-            error.tried(tried, advice).into()
-        }
+        Ok(error) => connection.explain(cli, error).into(),
         Err(error) => error,
     })?;
     out.flush()?;
@@ -46,7 +50,7 @@ pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
 }
 
 /// `-v`: each frame on stderr with the seconds since the start.
-fn tracer(mode: Mode) -> mbtool_core::master::Tracer {
+pub fn tracer(mode: Mode) -> mbtool_core::master::Tracer {
     let start = Instant::now();
     Box::new(move |traffic, bytes| {
         let arrow = match traffic {

@@ -13,7 +13,7 @@ use mbtool::output::serve::write_entry;
 use mbtool_core::model::address::parse_reference_span;
 use mbtool_core::slave::faults::Faults;
 use mbtool_core::slave::server::{Link, Logger, Server};
-use mbtool_core::slave::{datafile, DataModel, Identity, Slave};
+use mbtool_core::slave::{datafile, DataModel, Slave};
 use mbtool_core::transport::serial::Serial;
 use mbtool_core::transport::Endpoint;
 
@@ -72,11 +72,11 @@ pub fn run(cli: &Cli, args: &ServeArgs) -> Result<u8> {
         args.slaves.clone()
     };
     let mut slave = Slave::new(&ids, data_model(args)?);
-    slave.identity = Identity {
-        vendor: args.vendor.clone(),
-        product_code: args.product_code.clone(),
-        ..Identity::default()
-    };
+    slave.identity.set(0x00, args.vendor.as_bytes());
+    slave.identity.set(0x01, args.product_code.as_bytes());
+    for (id, value) in &args.identity {
+        slave.identity.set(*id, value);
+    }
     let faults = Faults {
         delay: args.delay.unwrap_or_default(),
         drop: args.drop.unwrap_or(0.0),

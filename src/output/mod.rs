@@ -2,6 +2,7 @@
 //! Modbus; it only shows what the logic produced.
 
 pub mod decode;
+pub mod device;
 pub mod encode;
 pub mod read;
 pub mod serve;

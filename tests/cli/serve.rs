@@ -5,46 +5,12 @@
 use std::io::Write;
 use std::net::TcpStream;
 use std::process::Command as Process;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use crate::support::{
-    command_exists, free_port, peer_available, python_has, run_against, serve, values_of,
-    wait_for_listener, writes_read_back, PtyPair, Stopped,
+    command_exists, peer_available, python_has, run_against, serve, serve_pty, serve_tcp,
+    values_of, writes_read_back, PtyPair,
 };
-
-/// `mbtool serve` on 127.0.0.1; the connection options for a master.
-fn serve_tcp(extra: &[&str]) -> (Stopped, Vec<String>, u16) {
-    let port = free_port();
-    let address = format!("tcp://127.0.0.1:{port}");
-    let mut args = vec!["--port", address.as_str()];
-    args.extend_from_slice(extra);
-    let server = serve(&args);
-    assert!(
-        wait_for_listener(port, Duration::from_secs(10)),
-        "serve did not listen"
-    );
-    (server, vec!["--port".into(), address], port)
-}
-
-/// `mbtool serve` on one end of a pty pair; the connection options for the other end.
-fn serve_pty(pair: &PtyPair, extra: &[&str]) -> (Stopped, Vec<String>) {
-    let a = pair.a.display().to_string();
-    let mut args = vec!["--port", a.as_str()];
-    args.extend_from_slice(extra);
-    let server = serve(&args);
-    let master = vec!["--port".into(), pair.b.display().to_string()];
-    let mode: Vec<String> = extra
-        .windows(2)
-        .find(|w| w[0] == "--mode")
-        .map(|w| vec!["--mode".into(), w[1].to_string()])
-        .unwrap_or_default();
-    let master = [master, mode].concat();
-    let deadline = Instant::now() + Duration::from_secs(10);
-    while run_against(&master, "read-holding 17 400108 --timeout 200ms").0 != 0 {
-        assert!(Instant::now() < deadline, "serve never answered on the pty");
-    }
-    (server, master)
-}
 
 #[test]
 fn mbtool_against_serve_on_tcp() {

@@ -371,3 +371,37 @@ pub fn python_has(module: &str) -> bool {
         .output()
         .is_ok_and(|o| o.status.success())
 }
+
+/// `mbtool serve` on 127.0.0.1; the connection options for a master.
+pub fn serve_tcp(extra: &[&str]) -> (Stopped, Vec<String>, u16) {
+    let port = free_port();
+    let address = format!("tcp://127.0.0.1:{port}");
+    let mut args = vec!["--port", address.as_str()];
+    args.extend_from_slice(extra);
+    let server = serve(&args);
+    assert!(
+        wait_for_listener(port, Duration::from_secs(10)),
+        "serve did not listen"
+    );
+    (server, vec!["--port".into(), address], port)
+}
+
+/// `mbtool serve` on one end of a pty pair; the connection options for the other end.
+pub fn serve_pty(pair: &PtyPair, extra: &[&str]) -> (Stopped, Vec<String>) {
+    let a = pair.a.display().to_string();
+    let mut args = vec!["--port", a.as_str()];
+    args.extend_from_slice(extra);
+    let server = serve(&args);
+    let master = vec!["--port".into(), pair.b.display().to_string()];
+    let mode: Vec<String> = extra
+        .windows(2)
+        .find(|w| w[0] == "--mode")
+        .map(|w| vec!["--mode".into(), w[1].to_string()])
+        .unwrap_or_default();
+    let master = [master, mode].concat();
+    let deadline = Instant::now() + Duration::from_secs(10);
+    while run_against(&master, "read-holding 17 400108 --timeout 200ms").0 != 0 {
+        assert!(Instant::now() < deadline, "serve never answered on the pty");
+    }
+    (server, master)
+}

@@ -2,7 +2,7 @@
 """A pymodbus slave for mbtool's tests: RTU or ASCII on a serial device, or TCP on 127.0.0.1.
 
     pymodbus_slave.py --framer rtu --serial /dev/pts/5
-    pymodbus_slave.py --framer socket --tcp 5020
+    pymodbus_slave.py --framer socket --tcp 5020 --identity VendorName=ACME ...
 """
 import argparse
 
@@ -12,6 +12,7 @@ from pymodbus.datastore import (
     ModbusSequentialDataBlock,
     ModbusServerContext,
 )
+from pymodbus.pdu.device import ModbusDeviceIdentification
 from pymodbus.server import StartSerialServer, StartTcpServer
 
 SIZE = 5000
@@ -22,7 +23,11 @@ def main():
     parser.add_argument("--framer", choices=["rtu", "ascii", "socket"], required=True)
     parser.add_argument("--serial")
     parser.add_argument("--tcp", type=int)
+    parser.add_argument("--identity", action="append", default=[], metavar="NAME=VALUE")
     args = parser.parse_args()
+    identity = ModbusDeviceIdentification(
+        info_name=dict(item.split("=", 1) for item in args.identity)
+    )
 
     def block():
         # pymodbus counts block addresses from 1; protocol address 0 is its first cell.
@@ -32,13 +37,16 @@ def main():
     context = ModbusServerContext(devices={17: device}, single=False)
     framer = FramerType(args.framer)
     if args.tcp:
-        StartTcpServer(context, framer=framer, address=("127.0.0.1", args.tcp))
+        StartTcpServer(
+            context, framer=framer, identity=identity, address=("127.0.0.1", args.tcp)
+        )
     else:
         # A pseudo-terminal carries bytes, not bits: line settings mean nothing there, and
         # pyserial's even parity is refused by the pty driver.
         StartSerialServer(
             context,
             framer=framer,
+            identity=identity,
             port=args.serial,
             baudrate=19200,
             bytesize=8,

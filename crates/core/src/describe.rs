@@ -209,20 +209,6 @@ fn with_reference(function: u8, address: u16) -> (Option<u16>, Option<String>) {
     (Some(address), reference)
 }
 
-fn device_object_name(id: u8) -> &'static str {
-    match id {
-        0x00 => "VendorName",
-        0x01 => "ProductCode",
-        0x02 => "MajorMinorRevision",
-        0x03 => "VendorUrl",
-        0x04 => "ProductName",
-        0x05 => "ModelName",
-        0x06 => "UserApplicationName",
-        0x07..=0x7F => "reserved",
-        _ => "private",
-    }
-}
-
 fn request_fields(request: &Request) -> Fields {
     let function = request.function();
     let mut f = Fields::default();
@@ -300,7 +286,7 @@ fn identification_fields(f: &mut Fields, id: &DeviceIdentification) {
             .iter()
             .map(|object| DeviceObjectField {
                 id: object.id,
-                name: device_object_name(object.id),
+                name: crate::codec::DeviceObject::name(object.id),
                 value: escape_text(&object.value),
             })
             .collect(),

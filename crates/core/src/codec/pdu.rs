@@ -238,6 +238,37 @@ pub struct DeviceObject {
     pub value: Vec<u8>,
 }
 
+/// The names of the standard identification objects 00-06, by id.
+const OBJECT_NAMES: [&str; 7] = [
+    "VendorName",
+    "ProductCode",
+    "MajorMinorRevision",
+    "VendorUrl",
+    "ProductName",
+    "ModelName",
+    "UserApplicationName",
+];
+
+impl DeviceObject {
+    /// The name the specification gives object `id`; "reserved" for 07-7F, "private"
+    /// for the extended objects 80-FF.
+    pub fn name(id: u8) -> &'static str {
+        match OBJECT_NAMES.get(usize::from(id)) {
+            Some(name) => name,
+            None if id < 0x80 => "reserved",
+            None => "private",
+        }
+    }
+
+    /// The id of a standard object by its name, in any case (`VendorUrl`, `vendorurl`).
+    pub fn id_named(name: &str) -> Option<u8> {
+        OBJECT_NAMES
+            .iter()
+            .position(|known| known.eq_ignore_ascii_case(name))
+            .and_then(|id| u8::try_from(id).ok())
+    }
+}
+
 /// An exception response: the function that failed (without the 0x80 flag) and why.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Exception {

@@ -12,6 +12,7 @@ use crate::model::duration::show;
 use crate::transport::Transport;
 
 pub mod plan;
+pub mod device;
 pub mod run;
 
 /// How the master behaves; the connection options fill it in.

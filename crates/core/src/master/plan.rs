@@ -192,9 +192,11 @@ pub struct Plan {
     pub reads: Option<(Table, u16)>,
 }
 
-fn parse_slave(text: &str, is_write: bool, options: PlanOptions) -> Result<u8> {
+/// The slave a command addresses: 1-247 on a serial line (0, broadcast, for writes
+/// only), any unit id 0-255 over TCP.
+pub fn parse_slave(text: &str, is_write: bool, tcp: bool) -> Result<u8> {
     let value = parse_int(text).map_err(PlanError::Slave)?;
-    if options.tcp {
+    if tcp {
         return u8::try_from(value).map_err(|_| PlanError::UnitId(text.to_string()));
     }
     match value {
@@ -450,7 +452,7 @@ pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
             table,
             count,
         } => {
-            let slave = parse_slave(slave, false, options)?;
+            let slave = parse_slave(slave, false, options.tcp)?;
             read_plan(slave, span(address, table, Access::Read)?, count, options)
         }
         Operation::Write {
@@ -460,7 +462,7 @@ pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
             values,
             how,
         } => {
-            let slave = parse_slave(slave, true, options)?;
+            let slave = parse_slave(slave, true, options.tcp)?;
             if how == How::OneRegister {
                 let width = options.value_type.width();
                 if width > 1 {
@@ -483,7 +485,7 @@ pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
             write_plan(slave, span, values, style, options)
         }
         Operation::Raw { slave, pdu } => {
-            let slave = parse_slave(slave, true, options)?;
+            let slave = parse_slave(slave, true, options.tcp)?;
             let pdu = crate::model::hexinput::parse_hex_words(pdu).map_err(PlanError::PduHex)?;
             Ok(Plan {
                 slave,

@@ -3,52 +3,55 @@
 
 pub mod datafile;
 pub mod faults;
+mod identity;
 mod model;
 pub mod server;
 
 use std::collections::BTreeMap;
 
 use crate::codec::function;
-use crate::codec::{DeviceIdentification, DeviceObject};
 use crate::codec::{Exception, ExceptionCode, Pdu, PduError, Request, Response};
+pub use identity::{parse_object, Identity, DEFAULT_VENDOR, MAX_OBJECT_LEN};
 pub use model::{DataModel, TableData};
-
-/// What a slave says about itself (report slave id, device identification).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Identity {
-    /// Vendor name: device identification object 0.
-    pub vendor: String,
-    /// Product code: object 1.
-    pub product_code: String,
-    /// Major and minor revision: object 2.
-    pub revision: String,
-}
 
 /// The slave id of the manuals' examples: the built-in slave's, and `serve`'s by default.
 pub const EXAMPLE_SLAVE: u8 = 17;
 
-/// The vendor name a simulated slave gives by default.
-pub const DEFAULT_VENDOR: &str = "mbtool";
+/// The counters of the diagnostics function (08), per slave id, as a device keeps them
+/// from its last restart or clearing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Counters {
+    /// Frames seen on the line whose checksum holds, whoever they were for (08/0B).
+    pub bus_messages: u16,
+    /// Frames seen on the line whose checksum failed (08/0C).
+    pub bus_errors: u16,
+    /// Exception answers sent (08/0D).
+    pub exceptions: u16,
+    /// Requests addressed to this slave, broadcasts included (08/0E).
+    pub slave_messages: u16,
+    /// Requests addressed to this slave that got no answer: broadcasts, and answers
+    /// left out on purpose (08/0F).
+    pub no_response: u16,
+}
 
-impl Default for Identity {
-    fn default() -> Self {
-        Self {
-            vendor: DEFAULT_VENDOR.into(),
-            product_code: "mbtool-sim".into(),
-            revision: env!("CARGO_PKG_VERSION").into(),
-        }
+impl Counters {
+    /// The counter a diagnostics sub-function reads, if it reads one.
+    fn read(&self, sub_function: u16) -> Option<u16> {
+        Some(match sub_function {
+            0x000B => self.bus_messages,
+            0x000C => self.bus_errors,
+            0x000D => self.exceptions,
+            0x000E => self.slave_messages,
+            0x000F => self.no_response,
+            // NAK, busy and character overrun: a simulated slave has none of them.
+            0x0010..=0x0012 => 0,
+            _ => return None,
+        })
     }
 }
 
-/// Counters of the diagnostics function (08), per slave id.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Counters {
-    /// Requests answered (an exception counts).
-    pub messages: u16,
-    /// Exception answers sent.
-    pub exceptions: u16,
-    /// Broadcasts carried out, never answered.
-    pub broadcasts: u16,
+fn bump(counter: &mut u16) {
+    *counter = counter.wrapping_add(1);
 }
 
 /// One or more slave ids, each with its data.
@@ -80,30 +83,59 @@ impl Slave {
         self.models.contains_key(&slave)
     }
 
+    /// A frame seen on the line: every id's bus message counter, or, when its checksum
+    /// failed, its bus error counter, counts it.
+    pub fn saw_frame(&mut self, checksum_held: bool) {
+        for counters in self.counters.values_mut() {
+            bump(if checksum_held {
+                &mut counters.bus_messages
+            } else {
+                &mut counters.bus_errors
+            });
+        }
+    }
+
+    /// An answer to `slave` that was due was left out (`--drop`).
+    pub fn left_unanswered(&mut self, slave: u8) {
+        if let Some(counters) = self.counters.get_mut(&slave) {
+            bump(&mut counters.no_response);
+        }
+    }
+
+    /// The counters of `slave`.
+    pub fn counters(&self, slave: u8) -> Option<Counters> {
+        self.counters.get(&slave).copied()
+    }
+
     /// Handles a request addressed to `slave`. `None`: no answer is due (another slave's
     /// request, or a broadcast, which is carried out by every id but answered by none).
     pub fn handle(&mut self, slave: u8, request: &Request) -> Option<Pdu> {
-        if slave == 0 {
-            let ids: Vec<u8> = self.models.keys().copied().collect();
-            for id in ids {
-                self.answer(id, request);
-                if let Some(c) = self.counters.get_mut(&id) {
-                    c.broadcasts = c.broadcasts.wrapping_add(1);
+        let ids: Vec<u8> = match slave {
+            0 => self.models.keys().copied().collect(),
+            id if self.answers_for(id) => vec![id],
+            _ => return None,
+        };
+        let mut answer = None;
+        for id in ids {
+            if let Some(counters) = self.counters.get_mut(&id) {
+                bump(&mut counters.slave_messages);
+                if slave == 0 {
+                    bump(&mut counters.no_response);
                 }
             }
-            return None;
-        }
-        if !self.answers_for(slave) {
-            return None;
-        }
-        let answer = self.answer(slave, request);
-        if let Some(c) = self.counters.get_mut(&slave) {
-            c.messages = c.messages.wrapping_add(1);
-            if matches!(answer, Pdu::Exception(_)) {
-                c.exceptions = c.exceptions.wrapping_add(1);
+            let pdu = self.answer(id, request);
+            if let Some(counters) = self.counters.get_mut(&id) {
+                if slave != 0 && matches!(pdu, Pdu::Exception(_)) {
+                    bump(&mut counters.exceptions);
+                }
+                // Clear counters (08/0A) leaves them all at zero once it is done.
+                if matches!(request, Request::Diagnostics { sub_function: 0x000A, .. }) {
+                    *counters = Counters::default();
+                }
             }
+            answer = (slave != 0).then_some(pdu);
         }
-        Some(answer)
+        answer
     }
 
     fn answer(&mut self, slave: u8, request: &Request) -> Pdu {
@@ -217,22 +249,13 @@ fn respond(
             sub_function: *sub_function,
             data: diagnostics(*sub_function, data, counters)?,
         },
-        Request::ReportServerId => {
-            let mut data = vec![slave, 0xFF];
-            data.extend_from_slice(
-                format!(
-                    "{} {} {}",
-                    identity.vendor, identity.product_code, identity.revision
-                )
-                .as_bytes(),
-            );
-            data.truncate(251);
-            Response::ReportServerId { data }
-        }
+        Request::ReportServerId => Response::ReportServerId {
+            data: identity.server_id(slave),
+        },
         Request::ReadDeviceIdentification {
             read_code,
             object_id,
-        } => device_identification(*read_code, *object_id, identity)?,
+        } => identity.answer(*read_code, *object_id)?,
         // A known function whose request broke its layout: a bad quantity or byte count
         // (03), or, the quantity being good, a range past the last address (02), in the
         // order the specification checks them.
@@ -247,65 +270,20 @@ fn respond(
     })
 }
 
-/// The diagnostics sub-functions a simple slave keeps: loopback and its counters. A
-/// broadcast is a message it received and did not answer.
+/// The diagnostics sub-functions a simple slave keeps: return query data, clear
+/// counters, and the counters 0B-12.
 fn diagnostics(
     sub_function: u16,
     data: &[u8],
     counters: Counters,
 ) -> Result<Vec<u8>, ExceptionCode> {
-    let counter = |value: u16| Ok(value.to_be_bytes().to_vec());
-    let received = counters.messages.wrapping_add(counters.broadcasts);
     match sub_function {
         0x0000 | 0x000A => Ok(data.to_vec()),
-        0x000B | 0x000E => counter(received),
-        0x000C => counter(0),
-        0x000D => counter(counters.exceptions),
-        0x000F => counter(counters.broadcasts),
-        _ => Err(ILLEGAL_FUNCTION),
+        _ => counters
+            .read(sub_function)
+            .map(|value| value.to_be_bytes().to_vec())
+            .ok_or(ILLEGAL_FUNCTION),
     }
-}
-
-fn device_identification(
-    read_code: u8,
-    object_id: u8,
-    identity: &Identity,
-) -> Result<Response, ExceptionCode> {
-    let objects = [
-        identity.vendor.as_bytes(),
-        identity.product_code.as_bytes(),
-        identity.revision.as_bytes(),
-    ];
-    let chosen: Vec<DeviceObject> = match read_code {
-        // Basic stream (1) from object_id; regular (2) and extended (3) have nothing more.
-        1..=3 => objects
-            .iter()
-            .enumerate()
-            .skip(usize::from(object_id))
-            .map(|(id, value)| DeviceObject {
-                id: id as u8,
-                value: value.to_vec(),
-            })
-            .collect(),
-        4 => match objects.get(usize::from(object_id)) {
-            Some(value) => vec![DeviceObject {
-                id: object_id,
-                value: value.to_vec(),
-            }],
-            None => return Err(ExceptionCode::ILLEGAL_DATA_ADDRESS),
-        },
-        _ => return Err(ExceptionCode::ILLEGAL_DATA_VALUE),
-    };
-    if chosen.is_empty() && read_code != 4 && usize::from(object_id) >= objects.len() {
-        return Err(ExceptionCode::ILLEGAL_DATA_ADDRESS);
-    }
-    Ok(Response::ReadDeviceIdentification(DeviceIdentification {
-        read_code,
-        conformity: 0x01,
-        more_follows: false,
-        next_object_id: 0,
-        objects: chosen,
-    }))
 }
 
 #[cfg(test)]
@@ -324,12 +302,15 @@ mod tests {
     }
 
     #[test]
-    fn diagnostics_counters_count_answers_exceptions_and_broadcasts() {
+    fn diagnostics_counters_count_what_happened_and_clear() {
         let mut slave = Slave::new(&[17], DataModel::default());
         let write = Request::WriteSingleRegister {
             address: 1,
             value: 2,
         };
+        for checksum_held in [true, true, false] {
+            slave.saw_frame(checksum_held);
+        }
         assert_eq!(slave.handle(0, &write), None);
         slave.handle(
             17,
@@ -338,10 +319,15 @@ mod tests {
                 data: vec![],
             },
         );
-        // Bus message count: the broadcast and the exception; a request is counted once
-        // it has been answered.
         assert_eq!(counter(&mut slave, 0x000B), [0, 2]);
+        assert_eq!(counter(&mut slave, 0x000C), [0, 1]);
         assert_eq!(counter(&mut slave, 0x000D), [0, 1]);
+        // The broadcast, the exception, the three counter requests before this one and
+        // this one.
+        assert_eq!(counter(&mut slave, 0x000E), [0, 6]);
         assert_eq!(counter(&mut slave, 0x000F), [0, 1]);
+        assert_eq!(counter(&mut slave, 0x0012), [0, 0]);
+        counter(&mut slave, 0x000A);
+        assert_eq!(slave.counters(17), Some(Counters::default()));
     }
 }

@@ -94,10 +94,11 @@ impl Server {
         // Over TCP everything a server receives is a request, however it reads.
         let answer_on_the_line =
             self.mode != Mode::Tcp && found.direction == Some(Direction::Response);
+        lock(&self.slave).saw_frame(found.broken.is_none());
         if found.broken.is_some() || answer_on_the_line {
             return None;
         }
-        self.answer_frame(&found.bytes, peer, rng)
+        self.answer_request(&found.bytes, peer, rng)
     }
 
     /// The answer to bytes that are one whole frame, as a transport that delimits frames
@@ -109,6 +110,12 @@ impl Server {
         peer: &str,
         rng: &mut fastrand::Rng,
     ) -> Option<Vec<u8>> {
+        lock(&self.slave).saw_frame(true);
+        self.answer_request(bytes, peer, rng)
+    }
+
+    /// The answer to the bytes of a whole frame, counted already as seen on the line.
+    fn answer_request(&self, bytes: &[u8], peer: &str, rng: &mut fastrand::Rng) -> Option<Vec<u8>> {
         let frame = request_in(self.mode, bytes)?;
         let Pdu::Request(request) = &frame.pdu else {
             return None;
@@ -126,10 +133,7 @@ impl Server {
     ) -> Option<Vec<u8>> {
         let mut slave_id = frame.slave;
         let outcome = {
-            let mut slave = match self.slave.lock() {
-                Ok(slave) => slave,
-                Err(poisoned) => poisoned.into_inner(),
-            };
+            let mut slave = lock(&self.slave);
             // Over TCP, unit ids 0 and 255 mean "the device at this address".
             if self.mode == Mode::Tcp && matches!(slave_id, 0 | 255) {
                 slave_id = slave.first_id();
@@ -148,7 +152,10 @@ impl Server {
             };
             match answer {
                 None => Outcome::Broadcast,
-                Some(_) if rng.f64() < self.faults.drop => Outcome::Dropped,
+                Some(_) if rng.f64() < self.faults.drop => {
+                    slave.left_unanswered(slave_id);
+                    Outcome::Dropped
+                }
                 Some(pdu) if rng.f64() < self.faults.corrupt => Outcome::Corrupted(pdu),
                 Some(pdu) => Outcome::Answered(pdu),
             }

@@ -1,0 +1,65 @@
+//! `mbtool info SLAVE`: who the device says it is.
+
+use std::io::Write;
+
+use anyhow::Result;
+
+use mbtool::cli::{Cli, InfoArgs};
+use mbtool::connection;
+use mbtool::error::Error;
+use mbtool::output::device::{write_info, InfoReport, Outcome};
+use mbtool::output::{self, colour_wanted};
+use mbtool_core::codec::function;
+use mbtool_core::master::device::{identification, server_id, Asked};
+use mbtool_core::master::plan::parse_slave;
+use mbtool_core::master::MasterError;
+
+/// One function's outcome; a timeout is kept as "no answer" so that the other function
+/// still has its say, any other failure ends the command.
+pub fn outcome<T>(asked: Result<Asked<T>, MasterError>) -> Result<Outcome<T>, MasterError> {
+    match asked {
+        Ok(asked) => Ok(asked.into()),
+        Err(error @ MasterError::Timeout { .. }) => Ok(Outcome::NoAnswer(error.to_string())),
+        Err(error) => Err(error),
+    }
+}
+
+pub fn run(cli: &Cli, args: &InfoArgs) -> Result<u8> {
+    let mut connection = connection::connect(cli)?;
+    let slave = parse_slave(&args.slave, false, connection.is_tcp()).map_err(Error::from)?;
+    if cli.output.verbose {
+        connection.master.trace(super::request::tracer(connection.mode));
+    }
+    let master = &mut connection.master;
+    let asked = outcome(identification(master, slave))
+        .and_then(|id| Ok((id, outcome(server_id(master, slave))?)));
+    let (identification, server_id) = asked.map_err(|e| connection.explain(cli, e.into()))?;
+    let report = InfoReport {
+        slave,
+        identification,
+        server_id,
+    };
+    match (&report.identification, &report.server_id) {
+        (Outcome::Answered(_), _) | (_, Outcome::Answered(_)) => {}
+        // Neither answered: a timeout is told as one, with what was tried.
+        (Outcome::NoAnswer(_), _) | (_, Outcome::NoAnswer(_)) => {
+            let timeout = MasterError::Timeout {
+                slave,
+                timeout: cli.connection.timeout,
+            };
+            return Err(connection.explain(cli, timeout.into()).into());
+        }
+        (Outcome::Refused(code), _) => {
+            return Err(Error::Exception {
+                slave,
+                function: function::ENCAPSULATED_INTERFACE,
+                code: *code,
+            }
+            .into())
+        }
+    }
+    let mut out = output::stdout();
+    write_info(&mut out, cli.output.format(), &report, colour_wanted())?;
+    out.flush()?;
+    Ok(0)
+}
