@@ -63,6 +63,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
             [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
+            [CompletionResult]::new('info', 'info', [CompletionResultType]::ParameterValue, 'Ask a device who it is: identification and server id')
+            [CompletionResult]::new('diag', 'diag', [CompletionResultType]::ParameterValue, 'A device''s health: round trips, counters, status')
             [CompletionResult]::new('decode', 'decode', [CompletionResultType]::ParameterValue, 'Decode frames given as arguments or on standard input')
             [CompletionResult]::new('encode', 'encode', [CompletionResultType]::ParameterValue, 'Print the frame a request command would send')
             [CompletionResult]::new('sniff', 'sniff', [CompletionResultType]::ParameterValue, 'Watch a bus without transmitting; frames decoded, paired')
@@ -475,6 +477,56 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
+        'mbtool;info' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
+            [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial speed')
+            [CompletionResult]::new('--parity', '--parity', [CompletionResultType]::ParameterName, 'Serial parity')
+            [CompletionResult]::new('--data-bits', '--data-bits', [CompletionResultType]::ParameterName, 'Serial data bits [default: 8, 7 in ASCII mode]')
+            [CompletionResult]::new('--stop-bits', '--stop-bits', [CompletionResultType]::ParameterName, 'Serial stop bits [default: 1 with parity, 2 without]')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Response timeout for a whole answer: 500ms, 1s, 2.5s')
+            [CompletionResult]::new('--retries', '--retries', [CompletionResultType]::ParameterName, 'Retries after a timeout or a bad answer (never after an exception)')
+            [CompletionResult]::new('--frame-gap', '--frame-gap', [CompletionResultType]::ParameterName, 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'mbtool;diag' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
+            [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial speed')
+            [CompletionResult]::new('--parity', '--parity', [CompletionResultType]::ParameterName, 'Serial parity')
+            [CompletionResult]::new('--data-bits', '--data-bits', [CompletionResultType]::ParameterName, 'Serial data bits [default: 8, 7 in ASCII mode]')
+            [CompletionResult]::new('--stop-bits', '--stop-bits', [CompletionResultType]::ParameterName, 'Serial stop bits [default: 1 with parity, 2 without]')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Response timeout for a whole answer: 500ms, 1s, 2.5s')
+            [CompletionResult]::new('--retries', '--retries', [CompletionResultType]::ParameterName, 'Retries after a timeout or a bad answer (never after an exception)')
+            [CompletionResult]::new('--frame-gap', '--frame-gap', [CompletionResultType]::ParameterName, 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format')
+            [CompletionResult]::new('--count', '--count', [CompletionResultType]::ParameterName, 'How many round trips of return query data to time [default: 5]')
+            [CompletionResult]::new('--clear', '--clear', [CompletionResultType]::ParameterName, 'After reading them, clear the device''s counters (08/0A)')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
         'mbtool;decode' {
             [CompletionResult]::new('--direction', '--direction', [CompletionResultType]::ParameterName, 'Read every frame as a request or as a response instead of inferring it')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
@@ -860,6 +912,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--seed', '--seed', [CompletionResultType]::ParameterName, 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run')
             [CompletionResult]::new('--vendor', '--vendor', [CompletionResultType]::ParameterName, 'Device identification: vendor name')
             [CompletionResult]::new('--product-code', '--product-code', [CompletionResultType]::ParameterName, 'Device identification: product code')
+            [CompletionResult]::new('--identity', '--identity', [CompletionResultType]::ParameterName, 'Device identification: any object, by name or id (VendorUrl=https://example.com, ProductName=Pump, 0x80=serial 4711); repeatable')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
@@ -901,6 +954,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
             [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
+            [CompletionResult]::new('info', 'info', [CompletionResultType]::ParameterValue, 'Ask a device who it is: identification and server id')
+            [CompletionResult]::new('diag', 'diag', [CompletionResultType]::ParameterValue, 'A device''s health: round trips, counters, status')
             [CompletionResult]::new('decode', 'decode', [CompletionResultType]::ParameterValue, 'Decode frames given as arguments or on standard input')
             [CompletionResult]::new('encode', 'encode', [CompletionResultType]::ParameterValue, 'Print the frame a request command would send')
             [CompletionResult]::new('sniff', 'sniff', [CompletionResultType]::ParameterValue, 'Watch a bus without transmitting; frames decoded, paired')
@@ -940,6 +995,12 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;help;raw' {
+            break
+        }
+        'mbtool;help;info' {
+            break
+        }
+        'mbtool;help;diag' {
             break
         }
         'mbtool;help;decode' {

@@ -19,6 +19,9 @@ _mbtool() {
             mbtool,decode)
                 cmd="mbtool__subcmd__decode"
                 ;;
+            mbtool,diag)
+                cmd="mbtool__subcmd__diag"
+                ;;
             mbtool,encode)
                 cmd="mbtool__subcmd__encode"
                 ;;
@@ -27,6 +30,9 @@ _mbtool() {
                 ;;
             mbtool,help)
                 cmd="mbtool__subcmd__help"
+                ;;
+            mbtool,info)
+                cmd="mbtool__subcmd__info"
                 ;;
             mbtool,raw)
                 cmd="mbtool__subcmd__raw"
@@ -160,6 +166,9 @@ _mbtool() {
             mbtool__subcmd__help,decode)
                 cmd="mbtool__subcmd__help__subcmd__decode"
                 ;;
+            mbtool__subcmd__help,diag)
+                cmd="mbtool__subcmd__help__subcmd__diag"
+                ;;
             mbtool__subcmd__help,encode)
                 cmd="mbtool__subcmd__help__subcmd__encode"
                 ;;
@@ -168,6 +177,9 @@ _mbtool() {
                 ;;
             mbtool__subcmd__help,help)
                 cmd="mbtool__subcmd__help__subcmd__help"
+                ;;
+            mbtool__subcmd__help,info)
+                cmd="mbtool__subcmd__help__subcmd__info"
                 ;;
             mbtool__subcmd__help,raw)
                 cmd="mbtool__subcmd__help__subcmd__raw"
@@ -248,7 +260,7 @@ _mbtool() {
 
     case "${cmd}" in
         mbtool)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --type --order --max-per-request --poll --count --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --type --order --max-per-request --poll --count --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -378,6 +390,80 @@ _mbtool() {
                     ;;
                 --order)
                     COMPREPLY=($(compgen -W "ABCD CDAB BADC DCBA" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__diag)
+            opts="-p -m -b -o -v -h -V --clear --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --count --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -b)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --retries)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --frame-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                --count)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -1180,7 +1266,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__help)
-            opts="read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help"
+            opts="read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1194,6 +1280,20 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__help__subcmd__decode)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__help__subcmd__diag)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -1403,6 +1503,20 @@ _mbtool() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        mbtool__subcmd__help__subcmd__info)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         mbtool__subcmd__help__subcmd__raw)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
@@ -1578,6 +1692,76 @@ _mbtool() {
                 return 0
             fi
             case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__info)
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -b)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --retries)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --frame-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -2114,7 +2298,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__serve)
-            opts="-q -p -m -b -o -h -V --slave --data --read-only --delay --drop --corrupt --exception --garbage --seed --quiet --vendor --product-code --port --mode --baud --parity --data-bits --stop-bits --output --json --help --version"
+            opts="-q -p -m -b -o -h -V --slave --data --read-only --delay --drop --corrupt --exception --garbage --seed --quiet --vendor --product-code --identity --port --mode --baud --parity --data-bits --stop-bits --output --json --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2157,6 +2341,10 @@ _mbtool() {
                     return 0
                     ;;
                 --product-code)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --identity)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

@@ -60,6 +60,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand write-registers 'Write holding registers (function 16)'
             cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand raw 'Send any PDU and decode the answer'
+            cand info 'Ask a device who it is: identification and server id'
+            cand diag 'A device''s health: round trips, counters, status'
             cand decode 'Decode frames given as arguments or on standard input'
             cand encode 'Print the frame a request command would send'
             cand sniff 'Watch a bus without transmitting; frames decoded, paired'
@@ -457,6 +459,54 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
         }
+        &'mbtool;info'= {
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
+            cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
+            cand -b 'Serial speed'
+            cand --baud 'Serial speed'
+            cand --parity 'Serial parity'
+            cand --data-bits 'Serial data bits [default: 8, 7 in ASCII mode]'
+            cand --stop-bits 'Serial stop bits [default: 1 with parity, 2 without]'
+            cand --timeout 'Response timeout for a whole answer: 500ms, 1s, 2.5s'
+            cand --retries 'Retries after a timeout or a bad answer (never after an exception)'
+            cand --frame-gap 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none'
+            cand -o 'Output format'
+            cand --output 'Output format'
+            cand --json 'The same as --output json'
+            cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand --verbose 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
+        &'mbtool;diag'= {
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
+            cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
+            cand -b 'Serial speed'
+            cand --baud 'Serial speed'
+            cand --parity 'Serial parity'
+            cand --data-bits 'Serial data bits [default: 8, 7 in ASCII mode]'
+            cand --stop-bits 'Serial stop bits [default: 1 with parity, 2 without]'
+            cand --timeout 'Response timeout for a whole answer: 500ms, 1s, 2.5s'
+            cand --retries 'Retries after a timeout or a bad answer (never after an exception)'
+            cand --frame-gap 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none'
+            cand -o 'Output format'
+            cand --output 'Output format'
+            cand --count 'How many round trips of return query data to time [default: 5]'
+            cand --clear 'After reading them, clear the device''s counters (08/0A)'
+            cand --json 'The same as --output json'
+            cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand --verbose 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
         &'mbtool;decode'= {
             cand --direction 'Read every frame as a request or as a response instead of inferring it'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
@@ -812,6 +862,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --seed 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run'
             cand --vendor 'Device identification: vendor name'
             cand --product-code 'Device identification: product code'
+            cand --identity 'Device identification: any object, by name or id (VendorUrl=https://example.com, ProductName=Pump, 0x80=serial 4711); repeatable'
             cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
@@ -851,6 +902,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand write-registers 'Write holding registers (function 16)'
             cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand raw 'Send any PDU and decode the answer'
+            cand info 'Ask a device who it is: identification and server id'
+            cand diag 'A device''s health: round trips, counters, status'
             cand decode 'Decode frames given as arguments or on standard input'
             cand encode 'Print the frame a request command would send'
             cand sniff 'Watch a bus without transmitting; frames decoded, paired'
@@ -879,6 +932,10 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         &'mbtool;help;write'= {
         }
         &'mbtool;help;raw'= {
+        }
+        &'mbtool;help;info'= {
+        }
+        &'mbtool;help;diag'= {
         }
         &'mbtool;help;decode'= {
         }

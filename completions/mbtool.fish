@@ -78,6 +78,8 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-register" -d 'W
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-registers" -d 'Write holding registers (function 16)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "info" -d 'Ask a device who it is: identification and server id'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "diag" -d 'A device\'s health: round trips, counters, status'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "encode" -d 'Print the frame a request command would send'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
@@ -557,6 +559,50 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l json -d 'The same 
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s b -l baud -d 'Serial speed' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l parity -d 'Serial parity' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s b -l baud -d 'Serial speed' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l parity -d 'Serial parity' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l count -d 'How many round trips of return query data to time [default: 5]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l clear -d 'After reading them, clear the device\'s counters (08/0A)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l direction -d 'Read every frame as a request or as a response instead of inferring it' -r -f -a "request\t''
 response\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
@@ -989,6 +1035,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l exception -d 'An
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l seed -d 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l vendor -d 'Device identification: vendor name' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l product-code -d 'Device identification: product code' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l identity -d 'Device identification: any object, by name or id (VendorUrl=https://example.com, ProductName=Pump, 0x80=serial 4711); repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
@@ -1011,23 +1058,25 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l dir -d 'The folder that receives completions/ and man/' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "read-coils" -d 'Read coils (function 01)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "read-holding" -d 'Read holding registers (function 03)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "read" -d 'Read by reference: its first digit picks the table'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "write-coil" -d 'Write one coil (function 05)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "write-coils" -d 'Write coils (function 15)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "write-register" -d 'Write one holding register (function 06)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "raw" -d 'Send any PDU and decode the answer'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "encode" -d 'Print the frame a request command would send'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw decode encode sniff serve generate help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "read" -d 'Read by reference: its first digit picks the table'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "info" -d 'Ask a device who it is: identification and server id'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "diag" -d 'A device\'s health: round trips, counters, status'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "encode" -d 'Print the frame a request command would send'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-coils" -d 'Read coils (function 01)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-holding" -d 'Read holding registers (function 03)'

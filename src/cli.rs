@@ -211,11 +211,11 @@ pub enum Command {
     #[command(flatten)]
     Request(RequestCommand),
 
-    /// Ask a device who it is: identification (43/14), server id (17)
+    /// Ask a device who it is: identification and server id
     #[command(long_about = INFO_ABOUT)]
     Info(InfoArgs),
 
-    /// A device's health: round trips (08/00), its counters (08), status (07)
+    /// A device's health: round trips, counters, status
     #[command(long_about = DIAG_ABOUT)]
     Diag(DiagArgs),
 
@@ -349,6 +349,11 @@ The slave answers exception 01 to a function it does not know, 02 for addresses 
 exist or are --read-only, 03 for a bad quantity; it is silent for other slave ids and does \
 not answer broadcasts, which it carries out. Over TCP, unit ids 0 and 255 address the first \
 --slave, and other unit ids get exception 0B, as from a gateway.
+
+It tells who it is as a device does: device identification (43/14; --vendor, \
+--product-code and any object with --identity, streamed over as many answers as they \
+need) and report server id (17). Its diagnostic counters (08) count what it saw on the \
+line, CRC errors included, and 08/0A clears them.
 
 Every request is logged on stderr, one line each (JSON Lines with --json).";
 

@@ -129,6 +129,29 @@ const EXAMPLES: &[(&str, &[Example])] = &[
         )],
     ),
     (
+        "info",
+        &[
+            ex("Ask slave 17 who it is", "mbtool --port /dev/ttyUSB0 info 17"),
+            ex(
+                "The same over Modbus TCP, as JSON",
+                "mbtool --port tcp://10.0.0.5 info 17 --json",
+            ),
+        ],
+    ),
+    (
+        "diag",
+        &[
+            ex(
+                "Round trips, counters and exception status of slave 17",
+                "mbtool --port /dev/ttyUSB0 diag 17",
+            ),
+            ex(
+                "Time 50 round trips, then clear the counters",
+                "mbtool --port /dev/ttyUSB0 diag 17 --count 50 --clear",
+            ),
+        ],
+    ),
+    (
         "sniff",
         &[
             ex(

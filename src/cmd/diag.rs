@@ -9,9 +9,7 @@ use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output::device::{write_diag, DiagReport, Outcome};
 use mbtool::output::{self, colour_wanted};
-use mbtool_core::master::device::{
-    clear_counters, counters, exception_status, round_trips, Asked,
-};
+use mbtool_core::master::device::{clear_counters, counters, exception_status, round_trips, Asked};
 use mbtool_core::master::plan::parse_slave;
 
 use super::info::outcome;
@@ -23,12 +21,16 @@ pub fn run(cli: &Cli, args: &DiagArgs) -> Result<u8> {
     let count = match cli.poll.count.map(u32::try_from) {
         None => ROUND_TRIPS,
         Some(Ok(count)) => count,
-        Some(Err(_)) => return Err(Error::usage("--count: give at most 4294967295 round trips").into()),
+        Some(Err(_)) => {
+            return Err(Error::usage("--count: give at most 4294967295 round trips").into())
+        }
     };
     let mut connection = connection::connect(cli)?;
     let slave = parse_slave(&args.slave, false, connection.is_tcp()).map_err(Error::from)?;
     if cli.output.verbose {
-        connection.master.trace(super::request::tracer(connection.mode));
+        connection
+            .master
+            .trace(super::request::tracer(connection.mode));
     }
     let master = &mut connection.master;
     // A device that does not answer at all fails here, with what was tried.

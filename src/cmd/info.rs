@@ -28,7 +28,9 @@ pub fn run(cli: &Cli, args: &InfoArgs) -> Result<u8> {
     let mut connection = connection::connect(cli)?;
     let slave = parse_slave(&args.slave, false, connection.is_tcp()).map_err(Error::from)?;
     if cli.output.verbose {
-        connection.master.trace(super::request::tracer(connection.mode));
+        connection
+            .master
+            .trace(super::request::tracer(connection.mode));
     }
     let master = &mut connection.master;
     let asked = outcome(identification(master, slave))

@@ -8,8 +8,8 @@ use serde_json::{json, Map, Value};
 use super::{csv_field, new_table};
 use crate::cli::OutputFormat;
 use mbtool_core::codec::{DeviceObject, ExceptionCode};
-use mbtool_core::master::device::{Counter, Identification, RoundTrips, ServerId};
 use mbtool_core::master::device::Asked;
+use mbtool_core::master::device::{Counter, Identification, RoundTrips, ServerId};
 use mbtool_core::model::values::escape_text;
 
 /// What one function gave: an answer, a refusal, or nothing in time.
@@ -216,9 +216,9 @@ fn diag_rows(report: &DiagReport) -> Vec<(String, String)> {
             for counter in counters {
                 let value = match &counter.value {
                     Asked::Answered(value) => value.to_string(),
-                    Asked::Refused(code) => Outcome::<()>::Refused(*code)
-                        .failure()
-                        .unwrap_or_default(),
+                    Asked::Refused(code) => {
+                        Outcome::<()>::Refused(*code).failure().unwrap_or_default()
+                    }
                 };
                 rows.push((
                     format!("{} (08/{:02X})", counter.name, counter.sub_function),
@@ -247,13 +247,13 @@ fn diag_json(report: &DiagReport) -> Value {
     let micros = |d: std::time::Duration| d.as_micros() as u64;
     let trips = match &report.round_trips {
         Outcome::Answered(trips) => {
-            let (min, mean, max) = trips.min_mean_max().unzip3();
+            let times = trips.min_mean_max();
             json!({
                 "answered": trips.times.len(),
                 "lost": trips.lost,
-                "min_us": min.map(micros),
-                "mean_us": mean.map(micros),
-                "max_us": max.map(micros),
+                "min_us": times.map(|(min, _, _)| micros(min)),
+                "mean_us": times.map(|(_, mean, _)| micros(mean)),
+                "max_us": times.map(|(_, _, max)| micros(max)),
                 "intact": trips.intact,
             })
         }
@@ -292,20 +292,6 @@ fn diag_json(report: &DiagReport) -> Value {
         top.insert("cleared".into(), cleared);
     }
     top
-}
-
-/// Splits an optional triple, for JSON fields that are absent together.
-trait Unzip3<A, B, C> {
-    fn unzip3(self) -> (Option<A>, Option<B>, Option<C>);
-}
-
-impl<A, B, C> Unzip3<A, B, C> for Option<(A, B, C)> {
-    fn unzip3(self) -> (Option<A>, Option<B>, Option<C>) {
-        match self {
-            Some((a, b, c)) => (Some(a), Some(b), Some(c)),
-            None => (None, None, None),
-        }
-    }
 }
 
 fn write_rows(
@@ -349,7 +335,13 @@ pub fn write_info(
     report: &InfoReport,
     colour: bool,
 ) -> io::Result<()> {
-    write_rows(out, format, &info_rows(report), || info_json(report), colour)
+    write_rows(
+        out,
+        format,
+        &info_rows(report),
+        || info_json(report),
+        colour,
+    )
 }
 
 pub fn write_diag(
@@ -358,5 +350,11 @@ pub fn write_diag(
     report: &DiagReport,
     colour: bool,
 ) -> io::Result<()> {
-    write_rows(out, format, &diag_rows(report), || diag_json(report), colour)
+    write_rows(
+        out,
+        format,
+        &diag_rows(report),
+        || diag_json(report),
+        colour,
+    )
 }

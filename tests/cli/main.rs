@@ -6,6 +6,7 @@
 mod support;
 
 mod decode;
+mod device;
 mod docs;
 mod encode;
 mod first_contact;

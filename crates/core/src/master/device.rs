@@ -195,7 +195,9 @@ pub fn round_trips(
     };
     let mut last_timeout = None;
     for i in 0..count {
-        let query = (0xA537_u16 ^ (i as u16).wrapping_mul(0x1F1F)).to_be_bytes().to_vec();
+        let query = (0xA537_u16 ^ (i as u16).wrapping_mul(0x1F1F))
+            .to_be_bytes()
+            .to_vec();
         let request = Request::Diagnostics {
             sub_function: 0x0000,
             data: query.clone(),
@@ -292,11 +294,13 @@ fn diagnostic(
 
 /// Read exception status (07): the eight exception status outputs.
 pub fn exception_status(master: &mut Master, slave: u8) -> Result<Asked<u8>, MasterError> {
-    Ok(match master.transact(slave, &Request::ReadExceptionStatus)? {
-        Reply::Response(Response::ReadExceptionStatus { status }) => Asked::Answered(status),
-        Reply::Exception(exception) => Asked::Refused(exception.code),
-        _ => Asked::Refused(ExceptionCode::ILLEGAL_FUNCTION),
-    })
+    Ok(
+        match master.transact(slave, &Request::ReadExceptionStatus)? {
+            Reply::Response(Response::ReadExceptionStatus { status }) => Asked::Answered(status),
+            Reply::Exception(exception) => Asked::Refused(exception.code),
+            _ => Asked::Refused(ExceptionCode::ILLEGAL_FUNCTION),
+        },
+    )
 }
 
 #[cfg(test)]

@@ -11,8 +11,8 @@ use crate::codec::{Direction, Exception, Frame, FrameError, Mode, Pdu, Request, 
 use crate::model::duration::show;
 use crate::transport::Transport;
 
-pub mod plan;
 pub mod device;
+pub mod plan;
 pub mod run;
 
 /// How the master behaves; the connection options fill it in.

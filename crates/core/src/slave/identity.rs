@@ -190,7 +190,9 @@ mod tests {
         // Each answer fits one PDU.
         for answer in answers {
             let mut pdu = Vec::new();
-            assert!(Response::ReadDeviceIdentification(answer).encode(&mut pdu).is_ok());
+            assert!(Response::ReadDeviceIdentification(answer)
+                .encode(&mut pdu)
+                .is_ok());
         }
         // The basic level stops at 02.
         let basic = stream(&identity, 0x01);
@@ -209,7 +211,10 @@ mod tests {
             identity.answer(0x04, 0x05),
             Err(ExceptionCode::ILLEGAL_DATA_ADDRESS)
         );
-        assert_eq!(identity.answer(0x09, 0), Err(ExceptionCode::ILLEGAL_DATA_VALUE));
+        assert_eq!(
+            identity.answer(0x09, 0),
+            Err(ExceptionCode::ILLEGAL_DATA_VALUE)
+        );
     }
 
     #[test]

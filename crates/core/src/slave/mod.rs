@@ -129,7 +129,13 @@ impl Slave {
                     bump(&mut counters.exceptions);
                 }
                 // Clear counters (08/0A) leaves them all at zero once it is done.
-                if matches!(request, Request::Diagnostics { sub_function: 0x000A, .. }) {
+                if matches!(
+                    request,
+                    Request::Diagnostics {
+                        sub_function: 0x000A,
+                        ..
+                    }
+                ) {
                     *counters = Counters::default();
                 }
             }

@@ -1,0 +1,246 @@
+//! `info` and `diag` against devices: `serve` on TCP and on a pseudo-terminal, pymodbus
+//! with an identity of its own, and a scripted TCP device that lacks function 43.
+
+use std::io::{Read, Write};
+use std::net::TcpListener;
+use std::process::{Command as Process, Stdio};
+use std::time::Duration;
+
+use crate::support::{
+    free_port, mbtool, peer_available, python_has, serve_pty, serve_tcp, wait_for_listener,
+    PtyPair, Stopped,
+};
+
+/// Runs mbtool against `port` with `args` and `--json`; (exit status, the JSON, stderr).
+fn json_of(port: &[String], args: &[&str]) -> (i32, serde_json::Value, String) {
+    let output = mbtool()
+        .args(port)
+        .args(args)
+        .arg("--json")
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let json = serde_json::from_str(stdout.trim()).unwrap_or(serde_json::Value::Null);
+    (
+        output.status.code().unwrap_or(-1),
+        json,
+        String::from_utf8_lossy(&output.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn info_reads_objects_that_need_several_requests() {
+    let url = format!("VendorUrl=https://{}.example", "u".repeat(180));
+    let name = format!("ProductName={}", "P".repeat(200));
+    let private = format!("0x80={}", "x".repeat(200));
+    let (_server, port, _) = serve_tcp(&[
+        "--vendor",
+        "ACME",
+        "--identity",
+        &url,
+        "--identity",
+        &name,
+        "--identity",
+        &private,
+        "--identity",
+        "ModelName=PX7-400",
+    ]);
+    let (code, json, stderr) = json_of(&port, &["info", "17"]);
+    assert_eq!(code, 0, "{stderr}");
+    let objects = &json["identification"];
+    assert_eq!(objects["VendorName"], "ACME");
+    assert_eq!(objects["ProductCode"], "mbtool-sim");
+    assert_eq!(objects["VendorUrl"], url.split_once('=').unwrap().1);
+    assert_eq!(objects["ProductName"], "P".repeat(200));
+    assert_eq!(objects["ModelName"], "PX7-400");
+    assert_eq!(objects["0x80"], "x".repeat(200));
+    // 600 bytes of objects do not fit one answer: the extended stream takes three.
+    assert!(json["requests"].as_u64().unwrap() >= 4, "{json}");
+    assert_eq!(json["conformity"], 0x83);
+    assert_eq!(json["server_id"]["id"], 17);
+    assert_eq!(json["server_id"]["running"], true);
+    let version = env!("CARGO_PKG_VERSION");
+    assert_eq!(
+        json["server_id"]["data"],
+        format!("ACME mbtool-sim {version}")
+    );
+}
+
+#[test]
+fn info_shows_what_pymodbus_says_it_is() {
+    if !peer_available("pymodbus (Python)", python_has("pymodbus")) {
+        return;
+    }
+    let tcp = free_port();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/pymodbus_slave.py");
+    let identity = [
+        ("VendorName", "Pumps & Co"),
+        ("ProductCode", "PX-7"),
+        ("MajorMinorRevision", "2.1"),
+        ("VendorUrl", "https://pumps.example"),
+        ("ProductName", "Booster pump"),
+        ("ModelName", "PX7-400"),
+    ];
+    let mut args = vec![
+        script.to_string(),
+        "--framer".into(),
+        "socket".into(),
+        "--tcp".into(),
+        tcp.to_string(),
+    ];
+    for (name, value) in identity {
+        args.extend(["--identity".into(), format!("{name}={value}")]);
+    }
+    let _slave = Stopped(
+        Process::new("python3")
+            .args(&args)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    assert!(wait_for_listener(tcp, Duration::from_secs(15)));
+    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let (code, json, stderr) = json_of(&port, &["info", "17"]);
+    assert_eq!(code, 0, "{stderr}");
+    for (name, value) in identity {
+        assert_eq!(json["identification"][name], value, "{json}");
+    }
+    // pymodbus answers 17 with its text id and the run indicator last.
+    assert_eq!(json["server_id"]["running"], true, "{json}");
+    assert!(
+        json["server_id"]["data"].as_str().unwrap().contains("PX-7"),
+        "{json}"
+    );
+}
+
+/// A TCP device that answers report server id (17) with `answer_17` and refuses every
+/// other function with exception 01; it serves one connection.
+fn device_without_43(answer_17: &'static [u8]) -> (u16, std::thread::JoinHandle<()>) {
+    let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = listener.local_addr().unwrap().port();
+    let handle = std::thread::spawn(move || {
+        let Ok((mut stream, _)) = listener.accept() else {
+            return;
+        };
+        let _ = stream.set_read_timeout(Some(Duration::from_secs(10)));
+        let mut header = [0u8; 7];
+        while stream.read_exact(&mut header).is_ok() {
+            let len = usize::from(u16::from_be_bytes([header[4], header[5]]));
+            let mut pdu = vec![0u8; len.saturating_sub(1)];
+            if stream.read_exact(&mut pdu).is_err() {
+                return;
+            }
+            let answer: Vec<u8> = match pdu.first() {
+                Some(0x11) => [&[0x11, answer_17.len() as u8][..], answer_17].concat(),
+                Some(function) => vec![function | 0x80, 0x01],
+                None => return,
+            };
+            let mut frame = header[..4].to_vec();
+            frame.extend_from_slice(&((answer.len() + 1) as u16).to_be_bytes());
+            frame.push(header[6]);
+            frame.extend_from_slice(&answer);
+            if stream.write_all(&frame).is_err() {
+                return;
+            }
+        }
+    });
+    (port, handle)
+}
+
+#[test]
+fn info_without_43_falls_back_to_17_and_says_so() {
+    let (tcp, _device) = device_without_43(&[0x2A, 0xFF, b'P', b'L', b'C', b'-', b'5']);
+    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let output = mbtool().args(&port).args(["info", "42"]).output().unwrap();
+    let table = String::from_utf8_lossy(&output.stdout);
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    assert!(
+        table.contains("identification (43/14) ┆ not supported (exception 01 illegal function)"),
+        "{table}"
+    );
+    assert!(
+        table.contains("server id              ┆ 42 (0x2A)"),
+        "{table}"
+    );
+    assert!(table.contains("run status             ┆ ON"), "{table}");
+    assert!(table.contains("server data            ┆ PLC-5"), "{table}");
+}
+
+#[test]
+fn info_escapes_what_a_device_sends_and_shows_binary_as_hex() {
+    let (tcp, _device) = device_without_43(&[0x07, 0x00, 0x1B, b'[', b'2', b'J', 0x01]);
+    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let (code, json, _) = json_of(&port, &["info", "7"]);
+    assert_eq!(code, 0);
+    assert_eq!(json["identification"]["exception"], 1);
+    assert_eq!(json["server_id"]["running"], false);
+    assert_eq!(json["server_id"]["data"], "1B 5B 32 4A 01");
+}
+
+/// The counters of `diag --json`, by name.
+fn counters(port: &[String], extra: &[&str]) -> serde_json::Value {
+    let (code, json, stderr) = json_of(port, &[&["diag", "17"][..], extra].concat());
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(json["round_trips"]["answered"], 5, "{json}");
+    assert_eq!(json["round_trips"]["intact"], true, "{json}");
+    json["counters"].clone()
+}
+
+#[test]
+fn diag_counters_count_what_happened_on_the_line() {
+    let Some(pair) = PtyPair::new() else { return };
+    let (_server, port) = serve_pty(&pair, &[]);
+    let before = counters(&port, &[]);
+    let reads = 7;
+    for _ in 0..reads {
+        let status = mbtool()
+            .args(&port)
+            .args(["read-holding", "17", "400108", "3"])
+            .output()
+            .unwrap()
+            .status;
+        assert!(status.success());
+    }
+    // Two frames whose CRC fails, written on the line by a third party.
+    let mut line = std::fs::OpenOptions::new()
+        .write(true)
+        .open(&pair.b)
+        .unwrap();
+    for _ in 0..2 {
+        line.write_all(&[0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x88])
+            .unwrap();
+        line.flush().unwrap();
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    drop(line);
+    let after = counters(&port, &[]);
+    let grown = |name: &str| after[name].as_u64().unwrap() - before[name].as_u64().unwrap();
+    // The reads, and diag's own requests between the two readings of 0B: the seven
+    // counters after it and 07 in the first run, five round trips and 0B in the second.
+    assert_eq!(grown("bus_messages"), reads + 8 + 6, "{before} {after}");
+    assert_eq!(grown("bus_communication_errors"), 2, "{before} {after}");
+    assert_eq!(after["slave_nak"], 0);
+
+    // --clear zeroes them: what a diag counts next is only itself.
+    counters(&port, &["--clear"]);
+    let cleared = counters(&port, &[]);
+    assert_eq!(cleared["bus_messages"], 6, "{cleared}");
+    assert_eq!(cleared["bus_communication_errors"], 0, "{cleared}");
+}
+
+#[test]
+fn a_device_that_does_not_answer_exits_3() {
+    for command in ["info", "diag"] {
+        let output = mbtool()
+            .args(["--port", "sim", "--timeout", "100ms", command, "5"])
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(3), "{command}: {output:?}");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.starts_with("mbtool: no answer from slave 5 within 100.00 ms"),
+            "{stderr}"
+        );
+    }
+}
