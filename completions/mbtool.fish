@@ -28,13 +28,13 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -s p -l port -d 'Where the s
 complete -c mbtool -n "__fish_mbtool_needs_command" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_needs_command" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_needs_command" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_needs_command" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -78,6 +78,7 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-register" -d 'W
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-registers" -d 'Write holding registers (function 16)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "scan" -d 'Find the slaves on a line and the settings they use'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "info" -d 'Ask a device who it is: identification and server id'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "diag" -d 'A device\'s health: round trips, counters, status'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
@@ -90,13 +91,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s p -l port -
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -115,13 +116,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s p -l port 
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -140,13 +141,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s p
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -165,13 +166,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s p -l port
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -205,13 +206,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -245,13 +246,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s p
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -285,13 +286,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s p -l p
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -325,13 +326,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s p -l port -d 'Whe
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -365,13 +366,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s p -l port -
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -387,13 +388,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s p -l port 
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -410,13 +411,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s p -l po
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -447,13 +448,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s p -l p
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -489,13 +490,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s p -l port -d 'Wh
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -527,13 +528,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s p -l port -d 'Wher
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -559,17 +560,42 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l json -d 'The same 
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l ids -d 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l probe -d 'What each id is asked: read (03, one register at address 0) or id (17)' -r -f -a "read\t'Read one holding register at protocol address 0 (function 03)'
+id\t'Report server id (function 17)'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l listen -d 'Listen this long at each setting before sending anything: slaves heard answering another master are found without adding traffic' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l all -d 'Try every setting of the sweep, not only up to the first where a slave answers'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -584,13 +610,13 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s p -l port -d 'Whe
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
@@ -1011,8 +1037,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Wh
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -1040,8 +1066,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Wh
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s b -l baud -d 'Serial speed' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l parity -d 'Serial parity' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -1058,25 +1084,26 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l dir -d 'The folder that receives completions/ and man/' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "read-coils" -d 'Read coils (function 01)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "read-holding" -d 'Read holding registers (function 03)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "read" -d 'Read by reference: its first digit picks the table'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "write-coil" -d 'Write one coil (function 05)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "write-coils" -d 'Write coils (function 15)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "write-register" -d 'Write one holding register (function 06)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "raw" -d 'Send any PDU and decode the answer'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "info" -d 'Ask a device who it is: identification and server id'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "diag" -d 'A device\'s health: round trips, counters, status'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "encode" -d 'Print the frame a request command would send'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw info diag decode encode sniff serve generate help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "read" -d 'Read by reference: its first digit picks the table'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "scan" -d 'Find the slaves on a line and the settings they use'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "info" -d 'Ask a device who it is: identification and server id'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "diag" -d 'A device\'s health: round trips, counters, status'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "encode" -d 'Print the frame a request command would send'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-coils" -d 'Read coils (function 01)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-holding" -d 'Read holding registers (function 03)'

@@ -47,6 +47,33 @@ pub struct Cli {
     pub command: Command,
 }
 
+impl Cli {
+    /// The response timeout: as given, else 1 s, or 100 ms for scan, which asks many ids
+    /// that are not there.
+    pub fn timeout(&self) -> std::time::Duration {
+        let default = match self.command {
+            Command::Scan(_) => 100,
+            _ => 1000,
+        };
+        self.connection
+            .timeout
+            .unwrap_or(std::time::Duration::from_millis(default))
+    }
+
+    /// A list of baud rates or parities where only one is taken, as a one-line message.
+    pub fn sweep_outside_scan(&self) -> Option<String> {
+        let several = match (self.connection.baud.len(), self.connection.parity.len()) {
+            (_, _) if matches!(self.command, Command::Scan(_)) => return None,
+            (2.., _) => "baud rates",
+            (_, 2..) => "parities",
+            _ => return None,
+        };
+        Some(format!(
+            "only scan sweeps several {several}: give one (a list may come from MBTOOL_BAUD or MBTOOL_PARITY)"
+        ))
+    }
+}
+
 #[derive(Clone, Debug, Args)]
 #[command(next_help_heading = "Connection")]
 pub struct ConnectionArgs {
@@ -74,20 +101,21 @@ pub struct ConnectionArgs {
     )]
     pub mode: Option<ModeArg>,
 
-    /// Serial speed
+    /// Serial speed; scan sweeps a list (9600,19200,38400)
     #[arg(
         short,
         long,
         global = true,
         env = "MBTOOL_BAUD", hide_env_values = true,
-        default_value_t = 19200,
+        default_value = "19200",
+        value_delimiter = ',',
         value_parser = whole::<u32>(50, 12_000_000)
     )]
-    pub baud: u32,
+    pub baud: Vec<u32>,
 
-    /// Serial parity
-    #[arg(long, global = true, env = "MBTOOL_PARITY", hide_env_values = true, value_parser = choice::<Parity>(), default_value = Parity::Even.name())]
-    pub parity: Parity,
+    /// Serial parity; scan sweeps a list (none,even,odd)
+    #[arg(long, global = true, env = "MBTOOL_PARITY", hide_env_values = true, value_delimiter = ',', value_parser = choice::<Parity>(), default_value = Parity::Even.name())]
+    pub parity: Vec<Parity>,
 
     /// Serial data bits [default: 8, 7 in ASCII mode]
     #[arg(long, global = true, env = "MBTOOL_DATA_BITS", hide_env_values = true, value_parser = whole::<u8>(7, 8))]
@@ -97,9 +125,9 @@ pub struct ConnectionArgs {
     #[arg(long, global = true, env = "MBTOOL_STOP_BITS", hide_env_values = true, value_parser = whole::<u8>(1, 2))]
     pub stop_bits: Option<u8>,
 
-    /// Response timeout for a whole answer: 500ms, 1s, 2.5s
-    #[arg(long, global = true, env = "MBTOOL_TIMEOUT", hide_env_values = true, default_value = "1s", value_parser = positive_duration)]
-    pub timeout: std::time::Duration,
+    /// Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]
+    #[arg(long, global = true, env = "MBTOOL_TIMEOUT", hide_env_values = true, value_parser = positive_duration)]
+    pub timeout: Option<std::time::Duration>,
 
     /// Retries after a timeout or a bad answer (never after an exception)
     #[arg(long, global = true, env = "MBTOOL_RETRIES", hide_env_values = true, default_value_t = 0, value_name = "N", allow_negative_numbers = true, value_parser = whole::<u32>(0, 100))]
@@ -109,6 +137,18 @@ pub struct ConnectionArgs {
     /// baud]; 0 for gateways and devices that need none
     #[arg(long, global = true, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]
     pub frame_gap: Option<std::time::Duration>,
+}
+
+impl ConnectionArgs {
+    /// The serial speed; only scan sweeps several, and the parser refuses a list elsewhere.
+    pub fn baud(&self) -> u32 {
+        self.baud.first().copied().unwrap_or(19200)
+    }
+
+    /// The serial parity, as [`ConnectionArgs::baud`].
+    pub fn parity(&self) -> Parity {
+        self.parity.first().copied().unwrap_or(Parity::Even)
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -211,6 +251,10 @@ pub enum Command {
     #[command(flatten)]
     Request(RequestCommand),
 
+    /// Find the slaves on a line and the settings they use
+    #[command(long_about = SCAN_ABOUT)]
+    Scan(ScanArgs),
+
     /// Ask a device who it is: identification and server id
     #[command(long_about = INFO_ABOUT)]
     Info(InfoArgs),
@@ -242,6 +286,27 @@ pub enum Command {
     #[command(hide = true)]
     Generate(GenerateArgs),
 }
+
+const SCAN_ABOUT: &str = "\
+Find the slaves on a line: each id is asked once (--probe read: function 03, one register at \
+protocol address 0; --probe id: function 17), with the scan's own timeout (--timeout, 100ms \
+by default) and no retries, and each id that answers is asked once more to confirm it. A \
+slave is there when it answers with a valid frame, an exception included; exception 0A or \
+0B (a gateway's 'no such device') counts as absent; bytes that are no valid answer are \
+reported as something that answered, maybe at other settings.
+
+--baud and --parity lists sweep the serial settings, the most common first (19200 even, \
+9600 none, 9600 even, 19200 none, then the rest), and stop at the first settings where a \
+slave answers, unless --all. --listen 2s first listens at each setting without sending: \
+slaves heard answering another master are reported, and that setting is not probed, so a \
+live bus gets no extra traffic.
+
+Over TCP the ids are unit ids; when every id answers the same, the device ignores the \
+unit id, and mbtool says so instead of listing them all.
+
+On a terminal a progress bar on stderr shows the ids tried, the slaves found and the time \
+left. The results are a table, or JSON Lines (one line per slave), then a summary line on \
+stderr. Exit status 0 when a slave was found, 3 when none answered.";
 
 const INFO_ABOUT: &str = "\
 Ask a device who it is. Read device identification (function 43/14) at the basic level, \
@@ -508,6 +573,56 @@ pub struct RawArgs {
 }
 
 #[derive(Clone, Debug, Args)]
+pub struct ScanArgs {
+    /// The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200
+    #[arg(long, value_name = "IDS", default_value = "1-247", value_parser = parse_ids)]
+    pub ids: Ids,
+    /// What each id is asked: read (03, one register at address 0) or id (17)
+    #[arg(long, value_enum, default_value_t = ProbeArg::Read)]
+    pub probe: ProbeArg,
+    /// Listen this long at each setting before sending anything: slaves heard answering
+    /// another master are found without adding traffic
+    #[arg(long, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]
+    pub listen: Option<std::time::Duration>,
+    /// Try every setting of the sweep, not only up to the first where a slave answers
+    #[arg(long)]
+    pub all: bool,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ProbeArg {
+    /// Read one holding register at protocol address 0 (function 03)
+    Read,
+    /// Report server id (function 17)
+    Id,
+}
+
+/// The ids a scan asks, in order, each once.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Ids(pub Vec<u8>);
+
+/// `1-247`, `1-10,17,200`: the ids in the order given, each once.
+fn parse_ids(text: &str) -> Result<Ids, String> {
+    let mut ids = Vec::new();
+    for part in text.split(',').map(str::trim) {
+        let (first, last) = part.split_once('-').unwrap_or((part, part));
+        let id = |t: &str| {
+            mbtool_core::model::number::parse_in_range(t.trim(), 0, 255, "id").map(|id| id as u8)
+        };
+        let (first, last) = (id(first)?, id(last)?);
+        if first > last {
+            return Err(format!("{part}: the first id of a range comes first"));
+        }
+        for id in first..=last {
+            if !ids.contains(&id) {
+                ids.push(id);
+            }
+        }
+    }
+    Ok(Ids(ids))
+}
+
+#[derive(Clone, Debug, Args)]
 pub struct InfoArgs {
     /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
     pub slave: String,
@@ -735,6 +850,8 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
         ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
         ["sniff" | "serve"] => &[LINE, FORMAT],
         ["info"] => &[LINE, MASTER, FORMAT],
+        // A scan has no retries: each id that answers is asked once more instead.
+        ["scan"] => &[LINE, &["timeout", "frame_gap", "verbose"], FORMAT],
         ["diag"] => &[LINE, MASTER, FORMAT, &["poll_count"]],
         // What the request command takes, less what only matters on the wire.
         ["encode", request] => {

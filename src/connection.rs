@@ -64,25 +64,41 @@ pub fn mode(cli: &Cli, endpoint: Option<&Endpoint>, role: Role) -> Result<Mode> 
 
 /// The serial line settings, defaults filled in as CLI.md gives them.
 pub fn line_settings(cli: &Cli, mode: Mode) -> LineSettings {
+    line_at(cli, mode, cli.connection.baud(), cli.connection.parity())
+}
+
+/// The serial line settings at `baud` and `parity` (a step of a scan's sweep), the data
+/// and stop bits as the options give them.
+pub fn line_at(cli: &Cli, mode: Mode, baud: u32, parity: Parity) -> LineSettings {
     let c = &cli.connection;
     LineSettings {
-        baud: c.baud,
-        parity: c.parity,
+        baud,
+        parity,
         data_bits: c
             .data_bits
             .unwrap_or(if mode == Mode::Ascii { 7 } else { 8 }),
         stop_bits: c
             .stop_bits
-            .unwrap_or(if c.parity == Parity::None { 2 } else { 1 }),
+            .unwrap_or(if parity == Parity::None { 2 } else { 1 }),
     }
 }
 
-/// Opens the transport of `endpoint`.
+/// Opens the transport of `endpoint`, a serial line with the options' settings.
 pub fn open(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Box<dyn Transport>> {
-    let timeout = cli.connection.timeout;
+    open_at(cli, endpoint, mode, &line_settings(cli, mode))
+}
+
+/// Opens the transport of `endpoint`, a serial line with `line`.
+pub fn open_at(
+    cli: &Cli,
+    endpoint: &Endpoint,
+    mode: Mode,
+    line: &LineSettings,
+) -> Result<Box<dyn Transport>> {
+    let timeout = cli.timeout();
     let opened: io::Result<Box<dyn Transport>> = match endpoint {
         Endpoint::Serial(path) => {
-            Serial::open(path, &line_settings(cli, mode)).map(|s| Box::new(s) as Box<dyn Transport>)
+            Serial::open(path, line).map(|s| Box::new(s) as Box<dyn Transport>)
         }
         Endpoint::Tcp { host, port } => {
             Tcp::connect(host, *port, timeout, false).map(|t| Box::new(t) as Box<dyn Transport>)
@@ -143,9 +159,26 @@ pub fn tried(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> (String, &'static st
 
 /// A master on `endpoint`, framing in `mode`, as the options resolved them.
 pub fn master(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
-    let transport = open(cli, endpoint, mode)?;
+    master_at(
+        cli,
+        endpoint,
+        mode,
+        &line_settings(cli, mode),
+        cli.connection.retries,
+    )
+}
+
+/// A master on `endpoint` with the serial settings `line` and `retries`, the rest as the
+/// options resolved them.
+pub fn master_at(
+    cli: &Cli,
+    endpoint: &Endpoint,
+    mode: Mode,
+    line: &LineSettings,
+    retries: u32,
+) -> Result<Master> {
+    let transport = open_at(cli, endpoint, mode, line)?;
     let serial_line = matches!(endpoint, Endpoint::Serial(_) | Endpoint::RtuOverTcp { .. });
-    let line = line_settings(cli, mode);
     let gap = cli.connection.frame_gap.unwrap_or_else(|| match mode {
         Mode::Rtu if serial_line => line.frame_gap(),
         _ => std::time::Duration::ZERO,
@@ -159,8 +192,8 @@ pub fn master(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
         transport,
         MasterOptions {
             mode,
-            timeout: cli.connection.timeout,
-            retries: cli.connection.retries,
+            timeout: cli.timeout(),
+            retries,
             frame_gap: gap,
             character,
             silence,

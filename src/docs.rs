@@ -129,6 +129,27 @@ const EXAMPLES: &[(&str, &[Example])] = &[
         )],
     ),
     (
+        "scan",
+        &[
+            ex(
+                "Find the slaves on a line at 19200 baud, even parity",
+                "mbtool --port /dev/ttyUSB0 scan",
+            ),
+            ex(
+                "Find a device whose settings are forgotten: sweep baud rates and parities",
+                "mbtool --port /dev/ttyUSB0 scan --baud 9600,19200,38400 --parity none,even,odd --ids 1-20",
+            ),
+            ex(
+                "On a bus with a master on it: listen first, send only if nothing is heard",
+                "mbtool --port /dev/ttyUSB0 scan --listen 2s",
+            ),
+            ex(
+                "The unit ids behind a TCP gateway, as JSON Lines",
+                "mbtool --port tcp://10.0.0.5 scan --ids 1-32 --json",
+            ),
+        ],
+    ),
+    (
         "info",
         &[
             ex("Ask slave 17 who it is", "mbtool --port /dev/ttyUSB0 info 17"),

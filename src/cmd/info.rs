@@ -47,7 +47,7 @@ pub fn run(cli: &Cli, args: &InfoArgs) -> Result<u8> {
         (Outcome::NoAnswer(_), _) | (_, Outcome::NoAnswer(_)) => {
             let timeout = MasterError::Timeout {
                 slave,
-                timeout: cli.connection.timeout,
+                timeout: cli.timeout(),
             };
             return Err(connection.explain(cli, timeout.into()).into());
         }

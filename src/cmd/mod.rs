@@ -5,6 +5,7 @@ mod diag;
 mod encode;
 mod info;
 mod request;
+mod scan;
 mod serve;
 mod sniff;
 
@@ -15,6 +16,7 @@ use mbtool::cli::{Cli, Command};
 /// Runs the command; `Ok` carries the exit status of a command that finished its work.
 pub fn run(cli: Cli) -> Result<u8> {
     match &cli.command {
+        Command::Scan(args) => scan::run(&cli, args),
         Command::Info(args) => info::run(&cli, args),
         Command::Diag(args) => diag::run(&cli, args),
         Command::Decode(args) => decode::run(&cli, args),

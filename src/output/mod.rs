@@ -5,6 +5,7 @@ pub mod decode;
 pub mod device;
 pub mod encode;
 pub mod read;
+pub mod scan;
 pub mod serve;
 pub mod sniff;
 

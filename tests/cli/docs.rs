@@ -123,7 +123,7 @@ fn every_help_example_is_one_the_command_accepts() {
                 args.push(word);
             }
         }
-        if ["info", "diag"].contains(&name) {
+        if ["scan", "info", "diag"].contains(&name) {
             args.splice(0..0, ["--port", "sim"]);
         } else if !["decode", "encode"].contains(&name) {
             args.insert(0, "encode");

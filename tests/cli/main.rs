@@ -17,6 +17,7 @@ mod master_sim;
 mod master_tcp;
 mod master_tokio;
 mod readme;
+mod scan;
 mod serve;
 mod serve_framing;
 mod sniff;

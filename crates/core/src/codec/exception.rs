@@ -16,6 +16,8 @@ impl ExceptionCode {
     pub const ILLEGAL_DATA_VALUE: Self = Self(0x03);
     /// 04: an unrecoverable error happened while the device carried out the request.
     pub const SERVER_DEVICE_FAILURE: Self = Self(0x04);
+    /// 0A: a gateway has no path to the target device.
+    pub const GATEWAY_PATH_UNAVAILABLE: Self = Self(0x0A);
     /// 0B: a gateway got no response from the target device.
     pub const GATEWAY_TARGET_FAILED: Self = Self(0x0B);
 

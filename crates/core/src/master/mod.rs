@@ -14,6 +14,7 @@ use crate::transport::Transport;
 pub mod device;
 pub mod plan;
 pub mod run;
+pub mod scan;
 
 /// How the master behaves; the connection options fill it in.
 #[derive(Clone, Copy, Debug)]
@@ -181,6 +182,55 @@ impl Master {
     fn note(&mut self, traffic: Traffic, bytes: &[u8]) {
         if let Some(tracer) = self.tracer.as_mut() {
             tracer(traffic, bytes);
+        }
+    }
+
+    /// Listens for `duration` without sending anything, and returns the slave ids whose
+    /// answers were heard on the line, in the order first heard: the slaves another master
+    /// is talking to.
+    pub fn listen(&mut self, duration: Duration) -> std::io::Result<Vec<u8>> {
+        let deadline = Instant::now() + duration;
+        let mut framer = Framer::new(
+            self.options.mode,
+            self.options.character.as_secs_f64() * 1e6,
+            self.options.silence.as_micros() as u64,
+        );
+        let mut chunk = Vec::with_capacity(512);
+        let mut events = Vec::new();
+        let mut heard = Vec::new();
+        loop {
+            chunk.clear();
+            let received = self.transport.receive(&mut chunk, deadline)?;
+            if received == 0 {
+                framer.finish(&mut events);
+            } else {
+                self.note(Traffic::Received, &chunk);
+                framer.push_at(
+                    &chunk,
+                    self.started.elapsed().as_micros() as u64,
+                    &mut events,
+                );
+            }
+            let mode = self.options.mode;
+            for event in events.drain(..) {
+                let Event::Frame(found) = event else { continue };
+                // An answer, where its layout tells; else what reads only as one.
+                let answer = found.broken.is_none()
+                    && match found.direction {
+                        Some(direction) => direction == Direction::Response,
+                        None => Frame::decode(mode, &found.bytes, Direction::Request).is_err(),
+                    };
+                let frame = Frame::decode(mode, &found.bytes, Direction::Response);
+                if let (true, Ok(frame)) = (answer, frame) {
+                    if !heard.contains(&frame.slave) {
+                        heard.push(frame.slave);
+                    }
+                }
+            }
+            if received == 0 {
+                self.last_traffic = Some(Instant::now());
+                return Ok(heard);
+            }
         }
     }
 

@@ -1,0 +1,306 @@
+//! Finding the slaves on a line: every id asked once at each serial setting, the most
+//! common settings first, each id that answers asked again to confirm it, and, before
+//! anything is sent, an ear on the line for slaves another master is already talking to.
+
+use std::time::Duration;
+
+use super::{Master, MasterError, Reply};
+use crate::codec::{ExceptionCode, Request};
+use crate::transport::serial::Parity;
+
+/// What each id is asked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Probe {
+    /// Read one holding register at protocol address 0 (03).
+    Read,
+    /// Report server id (17).
+    Id,
+}
+
+impl Probe {
+    fn request(self) -> Request {
+        match self {
+            Probe::Read => Request::ReadHoldingRegisters {
+                address: 0,
+                quantity: 1,
+            },
+            Probe::Id => Request::ReportServerId,
+        }
+    }
+}
+
+/// What a scan asks.
+#[derive(Clone, Debug)]
+pub struct ScanOptions {
+    /// The ids to ask, in order.
+    pub ids: Vec<u8>,
+    /// The request each id is asked.
+    pub probe: Probe,
+    /// Listen this long at each setting before sending anything.
+    pub listen: Option<Duration>,
+    /// Go on through every setting instead of stopping at the first where a slave answers.
+    pub all: bool,
+}
+
+/// How a slave answered.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Answer {
+    /// A normal answer.
+    Ok,
+    /// An exception: the slave is there, and says no to the probe.
+    Exception(ExceptionCode),
+}
+
+/// A slave found.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Hit {
+    /// Its id.
+    pub slave: u8,
+    /// The index of the setting it answered at.
+    pub setting: usize,
+    /// How it answered; `None` when it was only heard answering another master.
+    pub answer: Option<Answer>,
+    /// It answered when asked again (or was heard on the line).
+    pub confirmed: bool,
+}
+
+/// Bytes that came back for an id but were no valid answer: something is there, maybe
+/// at other settings.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Garbled {
+    /// The id asked.
+    pub slave: u8,
+    /// The index of the setting.
+    pub setting: usize,
+    /// What was wrong with what came.
+    pub detail: String,
+}
+
+/// What a scan found.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct ScanReport {
+    /// The slaves found, in the order found.
+    pub hits: Vec<Hit>,
+    /// The ids that drew bytes that were no answer.
+    pub garbled: Vec<Garbled>,
+    /// How many settings were tried.
+    pub settings_tried: usize,
+    /// How many requests were sent.
+    pub requests: u64,
+    /// Every id asked answered: the device does not tell unit ids apart (a TCP device
+    /// that ignores the unit id, or refuses the ones it lacks with an exception of its
+    /// own). The answer most ids gave; the hits that answered otherwise are the ones
+    /// that tell.
+    pub ignores_unit_id: Option<Answer>,
+}
+
+/// What the scan is doing, for a progress display.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Progress {
+    /// Starting on setting `index` of `of`.
+    Setting {
+        /// Its index.
+        index: usize,
+        /// How many there are.
+        of: usize,
+    },
+    /// Listening before sending, at the current setting.
+    Listening,
+    /// One id asked; `found` slaves so far.
+    Asked {
+        /// The id.
+        slave: u8,
+        /// Slaves found so far.
+        found: usize,
+    },
+}
+
+/// How one probe came out.
+enum Outcome {
+    Present(Answer),
+    Absent,
+    Garbled(String),
+}
+
+fn probe(master: &mut Master, slave: u8, request: &Request) -> Result<Outcome, MasterError> {
+    Ok(match master.transact(slave, request) {
+        Ok(Reply::Response(_)) => Outcome::Present(Answer::Ok),
+        // A gateway's "no such device": nothing there.
+        Ok(Reply::Exception(exception))
+            if matches!(
+                exception.code,
+                ExceptionCode::GATEWAY_PATH_UNAVAILABLE | ExceptionCode::GATEWAY_TARGET_FAILED
+            ) =>
+        {
+            Outcome::Absent
+        }
+        Ok(Reply::Exception(exception)) => Outcome::Present(Answer::Exception(exception.code)),
+        Ok(Reply::Broadcast) | Err(MasterError::Timeout { .. }) => Outcome::Absent,
+        Err(MasterError::BadFrame { reason, .. }) => Outcome::Garbled(reason.to_string()),
+        Err(error) => return Err(error),
+    })
+}
+
+/// Scans `settings` in order. `open` gives a master at a setting (with the scan's timeout
+/// and no retries); `progress` is told what is going on.
+pub fn scan<S, E>(
+    settings: &[S],
+    options: &ScanOptions,
+    mut open: impl FnMut(&S) -> Result<Master, E>,
+    mut progress: impl FnMut(Progress),
+) -> Result<ScanReport, E>
+where
+    E: From<MasterError>,
+{
+    let mut report = ScanReport::default();
+    let request = options.probe.request();
+    for (index, setting) in settings.iter().enumerate() {
+        progress(Progress::Setting {
+            index,
+            of: settings.len(),
+        });
+        report.settings_tried += 1;
+        let mut master = open(setting)?;
+        let found_before = report.hits.len();
+        let heard = match options.listen {
+            Some(duration) => {
+                progress(Progress::Listening);
+                master.listen(duration).map_err(MasterError::Io)?
+            }
+            None => Vec::new(),
+        };
+        let heard: Vec<u8> = heard
+            .into_iter()
+            .filter(|id| options.ids.contains(id))
+            .collect();
+        // Slaves heard talking to a master: found without adding traffic to its bus.
+        for slave in &heard {
+            report.hits.push(Hit {
+                slave: *slave,
+                setting: index,
+                answer: None,
+                confirmed: true,
+            });
+        }
+        if heard.is_empty() {
+            for slave in &options.ids {
+                report.requests += 1;
+                match probe(&mut master, *slave, &request)? {
+                    Outcome::Present(answer) => {
+                        report.requests += 1;
+                        let again = probe(&mut master, *slave, &request)?;
+                        report.hits.push(Hit {
+                            slave: *slave,
+                            setting: index,
+                            answer: Some(answer),
+                            confirmed: matches!(again, Outcome::Present(_)),
+                        });
+                    }
+                    Outcome::Garbled(detail) => report.garbled.push(Garbled {
+                        slave: *slave,
+                        setting: index,
+                        detail,
+                    }),
+                    Outcome::Absent => {}
+                }
+                progress(Progress::Asked {
+                    slave: *slave,
+                    found: report.hits.len(),
+                });
+            }
+        }
+        if report.hits.len() > found_before && !options.all {
+            break;
+        }
+    }
+    report.ignores_unit_id = ignores_unit_id(&report, options);
+    Ok(report)
+}
+
+/// Every id asked answered at one setting: the answer most of them gave.
+fn ignores_unit_id(report: &ScanReport, options: &ScanOptions) -> Option<Answer> {
+    let first = report.hits.first()?;
+    let answers: Vec<Answer> = report
+        .hits
+        .iter()
+        .filter(|hit| hit.setting == first.setting)
+        .filter_map(|hit| hit.answer)
+        .collect();
+    if options.ids.len() < 2 || answers.len() < options.ids.len() {
+        return None;
+    }
+    let count = |answer: &Answer| answers.iter().filter(|a| *a == answer).count();
+    answers.iter().copied().max_by_key(|answer| count(answer))
+}
+
+impl ScanReport {
+    /// The hits worth listing: all of them, or, when the device does not tell unit ids
+    /// apart, those that answered otherwise than most.
+    pub fn telling_hits(&self) -> impl Iterator<Item = &Hit> {
+        self.hits
+            .iter()
+            .filter(|hit| self.ignores_unit_id.is_none() || hit.answer != self.ignores_unit_id)
+    }
+}
+
+/// Baud rates by how often devices use them.
+const COMMON_BAUDS: [u32; 8] = [19200, 9600, 38400, 115_200, 57600, 4800, 2400, 1200];
+
+/// The settings field devices use most, in that order; the rest follow by baud rate.
+const COMMON_SETTINGS: [(u32, Parity); 4] = [
+    (19200, Parity::Even),
+    (9600, Parity::None),
+    (9600, Parity::Even),
+    (19200, Parity::None),
+];
+
+/// Every pairing of `bauds` and `parities`, the most common first: 19200 even (the
+/// specification's default), 9600 none, 9600 even, 19200 none, then by how common the
+/// baud rate is, even before none before odd.
+pub fn sweep(bauds: &[u32], parities: &[Parity]) -> Vec<(u32, Parity)> {
+    let mut settings: Vec<(u32, Parity)> = bauds
+        .iter()
+        .flat_map(|baud| parities.iter().map(move |parity| (*baud, *parity)))
+        .collect();
+    settings.dedup();
+    let rank = |setting: &(u32, Parity)| {
+        let common = COMMON_SETTINGS.iter().position(|known| known == setting);
+        let baud = COMMON_BAUDS.iter().position(|known| *known == setting.0);
+        let parity = [Parity::Even, Parity::None, Parity::Odd]
+            .iter()
+            .position(|known| *known == setting.1);
+        (
+            common.unwrap_or(usize::MAX),
+            baud.unwrap_or(usize::MAX),
+            parity,
+        )
+    };
+    settings.sort_by_key(rank);
+    settings
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_most_common_settings_come_first() {
+        let settings = sweep(
+            &[1200, 9600, 19200, 38400],
+            &[Parity::Odd, Parity::None, Parity::Even],
+        );
+        assert_eq!(
+            &settings[..6],
+            [
+                (19200, Parity::Even),
+                (9600, Parity::None),
+                (9600, Parity::Even),
+                (19200, Parity::None),
+                (19200, Parity::Odd),
+                (9600, Parity::Odd),
+            ]
+        );
+        assert_eq!(settings.len(), 12);
+        assert_eq!(settings[11], (1200, Parity::Odd));
+    }
+}

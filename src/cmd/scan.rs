@@ -1,0 +1,169 @@
+//! `mbtool scan`: the slaves on a line, and the serial settings they answer at.
+
+use std::io::{IsTerminal, Write};
+use std::time::Instant;
+
+use anyhow::Result;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+
+use mbtool::cli::{Cli, ProbeArg, ScanArgs};
+use mbtool::connection::{self, Role};
+use mbtool::error::Error;
+use mbtool::output::scan::{write_scan, Where};
+use mbtool::output::{self, colour_wanted};
+use mbtool_core::codec::Mode;
+use mbtool_core::master::scan::{scan, sweep, Probe, Progress, ScanOptions, ScanReport};
+use mbtool_core::transport::Endpoint;
+
+/// A progress bar on stderr, drawn only on a terminal.
+fn progress_bar(total: u64, shown: bool) -> ProgressBar {
+    if !shown {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::stderr());
+    if let Ok(style) =
+        ProgressStyle::with_template("{bar:30} {pos}/{len} ids asked, {msg}, {eta} left")
+    {
+        bar.set_style(style);
+    }
+    bar.set_message("0 found");
+    bar
+}
+
+pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
+    let endpoint = connection::endpoint(cli)?;
+    let mode = connection::mode(cli, Some(&endpoint), Role::Master)?;
+    let ids = &args.ids.0;
+    if mode != Mode::Tcp {
+        if let Some(id) = ids.iter().find(|id| !(1..=247).contains(*id)) {
+            return Err(Error::usage(format!(
+                "--ids: {id} is no slave id on a serial line: give ids from 1 to 247"
+            ))
+            .into());
+        }
+    }
+    // Only a serial line of our own has settings to sweep.
+    let serial = matches!(endpoint, Endpoint::Serial(_));
+    let settings: Vec<_> = if serial {
+        sweep(&cli.connection.baud, &cli.connection.parity)
+            .into_iter()
+            .map(|(baud, parity)| connection::line_at(cli, mode, baud, parity))
+            .collect()
+    } else {
+        vec![connection::line_settings(cli, mode)]
+    };
+    let options = ScanOptions {
+        ids: ids.clone(),
+        probe: match args.probe {
+            ProbeArg::Read => Probe::Read,
+            ProbeArg::Id => Probe::Id,
+        },
+        listen: args.listen,
+        all: args.all,
+    };
+    let total = (ids.len() * settings.len()) as u64;
+    let bar = progress_bar(
+        total,
+        std::io::stderr().is_terminal() && !cli.output.verbose,
+    );
+    let place = Where {
+        mode,
+        settings: &settings,
+        serial,
+    };
+    let started = Instant::now();
+    let report = scan(
+        &settings,
+        &options,
+        |line| {
+            let mut master = connection::master_at(cli, &endpoint, mode, line, 0)?;
+            if cli.output.verbose {
+                master.trace(super::request::tracer(mode));
+            }
+            Ok::<_, Error>(master)
+        },
+        |progress| match progress {
+            Progress::Setting { index, .. } => {
+                if serial {
+                    bar.set_message(format!("at {}", place.describe(index)));
+                }
+            }
+            Progress::Listening => bar.set_message("listening"),
+            Progress::Asked { found, .. } => {
+                bar.inc(1);
+                bar.set_message(format!("{found} found"));
+            }
+        },
+    )?;
+    bar.finish_and_clear();
+    let mut out = output::stdout();
+    write_scan(
+        &mut out,
+        cli.output.format(),
+        &report,
+        &place,
+        colour_wanted(),
+    )?;
+    out.flush()?;
+    for garbled in &report.garbled {
+        mbtool::note!(
+            "mbtool: id {} at {}: something answered, maybe at other settings ({})",
+            garbled.slave,
+            place.describe(garbled.setting),
+            garbled.detail
+        );
+    }
+    mbtool::note!("mbtool: {}", summary(&report, &place, started.elapsed()));
+    Ok(if report.hits.is_empty() { 3 } else { 0 })
+}
+
+/// `3 slaves found (3, 17, 200) at 19200 baud, even parity; 1 setting tried, 250
+/// requests in 25.1 s`.
+fn summary(report: &ScanReport, place: &Where, elapsed: std::time::Duration) -> String {
+    let mut at_settings: Vec<(usize, Vec<String>)> = Vec::new();
+    for hit in &report.hits {
+        match at_settings
+            .iter_mut()
+            .find(|(setting, _)| *setting == hit.setting)
+        {
+            Some((_, ids)) => ids.push(hit.slave.to_string()),
+            None => at_settings.push((hit.setting, vec![hit.slave.to_string()])),
+        }
+    }
+    let found = match report.hits.len() {
+        _ if report.ignores_unit_id.is_some() => {
+            let telling: Vec<String> = report
+                .telling_hits()
+                .map(|hit| hit.slave.to_string())
+                .collect();
+            match telling.as_slice() {
+                [] => "one device, answering every unit id alike".to_string(),
+                ids => format!(
+                    "one device, answering every unit id; {} answered otherwise",
+                    ids.join(", ")
+                ),
+            }
+        }
+        0 => "no slave found".to_string(),
+        n => {
+            let groups: Vec<String> = at_settings
+                .iter()
+                .map(|(setting, ids)| match place.serial {
+                    true => format!("{} at {}", ids.join(", "), place.describe(*setting)),
+                    false => ids.join(", "),
+                })
+                .collect();
+            let noun = if n == 1 { "slave" } else { "slaves" };
+            format!("{n} {noun} found: {}", groups.join("; "))
+        }
+    };
+    let tried = match report.settings_tried {
+        1 => "1 setting".to_string(),
+        n => format!("{n} settings"),
+    };
+    format!(
+        "{found}; {tried} tried, {} requests in {:.1} s",
+        report.requests,
+        elapsed.as_secs_f64()
+    )
+}

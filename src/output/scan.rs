@@ -1,0 +1,151 @@
+//! How `scan` shows the slaves it found: a table or CSV for people, one JSON line per
+//! slave for scripts, the bare ids for `$(...)`; and a summary line.
+
+use std::io::{self, Write};
+
+use serde_json::json;
+
+use super::{csv_field, new_table};
+use crate::cli::OutputFormat;
+use mbtool_core::codec::Mode;
+use mbtool_core::master::scan::{Answer, ScanReport};
+use mbtool_core::model::choice::Choice;
+use mbtool_core::transport::serial::LineSettings;
+
+/// Where the scan asked: the serial settings of each step of the sweep, or none over TCP.
+pub struct Where<'a> {
+    pub mode: Mode,
+    pub settings: &'a [LineSettings],
+    pub serial: bool,
+}
+
+impl Where<'_> {
+    fn line(&self, index: usize) -> Option<&LineSettings> {
+        self.settings.get(index).filter(|_| self.serial)
+    }
+
+    /// `19200 baud, even parity`.
+    pub fn describe(&self, index: usize) -> String {
+        match self.line(index) {
+            Some(line) => format!("{} baud, {} parity", line.baud, line.parity.name()),
+            None => self.mode.to_string(),
+        }
+    }
+}
+
+fn answer_text(answer: Option<Answer>) -> String {
+    match answer {
+        Some(Answer::Ok) => "ok".into(),
+        Some(Answer::Exception(code)) => format!("exception {code}"),
+        None => "heard answering another master".into(),
+    }
+}
+
+fn answer_json(answer: Option<Answer>) -> (&'static str, Option<u8>) {
+    match answer {
+        Some(Answer::Ok) => ("ok", None),
+        Some(Answer::Exception(code)) => ("exception", Some(code.0)),
+        None => ("heard", None),
+    }
+}
+
+pub fn write_scan(
+    out: &mut dyn Write,
+    format: OutputFormat,
+    report: &ScanReport,
+    place: &Where,
+    colour: bool,
+) -> io::Result<()> {
+    if let Some(answer) = report.ignores_unit_id {
+        match format {
+            OutputFormat::Json => {
+                let (answer, exception) = answer_json(Some(answer));
+                let line = json!({"ignores_unit_id": true, "mode": place.mode.name(),
+                    "answer": answer, "exception": exception});
+                writeln!(out, "{line}")?;
+            }
+            OutputFormat::Table => writeln!(
+                out,
+                "every id answered ({}): the device does not tell unit ids apart{}",
+                answer_text(Some(answer)),
+                if report.telling_hits().next().is_some() {
+                    "; these answered otherwise:"
+                } else {
+                    ""
+                }
+            )?,
+            OutputFormat::Csv | OutputFormat::Values => {}
+        }
+    }
+    match format {
+        OutputFormat::Json => {
+            for hit in report.telling_hits() {
+                let (answer, exception) = answer_json(hit.answer);
+                let mut line = json!({
+                    "slave": hit.slave,
+                    "mode": place.mode.name(),
+                    "answer": answer,
+                    "confirmed": hit.confirmed,
+                });
+                if let (Some(object), Some(setting)) =
+                    (line.as_object_mut(), place.line(hit.setting))
+                {
+                    object.insert("baud".into(), json!(setting.baud));
+                    object.insert("parity".into(), json!(setting.parity.name()));
+                }
+                if let (Some(object), Some(code)) = (line.as_object_mut(), exception) {
+                    object.insert("exception".into(), json!(code));
+                }
+                writeln!(out, "{line}")?;
+            }
+            for garbled in &report.garbled {
+                let line = json!({"slave": garbled.slave, "mode": place.mode.name(),
+                    "answer": "garbled", "detail": garbled.detail,
+                    "at": place.describe(garbled.setting)});
+                writeln!(out, "{line}")?;
+            }
+            Ok(())
+        }
+        OutputFormat::Values => {
+            for hit in report.telling_hits() {
+                writeln!(out, "{}", hit.slave)?;
+            }
+            Ok(())
+        }
+        OutputFormat::Csv => {
+            writeln!(out, "slave,settings,answer,confirmed")?;
+            for hit in report.telling_hits() {
+                writeln!(
+                    out,
+                    "{},{},{},{}",
+                    hit.slave,
+                    csv_field(&place.describe(hit.setting)),
+                    csv_field(&answer_text(hit.answer)),
+                    hit.confirmed
+                )?;
+            }
+            Ok(())
+        }
+        OutputFormat::Table => {
+            if report.telling_hits().next().is_none() {
+                return Ok(());
+            }
+            let mut table = new_table(colour);
+            table.set_header(["slave", "settings", "answer", "confirmed"]);
+            for hit in report.telling_hits() {
+                let confirmed = if hit.confirmed {
+                    "yes"
+                } else {
+                    "no: silent when asked again"
+                };
+                table.add_row(vec![
+                    hit.slave.to_string(),
+                    place.describe(hit.setting),
+                    answer_text(hit.answer),
+                    confirmed.to_string(),
+                ]);
+            }
+            writeln!(out, "{table}")
+        }
+    }
+}

@@ -1,0 +1,236 @@
+//! `mbtool scan` finding slaves: `serve` with several ids on a pseudo-terminal and on TCP,
+//! a slave that answers only at its own serial settings, a bus heard without a byte
+//! sent, and a TCP device that answers every unit id.
+
+use std::io::{BufRead, BufReader, Read, Write};
+use std::process::{Command as Process, Stdio};
+use std::time::Duration;
+
+use crate::support::{
+    free_port, mbtool, peer_available, python_has, serve_pty, serve_tcp, wait_for_listener,
+    PtyPair, Stopped,
+};
+
+struct Scan {
+    code: i32,
+    stdout: String,
+    stderr: String,
+}
+
+fn scan(port: &[String], args: &[&str]) -> Scan {
+    let output = mbtool().args(port).arg("scan").args(args).output().unwrap();
+    Scan {
+        code: output.status.code().unwrap_or(-1),
+        stdout: String::from_utf8_lossy(&output.stdout).into_owned(),
+        stderr: String::from_utf8_lossy(&output.stderr).into_owned(),
+    }
+}
+
+fn json_lines(text: &str) -> Vec<serde_json::Value> {
+    text.lines()
+        .map(|line| serde_json::from_str(line).unwrap())
+        .collect()
+}
+
+#[test]
+fn scan_finds_every_slave_on_a_serial_line() {
+    let Some(pair) = PtyPair::new() else { return };
+    let (_server, port) = serve_pty(&pair, &["--slave", "3", "--slave", "17", "--slave", "200"]);
+    let run = scan(&port, &["--timeout", "20ms", "--json"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let found: Vec<(u64, bool)> = json_lines(&run.stdout)
+        .iter()
+        .map(|line| {
+            assert_eq!(line["answer"], "ok", "{line}");
+            assert_eq!(
+                (line["baud"].as_u64(), line["parity"].as_str()),
+                (Some(19200), Some("even"))
+            );
+            (line["slave"].as_u64().unwrap(), line["confirmed"] == true)
+        })
+        .collect();
+    assert_eq!(found, [(3, true), (17, true), (200, true)]);
+    assert!(
+        run.stderr
+            .contains("3 slaves found: 3, 17, 200 at 19200 baud, even parity; 1 setting tried"),
+        "{}",
+        run.stderr
+    );
+
+    let table = scan(&port, &["--timeout", "20ms", "--ids", "1-20"]);
+    assert_eq!(table.code, 0);
+    let row: Vec<&str> = table
+        .stdout
+        .lines()
+        .find(|line| line.contains(" 17 "))
+        .map(|line| line.split(['│', '┆']).map(str::trim).collect())
+        .unwrap_or_default();
+    assert_eq!(
+        row,
+        ["", "17", "19200 baud, even parity", "ok", "yes", ""],
+        "{}",
+        table.stdout
+    );
+    // 200 is past --ids.
+    assert!(!table.stdout.contains("│ 200 "), "{}", table.stdout);
+}
+
+#[test]
+fn scan_finds_nothing_and_exits_3() {
+    let Some(pair) = PtyPair::new() else { return };
+    let (_server, port) = serve_pty(&pair, &[]);
+    let run = scan(&port, &["--timeout", "20ms", "--ids", "1-5,18"]);
+    assert_eq!(run.code, 3, "{}", run.stderr);
+    assert_eq!(run.stdout, "");
+    assert!(
+        run.stderr
+            .contains("no slave found; 1 setting tried, 6 requests"),
+        "{}",
+        run.stderr
+    );
+}
+
+#[test]
+fn scan_over_tcp_finds_the_unit_ids_served() {
+    let (_server, port, _) = serve_tcp(&["--slave", "5", "--slave", "9"]);
+    let run = scan(&port, &["--json"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let slaves: Vec<u64> = json_lines(&run.stdout)
+        .iter()
+        .map(|line| line["slave"].as_u64().unwrap())
+        .collect();
+    // The other ids get exception 0B, a gateway's "no such device": absent.
+    assert_eq!(slaves, [5, 9]);
+}
+
+#[test]
+fn a_device_that_answers_every_unit_id_is_one_device() {
+    // serve answers unit ids 0 and 255 as its first slave, like a device that ignores the
+    // unit id; asking those two alone, it answers both the same way.
+    let (_server, port, _) = serve_tcp(&["--slave", "1"]);
+    let run = scan(&port, &["--ids", "0,255,1"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert_eq!(
+        run.stdout,
+        "every id answered (ok): the device does not tell unit ids apart\n"
+    );
+    let json = scan(&port, &["--ids", "0,255,1", "--json"]);
+    assert_eq!(json_lines(&json.stdout)[0]["ignores_unit_id"], true);
+}
+
+#[test]
+fn pymodbus_answering_every_unit_id_is_one_device_with_one_real_id() {
+    if !peer_available("pymodbus (Python)", python_has("pymodbus")) {
+        return;
+    }
+    let tcp = free_port();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/pymodbus_slave.py");
+    let _slave = Stopped(
+        Process::new("python3")
+            .args([script, "--framer", "socket", "--tcp", &tcp.to_string()])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    assert!(wait_for_listener(tcp, Duration::from_secs(15)));
+    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    // pymodbus refuses the unit ids it lacks with exception 04 rather than staying
+    // silent: only slave 17 answers otherwise.
+    let run = scan(&port, &["--ids", "1-30", "--json"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let lines = json_lines(&run.stdout);
+    assert_eq!(lines.len(), 2, "{}", run.stdout);
+    assert_eq!(lines[0]["ignores_unit_id"], true);
+    assert_eq!(lines[0]["exception"], 4);
+    assert_eq!(
+        (&lines[1]["slave"], &lines[1]["answer"]),
+        (&serde_json::json!(17), &serde_json::json!("ok"))
+    );
+}
+
+#[test]
+fn the_sweep_finds_the_settings_a_slave_answers_at() {
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/picky_slave.py");
+    let mut child = Process::new("python3")
+        .args([script, "--id", "17", "--baud", "38400", "--parity", "odd"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let stdout = child.stdout.take().unwrap();
+    let _slave = Stopped(child);
+    let mut path = String::new();
+    BufReader::new(stdout).read_line(&mut path).unwrap();
+    let port = vec!["--port".to_string(), path.trim().to_string()];
+    let run = scan(
+        &port,
+        &[
+            "--baud",
+            "9600,19200,38400",
+            "--parity",
+            "none,even,odd",
+            "--ids",
+            "16-18",
+            "--timeout",
+            "30ms",
+            "--json",
+        ],
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let found = json_lines(&run.stdout);
+    assert_eq!(found.len(), 1, "{}", run.stdout);
+    assert_eq!(
+        (&found[0]["slave"], &found[0]["baud"], &found[0]["parity"]),
+        (
+            &serde_json::json!(17),
+            &serde_json::json!(38400),
+            &serde_json::json!("odd")
+        )
+    );
+    // 38400 odd comes last of the nine: every setting was tried, and it stopped there.
+    assert!(run.stderr.contains("9 settings tried"), "{}", run.stderr);
+}
+
+#[test]
+fn listening_finds_the_slaves_of_a_busy_bus_without_a_byte_sent() {
+    let Some(pair) = PtyPair::new() else { return };
+    let capture = std::fs::read(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/captures/brainchild-io-16do.bin"
+    ))
+    .unwrap();
+    let mut bus = serialport::new(pair.a.display().to_string(), 19200)
+        .timeout(Duration::from_millis(300))
+        .open_native()
+        .unwrap();
+    let writer = std::thread::spawn(move || {
+        std::thread::sleep(Duration::from_millis(300));
+        // The capture as the line carried it: in pieces, with pauses between them.
+        for piece in capture.chunks(8) {
+            bus.write_all(piece).unwrap();
+            std::thread::sleep(Duration::from_millis(4));
+        }
+        bus
+    });
+    let output = mbtool()
+        .args(["--port", &pair.b.display().to_string()])
+        .args(["scan", "--listen", "1500ms", "--json"])
+        .timeout(Duration::from_secs(60))
+        .output()
+        .unwrap();
+    let mut bus = writer.join().unwrap();
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    let found = json_lines(&stdout);
+    assert_eq!(found.len(), 1, "{stdout}");
+    assert_eq!(found[0]["slave"], 1);
+    assert_eq!(found[0]["answer"], "heard");
+    // Nothing came back on the bus.
+    let mut sent = [0u8; 64];
+    let read = bus.read(&mut sent);
+    assert!(
+        matches!(&read, Err(e) if e.kind() == std::io::ErrorKind::TimedOut),
+        "the scan sent {read:?}"
+    );
+}
