@@ -354,49 +354,9 @@ fn ascii_is_one_string_floats_are_short_and_bits_in_csv_have_no_hex_column() {
 
 /// The lines of `command` as an 80-column terminal shows them (tmux, capture-pane).
 fn in_a_terminal(command: &str) -> Option<Vec<String>> {
-    if !crate::support::peer_available("tmux", crate::support::command_exists("tmux")) {
-        return None;
-    }
-    let socket = tempfile::tempdir().unwrap();
-    let socket = socket.path().join("tmux");
-    let tmux = |args: &[&str]| {
-        std::process::Command::new("tmux")
-            .arg("-S")
-            .arg(&socket)
-            .args(args)
-            .output()
-            .unwrap()
-    };
-    let mbtool = assert_cmd::cargo::cargo_bin("mbtool");
-    let done = socket.with_extension("done");
-    let script = format!(
-        "NO_COLOR=1 {} {command}; touch {}; sleep 60",
-        mbtool.display(),
-        done.display()
-    );
-    tmux(&[
-        "new-session",
-        "-d",
-        "-x",
-        "80",
-        "-y",
-        "60",
-        "sh",
-        "-c",
-        &script,
-    ]);
-    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(20);
-    while !done.exists() && std::time::Instant::now() < deadline {
-        std::thread::sleep(std::time::Duration::from_millis(50));
-    }
-    let pane = tmux(&["capture-pane", "-p", "-J"]);
-    tmux(&["kill-server"]);
-    Some(
-        String::from_utf8_lossy(&pane.stdout)
-            .lines()
-            .map(str::to_string)
-            .collect(),
-    )
+    let terminal = crate::support::Terminal::run(command, 80, 60)?;
+    let _ = terminal.wait_for(std::time::Duration::from_secs(20), |_| terminal.done());
+    Some(terminal.screen())
 }
 
 #[test]

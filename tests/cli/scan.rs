@@ -8,7 +8,7 @@ use std::time::Duration;
 
 use crate::support::{
     free_port, mbtool, peer_available, python_has, serve_pty, serve_tcp, wait_for_listener,
-    PtyPair, Stopped,
+    PtyPair, Stopped, Terminal,
 };
 
 struct Scan {
@@ -232,5 +232,39 @@ fn listening_finds_the_slaves_of_a_busy_bus_without_a_byte_sent() {
     assert!(
         matches!(&read, Err(e) if e.kind() == std::io::ErrorKind::TimedOut),
         "the scan sent {read:?}"
+    );
+}
+
+#[test]
+fn a_terminal_shows_the_scan_progress() {
+    let Some(pair) = PtyPair::new() else { return };
+    let (_server, port) = serve_pty(&pair, &[]);
+    let args = format!("{} scan --timeout 40ms", port.join(" "));
+    let Some(terminal) = Terminal::run(&args, 100, 20) else {
+        return;
+    };
+    // While it runs: ids asked of 247, the slave found, the time left.
+    let screen = terminal.wait_for(Duration::from_secs(20), |screen| {
+        screen
+            .iter()
+            .any(|line| line.contains("ids asked, 1 found"))
+    });
+    let bar = screen
+        .iter()
+        .find(|line| line.contains("ids asked"))
+        .unwrap_or_else(|| panic!("no progress bar: {screen:#?}"));
+    assert!(bar.contains("/247 ids asked, 1 found, "), "{bar}");
+    assert!(bar.trim_end().ends_with(" left"), "{bar}");
+    // At the end the bar is gone and the table and the summary stay.
+    let screen = terminal.wait_for(Duration::from_secs(30), |_| terminal.done());
+    assert!(
+        !screen.iter().any(|line| line.contains("ids asked")),
+        "{screen:#?}"
+    );
+    assert!(
+        screen
+            .iter()
+            .any(|line| line.contains("1 slave found: 17 at 19200 baud")),
+        "{screen:#?}"
     );
 }

@@ -405,3 +405,85 @@ pub fn serve_pty(pair: &PtyPair, extra: &[&str]) -> (Stopped, Vec<String>) {
     }
     (server, master)
 }
+
+/// mbtool running in a real terminal: a tmux session of its own, read with capture-pane,
+/// killed when dropped.
+pub struct Terminal {
+    socket: tempfile::TempDir,
+}
+
+impl Terminal {
+    /// Runs `mbtool ARGS` (a shell word list) in a `width` x `height` terminal; `None`
+    /// (skipped, with a reason) where tmux is missing outside CI. The pane stays open
+    /// after mbtool ends, and `done()` tells that it has.
+    pub fn run(args: &str, width: u16, height: u16) -> Option<Terminal> {
+        if !peer_available("tmux", command_exists("tmux")) {
+            return None;
+        }
+        let terminal = Terminal {
+            socket: tempfile::tempdir().expect("a temporary folder"),
+        };
+        let script = format!(
+            "NO_COLOR=1 {} {args}; touch {}; sleep 600",
+            assert_cmd::cargo::cargo_bin("mbtool").display(),
+            terminal.done_marker().display()
+        );
+        terminal.tmux(&[
+            "new-session",
+            "-d",
+            "-x",
+            &width.to_string(),
+            "-y",
+            &height.to_string(),
+            "sh",
+            "-c",
+            &script,
+        ]);
+        Some(terminal)
+    }
+
+    fn done_marker(&self) -> std::path::PathBuf {
+        self.socket.path().join("done")
+    }
+
+    fn tmux(&self, args: &[&str]) -> std::process::Output {
+        std::process::Command::new("tmux")
+            .arg("-S")
+            .arg(self.socket.path().join("tmux"))
+            .args(args)
+            .output()
+            .expect("tmux runs")
+    }
+
+    /// Whether mbtool has ended.
+    pub fn done(&self) -> bool {
+        self.done_marker().exists()
+    }
+
+    /// The lines on the screen now.
+    pub fn screen(&self) -> Vec<String> {
+        let pane = self.tmux(&["capture-pane", "-p", "-J"]);
+        String::from_utf8_lossy(&pane.stdout)
+            .lines()
+            .map(str::to_string)
+            .collect()
+    }
+
+    /// The screen once `seen` holds for it, or the last screen after `within`.
+    pub fn wait_for(&self, within: Duration, seen: impl Fn(&[String]) -> bool) -> Vec<String> {
+        let deadline = Instant::now() + within;
+        loop {
+            let screen = self.screen();
+            if seen(&screen) || Instant::now() > deadline {
+                return screen;
+            }
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    }
+}
+
+impl Drop for Terminal {
+    fn drop(&mut self) {
+        self.tmux(&["kill-server"]);
+    }
+}
