@@ -60,6 +60,14 @@ impl Cli {
             .unwrap_or(std::time::Duration::from_millis(default))
     }
 
+    /// An `--output` that names no format, where a format is what it takes.
+    pub fn output_problem(&self) -> Option<String> {
+        let name = self.output.output.as_deref()?;
+        let is_format = OutputFormat::from_str(name, true).is_ok();
+        (!is_format && !matches!(self.command, Command::Dump(_)))
+            .then(|| format!("--output {name}: give a format: table, json, values or csv"))
+    }
+
     /// A list of baud rates or parities where only one is taken, as a one-line message.
     pub fn sweep_outside_scan(&self) -> Option<String> {
         let several = match (self.connection.baud.len(), self.connection.parity.len()) {
@@ -171,9 +179,9 @@ impl From<ModeArg> for Mode {
 #[derive(Clone, Debug, Args)]
 #[command(next_help_heading = "Output")]
 pub struct OutputArgs {
-    /// Output format
-    #[arg(short, long, global = true, value_enum, default_value_t = OutputFormat::Table)]
-    pub output: OutputFormat,
+    /// Output format [default: table]; for dump, the file to write
+    #[arg(short, long, global = true, value_name = "FORMAT", value_parser = FormatOrFile)]
+    pub output: Option<String>,
 
     /// The same as --output json
     #[arg(long, global = true)]
@@ -185,12 +193,44 @@ pub struct OutputArgs {
 }
 
 impl OutputArgs {
+    /// The output format; a value of `--output` that names none is refused when the
+    /// command line is checked (`Cli::output_problem`).
     pub fn format(&self) -> OutputFormat {
-        if self.json {
-            OutputFormat::Json
-        } else {
-            self.output
+        match (&self.output, self.json) {
+            (_, true) => OutputFormat::Json,
+            (Some(name), false) => {
+                OutputFormat::from_str(name, true).unwrap_or(OutputFormat::Table)
+            }
+            (None, false) => OutputFormat::Table,
         }
+    }
+}
+
+/// The value of `--output`: a format (listed in help and completions), or, for dump,
+/// a file; which it must be is checked once the command is known.
+#[derive(Clone)]
+struct FormatOrFile;
+
+impl clap::builder::TypedValueParser for FormatOrFile {
+    type Value = String;
+
+    fn parse_ref(
+        &self,
+        _: &clap::Command,
+        _: Option<&clap::Arg>,
+        value: &std::ffi::OsStr,
+    ) -> Result<String, clap::Error> {
+        Ok(value.to_string_lossy().into_owned())
+    }
+
+    fn possible_values(
+        &self,
+    ) -> Option<Box<dyn Iterator<Item = clap::builder::PossibleValue> + '_>> {
+        Some(Box::new(
+            OutputFormat::value_variants()
+                .iter()
+                .filter_map(ValueEnum::to_possible_value),
+        ))
     }
 }
 
@@ -263,6 +303,14 @@ pub enum Command {
     #[command(long_about = DIAG_ABOUT)]
     Diag(DiagArgs),
 
+    /// Save a device's tables to a data file, holes left out
+    #[command(long_about = DUMP_ABOUT)]
+    Dump(DumpArgs),
+
+    /// Write a data file back to a device, and check it
+    #[command(long_about = RESTORE_ABOUT)]
+    Restore(RestoreArgs),
+
     /// Decode frames given as arguments or on standard input
     #[command(long_about = DECODE_ABOUT)]
     Decode(DecodeArgs),
@@ -307,6 +355,27 @@ unit id, and mbtool says so instead of listing them all.
 On a terminal a progress bar on stderr shows the ids tried, the slaves found and the time \
 left. The results are a table, or JSON Lines (one line per slave), then a summary line on \
 stderr. Exit status 0 when a slave was found, 3 when none answered.";
+
+const DUMP_ABOUT: &str = "\
+Read ranges of a device's tables (400001-400200 000001-000064) in as few requests as the \
+limits allow (--max-per-request lowers them) and write them as a data file that serve \
+--data and restore read: one 'REF = values' line per run of addresses, at most 16 values a \
+line, after a comment saying which slave, when, and through which port. The file goes to \
+--output FILE, or to standard output.
+
+A request that the device answers with exception 02 is split in halves, down to single \
+addresses, so that every address that exists is dumped; only the holes are left out, and \
+they are listed on stderr. So serve --data FILE stands in for the device that was dumped, \
+holes included.";
+
+const RESTORE_ABOUT: &str = "\
+Write every coil and holding register of a data file (as dump writes it, or as serve \
+--data reads it) to a device, with the fewest requests (05 or 06 for one value, 15 or 16 \
+for a run), then read them back and compare. Entries of discrete inputs and input \
+registers are skipped, and said so.
+
+Exit status 0 when every value reads back as written, 4 listing the addresses that differ. \
+--dry-run prints the frames it would send and sends nothing.";
 
 const INFO_ABOUT: &str = "\
 Ask a device who it is. Read device identification (function 43/14) at the basic level, \
@@ -623,6 +692,26 @@ fn parse_ids(text: &str) -> Result<Ids, String> {
 }
 
 #[derive(Clone, Debug, Args)]
+pub struct DumpArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+    /// References or ranges of references to read (400001-400200 000001-000064)
+    #[arg(required = true, value_name = "RANGE")]
+    pub ranges: Vec<String>,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct RestoreArgs {
+    /// Slave address: 1-247, or a unit id over TCP
+    pub slave: String,
+    /// The data file to write back
+    pub file: std::path::PathBuf,
+    /// Print the frames that would be sent, and send nothing
+    #[arg(long)]
+    pub dry_run: bool,
+}
+
+#[derive(Clone, Debug, Args)]
 pub struct InfoArgs {
     /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
     pub slave: String,
@@ -811,6 +900,7 @@ const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
     ("write-registers", "values", "VALUES", "The values, each converted by --type"),
     ("write", "address", "REFERENCE", "A coil (000020) or holding register (400001) reference, or a range that holds exactly the values given"),
     ("diag", "poll_count", "N", "How many round trips of return query data to time [default: 5]"),
+    ("dump", "output", "FILE", "The data file to write [default: standard output]"),
 ];
 
 /// A built command's argument `id` of `command` (also under `encode`), described as
@@ -850,6 +940,9 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
         ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
         ["sniff" | "serve"] => &[LINE, FORMAT],
         ["info"] => &[LINE, MASTER, FORMAT],
+        // dump's --output is the file it writes.
+        ["dump"] => &[LINE, MASTER, SPLIT, &["output"]],
+        ["restore"] => &[LINE, MASTER],
         // A scan has no retries: each id that answers is asked once more instead.
         ["scan"] => &[LINE, &["timeout", "frame_gap", "verbose"], FORMAT],
         ["diag"] => &[LINE, MASTER, FORMAT, &["poll_count"]],

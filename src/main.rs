@@ -31,8 +31,9 @@ fn parse() -> Result<Cli, ExitCode> {
     let matches = command.try_get_matches_from_mut(std::env::args_os());
     let result = matches.and_then(|m| Ok((Cli::from_arg_matches(&m)?, m)));
     if let Ok((cli, matches)) = result {
-        let refused =
-            mbtool::cli::untaken_option(&command, &matches).or_else(|| cli.sweep_outside_scan());
+        let refused = mbtool::cli::untaken_option(&command, &matches)
+            .or_else(|| cli.sweep_outside_scan())
+            .or_else(|| cli.output_problem());
         return match refused {
             None => Ok(cli),
             Some(message) => {

@@ -12,7 +12,7 @@ use mbtool_core::transport::Endpoint;
 
 /// The framing: --mode, else TCP for a tcp:// port, else RTU. Unlike a connection, encode
 /// accepts --mode tcp without a port.
-fn mode(cli: &Cli) -> Mode {
+pub fn mode(cli: &Cli) -> Mode {
     let endpoint = cli
         .connection
         .port

@@ -2,9 +2,11 @@
 
 mod decode;
 mod diag;
+mod dump;
 mod encode;
 mod info;
 mod request;
+mod restore;
 mod scan;
 mod serve;
 mod sniff;
@@ -18,6 +20,8 @@ pub fn run(cli: Cli) -> Result<u8> {
     match &cli.command {
         Command::Scan(args) => scan::run(&cli, args),
         Command::Info(args) => info::run(&cli, args),
+        Command::Dump(args) => dump::run(&cli, args),
+        Command::Restore(args) => restore::run(&cli, args),
         Command::Diag(args) => diag::run(&cli, args),
         Command::Decode(args) => decode::run(&cli, args),
         Command::Encode { request } => encode::run(&cli, request),

@@ -1,6 +1,7 @@
 //! Rendering results for people and for scripts. Nothing here decides anything about
 //! Modbus; it only shows what the logic produced.
 
+pub mod backup;
 pub mod decode;
 pub mod device;
 pub mod encode;

@@ -5,6 +5,7 @@
 
 mod support;
 
+mod backup;
 mod decode;
 mod device;
 mod docs;

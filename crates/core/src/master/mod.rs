@@ -11,6 +11,7 @@ use crate::codec::{Direction, Exception, Frame, FrameError, Mode, Pdu, Request, 
 use crate::model::duration::show;
 use crate::transport::Transport;
 
+pub mod backup;
 pub mod device;
 pub mod plan;
 pub mod run;

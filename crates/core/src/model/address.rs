@@ -41,6 +41,16 @@ impl Table {
         }
     }
 
+    /// The function that reads this table (01-04).
+    pub fn read_function(self) -> u8 {
+        match self {
+            Table::Coils => 0x01,
+            Table::DiscreteInputs => 0x02,
+            Table::HoldingRegisters => 0x03,
+            Table::InputRegisters => 0x04,
+        }
+    }
+
     /// The mbtool command that works on this table as `access` does; `None` for a write to
     /// a read-only table.
     pub fn command(self, access: Access) -> Option<&'static str> {

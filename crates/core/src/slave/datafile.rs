@@ -19,6 +19,7 @@ use std::path::Path;
 
 use thiserror::Error;
 
+use crate::master::run::ReadData;
 use crate::model::address::{parse_reference_span, reference, AddressError, Table};
 use crate::model::choice::Choice;
 use crate::model::values::{parse_coil, ByteOrder, ValueType};
@@ -210,6 +211,70 @@ pub fn parse(name: &str, text: &str) -> Result<DataModel, DataFileError> {
         })?;
     }
     Ok(model)
+}
+
+/// A run of addresses of one table with their values, as one or more lines of a data file.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Entry {
+    /// The table.
+    pub table: Table,
+    /// The first address, 0-based.
+    pub address: u16,
+    /// The values, in address order.
+    pub values: ReadData,
+}
+
+/// The values a data file line holds at most, so that lines stay readable.
+const VALUES_A_LINE: usize = 16;
+
+/// The entries of a data model: every run of addresses that exists, table by table.
+pub fn entries(model: &DataModel) -> Vec<Entry> {
+    let mut entries = Vec::new();
+    let bits = [
+        (Table::Coils, &model.coils),
+        (Table::DiscreteInputs, &model.discrete_inputs),
+    ];
+    for (table, data) in bits {
+        entries.extend(data.runs().into_iter().map(|(address, values)| Entry {
+            table,
+            address,
+            values: ReadData::Bits(values),
+        }));
+    }
+    let registers = [
+        (Table::InputRegisters, &model.input_registers),
+        (Table::HoldingRegisters, &model.holding_registers),
+    ];
+    for (table, data) in registers {
+        entries.extend(data.runs().into_iter().map(|(address, values)| Entry {
+            table,
+            address,
+            values: ReadData::Registers(values),
+        }));
+    }
+    entries
+}
+
+/// The lines of a data file holding `entries`: `REF = values`, registers as decimal
+/// u16, coils and inputs as 1/0, at most 16 values a line.
+pub fn render(entries: &[Entry]) -> String {
+    let mut text = String::new();
+    for entry in entries {
+        let words: Vec<String> = match &entry.values {
+            ReadData::Bits(bits) => bits.iter().map(|b| u8::from(*b).to_string()).collect(),
+            ReadData::Registers(registers) => registers.iter().map(u16::to_string).collect(),
+        };
+        for (i, line) in words.chunks(VALUES_A_LINE).enumerate() {
+            // Within the run, which ends at 65535 at the latest.
+            let address = entry.address.saturating_add((i * VALUES_A_LINE) as u16);
+            text.push_str(&format!(
+                "{} = {}\n",
+                reference(entry.table, address),
+                line.join(" ")
+            ));
+        }
+    }
+    text
 }
 
 /// Reads the data file at `path` into a data model: every entry or none.

@@ -90,6 +90,33 @@ impl<T: Copy + Default> TableData<T> {
     pub fn protect(&mut self, start: u32, end: u32) {
         self.read_only.push((start, end));
     }
+
+    /// The declared ranges, merged where they meet or overlap, in address order, each with
+    /// its values; none when every address exists.
+    pub fn runs(&self) -> Vec<(u16, Vec<T>)> {
+        let mut ranges: Vec<(u32, u32)> = self
+            .exists
+            .iter()
+            .flatten()
+            .copied()
+            .filter(|(start, end)| start < end)
+            .collect();
+        ranges.sort_unstable();
+        let mut merged: Vec<(u32, u32)> = Vec::new();
+        for (start, end) in ranges {
+            match merged.last_mut() {
+                Some(last) if start <= last.1 => last.1 = last.1.max(end),
+                _ => merged.push((start, end)),
+            }
+        }
+        merged
+            .into_iter()
+            .filter_map(|(start, end)| {
+                let values = self.values.get(start as usize..end as usize)?;
+                Some((u16::try_from(start).ok()?, values.to_vec()))
+            })
+            .collect()
+    }
 }
 
 /// The four tables of one slave id.

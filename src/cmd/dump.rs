@@ -1,0 +1,89 @@
+//! `mbtool dump SLAVE RANGE...`: a device's tables to a data file.
+
+use std::io::Write;
+
+use anyhow::{Context, Result};
+
+use mbtool::cli::{Cli, DumpArgs};
+use mbtool::connection;
+use mbtool::error::Error;
+use mbtool::output;
+use mbtool_core::codec::ExceptionCode;
+use mbtool_core::master::backup::{self, Range};
+use mbtool_core::master::plan::parse_slave;
+use mbtool_core::master::run::RunError;
+use mbtool_core::model::address::{parse_reference_span, AddressError};
+use mbtool_core::slave::datafile;
+
+pub fn run(cli: &Cli, args: &DumpArgs) -> Result<u8> {
+    let ranges = args
+        .ranges
+        .iter()
+        .map(|text| {
+            parse_reference_span(text).map(|span| Range {
+                table: span.table,
+                address: span.address,
+                count: span.count.unwrap_or(1),
+            })
+        })
+        .collect::<Result<Vec<_>, AddressError>>()
+        .map_err(Error::from)?;
+    let mut connection = connection::connect(cli)?;
+    let slave = parse_slave(&args.slave, false, connection.is_tcp()).map_err(Error::from)?;
+    if cli.output.verbose {
+        connection
+            .master
+            .trace(super::request::tracer(connection.mode));
+    }
+    let dump = backup::dump(
+        &mut connection.master,
+        slave,
+        &ranges,
+        cli.data.max_per_request,
+    )
+    .map_err(|e| connection.explain(cli, Error::from(e)))?;
+    if !dump.holes.is_empty() {
+        let holes: Vec<String> = dump
+            .holes
+            .iter()
+            .map(|hole| output::backup::range_text(hole.table, hole.address, hole.count))
+            .collect();
+        mbtool::note!(
+            "mbtool: slave {slave} has no such addresses (exception 02), left out: {}",
+            holes.join(", ")
+        );
+    }
+    if let (true, Some(hole)) = (dump.entries.is_empty(), dump.holes.first()) {
+        // Nothing at all exists there: that is the device's answer.
+        let refused = RunError::Exception {
+            slave,
+            function: hole.table.read_function(),
+            code: ExceptionCode::ILLEGAL_DATA_ADDRESS,
+        };
+        return Err(Error::from(refused).into());
+    }
+    let (place, _) = connection::tried(cli, &connection.endpoint, connection.mode);
+    let text = format!(
+        "# mbtool dump of slave {slave} {place}, {}\n{}",
+        output::backup::utc_now(),
+        datafile::render(&dump.entries)
+    );
+    let values: usize = dump.entries.iter().map(|e| e.values.len()).sum();
+    let target = match cli.output.output.as_deref() {
+        Some(path) => {
+            std::fs::write(path, &text).with_context(|| format!("cannot write {path}"))?;
+            path.to_string()
+        }
+        None => {
+            let mut out = output::stdout();
+            out.write_all(text.as_bytes())?;
+            out.flush()?;
+            "standard output".to_string()
+        }
+    };
+    mbtool::note!(
+        "mbtool: dumped {values} addresses of slave {slave} in {} requests to {target}",
+        dump.requests
+    );
+    Ok(0)
+}

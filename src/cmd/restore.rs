@@ -1,0 +1,98 @@
+//! `mbtool restore SLAVE FILE`: a data file written back to a device, and read back.
+
+use std::io::Write;
+
+use anyhow::Result;
+
+use mbtool::cli::{Cli, OutputFormat, RestoreArgs};
+use mbtool::connection;
+use mbtool::error::Error;
+use mbtool::output::{self, backup::difference_text, backup::range_text, encode::write_frame};
+use mbtool_core::codec::{Frame, Mode, Pdu};
+use mbtool_core::master::backup::{restore_requests, verify};
+use mbtool_core::master::plan::parse_slave;
+use mbtool_core::slave::datafile;
+
+pub fn run(cli: &Cli, args: &RestoreArgs) -> Result<u8> {
+    let model = datafile::load(&args.file).map_err(|e| match e {
+        datafile::DataFileError::Read { .. } => Error::Io(std::io::Error::other(e.to_string())),
+        datafile::DataFileError::Line { .. } => Error::usage(e.to_string()),
+    })?;
+    let file = args.file.display();
+    let entries = datafile::entries(&model);
+    for entry in entries.iter().filter(|e| !e.table.is_writable()) {
+        mbtool::note!(
+            "mbtool: {file}: {} skipped: {}s are read-only",
+            range_text(entry.table, entry.address, entry.values.len() as u32),
+            entry.table.name()
+        );
+    }
+    let requests = restore_requests(&entries);
+    if requests.is_empty() {
+        return Err(Error::usage(format!(
+            "{file} holds no coils or holding registers to write"
+        ))
+        .into());
+    }
+    if args.dry_run {
+        let mode = super::encode::mode(cli);
+        let slave = parse_slave(&args.slave, false, mode == Mode::Tcp).map_err(Error::from)?;
+        let mut out = output::stdout();
+        for (i, request) in requests.iter().enumerate() {
+            let frame = Frame {
+                mode,
+                slave,
+                transaction: (i as u16).wrapping_add(1),
+                pdu: Pdu::Request(request.clone()),
+            };
+            let bytes = frame.encode().map_err(|e| Error::usage(e.to_string()))?;
+            write_frame(
+                &mut out,
+                OutputFormat::Table,
+                mode,
+                slave,
+                request.function(),
+                &bytes,
+            )?;
+        }
+        out.flush()?;
+        return Ok(0);
+    }
+    let mut connection = connection::connect(cli)?;
+    let slave = parse_slave(&args.slave, false, connection.is_tcp()).map_err(Error::from)?;
+    if cli.output.verbose {
+        connection
+            .master
+            .trace(super::request::tracer(connection.mode));
+    }
+    let master = &mut connection.master;
+    let outcome = requests
+        .iter()
+        .try_for_each(|request| master.answer(slave, request).map(|_| ()))
+        .and_then(|()| verify(master, slave, &entries));
+    let differences = outcome.map_err(|e| connection.explain(cli, Error::from(e)))?;
+    let written: usize = entries
+        .iter()
+        .filter(|e| e.table.is_writable())
+        .map(|e| e.values.len())
+        .sum();
+    let mut out = output::stdout();
+    for difference in &differences {
+        writeln!(out, "{}", difference_text(difference))?;
+    }
+    out.flush()?;
+    if differences.is_empty() {
+        mbtool::note!(
+            "mbtool: wrote {written} values to slave {slave} in {} requests; every one reads back as written",
+            requests.len()
+        );
+        Ok(0)
+    } else {
+        mbtool::note!(
+            "mbtool: wrote {written} values to slave {slave} in {} requests; {} read back differently",
+            requests.len(),
+            differences.len()
+        );
+        Ok(4)
+    }
+}
