@@ -37,7 +37,7 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -l stop-bits -d 'Serial stop
 complete -c mbtool -n "__fish_mbtool_needs_command" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_needs_command" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -81,6 +81,8 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "raw" -d 'Send any PDU
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "scan" -d 'Find the slaves on a line and the settings they use'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "info" -d 'Ask a device who it is: identification and server id'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "diag" -d 'A device\'s health: round trips, counters, status'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "dump" -d 'Save a device\'s tables to a data file, holes left out'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "restore" -d 'Write a data file back to a device, and check it'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "encode" -d 'Print the frame a request command would send'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
@@ -100,7 +102,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l stop-bits -
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -125,7 +127,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l stop-bits 
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -150,7 +152,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l s
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -175,7 +177,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l stop-bits
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -215,7 +217,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -255,7 +257,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l s
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -295,7 +297,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l stop-b
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -335,7 +337,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l stop-bits -d 'Ser
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -375,7 +377,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l stop-bits -
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -397,7 +399,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l stop-bits 
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -420,7 +422,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l stop-bi
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -457,7 +459,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l stop-b
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -499,7 +501,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l stop-bits -d 'Se
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -537,7 +539,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l stop-bits -d 'Seri
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -576,7 +578,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l data-bits -d 'Ser
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -598,7 +600,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l stop-bits -d 'Ser
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -619,7 +621,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l stop-bits -d 'Ser
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -629,12 +631,50 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l json -d 'The same
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s o -l output -d 'The data file to write [default: standard output]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l dry-run -d 'Print the frames that would be sent, and send nothing'
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l direction -d 'Read every frame as a request or as a response instead of inferring it' -r -f -a "request\t''
 response\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -660,7 +700,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_see
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -703,7 +743,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -716,7 +756,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -729,7 +769,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -742,7 +782,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -770,7 +810,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -798,7 +838,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -826,7 +866,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -854,7 +894,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -882,7 +922,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -894,7 +934,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -907,7 +947,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -934,7 +974,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -966,7 +1006,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -994,7 +1034,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -1043,7 +1083,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -1072,7 +1112,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s o -l output -d 'Output format' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -1084,26 +1124,28 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l dir -d 'The folder that receives completions/ and man/' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "read-coils" -d 'Read coils (function 01)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "read-holding" -d 'Read holding registers (function 03)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "read" -d 'Read by reference: its first digit picks the table'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "write-coil" -d 'Write one coil (function 05)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "write-coils" -d 'Write coils (function 15)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "write-register" -d 'Write one holding register (function 06)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "raw" -d 'Send any PDU and decode the answer'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "scan" -d 'Find the slaves on a line and the settings they use'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "info" -d 'Ask a device who it is: identification and server id'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "diag" -d 'A device\'s health: round trips, counters, status'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "encode" -d 'Print the frame a request command would send'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag decode encode sniff serve generate help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "read" -d 'Read by reference: its first digit picks the table'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "scan" -d 'Find the slaves on a line and the settings they use'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "info" -d 'Ask a device who it is: identification and server id'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "diag" -d 'A device\'s health: round trips, counters, status'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "dump" -d 'Save a device\'s tables to a data file, holes left out'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "restore" -d 'Write a data file back to a device, and check it'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "encode" -d 'Print the frame a request command would send'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-coils" -d 'Read coils (function 01)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-holding" -d 'Read holding registers (function 03)'

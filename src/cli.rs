@@ -68,17 +68,23 @@ impl Cli {
             .then(|| format!("--output {name}: give a format: table, json, values or csv"))
     }
 
-    /// A list of baud rates or parities where only one is taken, as a one-line message.
-    pub fn sweep_outside_scan(&self) -> Option<String> {
+    /// A list of baud rates or parities typed for a command that takes one, as a one-line
+    /// message. A list from the environment (MBTOOL_BAUD=9600,19200, set for scans) gives
+    /// the other commands its first value.
+    pub fn sweep_outside_scan(&self, matches: &clap::ArgMatches) -> Option<String> {
+        let mut leaf = matches;
+        while let Some((_, sub)) = leaf.subcommand() {
+            leaf = sub;
+        }
+        let typed =
+            |id: &str| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine);
         let several = match (self.connection.baud.len(), self.connection.parity.len()) {
-            (_, _) if matches!(self.command, Command::Scan(_)) => return None,
-            (2.., _) => "baud rates",
-            (_, 2..) => "parities",
+            _ if matches!(self.command, Command::Scan(_)) => return None,
+            (2.., _) if typed("baud") => "baud rates",
+            (_, 2..) if typed("parity") => "parities",
             _ => return None,
         };
-        Some(format!(
-            "only scan sweeps several {several}: give one (a list may come from MBTOOL_BAUD or MBTOOL_PARITY)"
-        ))
+        Some(format!("only scan sweeps several {several}: give one"))
     }
 }
 

@@ -159,23 +159,28 @@ pub fn tried(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> (String, &'static st
 
 /// A master on `endpoint`, framing in `mode`, as the options resolved them.
 pub fn master(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
-    master_at(
-        cli,
-        endpoint,
-        mode,
-        &line_settings(cli, mode),
-        cli.connection.retries,
-    )
+    let answer = Answer {
+        timeout: cli.timeout(),
+        retries: cli.connection.retries,
+    };
+    master_at(cli, endpoint, mode, &line_settings(cli, mode), answer)
 }
 
-/// A master on `endpoint` with the serial settings `line` and `retries`, the rest as the
+/// How long a master waits for an answer, and how often it asks again.
+#[derive(Clone, Copy, Debug)]
+pub struct Answer {
+    pub timeout: std::time::Duration,
+    pub retries: u32,
+}
+
+/// A master on `endpoint` with the serial settings `line` and `answer`, the rest as the
 /// options resolved them.
 pub fn master_at(
     cli: &Cli,
     endpoint: &Endpoint,
     mode: Mode,
     line: &LineSettings,
-    retries: u32,
+    answer: Answer,
 ) -> Result<Master> {
     let transport = open_at(cli, endpoint, mode, line)?;
     let serial_line = matches!(endpoint, Endpoint::Serial(_) | Endpoint::RtuOverTcp { .. });
@@ -192,8 +197,8 @@ pub fn master_at(
         transport,
         MasterOptions {
             mode,
-            timeout: cli.timeout(),
-            retries,
+            timeout: answer.timeout,
+            retries: answer.retries,
             frame_gap: gap,
             character,
             silence,
@@ -209,24 +214,43 @@ pub struct Connection {
     pub mode: Mode,
 }
 
-/// Connects as the options say: the endpoint of `--port`, its framing, a master on it.
-pub fn connect(cli: &Cli) -> Result<Connection> {
-    let endpoint = endpoint(cli)?;
-    let mode = mode(cli, Some(&endpoint), Role::Master)?;
-    let master = master(cli, &endpoint, mode)?;
-    Ok(Connection {
-        master,
-        endpoint,
-        mode,
-    })
+/// Where the options point, checked without opening anything: the endpoint of `--port`
+/// and its framing.
+pub struct Target {
+    pub endpoint: Endpoint,
+    pub mode: Mode,
 }
 
-impl Connection {
+/// The target of the options.
+pub fn target(cli: &Cli) -> Result<Target> {
+    let endpoint = endpoint(cli)?;
+    let mode = mode(cli, Some(&endpoint), Role::Master)?;
+    Ok(Target { endpoint, mode })
+}
+
+impl Target {
     /// Whether slave ids are TCP unit ids here.
     pub fn is_tcp(&self) -> bool {
         self.mode == Mode::Tcp
     }
 
+    /// A master on the target.
+    pub fn connect(self, cli: &Cli) -> Result<Connection> {
+        let master = master(cli, &self.endpoint, self.mode)?;
+        Ok(Connection {
+            master,
+            endpoint: self.endpoint,
+            mode: self.mode,
+        })
+    }
+}
+
+/// Connects as the options say.
+pub fn connect(cli: &Cli) -> Result<Connection> {
+    target(cli)?.connect(cli)
+}
+
+impl Connection {
     /// `error`, a timeout told with where and how the master asked and what usually
     /// causes one there.
     pub fn explain(&self, cli: &Cli, error: Error) -> Error {

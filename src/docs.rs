@@ -150,6 +150,32 @@ const EXAMPLES: &[(&str, &[Example])] = &[
         ],
     ),
     (
+        "dump",
+        &[
+            ex(
+                "Save the settings of slave 17: holding registers and coils",
+                "mbtool --port /dev/ttyUSB0 dump 17 400001-400200 000001-000064 -o pump3.txt",
+            ),
+            ex(
+                "Stand in for the dumped device, holes included",
+                "mbtool serve --port tcp://:5020 --data pump3.txt",
+            ),
+        ],
+    ),
+    (
+        "restore",
+        &[
+            ex(
+                "Clone the settings onto a replacement device, and check them",
+                "mbtool --port /dev/ttyUSB0 restore 17 pump3.txt",
+            ),
+            ex(
+                "Only show the frames it would send",
+                "mbtool restore 17 pump3.txt --dry-run",
+            ),
+        ],
+    ),
+    (
         "info",
         &[
             ex("Ask slave 17 who it is", "mbtool --port /dev/ttyUSB0 info 17"),

@@ -32,7 +32,7 @@ fn parse() -> Result<Cli, ExitCode> {
     let result = matches.and_then(|m| Ok((Cli::from_arg_matches(&m)?, m)));
     if let Ok((cli, matches)) = result {
         let refused = mbtool::cli::untaken_option(&command, &matches)
-            .or_else(|| cli.sweep_outside_scan())
+            .or_else(|| cli.sweep_outside_scan(&matches))
             .or_else(|| cli.output_problem());
         return match refused {
             None => Ok(cli),
@@ -64,7 +64,9 @@ fn parse() -> Result<Cli, ExitCode> {
 /// to read more.
 fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
     let rendered = error.to_string();
-    // The command the error is about, as its usage line names it: `mbtool encode raw`.
+    // The command the error is about, as its usage line names it (`mbtool encode raw`),
+    // or, where clap shows no usage (a bad value), as the command line names it.
+    let typed = typed_commands(command);
     let path: Vec<&str> = rendered
         .lines()
         .find_map(|l| l.trim().strip_prefix("Usage: "))
@@ -74,7 +76,7 @@ fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
                 .take_while(|word| !word.starts_with(['[', '<', '-']))
                 .collect()
         })
-        .unwrap_or_default();
+        .unwrap_or_else(|| typed.iter().map(String::as_str).collect());
     let subcommand = path
         .get(1..)
         .map(|words| words.join(" "))
@@ -91,6 +93,19 @@ fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
     };
     message.push_str(&format!(" (see '{see} --help')"));
     message
+}
+
+/// `mbtool` and the command names on the command line: `["mbtool", "encode", "raw"]`.
+fn typed_commands(command: &clap::Command) -> Vec<String> {
+    let mut path = vec!["mbtool".to_string()];
+    let mut level = command;
+    for word in std::env::args().skip(1) {
+        if let Some(sub) = level.find_subcommand(&word) {
+            path.push(sub.get_name().to_string());
+            level = sub;
+        }
+    }
+    path
 }
 
 /// `read-holding needs ADDRESS`.

@@ -49,8 +49,11 @@ impl Decoder {
                 .into_iter()
                 .find_map(|mode| split_glued(mode, &frame.bytes).map(|frames| (mode, frames)))
             {
-                for bytes in frames {
-                    self.show(&bytes, &describe_frame(&bytes, Some(mode), direction))?;
+                // A mark before the line tells the first frame's way; the others are read
+                // for what they are (the answer glued to its request, say).
+                for (i, bytes) in frames.iter().enumerate() {
+                    let direction = if i == 0 { direction } else { self.direction };
+                    self.show(bytes, &describe_frame(bytes, Some(mode), direction))?;
                 }
                 return Ok(());
             }

@@ -9,24 +9,20 @@ use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output::device::{write_diag, DiagReport, Outcome};
 use mbtool::output::{self, colour_wanted};
+use mbtool_core::codec::function;
 use mbtool_core::master::device::{clear_counters, counters, exception_status, round_trips, Asked};
 use mbtool_core::master::plan::parse_slave;
 
 use super::info::outcome;
 
 /// Round trips timed when `--count` does not say.
-const ROUND_TRIPS: u32 = 5;
+const ROUND_TRIPS: u64 = 5;
 
 pub fn run(cli: &Cli, args: &DiagArgs) -> Result<u8> {
-    let count = match cli.poll.count.map(u32::try_from) {
-        None => ROUND_TRIPS,
-        Some(Ok(count)) => count,
-        Some(Err(_)) => {
-            return Err(Error::usage("--count: give at most 4294967295 round trips").into())
-        }
-    };
-    let mut connection = connection::connect(cli)?;
-    let slave = parse_slave(&args.slave, false, connection.is_tcp()).map_err(Error::from)?;
+    let count = cli.poll.count.unwrap_or(ROUND_TRIPS);
+    let target = connection::target(cli)?;
+    let slave = parse_slave(&args.slave, false, target.is_tcp()).map_err(Error::from)?;
+    let mut connection = target.connect(cli)?;
     if cli.output.verbose {
         connection
             .master
@@ -51,6 +47,24 @@ pub fn run(cli: &Cli, args: &DiagArgs) -> Result<u8> {
         })
     })()
     .map_err(|e: mbtool_core::master::MasterError| connection.explain(cli, e.into()))?;
+    // A device that refuses every diagnostic (or a gateway with nothing behind that id)
+    // told nothing of its health: that is its answer.
+    if let Outcome::Refused(code) = report.round_trips {
+        let counted = match &report.counters {
+            Outcome::Answered(counters) => counters
+                .iter()
+                .any(|c| matches!(c.value, Ok(Asked::Answered(_)))),
+            _ => false,
+        };
+        if !counted && !matches!(report.exception_status, Outcome::Answered(_)) {
+            return Err(Error::Exception {
+                slave,
+                function: function::DIAGNOSTICS,
+                code,
+            }
+            .into());
+        }
+    }
     let mut out = output::stdout();
     write_diag(&mut out, cli.output.format(), &report, colour_wanted())?;
     out.flush()?;

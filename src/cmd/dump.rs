@@ -28,8 +28,9 @@ pub fn run(cli: &Cli, args: &DumpArgs) -> Result<u8> {
         })
         .collect::<Result<Vec<_>, AddressError>>()
         .map_err(Error::from)?;
-    let mut connection = connection::connect(cli)?;
-    let slave = parse_slave(&args.slave, false, connection.is_tcp()).map_err(Error::from)?;
+    let target = connection::target(cli)?;
+    let slave = parse_slave(&args.slave, false, target.is_tcp()).map_err(Error::from)?;
+    let mut connection = target.connect(cli)?;
     if cli.output.verbose {
         connection
             .master

@@ -25,8 +25,9 @@ pub fn outcome<T>(asked: Result<Asked<T>, MasterError>) -> Result<Outcome<T>, Ma
 }
 
 pub fn run(cli: &Cli, args: &InfoArgs) -> Result<u8> {
-    let mut connection = connection::connect(cli)?;
-    let slave = parse_slave(&args.slave, false, connection.is_tcp()).map_err(Error::from)?;
+    let target = connection::target(cli)?;
+    let slave = parse_slave(&args.slave, false, target.is_tcp()).map_err(Error::from)?;
+    let mut connection = target.connect(cli)?;
     if cli.output.verbose {
         connection
             .master
@@ -43,21 +44,25 @@ pub fn run(cli: &Cli, args: &InfoArgs) -> Result<u8> {
     };
     match (&report.identification, &report.server_id) {
         (Outcome::Answered(_), _) | (_, Outcome::Answered(_)) => {}
-        // Neither answered: a timeout is told as one, with what was tried.
-        (Outcome::NoAnswer(_), _) | (_, Outcome::NoAnswer(_)) => {
+        // Neither answered. A refusal is the device's word, and outranks silence.
+        (Outcome::Refused(code), _) | (_, Outcome::Refused(code)) => {
+            let function = match report.identification {
+                Outcome::Refused(_) => function::ENCAPSULATED_INTERFACE,
+                _ => function::REPORT_SERVER_ID,
+            };
+            return Err(Error::Exception {
+                slave,
+                function,
+                code: *code,
+            }
+            .into());
+        }
+        (Outcome::NoAnswer(_), Outcome::NoAnswer(_)) => {
             let timeout = MasterError::Timeout {
                 slave,
                 timeout: cli.timeout(),
             };
             return Err(connection.explain(cli, timeout.into()).into());
-        }
-        (Outcome::Refused(code), _) => {
-            return Err(Error::Exception {
-                slave,
-                function: function::ENCAPSULATED_INTERFACE,
-                code: *code,
-            }
-            .into())
         }
     }
     let mut out = output::stdout();

@@ -35,6 +35,7 @@ pub fn run(cli: &Cli, args: &RestoreArgs) -> Result<u8> {
         .into());
     }
     if args.dry_run {
+        // The frames, as encode would print them: no port is needed.
         let mode = super::encode::mode(cli);
         let slave = parse_slave(&args.slave, false, mode == Mode::Tcp).map_err(Error::from)?;
         let mut out = output::stdout();
@@ -46,20 +47,15 @@ pub fn run(cli: &Cli, args: &RestoreArgs) -> Result<u8> {
                 pdu: Pdu::Request(request.clone()),
             };
             let bytes = frame.encode().map_err(|e| Error::usage(e.to_string()))?;
-            write_frame(
-                &mut out,
-                OutputFormat::Table,
-                mode,
-                slave,
-                request.function(),
-                &bytes,
-            )?;
+            let function = request.function();
+            write_frame(&mut out, OutputFormat::Table, mode, slave, function, &bytes)?;
         }
         out.flush()?;
         return Ok(0);
     }
-    let mut connection = connection::connect(cli)?;
-    let slave = parse_slave(&args.slave, false, connection.is_tcp()).map_err(Error::from)?;
+    let target = connection::target(cli)?;
+    let slave = parse_slave(&args.slave, false, target.is_tcp()).map_err(Error::from)?;
+    let mut connection = target.connect(cli)?;
     if cli.output.verbose {
         connection
             .master

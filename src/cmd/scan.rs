@@ -1,7 +1,7 @@
 //! `mbtool scan`: the slaves on a line, and the serial settings they answer at.
 
 use std::io::{IsTerminal, Write};
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use anyhow::Result;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -13,6 +13,7 @@ use mbtool::output::scan::{write_scan, Where};
 use mbtool::output::{self, colour_wanted};
 use mbtool_core::codec::Mode;
 use mbtool_core::master::scan::{scan, sweep, Probe, Progress, ScanOptions, ScanReport};
+use mbtool_core::transport::serial::LineSettings;
 use mbtool_core::transport::Endpoint;
 
 /// A progress bar on stderr, drawn only on a terminal.
@@ -42,8 +43,14 @@ pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
             .into());
         }
     }
-    // Only a serial line of our own has settings to sweep.
+    // Only a serial line of our own has settings to sweep, and other masters to hear.
     let serial = matches!(endpoint, Endpoint::Serial(_));
+    if args.listen.is_some() && !serial {
+        return Err(Error::usage(
+            "--listen hears other masters on a serial line; over TCP or sim their traffic never reaches mbtool",
+        )
+        .into());
+    }
     let settings: Vec<_> = if serial {
         sweep(&cli.connection.baud, &cli.connection.parity)
             .into_iter()
@@ -60,6 +67,9 @@ pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
         },
         listen: args.listen,
         all: args.all,
+        control_id: (mode == Mode::Tcp)
+            .then(|| (1..=247).rev().find(|id| !ids.contains(id)))
+            .flatten(),
     };
     let total = (ids.len() * settings.len()) as u64;
     let bar = progress_bar(
@@ -76,20 +86,24 @@ pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
         &settings,
         &options,
         |line| {
-            let mut master = connection::master_at(cli, &endpoint, mode, line, 0)?;
+            let answer = connection::Answer {
+                timeout: timeout_at(cli, *line, options.probe),
+                retries: 0,
+            };
+            let mut master = connection::master_at(cli, &endpoint, mode, line, answer)?;
             if cli.output.verbose {
                 master.trace(super::request::tracer(mode));
             }
             Ok::<_, Error>(master)
         },
         |progress| match progress {
-            Progress::Setting { index, .. } => {
+            Progress::Setting(index) => {
                 if serial {
                     bar.set_message(format!("at {}", place.describe(index)));
                 }
             }
             Progress::Listening => bar.set_message("listening"),
-            Progress::Asked { found, .. } => {
+            Progress::Asked(found) => {
                 bar.inc(1);
                 bar.set_message(format!("{found} found"));
             }
@@ -112,6 +126,15 @@ pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
             place.describe(garbled.setting),
             garbled.detail
         );
+    }
+    if let Some(first) = report.reconnected.first() {
+        mbtool::note!(
+            "mbtool: the device closed the connection after unit id {first} ({} times in all), and it was opened again",
+            report.reconnected.len()
+        );
+    }
+    if let Some(why) = &report.interrupted {
+        mbtool::note!("mbtool: the scan stopped early: {why}");
     }
     mbtool::note!("mbtool: {}", summary(&report, &place, started.elapsed()));
     Ok(if report.hits.is_empty() { 3 } else { 0 })
@@ -161,9 +184,26 @@ fn summary(report: &ScanReport, place: &Where, elapsed: std::time::Duration) -> 
         1 => "1 setting".to_string(),
         n => format!("{n} settings"),
     };
+    let requests = match report.requests {
+        1 => "1 request".to_string(),
+        n => format!("{n} requests"),
+    };
     format!(
-        "{found}; {tried} tried, {} requests in {:.1} s",
-        report.requests,
+        "{found}; {tried} tried, {requests} in {:.1} s",
         elapsed.as_secs_f64()
     )
+}
+
+/// The timeout at a setting of the sweep: as given, or 100 ms after the answer to the
+/// probe has had time to travel at that baud rate (7 bytes for a read, a 32-byte server
+/// id for --probe id), so that slow lines are not taken for silent ones.
+fn timeout_at(cli: &Cli, line: LineSettings, probe: Probe) -> Duration {
+    if let Some(timeout) = cli.connection.timeout {
+        return timeout;
+    }
+    let answer_bytes = match probe {
+        Probe::Read => 7,
+        Probe::Id => 32,
+    };
+    cli.timeout() + line.character_time() * answer_bytes
 }

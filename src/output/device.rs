@@ -120,7 +120,7 @@ fn info_rows(report: &InfoReport) -> Vec<(String, String)> {
             if id.cut_short {
                 rows.push((
                     "identification".into(),
-                    "cut short: the device kept saying more follows".into(),
+                    "cut short: the device stopped, or kept saying more follows".into(),
                 ));
             }
         }
@@ -160,6 +160,9 @@ fn info_json(report: &InfoReport) -> Value {
             top.insert("identification".into(), Value::Object(objects));
             top.insert("conformity".into(), json!(id.conformity));
             top.insert("requests".into(), json!(id.requests));
+            if id.cut_short {
+                top.insert("cut_short".into(), json!(true));
+            }
         }
         other => {
             top.insert("identification".into(), other.failure_json());
@@ -215,10 +218,14 @@ fn diag_rows(report: &DiagReport) -> Vec<(String, String)> {
         Outcome::Answered(counters) => {
             for counter in counters {
                 let value = match &counter.value {
-                    Asked::Answered(value) => value.to_string(),
-                    Asked::Refused(code) => {
+                    Ok(Asked::Answered(value)) => value.to_string(),
+                    Ok(Asked::Refused(code)) => {
                         Outcome::<()>::Refused(*code).failure().unwrap_or_default()
                     }
+                    Err(data) => format!(
+                        "not a 16-bit counter: the answer carried {}",
+                        mbtool_core::describe::spaced_hex(data)
+                    ),
                 };
                 rows.push((
                     format!("{} (08/{:02X})", counter.name, counter.sub_function),
@@ -265,8 +272,9 @@ fn diag_json(report: &DiagReport) -> Value {
                 .iter()
                 .map(|c| {
                     let value = match &c.value {
-                        Asked::Answered(value) => json!(value),
-                        Asked::Refused(code) => json!({ "exception": code.0 }),
+                        Ok(Asked::Answered(value)) => json!(value),
+                        Ok(Asked::Refused(code)) => json!({ "exception": code.0 }),
+                        Err(data) => json!({ "data": mbtool_core::describe::spaced_hex(data) }),
                     };
                     (c.name.replace(' ', "_").to_lowercase(), value)
                 })

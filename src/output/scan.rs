@@ -24,6 +24,14 @@ impl Where<'_> {
         self.settings.get(index).filter(|_| self.serial)
     }
 
+    /// Adds `"baud"` and `"parity"` of a serial setting to a JSON line.
+    fn add_setting(&self, line: &mut serde_json::Value, index: usize) {
+        if let (Some(object), Some(setting)) = (line.as_object_mut(), self.line(index)) {
+            object.insert("baud".into(), json!(setting.baud));
+            object.insert("parity".into(), json!(setting.parity.name()));
+        }
+    }
+
     /// `19200 baud, even parity`.
     pub fn describe(&self, index: usize) -> String {
         match self.line(index) {
@@ -87,21 +95,16 @@ pub fn write_scan(
                     "answer": answer,
                     "confirmed": hit.confirmed,
                 });
-                if let (Some(object), Some(setting)) =
-                    (line.as_object_mut(), place.line(hit.setting))
-                {
-                    object.insert("baud".into(), json!(setting.baud));
-                    object.insert("parity".into(), json!(setting.parity.name()));
-                }
+                place.add_setting(&mut line, hit.setting);
                 if let (Some(object), Some(code)) = (line.as_object_mut(), exception) {
                     object.insert("exception".into(), json!(code));
                 }
                 writeln!(out, "{line}")?;
             }
             for garbled in &report.garbled {
-                let line = json!({"slave": garbled.slave, "mode": place.mode.name(),
-                    "answer": "garbled", "detail": garbled.detail,
-                    "at": place.describe(garbled.setting)});
+                let mut line = json!({"slave": garbled.slave, "mode": place.mode.name(),
+                    "answer": "garbled", "detail": garbled.detail});
+                place.add_setting(&mut line, garbled.setting);
                 writeln!(out, "{line}")?;
             }
             Ok(())

@@ -489,6 +489,7 @@ fn a_log_line_without_a_frame_is_named() {
     assert_eq!(run.code, 2);
     assert_eq!(
         run.stderr,
-        "mbtool: line 1: no frame: the line's longest run of hex bytes, 00, is too short for one\n"
+        "mbtool: line 1: no frame: the line's longest run of hex bytes, 00, is shorter than any \
+         frame (4 bytes at least); give one frame a line\n"
     );
 }

@@ -132,6 +132,8 @@ fn device_without_43(answer_17: &'static [u8]) -> (u16, std::thread::JoinHandle<
                 return;
             }
             let answer: Vec<u8> = match pdu.first() {
+                // A device that ignores 17 altogether.
+                Some(0x11) if answer_17.is_empty() => continue,
                 Some(0x11) => [&[0x11, answer_17.len() as u8][..], answer_17].concat(),
                 Some(function) => vec![function | 0x80, 0x01],
                 None => return,
@@ -176,6 +178,47 @@ fn info_escapes_what_a_device_sends_and_shows_binary_as_hex() {
     assert_eq!(json["identification"]["exception"], 1);
     assert_eq!(json["server_id"]["running"], false);
     assert_eq!(json["server_id"]["data"], "1B 5B 32 4A 01");
+}
+
+#[test]
+fn a_device_that_refuses_43_and_ignores_17_gives_its_refusal() {
+    let (tcp, _device) = device_without_43(&[]);
+    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let output = mbtool()
+        .args(&port)
+        .args(["--timeout", "200ms", "info", "9"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(11), "{output:?}");
+    assert_eq!(
+        String::from_utf8_lossy(&output.stderr),
+        "mbtool: slave 9 answered exception 01 illegal function to function 43 (Encapsulated Interface Transport)\n"
+    );
+}
+
+#[test]
+fn diag_of_a_unit_id_a_gateway_lacks_is_the_gateway_s_answer() {
+    let (_server, port, _) = serve_tcp(&["--slave", "3"]);
+    let output = mbtool().args(&port).args(["diag", "5"]).output().unwrap();
+    // serve answers 0B for unit ids it lacks, as a gateway does: 10 + 0x0B.
+    assert_eq!(output.status.code(), Some(21), "{output:?}");
+    assert_eq!(output.stdout, b"");
+}
+
+#[test]
+fn a_bad_slave_is_refused_before_the_port_is_opened() {
+    for command in ["info", "diag", "dump"] {
+        let output = mbtool()
+            .args(["--port", "tcp://127.0.0.1:1", command, "abc"])
+            .args(if command == "dump" {
+                &["400001"][..]
+            } else {
+                &[][..]
+            })
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(2), "{command}: {output:?}");
+    }
 }
 
 /// The counters of `diag --json`, by name.

@@ -111,7 +111,8 @@ fn every_help_example_is_one_the_command_accepts() {
         let taken = mbtool::cli::untaken_option(&mbtool::docs::command(), &matches);
         assert_eq!(taken, None, "{line}");
         let name = matches.subcommand_name().unwrap();
-        if ["sniff", "serve"].contains(&name) {
+        // These need a line or a device of their own; --listen needs a serial line.
+        if ["sniff", "serve", "dump", "restore"].contains(&name) || line.contains("--listen") {
             continue;
         }
         let mut args: Vec<&str> = Vec::new();
@@ -177,7 +178,10 @@ fn every_command_says_which_options_it_takes() {
             vec![vec![sub.get_name()]]
         };
         for path in &leaves {
-            assert!(mbtool::cli::takes_option(path, "output"), "{path:?}");
+            let takes = ["port", "mode", "output"]
+                .iter()
+                .any(|id| mbtool::cli::takes_option(path, id));
+            assert!(takes, "{path:?}");
         }
     }
 }

@@ -210,7 +210,10 @@ fn usage_errors_are_one_line() {
         "encode read-holding needs SLAVE and ADDRESS",
     );
     refused("bogus", "unknown command 'bogus'");
-    refused("decode --output nope", "invalid value");
+    refused(
+        "decode --output nope",
+        "--output nope: give a format: table, json, values or csv",
+    );
     refused(
         "encode write 17 400001 1 --function 7",
         "possible values: 5, 6, 15, 16",

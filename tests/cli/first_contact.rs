@@ -135,10 +135,11 @@ fn each_command_shows_and_takes_only_its_options() {
         "encode --timeout 2s read-holding 17 400108 3",
         "encode read-holding does not take --timeout (see 'mbtool encode read-holding --help' for the options it takes)",
     );
-    // A value from the environment, exported for a whole shell session, is never refused.
+    // A value from the environment, exported for a whole shell session, is never refused,
+    // nor a list of baud rates set there for scans.
     let output = mbtool()
         .env("MBTOOL_PORT", "sim")
-        .env("MBTOOL_BAUD", "9600")
+        .env("MBTOOL_BAUD", "9600,19200")
         .args(["decode", "11 03 00 6B 00 03 76 87"])
         .output()
         .expect("mbtool runs");
@@ -245,17 +246,17 @@ fn options_out_of_range_say_the_range_and_whose_value_it_was() {
     refused_with(
         "--port sim -b 0 read-holding 17 1",
         "invalid value '0' for '--baud <BAUD>': give a whole number from 50 to 12000000 (see \
-         'mbtool --help')",
+         'mbtool read-holding --help')",
     );
     refused_with(
         "--port sim read-holding 17 1 --timeout 0",
         "invalid value '0' for '--timeout <TIMEOUT>': give a timeout above zero, as 500ms or \
-         1s (see 'mbtool --help')",
+         1s (see 'mbtool read-holding --help')",
     );
     refused_with(
         "--port sim --retries -1 read-holding 17 1",
         "invalid value '-1' for '--retries <N>': give a whole number from 0 to 100 (see \
-         'mbtool --help')",
+         'mbtool read-holding --help')",
     );
     let output = mbtool()
         .env("MBTOOL_BAUD", "fast")
@@ -266,7 +267,7 @@ fn options_out_of_range_say_the_range_and_whose_value_it_was() {
     assert_eq!(
         String::from_utf8_lossy(&output.stderr),
         "mbtool: invalid value 'fast' in MBTOOL_BAUD (which sets --baud): give a whole number \
-         from 50 to 12000000 (see 'mbtool --help')\n"
+         from 50 to 12000000 (see 'mbtool read-holding --help')\n"
     );
 }
 

@@ -103,19 +103,61 @@ fn scan_over_tcp_finds_the_unit_ids_served() {
     assert_eq!(slaves, [5, 9]);
 }
 
+/// A TCP device that answers a read of one register for the unit ids `answers` says yes
+/// to, and closes the connection on the others; it serves connections until the test ends.
+fn scripted_device(answers: fn(u8) -> bool) -> u16 {
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = listener.local_addr().unwrap().port();
+    std::thread::spawn(move || {
+        for stream in listener.incoming() {
+            let Ok(mut stream) = stream else { return };
+            let mut request = [0u8; 12];
+            while stream.read_exact(&mut request).is_ok() {
+                if !answers(request[6]) {
+                    break;
+                }
+                let mut answer = request[..4].to_vec();
+                answer.extend_from_slice(&[0, 5, request[6], 0x03, 2, 0, 42]);
+                if stream.write_all(&answer).is_err() {
+                    break;
+                }
+            }
+        }
+    });
+    port
+}
+
 #[test]
 fn a_device_that_answers_every_unit_id_is_one_device() {
-    // serve answers unit ids 0 and 255 as its first slave, like a device that ignores the
-    // unit id; asking those two alone, it answers both the same way.
-    let (_server, port, _) = serve_tcp(&["--slave", "1"]);
-    let run = scan(&port, &["--ids", "0,255,1"]);
+    let tcp = scripted_device(|_| true);
+    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let run = scan(&port, &["--ids", "1-10"]);
     assert_eq!(run.code, 0, "{}", run.stderr);
     assert_eq!(
         run.stdout,
         "every id answered (ok): the device does not tell unit ids apart\n"
     );
-    let json = scan(&port, &["--ids", "0,255,1", "--json"]);
+    let json = scan(&port, &["--ids", "1-10", "--json"]);
     assert_eq!(json_lines(&json.stdout)[0]["ignores_unit_id"], true);
+    // Two slaves that both exist are two slaves: an id outside the scan tells them apart.
+    let (_server, served, _) = serve_tcp(&["--slave", "3", "--slave", "17"]);
+    let both = scan(&served, &["--ids", "3,17", "-o", "values"]);
+    assert_eq!(both.stdout, "3\n17\n");
+}
+
+#[test]
+fn a_device_that_closes_on_an_unknown_unit_id_is_scanned_to_the_end() {
+    let tcp = scripted_device(|id| id == 4);
+    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let run = scan(&port, &["--ids", "1-6", "-o", "values"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert_eq!(run.stdout, "4\n");
+    assert!(
+        run.stderr
+            .contains("the device closed the connection after unit id 1 (5 times in all)"),
+        "{}",
+        run.stderr
+    );
 }
 
 #[test]
@@ -267,4 +309,15 @@ fn a_terminal_shows_the_scan_progress() {
             .any(|line| line.contains("1 slave found: 17 at 19200 baud")),
         "{screen:#?}"
     );
+}
+
+#[test]
+fn listening_over_tcp_is_refused_before_anything_is_sent() {
+    let output = mbtool()
+        .args(["--port", "tcp://127.0.0.1:1", "scan", "--listen", "1s"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr)
+        .starts_with("mbtool: --listen hears other masters on a serial line"));
 }

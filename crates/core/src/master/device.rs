@@ -6,6 +6,7 @@
 use std::time::{Duration, Instant};
 
 use super::{Master, MasterError, Reply};
+use crate::codec::answer::Mismatch;
 use crate::codec::{DeviceObject, ExceptionCode, Request, Response};
 
 /// What a device said to one function: its answer, or that it does not do it.
@@ -17,13 +18,33 @@ pub enum Asked<T> {
     Refused(ExceptionCode),
 }
 
-impl<T> Asked<T> {
-    /// The answer, if there was one.
-    pub fn answer(&self) -> Option<&T> {
-        match self {
-            Asked::Answered(answer) => Some(answer),
-            Asked::Refused(_) => None,
+/// Asks `request` and picks the answer out of the response. The master lets through
+/// only an answer to the request's function; one of another shape is told as the
+/// mismatch it is.
+fn ask<T>(
+    master: &mut Master,
+    slave: u8,
+    request: &Request,
+    pick: impl FnOnce(Response) -> Option<T>,
+) -> Result<Asked<T>, MasterError> {
+    let function = request.function();
+    let misfit = |answered| MasterError::BadFrame {
+        slave,
+        reason: Mismatch::Function {
+            asked: function,
+            answered,
         }
+        .into(),
+    };
+    match master.transact(slave, request)? {
+        Reply::Response(response) => {
+            let answered = response.function();
+            pick(response)
+                .map(Asked::Answered)
+                .ok_or_else(|| misfit(answered))
+        }
+        Reply::Exception(exception) => Ok(Asked::Refused(exception.code)),
+        Reply::Broadcast => Err(misfit(0)),
     }
 }
 
@@ -85,7 +106,9 @@ impl ServerId {
 const MAX_STREAM_REQUESTS: usize = 256;
 
 /// Read device identification: the basic level, then the highest level the device's
-/// conformity gives, following "more follows" across as many requests as it takes.
+/// conformity gives, following "more follows" across as many requests as it takes. What
+/// goes wrong in the second stream (a timeout, a refusal) costs only that stream: the
+/// basic objects are kept, and the identification is marked cut short.
 pub fn identification(
     master: &mut Master,
     slave: u8,
@@ -96,14 +119,18 @@ pub fn identification(
         requests: 0,
         cut_short: false,
     };
-    let basic = stream(master, slave, 0x01, &mut found)?;
-    if let Some(code) = basic {
+    if let Some(code) = stream(master, slave, 0x01, &mut found)? {
         return Ok(Asked::Refused(code));
     }
     let level = found.conformity & 0x7F;
     if (0x02..=0x03).contains(&level) {
-        // A device that lists a level it then refuses still gave its basic objects.
-        stream(master, slave, level, &mut found)?;
+        match stream(master, slave, level, &mut found) {
+            Ok(None) => {}
+            Ok(Some(_)) | Err(MasterError::Timeout { .. } | MasterError::BadFrame { .. }) => {
+                found.cut_short = true;
+            }
+            Err(error) => return Err(error),
+        }
     }
     found.objects.sort_by_key(|object| object.id);
     Ok(Asked::Answered(found))
@@ -123,11 +150,12 @@ fn stream(
             object_id,
         };
         found.requests += 1;
-        let answer = match master.transact(slave, &request)? {
-            Reply::Response(Response::ReadDeviceIdentification(answer)) => answer,
-            Reply::Exception(exception) => return Ok(Some(exception.code)),
-            // The master checks that an answer fits its request: nothing else comes back.
-            _ => return Ok(None),
+        let answer = match ask(master, slave, &request, |response| match response {
+            Response::ReadDeviceIdentification(answer) => Some(answer),
+            _ => None,
+        })? {
+            Asked::Answered(answer) => answer,
+            Asked::Refused(code) => return Ok(Some(code)),
         };
         found.conformity = found.conformity.max(answer.conformity);
         for object in answer.objects {
@@ -138,7 +166,8 @@ fn stream(
         if !answer.more_follows {
             return Ok(None);
         }
-        if answer.next_object_id <= object_id && object_id != 0 {
+        // A stream that does not move on would never end.
+        if answer.next_object_id <= object_id {
             found.cut_short = true;
             return Ok(None);
         }
@@ -150,13 +179,15 @@ fn stream(
 
 /// Report server id (17).
 pub fn server_id(master: &mut Master, slave: u8) -> Result<Asked<ServerId>, MasterError> {
-    match master.transact(slave, &Request::ReportServerId)? {
-        Reply::Response(Response::ReportServerId { data }) => {
-            Ok(Asked::Answered(ServerId::parse(&data)))
-        }
-        Reply::Exception(exception) => Ok(Asked::Refused(exception.code)),
-        _ => Ok(Asked::Refused(ExceptionCode::ILLEGAL_FUNCTION)),
-    }
+    ask(
+        master,
+        slave,
+        &Request::ReportServerId,
+        |response| match response {
+            Response::ReportServerId { data } => Some(ServerId::parse(&data)),
+            _ => None,
+        },
+    )
 }
 
 /// Round trips of return query data (08/00).
@@ -186,7 +217,7 @@ impl RoundTrips {
 pub fn round_trips(
     master: &mut Master,
     slave: u8,
-    count: u32,
+    count: u64,
 ) -> Result<Asked<RoundTrips>, MasterError> {
     let mut trips = RoundTrips {
         times: Vec::new(),
@@ -209,6 +240,7 @@ pub fn round_trips(
                 trips.intact &= data == query;
             }
             Ok(Reply::Exception(exception)) => return Ok(Asked::Refused(exception.code)),
+            // The master lets only a diagnostics answer through.
             Ok(_) => trips.intact = false,
             Err(timeout @ MasterError::Timeout { .. }) => {
                 trips.lost += 1;
@@ -242,8 +274,9 @@ pub struct Counter {
     pub sub_function: u16,
     /// Its name.
     pub name: &'static str,
-    /// Its value, or the exception of a device that does not keep it.
-    pub value: Asked<u16>,
+    /// Its value, or the exception of a device that does not keep it; `Err` holds the
+    /// data of an answer that is no 16-bit counter.
+    pub value: Result<Asked<u16>, Vec<u8>>,
 }
 
 /// Reads every counter of [`COUNTERS`].
@@ -253,10 +286,10 @@ pub fn counters(master: &mut Master, slave: u8) -> Result<Vec<Counter>, MasterEr
         .map(|(sub_function, name)| {
             let value = match diagnostic(master, slave, *sub_function)? {
                 Asked::Answered(data) => match data.as_slice() {
-                    [high, low] => Asked::Answered(u16::from_be_bytes([*high, *low])),
-                    _ => Asked::Refused(ExceptionCode::ILLEGAL_DATA_VALUE),
+                    [high, low] => Ok(Asked::Answered(u16::from_be_bytes([*high, *low]))),
+                    _ => Err(data),
                 },
-                Asked::Refused(code) => Asked::Refused(code),
+                Asked::Refused(code) => Ok(Asked::Refused(code)),
             };
             Ok(Counter {
                 sub_function: *sub_function,
@@ -285,20 +318,21 @@ fn diagnostic(
         sub_function,
         data: vec![0, 0],
     };
-    Ok(match master.transact(slave, &request)? {
-        Reply::Response(Response::Diagnostics { data, .. }) => Asked::Answered(data),
-        Reply::Exception(exception) => Asked::Refused(exception.code),
-        _ => Asked::Refused(ExceptionCode::ILLEGAL_FUNCTION),
+    ask(master, slave, &request, |response| match response {
+        Response::Diagnostics { data, .. } => Some(data),
+        _ => None,
     })
 }
 
 /// Read exception status (07): the eight exception status outputs.
 pub fn exception_status(master: &mut Master, slave: u8) -> Result<Asked<u8>, MasterError> {
-    Ok(
-        match master.transact(slave, &Request::ReadExceptionStatus)? {
-            Reply::Response(Response::ReadExceptionStatus { status }) => Asked::Answered(status),
-            Reply::Exception(exception) => Asked::Refused(exception.code),
-            _ => Asked::Refused(ExceptionCode::ILLEGAL_FUNCTION),
+    ask(
+        master,
+        slave,
+        &Request::ReadExceptionStatus,
+        |response| match response {
+            Response::ReadExceptionStatus { status } => Some(status),
+            _ => None,
         },
     )
 }

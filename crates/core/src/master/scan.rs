@@ -40,6 +40,9 @@ pub struct ScanOptions {
     pub listen: Option<Duration>,
     /// Go on through every setting instead of stopping at the first where a slave answers.
     pub all: bool,
+    /// Over TCP: an id outside `ids`, asked when every id answered, to tell a device that
+    /// answers every unit id from one that has exactly those.
+    pub control_id: Option<u8>,
 }
 
 /// How a slave answered.
@@ -87,32 +90,26 @@ pub struct ScanReport {
     pub settings_tried: usize,
     /// How many requests were sent.
     pub requests: u64,
-    /// Every id asked answered: the device does not tell unit ids apart (a TCP device
-    /// that ignores the unit id, or refuses the ones it lacks with an exception of its
-    /// own). The answer most ids gave; the hits that answered otherwise are the ones
-    /// that tell.
+    /// Every id asked answered, and so did the control id: the device does not tell unit
+    /// ids apart (it ignores the unit id, or refuses the ones it lacks with an exception
+    /// of its own). The control id's answer; the hits that answered otherwise are the
+    /// ones that tell.
     pub ignores_unit_id: Option<Answer>,
+    /// The ids after which the connection was closed by the other end, and opened again.
+    pub reconnected: Vec<u8>,
+    /// Why the scan stopped before its end, when it did: what it found so far stands.
+    pub interrupted: Option<String>,
 }
 
 /// What the scan is doing, for a progress display.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Progress {
-    /// Starting on setting `index` of `of`.
-    Setting {
-        /// Its index.
-        index: usize,
-        /// How many there are.
-        of: usize,
-    },
+    /// Starting on the setting of this index.
+    Setting(usize),
     /// Listening before sending, at the current setting.
     Listening,
-    /// One id asked; `found` slaves so far.
-    Asked {
-        /// The id.
-        slave: u8,
-        /// Slaves found so far.
-        found: usize,
-    },
+    /// One more id asked; how many slaves were found so far.
+    Asked(usize),
 }
 
 /// How one probe came out.
@@ -142,7 +139,9 @@ fn probe(master: &mut Master, slave: u8, request: &Request) -> Result<Outcome, M
 }
 
 /// Scans `settings` in order. `open` gives a master at a setting (with the scan's timeout
-/// and no retries); `progress` is told what is going on.
+/// and no retries); `progress` is told what is going on. A connection the other end
+/// closes is opened again (many TCP devices close on a unit id they lack); when it cannot
+/// be, the scan stops there and the report says why.
 pub fn scan<S, E>(
     settings: &[S],
     options: &ScanOptions,
@@ -150,15 +149,12 @@ pub fn scan<S, E>(
     mut progress: impl FnMut(Progress),
 ) -> Result<ScanReport, E>
 where
-    E: From<MasterError>,
+    E: From<MasterError> + std::fmt::Display,
 {
     let mut report = ScanReport::default();
     let request = options.probe.request();
-    for (index, setting) in settings.iter().enumerate() {
-        progress(Progress::Setting {
-            index,
-            of: settings.len(),
-        });
+    'settings: for (index, setting) in settings.iter().enumerate() {
+        progress(Progress::Setting(index));
         report.settings_tried += 1;
         let mut master = open(setting)?;
         let found_before = report.hits.len();
@@ -169,73 +165,92 @@ where
             }
             None => Vec::new(),
         };
-        let heard: Vec<u8> = heard
-            .into_iter()
-            .filter(|id| options.ids.contains(id))
-            .collect();
         // Slaves heard talking to a master: found without adding traffic to its bus.
-        for slave in &heard {
+        for slave in heard.into_iter().filter(|id| options.ids.contains(id)) {
             report.hits.push(Hit {
-                slave: *slave,
+                slave,
                 setting: index,
                 answer: None,
                 confirmed: true,
             });
         }
-        if heard.is_empty() {
-            for slave in &options.ids {
-                report.requests += 1;
-                match probe(&mut master, *slave, &request)? {
-                    Outcome::Present(answer) => {
-                        report.requests += 1;
-                        let again = probe(&mut master, *slave, &request)?;
-                        report.hits.push(Hit {
-                            slave: *slave,
-                            setting: index,
-                            answer: Some(answer),
-                            confirmed: matches!(again, Outcome::Present(_)),
-                        });
+        let probing = report.hits.len() == found_before;
+        for slave in options.ids.iter().filter(|_| probing) {
+            report.requests += 1;
+            let outcome = match probe(&mut master, *slave, &request) {
+                Err(MasterError::Io(_)) => {
+                    report.reconnected.push(*slave);
+                    match open(setting) {
+                        Ok(again) => master = again,
+                        Err(error) => {
+                            report.interrupted = Some(error.to_string());
+                            break 'settings;
+                        }
                     }
-                    Outcome::Garbled(detail) => report.garbled.push(Garbled {
+                    Outcome::Absent
+                }
+                Err(error) => return Err(error.into()),
+                Ok(outcome) => outcome,
+            };
+            match outcome {
+                Outcome::Present(answer) => {
+                    report.requests += 1;
+                    let again = probe(&mut master, *slave, &request);
+                    report.hits.push(Hit {
                         slave: *slave,
                         setting: index,
-                        detail,
-                    }),
-                    Outcome::Absent => {}
+                        answer: Some(answer),
+                        confirmed: matches!(again, Ok(Outcome::Present(_))),
+                    });
                 }
-                progress(Progress::Asked {
+                Outcome::Garbled(detail) => report.garbled.push(Garbled {
                     slave: *slave,
-                    found: report.hits.len(),
-                });
+                    setting: index,
+                    detail,
+                }),
+                Outcome::Absent => {}
+            }
+            progress(Progress::Asked(report.hits.len()));
+        }
+        if probing {
+            if let Some(control) = options.control_id {
+                report.ignores_unit_id =
+                    control_answer(&mut master, control, &request, &report, options, index);
             }
         }
         if report.hits.len() > found_before && !options.all {
             break;
         }
     }
-    report.ignores_unit_id = ignores_unit_id(&report, options);
     Ok(report)
 }
 
-/// Every id asked answered at one setting: the answer most of them gave.
-fn ignores_unit_id(report: &ScanReport, options: &ScanOptions) -> Option<Answer> {
-    let first = report.hits.first()?;
-    let answers: Vec<Answer> = report
+/// When every id asked answered at setting `index`: how the control id answers, if it does.
+fn control_answer(
+    master: &mut Master,
+    control: u8,
+    request: &Request,
+    report: &ScanReport,
+    options: &ScanOptions,
+    index: usize,
+) -> Option<Answer> {
+    let answered = report
         .hits
         .iter()
-        .filter(|hit| hit.setting == first.setting)
-        .filter_map(|hit| hit.answer)
-        .collect();
-    if options.ids.len() < 2 || answers.len() < options.ids.len() {
+        .filter(|hit| hit.setting == index)
+        .count();
+    if options.ids.len() < 2 || answered < options.ids.len() {
         return None;
     }
-    let count = |answer: &Answer| answers.iter().filter(|a| *a == answer).count();
-    answers.iter().copied().max_by_key(|answer| count(answer))
+    match probe(master, control, request) {
+        Ok(Outcome::Present(answer)) => Some(answer),
+        _ => None,
+    }
 }
 
 impl ScanReport {
     /// The hits worth listing: all of them, or, when the device does not tell unit ids
-    /// apart, those that answered otherwise than most.
+    /// apart, those that answered otherwise than the control id.
     pub fn telling_hits(&self) -> impl Iterator<Item = &Hit> {
         self.hits
             .iter()
@@ -262,7 +277,6 @@ pub fn sweep(bauds: &[u32], parities: &[Parity]) -> Vec<(u32, Parity)> {
         .iter()
         .flat_map(|baud| parities.iter().map(move |parity| (*baud, *parity)))
         .collect();
-    settings.dedup();
     let rank = |setting: &(u32, Parity)| {
         let common = COMMON_SETTINGS.iter().position(|known| known == setting);
         let baud = COMMON_BAUDS.iter().position(|known| *known == setting.0);
@@ -276,6 +290,12 @@ pub fn sweep(bauds: &[u32], parities: &[Parity]) -> Vec<(u32, Parity)> {
         )
     };
     settings.sort_by_key(rank);
+    let mut seen = Vec::with_capacity(settings.len());
+    settings.retain(|setting| {
+        let new = !seen.contains(setting);
+        seen.push(*setting);
+        new
+    });
     settings
 }
 
@@ -301,6 +321,8 @@ mod tests {
             ]
         );
         assert_eq!(settings.len(), 12);
+        // A setting listed twice is tried once.
+        assert_eq!(sweep(&[600, 300, 600], &[Parity::Even]).len(), 2);
         assert_eq!(settings[11], (1200, Parity::Odd));
     }
 }

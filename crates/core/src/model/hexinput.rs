@@ -23,7 +23,7 @@ pub enum HexError {
     #[error("'{0}' at column {1} is not a hex digit")]
     NotHex(String, usize),
     /// A log line whose hex bytes are too few for a frame.
-    #[error("no frame: the line's longest run of hex bytes, {0}, is too short for one")]
+    #[error("no frame: the line's longest run of hex bytes, {0}, is shorter than any frame (4 bytes at least); give one frame a line")]
     TooShort(String),
 }
 
@@ -126,8 +126,10 @@ pub struct LineFrame {
 enum Spelling {
     /// `11 03`, `1103`, `11,03`.
     Plain,
-    /// `0x11`, `\x11`.
+    /// `0x11`.
     Prefixed,
+    /// `\x11`, as an escaped string.
+    Escaped,
     /// `11:03:00`, as Wireshark copies bytes.
     Colons,
     /// `11-03-00`.
@@ -172,14 +174,15 @@ fn piece_bytes(piece: &[u8], bracketed: bool) -> Option<(Spelling, Vec<u8>)> {
         }
     }
     parse_hex(piece, &mut bytes).ok()?;
-    let spelling =
-        if piece.starts_with(b"0x") || piece.starts_with(b"0X") || piece.starts_with(b"\\x") {
-            Spelling::Prefixed
-        } else if bracketed {
-            Spelling::Bracketed
-        } else {
-            Spelling::Plain
-        };
+    let spelling = if piece.starts_with(b"0x") || piece.starts_with(b"0X") {
+        Spelling::Prefixed
+    } else if piece.starts_with(b"\\x") {
+        Spelling::Escaped
+    } else if bracketed {
+        Spelling::Bracketed
+    } else {
+        Spelling::Plain
+    };
     Some((spelling, bytes))
 }
 
@@ -209,24 +212,33 @@ pub fn read_line(line: &[u8]) -> Result<Option<LineFrame>, HexError> {
     if line.is_empty() || line.starts_with(b"#") {
         return Ok(None);
     }
-    let line = line
+    let before_comment = line
         .split(|b| *b == b'#')
         .next()
         .unwrap_or_default()
         .trim_ascii();
+    match frame_of(before_comment) {
+        // A '#' that did not start a comment (`frame #1: 11 03 ...`).
+        Err(_) if before_comment.len() < line.len() => frame_of(line).map(Some),
+        found => found.map(Some),
+    }
+}
+
+/// The frame of a line without its comment.
+fn frame_of(line: &[u8]) -> Result<LineFrame, HexError> {
     if line.starts_with(b":") {
-        return Ok(Some(LineFrame {
+        return Ok(LineFrame {
             bytes: ascii_frames(line).unwrap_or_else(|| line.to_vec()),
             direction: None,
-        }));
+        });
     }
     let mut strict = Vec::new();
     let strict_error = match parse_hex(line, &mut strict) {
         Ok(()) => {
-            return Ok(Some(LineFrame {
+            return Ok(LineFrame {
                 bytes: strict,
                 direction: None,
-            }))
+            })
         }
         Err(error) => error,
     };
@@ -236,10 +248,10 @@ pub fn read_line(line: &[u8]) -> Result<Option<LineFrame>, HexError> {
         return Err(strict_error);
     }
     match longest_run(line) {
-        Some(run) if run.ascii || run.bytes.len() >= SHORTEST_FRAME => Ok(Some(LineFrame {
+        Some(run) if run.ascii || run.bytes.len() >= SHORTEST_FRAME => Ok(LineFrame {
             bytes: run.bytes,
             direction: run.direction,
-        })),
+        }),
         Some(run) => Err(HexError::TooShort(crate::describe::spaced_hex(&run.bytes))),
         None => Err(strict_error),
     }
@@ -414,6 +426,16 @@ mod tests {
         assert_eq!(
             line("noise: 00  # t=8339"),
             Err(HexError::TooShort("00".into()))
+        );
+        // A '#' that starts no comment.
+        assert_eq!(
+            line("frame #1: 11 03 00 6B 00 03 76 87"),
+            frame(&REQUEST, None)
+        );
+        // An escaped string does not join the 0x bytes before it.
+        assert_eq!(
+            line("sent 0x11 0x03 0x00 0x6B 0x00 0x03 0x76 0x87 \\x11"),
+            frame(&REQUEST, None)
         );
         assert!(matches!(line("hello world"), Err(HexError::NotHex(c, 1)) if c == "h"));
         // A mistyped byte is pointed at, not set aside as a word of a log.

@@ -128,7 +128,7 @@ fn entry(model: &mut DataModel, line: &str) -> Result<(), EntryError> {
             .map(|w| parse_coil(w).map_err(EntryError::Value))
             .collect::<Result<Vec<_>, _>>()?;
         let count = fill_count(span.count, bits.len())?;
-        let values = spread(&bits, count);
+        let values = spread(&bits, count, 1);
         check_end(span.table, start, values.len())?;
         let table = if span.table == Table::Coils {
             &mut model.coils
@@ -143,7 +143,7 @@ fn entry(model: &mut DataModel, line: &str) -> Result<(), EntryError> {
             registers.extend(kind.parse(word, order).map_err(EntryError::Value)?);
         }
         let count = fill_count(span.count, registers.len())?;
-        let values = spread(&registers, count);
+        let values = spread(&registers, count, kind.width());
         check_end(span.table, start, values.len())?;
         let table = if span.table == Table::HoldingRegisters {
             &mut model.holding_registers
@@ -165,10 +165,11 @@ fn fill_count(range: Option<u32>, values: usize) -> Result<usize, EntryError> {
     }
 }
 
-/// The values repeated to fill `count` addresses when one value (or one typed value) was
-/// given for a range; otherwise the values, then zeros.
-fn spread<T: Copy + Default>(values: &[T], count: usize) -> Vec<T> {
-    if values.is_empty() || count % values.len() != 0 || values.len() > 4 {
+/// The values repeated to fill `count` addresses when one value was given for a range
+/// (`one` addresses: a typed value may take several registers); otherwise the values,
+/// then zeros.
+fn spread<T: Copy + Default>(values: &[T], count: usize, one: usize) -> Vec<T> {
+    if values.len() != one || count % one != 0 {
         let mut out = values.to_vec();
         out.resize(count, T::default());
         return out;
@@ -347,5 +348,34 @@ mod tests {
         assert!(error.to_string().contains("not a coil value"), "{error}");
         let error = parse("p", "400001-400002 = 1 2 3").unwrap_err();
         assert!(error.to_string().contains("do not fit"), "{error}");
+    }
+
+    #[test]
+    fn a_range_repeats_one_value_and_pads_several_with_zeros() {
+        let model = parse(
+            "data",
+            "000001-000008 = on off on on\n400001-400004 = 1.5 f32\n",
+        )
+        .unwrap();
+        assert_eq!(
+            model.coils.read(0, 8),
+            Ok(vec![true, false, true, true, false, false, false, false])
+        );
+        assert_eq!(
+            model.holding_registers.read(0, 4),
+            Ok(vec![0x3FC0, 0, 0x3FC0, 0])
+        );
+    }
+
+    #[test]
+    fn rendered_entries_read_back_as_the_same_entries() {
+        let text = "400001-400040 = 7\n400050 = 1 2 3\n000001-000020 = 1 0 1\n300009 = 10\n";
+        let first = entries(&parse("data", text).unwrap());
+        let rendered = render(&first);
+        assert_eq!(entries(&parse("again", &rendered).unwrap()), first);
+        // At most 16 values a line, each line with its own reference.
+        assert!(
+            rendered.starts_with("000001 = 1 0 1 0 0 0 0 0 0 0 0 0 0 0 0 0\n000017 = 0 0 0 0\n")
+        );
     }
 }
