@@ -8,7 +8,7 @@ use std::path::Path;
 use clap::CommandFactory;
 use clap_complete::Shell;
 
-use crate::cli::Cli;
+use crate::cli::{takes_option, Cli};
 
 /// One example: what it does and the command line.
 pub struct Example {
@@ -317,10 +317,28 @@ pub fn command() -> clap::Command {
     // Building copies the global options into every subcommand; only then can each copy
     // be hidden where it does not apply.
     command.build();
-    hide_untaken_options(crate::cli::with_argument_help(command), &[])
+    hide_untaken_options(crate::cli::with_argument_help(command))
 }
 
-fn hide_untaken_options(command: clap::Command, parent: &[String]) -> clap::Command {
+fn hide_untaken_options(command: clap::Command) -> clap::Command {
+    each_command(command, &[], &|sub, path| {
+        sub.mut_args(|arg| {
+            let untaken = arg.is_global_set() && !takes_option(path, arg.get_id().as_str());
+            if untaken {
+                arg.hide(true)
+            } else {
+                arg
+            }
+        })
+    })
+}
+
+/// `change` applied to every subcommand, at any depth, with its path (`["encode", "raw"]`).
+fn each_command(
+    command: clap::Command,
+    parent: &[String],
+    change: &dyn Fn(clap::Command, &[&str]) -> clap::Command,
+) -> clap::Command {
     command.mut_subcommands(|sub| {
         let path: Vec<String> = parent
             .iter()
@@ -328,16 +346,7 @@ fn hide_untaken_options(command: clap::Command, parent: &[String]) -> clap::Comm
             .chain([sub.get_name().to_string()])
             .collect();
         let words: Vec<&str> = path.iter().map(String::as_str).collect();
-        let sub = sub.mut_args(|arg| {
-            let hide =
-                arg.is_global_set() && !crate::cli::takes_option(&words, arg.get_id().as_str());
-            if hide {
-                arg.hide(true)
-            } else {
-                arg
-            }
-        });
-        hide_untaken_options(sub, &path)
+        each_command(change(sub, &words), &path, change)
     })
 }
 
@@ -509,26 +518,13 @@ fn completion_command() -> clap::Command {
         .filter(|arg| arg.is_global_set())
         .map(|arg| arg.clone().global(false))
         .collect();
-    fn give_taken(
-        command: clap::Command,
-        parent: &[String],
-        globals: &[clap::Arg],
-    ) -> clap::Command {
-        command.mut_subcommands(|sub| {
-            let path: Vec<String> = parent
-                .iter()
-                .cloned()
-                .chain([sub.get_name().to_string()])
-                .collect();
-            let words: Vec<&str> = path.iter().map(String::as_str).collect();
-            let taken = globals
-                .iter()
-                .filter(|arg| crate::cli::takes_option(&words, arg.get_id().as_str()));
-            let sub = sub.args(taken.cloned());
-            give_taken(sub, &path, globals)
-        })
-    }
-    let mut command = give_taken(top.mut_args(|arg| arg.global(false)), &[], &globals);
+    let top = top.mut_args(|arg| arg.global(false));
+    let mut command = each_command(top, &[], &|sub, path| {
+        let taken = globals
+            .iter()
+            .filter(|arg| takes_option(path, arg.get_id().as_str()));
+        sub.args(taken.cloned())
+    });
     command.build();
     crate::cli::with_argument_help(command)
 }

@@ -5,13 +5,11 @@ use std::io::Write;
 use anyhow::Result;
 
 use mbtool::cli::{Cli, DiagArgs};
-use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output::device::{write_diag, DiagReport, Outcome};
 use mbtool::output::{self, colour_wanted};
 use mbtool_core::codec::function;
 use mbtool_core::master::device::{clear_counters, counters, exception_status, round_trips, Asked};
-use mbtool_core::master::plan::parse_slave;
 
 use super::info::outcome;
 
@@ -20,14 +18,7 @@ const ROUND_TRIPS: u64 = 5;
 
 pub fn run(cli: &Cli, args: &DiagArgs) -> Result<u8> {
     let count = cli.poll.count.unwrap_or(ROUND_TRIPS);
-    let target = connection::target(cli)?;
-    let slave = parse_slave(&args.slave, false, target.is_tcp()).map_err(Error::from)?;
-    let mut connection = target.connect(cli)?;
-    if cli.output.verbose {
-        connection
-            .master
-            .trace(super::request::tracer(connection.mode));
-    }
+    let (mut connection, slave) = super::connect_to(cli, &args.slave)?;
     let master = &mut connection.master;
     // A device that does not answer at all fails here, with what was tried.
     let round_trips = round_trips(master, slave, count)

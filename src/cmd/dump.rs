@@ -10,7 +10,6 @@ use mbtool::error::Error;
 use mbtool::output;
 use mbtool_core::codec::ExceptionCode;
 use mbtool_core::master::backup::{self, Range};
-use mbtool_core::master::plan::parse_slave;
 use mbtool_core::master::run::RunError;
 use mbtool_core::model::address::{parse_reference_span, AddressError};
 use mbtool_core::slave::datafile;
@@ -28,14 +27,7 @@ pub fn run(cli: &Cli, args: &DumpArgs) -> Result<u8> {
         })
         .collect::<Result<Vec<_>, AddressError>>()
         .map_err(Error::from)?;
-    let target = connection::target(cli)?;
-    let slave = parse_slave(&args.slave, false, target.is_tcp()).map_err(Error::from)?;
-    let mut connection = target.connect(cli)?;
-    if cli.output.verbose {
-        connection
-            .master
-            .trace(super::request::tracer(connection.mode));
-    }
+    let (mut connection, slave) = super::connect_to(cli, &args.slave)?;
     let dump = backup::dump(
         &mut connection.master,
         slave,

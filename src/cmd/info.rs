@@ -5,13 +5,11 @@ use std::io::Write;
 use anyhow::Result;
 
 use mbtool::cli::{Cli, InfoArgs};
-use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output::device::{write_info, InfoReport, Outcome};
 use mbtool::output::{self, colour_wanted};
 use mbtool_core::codec::function;
 use mbtool_core::master::device::{identification, server_id, Asked};
-use mbtool_core::master::plan::parse_slave;
 use mbtool_core::master::MasterError;
 
 /// One function's outcome; a timeout is kept as "no answer" so that the other function
@@ -25,14 +23,7 @@ pub fn outcome<T>(asked: Result<Asked<T>, MasterError>) -> Result<Outcome<T>, Ma
 }
 
 pub fn run(cli: &Cli, args: &InfoArgs) -> Result<u8> {
-    let target = connection::target(cli)?;
-    let slave = parse_slave(&args.slave, false, target.is_tcp()).map_err(Error::from)?;
-    let mut connection = target.connect(cli)?;
-    if cli.output.verbose {
-        connection
-            .master
-            .trace(super::request::tracer(connection.mode));
-    }
+    let (mut connection, slave) = super::connect_to(cli, &args.slave)?;
     let master = &mut connection.master;
     let asked = outcome(identification(master, slave))
         .and_then(|id| Ok((id, outcome(server_id(master, slave))?)));

@@ -14,6 +14,9 @@ mod sniff;
 use anyhow::Result;
 
 use mbtool::cli::{Cli, Command};
+use mbtool::connection::{self, Connection};
+use mbtool::error::Error;
+use mbtool_core::master::plan::parse_slave;
 
 /// Runs the command; `Ok` carries the exit status of a command that finished its work.
 pub fn run(cli: Cli) -> Result<u8> {
@@ -33,4 +36,16 @@ pub fn run(cli: Cli) -> Result<u8> {
             Ok(0)
         }
     }
+}
+
+/// A connection to the one slave a device command names: the slave checked before the
+/// port is opened, and `-v` showing every frame.
+fn connect_to(cli: &Cli, slave: &str) -> Result<(Connection, u8)> {
+    let target = connection::target(cli)?;
+    let slave = parse_slave(slave, false, target.is_tcp()).map_err(Error::from)?;
+    let mut connection = target.connect(cli)?;
+    if cli.output.verbose {
+        connection.master.trace(request::tracer(connection.mode));
+    }
+    Ok((connection, slave))
 }

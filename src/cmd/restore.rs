@@ -5,7 +5,6 @@ use std::io::Write;
 use anyhow::Result;
 
 use mbtool::cli::{Cli, OutputFormat, RestoreArgs};
-use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output::{self, backup::difference_text, backup::range_text, encode::write_frame};
 use mbtool_core::codec::{Frame, Mode, Pdu};
@@ -53,14 +52,7 @@ pub fn run(cli: &Cli, args: &RestoreArgs) -> Result<u8> {
         out.flush()?;
         return Ok(0);
     }
-    let target = connection::target(cli)?;
-    let slave = parse_slave(&args.slave, false, target.is_tcp()).map_err(Error::from)?;
-    let mut connection = target.connect(cli)?;
-    if cli.output.verbose {
-        connection
-            .master
-            .trace(super::request::tracer(connection.mode));
-    }
+    let (mut connection, slave) = super::connect_to(cli, &args.slave)?;
     let master = &mut connection.master;
     let outcome = requests
         .iter()

@@ -1,11 +1,7 @@
 //! `dump` and `restore`: a device with holes saved, cloned by `serve --data`, saved again;
 //! a data file put back and read back; a slave that ignores a write caught.
 
-use std::io::{Read, Write};
-use std::net::TcpListener;
-use std::time::Duration;
-
-use crate::support::{mbtool, serve_tcp};
+use crate::support::{mbtool, scripted_tcp_device, serve_tcp, Act};
 
 /// A device with holes: registers 400001-400010, 400020-400025 and a float at 400040,
 /// coils 000001-000020 and four input registers.
@@ -140,72 +136,49 @@ fn restore_dry_run_prints_the_frames_and_needs_no_port() {
 
 /// A TCP device with holding registers 0-99 that answers every write as done but keeps
 /// none written to `ignored`.
-fn forgetful_device(ignored: u16) -> (u16, std::thread::JoinHandle<()>) {
-    let listener = TcpListener::bind("127.0.0.1:0").unwrap();
-    let port = listener.local_addr().unwrap().port();
-    let handle = std::thread::spawn(move || {
-        let mut registers = [0u16; 100];
-        for stream in listener.incoming().take(1) {
-            let Ok(mut stream) = stream else { return };
-            let _ = stream.set_read_timeout(Some(Duration::from_secs(10)));
-            let mut header = [0u8; 7];
-            while stream.read_exact(&mut header).is_ok() {
-                let len = usize::from(u16::from_be_bytes([header[4], header[5]]));
-                let mut pdu = vec![0u8; len.saturating_sub(1)];
-                if stream.read_exact(&mut pdu).is_err() {
-                    return;
+fn forgetful_device(ignored: u16) -> Vec<String> {
+    let registers = std::sync::Mutex::new([0u16; 100]);
+    let tcp = scripted_tcp_device(move |_, pdu| {
+        let Ok(mut registers) = registers.lock() else {
+            return Act::Close;
+        };
+        let word = |i: usize| u16::from_be_bytes([pdu[i], pdu[i + 1]]);
+        let (address, quantity) = (usize::from(word(1)), usize::from(word(3)));
+        Act::Answer(match pdu[0] {
+            0x03 if address + quantity <= 100 => {
+                let mut answer = vec![0x03, (quantity * 2) as u8];
+                for register in &registers[address..address + quantity] {
+                    answer.extend_from_slice(&register.to_be_bytes());
                 }
-                let word = |i: usize| u16::from_be_bytes([pdu[i], pdu[i + 1]]);
-                let (address, quantity) = (usize::from(word(1)), usize::from(word(3)));
-                let answer: Vec<u8> = match pdu[0] {
-                    0x03 if address + quantity <= 100 => {
-                        let mut a = vec![0x03, (quantity * 2) as u8];
-                        for r in &registers[address..address + quantity] {
-                            a.extend_from_slice(&r.to_be_bytes());
-                        }
-                        a
-                    }
-                    0x06 | 0x10 if address + quantity.max(1) <= 100 => {
-                        let values: Vec<u16> = if pdu[0] == 0x06 {
-                            vec![word(3)]
-                        } else {
-                            (0..quantity).map(|i| word(6 + 2 * i)).collect()
-                        };
-                        for (i, value) in values.into_iter().enumerate() {
-                            if address + i != usize::from(ignored) {
-                                registers[address + i] = value;
-                            }
-                        }
-                        pdu[..5].to_vec()
-                    }
-                    function => vec![function | 0x80, 0x02],
-                };
-                let mut frame = header[..4].to_vec();
-                frame.extend_from_slice(&((answer.len() + 1) as u16).to_be_bytes());
-                frame.push(header[6]);
-                frame.extend_from_slice(&answer);
-                if stream.write_all(&frame).is_err() {
-                    return;
-                }
+                answer
             }
-        }
+            0x06 | 0x10 if address + quantity.max(1) <= 100 => {
+                let values: Vec<u16> = if pdu[0] == 0x06 {
+                    vec![word(3)]
+                } else {
+                    (0..quantity).map(|i| word(6 + 2 * i)).collect()
+                };
+                for (i, value) in values.into_iter().enumerate() {
+                    if address + i != usize::from(ignored) {
+                        registers[address + i] = value;
+                    }
+                }
+                pdu[..5].to_vec()
+            }
+            function => vec![function | 0x80, 0x02],
+        })
     });
-    (port, handle)
+    vec!["--port".to_string(), format!("127.0.0.1:{tcp}")]
 }
 
 #[test]
 fn a_write_the_device_ignored_is_named_and_exits_4() {
     let dir = tempfile::tempdir().unwrap();
     let file = data_file(&dir, "set.txt", "400001-400030 = 5\n");
-    let (tcp, _device) = forgetful_device(21);
+    let port = forgetful_device(21);
     let output = mbtool()
-        .args([
-            "--port",
-            &format!("127.0.0.1:{tcp}"),
-            "restore",
-            "17",
-            &file,
-        ])
+        .args(&port)
+        .args(["restore", "17", &file])
         .output()
         .unwrap();
     assert_eq!(output.status.code(), Some(4), "{output:?}");

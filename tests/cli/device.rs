@@ -1,14 +1,11 @@
 //! `info` and `diag` against devices: `serve` on TCP and on a pseudo-terminal, pymodbus
 //! with an identity of its own, and a scripted TCP device that lacks function 43.
 
-use std::io::{Read, Write};
-use std::net::TcpListener;
-use std::process::{Command as Process, Stdio};
+use std::io::Write;
 use std::time::Duration;
 
 use crate::support::{
-    free_port, mbtool, peer_available, python_has, serve_pty, serve_tcp, wait_for_listener,
-    PtyPair, Stopped,
+    mbtool, pymodbus_tcp, scripted_tcp_device, serve_pty, serve_tcp, Act, PtyPair,
 };
 
 /// Runs mbtool against `port` with `args` and `--json`; (exit status, the JSON, stderr).
@@ -68,11 +65,6 @@ fn info_reads_objects_that_need_several_requests() {
 
 #[test]
 fn info_shows_what_pymodbus_says_it_is() {
-    if !peer_available("pymodbus (Python)", python_has("pymodbus")) {
-        return;
-    }
-    let tcp = free_port();
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/pymodbus_slave.py");
     let identity = [
         ("VendorName", "Pumps & Co"),
         ("ProductCode", "PX-7"),
@@ -81,26 +73,13 @@ fn info_shows_what_pymodbus_says_it_is() {
         ("ProductName", "Booster pump"),
         ("ModelName", "PX7-400"),
     ];
-    let mut args = vec![
-        script.to_string(),
-        "--framer".into(),
-        "socket".into(),
-        "--tcp".into(),
-        tcp.to_string(),
-    ];
-    for (name, value) in identity {
-        args.extend(["--identity".into(), format!("{name}={value}")]);
-    }
-    let _slave = Stopped(
-        Process::new("python3")
-            .args(&args)
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .spawn()
-            .unwrap(),
-    );
-    assert!(wait_for_listener(tcp, Duration::from_secs(15)));
-    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let args: Vec<String> = identity
+        .iter()
+        .flat_map(|(name, value)| ["--identity".to_string(), format!("{name}={value}")])
+        .collect();
+    let Some((_slave, port)) = pymodbus_tcp(&args) else {
+        return;
+    };
     let (code, json, stderr) = json_of(&port, &["info", "17"]);
     assert_eq!(code, 0, "{stderr}");
     for (name, value) in identity {
@@ -114,46 +93,21 @@ fn info_shows_what_pymodbus_says_it_is() {
     );
 }
 
-/// A TCP device that answers report server id (17) with `answer_17` and refuses every
-/// other function with exception 01; it serves one connection.
-fn device_without_43(answer_17: &'static [u8]) -> (u16, std::thread::JoinHandle<()>) {
-    let listener = TcpListener::bind("127.0.0.1:0").unwrap();
-    let port = listener.local_addr().unwrap().port();
-    let handle = std::thread::spawn(move || {
-        let Ok((mut stream, _)) = listener.accept() else {
-            return;
-        };
-        let _ = stream.set_read_timeout(Some(Duration::from_secs(10)));
-        let mut header = [0u8; 7];
-        while stream.read_exact(&mut header).is_ok() {
-            let len = usize::from(u16::from_be_bytes([header[4], header[5]]));
-            let mut pdu = vec![0u8; len.saturating_sub(1)];
-            if stream.read_exact(&mut pdu).is_err() {
-                return;
-            }
-            let answer: Vec<u8> = match pdu.first() {
-                // A device that ignores 17 altogether.
-                Some(0x11) if answer_17.is_empty() => continue,
-                Some(0x11) => [&[0x11, answer_17.len() as u8][..], answer_17].concat(),
-                Some(function) => vec![function | 0x80, 0x01],
-                None => return,
-            };
-            let mut frame = header[..4].to_vec();
-            frame.extend_from_slice(&((answer.len() + 1) as u16).to_be_bytes());
-            frame.push(header[6]);
-            frame.extend_from_slice(&answer);
-            if stream.write_all(&frame).is_err() {
-                return;
-            }
-        }
+/// A TCP device that answers report server id (17) with `answer_17` (or ignores it, for
+/// an empty one) and refuses every other function with exception 01.
+fn device_without_43(answer_17: &'static [u8]) -> Vec<String> {
+    let tcp = scripted_tcp_device(move |_, pdu| match pdu.first() {
+        Some(0x11) if answer_17.is_empty() => Act::Silent,
+        Some(0x11) => Act::Answer([&[0x11, answer_17.len() as u8][..], answer_17].concat()),
+        Some(function) => Act::Answer(vec![function | 0x80, 0x01]),
+        None => Act::Close,
     });
-    (port, handle)
+    vec!["--port".to_string(), format!("127.0.0.1:{tcp}")]
 }
 
 #[test]
 fn info_without_43_falls_back_to_17_and_says_so() {
-    let (tcp, _device) = device_without_43(&[0x2A, 0xFF, b'P', b'L', b'C', b'-', b'5']);
-    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let port = device_without_43(&[0x2A, 0xFF, b'P', b'L', b'C', b'-', b'5']);
     let output = mbtool().args(&port).args(["info", "42"]).output().unwrap();
     let table = String::from_utf8_lossy(&output.stdout);
     assert_eq!(output.status.code(), Some(0), "{output:?}");
@@ -171,8 +125,7 @@ fn info_without_43_falls_back_to_17_and_says_so() {
 
 #[test]
 fn info_escapes_what_a_device_sends_and_shows_binary_as_hex() {
-    let (tcp, _device) = device_without_43(&[0x07, 0x00, 0x1B, b'[', b'2', b'J', 0x01]);
-    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let port = device_without_43(&[0x07, 0x00, 0x1B, b'[', b'2', b'J', 0x01]);
     let (code, json, _) = json_of(&port, &["info", "7"]);
     assert_eq!(code, 0);
     assert_eq!(json["identification"]["exception"], 1);
@@ -182,8 +135,7 @@ fn info_escapes_what_a_device_sends_and_shows_binary_as_hex() {
 
 #[test]
 fn a_device_that_refuses_43_and_ignores_17_gives_its_refusal() {
-    let (tcp, _device) = device_without_43(&[]);
-    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let port = device_without_43(&[]);
     let output = mbtool()
         .args(&port)
         .args(["--timeout", "200ms", "info", "9"])
@@ -286,4 +238,30 @@ fn a_device_that_does_not_answer_exits_3() {
             "{stderr}"
         );
     }
+}
+
+#[test]
+fn diag_shows_the_counters_a_device_lacks_as_such() {
+    // Echoes 08/00, keeps only the bus message counter (08/0B), refuses the others and 07.
+    let tcp = scripted_tcp_device(|_, pdu| match pdu {
+        [0x08, 0x00, 0x00, ..] => Act::Answer(pdu.to_vec()),
+        [0x08, 0x00, 0x0B, ..] => Act::Answer(vec![0x08, 0x00, 0x0B, 0x01, 0x2C]),
+        [function, ..] => Act::Answer(vec![function | 0x80, 0x01]),
+        [] => Act::Close,
+    });
+    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let (code, json, stderr) = json_of(&port, &["diag", "1", "--count", "3"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(json["round_trips"]["answered"], 3);
+    assert_eq!(json["counters"]["bus_messages"], 300);
+    assert_eq!(json["counters"]["slave_busy"]["exception"], 1);
+    assert_eq!(json["exception_status"]["exception"], 1);
+    let table = mbtool().args(&port).args(["diag", "1"]).output().unwrap();
+    let table = String::from_utf8_lossy(&table.stdout);
+    assert!(
+        table.contains(
+            "slave busy (08/11)               ┆ not supported (exception 01 illegal function)"
+        ),
+        "{table}"
+    );
 }

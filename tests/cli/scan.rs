@@ -7,8 +7,8 @@ use std::process::{Command as Process, Stdio};
 use std::time::Duration;
 
 use crate::support::{
-    free_port, mbtool, peer_available, python_has, serve_pty, serve_tcp, wait_for_listener,
-    PtyPair, Stopped, Terminal,
+    mbtool, pymodbus_tcp, scripted_tcp_device, serve_pty, serve_tcp, Act, PtyPair, Stopped,
+    Terminal,
 };
 
 struct Scan {
@@ -104,27 +104,12 @@ fn scan_over_tcp_finds_the_unit_ids_served() {
 }
 
 /// A TCP device that answers a read of one register for the unit ids `answers` says yes
-/// to, and closes the connection on the others; it serves connections until the test ends.
+/// to, and closes the connection on the others.
 fn scripted_device(answers: fn(u8) -> bool) -> u16 {
-    let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
-    let port = listener.local_addr().unwrap().port();
-    std::thread::spawn(move || {
-        for stream in listener.incoming() {
-            let Ok(mut stream) = stream else { return };
-            let mut request = [0u8; 12];
-            while stream.read_exact(&mut request).is_ok() {
-                if !answers(request[6]) {
-                    break;
-                }
-                let mut answer = request[..4].to_vec();
-                answer.extend_from_slice(&[0, 5, request[6], 0x03, 2, 0, 42]);
-                if stream.write_all(&answer).is_err() {
-                    break;
-                }
-            }
-        }
-    });
-    port
+    scripted_tcp_device(move |unit, _| match answers(unit) {
+        true => Act::Answer(vec![0x03, 2, 0, 42]),
+        false => Act::Close,
+    })
 }
 
 #[test]
@@ -162,21 +147,9 @@ fn a_device_that_closes_on_an_unknown_unit_id_is_scanned_to_the_end() {
 
 #[test]
 fn pymodbus_answering_every_unit_id_is_one_device_with_one_real_id() {
-    if !peer_available("pymodbus (Python)", python_has("pymodbus")) {
+    let Some((_slave, port)) = pymodbus_tcp(&[]) else {
         return;
-    }
-    let tcp = free_port();
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/pymodbus_slave.py");
-    let _slave = Stopped(
-        Process::new("python3")
-            .args([script, "--framer", "socket", "--tcp", &tcp.to_string()])
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .spawn()
-            .unwrap(),
-    );
-    assert!(wait_for_listener(tcp, Duration::from_secs(15)));
-    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    };
     // pymodbus refuses the unit ids it lacks with exception 04 rather than staying
     // silent: only slave 17 answers otherwise.
     let run = scan(&port, &["--ids", "1-30", "--json"]);
@@ -320,4 +293,22 @@ fn listening_over_tcp_is_refused_before_anything_is_sent() {
     assert_eq!(output.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&output.stderr)
         .starts_with("mbtool: --listen hears other masters on a serial line"));
+}
+
+#[test]
+fn bytes_that_are_no_answer_are_something_at_other_settings() {
+    // Unit id 2 answers a read of holding registers as if it were one of input registers.
+    let tcp = scripted_tcp_device(|unit, _| match unit {
+        2 => Act::Answer(vec![0x04, 2, 0, 1]),
+        _ => Act::Answer(vec![0x83, 0x0B]),
+    });
+    let port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    let run = scan(&port, &["--ids", "1-3"]);
+    assert_eq!(run.code, 3, "{}", run.stderr);
+    assert!(
+        run.stderr
+            .contains("mbtool: id 2 at TCP: something answered, maybe at other settings (answer is for function 04, the request was 03)"),
+        "{}",
+        run.stderr
+    );
 }

@@ -487,3 +487,76 @@ impl Drop for Terminal {
         self.tmux(&["kill-server"]);
     }
 }
+
+/// What a scripted TCP device does with one request.
+pub enum Act {
+    /// Answers with this PDU.
+    Answer(Vec<u8>),
+    /// Says nothing, and waits for the next request.
+    Silent,
+    /// Closes the connection.
+    Close,
+}
+
+/// A Modbus TCP device on 127.0.0.1 played by `act`, which is given each request's unit id
+/// and PDU: framed by the MBAP header here, so that a test spells out only what the device
+/// says. It serves one connection after another until the test ends; returns its port.
+pub fn scripted_tcp_device(act: impl Fn(u8, &[u8]) -> Act + Send + 'static) -> u16 {
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").expect("a free port");
+    let port = listener.local_addr().expect("a bound port").port();
+    std::thread::spawn(move || {
+        for stream in listener.incoming() {
+            let Ok(mut stream) = stream else { return };
+            let _ = stream.set_read_timeout(Some(Duration::from_secs(10)));
+            let mut header = [0u8; 7];
+            while stream.read_exact(&mut header).is_ok() {
+                let len = usize::from(u16::from_be_bytes([header[4], header[5]]));
+                let mut pdu = vec![0u8; len.saturating_sub(1)];
+                if stream.read_exact(&mut pdu).is_err() {
+                    break;
+                }
+                let answer = match act(header[6], &pdu) {
+                    Act::Answer(answer) => answer,
+                    Act::Silent => continue,
+                    Act::Close => break,
+                };
+                let mut frame = header[..4].to_vec();
+                frame.extend_from_slice(&((answer.len() + 1) as u16).to_be_bytes());
+                frame.push(header[6]);
+                frame.extend_from_slice(&answer);
+                if stream.write_all(&frame).is_err() {
+                    break;
+                }
+            }
+        }
+    });
+    port
+}
+
+/// pymodbus as a Modbus TCP slave 17 (tests/peers/pymodbus_slave.py with `extra`), and
+/// the connection options for it; `None` (skipped, with a reason) where pymodbus is
+/// missing outside CI.
+pub fn pymodbus_tcp(extra: &[String]) -> Option<(Stopped, Vec<String>)> {
+    if !peer_available("pymodbus (Python)", python_has("pymodbus")) {
+        return None;
+    }
+    let tcp = free_port();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/pymodbus_slave.py");
+    let slave = Stopped(
+        std::process::Command::new("python3")
+            .args([script, "--framer", "socket", "--tcp", &tcp.to_string()])
+            .args(extra)
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::null())
+            .spawn()
+            .expect("python3 starts"),
+    );
+    assert!(
+        wait_for_listener(tcp, Duration::from_secs(15)),
+        "pymodbus did not listen"
+    );
+    Some((
+        slave,
+        vec!["--port".to_string(), format!("127.0.0.1:{tcp}")],
+    ))
+}
