@@ -589,7 +589,8 @@ impl RequestCommand {
 pub struct ReadArgs {
     /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
     pub slave: String,
-    /// First holding register (400108, 107, 0x6B) or an inclusive range (400108-400110)
+    /// First holding register (400108, 107, 0x6B), an inclusive range (400108-400110), or
+    /// a bit of a register (400108.05), COUNT then counting bits
     pub address: String,
     /// How many registers to read [default: 1]; with --type wider than 16 bits, values of
     /// that type
@@ -898,13 +899,13 @@ const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
     ("read-coils", "count", "COUNT", "How many coils to read [default: 1]"),
     ("read-inputs", "address", "ADDRESS", "First discrete input (100197, 196) or an inclusive range (100197-100218)"),
     ("read-inputs", "count", "COUNT", "How many inputs to read [default: 1]"),
-    ("read-input-registers", "address", "ADDRESS", "First input register (300009, 8) or an inclusive range (300009-300011)"),
-    ("read", "address", "REFERENCE", "A reference whose first digit picks the table (000020 coils, 100197 discrete inputs, 300009 input registers, 400108 holding registers), or an inclusive range (400108-400110)"),
+    ("read-input-registers", "address", "ADDRESS", "First input register (300009, 8), an inclusive range (300009-300011), or a bit of a register (300009.00), COUNT then counting bits"),
+    ("read", "address", "REFERENCE", "A reference whose first digit picks the table (000020 coils, 100197 discrete inputs, 300009 input registers, 400108 holding registers), an inclusive range (400108-400110), or a bit of a register (400108.05), COUNT then counting bits"),
     ("read", "count", "COUNT", "How many values to read [default: 1]; for registers with --type wider than 16 bits, values of that type"),
     ("write-coils", "address", "ADDRESS", "First coil (000020, 19), or a range that holds exactly the values given"),
     ("write-coils", "values", "VALUES", "Each 0/1/on/off, or one bit string such as 10110"),
     ("write-registers", "values", "VALUES", "The values, each converted by --type"),
-    ("write", "address", "REFERENCE", "A coil (000020) or holding register (400001) reference, or a range that holds exactly the values given"),
+    ("write", "address", "REFERENCE", "A coil (000020) or holding register (400001) reference, a range that holds exactly the values given, or a bit of a holding register (400001.03), set alone with function 22"),
     ("diag", "poll_count", "N", "How many round trips of return query data to time [default: 5]"),
     ("dump", "output", "FILE", "The data file to write [default: standard output]"),
 ];

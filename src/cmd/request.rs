@@ -17,7 +17,7 @@ use mbtool_core::describe::describe_frame;
 use mbtool_core::master::plan::Plan;
 use mbtool_core::master::run::PollStats;
 use mbtool_core::master::{Master, Reply, Traffic};
-use mbtool_core::model::address::{reference, Table};
+use mbtool_core::model::address::{bit_reference, reference, Table};
 
 pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
     // The whole command line is checked before a port is opened.
@@ -120,7 +120,7 @@ fn reads(
 }
 
 fn writes(cli: &Cli, master: &mut Master, plan: &Plan, out: &mut Box<dyn Write>) -> Result<u8> {
-    let count = master.write(plan).map_err(Error::from)?;
+    let written = master.write(plan).map_err(Error::from)?;
     let Some(first) = plan.requests.first() else {
         return Ok(0);
     };
@@ -129,18 +129,33 @@ fn writes(cli: &Cli, master: &mut Master, plan: &Plan, out: &mut Box<dyn Write>)
             (Table::Coils, *address)
         }
         Request::WriteSingleRegister { address, .. }
-        | Request::WriteMultipleRegisters { address, .. } => (Table::HoldingRegisters, *address),
+        | Request::WriteMultipleRegisters { address, .. }
+        | Request::MaskWriteRegister { address, .. } => (Table::HoldingRegisters, *address),
         _ => return Ok(0),
     };
+    let reference = match first {
+        Request::MaskWriteRegister { and_mask, .. } => {
+            bit_reference(table, address, (!and_mask).trailing_zeros() as u8)
+        }
+        _ => reference(table, address),
+    };
+    if written.mask_write_emulated {
+        mbtool::note!(
+            "mbtool: slave {} does not do function 22 (mask write register): {reference} was \
+             set by reading the register (03) and writing it whole (06)",
+            plan.slave
+        );
+    }
     let done = WriteDone {
         slave: plan.slave,
         function: first.function(),
         address,
-        reference: reference(table, address),
+        reference,
         // Values as the user typed them: one f32 is two registers.
-        count: match table {
-            Table::HoldingRegisters => count / cli.data.value_type.width(),
-            _ => count,
+        count: match first {
+            Request::MaskWriteRegister { .. } => 1,
+            _ if table == Table::HoldingRegisters => written.count / cli.data.value_type.width(),
+            _ => written.count,
         },
         broadcast: plan.slave == 0,
     };

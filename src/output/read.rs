@@ -9,7 +9,7 @@ use serde::Serialize;
 use super::{csv_field, new_table, Style};
 use crate::cli::OutputFormat;
 use mbtool_core::master::run::{ReadData, ReadResult};
-use mbtool_core::model::address::reference;
+use mbtool_core::model::address::{bit_reference, reference};
 use mbtool_core::model::values::{text, Value, ValueType};
 
 #[derive(Serialize)]
@@ -32,6 +32,8 @@ struct JsonRead<'a> {
 /// One shown value: where it is, its registers, what it means.
 struct Row<'a> {
     address: u32,
+    /// `400108`, or `400108.05` for a bit of a register.
+    reference: String,
     registers: &'a [u16],
     value: Value,
 }
@@ -54,11 +56,13 @@ impl ReadWriter {
 
     fn rows<'a>(&self, result: &'a ReadResult) -> Vec<Row<'a>> {
         let start = u32::from(result.address);
+        let ref_of = |address: u32| reference(result.table, address as u16);
         match &result.data {
             // Text is one value, whatever the number of registers that hold it.
             ReadData::Registers(registers) if self.style.value_type == ValueType::Ascii => {
                 vec![Row {
                     address: start,
+                    reference: ref_of(start),
                     registers,
                     value: text(registers, self.style.order),
                 }]
@@ -70,8 +74,26 @@ impl ReadWriter {
                     .enumerate()
                     .map(|(i, chunk)| Row {
                         address: start + (i * width) as u32,
+                        reference: ref_of(start + (i * width) as u32),
                         registers: chunk,
                         value: self.style.value_type.read(chunk, self.style.order),
+                    })
+                    .collect()
+            }
+            // Bits of registers: each names its register and its bit.
+            ReadData::Bits(bits) if result.first_bit.is_some() => {
+                let first = usize::from(result.first_bit.unwrap_or_default());
+                bits.iter()
+                    .enumerate()
+                    .map(|(i, bit)| {
+                        let address = start + ((first + i) / 16) as u32;
+                        let number = ((first + i) % 16) as u8;
+                        Row {
+                            address,
+                            reference: bit_reference(result.table, address as u16, number),
+                            registers: &[],
+                            value: Value::Unsigned(u64::from(*bit)),
+                        }
                     })
                     .collect()
             }
@@ -80,6 +102,7 @@ impl ReadWriter {
                 .enumerate()
                 .map(|(i, bit)| Row {
                     address: start + i as u32,
+                    reference: ref_of(start + i as u32),
                     registers: &[],
                     value: Value::Unsigned(u64::from(*bit)),
                 })
@@ -105,7 +128,6 @@ impl ReadWriter {
     pub fn write(&mut self, out: &mut dyn Write, result: &ReadResult) -> io::Result<()> {
         let changed = self.changed(result);
         let rows = self.rows(result);
-        let ref_of = |address: u32| reference(result.table, address as u16);
         match self.style.format {
             OutputFormat::Json => {
                 let wide = self.style.value_type.width() > 1;
@@ -113,7 +135,7 @@ impl ReadWriter {
                     .iter()
                     .map(|row| JsonEntry {
                         address: row.address,
-                        reference: ref_of(row.address),
+                        reference: row.reference.clone(),
                         value: &row.value,
                         registers: wide.then_some(row.registers),
                     })
@@ -152,7 +174,7 @@ impl ReadWriter {
                     writeln!(
                         out,
                         "{},{},{hex}{}",
-                        ref_of(row.address),
+                        row.reference.clone(),
                         row.address,
                         csv_field(&row.value.to_string())
                     )?;
@@ -186,7 +208,7 @@ impl ReadWriter {
                     if *changed && self.style.colour {
                         value = value.fg(Color::Yellow);
                     }
-                    let mut cells = vec![Cell::new(ref_of(row.address)), Cell::new(row.address)];
+                    let mut cells = vec![Cell::new(&row.reference), Cell::new(row.address)];
                     if !bits {
                         cells.push(Cell::new(hex_of(row.registers)));
                     }
@@ -269,6 +291,7 @@ mod tests {
             table: Table::HoldingRegisters,
             address: 107,
             data: ReadData::Registers(registers),
+            first_bit: None,
         }
     }
 

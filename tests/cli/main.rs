@@ -6,6 +6,7 @@
 mod support;
 
 mod backup;
+mod bits;
 mod decode;
 mod device;
 mod docs;

@@ -7,7 +7,9 @@
 use thiserror::Error;
 
 use crate::codec::{limits, Request};
-use crate::model::address::{parse_reference_span, parse_span, Access, AddressError, Span, Table};
+use crate::model::address::{
+    parse_reference_span, parse_span, split_bit, Access, AddressError, Span, Table,
+};
 use crate::model::choice::Choice;
 use crate::model::hexinput::HexError;
 use crate::model::number::{parse_in_range, parse_int, NumberError};
@@ -70,6 +72,9 @@ pub enum PlanError {
     /// A write with nothing to write.
     #[error("give at least one VALUE to write")]
     NoValues,
+    /// A write of a bit of a register with other than one value, or a forced function.
+    #[error("a bit of a register takes one value, 1/0/on/off, written with function 22")]
+    BitWrite,
     /// A value as typed does not read as the table's or the value type's.
     #[error("{0}")]
     Value(String),
@@ -190,6 +195,18 @@ pub struct Plan {
     pub requests: Vec<Request>,
     /// For reads: the table and first address, so that answers can carry references.
     pub reads: Option<(Table, u16)>,
+    /// For a read of bits of registers (`400108.05 3`): which bits of what is read.
+    pub bits: Option<RegisterBits>,
+}
+
+/// Bits of registers read: `count` bits from bit `first` of the first register read,
+/// running on into the registers after it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RegisterBits {
+    /// The first bit, 0 the least significant.
+    pub first: u8,
+    /// How many bits.
+    pub count: u32,
 }
 
 /// The slave a command addresses: 1-247 on a serial line (0, broadcast, for writes
@@ -292,6 +309,77 @@ fn read_plan(
         slave,
         requests,
         reads: Some((span.table, span.address)),
+        bits: None,
+    })
+}
+
+/// A read of `count` bits of registers from bit `first` of the register `span` names.
+fn bit_read_plan(
+    slave: u8,
+    (text, span): (&str, Span),
+    first: u8,
+    count: Option<&str>,
+    options: PlanOptions,
+) -> Result<Plan> {
+    if span.table.is_bits() {
+        return Err(AddressError::BitOfBits(format!("{text}.{first:02}")).into());
+    }
+    let count = match count {
+        Some(text) => {
+            parse_in_range(text, 1, 65536 * 16, "COUNT").map_err(PlanError::Count)? as u32
+        }
+        None => 1,
+    };
+    let registers = (u32::from(first) + count).div_ceil(16);
+    check_end(text, span.address, registers)?;
+    let max = per_request(limits::MAX_READ_REGISTERS, options, 1)?;
+    let requests = runs(span.address, registers, max, 1)
+        .into_iter()
+        .map(|(address, quantity)| match span.table {
+            Table::InputRegisters => Request::ReadInputRegisters { address, quantity },
+            _ => Request::ReadHoldingRegisters { address, quantity },
+        })
+        .collect();
+    Ok(Plan {
+        slave,
+        requests,
+        reads: Some((span.table, span.address)),
+        bits: Some(RegisterBits { first, count }),
+    })
+}
+
+/// A write of one bit of a holding register: function 22 (mask write register) changes that
+/// bit alone.
+fn bit_write_plan(
+    slave: u8,
+    (text, span): (&str, Span),
+    bit: u8,
+    values: &[String],
+) -> Result<Plan> {
+    if span.table.is_bits() {
+        return Err(AddressError::BitOfBits(format!("{text}.{bit:02}")).into());
+    }
+    if !span.table.is_writable() {
+        return Err(AddressError::ReadOnly {
+            text: text.to_string(),
+            table: span.table.a_name(),
+        }
+        .into());
+    }
+    let [value] = values else {
+        return Err(PlanError::BitWrite);
+    };
+    let on = parse_coil(value).map_err(PlanError::Value)?;
+    let mask = 1u16 << bit;
+    Ok(Plan {
+        slave,
+        requests: vec![Request::MaskWriteRegister {
+            address: span.address,
+            and_mask: !mask,
+            or_mask: if on { mask } else { 0 },
+        }],
+        reads: None,
+        bits: None,
     })
 }
 
@@ -369,6 +457,7 @@ fn write_plan(
         slave,
         requests,
         reads: None,
+        bits: None,
     })
 }
 
@@ -453,7 +542,13 @@ pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
             count,
         } => {
             let slave = parse_slave(slave, false, options.tcp)?;
-            read_plan(slave, span(address, table, Access::Read)?, count, options)
+            match split_bit(address)? {
+                (address, Some(first)) => {
+                    let span = span(address, table, Access::Read)?;
+                    bit_read_plan(slave, span, first, count, options)
+                }
+                (_, None) => read_plan(slave, span(address, table, Access::Read)?, count, options),
+            }
         }
         Operation::Write {
             slave,
@@ -463,6 +558,13 @@ pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
             how,
         } => {
             let slave = parse_slave(slave, true, options.tcp)?;
+            if let (address, Some(bit)) = split_bit(address)? {
+                if matches!(how, How::Function(Some(_))) {
+                    return Err(PlanError::BitWrite);
+                }
+                let span = span(address, table, Access::WriteOne)?;
+                return bit_write_plan(slave, span, bit, values);
+            }
             if how == How::OneRegister {
                 let width = options.value_type.width();
                 if width > 1 {
@@ -491,6 +593,7 @@ pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
                 slave,
                 requests: vec![raw_request(&pdu)?],
                 reads: None,
+                bits: None,
             })
         }
     }
@@ -614,5 +717,51 @@ mod tests {
             options,
         );
         assert_eq!(raw, Err(PlanError::NotRequest(0x83)));
+    }
+
+    #[test]
+    fn bits_of_registers_read_the_registers_they_run_over_and_write_with_22() {
+        let plan = read("400108.14", Some("4"), PlanOptions::default()).unwrap();
+        assert_eq!(
+            plan.requests,
+            [Request::ReadHoldingRegisters {
+                address: 107,
+                quantity: 2
+            }]
+        );
+        assert_eq!(
+            plan.bits,
+            Some(RegisterBits {
+                first: 14,
+                count: 4
+            })
+        );
+        let write = plan_of(&Operation::Write {
+            slave: "17",
+            address: "400010.03",
+            table: None,
+            values: &["on".to_string()],
+            how: How::Function(None),
+        });
+        assert_eq!(
+            write.unwrap().requests,
+            [Request::MaskWriteRegister {
+                address: 9,
+                and_mask: 0xFFF7,
+                or_mask: 0x0008
+            }]
+        );
+        assert!(matches!(
+            read("000020.01", None, PlanOptions::default()),
+            Err(PlanError::Address(AddressError::BitOfBits(_)))
+        ));
+        assert!(matches!(
+            read("400001.00-400001.07", None, PlanOptions::default()),
+            Err(PlanError::Address(AddressError::BitRange(_)))
+        ));
+    }
+
+    fn plan_of(operation: &Operation) -> Result<Plan> {
+        plan(operation, PlanOptions::default())
     }
 }

@@ -5,7 +5,7 @@ use std::time::Duration;
 
 use thiserror::Error;
 
-use super::plan::Plan;
+use super::plan::{Plan, RegisterBits};
 use super::{Master, MasterError, Reply};
 use crate::codec::function;
 use crate::codec::{ExceptionCode, Request, Response};
@@ -43,6 +43,20 @@ pub struct ReadResult {
     pub address: u16,
     /// The values, in address order.
     pub data: ReadData,
+    /// For bits of registers: the first bit of the register at `address` that `data`'s
+    /// bits start from.
+    pub first_bit: Option<u8>,
+}
+
+impl ReadResult {
+    /// The bits of registers a plan asked for, taken out of the registers read.
+    fn into_register_bits(mut self, bits: RegisterBits) -> ReadResult {
+        if let ReadData::Registers(registers) = &self.data {
+            self.data = ReadData::Bits(register_bits(registers, bits.first, bits.count));
+            self.first_bit = Some(bits.first);
+        }
+        self
+    }
 }
 
 /// The coils or registers a read returned.
@@ -84,7 +98,8 @@ impl Master {
         }
     }
 
-    /// Every request of a read plan of `table` from `address`, the answers put together.
+    /// Every request of a read plan of `table` from `address`, the answers put together;
+    /// for bits of registers, those bits.
     pub fn read(
         &mut self,
         plan: &Plan,
@@ -112,7 +127,7 @@ impl Master {
                 _ => {}
             }
         }
-        Ok(ReadResult {
+        let result = ReadResult {
             slave: plan.slave,
             function: plan.requests.first().map_or(0, Request::function),
             table,
@@ -122,22 +137,78 @@ impl Master {
             } else {
                 ReadData::Registers(registers)
             },
+            first_bit: None,
+        };
+        Ok(match plan.bits {
+            Some(bits) => result.into_register_bits(bits),
+            None => result,
         })
     }
 
-    /// Every request of a write plan; how many coils or registers were written.
-    pub fn write(&mut self, plan: &Plan) -> Result<usize, RunError> {
-        let mut count = 0;
+    /// Every request of a write plan. A mask write (22) the slave does not know
+    /// (exception 01) is done as it would do it: the register read (03), the bits
+    /// changed, the register written (06).
+    pub fn write(&mut self, plan: &Plan) -> Result<Written, RunError> {
+        let mut written = Written::default();
         for request in &plan.requests {
-            self.answer(plan.slave, request)?;
-            count += match request {
+            match (self.answer(plan.slave, request), request) {
+                (
+                    Err(RunError::Exception { code, .. }),
+                    &Request::MaskWriteRegister {
+                        address,
+                        and_mask,
+                        or_mask,
+                    },
+                ) if code == ExceptionCode::ILLEGAL_FUNCTION => {
+                    let read = Request::ReadHoldingRegisters {
+                        address,
+                        quantity: 1,
+                    };
+                    let current = match self.answer(plan.slave, &read)? {
+                        Some(Response::ReadHoldingRegisters { values }) => {
+                            values.first().copied().unwrap_or_default()
+                        }
+                        // The master checked that the answer fits the request.
+                        _ => 0,
+                    };
+                    let value = (current & and_mask) | (or_mask & !and_mask);
+                    self.answer(plan.slave, &Request::WriteSingleRegister { address, value })?;
+                    written.mask_write_emulated = true;
+                }
+                (result, _) => {
+                    result?;
+                }
+            }
+            written.count += match request {
                 Request::WriteMultipleCoils { values, .. } => values.len(),
                 Request::WriteMultipleRegisters { values, .. } => values.len(),
                 _ => 1,
             };
         }
-        Ok(count)
+        Ok(written)
     }
+}
+
+/// What a write plan did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Written {
+    /// How many coils or registers were written.
+    pub count: usize,
+    /// A mask write (22) was refused as unknown and done with 03 and 06 instead.
+    pub mask_write_emulated: bool,
+}
+
+/// `count` bits of `registers` from bit `first` of the first, running on into the next
+/// registers; bit 0 is the least significant.
+pub fn register_bits(registers: &[u16], first: u8, count: u32) -> Vec<bool> {
+    (0..count as usize)
+        .map_while(|i| {
+            let at = usize::from(first) + i;
+            registers
+                .get(at / 16)
+                .map(|register| register >> (at % 16) & 1 == 1)
+        })
+        .collect()
 }
 
 /// What a poll saw, for the summary at its end.
@@ -197,5 +268,20 @@ impl PollStats {
             ));
         }
         line
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bits_run_on_into_the_next_register() {
+        // 0x8000 has bit 15 set, 0x0001 bit 0.
+        assert_eq!(
+            register_bits(&[0x8000, 0x0001], 14, 4),
+            [false, true, true, false]
+        );
+        assert_eq!(register_bits(&[0x022B], 0, 4), [true, true, false, true]);
     }
 }

@@ -114,6 +114,11 @@ impl Table {
     }
 }
 
+/// The reference of a bit of a register: bit 5 of holding register 107 is `400108.05`.
+pub fn bit_reference(table: Table, address: u16, bit: u8) -> String {
+    format!("{}.{bit:02}", reference(table, address))
+}
+
 /// The 6-digit Modicon reference of a protocol address: holding register 107 is `400108`.
 pub fn reference(table: Table, address: u16) -> String {
     format!("{}{:05}", table.digit(), u32::from(address) + 1)
@@ -188,6 +193,15 @@ pub enum AddressError {
     /// A range whose ends are in different tables.
     #[error("range {0} spans two tables")]
     MixedRange(String),
+    /// A bit number that is not 00-15.
+    #[error("'{0}' names no bit of a register: give .00 to .15, as in 400108.05")]
+    BadBit(String),
+    /// A bit of a coil or discrete input.
+    #[error("{0}: coils and discrete inputs are bits already; a bit reference is of a register (300001.00, 400001.15)")]
+    BitOfBits(String),
+    /// A range of bit references.
+    #[error("{0}: give the first bit and a count instead of a range of bits (400108.05 3)")]
+    BitRange(String),
 }
 
 /// How to mean `text` as a protocol address, where it can be one.
@@ -195,6 +209,22 @@ fn pdu_hint(text: &str) -> String {
     match protocol_address(text) {
         Ok(_) => format!(", or give --pdu-addresses to mean protocol address {text}"),
         Err(_) => String::new(),
+    }
+}
+
+/// Splits a bit of a register off an address: `400108.05` is `400108` and bit 5 (bit 0
+/// the least significant).
+pub fn split_bit(text: &str) -> Result<(&str, Option<u8>), AddressError> {
+    let Some((address, bit)) = text.trim().split_once('.') else {
+        return Ok((text, None));
+    };
+    if address.contains('-') || bit.contains('-') {
+        return Err(AddressError::BitRange(text.to_string()));
+    }
+    let number = (1..=2).contains(&bit.len()) && bit.bytes().all(|b| b.is_ascii_digit());
+    match bit.parse::<u8>() {
+        Ok(bit @ 0..=15) if number => Ok((address, Some(bit))),
+        _ => Err(AddressError::BadBit(text.to_string())),
     }
 }
 
