@@ -32,13 +32,16 @@ print(f"scan --timeout {timeout_ms}ms on a pty: {took:.2f} s, found {found}; "
 PY
     done
 done
-# A real line adds the request's time on the wire and the silence before the next one.
+# A real line adds the request's time on the wire and the silence before the next one;
+# scan's default timeout is 100 ms plus the time of a 7-byte answer at the baud rate.
 python3 - <<'PY'
 for baud in (19200, 9600):
     char = 11 / baud
     request = 8 * char
     t35 = 3.5 * char if baud <= 19200 else 0.00175
-    per_id = request + t35 + 0.100
-    print(f"at {baud} baud, --timeout 100ms: {request * 1e3:.2f} ms request + {t35 * 1e3:.2f} ms "
-          f"t3.5 + 100 ms = {per_id * 1e3:.1f} ms a silent id; 247 ids {247 * per_id:.1f} s")
+    timeout = 0.100 + 7 * char
+    per_id = request + t35 + timeout
+    print(f"at {baud} baud, default timeout: {request * 1e3:.2f} ms request + {t35 * 1e3:.2f} ms "
+          f"t3.5 + {timeout * 1e3:.1f} ms = {per_id * 1e3:.1f} ms a silent id; "
+          f"247 ids {247 * per_id:.1f} s")
 PY
