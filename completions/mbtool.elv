@@ -274,6 +274,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;read'= {
+            cand --map 'Read the points of a register map (CSV, or Home Assistant YAML), by name'
             cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
@@ -408,6 +409,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;write'= {
+            cand --map 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out'
             cand --function 'Force the function: 5 or 15 for coils, 6 or 16 for registers'
             cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
@@ -746,6 +748,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;read'= {
+            cand --map 'Read the points of a register map (CSV, or Home Assistant YAML), by name'
             cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
@@ -828,6 +831,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;encode;write'= {
+            cand --map 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out'
             cand --function 'Force the function: 5 or 15 for coils, 6 or 16 for registers'
             cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
             cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'

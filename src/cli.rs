@@ -512,7 +512,7 @@ pub enum RequestCommand {
     #[command(visible_alias = "read-input-regs")]
     ReadInputRegisters(ReadArgs),
     /// Read by reference: its first digit picks the table
-    Read(ReadArgs),
+    Read(ReadByReferenceArgs),
     /// Write one coil (function 05)
     WriteCoil(WriteCoilArgs),
     /// Write coils (function 15)
@@ -544,7 +544,12 @@ impl RequestCommand {
             C::ReadInputs(a) => read(a, Some(Table::DiscreteInputs)),
             C::ReadHolding(a) => read(a, Some(Table::HoldingRegisters)),
             C::ReadInputRegisters(a) => read(a, Some(Table::InputRegisters)),
-            C::Read(a) => read(a, None),
+            C::Read(a) => Operation::Read {
+                slave: &a.slave,
+                address: a.reference.as_deref().unwrap_or_default(),
+                table: None,
+                count: a.count.as_deref(),
+            },
             C::WriteCoil(a) => Operation::Write {
                 slave: &a.slave,
                 address: &a.address,
@@ -571,10 +576,10 @@ impl RequestCommand {
                 how: How::Multiple,
             },
             C::Write(a) => Operation::Write {
-                slave: &a.write.slave,
-                address: &a.write.address,
+                slave: &a.slave,
+                address: a.reference.as_deref().unwrap_or_default(),
                 table: None,
-                values: &a.write.values,
+                values: &a.values,
                 how: How::Function(a.function.as_deref().and_then(|f| f.parse().ok())),
             },
             C::Raw(a) => Operation::Raw {
@@ -631,12 +636,68 @@ pub struct WriteArgs {
 }
 
 #[derive(Clone, Debug, Args)]
+pub struct ReadByReferenceArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+    /// A reference whose first digit picks the table (000020 coils, 100197 discrete
+    /// inputs, 300009 input registers, 400108 holding registers), an inclusive range
+    /// (400108-400110), or a bit of a register (400108.05), COUNT then counting bits;
+    /// with --map, a point's name
+    #[arg(required_unless_present = "map", value_name = "REFERENCE")]
+    pub reference: Option<String>,
+    /// How many values to read [default: 1]; for registers with --type wider than 16
+    /// bits, values of that type; with --map, a point's name
+    pub count: Option<String>,
+    /// With --map: more points' names [default: every point of the map]
+    #[arg(value_name = "NAME")]
+    pub names: Vec<String>,
+    /// Read the points of a register map (CSV, or Home Assistant YAML), by name
+    #[arg(long, value_name = "FILE")]
+    pub map: Option<std::path::PathBuf>,
+}
+
+impl ReadByReferenceArgs {
+    /// The names of the points to read by map: every word after SLAVE.
+    pub fn point_names(&self) -> Vec<&str> {
+        self.reference
+            .iter()
+            .chain(&self.count)
+            .chain(&self.names)
+            .map(String::as_str)
+            .collect()
+    }
+}
+
+#[derive(Clone, Debug, Args)]
 pub struct WriteByReferenceArgs {
-    #[command(flatten)]
-    pub write: WriteArgs,
+    /// Slave address: 1-247, or 0 to broadcast
+    pub slave: String,
+    /// A coil (000020) or holding register (400001) reference, a range that holds exactly
+    /// the values given, or a bit of a holding register (400001.03), set alone with
+    /// function 22; with --map, NAME=VALUE
+    #[arg(required_unless_present = "map", value_name = "REFERENCE")]
+    pub reference: Option<String>,
+    /// The values: registers each converted by --type; coils each 0/1/on/off, or one bit
+    /// string such as 10110; with --map, more NAME=VALUE
+    #[arg(required_unless_present = "map", allow_negative_numbers = true)]
+    pub values: Vec<String>,
+    /// Write points of a register map by name: NAME=VALUE, scale and offset taken back out
+    #[arg(long, value_name = "FILE")]
+    pub map: Option<std::path::PathBuf>,
     /// Force the function: 5 or 15 for coils, 6 or 16 for registers
     #[arg(long, value_name = "CODE", value_parser = ["5", "6", "15", "16"])]
     pub function: Option<String>,
+}
+
+impl WriteByReferenceArgs {
+    /// The NAME=VALUE words of a write by map.
+    pub fn assignments(&self) -> Vec<&str> {
+        self.reference
+            .iter()
+            .chain(&self.values)
+            .map(String::as_str)
+            .collect()
+    }
 }
 
 #[derive(Clone, Debug, Args)]
@@ -900,12 +961,9 @@ const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
     ("read-inputs", "address", "ADDRESS", "First discrete input (100197, 196) or an inclusive range (100197-100218)"),
     ("read-inputs", "count", "COUNT", "How many inputs to read [default: 1]"),
     ("read-input-registers", "address", "ADDRESS", "First input register (300009, 8), an inclusive range (300009-300011), or a bit of a register (300009.00), COUNT then counting bits"),
-    ("read", "address", "REFERENCE", "A reference whose first digit picks the table (000020 coils, 100197 discrete inputs, 300009 input registers, 400108 holding registers), an inclusive range (400108-400110), or a bit of a register (400108.05), COUNT then counting bits"),
-    ("read", "count", "COUNT", "How many values to read [default: 1]; for registers with --type wider than 16 bits, values of that type"),
     ("write-coils", "address", "ADDRESS", "First coil (000020, 19), or a range that holds exactly the values given"),
     ("write-coils", "values", "VALUES", "Each 0/1/on/off, or one bit string such as 10110"),
     ("write-registers", "values", "VALUES", "The values, each converted by --type"),
-    ("write", "address", "REFERENCE", "A coil (000020) or holding register (400001) reference, a range that holds exactly the values given, or a bit of a holding register (400001.03), set alone with function 22"),
     ("diag", "poll_count", "N", "How many round trips of return query data to time [default: 5]"),
     ("dump", "output", "FILE", "The data file to write [default: standard output]"),
 ];

@@ -6,7 +6,7 @@ use mbtool::cli::{Cli, RequestCommand};
 use mbtool::connection::{self, Role};
 use mbtool::error::Error;
 use mbtool::output::{self, encode::write_frame};
-use mbtool_core::codec::{Frame, Mode, Pdu};
+use mbtool_core::codec::{Frame, Mode, Pdu, Request};
 use mbtool_core::master::plan::{plan, Plan, PlanOptions};
 use mbtool_core::transport::Endpoint;
 
@@ -35,28 +35,27 @@ pub fn plan_for(cli: &Cli, request: &RequestCommand) -> Result<Plan, Error> {
 
 pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
     let mode = mode(cli);
-    let plan = plan_for(cli, request)?;
-    let mut frames = Vec::with_capacity(plan.requests.len());
-    for (i, request) in plan.requests.iter().enumerate() {
+    let requests: Vec<(u8, Request)> = match super::request::by_map(cli, request)? {
+        Some(by_map) => by_map.requests(cli),
+        None => {
+            let plan = plan_for(cli, request)?;
+            plan.requests.into_iter().map(|r| (plan.slave, r)).collect()
+        }
+    };
+    let mut frames = Vec::with_capacity(requests.len());
+    for (i, (slave, request)) in requests.iter().enumerate() {
         let frame = Frame {
             mode,
-            slave: plan.slave,
+            slave: *slave,
             transaction: (i as u16).wrapping_add(1),
             pdu: Pdu::Request(request.clone()),
         };
         let bytes = frame.encode().map_err(|e| Error::usage(e.to_string()))?;
-        frames.push((request.function(), bytes));
+        frames.push((*slave, request.function(), bytes));
     }
     let mut out = output::stdout();
-    for (function, bytes) in frames {
-        write_frame(
-            &mut out,
-            cli.output.format(),
-            mode,
-            plan.slave,
-            function,
-            &bytes,
-        )?;
+    for (slave, function, bytes) in frames {
+        write_frame(&mut out, cli.output.format(), mode, slave, function, &bytes)?;
     }
     out.flush()?;
     Ok(0)

@@ -5,6 +5,7 @@ mod diag;
 mod dump;
 mod encode;
 mod info;
+mod map;
 mod request;
 mod restore;
 mod scan;

@@ -19,6 +19,8 @@ use mbtool_core::master::run::PollStats;
 use mbtool_core::master::{Master, Reply, Traffic};
 use mbtool_core::model::address::{bit_reference, reference, Table};
 
+use super::map::{MapPlan, MapWrite};
+
 pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
     // The whole command line is checked before a port is opened.
     if cli.poll.count.is_some() && cli.poll.poll.is_none() {
@@ -27,6 +29,9 @@ pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
              values, give COUNT after the address (read-holding 17 400108 3)",
         )
         .into());
+    }
+    if let Some(by_map) = by_map(cli, request)? {
+        return by_map.run(cli);
     }
     let plan = super::encode::plan_for(cli, request)?;
     let mut connection = connection::connect(cli)?;
@@ -47,6 +52,71 @@ pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
     })?;
     out.flush()?;
     Ok(code)
+}
+
+/// A read or write by register map, checked whole; `None` for a command without `--map`.
+pub enum ByMap {
+    Read(MapPlan),
+    Write(Vec<MapWrite>),
+}
+
+/// The map work of `read --map` or `write --map`, with nothing opened yet.
+pub fn by_map(cli: &Cli, request: &RequestCommand) -> Result<Option<ByMap>> {
+    let tcp = || super::encode::mode(cli) == Mode::Tcp;
+    match request {
+        RequestCommand::Read(args) => match &args.map {
+            Some(path) => {
+                let plan = super::map::plan(cli, path, &args.slave, &args.point_names(), tcp())?;
+                Ok(Some(ByMap::Read(plan)))
+            }
+            None if !args.names.is_empty() => Err(Error::usage(format!(
+                "read takes SLAVE REFERENCE [COUNT]; '{}' is one word too many (point names come with --map FILE)",
+                args.names.join(" ")
+            ))
+            .into()),
+            None => Ok(None),
+        },
+        RequestCommand::Write(args) => match &args.map {
+            Some(_) if args.function.is_some() => Err(Error::usage(
+                "--function chooses how values are written by reference; a map writes each point as its type needs",
+            )
+            .into()),
+            Some(path) => {
+                let plan = super::map::plan(cli, path, &args.slave, &[], tcp())?;
+                Ok(Some(ByMap::Write(plan.writes(&args.assignments(), path)?)))
+            }
+            None => Ok(None),
+        },
+        _ => Ok(None),
+    }
+}
+
+impl ByMap {
+    fn run(&self, cli: &Cli) -> Result<u8> {
+        let mut connection = connection::connect(cli)?;
+        if cli.output.verbose {
+            connection.master.trace(tracer(connection.mode));
+        }
+        match self {
+            ByMap::Read(plan) => super::map::read(cli, plan, &mut connection),
+            ByMap::Write(writes) => super::map::write(cli, writes, &mut connection),
+        }
+    }
+
+    /// The requests it sends, with their slaves, for `encode`.
+    pub fn requests(&self, cli: &Cli) -> Vec<(u8, Request)> {
+        match self {
+            ByMap::Read(plan) => plan
+                .groups(cli)
+                .iter()
+                .map(|group| (group.slave, group.request()))
+                .collect(),
+            ByMap::Write(writes) => writes
+                .iter()
+                .map(|write| (write.slave, write.request.clone()))
+                .collect(),
+        }
+    }
 }
 
 /// `-v`: each frame on stderr with the seconds since the start.

@@ -13,6 +13,7 @@ mod docs;
 mod encode;
 mod first_contact;
 mod golden;
+mod map;
 mod master_faults;
 mod master_pymodbus;
 mod master_sim;

@@ -13,6 +13,7 @@ use crate::transport::Transport;
 
 pub mod backup;
 pub mod device;
+pub mod map;
 pub mod plan;
 pub mod run;
 pub mod scan;

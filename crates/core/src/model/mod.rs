@@ -5,5 +5,7 @@ pub mod address;
 pub mod choice;
 pub mod duration;
 pub mod hexinput;
+pub mod home_assistant;
+pub mod map;
 pub mod number;
 pub mod values;

@@ -337,7 +337,7 @@ fn reorder(bytes: &mut [u8], order: ByteOrder) {
 }
 
 /// The text that `registers` hold, two characters each, high byte first (BADC and DCBA swap
-/// the two); the NULs a device pads a string with are left out.
+/// the two); the NULs and spaces a device pads a string with are left out.
 pub fn text(registers: &[u16], order: ByteOrder) -> Value {
     let mut bytes: Vec<u8> = registers.iter().flat_map(|r| r.to_be_bytes()).collect();
     if matches!(order, ByteOrder::Badc | ByteOrder::Dcba) {
@@ -345,7 +345,7 @@ pub fn text(registers: &[u16], order: ByteOrder) -> Value {
     }
     let end = bytes
         .iter()
-        .rposition(|b| *b != 0)
+        .rposition(|b| *b != 0 && *b != b' ')
         .map_or(0, |last| last + 1);
     Value::Text(escape_text(&bytes[..end]))
 }

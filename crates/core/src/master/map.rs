@@ -1,0 +1,358 @@
+//! Points of a register map read and written by name. Points of one table and slave are
+//! read in as few requests as possible, as the source manuals' driver does with its "max
+//! read count": without a limit, runs of consecutive addresses together; with
+//! `max_per_request` N, every point from the lowest unread address to N registers (or bits)
+//! further on, holes included. A request that spans holes and is refused with 02 or 0B is
+//! read again one run at a time.
+
+use super::run::RunError;
+use super::Master;
+use crate::codec::{limits, ExceptionCode, Request, Response};
+use crate::model::address::Table;
+use crate::model::map::{Kind, Point};
+use crate::model::values::{parse_coil, text, Value, ValueType};
+
+/// One read request of a map read, and the points it carries.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Group {
+    /// The slave asked.
+    pub slave: u8,
+    /// The table read.
+    pub table: Table,
+    /// The first address read.
+    pub address: u16,
+    /// How many registers or bits.
+    pub quantity: u16,
+    /// The points, as indices into the points grouped.
+    pub points: Vec<usize>,
+}
+
+impl Group {
+    /// The read request.
+    pub fn request(&self) -> Request {
+        let (address, quantity) = (self.address, self.quantity);
+        match self.table {
+            Table::Coils => Request::ReadCoils { address, quantity },
+            Table::DiscreteInputs => Request::ReadDiscreteInputs { address, quantity },
+            Table::InputRegisters => Request::ReadInputRegisters { address, quantity },
+            Table::HoldingRegisters => Request::ReadHoldingRegisters { address, quantity },
+        }
+    }
+}
+
+/// The read requests for `points`, each point's own slave or `slave`.
+pub fn groups(points: &[&Point], slave: u8, max: Option<u16>) -> Vec<Group> {
+    let mut order: Vec<usize> = (0..points.len()).collect();
+    order.sort_by_key(|i| {
+        let p = points[*i];
+        (p.slave.unwrap_or(slave), p.table.digit(), p.address)
+    });
+    let mut groups: Vec<Group> = Vec::new();
+    for index in order {
+        let point = points[index];
+        let point_slave = point.slave.unwrap_or(slave);
+        let (start, end) = point.span();
+        let limit = u32::from(if point.table.is_bits() {
+            limits::MAX_READ_BITS
+        } else {
+            limits::MAX_READ_REGISTERS
+        });
+        let joins = groups.last().is_some_and(|group| {
+            let group_start = u32::from(group.address);
+            let group_end = group_start + u32::from(group.quantity);
+            let same = group.slave == point_slave && group.table == point.table;
+            same && match max {
+                // The manuals' window: N from the group's first address, holes included.
+                Some(n) => end <= group_start + u32::from(n).min(limit),
+                // A run: the point follows on (or shares a register, for bits).
+                None => start <= group_end && end <= group_start + limit,
+            }
+        });
+        match groups.last_mut() {
+            Some(group) if joins => {
+                let group_end = u32::from(group.address) + u32::from(group.quantity);
+                group.quantity = (group_end.max(end) - u32::from(group.address)) as u16;
+                group.points.push(index);
+            }
+            _ => groups.push(Group {
+                slave: point_slave,
+                table: point.table,
+                address: point.address,
+                quantity: (end - start) as u16,
+                points: vec![index],
+            }),
+        }
+    }
+    groups
+}
+
+/// What a point holds, as read.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PointValue {
+    /// The index of the point in those read.
+    pub point: usize,
+    /// The registers it takes (empty for coils, inputs and bits).
+    pub raw: Vec<u16>,
+    /// Its value, scaled.
+    pub value: Value,
+}
+
+/// What a map read gave.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MapRead {
+    /// Every point's value, in the order of the points.
+    pub values: Vec<PointValue>,
+    /// How many requests were sent.
+    pub requests: usize,
+    /// A request that spanned holes was refused, and its points read again run by run.
+    pub fell_back: bool,
+}
+
+/// Reads `points` in the requests [`groups`] gives.
+pub fn read_points(
+    master: &mut Master,
+    points: &[&Point],
+    slave: u8,
+    max: Option<u16>,
+) -> Result<MapRead, RunError> {
+    let mut read = MapRead::default();
+    let mut values: Vec<Option<PointValue>> = vec![None; points.len()];
+    let mut pending = groups(points, slave, max);
+    let mut runs_only = false;
+    while let Some(group) = pending.first().cloned() {
+        pending.remove(0);
+        read.requests += 1;
+        match master.answer(group.slave, &group.request()) {
+            Ok(response) => {
+                let (registers, bits) = match response {
+                    Some(
+                        Response::ReadHoldingRegisters { values }
+                        | Response::ReadInputRegisters { values },
+                    ) => (values, Vec::new()),
+                    Some(response) => (
+                        Vec::new(),
+                        response
+                            .bits(usize::from(group.quantity))
+                            .unwrap_or_default(),
+                    ),
+                    None => (Vec::new(), Vec::new()),
+                };
+                for index in &group.points {
+                    let point = points[*index];
+                    let offset = usize::from(point.address - group.address);
+                    values[*index] = Some(point_value(*index, point, offset, &registers, &bits));
+                }
+            }
+            Err(RunError::Exception { code, .. })
+                if !runs_only
+                    && has_holes(&group, points)
+                    && matches!(
+                        code,
+                        ExceptionCode::ILLEGAL_DATA_ADDRESS | ExceptionCode::GATEWAY_TARGET_FAILED
+                    ) =>
+            {
+                // Read this group's points again, one run at a time.
+                read.fell_back = true;
+                let members: Vec<&Point> = group.points.iter().map(|i| points[*i]).collect();
+                let mut runs = groups(&members, slave, None);
+                for run in &mut runs {
+                    for index in &mut run.points {
+                        *index = group.points[*index];
+                    }
+                }
+                runs.append(&mut pending);
+                pending = runs;
+                runs_only = true;
+            }
+            Err(error) => return Err(error),
+        }
+    }
+    read.values = values.into_iter().flatten().collect();
+    Ok(read)
+}
+
+/// Whether a group reads addresses no point takes.
+fn has_holes(group: &Group, points: &[&Point]) -> bool {
+    let mut covered = vec![false; usize::from(group.quantity)];
+    for index in &group.points {
+        let (start, end) = points[*index].span();
+        for at in start..end {
+            if let Some(slot) = covered.get_mut((at - u32::from(group.address)) as usize) {
+                *slot = true;
+            }
+        }
+    }
+    covered.contains(&false)
+}
+
+fn point_value(
+    index: usize,
+    point: &Point,
+    offset: usize,
+    registers: &[u16],
+    bits: &[bool],
+) -> PointValue {
+    let width = usize::from(point.kind.width());
+    let raw = registers
+        .get(offset..offset + width)
+        .unwrap_or_default()
+        .to_vec();
+    let value = match (point.kind, point.bit) {
+        (Kind::Bool, Some(bit)) => {
+            let register = raw.first().copied().unwrap_or_default();
+            Value::Unsigned(u64::from(register >> bit & 1))
+        }
+        (Kind::Bool, None) => {
+            Value::Unsigned(u64::from(bits.get(offset).copied().unwrap_or_default()))
+        }
+        (Kind::Number(value_type), _) => scaled(point, value_type.read(&raw, point.order)),
+        (Kind::Text(_), _) => text(&raw, point.order),
+    };
+    PointValue {
+        point: index,
+        raw: if point.bit.is_some() { Vec::new() } else { raw },
+        value,
+    }
+}
+
+/// A raw value as the map shows it: raw x scale + offset.
+fn scaled(point: &Point, raw: Value) -> Value {
+    if point.is_unscaled() {
+        return raw;
+    }
+    let number = match raw {
+        Value::Unsigned(v) => v as f64,
+        Value::Signed(v) => v as f64,
+        Value::Float32(v) => f64::from(v),
+        Value::Float(v) => v,
+        Value::Text(_) => return raw,
+    };
+    // Twelve significant digits: 1450 x 0.1 shows as 145, not 145.00000000000003.
+    let shown = number * point.scale + point.offset;
+    Value::Float(format!("{shown:.11e}").parse().unwrap_or(shown))
+}
+
+/// The request that writes `text` to `point`, scale and offset taken back out and the
+/// value checked against the point's type; the point must be writable.
+pub fn write_request(point: &Point, text: &str) -> Result<Request, String> {
+    if !point.writable {
+        return Err(format!(
+            "{} ({}) is read-only in the map",
+            point.name,
+            point.reference()
+        ));
+    }
+    let address = point.address;
+    let named = |e: String| format!("{}: {e}", point.name);
+    Ok(match (point.kind, point.bit) {
+        (Kind::Bool, Some(bit)) => {
+            let on = parse_coil(text).map_err(named)?;
+            Request::MaskWriteRegister {
+                address,
+                and_mask: !(1 << bit),
+                or_mask: u16::from(on) << bit,
+            }
+        }
+        (Kind::Bool, None) => Request::WriteSingleCoil {
+            address,
+            value: parse_coil(text).map_err(named)?,
+        },
+        (Kind::Number(value_type), _) => {
+            let raw = unscaled(point, value_type, text).map_err(named)?;
+            let registers = value_type.parse(&raw, point.order).map_err(named)?;
+            registers_request(address, registers)
+        }
+        (Kind::Text(count), _) => {
+            let mut registers = ValueType::Ascii.parse(text, point.order).map_err(named)?;
+            if registers.len() > usize::from(count) {
+                return Err(format!(
+                    "{}: '{text}' takes {} registers; the point holds {count} (two characters each)",
+                    point.name,
+                    registers.len()
+                ));
+            }
+            registers.resize(usize::from(count), 0);
+            registers_request(address, registers)
+        }
+    })
+}
+
+fn registers_request(address: u16, registers: Vec<u16>) -> Request {
+    match registers.as_slice() {
+        [value] => Request::WriteSingleRegister {
+            address,
+            value: *value,
+        },
+        _ => Request::WriteMultipleRegisters {
+            address,
+            values: registers,
+        },
+    }
+}
+
+/// The raw value to write for a shown value: (value - offset) / scale, a whole number
+/// for a whole-number type.
+fn unscaled(point: &Point, value_type: ValueType, text: &str) -> Result<String, String> {
+    if point.is_unscaled() {
+        return Ok(text.to_string());
+    }
+    let shown: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{text}' is not a number"))?;
+    let raw = (shown - point.offset) / point.scale;
+    Ok(match value_type {
+        ValueType::F32 | ValueType::F64 => raw.to_string(),
+        _ => format!("{}", raw.round() as i128),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::map::parse_csv;
+
+    fn requests(refs: &[&str], max: Option<u16>) -> Vec<(u16, u16)> {
+        let text: String = refs
+            .iter()
+            .enumerate()
+            .map(|(i, r)| format!("p{i},{r}\n"))
+            .collect();
+        let map = parse_csv("m", &format!("name,ref\n{text}")).unwrap();
+        let points: Vec<&Point> = map.points.iter().collect();
+        groups(&points, 17, max)
+            .iter()
+            .map(|g| (g.address, g.quantity))
+            .collect()
+    }
+
+    #[test]
+    fn the_manuals_grouping() {
+        let first_five = ["400001", "400002", "400003", "400004", "400005", "400120"];
+        assert_eq!(requests(&first_five, Some(120)), [(0, 120)]);
+        assert_eq!(requests(&first_five, Some(3)), [(0, 3), (3, 2), (119, 1)]);
+        let spread = ["400001", "400010", "400011", "400021", "400031", "400041"];
+        assert_eq!(
+            requests(&spread, Some(10)),
+            [(0, 10), (10, 1), (20, 1), (30, 1), (40, 1)]
+        );
+        // Without the option, runs of consecutive addresses only.
+        assert_eq!(requests(&first_five, None), [(0, 5), (119, 1)]);
+        assert_eq!(requests(&spread, None).len(), 5);
+    }
+
+    #[test]
+    fn scaled_values_are_written_raw() {
+        let map = parse_csv("m", "name,ref,type,scale,offset\nt,400001,i16,0.1,-40\n").unwrap();
+        assert_eq!(
+            write_request(&map.points[0], "21.5"),
+            Ok(Request::WriteSingleRegister {
+                address: 0,
+                value: 615
+            })
+        );
+        assert!(write_request(&map.points[0], "4000")
+            .unwrap_err()
+            .contains("does not fit in i16"));
+    }
+}

@@ -1,0 +1,280 @@
+//! A Home Assistant `modbus:` configuration read as a register map, as it is: each entry
+//! of `sensors`, `binary_sensors`, `switches` and `climates` is a point.
+
+use serde::Deserialize;
+
+use super::address::Table;
+use super::map::{check, Kind, MapError, Point, RegisterMap};
+use super::values::{ByteOrder, ValueType};
+
+/// What a file may hold at its top: the configuration with its `modbus:` key, the list of
+/// hubs an `!include` names, or one hub.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum Root {
+    Configuration { modbus: Hubs },
+    Hubs(Vec<Hub>),
+    Hub(Hub),
+}
+
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum Hubs {
+    Many(Vec<Hub>),
+    One(Hub),
+}
+
+#[derive(Default, Deserialize)]
+struct Hub {
+    #[serde(default)]
+    sensors: Vec<Entry>,
+    #[serde(default)]
+    binary_sensors: Vec<Entry>,
+    #[serde(default)]
+    switches: Vec<Entry>,
+    #[serde(default)]
+    climates: Vec<Entry>,
+}
+
+/// The keys of an entry that make a point; the others (`scan_interval`, `device_class`,
+/// ...) are Home Assistant's own.
+#[derive(Deserialize)]
+struct Entry {
+    name: String,
+    address: u32,
+    input_type: Option<String>,
+    write_type: Option<String>,
+    data_type: Option<String>,
+    swap: Option<String>,
+    count: Option<u16>,
+    scale: Option<f64>,
+    offset: Option<f64>,
+    unit_of_measurement: Option<String>,
+    slave: Option<u8>,
+    device_address: Option<u8>,
+}
+
+/// Which list an entry came from.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Platform {
+    Sensor,
+    BinarySensor,
+    Switch,
+    Climate,
+}
+
+/// The line where an entry named `name` starts, for messages.
+fn line_of(text: &str, name: &str) -> usize {
+    let names_it = |line: &str| {
+        line.match_indices("name:").any(|(at, key)| {
+            let before = line[..at].trim_end();
+            let starts_key = before.is_empty() || before.ends_with(['-', '{', ',']);
+            let value = line[at + key.len()..]
+                .split([',', '}'])
+                .next()
+                .unwrap_or_default();
+            starts_key && value.trim().trim_matches(['"', '\'']) == name
+        })
+    };
+    text.lines().position(names_it).map_or(1, |i| i + 1)
+}
+
+fn table_of(platform: Platform, entry: &Entry) -> Result<Table, String> {
+    let (key, given) = match platform {
+        Platform::Switch => ("write_type", entry.write_type.as_deref()),
+        _ => ("input_type", entry.input_type.as_deref()),
+    };
+    let default = match platform {
+        Platform::BinarySensor => "coil",
+        _ => "holding",
+    };
+    match given.unwrap_or(default) {
+        "holding" | "holdings" => Ok(Table::HoldingRegisters),
+        "input" => Ok(Table::InputRegisters),
+        "coil" | "coils" => Ok(Table::Coils),
+        "discrete_input" => Ok(Table::DiscreteInputs),
+        other => Err(format!(
+            "{key} '{other}': give holding, input, coil or discrete_input"
+        )),
+    }
+}
+
+fn kind_of(entry: &Entry, table: Table) -> Result<Kind, String> {
+    if table.is_bits() {
+        return Ok(Kind::Bool);
+    }
+    let value_type = match entry.data_type.as_deref().unwrap_or("int16") {
+        "int16" | "int" => ValueType::I16,
+        "uint16" | "uint" => ValueType::U16,
+        "int32" => ValueType::I32,
+        "uint32" => ValueType::U32,
+        "int64" => ValueType::I64,
+        "uint64" => ValueType::U64,
+        "float32" | "float" => ValueType::F32,
+        "float64" => ValueType::F64,
+        "string" => {
+            return match entry.count {
+                Some(count @ 1..=125) => Ok(Kind::Text(count)),
+                _ => Err("data_type string needs count: the registers it takes, 1 to 125".into()),
+            }
+        }
+        other => {
+            return Err(format!(
+                "data_type '{other}': give int16, uint16, int32, uint32, int64, uint64, float32, float64 or string"
+            ))
+        }
+    };
+    Ok(Kind::Number(value_type))
+}
+
+fn order_of(entry: &Entry) -> Result<ByteOrder, String> {
+    Ok(match entry.swap.as_deref().unwrap_or("none") {
+        "none" => ByteOrder::Abcd,
+        "byte" => ByteOrder::Badc,
+        "word" => ByteOrder::Cdab,
+        "word_byte" => ByteOrder::Dcba,
+        other => {
+            return Err(format!(
+                "swap '{other}': give none, byte, word or word_byte"
+            ))
+        }
+    })
+}
+
+fn point(platform: Platform, entry: Entry, line: usize) -> Result<Point, String> {
+    let table = table_of(platform, &entry)?;
+    let kind = kind_of(&entry, table)?;
+    let address = u16::try_from(entry.address)
+        .ok()
+        .filter(|a| u32::from(*a) + u32::from(kind.width()) <= 65536)
+        .ok_or_else(|| format!("address {} is past the last, 65535", entry.address))?;
+    Ok(Point {
+        table,
+        address,
+        bit: None,
+        kind,
+        order: order_of(&entry)?,
+        scale: entry.scale.unwrap_or(1.0),
+        offset: entry.offset.unwrap_or(0.0),
+        unit: entry.unit_of_measurement.unwrap_or_default(),
+        writable: platform == Platform::Switch && table.is_writable(),
+        slave: entry.slave.or(entry.device_address),
+        description: String::new(),
+        line,
+        name: entry.name,
+    })
+}
+
+/// Reads a Home Assistant `modbus:` configuration; `file` names it in messages.
+pub fn parse(file: &str, text: &str) -> Result<RegisterMap, MapError> {
+    let root: Root = serde_saphyr::from_str(text).map_err(|e| MapError {
+        file: file.to_string(),
+        line: 1,
+        error: format!(
+            "not a Home Assistant modbus configuration: {}",
+            e.to_string().lines().next().unwrap_or_default()
+        ),
+    })?;
+    let hubs = match root {
+        Root::Configuration {
+            modbus: Hubs::Many(hubs),
+        }
+        | Root::Hubs(hubs) => hubs,
+        Root::Configuration {
+            modbus: Hubs::One(hub),
+        }
+        | Root::Hub(hub) => vec![hub],
+    };
+    let mut map = RegisterMap::default();
+    for hub in hubs {
+        let lists = [
+            (Platform::Sensor, hub.sensors),
+            (Platform::BinarySensor, hub.binary_sensors),
+            (Platform::Switch, hub.switches),
+            (Platform::Climate, hub.climates),
+        ];
+        for (platform, entries) in lists {
+            for entry in entries {
+                let line = line_of(text, &entry.name);
+                let name = entry.name.clone();
+                let point = point(platform, entry, line).map_err(|error| MapError {
+                    file: file.to_string(),
+                    line,
+                    error: format!("{name}: {error}"),
+                })?;
+                map.points.push(point);
+            }
+        }
+    }
+    check(file, map)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const CONFIGURATION: &str = "
+modbus:
+  - name: pump station
+    type: tcp
+    host: !secret pump_host
+    port: 502
+    sensors:
+      - name: voltage
+        address: 0
+        data_type: float32
+        swap: word
+        unit_of_measurement: V
+        slave: 17
+      - name: temperature
+        address: 2
+        input_type: input
+        scale: 0.1
+        offset: -40
+    binary_sensors:
+      - name: running
+        address: 0
+    switches:
+      - name: pump
+        address: 5
+        write_type: coil
+";
+
+    #[test]
+    fn entries_become_points() {
+        let map = parse("ha.yaml", CONFIGURATION).unwrap();
+        let names: Vec<&str> = map.points.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, ["voltage", "temperature", "running", "pump"]);
+        let voltage = &map.points[0];
+        assert_eq!(
+            (voltage.table, voltage.kind, voltage.order, voltage.slave),
+            (
+                Table::HoldingRegisters,
+                Kind::Number(ValueType::F32),
+                ByteOrder::Cdab,
+                Some(17)
+            )
+        );
+        assert_eq!(voltage.line, 8);
+        let temperature = &map.points[1];
+        assert_eq!(
+            (temperature.table, temperature.kind, temperature.scale),
+            (Table::InputRegisters, Kind::Number(ValueType::I16), 0.1)
+        );
+        assert_eq!(
+            (map.points[2].table, map.points[2].kind),
+            (Table::Coils, Kind::Bool)
+        );
+        assert!(map.points[3].writable && !map.points[0].writable);
+    }
+
+    #[test]
+    fn a_bad_entry_names_its_line() {
+        let text = CONFIGURATION.replace("swap: word", "swap: sideways");
+        assert_eq!(
+            parse("ha.yaml", &text).unwrap_err().to_string(),
+            "ha.yaml:8: voltage: swap 'sideways': give none, byte, word or word_byte"
+        );
+        assert!(parse("ha.yaml", "- [1, 2").is_err());
+    }
+}

@@ -1,0 +1,474 @@
+//! Register maps: a device's points by name, each with its reference, type, byte order,
+//! scale, offset, unit and access, read from a CSV file with a header row or from a Home
+//! Assistant `modbus:` configuration. A map is checked whole, every line of it, before it
+//! is used.
+
+use std::collections::HashMap;
+use std::fmt;
+
+use thiserror::Error;
+
+use super::address::{bit_reference, parse_reference, reference, split_bit, Table};
+use super::choice::Choice;
+use super::values::{ByteOrder, ValueType};
+
+/// What a point holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A coil, a discrete input, or a bit of a register.
+    Bool,
+    /// A number of a value type.
+    Number(ValueType),
+    /// Text in N registers, two characters each.
+    Text(u16),
+}
+
+impl Kind {
+    /// Registers (or bits, for coils and inputs) the point takes.
+    pub fn width(self) -> u16 {
+        match self {
+            Kind::Bool => 1,
+            Kind::Number(value_type) => value_type.width() as u16,
+            Kind::Text(registers) => registers,
+        }
+    }
+
+    fn name(self) -> String {
+        match self {
+            Kind::Bool => "bool".into(),
+            Kind::Number(value_type) => value_type.name().into(),
+            Kind::Text(registers) => format!("string:{registers}"),
+        }
+    }
+}
+
+/// One named point of a device.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Point {
+    /// Its name, unique in the map.
+    pub name: String,
+    /// The table it is in.
+    pub table: Table,
+    /// Its first address, 0-based.
+    pub address: u16,
+    /// For a bit of a register, which bit (0 the least significant).
+    pub bit: Option<u8>,
+    /// What it holds.
+    pub kind: Kind,
+    /// The byte order of a value wider than a register.
+    pub order: ByteOrder,
+    /// The value shown is raw x scale + offset.
+    pub scale: f64,
+    /// See `scale`.
+    pub offset: f64,
+    /// Shown after the value.
+    pub unit: String,
+    /// Whether it may be written.
+    pub writable: bool,
+    /// Its own slave id, where the command's is not its.
+    pub slave: Option<u8>,
+    /// Free text.
+    pub description: String,
+    /// The line of the file it was read from.
+    pub line: usize,
+}
+
+impl Point {
+    /// Its reference as the map gives it: `400001`, `400108.05`.
+    pub fn reference(&self) -> String {
+        match self.bit {
+            Some(bit) => bit_reference(self.table, self.address, bit),
+            None => reference(self.table, self.address),
+        }
+    }
+
+    /// The addresses it takes, `[start, end)`.
+    pub fn span(&self) -> (u32, u32) {
+        let start = u32::from(self.address);
+        (start, start + u32::from(self.kind.width()))
+    }
+
+    /// Whether raw values are shown as they are.
+    pub fn is_unscaled(&self) -> bool {
+        self.scale == 1.0 && self.offset == 0.0
+    }
+}
+
+/// A device's points, in the order of the file.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct RegisterMap {
+    /// The points.
+    pub points: Vec<Point>,
+}
+
+/// Why a map cannot be used: the file, the line, and what is wrong there.
+#[derive(Clone, Debug, Error, PartialEq, Eq)]
+#[error("{file}:{line}: {error}")]
+pub struct MapError {
+    /// The file as named.
+    pub file: String,
+    /// The line (1-based; 0 for the file as a whole).
+    pub line: usize,
+    /// What is wrong.
+    pub error: String,
+}
+
+fn at(file: &str, line: usize, error: impl fmt::Display) -> MapError {
+    MapError {
+        file: file.to_string(),
+        line,
+        error: error.to_string(),
+    }
+}
+
+/// The columns of a CSV map.
+const COLUMNS: [&str; 10] = [
+    "name",
+    "ref",
+    "type",
+    "order",
+    "scale",
+    "offset",
+    "unit",
+    "access",
+    "slave",
+    "description",
+];
+
+/// The fields of one line of a CSV map, honouring double quotes (`"a, b"`, `""`).
+fn csv_fields(line: &str) -> Result<Vec<String>, String> {
+    let mut fields = vec![String::new()];
+    let mut quoted = false;
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        let field = fields.last_mut().ok_or("empty line")?;
+        match (c, quoted) {
+            ('"', true) if chars.peek() == Some(&'"') => {
+                chars.next();
+                field.push('"');
+            }
+            ('"', true) => quoted = false,
+            ('"', false) if field.trim().is_empty() => {
+                field.clear();
+                quoted = true;
+            }
+            (',', false) => fields.push(String::new()),
+            (c, _) => field.push(c),
+        }
+    }
+    if quoted {
+        return Err("a quoted field is not closed".into());
+    }
+    Ok(fields.into_iter().map(|f| f.trim().to_string()).collect())
+}
+
+/// A point's kind from its `type` column and table.
+fn kind_of(text: &str, table: Table, bit: Option<u8>) -> Result<Kind, String> {
+    let bits = table.is_bits() || bit.is_some();
+    let kind = match text.to_ascii_lowercase().as_str() {
+        "" if bits => Kind::Bool,
+        "" => Kind::Number(ValueType::U16),
+        "bool" => Kind::Bool,
+        other => match other.strip_prefix("string:") {
+            Some(count) => match count.parse::<u16>() {
+                Ok(n @ 1..=125) => Kind::Text(n),
+                _ => return Err(format!("string:{count}: give string:N with N registers, 1 to 125")),
+            },
+            None => Kind::Number(ValueType::from_name(other).filter(|t| {
+                !matches!(t, ValueType::Hex | ValueType::Bin | ValueType::Ascii)
+            }).ok_or_else(|| {
+                format!("type '{text}': give u16, i16, u32, i32, f32, u64, i64, f64, bool or string:N")
+            })?),
+        },
+    };
+    match (kind, bits) {
+        (Kind::Bool, true) | (Kind::Number(_) | Kind::Text(_), false) => Ok(kind),
+        (Kind::Bool, false) => Err(format!(
+            "type bool is for coils, discrete inputs and bits of registers, not {}s",
+            table.name()
+        )),
+        (_, true) => Err(format!(
+            "type {} does not fit in {}: it is one bit",
+            kind.name(),
+            if bit.is_some() {
+                "a bit of a register".to_string()
+            } else {
+                format!("a {}", table.name())
+            }
+        )),
+    }
+}
+
+fn number(text: &str, what: &str, default: f64) -> Result<f64, String> {
+    if text.is_empty() {
+        return Ok(default);
+    }
+    text.parse::<f64>()
+        .ok()
+        .filter(|v| v.is_finite())
+        .ok_or_else(|| format!("{what} '{text}' is not a number"))
+}
+
+/// One line of a CSV map, its columns by the header's order.
+fn csv_point(columns: &[usize], fields: &[String], line: usize) -> Result<Point, String> {
+    let field = |name: &str| -> &str {
+        COLUMNS
+            .iter()
+            .position(|c| *c == name)
+            .and_then(|i| columns.iter().position(|c| *c == i))
+            .and_then(|at| fields.get(at))
+            .map_or("", String::as_str)
+    };
+    if fields.len() > columns.len() {
+        return Err(format!(
+            "{} fields where the header has {}",
+            fields.len(),
+            columns.len()
+        ));
+    }
+    let name = field("name");
+    if name.is_empty() {
+        return Err("a point needs a name".into());
+    }
+    let (reference_text, bit) = split_bit(field("ref")).map_err(|e| e.to_string())?;
+    if reference_text.is_empty() {
+        return Err(format!("{name} has no ref"));
+    }
+    let (table, address) = parse_reference(reference_text).map_err(|e| e.to_string())?;
+    if bit.is_some() && table.is_bits() {
+        return Err(format!(
+            "{}: a bit reference is of a register",
+            field("ref")
+        ));
+    }
+    let kind = kind_of(field("type"), table, bit)?;
+    if u32::from(address) + u32::from(kind.width()) > 65536 {
+        return Err(format!(
+            "{name}: a {} at {} runs past the last address",
+            kind.name(),
+            field("ref")
+        ));
+    }
+    let order = match field("order") {
+        "" => ByteOrder::default(),
+        text => ByteOrder::from_name(&text.to_ascii_uppercase())
+            .ok_or_else(|| format!("order '{text}': give ABCD, CDAB, BADC or DCBA"))?,
+    };
+    let writable = match (
+        field("access").to_ascii_lowercase().as_str(),
+        table.is_writable(),
+    ) {
+        ("", writable) => writable,
+        ("r", _) => false,
+        ("rw", true) => true,
+        ("rw", false) => {
+            return Err(format!(
+                "{name}: {}s are read-only; give access r",
+                table.name()
+            ))
+        }
+        (other, _) => return Err(format!("access '{other}': give r or rw")),
+    };
+    let slave = match field("slave") {
+        "" => None,
+        text => {
+            Some(crate::model::number::parse_in_range(text, 0, 255, "slave").map(|id| id as u8)?)
+        }
+    };
+    Ok(Point {
+        name: name.to_string(),
+        table,
+        address,
+        bit,
+        kind,
+        order,
+        scale: number(field("scale"), "scale", 1.0)?,
+        offset: number(field("offset"), "offset", 0.0)?,
+        unit: field("unit").to_string(),
+        writable,
+        slave,
+        description: field("description").to_string(),
+        line,
+    })
+}
+
+/// Reads a CSV map: a header row naming the columns (in any order, any case), then one
+/// point a line; `#` starts a comment line. `file` names the map in messages.
+pub fn parse_csv(file: &str, text: &str) -> Result<RegisterMap, MapError> {
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .map(|(i, line)| (i + 1, line.trim()))
+        .filter(|(_, line)| !line.is_empty() && !line.starts_with('#'));
+    let (header_line, header) = lines.next().ok_or_else(|| {
+        at(
+            file,
+            0,
+            "no header row: the first line names the columns (name,ref,type,...)",
+        )
+    })?;
+    let mut columns = Vec::new();
+    for name in csv_fields(header).map_err(|e| at(file, header_line, e))? {
+        let column = COLUMNS
+            .iter()
+            .position(|c| c.eq_ignore_ascii_case(&name))
+            .ok_or_else(|| {
+                at(
+                    file,
+                    header_line,
+                    format!(
+                        "unknown column '{name}': the columns are {}",
+                        COLUMNS.join(", ")
+                    ),
+                )
+            })?;
+        if columns.contains(&column) {
+            return Err(at(
+                file,
+                header_line,
+                format!("column '{name}' given twice"),
+            ));
+        }
+        columns.push(column);
+    }
+    for required in ["name", "ref"] {
+        let index = COLUMNS
+            .iter()
+            .position(|c| *c == required)
+            .unwrap_or_default();
+        if !columns.contains(&index) {
+            return Err(at(
+                file,
+                header_line,
+                format!("the header has no '{required}' column"),
+            ));
+        }
+    }
+    let mut map = RegisterMap::default();
+    for (number, line) in lines {
+        let fields = csv_fields(line).map_err(|e| at(file, number, e))?;
+        let point = csv_point(&columns, &fields, number).map_err(|e| at(file, number, e))?;
+        map.points.push(point);
+    }
+    check(file, map)
+}
+
+/// Reads the map at `path`: Home Assistant YAML for a `.yaml` or `.yml` file, CSV otherwise.
+pub fn load(path: &std::path::Path) -> Result<RegisterMap, MapError> {
+    let file = path.display().to_string();
+    let text =
+        std::fs::read_to_string(path).map_err(|e| at(&file, 0, format!("cannot read it: {e}")))?;
+    let yaml = path
+        .extension()
+        .is_some_and(|ext| ext.eq_ignore_ascii_case("yaml") || ext.eq_ignore_ascii_case("yml"));
+    if yaml {
+        super::home_assistant::parse(&file, &text)
+    } else {
+        parse_csv(&file, &text)
+    }
+}
+
+/// Checks a map as a whole: names unique, no two points on the same addresses (bits of
+/// one register apart).
+pub fn check(file: &str, map: RegisterMap) -> Result<RegisterMap, MapError> {
+    let mut names: HashMap<&str, usize> = HashMap::new();
+    for point in &map.points {
+        if let Some(first) = names.insert(&point.name, point.line) {
+            return Err(at(
+                file,
+                point.line,
+                format!(
+                    "the name '{}' is taken already, on line {first}",
+                    point.name
+                ),
+            ));
+        }
+    }
+    let mut by_place: Vec<&Point> = map.points.iter().collect();
+    by_place.sort_by_key(|p| (p.slave, p.table.digit(), p.address, p.bit));
+    for pair in by_place.windows(2) {
+        let [a, b] = pair else { continue };
+        let same_place = a.slave == b.slave && a.table == b.table;
+        let overlap = same_place && b.span().0 < a.span().1;
+        let distinct_bits =
+            matches!((a.bit, b.bit), (Some(x), Some(y)) if x != y) && a.address == b.address;
+        if overlap && !distinct_bits {
+            let (first, second) = if a.line < b.line { (a, b) } else { (b, a) };
+            return Err(at(
+                file,
+                second.line,
+                format!(
+                    "{} ({}) overlaps {} ({}, line {})",
+                    second.name,
+                    second.reference(),
+                    first.name,
+                    first.reference(),
+                    first.line
+                ),
+            ));
+        }
+    }
+    Ok(map)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const EXAMPLE: &str = "\
+# pump station 3
+name,ref,type,order,scale,unit,access,description
+voltage,400001,f32,CDAB,,V,r,\"mains, phase L1\"
+speed,400003,u16,,0.1,rpm,,
+alarm,400010.03,bool,,,,,
+name plate,400020,string:4,,,,r,
+running,000001,,,,,,
+";
+
+    #[test]
+    fn the_columns_and_their_defaults() {
+        let map = parse_csv("pump.csv", EXAMPLE).unwrap();
+        let names: Vec<&str> = map.points.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(
+            names,
+            ["voltage", "speed", "alarm", "name plate", "running"]
+        );
+        let voltage = &map.points[0];
+        assert_eq!(voltage.kind, Kind::Number(ValueType::F32));
+        assert_eq!(voltage.order, ByteOrder::Cdab);
+        assert!(!voltage.writable);
+        assert_eq!(voltage.description, "mains, phase L1");
+        assert_eq!(map.points[1].scale, 0.1);
+        assert!(map.points[1].writable);
+        assert_eq!(
+            (map.points[2].bit, map.points[2].kind),
+            (Some(3), Kind::Bool)
+        );
+        assert_eq!(map.points[3].kind, Kind::Text(4));
+        assert_eq!(map.points[4].kind, Kind::Bool);
+    }
+
+    #[test]
+    fn every_fault_names_its_file_and_line() {
+        let fails = |text: &str| parse_csv("m.csv", text).unwrap_err().to_string();
+        assert_eq!(
+            fails("name,ref\na,400001\na,400002\n"),
+            "m.csv:3: the name 'a' is taken already, on line 2"
+        );
+        assert_eq!(
+            fails("name,ref,type\na,400001,f32\nb,400002\n"),
+            "m.csv:3: b (400002) overlaps a (400001, line 2)"
+        );
+        assert!(fails("name,ref,type\na,000001,u32\n")
+            .starts_with("m.csv:2: type u32 does not fit in a coil"));
+        assert!(fails("name,ref,colour\n").starts_with("m.csv:1: unknown column 'colour'"));
+        assert!(
+            fails("name,ref\na,400001,x\n").starts_with("m.csv:2: 3 fields where the header has 2")
+        );
+        assert!(fails("name,ref\nb,499999x\n").starts_with("m.csv:2: "));
+        assert!(fails("name,ref,access\nc,300001,rw\n")
+            .starts_with("m.csv:2: c: input registers are read-only"));
+        // Two bits of one register are two points.
+        assert!(parse_csv("m.csv", "name,ref\na,400001.00\nb,400001.01\n").is_ok());
+    }
+}

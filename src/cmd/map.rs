@@ -1,0 +1,153 @@
+//! `read --map` and `write --map`: a device's points by name, from a register map.
+
+use std::io::Write;
+
+use anyhow::Result;
+
+use mbtool::cli::Cli;
+use mbtool::connection::Connection;
+use mbtool::error::Error;
+use mbtool::output::{self, map::MapWriter};
+use mbtool_core::codec::Request;
+use mbtool_core::master::map::{groups, read_points, write_request, Group};
+use mbtool_core::master::plan::parse_slave;
+use mbtool_core::model::map::{load, Point, RegisterMap};
+
+/// A map read or write, checked whole before anything is sent.
+pub struct MapPlan {
+    pub slave: u8,
+    pub points: Vec<Point>,
+}
+
+/// Loads the map and picks the points named (every point when none is).
+pub fn plan(
+    cli: &Cli,
+    path: &std::path::Path,
+    slave: &str,
+    names: &[&str],
+    tcp: bool,
+) -> Result<MapPlan, Error> {
+    let map = load(path).map_err(|e| match e.line {
+        0 => Error::Io(std::io::Error::other(e.to_string())),
+        _ => Error::usage(e.to_string()),
+    })?;
+    if cli.poll.poll.is_some() {
+        return Err(Error::usage(
+            "--poll takes a REFERENCE; a map is read once (watch will show a map live)",
+        ));
+    }
+    let slave = parse_slave(slave, true, tcp)?;
+    Ok(MapPlan {
+        slave,
+        points: pick(&map, names, path)?,
+    })
+}
+
+fn pick(map: &RegisterMap, names: &[&str], path: &std::path::Path) -> Result<Vec<Point>, Error> {
+    if names.is_empty() {
+        return Ok(map.points.clone());
+    }
+    names
+        .iter()
+        .map(|name| find(&map.points, name, path).cloned())
+        .collect()
+}
+
+/// The point named `name`, or a message that offers the nearest name.
+fn find<'a>(points: &'a [Point], name: &str, path: &std::path::Path) -> Result<&'a Point, Error> {
+    points.iter().find(|p| p.name == name).ok_or_else(|| {
+        let nearest = points
+            .iter()
+            .map(|p| (strsim::jaro_winkler(name, &p.name), p.name.as_str()))
+            .filter(|(likeness, _)| *likeness > 0.8)
+            .max_by(|a, b| a.0.total_cmp(&b.0));
+        let hint = nearest.map_or(String::new(), |(_, n)| format!(": did you mean '{n}'?"));
+        Error::usage(format!(
+            "{} has no point named '{name}'{hint}",
+            path.display()
+        ))
+    })
+}
+
+impl MapPlan {
+    /// The read requests, grouped as the manuals' driver groups them.
+    pub fn groups(&self, cli: &Cli) -> Vec<Group> {
+        let points: Vec<&Point> = self.points.iter().collect();
+        groups(&points, self.slave, cli.data.max_per_request)
+    }
+
+    /// The write requests of `NAME=VALUE` words, each point's own slave or the command's,
+    /// with what each writes in words.
+    pub fn writes(
+        &self,
+        assignments: &[&str],
+        path: &std::path::Path,
+    ) -> Result<Vec<MapWrite>, Error> {
+        assignments
+            .iter()
+            .map(|word| {
+                let (name, value) = word.split_once('=').ok_or_else(|| {
+                    Error::usage(format!("'{word}': give NAME=VALUE, as setpoint=21.5"))
+                })?;
+                let point = find(&self.points, name, path)?;
+                let request = write_request(point, value).map_err(Error::usage)?;
+                Ok(MapWrite {
+                    slave: point.slave.unwrap_or(self.slave),
+                    request,
+                    said: format!("{name} = {value}{} ({})", unit(point), point.reference()),
+                })
+            })
+            .collect()
+    }
+}
+
+/// One point's write.
+pub struct MapWrite {
+    pub slave: u8,
+    pub request: Request,
+    /// `setpoint = 21.5 °C (400001)`.
+    pub said: String,
+}
+
+fn unit(point: &Point) -> String {
+    match point.unit.as_str() {
+        "" => String::new(),
+        unit => format!(" {unit}"),
+    }
+}
+
+/// Reads the plan's points and shows them.
+pub fn read(cli: &Cli, plan: &MapPlan, connection: &mut Connection) -> Result<u8> {
+    let points: Vec<&Point> = plan.points.iter().collect();
+    let read = read_points(
+        &mut connection.master,
+        &points,
+        plan.slave,
+        cli.data.max_per_request,
+    )
+    .map_err(|e| connection.explain(cli, Error::from(e)))?;
+    if read.fell_back {
+        mbtool::note!(
+            "mbtool: a request spanning addresses no point names was refused; its points were read again one run at a time"
+        );
+    }
+    let mut out = output::stdout();
+    MapWriter::new(cli.output.format(), output::colour_wanted())
+        .write(&mut out, plan.slave, &points, &read)?;
+    out.flush()?;
+    Ok(0)
+}
+
+/// Writes the points, then says what was written.
+pub fn write(cli: &Cli, writes: &[MapWrite], connection: &mut Connection) -> Result<u8> {
+    let mut out = output::stdout();
+    for write in writes {
+        connection
+            .master
+            .answer(write.slave, &write.request)
+            .map_err(|e| connection.explain(cli, Error::from(e)))?;
+        writeln!(out, "wrote {}", write.said)?;
+    }
+    out.flush()?;
+    Ok(0)
+}

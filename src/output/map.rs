@@ -1,0 +1,97 @@
+//! How the points of a map read are shown: name, reference, value with its unit and the
+//! raw registers in hex; JSON with the stable keys of CLI.md; `name=value` lines; CSV.
+
+use std::io::{self, Write};
+
+use serde_json::json;
+
+use super::{csv_field, new_table};
+use crate::cli::OutputFormat;
+use mbtool_core::master::map::MapRead;
+use mbtool_core::model::map::Point;
+
+pub struct MapWriter {
+    format: OutputFormat,
+    colour: bool,
+}
+
+fn raw_hex(raw: &[u16]) -> String {
+    raw.iter()
+        .map(|r| format!("{r:04X}"))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+impl MapWriter {
+    pub fn new(format: OutputFormat, colour: bool) -> Self {
+        Self { format, colour }
+    }
+
+    pub fn write(
+        &self,
+        out: &mut dyn Write,
+        slave: u8,
+        points: &[&Point],
+        read: &MapRead,
+    ) -> io::Result<()> {
+        let rows = read
+            .values
+            .iter()
+            .filter_map(|value| Some((points.get(value.point)?, value)));
+        match self.format {
+            OutputFormat::Json => {
+                let points: Vec<serde_json::Value> = rows
+                    .map(|(point, value)| {
+                        json!({
+                            "name": point.name,
+                            "ref": point.reference(),
+                            "value": value.value,
+                            "unit": point.unit,
+                            "raw": value.raw,
+                        })
+                    })
+                    .collect();
+                serde_json::to_writer(&mut *out, &json!({ "slave": slave, "points": points }))?;
+                writeln!(out)
+            }
+            OutputFormat::Values => {
+                for (point, value) in rows {
+                    writeln!(out, "{}={}", point.name, value.value)?;
+                }
+                Ok(())
+            }
+            OutputFormat::Csv => {
+                writeln!(out, "name,ref,value,unit,raw")?;
+                for (point, value) in rows {
+                    writeln!(
+                        out,
+                        "{},{},{},{},{}",
+                        csv_field(&point.name),
+                        point.reference(),
+                        csv_field(&value.value.to_string()),
+                        csv_field(&point.unit),
+                        raw_hex(&value.raw)
+                    )?;
+                }
+                Ok(())
+            }
+            OutputFormat::Table => {
+                let mut table = new_table(self.colour);
+                table.set_header(["name", "ref", "value", "raw"]);
+                for (point, value) in rows {
+                    let shown = match point.unit.as_str() {
+                        "" => value.value.to_string(),
+                        unit => format!("{} {unit}", value.value),
+                    };
+                    table.add_row(vec![
+                        point.name.clone(),
+                        point.reference(),
+                        shown,
+                        raw_hex(&value.raw),
+                    ]);
+                }
+                writeln!(out, "{table}")
+            }
+        }
+    }
+}

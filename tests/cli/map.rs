@@ -1,0 +1,346 @@
+//! Register maps: points read and written by name through `serve`, grouped into requests
+//! as the manuals' driver groups them (counted on the wire), the same map as CSV and as
+//! Home Assistant YAML, and every malformed map refused before anything is sent.
+
+use crate::support::{mbtool, serve_tcp};
+
+/// One point of each kind, in a device's data file and in a map of it.
+const DEVICE: &str = "\
+400001 = 230.5 f32
+400003 = 1234
+400004 = -215
+400005 = 70000 u32 CDAB
+400007 = 2.5 f32 CDAB
+400011 = -5 i64
+400015 = 0.125 f64
+400020 = \"PUMP 1\" ascii
+400023 = 0
+400030 = 0x00F0
+000001 = on
+100001 = 1
+300001 = 45
+";
+
+const MAP_CSV: &str = "\
+# one point of each kind
+name,ref,type,order,scale,offset,unit,access
+voltage,400001,f32,,,,V,
+count,400003,u16,,,,,
+temperature,400004,i16,,0.1,,°C,
+energy,400005,u32,CDAB,,,Wh,
+flow,400007,f32,CDAB,,,m3/h,
+balance,400011,i64,,,,,
+ratio,400015,f64,,,,,
+label,400020,string:4,,,,,
+alarm,400030.04,bool,,,,,
+pump,000001,,,,,,
+door,100001,,,,,,r
+inlet,300001,i16,,0.5,-10,°C,r
+";
+
+const MAP_YAML: &str = "\
+modbus:
+  - name: plant
+    type: tcp
+    host: 127.0.0.1
+    port: 502
+    sensors:
+      - {name: voltage, address: 0, data_type: float32, unit_of_measurement: V, slave: 17}
+      - {name: count, address: 2, data_type: uint16}
+      - {name: temperature, address: 3, data_type: int16, scale: 0.1, unit_of_measurement: °C}
+      - {name: energy, address: 4, data_type: uint32, swap: word, unit_of_measurement: Wh}
+      - {name: flow, address: 6, data_type: float32, swap: word, unit_of_measurement: m3/h}
+      - {name: balance, address: 10, data_type: int64}
+      - {name: ratio, address: 14, data_type: float64}
+      - {name: label, address: 19, data_type: string, count: 4}
+      - name: inlet
+        address: 0
+        input_type: input
+        data_type: int16
+        scale: 0.5
+        offset: -10
+        unit_of_measurement: °C
+    binary_sensors:
+      - {name: door, address: 0, input_type: discrete_input}
+    switches:
+      - {name: pump, address: 0, write_type: coil}
+";
+
+fn files(dir: &tempfile::TempDir, entries: &[(&str, &str)]) -> Vec<String> {
+    entries
+        .iter()
+        .map(|(name, text)| {
+            let path = dir.path().join(name);
+            std::fs::write(&path, text).unwrap();
+            path.display().to_string()
+        })
+        .collect()
+}
+
+fn run(port: &[String], args: &[&str]) -> (i32, String, String) {
+    let output = mbtool().args(port).args(args).output().unwrap();
+    (
+        output.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&output.stdout).into_owned(),
+        String::from_utf8_lossy(&output.stderr).into_owned(),
+    )
+}
+
+#[test]
+fn every_kind_of_point_reads_the_same_from_csv_and_from_home_assistant_yaml() {
+    let dir = tempfile::tempdir().unwrap();
+    let paths = files(
+        &dir,
+        &[
+            ("device.txt", DEVICE),
+            ("map.csv", MAP_CSV),
+            ("ha.yaml", MAP_YAML),
+        ],
+    );
+    let (_device, port, _) = serve_tcp(&["--data", &paths[0]]);
+    let (code, values, stderr) = run(&port, &["read", "17", "--map", &paths[1], "-o", "values"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(
+        values,
+        "voltage=230.5\ncount=1234\ntemperature=-21.5\nenergy=70000\nflow=2.5\nbalance=-5\n\
+         ratio=0.125\nlabel=PUMP 1\nalarm=1\npump=1\ndoor=1\ninlet=12.5\n"
+    );
+    // The same points from the Home Assistant configuration (no bit of a register there).
+    let (code, yaml_values, stderr) =
+        run(&port, &["read", "17", "--map", &paths[2], "-o", "values"]);
+    assert_eq!(code, 0, "{stderr}");
+    let without_alarm: String = values
+        .lines()
+        .filter(|l| !l.starts_with("alarm="))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let mut yaml_sorted: Vec<&str> = yaml_values.lines().collect();
+    let mut csv_sorted: Vec<&str> = without_alarm.lines().collect();
+    yaml_sorted.sort_unstable();
+    csv_sorted.sort_unstable();
+    assert_eq!(yaml_sorted, csv_sorted);
+
+    let (_, json, _) = run(
+        &port,
+        &[
+            "read", "17", "--map", &paths[1], "--json", "voltage", "energy",
+        ],
+    );
+    let json: serde_json::Value = serde_json::from_str(json.trim()).unwrap();
+    assert_eq!(
+        json,
+        serde_json::json!({"slave": 17, "points": [
+            {"name": "voltage", "ref": "400001", "value": 230.5, "unit": "V", "raw": [17254, 32768]},
+            {"name": "energy", "ref": "400005", "value": 70000, "unit": "Wh", "raw": [4464, 1]},
+        ]})
+    );
+    let (_, csv, _) = run(
+        &port,
+        &[
+            "read",
+            "17",
+            "--map",
+            &paths[1],
+            "-o",
+            "csv",
+            "temperature",
+            "label",
+        ],
+    );
+    assert_eq!(
+        csv,
+        "name,ref,value,unit,raw\ntemperature,400004,-21.5,°C,FF29\nlabel,400020,PUMP 1,,5055 4D50 2031 0000\n"
+    );
+    let (_, table, _) = run(&port, &["read", "17", "--map", &paths[1], "inlet"]);
+    assert!(
+        table.contains("│ inlet ┆ 300001 ┆ 12.5 °C ┆ 002D │"),
+        "{table}"
+    );
+}
+
+/// How many requests `read --map` sends for `refs`, counted in its `-v` trace.
+fn requests_for(
+    port: &[String],
+    dir: &tempfile::TempDir,
+    refs: &[&str],
+    max: Option<&str>,
+) -> usize {
+    let map: String = refs
+        .iter()
+        .enumerate()
+        .map(|(i, r)| format!("p{i},{r}\n"))
+        .collect();
+    let path = files(dir, &[("points.csv", &format!("name,ref\n{map}"))]).remove(0);
+    let mut args = vec!["read", "17", "--map", &path, "-v"];
+    if let Some(max) = max {
+        args.extend(["--max-per-request", max]);
+    }
+    let (code, _, trace) = run(port, &args);
+    assert_eq!(code, 0, "{trace}");
+    trace.lines().filter(|line| line.contains("] > ")).count()
+}
+
+#[test]
+fn points_are_grouped_as_the_manuals_driver_groups_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_device, port, _) = serve_tcp(&[]);
+    let first_five = ["400001", "400002", "400003", "400004", "400005", "400120"];
+    assert_eq!(requests_for(&port, &dir, &first_five, Some("120")), 1);
+    assert_eq!(requests_for(&port, &dir, &first_five, Some("3")), 3);
+    assert_eq!(requests_for(&port, &dir, &first_five, None), 2);
+    let spread = ["400001", "400010", "400011", "400021", "400031", "400041"];
+    assert_eq!(requests_for(&port, &dir, &spread, Some("10")), 5);
+    assert_eq!(requests_for(&port, &dir, &spread, None), 5);
+    // encode prints the frames a map read sends: here the one request of 120 registers.
+    let map = files(&dir, &[("five.csv", "name,ref
+a,400001
+b,400005
+c,400120
+")]).remove(0);
+    let (code, frames, _) = run(&[], &["encode", "read", "17", "--map", &map, "--max-per-request", "120"]);
+    assert_eq!((code, frames.as_str()), (0, "11 03 00 00 00 78 47 78\n"));
+}
+
+#[test]
+fn a_request_across_holes_that_is_refused_is_read_again_run_by_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let paths = files(
+        &dir,
+        &[
+            ("device.txt", "400001 = 7\n400010-400011 = 8 9\n"),
+            ("map.csv", "name,ref\na,400001\nb,400010\nc,400011\n"),
+        ],
+    );
+    let (_device, port, _) = serve_tcp(&["--data", &paths[0]]);
+    let (code, values, stderr) = run(
+        &port,
+        &[
+            "read",
+            "17",
+            "--map",
+            &paths[1],
+            "--max-per-request",
+            "20",
+            "-o",
+            "values",
+        ],
+    );
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(values, "a=7\nb=8\nc=9\n");
+    assert_eq!(
+        stderr,
+        "mbtool: a request spanning addresses no point names was refused; its points were read again one run at a time\n"
+    );
+}
+
+#[test]
+fn writes_by_name_round_trip_every_writable_kind() {
+    let dir = tempfile::tempdir().unwrap();
+    let paths = files(&dir, &[("device.txt", DEVICE), ("map.csv", MAP_CSV)]);
+    let (_device, port, _) = serve_tcp(&["--data", &paths[0]]);
+    let (code, said, stderr) = run(
+        &port,
+        &[
+            "write",
+            "17",
+            "--map",
+            &paths[1],
+            "voltage=231.25",
+            "count=4321",
+            "temperature=-3.5",
+            "energy=123456",
+            "flow=0.75",
+            "balance=-9000000000",
+            "ratio=1e-3",
+            "label=AB C",
+            "alarm=0",
+            "pump=off",
+        ],
+    );
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        said.starts_with("wrote voltage = 231.25 V (400001)\n"),
+        "{said}"
+    );
+    let (_, values, _) = run(&port, &["read", "17", "--map", &paths[1], "-o", "values"]);
+    assert_eq!(
+        values,
+        "voltage=231.25\ncount=4321\ntemperature=-3.5\nenergy=123456\nflow=0.75\n\
+         balance=-9000000000\nratio=0.001\nlabel=AB C\nalarm=0\npump=0\ndoor=1\ninlet=12.5\n"
+    );
+}
+
+#[test]
+fn a_bad_write_by_name_is_refused_before_anything_is_sent() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = files(&dir, &[("map.csv", MAP_CSV)]).remove(0);
+    // Nothing listens there: a command that got as far as connecting would say so.
+    let port = vec!["--port".to_string(), "127.0.0.1:9".to_string()];
+    for (words, says) in [
+        ("count=70000", "count: 70000 does not fit in u16"),
+        ("door=1", "door (100001) is read-only in the map"),
+        ("inlet=20", "inlet (300001) is read-only in the map"),
+        (
+            "label=TOO LONG A NAME",
+            "takes 8 registers; the point holds 4",
+        ),
+        (
+            "voltag=1",
+            "has no point named 'voltag': did you mean 'voltage'?",
+        ),
+        ("voltage", "'voltage': give NAME=VALUE"),
+    ] {
+        let (code, _, stderr) = run(&port, &["write", "17", "--map", &path, words]);
+        assert_eq!(code, 2, "{words}: {stderr}");
+        assert!(stderr.contains(says), "{words}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    }
+}
+
+#[test]
+fn every_malformed_map_names_its_file_and_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let port = vec!["--port".to_string(), "127.0.0.1:9".to_string()];
+    for (name, text, says) in [
+        (
+            "dup.csv",
+            "name,ref\na,400001\na,400002\n",
+            ":3: the name 'a' is taken already, on line 2",
+        ),
+        (
+            "overlap.csv",
+            "name,ref,type\na,400001,u32\nb,400002\n",
+            ":3: b (400002) overlaps a (400001, line 2)",
+        ),
+        (
+            "wide.csv",
+            "name,ref,type\nc,000001,f32\n",
+            ":2: type f32 does not fit in a coil",
+        ),
+        (
+            "column.csv",
+            "name,ref,colour\n",
+            ":1: unknown column 'colour'",
+        ),
+        (
+            "line.csv",
+            "name,ref\nd,4000001\n",
+            ":2: '4000001' is not a Modicon reference",
+        ),
+        (
+            "bad.yaml",
+            "modbus:\n  - sensors:\n      - {name: e, address: 0, data_type: int12}\n",
+            ":3: e: data_type 'int12'",
+        ),
+    ] {
+        let path = files(&dir, &[(name, text)]).remove(0);
+        let (code, _, stderr) = run(&port, &["read", "17", "--map", &path]);
+        assert_eq!(code, 2, "{name}: {stderr}");
+        assert!(
+            stderr.starts_with(&format!("mbtool: {path}")),
+            "{name}: {stderr}"
+        );
+        assert!(stderr.contains(says), "{name}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    }
+}
