@@ -164,10 +164,10 @@ fn each_command_describes_its_own_arguments() {
         ("read-coils", "000020", "400108"),
         ("read-inputs", "100197", "400108"),
         ("read-input-registers", "300009", "400108"),
-        ("read", "<REFERENCE>", "0x6B"),
+        ("read", "[REFERENCE]", "0x6B"),
         ("write-registers", "--type", "coil"),
         ("write-coils", "10110", "--type"),
-        ("write", "<REFERENCE>", "0x6B"),
+        ("write", "[REFERENCE]", "0x6B"),
         ("encode read-coils", "000020", "400108"),
     ] {
         let text = arguments(command);
