@@ -10,7 +10,7 @@ use mbtool::error::Error;
 use mbtool::output::{self, map::MapWriter};
 use mbtool_core::codec::Request;
 use mbtool_core::master::map::{groups, read_points, write_request, Group};
-use mbtool_core::master::plan::parse_slave;
+use mbtool_core::master::plan::{parse_slave, Plan};
 use mbtool_core::model::map::{load, Point, RegisterMap};
 
 /// A map read or write, checked whole before anything is sent.
@@ -142,10 +142,24 @@ pub fn read(cli: &Cli, plan: &MapPlan, connection: &mut Connection) -> Result<u8
 pub fn write(cli: &Cli, writes: &[MapWrite], connection: &mut Connection) -> Result<u8> {
     let mut out = output::stdout();
     for write in writes {
-        connection
+        // Through a plan of its own, so that a bit is written as every bit is (22, or 03
+        // and 06 where the slave lacks 22).
+        let plan = Plan {
+            slave: write.slave,
+            requests: vec![write.request.clone()],
+            reads: None,
+            bits: None,
+        };
+        let written = connection
             .master
-            .answer(write.slave, &write.request)
+            .write(&plan)
             .map_err(|e| connection.explain(cli, Error::from(e)))?;
+        if written.mask_write_emulated {
+            mbtool::note!(
+                "mbtool: slave {} does not do function 22 (mask write register): the register was read (03) and written whole (06)",
+                write.slave
+            );
+        }
         writeln!(out, "wrote {}", write.said)?;
     }
     out.flush()?;

@@ -192,12 +192,30 @@ fn points_are_grouped_as_the_manuals_driver_groups_them() {
     assert_eq!(requests_for(&port, &dir, &spread, Some("10")), 5);
     assert_eq!(requests_for(&port, &dir, &spread, None), 5);
     // encode prints the frames a map read sends: here the one request of 120 registers.
-    let map = files(&dir, &[("five.csv", "name,ref
+    let map = files(
+        &dir,
+        &[(
+            "five.csv",
+            "name,ref
 a,400001
 b,400005
 c,400120
-")]).remove(0);
-    let (code, frames, _) = run(&[], &["encode", "read", "17", "--map", &map, "--max-per-request", "120"]);
+",
+        )],
+    )
+    .remove(0);
+    let (code, frames, _) = run(
+        &[],
+        &[
+            "encode",
+            "read",
+            "17",
+            "--map",
+            &map,
+            "--max-per-request",
+            "120",
+        ],
+    );
     assert_eq!((code, frames.as_str()), (0, "11 03 00 00 00 78 47 78\n"));
 }
 

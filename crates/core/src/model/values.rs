@@ -505,6 +505,23 @@ mod tests {
     }
 
     #[test]
+    fn a_string_in_swapped_bytes_and_padded_with_spaces() {
+        // "PUMP 1  " as a device that stores each register's bytes swapped sends it.
+        let registers: Vec<u16> = [*b"UP", *b"PM", *b"1 ", *b"  "]
+            .iter()
+            .map(|pair| u16::from_be_bytes(*pair))
+            .collect();
+        assert_eq!(
+            text(&registers, ByteOrder::Badc),
+            Value::Text("PUMP 1".into())
+        );
+        assert_eq!(
+            ValueType::Ascii.parse("PUMP 1", ByteOrder::Badc),
+            Ok(registers[..3].to_vec())
+        );
+    }
+
+    #[test]
     fn device_text_is_escaped() {
         assert_eq!(escape_text(b"PLC\x1b[2J\n"), "PLC\\x1B[2J\\n");
     }
