@@ -2444,7 +2444,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__restore)
-            opts="-p -m -b -v -h -V --dry-run --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --verbose --help --version"
+            opts="-p -m -b -v -h -V --dry-run --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --verbose --max-per-request --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2495,6 +2495,10 @@ _mbtool() {
                     return 0
                     ;;
                 --frame-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --max-per-request)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

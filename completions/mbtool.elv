@@ -574,6 +574,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --timeout 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]'
             cand --retries 'Retries after a timeout or a bad answer (never after an exception)'
             cand --frame-gap 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none'
+            cand --max-per-request 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows'
             cand --dry-run 'Print the frames that would be sent, and send nothing'
             cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
             cand --verbose 'Print every frame sent and received, in hex with a timestamp, on stderr'

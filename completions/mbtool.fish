@@ -667,6 +667,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l stop-bits -d '
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l dry-run -d 'Print the frames that would be sent, and send nothing'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s h -l help -d 'Print help (see more with \'--help\')'

@@ -365,8 +365,7 @@ stderr. Exit status 0 when a slave was found, 3 when none answered.";
 const DUMP_ABOUT: &str = "\
 Read ranges of a device's tables (400001-400200 000001-000064) in as few requests as the \
 limits allow (--max-per-request lowers them) and write them as a data file that serve \
---data and restore read: one 'REF = values' line per run of addresses, at most 16 values a \
-line, after a comment saying which slave, when, and through which port. The file goes to \
+--data and restore read: one 'REF = values' line per run of addresses, after a comment saying which slave, when, and through which port. The file goes to \
 --output FILE, or to standard output.
 
 A request that the device answers with exception 02 is split in halves, down to single \
@@ -1007,7 +1006,7 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
         ["info"] => &[LINE, MASTER, FORMAT],
         // dump's --output is the file it writes.
         ["dump"] => &[LINE, MASTER, SPLIT, &["output"]],
-        ["restore"] => &[LINE, MASTER],
+        ["restore"] => &[LINE, MASTER, SPLIT],
         // A scan has no retries: each id that answers is asked once more instead.
         ["scan"] => &[LINE, &["timeout", "frame_gap", "verbose"], FORMAT],
         ["diag"] => &[LINE, MASTER, FORMAT, &["poll_count"]],

@@ -4,10 +4,12 @@ use std::io::Write;
 
 use anyhow::{Context, Result};
 
-use mbtool::cli::{Cli, DumpArgs};
+use clap::ValueEnum;
+
+use mbtool::cli::{Cli, DumpArgs, OutputFormat};
 use mbtool::connection;
 use mbtool::error::Error;
-use mbtool::output;
+use mbtool::output::{self, plural};
 use mbtool_core::codec::ExceptionCode;
 use mbtool_core::master::backup::{self, Range};
 use mbtool_core::master::run::RunError;
@@ -15,6 +17,15 @@ use mbtool_core::model::address::{parse_reference_span, AddressError};
 use mbtool_core::slave::datafile;
 
 pub fn run(cli: &Cli, args: &DumpArgs) -> Result<u8> {
+    // -o names the file dump writes; a format name there is a slip, not a file wanted.
+    if let Some(name) = cli.output.output.as_deref() {
+        if OutputFormat::from_str(name, true).is_ok() {
+            return Err(Error::usage(format!(
+                "dump writes a data file: -o {name} would name the file '{name}'; give ./{name} if that is meant"
+            ))
+            .into());
+        }
+    }
     let ranges = args
         .ranges
         .iter()
@@ -75,8 +86,8 @@ pub fn run(cli: &Cli, args: &DumpArgs) -> Result<u8> {
         }
     };
     mbtool::note!(
-        "mbtool: dumped {values} addresses of slave {slave} in {} requests to {target}",
-        dump.requests
+        "mbtool: dumped {values} addresses of slave {slave} in {} to {target}",
+        plural(dump.requests as usize, "request")
     );
     Ok(0)
 }

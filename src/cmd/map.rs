@@ -11,7 +11,8 @@ use mbtool::output::{self, map::MapWriter};
 use mbtool_core::codec::Request;
 use mbtool_core::master::map::{groups, read_points, write_request, Group};
 use mbtool_core::master::plan::{parse_slave, Plan};
-use mbtool_core::model::map::{load, Point, RegisterMap};
+use mbtool_core::model::address::Access;
+use mbtool_core::model::map::{load, MapError, Point, RegisterMap};
 
 /// A map read or write, checked whole before anything is sent.
 pub struct MapPlan {
@@ -26,21 +27,31 @@ pub fn plan(
     slave: &str,
     names: &[&str],
     tcp: bool,
+    access: Access,
 ) -> Result<MapPlan, Error> {
-    let map = load(path).map_err(|e| match e.line {
-        0 => Error::Io(std::io::Error::other(e.to_string())),
-        _ => Error::usage(e.to_string()),
+    let map = load(path).map_err(|e| match e {
+        MapError::Unreadable { .. } => Error::Io(std::io::Error::other(e.to_string())),
+        MapError::At { .. } => Error::usage(e.to_string()),
     })?;
     if cli.poll.poll.is_some() {
         return Err(Error::usage(
-            "--poll takes a REFERENCE; a map is read once (watch will show a map live)",
+            "--poll repeats the read of a REFERENCE; a map is read once",
         ));
     }
-    let slave = parse_slave(slave, true, tcp)?;
-    Ok(MapPlan {
-        slave,
-        points: pick(&map, names, path)?,
-    })
+    // A read goes to one slave; only a write may broadcast.
+    let slave = parse_slave(slave, access == Access::WriteOne, tcp)?;
+    let points = pick(&map, names, path)?;
+    if let Some(max) = cli.data.max_per_request {
+        if let Some(wide) = points.iter().find(|p| p.kind.width() > max) {
+            return Err(Error::usage(format!(
+                "--max-per-request {max} is less than {} takes ({} registers): give at least {}",
+                wide.name,
+                wide.kind.width(),
+                wide.kind.width()
+            )));
+        }
+    }
+    Ok(MapPlan { slave, points })
 }
 
 fn pick(map: &RegisterMap, names: &[&str], path: &std::path::Path) -> Result<Vec<Point>, Error> {
@@ -83,6 +94,11 @@ impl MapPlan {
         assignments: &[&str],
         path: &std::path::Path,
     ) -> Result<Vec<MapWrite>, Error> {
+        if assignments.is_empty() {
+            return Err(Error::usage(
+                "write --map needs NAME=VALUE, as setpoint=21.5",
+            ));
+        }
         assignments
             .iter()
             .map(|word| {
@@ -155,10 +171,7 @@ pub fn write(cli: &Cli, writes: &[MapWrite], connection: &mut Connection) -> Res
             .write(&plan)
             .map_err(|e| connection.explain(cli, Error::from(e)))?;
         if written.mask_write_emulated {
-            mbtool::note!(
-                "mbtool: slave {} does not do function 22 (mask write register): the register was read (03) and written whole (06)",
-                write.slave
-            );
+            super::request::note_mask_write_emulated(write.slave, &write.said);
         }
         writeln!(out, "wrote {}", write.said)?;
     }

@@ -17,7 +17,7 @@ use mbtool_core::describe::describe_frame;
 use mbtool_core::master::plan::Plan;
 use mbtool_core::master::run::PollStats;
 use mbtool_core::master::{Master, Reply, Traffic};
-use mbtool_core::model::address::{bit_reference, reference, Table};
+use mbtool_core::model::address::{bit_reference, reference, Access, Table};
 
 use super::map::{MapPlan, MapWrite};
 
@@ -66,7 +66,8 @@ pub fn by_map(cli: &Cli, request: &RequestCommand) -> Result<Option<ByMap>> {
     match request {
         RequestCommand::Read(args) => match &args.map {
             Some(path) => {
-                let plan = super::map::plan(cli, path, &args.slave, &args.point_names(), tcp())?;
+                let names = args.point_names();
+                let plan = super::map::plan(cli, path, &args.slave, &names, tcp(), Access::Read)?;
                 Ok(Some(ByMap::Read(plan)))
             }
             None if !args.names.is_empty() => Err(Error::usage(format!(
@@ -82,7 +83,7 @@ pub fn by_map(cli: &Cli, request: &RequestCommand) -> Result<Option<ByMap>> {
             )
             .into()),
             Some(path) => {
-                let plan = super::map::plan(cli, path, &args.slave, &[], tcp())?;
+                let plan = super::map::plan(cli, path, &args.slave, &[], tcp(), Access::WriteOne)?;
                 Ok(Some(ByMap::Write(plan.writes(&args.assignments(), path)?)))
             }
             None => Ok(None),
@@ -117,6 +118,14 @@ impl ByMap {
                 .collect(),
         }
     }
+}
+
+/// Says that a bit was written without function 22.
+pub fn note_mask_write_emulated(slave: u8, what: &str) {
+    mbtool::note!(
+        "mbtool: slave {slave} does not do function 22 (mask write register): {what} was set by \
+         reading the register (03) and writing it whole (06)"
+    );
 }
 
 /// `-v`: each frame on stderr with the seconds since the start.
@@ -210,11 +219,7 @@ fn writes(cli: &Cli, master: &mut Master, plan: &Plan, out: &mut Box<dyn Write>)
         _ => reference(table, address),
     };
     if written.mask_write_emulated {
-        mbtool::note!(
-            "mbtool: slave {} does not do function 22 (mask write register): {reference} was \
-             set by reading the register (03) and writing it whole (06)",
-            plan.slave
-        );
+        note_mask_write_emulated(plan.slave, &reference);
     }
     let done = WriteDone {
         slave: plan.slave,

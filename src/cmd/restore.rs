@@ -6,7 +6,9 @@ use anyhow::Result;
 
 use mbtool::cli::{Cli, OutputFormat, RestoreArgs};
 use mbtool::error::Error;
-use mbtool::output::{self, backup::difference_text, backup::range_text, encode::write_frame};
+use mbtool::output::{
+    self, backup::difference_text, backup::range_text, encode::write_frame, plural,
+};
 use mbtool_core::codec::{Frame, Mode, Pdu};
 use mbtool_core::master::backup::{restore_requests, verify};
 use mbtool_core::master::plan::parse_slave;
@@ -26,7 +28,7 @@ pub fn run(cli: &Cli, args: &RestoreArgs) -> Result<u8> {
             entry.table.name()
         );
     }
-    let requests = restore_requests(&entries);
+    let requests = restore_requests(&entries, cli.data.max_per_request);
     if requests.is_empty() {
         return Err(Error::usage(format!(
             "{file} holds no coils or holding registers to write"
@@ -71,14 +73,14 @@ pub fn run(cli: &Cli, args: &RestoreArgs) -> Result<u8> {
     out.flush()?;
     if differences.is_empty() {
         mbtool::note!(
-            "mbtool: wrote {written} values to slave {slave} in {} requests; every one reads back as written",
-            requests.len()
+            "mbtool: wrote {written} values to slave {slave} in {}; every one reads back as written",
+            plural(requests.len(), "request")
         );
         Ok(0)
     } else {
         mbtool::note!(
-            "mbtool: wrote {written} values to slave {slave} in {} requests; {} read back differently",
-            requests.len(),
+            "mbtool: wrote {written} values to slave {slave} in {}; {} read back differently",
+            plural(requests.len(), "request"),
             differences.len()
         );
         Ok(4)

@@ -180,16 +180,10 @@ fn summary(report: &ScanReport, place: &Where, elapsed: std::time::Duration) -> 
             format!("{n} {noun} found: {}", groups.join("; "))
         }
     };
-    let tried = match report.settings_tried {
-        1 => "1 setting".to_string(),
-        n => format!("{n} settings"),
-    };
-    let requests = match report.requests {
-        1 => "1 request".to_string(),
-        n => format!("{n} requests"),
-    };
     format!(
-        "{found}; {tried} tried, {requests} in {:.1} s",
+        "{found}; {} tried, {} in {:.1} s",
+        output::plural(report.settings_tried, "setting"),
+        output::plural(report.requests as usize, "request"),
         elapsed.as_secs_f64()
     )
 }

@@ -3,12 +3,32 @@
 
 use std::io::{self, Write};
 
-use serde_json::json;
+use serde::Serialize;
 
 use super::{csv_field, new_table};
 use crate::cli::OutputFormat;
 use mbtool_core::master::map::MapRead;
 use mbtool_core::model::map::Point;
+use mbtool_core::model::values::Value;
+
+/// The keys of CLI.md, in its order.
+#[derive(Serialize)]
+struct JsonMap<'a> {
+    slave: u8,
+    points: Vec<JsonPoint<'a>>,
+}
+
+#[derive(Serialize)]
+struct JsonPoint<'a> {
+    name: &'a str,
+    #[serde(rename = "ref")]
+    reference: String,
+    value: &'a Value,
+    unit: &'a str,
+    raw: &'a [u16],
+    #[serde(skip_serializing_if = "str::is_empty")]
+    description: &'a str,
+}
 
 pub struct MapWriter {
     format: OutputFormat,
@@ -40,18 +60,17 @@ impl MapWriter {
             .filter_map(|value| Some((points.get(value.point)?, value)));
         match self.format {
             OutputFormat::Json => {
-                let points: Vec<serde_json::Value> = rows
-                    .map(|(point, value)| {
-                        json!({
-                            "name": point.name,
-                            "ref": point.reference(),
-                            "value": value.value,
-                            "unit": point.unit,
-                            "raw": value.raw,
-                        })
+                let points = rows
+                    .map(|(point, value)| JsonPoint {
+                        name: &point.name,
+                        reference: point.reference(),
+                        value: &value.value,
+                        unit: &point.unit,
+                        raw: &value.raw,
+                        description: &point.description,
                     })
                     .collect();
-                serde_json::to_writer(&mut *out, &json!({ "slave": slave, "points": points }))?;
+                serde_json::to_writer(&mut *out, &JsonMap { slave, points })?;
                 writeln!(out)
             }
             OutputFormat::Values => {

@@ -121,3 +121,11 @@ pub fn csv_field(text: &str) -> String {
         text.to_string()
     }
 }
+
+/// `1 request`, `3 requests`.
+pub fn plural(count: usize, noun: &str) -> String {
+    match count {
+        1 => format!("1 {noun}"),
+        n => format!("{n} {noun}s"),
+    }
+}

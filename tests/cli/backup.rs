@@ -58,8 +58,7 @@ fn a_dump_serves_as_the_device_holes_included() {
         "400001 = 7 7 7 7 7 7 7 7 7 7\n\
          400020 = 1 2 3 4 5 6\n\
          400040 = 16456 62915\n\
-         000001 = 1 0 1 0 0 0 0 0 0 0 0 0 0 0 0 0\n\
-         000017 = 0 0 0 0\n\
+         000001 = 1 0 1 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n\
          300001 = 9 9 9 9\n"
     );
     assert!(
@@ -226,4 +225,25 @@ fn a_dump_of_nothing_that_exists_is_the_device_saying_02() {
         .output()
         .unwrap();
     assert_eq!(output.status.code(), Some(12), "{output:?}");
+}
+
+#[test]
+fn overlapping_ranges_are_dumped_once_and_dash_o_takes_a_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let plant = data_file(&dir, "plant.txt", PLANT);
+    let (_device, port, _) = serve_tcp(&["--data", &plant]);
+    let output = mbtool()
+        .args(&port)
+        .args(["dump", "17", "400001-400005", "400003-400008"])
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+    assert!(String::from_utf8_lossy(&output.stdout).ends_with("\n400001 = 7 7 7 7 7 7 7 7\n"));
+    let output = mbtool()
+        .args(&port)
+        .args(["dump", "17", "400001", "-o", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("give ./json if that is meant"));
 }

@@ -295,7 +295,14 @@ fn a_bad_write_by_name_is_refused_before_anything_is_sent() {
     // Nothing listens there: a command that got as far as connecting would say so.
     let port = vec!["--port".to_string(), "127.0.0.1:9".to_string()];
     for (words, says) in [
-        ("count=70000", "count: 70000 does not fit in u16"),
+        (
+            "count=70000",
+            "count: 70000 is out of range for this u16 point: give 0 to 65535",
+        ),
+        (
+            "count=-1",
+            "count: -1 is out of range for this u16 point: give 0 to 65535",
+        ),
         ("door=1", "door (100001) is read-only in the map"),
         ("inlet=20", "inlet (300001) is read-only in the map"),
         (
@@ -361,4 +368,82 @@ fn every_malformed_map_names_its_file_and_line() {
         assert!(stderr.contains(says), "{name}: {stderr}");
         assert_eq!(stderr.lines().count(), 1, "{stderr}");
     }
+}
+
+#[test]
+fn every_request_across_holes_that_is_refused_is_read_again() {
+    let dir = tempfile::tempdir().unwrap();
+    let paths = files(
+        &dir,
+        &[
+            (
+                "device.txt",
+                "400001 = 1\n400003 = 3\n400201 = 5\n400203 = 7\n",
+            ),
+            (
+                "map.csv",
+                "\u{feff}name,ref,\na,400001\n,,\nb,400003\nc,400201\nd,400203\n",
+            ),
+        ],
+    );
+    let (_device, port, _) = serve_tcp(&["--data", &paths[0]]);
+    let (code, values, stderr) = run(
+        &port,
+        &[
+            "read",
+            "17",
+            "--map",
+            &paths[1],
+            "--max-per-request",
+            "10",
+            "-o",
+            "values",
+        ],
+    );
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(values, "a=1\nb=3\nc=5\nd=7\n");
+}
+
+#[test]
+fn a_map_is_refused_where_it_cannot_be_what_it_says() {
+    let dir = tempfile::tempdir().unwrap();
+    let paths = files(
+        &dir,
+        &[
+            ("wide.csv", "name,ref,type\nlabel,400001,string:10\n"),
+            ("zero.csv", "name,ref,scale\nx,400001,0\n"),
+            (
+                "bits.csv",
+                "name,ref,type\nstatus,400010,u16\nalarm,400010.03,bool\n",
+            ),
+        ],
+    );
+    let nowhere = vec!["--port".to_string(), "127.0.0.1:9".to_string()];
+    let refused = |args: &[&str], says: &str| {
+        let (code, _, stderr) = run(&nowhere, args);
+        assert_eq!(code, 2, "{args:?}: {stderr}");
+        assert!(stderr.contains(says), "{args:?}: {stderr}");
+    };
+    refused(
+        &["read", "17", "--map", &paths[0], "--max-per-request", "4"],
+        "--max-per-request 4 is less than label takes (10 registers)",
+    );
+    refused(
+        &["read", "17", "--map", &paths[1]],
+        ":2: x: scale 0 would show every value as the offset",
+    );
+    refused(
+        &["write", "17", "--map", &paths[2]],
+        "write --map needs NAME=VALUE",
+    );
+    // A read may not go to slave 0 on a serial line, by map or not.
+    let (code, _, stderr) = run(
+        &["--port".into(), "/dev/nonexistent-tty".into()],
+        &["read", "0", "--map", &paths[2]],
+    );
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("slave 0 is broadcast"), "{stderr}");
+    // A status word and one of its bits are two points.
+    let (code, _, stderr) = run(&["encode".into()], &["read", "17", "--map", &paths[2]]);
+    assert_eq!(code, 0, "{stderr}");
 }

@@ -42,15 +42,6 @@ fn read_limit(table: Table, max: Option<u16>) -> u32 {
     u32::from(max.map_or(limit, |max| max.clamp(1, limit)))
 }
 
-fn read_request(table: Table, address: u16, quantity: u16) -> Request {
-    match table {
-        Table::Coils => Request::ReadCoils { address, quantity },
-        Table::DiscreteInputs => Request::ReadDiscreteInputs { address, quantity },
-        Table::InputRegisters => Request::ReadInputRegisters { address, quantity },
-        Table::HoldingRegisters => Request::ReadHoldingRegisters { address, quantity },
-    }
-}
-
 /// Reads `quantity` addresses of `table` from `address` in one request.
 fn read_one(
     master: &mut Master,
@@ -59,7 +50,7 @@ fn read_one(
     address: u16,
     quantity: u16,
 ) -> Result<ReadData, RunError> {
-    let request = read_request(table, address, quantity);
+    let request = super::plan::read_request(table, address, quantity);
     Ok(match master.answer(slave, &request)? {
         Some(
             Response::ReadHoldingRegisters { values } | Response::ReadInputRegisters { values },
@@ -136,7 +127,41 @@ fn read_splitting(
     Ok(())
 }
 
-/// Reads every range, in requests of at most the protocol's limit (or `max`).
+/// The ranges with those of one table that overlap or meet joined, each address once,
+/// in the order their tables first come.
+fn merged(ranges: &[Range]) -> Vec<Range> {
+    let mut tables: Vec<Table> = Vec::new();
+    for range in ranges {
+        if !tables.contains(&range.table) {
+            tables.push(range.table);
+        }
+    }
+    let mut out: Vec<Range> = Vec::new();
+    for table in tables {
+        let mut of_table: Vec<Range> = ranges
+            .iter()
+            .filter(|r| r.table == table)
+            .copied()
+            .collect();
+        of_table.sort_by_key(|r| r.address);
+        for range in of_table {
+            let end = u32::from(range.address) + range.count;
+            match out.last_mut() {
+                Some(last)
+                    if last.table == table
+                        && u32::from(range.address) <= u32::from(last.address) + last.count =>
+                {
+                    last.count = last.count.max(end - u32::from(last.address));
+                }
+                _ => out.push(range),
+            }
+        }
+    }
+    out
+}
+
+/// Reads every range, overlapping ones once, in requests of at most the protocol's limit
+/// (or `max`).
 pub fn dump(
     master: &mut Master,
     slave: u8,
@@ -144,7 +169,7 @@ pub fn dump(
     max: Option<u16>,
 ) -> Result<Dump, RunError> {
     let mut dump = Dump::default();
-    for range in ranges {
+    for range in &merged(ranges) {
         let limit = read_limit(range.table, max);
         let end = u32::from(range.address) + range.count;
         let mut at = u32::from(range.address);
@@ -166,15 +191,21 @@ pub fn dump(
 }
 
 /// The requests that write the coils and holding registers of `entries`: one value with
-/// 05 or 06, more with 15 or 16 in requests as full as the protocol allows. Entries of
-/// the read-only tables are left out.
-pub fn restore_requests(entries: &[Entry]) -> Vec<Request> {
+/// 05 or 06, more with 15 or 16 in requests as full as the protocol (or `max`) allows.
+/// Entries of the read-only tables are left out.
+pub fn restore_requests(entries: &[Entry], max: Option<u16>) -> Vec<Request> {
+    let bit_limit = usize::from(max.map_or(limits::MAX_WRITE_BITS, |m| {
+        m.clamp(1, limits::MAX_WRITE_BITS)
+    }));
+    let register_limit = usize::from(max.map_or(limits::MAX_WRITE_REGISTERS, |m| {
+        m.clamp(1, limits::MAX_WRITE_REGISTERS)
+    }));
     let mut requests = Vec::new();
     for entry in entries {
         match (&entry.values, entry.table) {
             (ReadData::Bits(bits), Table::Coils) => {
-                for (i, chunk) in bits.chunks(usize::from(limits::MAX_WRITE_BITS)).enumerate() {
-                    let address = entry.address + (i * usize::from(limits::MAX_WRITE_BITS)) as u16;
+                for (i, chunk) in bits.chunks(bit_limit).enumerate() {
+                    let address = entry.address + (i * bit_limit) as u16;
                     requests.push(match chunk {
                         [value] => Request::WriteSingleCoil {
                             address,
@@ -188,9 +219,8 @@ pub fn restore_requests(entries: &[Entry]) -> Vec<Request> {
                 }
             }
             (ReadData::Registers(registers), Table::HoldingRegisters) => {
-                let limit = usize::from(limits::MAX_WRITE_REGISTERS);
-                for (i, chunk) in registers.chunks(limit).enumerate() {
-                    let address = entry.address + (i * limit) as u16;
+                for (i, chunk) in registers.chunks(register_limit).enumerate() {
+                    let address = entry.address + (i * register_limit) as u16;
                     requests.push(match chunk {
                         [value] => Request::WriteSingleRegister {
                             address,

@@ -9,6 +9,7 @@ use super::run::RunError;
 use super::Master;
 use crate::codec::{limits, ExceptionCode, Request, Response};
 use crate::model::address::Table;
+use crate::model::choice::Choice;
 use crate::model::map::{Kind, Point};
 use crate::model::values::{parse_coil, text, Value, ValueType};
 
@@ -30,13 +31,7 @@ pub struct Group {
 impl Group {
     /// The read request.
     pub fn request(&self) -> Request {
-        let (address, quantity) = (self.address, self.quantity);
-        match self.table {
-            Table::Coils => Request::ReadCoils { address, quantity },
-            Table::DiscreteInputs => Request::ReadDiscreteInputs { address, quantity },
-            Table::InputRegisters => Request::ReadInputRegisters { address, quantity },
-            Table::HoldingRegisters => Request::ReadHoldingRegisters { address, quantity },
-        }
+        super::plan::read_request(self.table, self.address, self.quantity)
     }
 }
 
@@ -102,8 +97,6 @@ pub struct PointValue {
 pub struct MapRead {
     /// Every point's value, in the order of the points.
     pub values: Vec<PointValue>,
-    /// How many requests were sent.
-    pub requests: usize,
     /// A request that spanned holes was refused, and its points read again run by run.
     pub fell_back: bool,
 }
@@ -118,10 +111,8 @@ pub fn read_points(
     let mut read = MapRead::default();
     let mut values: Vec<Option<PointValue>> = vec![None; points.len()];
     let mut pending = groups(points, slave, max);
-    let mut runs_only = false;
     while let Some(group) = pending.first().cloned() {
         pending.remove(0);
-        read.requests += 1;
         match master.answer(group.slave, &group.request()) {
             Ok(response) => {
                 let (registers, bits) = match response {
@@ -143,9 +134,9 @@ pub fn read_points(
                     values[*index] = Some(point_value(*index, point, offset, &registers, &bits));
                 }
             }
+            // A run has no holes, so a run refused is an error, never read again.
             Err(RunError::Exception { code, .. })
-                if !runs_only
-                    && has_holes(&group, points)
+                if has_holes(&group, points)
                     && matches!(
                         code,
                         ExceptionCode::ILLEGAL_DATA_ADDRESS | ExceptionCode::GATEWAY_TARGET_FAILED
@@ -162,7 +153,6 @@ pub fn read_points(
                 }
                 runs.append(&mut pending);
                 pending = runs;
-                runs_only = true;
             }
             Err(error) => return Err(error),
         }
@@ -227,9 +217,33 @@ fn scaled(point: &Point, raw: Value) -> Value {
         Value::Float(v) => v,
         Value::Text(_) => return raw,
     };
-    // Twelve significant digits: 1450 x 0.1 shows as 145, not 145.00000000000003.
-    let shown = number * point.scale + point.offset;
-    Value::Float(format!("{shown:.11e}").parse().unwrap_or(shown))
+    Value::Float(round_to(
+        number * point.scale + point.offset,
+        decimals(point),
+    ))
+}
+
+/// The decimals a scaled value has: those of its scale and offset (0.1 has one), so that
+/// 14500 x 0.1 shows as 1450 and not as 1450.0000000000002.
+fn decimals(point: &Point) -> i32 {
+    let of = |x: f64| -> i32 {
+        let text = format!("{x:e}");
+        let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+        let digits =
+            i32::try_from(mantissa.split_once('.').map_or(0, |(_, d)| d.len())).unwrap_or(0);
+        (digits - exponent.parse::<i32>().unwrap_or(0)).max(0)
+    };
+    of(point.scale).max(of(point.offset))
+}
+
+fn round_to(value: f64, decimals: i32) -> f64 {
+    let factor = 10f64.powi(decimals.min(15));
+    let rounded = (value * factor).round() / factor;
+    if rounded.is_finite() {
+        rounded
+    } else {
+        value
+    }
 }
 
 /// The request that writes `text` to `point`, scale and offset taken back out and the
@@ -291,20 +305,47 @@ fn registers_request(address: u16, registers: Vec<u16>) -> Request {
 }
 
 /// The raw value to write for a shown value: (value - offset) / scale, a whole number
-/// for a whole-number type.
+/// for a whole-number type, in the type's range as the map shows it (an unsigned point
+/// takes no negative value).
 fn unscaled(point: &Point, value_type: ValueType, text: &str) -> Result<String, String> {
-    if point.is_unscaled() {
+    let floating = matches!(value_type, ValueType::F32 | ValueType::F64);
+    if floating && point.is_unscaled() {
         return Ok(text.to_string());
     }
-    let shown: f64 = text
-        .trim()
-        .parse()
-        .map_err(|_| format!("'{text}' is not a number"))?;
+    let shown = match crate::model::number::parse_int(text) {
+        Ok(whole) => whole as f64,
+        Err(_) => text
+            .trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| format!("'{text}' is not a number"))?,
+    };
     let raw = (shown - point.offset) / point.scale;
-    Ok(match value_type {
-        ValueType::F32 | ValueType::F64 => raw.to_string(),
-        _ => format!("{}", raw.round() as i128),
-    })
+    if floating {
+        return Ok(raw.to_string());
+    }
+    let (min, max) = value_type.strict_range();
+    let whole = raw.round();
+    if whole < min as f64 || whole > max as f64 {
+        let ends = [
+            min as f64 * point.scale + point.offset,
+            max as f64 * point.scale + point.offset,
+        ];
+        let (low, high) = (ends[0].min(ends[1]), ends[0].max(ends[1]));
+        let unit = if point.unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {}", point.unit)
+        };
+        return Err(format!(
+            "{text}{unit} is out of range for this {} point: give {} to {}",
+            value_type.name(),
+            round_to(low, decimals(point)),
+            round_to(high, decimals(point))
+        ));
+    }
+    Ok(format!("{}", whole as i128))
 }
 
 #[cfg(test)]
@@ -351,8 +392,15 @@ mod tests {
                 value: 615
             })
         );
-        assert!(write_request(&map.points[0], "4000")
-            .unwrap_err()
-            .contains("does not fit in i16"));
+        assert_eq!(
+            write_request(&map.points[0], "4000"),
+            Err("t: 4000 is out of range for this i16 point: give -3316.8 to 3236.7".into())
+        );
+        // An unsigned point takes no negative value, whatever two's complement would allow.
+        let unsigned = parse_csv("m", "name,ref,scale,unit\np,400001,0.1,bar\n").unwrap();
+        assert_eq!(
+            write_request(&unsigned.points[0], "-3"),
+            Err("p: -3 bar is out of range for this u16 point: give 0 to 6553.5".into())
+        );
     }
 }

@@ -298,12 +298,7 @@ fn read_plan(
     let max = per_request(limit, options, width as u16)?;
     let requests = runs(span.address, items, max, width as u16)
         .into_iter()
-        .map(|(address, quantity)| match span.table {
-            Table::Coils => Request::ReadCoils { address, quantity },
-            Table::DiscreteInputs => Request::ReadDiscreteInputs { address, quantity },
-            Table::InputRegisters => Request::ReadInputRegisters { address, quantity },
-            Table::HoldingRegisters => Request::ReadHoldingRegisters { address, quantity },
-        })
+        .map(|(address, quantity)| read_request(span.table, address, quantity))
         .collect();
     Ok(Plan {
         slave,
@@ -335,10 +330,7 @@ fn bit_read_plan(
     let max = per_request(limits::MAX_READ_REGISTERS, options, 1)?;
     let requests = runs(span.address, registers, max, 1)
         .into_iter()
-        .map(|(address, quantity)| match span.table {
-            Table::InputRegisters => Request::ReadInputRegisters { address, quantity },
-            _ => Request::ReadHoldingRegisters { address, quantity },
-        })
+        .map(|(address, quantity)| read_request(span.table, address, quantity))
         .collect();
     Ok(Plan {
         slave,
@@ -381,6 +373,16 @@ fn bit_write_plan(
         reads: None,
         bits: None,
     })
+}
+
+/// The request that reads `quantity` items of `table` from `address`.
+pub fn read_request(table: Table, address: u16, quantity: u16) -> Request {
+    match table {
+        Table::Coils => Request::ReadCoils { address, quantity },
+        Table::DiscreteInputs => Request::ReadDiscreteInputs { address, quantity },
+        Table::InputRegisters => Request::ReadInputRegisters { address, quantity },
+        Table::HoldingRegisters => Request::ReadHoldingRegisters { address, quantity },
+    }
 }
 
 /// Coil values: each on/off/1/0/true/false, or one bit string such as `10110`.

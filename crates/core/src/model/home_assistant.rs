@@ -4,24 +4,13 @@
 use serde::Deserialize;
 
 use super::address::Table;
-use super::map::{check, Kind, MapError, Point, RegisterMap};
+use super::map::{at, check, Kind, MapError, Point, RegisterMap};
 use super::values::{ByteOrder, ValueType};
 
-/// What a file may hold at its top: the configuration with its `modbus:` key, the list of
-/// hubs an `!include` names, or one hub.
+/// The configuration with its `modbus:` key.
 #[derive(Deserialize)]
-#[serde(untagged)]
-enum Root {
-    Configuration { modbus: Hubs },
-    Hubs(Vec<Hub>),
-    Hub(Hub),
-}
-
-#[derive(Deserialize)]
-#[serde(untagged)]
-enum Hubs {
-    Many(Vec<Hub>),
-    One(Hub),
+struct Configuration {
+    modbus: Vec<Hub>,
 }
 
 #[derive(Default, Deserialize)]
@@ -165,25 +154,35 @@ fn point(platform: Platform, entry: Entry, line: usize) -> Result<Point, String>
     })
 }
 
-/// Reads a Home Assistant `modbus:` configuration; `file` names it in messages.
+/// Reads a Home Assistant `modbus:` configuration; `file` names it in messages. The file
+/// may hold the configuration with its `modbus:` key, the list of hubs an `!include`
+/// names, or one hub; which it is is told by its first line, so that a mistake in it is
+/// reported rather than read as an empty hub.
 pub fn parse(file: &str, text: &str) -> Result<RegisterMap, MapError> {
-    let root: Root = serde_saphyr::from_str(text).map_err(|e| MapError {
-        file: file.to_string(),
-        line: 1,
-        error: format!(
-            "not a Home Assistant modbus configuration: {}",
-            e.to_string().lines().next().unwrap_or_default()
-        ),
-    })?;
-    let hubs = match root {
-        Root::Configuration {
-            modbus: Hubs::Many(hubs),
-        }
-        | Root::Hubs(hubs) => hubs,
-        Root::Configuration {
-            modbus: Hubs::One(hub),
-        }
-        | Root::Hub(hub) => vec![hub],
+    let first = text
+        .lines()
+        .map(str::trim_end)
+        .find(|line| !line.trim().is_empty() && !line.trim_start().starts_with('#'))
+        .unwrap_or_default();
+    let unreadable = |e: serde_saphyr::Error| {
+        let message = e.to_string();
+        at(
+            file,
+            1,
+            format!(
+                "not a Home Assistant modbus configuration: {}",
+                message.lines().next().unwrap_or_default()
+            ),
+        )
+    };
+    let hubs: Vec<Hub> = if text.lines().any(|line| line.starts_with("modbus:")) {
+        serde_saphyr::from_str::<Configuration>(text)
+            .map_err(unreadable)?
+            .modbus
+    } else if first.starts_with('-') {
+        serde_saphyr::from_str(text).map_err(unreadable)?
+    } else {
+        vec![serde_saphyr::from_str(text).map_err(unreadable)?]
     };
     let mut map = RegisterMap::default();
     for hub in hubs {
@@ -197,11 +196,8 @@ pub fn parse(file: &str, text: &str) -> Result<RegisterMap, MapError> {
             for entry in entries {
                 let line = line_of(text, &entry.name);
                 let name = entry.name.clone();
-                let point = point(platform, entry, line).map_err(|error| MapError {
-                    file: file.to_string(),
-                    line,
-                    error: format!("{name}: {error}"),
-                })?;
+                let point = point(platform, entry, line)
+                    .map_err(|error| at(file, line, format!("{name}: {error}")))?;
                 map.points.push(point);
             }
         }
@@ -276,5 +272,15 @@ modbus:
             "ha.yaml:8: voltage: swap 'sideways': give none, byte, word or word_byte"
         );
         assert!(parse("ha.yaml", "- [1, 2").is_err());
+        // An entry without its address, or a hub that names no point, is no map.
+        let without_address =
+            "modbus:\n  - name: h\n    sensors:\n      - name: aa\n        slave: 17\n";
+        assert!(parse("ha.yaml", without_address).is_err());
+        assert_eq!(
+            parse("ha.yaml", "name: h\ntype: tcp\n")
+                .unwrap_err()
+                .to_string(),
+            "ha.yaml:1: the map names no point"
+        );
     }
 }

@@ -101,22 +101,33 @@ pub struct RegisterMap {
     pub points: Vec<Point>,
 }
 
-/// Why a map cannot be used: the file, the line, and what is wrong there.
+/// Why a map cannot be used.
 #[derive(Clone, Debug, Error, PartialEq, Eq)]
-#[error("{file}:{line}: {error}")]
-pub struct MapError {
-    /// The file as named.
-    pub file: String,
-    /// The line (1-based; 0 for the file as a whole).
-    pub line: usize,
-    /// What is wrong.
-    pub error: String,
+pub enum MapError {
+    /// The file cannot be read.
+    #[error("{file}: cannot read it: {error}")]
+    Unreadable {
+        /// The file as named.
+        file: String,
+        /// Why.
+        error: String,
+    },
+    /// What is wrong on a line of it.
+    #[error("{file}:{line}: {error}")]
+    At {
+        /// The file as named.
+        file: String,
+        /// The line, 1-based.
+        line: usize,
+        /// What is wrong.
+        error: String,
+    },
 }
 
-fn at(file: &str, line: usize, error: impl fmt::Display) -> MapError {
-    MapError {
+pub(super) fn at(file: &str, line: usize, error: impl fmt::Display) -> MapError {
+    MapError::At {
         file: file.to_string(),
-        line,
+        line: line.max(1),
         error: error.to_string(),
     }
 }
@@ -137,11 +148,11 @@ const COLUMNS: [&str; 10] = [
 
 /// The fields of one line of a CSV map, honouring double quotes (`"a, b"`, `""`).
 fn csv_fields(line: &str) -> Result<Vec<String>, String> {
-    let mut fields = vec![String::new()];
+    let mut fields = Vec::new();
+    let mut field = String::new();
     let mut quoted = false;
     let mut chars = line.chars().peekable();
     while let Some(c) = chars.next() {
-        let field = fields.last_mut().ok_or("empty line")?;
         match (c, quoted) {
             ('"', true) if chars.peek() == Some(&'"') => {
                 chars.next();
@@ -152,13 +163,14 @@ fn csv_fields(line: &str) -> Result<Vec<String>, String> {
                 field.clear();
                 quoted = true;
             }
-            (',', false) => fields.push(String::new()),
+            (',', false) => fields.push(std::mem::take(&mut field)),
             (c, _) => field.push(c),
         }
     }
     if quoted {
         return Err("a quoted field is not closed".into());
     }
+    fields.push(field);
     Ok(fields.into_iter().map(|f| f.trim().to_string()).collect())
 }
 
@@ -282,7 +294,14 @@ fn csv_point(columns: &[usize], fields: &[String], line: usize) -> Result<Point,
         bit,
         kind,
         order,
-        scale: number(field("scale"), "scale", 1.0)?,
+        scale: match number(field("scale"), "scale", 1.0)? {
+            0.0 => {
+                return Err(format!(
+                    "{name}: scale 0 would show every value as the offset"
+                ))
+            }
+            scale => scale,
+        },
         offset: number(field("offset"), "offset", 0.0)?,
         unit: field("unit").to_string(),
         writable,
@@ -295,20 +314,28 @@ fn csv_point(columns: &[usize], fields: &[String], line: usize) -> Result<Point,
 /// Reads a CSV map: a header row naming the columns (in any order, any case), then one
 /// point a line; `#` starts a comment line. `file` names the map in messages.
 pub fn parse_csv(file: &str, text: &str) -> Result<RegisterMap, MapError> {
+    // A spreadsheet's CSV may start with a byte order mark, and have rows of commas only.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text
         .lines()
         .enumerate()
         .map(|(i, line)| (i + 1, line.trim()))
-        .filter(|(_, line)| !line.is_empty() && !line.starts_with('#'));
+        .filter(|(_, line)| {
+            !line.starts_with('#') && !line.chars().all(|c| c == ',' || c.is_whitespace())
+        });
     let (header_line, header) = lines.next().ok_or_else(|| {
         at(
             file,
-            0,
+            1,
             "no header row: the first line names the columns (name,ref,type,...)",
         )
     })?;
+    let mut header = csv_fields(header).map_err(|e| at(file, header_line, e))?;
+    while header.last().is_some_and(String::is_empty) {
+        header.pop();
+    }
     let mut columns = Vec::new();
-    for name in csv_fields(header).map_err(|e| at(file, header_line, e))? {
+    for name in header {
         let column = COLUMNS
             .iter()
             .position(|c| c.eq_ignore_ascii_case(&name))
@@ -346,7 +373,10 @@ pub fn parse_csv(file: &str, text: &str) -> Result<RegisterMap, MapError> {
     }
     let mut map = RegisterMap::default();
     for (number, line) in lines {
-        let fields = csv_fields(line).map_err(|e| at(file, number, e))?;
+        let mut fields = csv_fields(line).map_err(|e| at(file, number, e))?;
+        while fields.len() > columns.len() && fields.last().is_some_and(String::is_empty) {
+            fields.pop();
+        }
         let point = csv_point(&columns, &fields, number).map_err(|e| at(file, number, e))?;
         map.points.push(point);
     }
@@ -356,8 +386,10 @@ pub fn parse_csv(file: &str, text: &str) -> Result<RegisterMap, MapError> {
 /// Reads the map at `path`: Home Assistant YAML for a `.yaml` or `.yml` file, CSV otherwise.
 pub fn load(path: &std::path::Path) -> Result<RegisterMap, MapError> {
     let file = path.display().to_string();
-    let text =
-        std::fs::read_to_string(path).map_err(|e| at(&file, 0, format!("cannot read it: {e}")))?;
+    let text = std::fs::read_to_string(path).map_err(|e| MapError::Unreadable {
+        file: file.clone(),
+        error: e.to_string(),
+    })?;
     let yaml = path
         .extension()
         .is_some_and(|ext| ext.eq_ignore_ascii_case("yaml") || ext.eq_ignore_ascii_case("yml"));
@@ -371,6 +403,9 @@ pub fn load(path: &std::path::Path) -> Result<RegisterMap, MapError> {
 /// Checks a map as a whole: names unique, no two points on the same addresses (bits of
 /// one register apart).
 pub fn check(file: &str, map: RegisterMap) -> Result<RegisterMap, MapError> {
+    if map.points.is_empty() {
+        return Err(at(file, 1, "the map names no point"));
+    }
     let mut names: HashMap<&str, usize> = HashMap::new();
     for point in &map.points {
         if let Some(first) = names.insert(&point.name, point.line) {
@@ -390,9 +425,10 @@ pub fn check(file: &str, map: RegisterMap) -> Result<RegisterMap, MapError> {
         let [a, b] = pair else { continue };
         let same_place = a.slave == b.slave && a.table == b.table;
         let overlap = same_place && b.span().0 < a.span().1;
-        let distinct_bits =
-            matches!((a.bit, b.bit), (Some(x), Some(y)) if x != y) && a.address == b.address;
-        if overlap && !distinct_bits {
+        // A bit of a register may be a point beside the register itself (a status word
+        // and its alarm bit); two points of the same bit may not.
+        let bit_beside = (a.bit.is_some() || b.bit.is_some()) && a.bit != b.bit;
+        if overlap && !bit_beside {
             let (first, second) = if a.line < b.line { (a, b) } else { (b, a) };
             return Err(at(
                 file,

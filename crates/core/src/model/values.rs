@@ -173,6 +173,17 @@ impl ValueType {
         }
     }
 
+    /// The values a whole-number type holds, signed or not as its name says.
+    pub fn strict_range(self) -> (i128, i128) {
+        let bits = 16 * self.width() as u32;
+        match self {
+            ValueType::I16 | ValueType::I32 | ValueType::I64 => {
+                (-(1i128 << (bits - 1)), (1i128 << (bits - 1)) - 1)
+            }
+            _ => (0, (1i128 << bits) - 1),
+        }
+    }
+
     /// The values a whole-number type takes when written. An unsigned type takes negative
     /// values too, stored as two's complement, as a register holds no sign of its own.
     fn range(self) -> (i128, i128) {

@@ -225,9 +225,6 @@ pub struct Entry {
     pub values: ReadData,
 }
 
-/// The values a data file line holds at most, so that lines stay readable.
-const VALUES_A_LINE: usize = 16;
-
 /// The entries of a data model: every run of addresses that exists, table by table.
 pub fn entries(model: &DataModel) -> Vec<Entry> {
     let mut entries = Vec::new();
@@ -256,8 +253,8 @@ pub fn entries(model: &DataModel) -> Vec<Entry> {
     entries
 }
 
-/// The lines of a data file holding `entries`: `REF = values`, registers as decimal
-/// u16, coils and inputs as 1/0, at most 16 values a line.
+/// The lines of a data file holding `entries`: one `REF = values` line a run, registers
+/// as decimal u16, coils and inputs as 1/0.
 pub fn render(entries: &[Entry]) -> String {
     let mut text = String::new();
     for entry in entries {
@@ -265,15 +262,11 @@ pub fn render(entries: &[Entry]) -> String {
             ReadData::Bits(bits) => bits.iter().map(|b| u8::from(*b).to_string()).collect(),
             ReadData::Registers(registers) => registers.iter().map(u16::to_string).collect(),
         };
-        for (i, line) in words.chunks(VALUES_A_LINE).enumerate() {
-            // Within the run, which ends at 65535 at the latest.
-            let address = entry.address.saturating_add((i * VALUES_A_LINE) as u16);
-            text.push_str(&format!(
-                "{} = {}\n",
-                reference(entry.table, address),
-                line.join(" ")
-            ));
-        }
+        text.push_str(&format!(
+            "{} = {}\n",
+            reference(entry.table, entry.address),
+            words.join(" ")
+        ));
     }
     text
 }
@@ -373,9 +366,9 @@ mod tests {
         let first = entries(&parse("data", text).unwrap());
         let rendered = render(&first);
         assert_eq!(entries(&parse("again", &rendered).unwrap()), first);
-        // At most 16 values a line, each line with its own reference.
+        // One line a run.
         assert!(
-            rendered.starts_with("000001 = 1 0 1 0 0 0 0 0 0 0 0 0 0 0 0 0\n000017 = 0 0 0 0\n")
+            rendered.starts_with("000001 = 1 0 1 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n300009 = 10\n")
         );
     }
 }
