@@ -9,15 +9,15 @@ runs=${1:-20}
 cargo build --release --quiet
 work=$(mktemp -d)
 trap 'kill ${serve:-} 2>/dev/null; rm -rf "$work"' EXIT
-# 500 points over 400001-401000: u16, i16 with a scale, f32 taking two registers, with
-# a hole after every tenth point.
+# 500 one-register points over 400001-400550: u16, and i16 with a scale, with a hole
+# after every tenth point (so that --max-per-request 1 reads them one by one).
 python3 - "$work" <<'PY'
 import sys
 work = sys.argv[1]
 points, data, address = ["name,ref,type,scale,unit"], [], 0
 for i in range(500):
-    kind = ["u16", "i16", "f32"][i % 3]
-    width = 2 if kind == "f32" else 1
+    kind = ["u16", "i16"][i % 2]
+    width = 1
     points.append(f"p{i},{400001 + address},{kind},{'0.1' if kind == 'i16' else ''},")
     data.append(f"{400001 + address}-{400001 + address + width - 1} = {i}")
     address += width + (1 if i % 10 == 9 else 0)
