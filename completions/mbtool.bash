@@ -278,7 +278,7 @@ _mbtool() {
 
     case "${cmd}" in
         mbtool)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --type --order --max-per-request --poll --count --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --type --order --max-per-request --poll --count --log --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw scan info diag dump restore decode encode sniff serve generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -361,6 +361,10 @@ _mbtool() {
                     return 0
                     ;;
                 --count)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --log)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1994,7 +1998,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read)
-            opts="-p -m -b -o -v -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --type --order --max-per-request --poll --count --help --version"
+            opts="-p -m -b -o -v -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --type --order --max-per-request --poll --count --log --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2084,6 +2088,10 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --log)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -2092,7 +2100,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__coils)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --max-per-request --poll --count --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --max-per-request --poll --count --log --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2163,6 +2171,10 @@ _mbtool() {
                     return 0
                     ;;
                 --count)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --log)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -2174,7 +2186,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__holding)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --type --order --max-per-request --poll --count --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --type --order --max-per-request --poll --count --log --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2257,6 +2269,10 @@ _mbtool() {
                     return 0
                     ;;
                 --count)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --log)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -2268,7 +2284,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__input__subcmd__registers)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --type --order --max-per-request --poll --count --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --type --order --max-per-request --poll --count --log --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2354,6 +2370,10 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --log)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -2362,7 +2382,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__inputs)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --max-per-request --poll --count --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --max-per-request --poll --count --log --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2433,6 +2453,10 @@ _mbtool() {
                     return 0
                     ;;
                 --count)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --log)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

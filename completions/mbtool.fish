@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_mbtool_global_optspecs
-    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= timeout= retries= frame-gap= o/output= json v/verbose pdu-addresses t/type= order= max-per-request= poll= count= h/help V/version
+    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= timeout= retries= frame-gap= o/output= json v/verbose pdu-addresses t/type= order= max-per-request= poll= count= log= h/help V/version
 end
 
 function __fish_mbtool_needs_command
@@ -57,8 +57,9 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_needs_command" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l count -d 'With --poll: stop after N reads' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_needs_command" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_needs_command" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -107,8 +108,9 @@ json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l count -d 'With --poll: stop after N reads' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -132,8 +134,9 @@ json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l count -d 'With --poll: stop after N reads' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -157,8 +160,9 @@ json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l count -d 'With --poll: stop after N reads' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -197,8 +201,9 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l count -d 'With --poll: stop after N reads' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -237,8 +242,9 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l count -d 'With --poll: stop after N reads' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -277,8 +283,9 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l count -d 'With --poll: stop after N reads' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -317,8 +324,9 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l count -d 'With --poll: stop after N reads' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'
@@ -358,8 +366,9 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l count -d 'With --poll: stop after N reads' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l pdu-addresses -d 'Take every address as a 0-based protocol address, never as a Modicon reference'

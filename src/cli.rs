@@ -277,7 +277,8 @@ pub struct DataArgs {
 #[command(next_help_heading = "Watching")]
 pub struct PollArgs {
     /// Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing
-    /// what changed, with a summary on stderr at the end
+    /// what changed, with a summary on stderr at the end; a failed read is a row of its
+    /// own, and a connection that drops is opened again
     #[arg(long, global = true, value_name = "INTERVAL", value_parser = mbtool_core::model::duration::parse_duration)]
     pub poll: Option<std::time::Duration>,
 
@@ -290,6 +291,11 @@ pub struct PollArgs {
         value_parser = whole::<u64>(1, i128::from(u64::MAX))
     )]
     pub count: Option<u64>,
+
+    /// With --poll: also append every row, with its time, to FILE: CSV for a .csv name,
+    /// JSON Lines for any other
+    #[arg(long, global = true, value_name = "FILE")]
+    pub log: Option<std::path::PathBuf>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -998,7 +1004,7 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
     const ADDRESSES: &[&str] = &["pdu_addresses"];
     const SPLIT: &[&str] = &["max_per_request"];
     const REGISTERS: &[&str] = &["value_type", "order"];
-    const POLL: &[&str] = &["poll", "poll_count"];
+    const POLL: &[&str] = &["poll", "poll_count", "log"];
     let groups: &[&[&str]] = match path {
         ["decode"] => &[&["mode"], FORMAT, REGISTERS],
         ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],

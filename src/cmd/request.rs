@@ -6,7 +6,7 @@ use std::time::Instant;
 
 use anyhow::Result;
 
-use mbtool::cli::{Cli, RequestCommand};
+use mbtool::cli::{Cli, OutputFormat, RequestCommand};
 use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output::decode::DecodeWriter;
@@ -15,7 +15,7 @@ use mbtool::output::{self, encode::frame_text};
 use mbtool_core::codec::{Frame, Mode, Pdu, Request};
 use mbtool_core::describe::describe_frame;
 use mbtool_core::master::plan::Plan;
-use mbtool_core::master::run::PollStats;
+use mbtool_core::master::poll::{poll, PollOptions, Tick};
 use mbtool_core::master::{Master, Reply, Traffic};
 use mbtool_core::model::address::{bit_reference, reference, Access, Table};
 
@@ -30,11 +30,20 @@ pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
         )
         .into());
     }
+    if cli.poll.log.is_some() && cli.poll.poll.is_none() {
+        return Err(
+            Error::usage("--log keeps the rows of a --poll: give --poll INTERVAL too").into(),
+        );
+    }
     if let Some(by_map) = by_map(cli, request)? {
         return by_map.run(cli);
     }
     let plan = super::encode::plan_for(cli, request)?;
-    let mut connection = connection::connect(cli)?;
+    let target = connection::target(cli)?;
+    if let (Some(interval), Some((table, address))) = (cli.poll.poll, plan.reads) {
+        return poll_reads(cli, &target, &plan, (table, address), interval);
+    }
+    let mut connection = target.connect(cli)?;
     let mode = connection.mode;
     let master = &mut connection.master;
     if cli.output.verbose {
@@ -153,47 +162,135 @@ fn reads(
     address: u16,
     out: &mut Box<dyn Write>,
 ) -> Result<u8> {
-    let mut writer = ReadWriter::new(output::Style::of(cli));
-    let Some(interval) = cli.poll.poll else {
-        let result = master.read(plan, table, address).map_err(Error::from)?;
-        writer.write(out, &result)?;
-        return Ok(0);
-    };
+    let result = master.read(plan, table, address).map_err(Error::from)?;
+    ReadWriter::new(output::Style::of(cli)).write(out, &result)?;
+    Ok(0)
+}
+
+/// Now, as a row of a log shows it: RFC 3339 with milliseconds and the local offset.
+fn now() -> String {
+    chrono::Local::now().to_rfc3339_opts(chrono::SecondsFormat::Millis, false)
+}
+
+/// A poll's rows appended to `--log FILE`.
+struct Log {
+    writer: ReadWriter,
+    file: std::io::BufWriter<std::fs::File>,
+}
+
+impl Log {
+    fn open(cli: &Cli, path: &std::path::Path) -> Result<Log> {
+        let csv = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+        let file = std::fs::OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(path)
+            .map_err(|e| anyhow::anyhow!("cannot open {}: {e}", path.display()))?;
+        let style = output::Style {
+            format: if csv {
+                OutputFormat::Csv
+            } else {
+                OutputFormat::Json
+            },
+            colour: false,
+            ..output::Style::of(cli)
+        };
+        Ok(Log {
+            writer: ReadWriter::new(style).timed(),
+            file: std::io::BufWriter::new(file),
+        })
+    }
+}
+
+/// `--poll`: a read every interval until Ctrl-C or --count, failures as rows, a dropped
+/// connection opened again; the summary on stderr at the end. The exit status is the last
+/// read's.
+fn poll_reads(
+    cli: &Cli,
+    target: &connection::Target,
+    plan: &Plan,
+    (table, address): (Table, u16),
+    interval: std::time::Duration,
+) -> Result<u8> {
+    let mut screen = ReadWriter::new(output::Style::of(cli)).timed();
+    let mut log = cli
+        .poll
+        .log
+        .as_deref()
+        .map(|path| Log::open(cli, path))
+        .transpose()?;
     // Ctrl-C ends the poll between reads, so that no line is cut and the summary shows.
     let (stop, stopped) = mpsc::channel();
     ctrlc::set_handler(move || {
         let _ = stop.send(());
     })
     .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
-    let mut stats = PollStats::default();
-    // The exit status is that of the last read: 0 when the poll ended on an answer.
-    let mut last_status;
-    let mut done = 0u64;
-    loop {
-        let started = Instant::now();
-        let outcome = master.read(plan, table, address);
-        stats.record(outcome.as_ref().map(|_| ()), started.elapsed());
-        match outcome {
-            Ok(result) => {
-                writer.write(out, &result)?;
-                out.flush()?;
-                last_status = 0;
+    let connect = || -> Result<Master, Error> {
+        let mut master = connection::master(cli, &target.endpoint, target.mode)?;
+        if cli.output.verbose {
+            master.trace(tracer(target.mode));
+        }
+        Ok(master)
+    };
+    let mut out = output::stdout();
+    let mut last_status = 0;
+    let options = PollOptions {
+        interval,
+        count: cli.poll.count,
+    };
+    let stats = poll(
+        None,
+        connect,
+        |master| master.read(plan, table, address),
+        options,
+        |wait| {
+            !matches!(
+                stopped.recv_timeout(wait),
+                Err(mpsc::RecvTimeoutError::Timeout)
+            )
+        },
+        |tick| {
+            let time = now();
+            let failure = match tick {
+                Tick::Read(result) => {
+                    screen.write_at(&mut out, &result, Some(&time))?;
+                    if let Some(log) = log.as_mut() {
+                        log.writer.write_at(&mut log.file, &result, Some(&time))?;
+                    }
+                    last_status = 0;
+                    None
+                }
+                Tick::Failed(error) => {
+                    let error = Error::from(error);
+                    last_status = error.exit_code();
+                    Some(error.to_string())
+                }
+                Tick::Disconnected(why) => {
+                    last_status = 1;
+                    Some(why)
+                }
+            };
+            if let Some(error) = failure {
+                if matches!(
+                    cli.output.format(),
+                    OutputFormat::Table | OutputFormat::Values
+                ) {
+                    mbtool::note!("mbtool: {error}");
+                }
+                screen.write_failure(&mut out, &time, &error)?;
+                if let Some(log) = log.as_mut() {
+                    log.writer.write_failure(&mut log.file, &time, &error)?;
+                }
             }
-            Err(error) => {
-                mbtool::note!("mbtool: {error}");
-                last_status = Error::from(error).exit_code();
+            out.flush()?;
+            if let Some(log) = log.as_mut() {
+                log.file.flush()?;
             }
-        }
-        done += 1;
-        if cli.poll.count.is_some_and(|count| done >= count) {
-            break;
-        }
-        let wait = interval.saturating_sub(started.elapsed());
-        match stopped.recv_timeout(wait) {
-            Err(mpsc::RecvTimeoutError::Timeout) => continue,
-            _ => break,
-        }
-    }
+            Ok(())
+        },
+    )?;
     mbtool::note!("mbtool: {}", stats.summary());
     Ok(last_status)
 }

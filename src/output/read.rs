@@ -24,10 +24,22 @@ struct JsonEntry<'a> {
 
 #[derive(Serialize)]
 struct JsonRead<'a> {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    time: Option<&'a str>,
     slave: u8,
     function: u8,
     values: Vec<JsonEntry<'a>>,
 }
+
+/// A poll that gave no values, as a row of a log.
+#[derive(Serialize)]
+struct JsonFailure<'a> {
+    time: &'a str,
+    error: &'a str,
+}
+
+/// The CSV header of a poll's rows: `time` first, `error` last.
+const TIMED_CSV_HEADER: &str = "time,ref,address,hex,value,error";
 
 /// One shown value: where it is, its registers, what it means.
 struct Row<'a> {
@@ -43,6 +55,8 @@ pub struct ReadWriter {
     /// The previous result, when polling: changed values are marked.
     previous: Option<ReadResult>,
     csv_header_written: bool,
+    /// Every row starts with its time (a poll's rows, a log).
+    timed: bool,
 }
 
 impl ReadWriter {
@@ -51,6 +65,38 @@ impl ReadWriter {
             style,
             previous: None,
             csv_header_written: false,
+            timed: false,
+        }
+    }
+
+    /// A writer whose CSV and JSON rows start with their time, and that writes a failed
+    /// poll as a row of its own.
+    pub fn timed(mut self) -> Self {
+        self.timed = true;
+        self
+    }
+
+    /// A poll that gave no values: a row with its error in CSV and JSON; in the table and
+    /// the values, nothing (the error goes to stderr).
+    pub fn write_failure(
+        &mut self,
+        out: &mut dyn Write,
+        time: &str,
+        error: &str,
+    ) -> io::Result<()> {
+        match self.style.format {
+            OutputFormat::Json => {
+                serde_json::to_writer(&mut *out, &JsonFailure { time, error })?;
+                writeln!(out)
+            }
+            OutputFormat::Csv => {
+                if !self.csv_header_written {
+                    writeln!(out, "{TIMED_CSV_HEADER}")?;
+                    self.csv_header_written = true;
+                }
+                writeln!(out, "{time},,,,,{}", csv_field(error))
+            }
+            OutputFormat::Table | OutputFormat::Values => Ok(()),
         }
     }
 
@@ -126,6 +172,17 @@ impl ReadWriter {
     }
 
     pub fn write(&mut self, out: &mut dyn Write, result: &ReadResult) -> io::Result<()> {
+        self.write_at(out, result, None)
+    }
+
+    /// A result, its rows starting with `time` when the writer is timed.
+    pub fn write_at(
+        &mut self,
+        out: &mut dyn Write,
+        result: &ReadResult,
+        time: Option<&str>,
+    ) -> io::Result<()> {
+        let time = time.filter(|_| self.timed);
         let changed = self.changed(result);
         let rows = self.rows(result);
         match self.style.format {
@@ -141,6 +198,7 @@ impl ReadWriter {
                     })
                     .collect();
                 let json = JsonRead {
+                    time,
                     slave: result.slave,
                     function: result.function,
                     values,
@@ -157,27 +215,38 @@ impl ReadWriter {
                 // Bits have no registers, so no hex column.
                 let bits = matches!(result.data, ReadData::Bits(_));
                 if !self.csv_header_written {
-                    let header = if bits {
-                        "ref,address,value"
-                    } else {
-                        "ref,address,hex,value"
+                    let header = match (time, bits) {
+                        (Some(_), _) => TIMED_CSV_HEADER,
+                        (None, true) => "ref,address,value",
+                        (None, false) => "ref,address,hex,value",
                     };
                     writeln!(out, "{header}")?;
                     self.csv_header_written = true;
                 }
                 for row in &rows {
-                    let hex = if bits {
-                        String::new()
-                    } else {
-                        format!("{},", hex_of(row.registers))
-                    };
-                    writeln!(
-                        out,
-                        "{},{},{hex}{}",
-                        row.reference.clone(),
-                        row.address,
-                        csv_field(&row.value.to_string())
-                    )?;
+                    let value = csv_field(&row.value.to_string());
+                    match time {
+                        // A log's rows: one shape for bits, registers and failures alike.
+                        Some(time) => writeln!(
+                            out,
+                            "{time},{},{},{},{value},",
+                            row.reference,
+                            row.address,
+                            if bits {
+                                String::new()
+                            } else {
+                                hex_of(row.registers)
+                            }
+                        )?,
+                        None if bits => writeln!(out, "{},{},{value}", row.reference, row.address)?,
+                        None => writeln!(
+                            out,
+                            "{},{},{},{value}",
+                            row.reference,
+                            row.address,
+                            hex_of(row.registers)
+                        )?,
+                    }
                 }
             }
             OutputFormat::Table => {

@@ -19,6 +19,7 @@ mod master_pymodbus;
 mod master_sim;
 mod master_tcp;
 mod master_tokio;
+mod poll;
 mod readme;
 mod scan;
 mod serve;

@@ -15,6 +15,7 @@ pub mod backup;
 pub mod device;
 pub mod map;
 pub mod plan;
+pub mod poll;
 pub mod run;
 pub mod scan;
 

@@ -226,6 +226,8 @@ pub struct PollStats {
     pub exceptions: u64,
     /// Reads that failed otherwise (the transport, say).
     pub other_errors: u64,
+    /// Polls that found the connection down, and no read made.
+    pub disconnected: u64,
     fastest: Option<Duration>,
     slowest: Duration,
     total: Duration,
@@ -257,6 +259,9 @@ impl PollStats {
         );
         if self.other_errors > 0 {
             line.push_str(&format!(", {} other errors", self.other_errors));
+        }
+        if self.disconnected > 0 {
+            line.push_str(&format!(", {} polls while disconnected", self.disconnected));
         }
         if let Some(fastest) = self.fastest {
             let mean = self.total / u32::try_from(self.answers.max(1)).unwrap_or(u32::MAX);

@@ -1,0 +1,176 @@
+//! `--poll` as a logger: rows with their time, failures as rows, and a connection that
+//! drops opened again, against a `serve` that is stopped and started again.
+
+use std::process::{Command as Process, Stdio};
+use std::time::Duration;
+
+use crate::support::{free_port, mbtool, serve, wait_for_listener};
+
+/// The rows of a CSV poll log: (time, value, error).
+fn rows(text: &str) -> Vec<(chrono::DateTime<chrono::FixedOffset>, String, String)> {
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("time,ref,address,hex,value,error"),
+        "{text}"
+    );
+    lines
+        .map(|line| {
+            let fields: Vec<&str> = line.splitn(6, ',').collect();
+            let time = chrono::DateTime::parse_from_rfc3339(fields[0])
+                .unwrap_or_else(|e| panic!("{line}: {e}"));
+            assert_eq!(
+                fields[0].split('.').nth(1).map(|f| f.len()),
+                Some(9),
+                "{line}: milliseconds and offset"
+            );
+            (time, fields[4].to_string(), fields[5].to_string())
+        })
+        .collect()
+}
+
+#[test]
+fn a_poll_goes_on_through_a_device_that_restarts() {
+    let tcp = free_port();
+    let address = format!("tcp://127.0.0.1:{tcp}");
+    let first = serve(&["--port", &address]);
+    assert!(wait_for_listener(tcp, Duration::from_secs(10)));
+    let dir = tempfile::tempdir().unwrap();
+    let log = dir.path().join("poll.csv");
+    let mut poller = crate::support::Stopped(
+        Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+            .args([
+                "--port",
+                &format!("127.0.0.1:{tcp}"),
+                "read-holding",
+                "17",
+                "400108",
+            ])
+            .args(["--poll", "100ms", "--count", "55", "-o", "csv", "--log"])
+            .arg(&log)
+            .env("NO_COLOR", "1")
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    std::thread::sleep(Duration::from_millis(1500));
+    drop(first);
+    std::thread::sleep(Duration::from_secs(2));
+    let _second = serve(&["--port", &address]);
+    let status = poller.0.wait().unwrap();
+    let text = std::fs::read_to_string(&log).unwrap();
+    let rows = rows(&text);
+    assert_eq!(rows.len(), 55, "{text}");
+    // Times in order, and never faster than the schedule: 54 intervals of 100 ms.
+    assert!(rows.windows(2).all(|w| w[0].0 <= w[1].0), "{text}");
+    assert!(
+        (rows[54].0 - rows[0].0).num_milliseconds() >= 5400,
+        "{text}"
+    );
+    // Values, then errors while serve was down, then values again.
+    let kinds: Vec<&str> = rows
+        .iter()
+        .map(
+            |(_, value, error)| match (value.as_str(), error.is_empty()) {
+                ("555", true) => "value",
+                ("", false) => "error",
+                other => panic!("{other:?}"),
+            },
+        )
+        .collect();
+    let mut phases = kinds.clone();
+    phases.dedup();
+    assert_eq!(phases, ["value", "error", "value"], "{text}");
+    assert!(
+        kinds.iter().filter(|k| **k == "error").count() >= 10,
+        "{text}"
+    );
+    // The screen showed the same rows; the last read succeeded.
+    assert!(status.success(), "{status}");
+    let mut screen = String::new();
+    std::io::Read::read_to_string(poller.0.stdout.as_mut().unwrap(), &mut screen).unwrap();
+    assert_eq!(screen, text);
+}
+
+#[test]
+fn log_without_poll_is_refused() {
+    let output = mbtool()
+        .args(["--port", "sim", "read-holding", "17", "1", "--log", "x.csv"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&output.stderr),
+        "mbtool: --log keeps the rows of a --poll: give --poll INTERVAL too\n"
+    );
+}
+
+/// socat joining two pseudo-terminals at `a` and `b`, stopped when dropped.
+fn socat(a: &std::path::Path, b: &std::path::Path) -> crate::support::Stopped {
+    let child = Process::new("socat")
+        .arg(format!("pty,raw,echo=0,link={}", a.display()))
+        .arg(format!("pty,raw,echo=0,link={}", b.display()))
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let deadline = std::time::Instant::now() + Duration::from_secs(5);
+    while !(a.exists() && b.exists()) && std::time::Instant::now() < deadline {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    crate::support::Stopped(child)
+}
+
+#[test]
+fn a_poll_goes_on_through_a_serial_port_that_goes_away_and_comes_back() {
+    if !crate::support::peer_available("socat", crate::support::command_exists("socat")) {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let (a, b) = (dir.path().join("a"), dir.path().join("b"));
+    let line = socat(&a, &b);
+    let slave = serve(&["--port", &a.display().to_string()]);
+    let log = dir.path().join("poll.csv");
+    let mut poller = crate::support::Stopped(
+        Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+            .args([
+                "--port",
+                &b.display().to_string(),
+                "read-holding",
+                "17",
+                "400108",
+            ])
+            .args([
+                "--poll",
+                "100ms",
+                "--count",
+                "45",
+                "-o",
+                "csv",
+                "--timeout",
+                "50ms",
+                "--log",
+            ])
+            .arg(&log)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    std::thread::sleep(Duration::from_millis(1200));
+    // The adapter is unplugged: the port and the slave behind it go away.
+    drop(slave);
+    drop(line);
+    std::thread::sleep(Duration::from_millis(1500));
+    let _line = socat(&a, &b);
+    let _slave = serve(&["--port", &a.display().to_string()]);
+    assert!(poller.0.wait().unwrap().success());
+    let text = std::fs::read_to_string(&log).unwrap();
+    let mut phases: Vec<bool> = rows(&text)
+        .iter()
+        .map(|(_, _, error)| error.is_empty())
+        .collect();
+    phases.dedup();
+    assert_eq!(phases, [true, false, true], "{text}");
+}
