@@ -62,6 +62,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand raw 'Send any PDU and decode the answer'
             cand scan 'Find the slaves on a line and the settings they use'
+            cand watch 'Watch values live, full screen: min, max, trend, changes'
             cand info 'Ask a device who it is: identification and server id'
             cand diag 'A device''s health: round trips, counters, status'
             cand dump 'Save a device''s tables to a data file, holes left out'
@@ -494,6 +495,33 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
             cand --verbose 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
+        &'mbtool;watch'= {
+            cand --map 'Watch the points of a register map (CSV, or Home Assistant YAML)'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
+            cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
+            cand -b 'Serial speed; scan sweeps a list (9600,19200,38400)'
+            cand --baud 'Serial speed; scan sweeps a list (9600,19200,38400)'
+            cand --parity 'Serial parity; scan sweeps a list (none,even,odd)'
+            cand --data-bits 'Serial data bits [default: 8, 7 in ASCII mode]'
+            cand --stop-bits 'Serial stop bits [default: 1 with parity, 2 without]'
+            cand --timeout 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]'
+            cand --retries 'Retries after a timeout or a bad answer (never after an exception)'
+            cand --frame-gap 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none'
+            cand -t 'Register value type, for showing values read and for converting values to write'
+            cand --type 'Register value type, for showing values read and for converting values to write'
+            cand --order 'Byte order of values wider than 16 bits: A is the most significant byte'
+            cand --max-per-request 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows'
+            cand --poll 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again'
+            cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand --verbose 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand --pdu-addresses 'Take every address as a 0-based protocol address, never as a Modicon reference'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
             cand -V 'Print version'
@@ -990,6 +1018,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand raw 'Send any PDU and decode the answer'
             cand scan 'Find the slaves on a line and the settings they use'
+            cand watch 'Watch values live, full screen: min, max, trend, changes'
             cand info 'Ask a device who it is: identification and server id'
             cand diag 'A device''s health: round trips, counters, status'
             cand dump 'Save a device''s tables to a data file, holes left out'
@@ -1024,6 +1053,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         &'mbtool;help;raw'= {
         }
         &'mbtool;help;scan'= {
+        }
+        &'mbtool;help;watch'= {
         }
         &'mbtool;help;info'= {
         }

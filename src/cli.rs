@@ -307,6 +307,10 @@ pub enum Command {
     #[command(long_about = SCAN_ABOUT)]
     Scan(ScanArgs),
 
+    /// Watch values live, full screen: min, max, trend, changes
+    #[command(long_about = WATCH_ABOUT)]
+    Watch(WatchArgs),
+
     /// Ask a device who it is: identification and server id
     #[command(long_about = INFO_ABOUT)]
     Info(InfoArgs),
@@ -387,6 +391,17 @@ registers are skipped, and said so.
 
 Exit status 0 when every value reads back as written, 4 listing the addresses that differ. \
 --dry-run prints the frames it would send and sends nothing.";
+
+const WATCH_ABOUT: &str = "\
+Fill the terminal with a live view of a range (watch 17 400001 10) or of a register map's \
+points (watch 17 --map FILE): every point with its value, minimum, maximum, a trend of its \
+recent values, and when it last changed (a changed value is highlighted), with the line's \
+statistics (answers, timeouts, bad frames, exceptions, response time). --poll sets the \
+interval [default: 1s]; a failed read or a dropped connection is shown and polling goes on.
+
+Keys: q or Esc quits, p pauses, r resets minimum, maximum and trends. The terminal is given \
+back as it was on q, Ctrl-C, an error or a crash. When standard output is not a terminal, \
+watch refuses: read ... --poll INTERVAL -o csv (and --log FILE) is the logger.";
 
 const INFO_ABOUT: &str = "\
 Ask a device who it is. Read device identification (function 43/14) at the basic level, \
@@ -785,6 +800,24 @@ pub struct RestoreArgs {
 }
 
 #[derive(Clone, Debug, Args)]
+pub struct WatchArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+    /// The first reference to watch (400001, 300009, 000020, 400108.05); with --map, a
+    /// point's name
+    #[arg(required_unless_present = "map", value_name = "REFERENCE")]
+    pub reference: Option<String>,
+    /// How many values [default: 1]; with --map, a point's name
+    pub count: Option<String>,
+    /// With --map: more points' names [default: every point of the map]
+    #[arg(value_name = "NAME")]
+    pub names: Vec<String>,
+    /// Watch the points of a register map (CSV, or Home Assistant YAML)
+    #[arg(long, value_name = "FILE")]
+    pub map: Option<std::path::PathBuf>,
+}
+
+#[derive(Clone, Debug, Args)]
 pub struct InfoArgs {
     /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
     pub slave: String,
@@ -1010,6 +1043,7 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
         ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
         ["sniff" | "serve"] => &[LINE, FORMAT],
         ["info"] => &[LINE, MASTER, FORMAT],
+        ["watch"] => &[LINE, MASTER, ADDRESSES, SPLIT, REGISTERS, &["poll"]],
         // dump's --output is the file it writes.
         ["dump"] => &[LINE, MASTER, SPLIT, &["output"]],
         ["restore"] => &[LINE, MASTER, SPLIT],

@@ -176,6 +176,19 @@ const EXAMPLES: &[(&str, &[Example])] = &[
         ],
     ),
     (
+        "watch",
+        &[
+            ex(
+                "Watch the points of a map, twice a second",
+                "mbtool --port /dev/ttyUSB0 watch 17 --map pump3.csv --poll 500ms",
+            ),
+            ex(
+                "Watch two floats stored low word first",
+                "mbtool --port tcp://10.0.0.5 watch 1 400001 2 --type f32 --order CDAB",
+            ),
+        ],
+    ),
+    (
         "info",
         &[
             ex("Ask slave 17 who it is", "mbtool --port /dev/ttyUSB0 info 17"),

@@ -21,16 +21,20 @@ pub fn mode(cli: &Cli) -> Mode {
     connection::mode(cli, endpoint.as_ref(), Role::Encode).unwrap_or(Mode::Rtu)
 }
 
-/// Checks the command line of a request command and plans its requests.
-pub fn plan_for(cli: &Cli, request: &RequestCommand) -> Result<Plan, Error> {
-    let options = PlanOptions {
+/// What the options say about addresses, values and request sizes.
+pub fn plan_options(cli: &Cli) -> PlanOptions {
+    PlanOptions {
         pdu_addresses: cli.data.pdu_addresses,
         value_type: cli.data.value_type,
         order: cli.data.order,
         max_per_request: cli.data.max_per_request,
         tcp: mode(cli) == Mode::Tcp,
-    };
-    Ok(plan(&request.operation(), options)?)
+    }
+}
+
+/// Checks the command line of a request command and plans its requests.
+pub fn plan_for(cli: &Cli, request: &RequestCommand) -> Result<Plan, Error> {
+    Ok(plan(&request.operation(), plan_options(cli))?)
 }
 
 pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {

@@ -33,11 +33,6 @@ pub fn plan(
         MapError::Unreadable { .. } => Error::Io(std::io::Error::other(e.to_string())),
         MapError::At { .. } => Error::usage(e.to_string()),
     })?;
-    if cli.poll.poll.is_some() {
-        return Err(Error::usage(
-            "--poll repeats the read of a REFERENCE; a map is read once",
-        ));
-    }
     // A read goes to one slave; only a write may broadcast.
     let slave = parse_slave(slave, access == Access::WriteOne, tcp)?;
     let points = pick(&map, names, path)?;

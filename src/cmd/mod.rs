@@ -11,6 +11,7 @@ mod restore;
 mod scan;
 mod serve;
 mod sniff;
+mod watch;
 
 use anyhow::Result;
 
@@ -23,6 +24,7 @@ use mbtool_core::master::plan::parse_slave;
 pub fn run(cli: Cli) -> Result<u8> {
     match &cli.command {
         Command::Scan(args) => scan::run(&cli, args),
+        Command::Watch(args) => watch::run(&cli, args),
         Command::Info(args) => info::run(&cli, args),
         Command::Dump(args) => dump::run(&cli, args),
         Command::Restore(args) => restore::run(&cli, args),

@@ -74,6 +74,10 @@ pub fn by_map(cli: &Cli, request: &RequestCommand) -> Result<Option<ByMap>> {
     let tcp = || super::encode::mode(cli) == Mode::Tcp;
     match request {
         RequestCommand::Read(args) => match &args.map {
+            Some(_) if cli.poll.poll.is_some() => Err(Error::usage(
+                "--poll repeats the read of a REFERENCE; watch 17 --map FILE shows a map live",
+            )
+            .into()),
             Some(path) => {
                 let names = args.point_names();
                 let plan = super::map::plan(cli, path, &args.slave, &names, tcp(), Access::Read)?;

@@ -10,6 +10,7 @@ pub mod read;
 pub mod scan;
 pub mod serve;
 pub mod sniff;
+pub mod watch;
 
 use std::io::{self, IsTerminal, Write};
 

@@ -26,3 +26,4 @@ mod serve;
 mod serve_framing;
 mod sniff;
 mod sniff_faults;
+mod watch;

@@ -424,8 +424,9 @@ impl Terminal {
             socket: tempfile::tempdir().expect("a temporary folder"),
         };
         let script = format!(
-            "NO_COLOR=1 {} {args}; touch {}; sleep 600",
+            "NO_COLOR=1 {} {args}; echo $? > {}; touch {}; sleep 600",
             assert_cmd::cargo::cargo_bin("mbtool").display(),
+            terminal.socket.path().join("status").display(),
             terminal.done_marker().display()
         );
         terminal.tmux(&[
@@ -458,6 +459,20 @@ impl Terminal {
     /// Whether mbtool has ended.
     pub fn done(&self) -> bool {
         self.done_marker().exists()
+    }
+
+    /// mbtool's exit status, once it has ended.
+    pub fn status(&self) -> Option<i32> {
+        std::fs::read_to_string(self.socket.path().join("status"))
+            .ok()
+            .and_then(|text| text.trim().parse().ok())
+    }
+
+    /// Types `keys` (tmux key names: `q`, `Escape`, `C-c`).
+    pub fn keys(&self, keys: &[&str]) {
+        let mut args = vec!["send-keys"];
+        args.extend_from_slice(keys);
+        self.tmux(&args);
     }
 
     /// The lines on the screen now.

@@ -383,6 +383,49 @@ pub fn parse_csv(file: &str, text: &str) -> Result<RegisterMap, MapError> {
     check(file, map)
 }
 
+/// The points of a range as `read` would show them, each named by its reference: `count`
+/// values of `kind` from `address` (or `count` bits of registers from `bit`).
+pub fn range_points(
+    table: Table,
+    address: u16,
+    count: u32,
+    bit: Option<u8>,
+    kind: Kind,
+    order: ByteOrder,
+) -> Vec<Point> {
+    let point = |address: u16, bit: Option<u8>, kind: Kind| Point {
+        name: match bit {
+            Some(bit) => bit_reference(table, address, bit),
+            None => reference(table, address),
+        },
+        table,
+        address,
+        bit,
+        kind,
+        order,
+        scale: 1.0,
+        offset: 0.0,
+        unit: String::new(),
+        writable: false,
+        slave: None,
+        description: String::new(),
+        line: 0,
+    };
+    (0..count)
+        .map_while(|i| match bit {
+            Some(first) => {
+                let at = u32::from(first) + i;
+                let register = u16::try_from(u32::from(address) + at / 16).ok()?;
+                Some(point(register, Some((at % 16) as u8), Kind::Bool))
+            }
+            None => {
+                let at = u32::from(address) + i * u32::from(kind.width());
+                Some(point(u16::try_from(at).ok()?, None, kind))
+            }
+        })
+        .collect()
+}
+
 /// Reads the map at `path`: Home Assistant YAML for a `.yaml` or `.yml` file, CSV otherwise.
 pub fn load(path: &std::path::Path) -> Result<RegisterMap, MapError> {
     let file = path.display().to_string();

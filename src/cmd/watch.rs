@@ -1,0 +1,249 @@
+//! `mbtool watch`: a live, full-screen view of a range or of a map's points.
+
+use std::io::IsTerminal;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{mpsc, Arc};
+use std::time::{Duration, Instant};
+
+use anyhow::Result;
+use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind, KeyModifiers};
+
+use mbtool::cli::{Cli, WatchArgs};
+use mbtool::connection::{self, Target};
+use mbtool::error::Error;
+use mbtool::output::watch::WatchState;
+use mbtool_core::master::map::read_points;
+use mbtool_core::master::plan::{plan, Operation};
+use mbtool_core::master::poll::{poll, PollOptions, Tick};
+use mbtool_core::master::run::RunError;
+use mbtool_core::master::{Master, MasterError};
+use mbtool_core::model::address::Access;
+use mbtool_core::model::map::{range_points, Kind, Point};
+use mbtool_core::model::values::Value;
+
+/// How often watch reads when --poll does not say.
+const DEFAULT_INTERVAL: Duration = Duration::from_secs(1);
+
+/// The points of the command line: a map's, or those of a range.
+fn points(cli: &Cli, args: &WatchArgs, target: &Target) -> Result<(u8, Vec<Point>), Error> {
+    if let Some(path) = &args.map {
+        let names: Vec<&str> = args
+            .reference
+            .iter()
+            .chain(&args.count)
+            .chain(&args.names)
+            .map(String::as_str)
+            .collect();
+        let plan = super::map::plan(
+            cli,
+            path,
+            &args.slave,
+            &names,
+            target.is_tcp(),
+            Access::Read,
+        )?;
+        return Ok((plan.slave, plan.points));
+    }
+    if !args.names.is_empty() {
+        return Err(Error::usage(
+            "watch takes SLAVE REFERENCE [COUNT]; point names come with --map FILE",
+        ));
+    }
+    let operation = Operation::Read {
+        slave: &args.slave,
+        address: args.reference.as_deref().unwrap_or_default(),
+        table: None,
+        count: args.count.as_deref(),
+    };
+    let mut options = super::encode::plan_options(cli);
+    options.tcp = target.is_tcp();
+    let read = plan(&operation, options)?;
+    let Some((table, address)) = read.reads else {
+        return Err(Error::usage("watch reads: give a reference to read"));
+    };
+    let quantity: u32 = read
+        .requests
+        .iter()
+        .map(|r| match r {
+            mbtool_core::codec::Request::ReadCoils { quantity, .. }
+            | mbtool_core::codec::Request::ReadDiscreteInputs { quantity, .. }
+            | mbtool_core::codec::Request::ReadHoldingRegisters { quantity, .. }
+            | mbtool_core::codec::Request::ReadInputRegisters { quantity, .. } => {
+                u32::from(*quantity)
+            }
+            _ => 0,
+        })
+        .sum();
+    let points = match read.bits {
+        Some(bits) => range_points(
+            table,
+            address,
+            bits.count,
+            Some(bits.first),
+            Kind::Bool,
+            cli.data.order,
+        ),
+        None if table.is_bits() => {
+            range_points(table, address, quantity, None, Kind::Bool, cli.data.order)
+        }
+        None => {
+            let kind = Kind::Number(cli.data.value_type);
+            range_points(
+                table,
+                address,
+                quantity / u32::from(kind.width()),
+                None,
+                kind,
+                cli.data.order,
+            )
+        }
+    };
+    Ok((read.slave, points))
+}
+
+/// What the polling thread tells the screen.
+enum Update {
+    Values(Vec<(usize, Value)>, Duration),
+    Failed(RunError),
+    Disconnected(String),
+}
+
+pub fn run(cli: &Cli, args: &WatchArgs) -> Result<u8> {
+    if !std::io::stdout().is_terminal() {
+        return Err(Error::usage(
+            "watch draws on a terminal; to log values give read ... --poll INTERVAL -o csv (or --log FILE)",
+        )
+        .into());
+    }
+    let target = connection::target(cli)?;
+    let (slave, points) = points(cli, args, &target)?;
+    let title = format!(
+        " slave {slave} on {} ",
+        cli.connection.port.as_deref().unwrap_or_default()
+    );
+    let interval = cli.poll.poll.unwrap_or(DEFAULT_INTERVAL);
+    let stop = Arc::new(AtomicBool::new(false));
+    // Ctrl-C from outside the terminal (kill -INT) ends watch as q does.
+    let on_signal = stop.clone();
+    ctrlc::set_handler(move || on_signal.store(true, Ordering::SeqCst))
+        .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
+    let (updates, received) = mpsc::channel();
+    let mut state = WatchState::new(title, &points);
+    let outcome = std::thread::scope(|scope| {
+        scope.spawn(|| poll_thread(cli, &target, slave, &points, interval, &stop, &updates));
+        let mut terminal = ratatui::init();
+        let outcome = screen(&mut terminal, &mut state, &received, &stop);
+        let _ = terminal.show_cursor();
+        ratatui::restore();
+        // The polling thread ends at its next wait.
+        stop.store(true, Ordering::SeqCst);
+        outcome
+    });
+    outcome?;
+    Ok(0)
+}
+
+/// Draws until q, Esc or Ctrl-C.
+fn screen(
+    terminal: &mut ratatui::DefaultTerminal,
+    state: &mut WatchState,
+    received: &mpsc::Receiver<Update>,
+    stop: &AtomicBool,
+) -> Result<()> {
+    while !stop.load(Ordering::SeqCst) {
+        for update in received.try_iter() {
+            match update {
+                Update::Values(values, took) => {
+                    state.stats.answered(took);
+                    state.update(values);
+                }
+                Update::Failed(error) => {
+                    match &error {
+                        RunError::Exception { .. } => state.stats.exceptions += 1,
+                        RunError::Master(MasterError::Timeout { .. }) => state.stats.timeouts += 1,
+                        RunError::Master(MasterError::BadFrame { .. }) => {
+                            state.stats.bad_frames += 1;
+                        }
+                        RunError::Master(_) => state.stats.other += 1,
+                    }
+                    state.failed(error.to_string());
+                }
+                Update::Disconnected(why) => state.failed(why),
+            }
+        }
+        terminal.draw(|frame| state.render(frame))?;
+        if event::poll(Duration::from_millis(100))? {
+            if let Event::Key(key) = event::read()? {
+                if key.kind != KeyEventKind::Press {
+                    continue;
+                }
+                match key.code {
+                    KeyCode::Char('q') | KeyCode::Esc => break,
+                    KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => break,
+                    KeyCode::Char('p') => state.paused = !state.paused,
+                    KeyCode::Char('r') => state.reset(),
+                    _ => {}
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Polls on its own thread, so that the screen answers keys between reads.
+fn poll_thread(
+    cli: &Cli,
+    target: &Target,
+    slave: u8,
+    points: &[Point],
+    interval: Duration,
+    stop: &AtomicBool,
+    updates: &mpsc::Sender<Update>,
+) {
+    let refs: Vec<&Point> = points.iter().collect();
+    let connect =
+        || -> Result<Master, Error> { connection::master(cli, &target.endpoint, target.mode) };
+    let read = |master: &mut Master| {
+        let began = Instant::now();
+        read_points(master, &refs, slave, cli.data.max_per_request)
+            .map(|read| (read, began.elapsed()))
+    };
+    let wait = |time: Duration| {
+        let until = Instant::now() + time;
+        while Instant::now() < until {
+            if stop.load(Ordering::SeqCst) {
+                return true;
+            }
+            std::thread::sleep(
+                Duration::from_millis(20).min(until.saturating_duration_since(Instant::now())),
+            );
+        }
+        stop.load(Ordering::SeqCst)
+    };
+    let _ = poll(
+        None,
+        connect,
+        read,
+        PollOptions {
+            interval,
+            count: None,
+        },
+        wait,
+        |tick| {
+            let update = match tick {
+                Tick::Read((read, took)) => Update::Values(
+                    read.values
+                        .into_iter()
+                        .map(|v| (v.point, v.value))
+                        .collect(),
+                    took,
+                ),
+                Tick::Failed(error) => Update::Failed(error),
+                Tick::Disconnected(why) => Update::Disconnected(why),
+            };
+            updates
+                .send(update)
+                .map_err(|_| std::io::Error::other("the screen is gone"))
+        },
+    );
+}

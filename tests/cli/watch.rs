@@ -1,0 +1,131 @@
+//! `watch` in a real terminal (tmux): a map's points live, values changing in place as the
+//! device's data changes, the keys, and the terminal given back as it was.
+
+use std::time::Duration;
+
+use crate::support::{mbtool, serve_tcp, Terminal};
+
+const PUMP: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/pump3.txt");
+const MAP: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/pump3.csv");
+
+/// The row of the screen that shows `name`, its cells.
+fn row(screen: &[String], name: &str) -> Vec<String> {
+    screen
+        .iter()
+        .find(|line| line.trim_start_matches('│').starts_with(name))
+        .map(|line| {
+            line.trim_matches('│')
+                .split("  ")
+                .map(str::trim)
+                .filter(|cell| !cell.is_empty())
+                .map(str::to_string)
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+fn write_speed(port: &[String], speed: u32) {
+    let output = mbtool()
+        .args(port)
+        .args(["write", "17", "--map", MAP, &format!("speed={speed}")])
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+}
+
+#[test]
+fn watch_shows_a_map_live_and_gives_the_terminal_back() {
+    let (_device, port, _) = serve_tcp(&["--data", PUMP]);
+    let args = format!("{} watch 17 --map {MAP} --poll 100ms", port.join(" "));
+    let Some(terminal) = Terminal::run(&args, 100, 30) else {
+        return;
+    };
+    let within = Duration::from_secs(20);
+    let screen = terminal.wait_for(within, |s| row(s, "flow").len() >= 6);
+    // Every point, with its value, minimum, maximum and a trend.
+    assert_eq!(
+        row(&screen, "voltage")[..5],
+        ["voltage", "400001", "230.5 V", "230.5", "230.5"]
+    );
+    assert_eq!(row(&screen, "flow")[..3], ["flow", "300001", "4.5 m3/h"]);
+    assert!(
+        row(&screen, "speed")[5]
+            .chars()
+            .all(|c| "▁▂▃▄▅▆▇█".contains(c)),
+        "{screen:#?}"
+    );
+    assert!(screen.iter().any(|l| l.contains("answers ")), "{screen:#?}");
+
+    // Another process changes the device: the value changes in place, min and max follow.
+    write_speed(&port, 1600);
+    let screen = terminal.wait_for(within, |s| {
+        row(s, "speed").get(2).is_some_and(|v| v == "1600 rpm")
+    });
+    assert_eq!(
+        row(&screen, "speed")[2..5],
+        ["1600 rpm", "1450", "1600"],
+        "{screen:#?}"
+    );
+    // Redrawn in place: the header is still the first row, nothing scrolled.
+    assert!(
+        screen[1].contains("name") && screen[1].contains("trend"),
+        "{screen:#?}"
+    );
+
+    // p freezes what is shown while the device changes.
+    terminal.keys(&["p"]);
+    terminal.wait_for(within, |s| s.iter().any(|l| l.contains("PAUSED")));
+    write_speed(&port, 1700);
+    std::thread::sleep(Duration::from_millis(600));
+    assert_eq!(row(&terminal.screen(), "speed")[2], "1600 rpm");
+    // p again resumes, and r starts minimum and maximum afresh.
+    terminal.keys(&["p"]);
+    terminal.wait_for(within, |s| {
+        row(s, "speed").get(2).is_some_and(|v| v == "1700 rpm")
+    });
+    terminal.keys(&["r"]);
+    let screen = terminal.wait_for(within, |s| {
+        row(s, "speed").get(3).is_some_and(|v| v == "1700")
+    });
+    assert_eq!(
+        row(&screen, "speed")[2..5],
+        ["1700 rpm", "1700", "1700"],
+        "{screen:#?}"
+    );
+
+    // q ends with status 0, and the screen before watch is back.
+    terminal.keys(&["q"]);
+    let screen = terminal.wait_for(within, |_| terminal.done());
+    assert_eq!(terminal.status(), Some(0));
+    assert!(!screen.iter().any(|l| l.contains("voltage")), "{screen:#?}");
+}
+
+#[test]
+fn ctrl_c_gives_the_terminal_back_too() {
+    let (_device, port, _) = serve_tcp(&["--data", PUMP]);
+    let args = format!("{} watch 17 400001 2 --type f32", port.join(" "));
+    let Some(terminal) = Terminal::run(&args, 100, 30) else {
+        return;
+    };
+    let within = Duration::from_secs(20);
+    terminal.wait_for(within, |s| {
+        row(s, "400001").get(2).is_some_and(|v| v == "230.5")
+    });
+    terminal.keys(&["C-c"]);
+    let screen = terminal.wait_for(within, |_| terminal.done());
+    assert_eq!(terminal.status(), Some(0));
+    assert!(!screen.iter().any(|l| l.contains("400001")), "{screen:#?}");
+}
+
+#[test]
+fn watch_refuses_when_stdout_is_not_a_terminal() {
+    let output = mbtool()
+        .args(["--port", "sim", "watch", "17", "400108", "3"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert!(
+        String::from_utf8_lossy(&output.stderr).contains("--poll INTERVAL -o csv"),
+        "{output:?}"
+    );
+}
