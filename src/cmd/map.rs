@@ -7,7 +7,7 @@ use anyhow::Result;
 use mbtool::cli::Cli;
 use mbtool::connection::Connection;
 use mbtool::error::Error;
-use mbtool::output::{self, map::MapWriter};
+use mbtool::output::{self, map::MapRows, map::MapWriter};
 use mbtool_core::codec::Request;
 use mbtool_core::master::map::{groups, read_points, write_request, Group};
 use mbtool_core::master::plan::{parse_slave, Plan};
@@ -172,4 +172,26 @@ pub fn write(cli: &Cli, writes: &[MapWrite], connection: &mut Connection) -> Res
     }
     out.flush()?;
     Ok(0)
+}
+
+/// `read --map --poll`: the map's points read every interval, as the rows of a log.
+pub fn poll(
+    cli: &Cli,
+    plan: &MapPlan,
+    target: &mbtool::connection::Target,
+    interval: std::time::Duration,
+) -> Result<u8> {
+    let points: Vec<&Point> = plan.points.iter().collect();
+    let writer = |format| MapRows {
+        writer: MapWriter::new(format, output::colour_wanted()),
+        slave: plan.slave,
+        points: points.clone(),
+    };
+    super::poll::run(
+        cli,
+        target,
+        interval,
+        |master| read_points(master, &points, plan.slave, cli.data.max_per_request),
+        writer,
+    )
 }

@@ -6,6 +6,7 @@ mod dump;
 mod encode;
 mod info;
 mod map;
+mod poll;
 mod request;
 mod restore;
 mod scan;

@@ -1,12 +1,11 @@
 //! The commands that talk to a slave: reads, writes, `raw`, and polling.
 
 use std::io::Write;
-use std::sync::mpsc;
 use std::time::Instant;
 
 use anyhow::Result;
 
-use mbtool::cli::{Cli, OutputFormat, RequestCommand};
+use mbtool::cli::{Cli, RequestCommand};
 use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output::decode::DecodeWriter;
@@ -15,7 +14,6 @@ use mbtool::output::{self, encode::frame_text};
 use mbtool_core::codec::{Frame, Mode, Pdu, Request};
 use mbtool_core::describe::describe_frame;
 use mbtool_core::master::plan::Plan;
-use mbtool_core::master::poll::{poll, PollOptions, Tick};
 use mbtool_core::master::{Master, Reply, Traffic};
 use mbtool_core::model::address::{bit_reference, reference, Access, Table};
 
@@ -74,10 +72,6 @@ pub fn by_map(cli: &Cli, request: &RequestCommand) -> Result<Option<ByMap>> {
     let tcp = || super::encode::mode(cli) == Mode::Tcp;
     match request {
         RequestCommand::Read(args) => match &args.map {
-            Some(_) if cli.poll.poll.is_some() => Err(Error::usage(
-                "--poll repeats the read of a REFERENCE; watch 17 --map FILE shows a map live",
-            )
-            .into()),
             Some(path) => {
                 let names = args.point_names();
                 let plan = super::map::plan(cli, path, &args.slave, &names, tcp(), Access::Read)?;
@@ -107,6 +101,9 @@ pub fn by_map(cli: &Cli, request: &RequestCommand) -> Result<Option<ByMap>> {
 
 impl ByMap {
     fn run(&self, cli: &Cli) -> Result<u8> {
+        if let (ByMap::Read(plan), Some(interval)) = (self, cli.poll.poll) {
+            return super::map::poll(cli, plan, &connection::target(cli)?, interval);
+        }
         let mut connection = connection::connect(cli)?;
         if cli.output.verbose {
             connection.master.trace(tracer(connection.mode));
@@ -171,46 +168,7 @@ fn reads(
     Ok(0)
 }
 
-/// Now, as a row of a log shows it: RFC 3339 with milliseconds and the local offset.
-fn now() -> String {
-    chrono::Local::now().to_rfc3339_opts(chrono::SecondsFormat::Millis, false)
-}
-
-/// A poll's rows appended to `--log FILE`.
-struct Log {
-    writer: ReadWriter,
-    file: std::io::BufWriter<std::fs::File>,
-}
-
-impl Log {
-    fn open(cli: &Cli, path: &std::path::Path) -> Result<Log> {
-        let csv = path
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
-        let file = std::fs::OpenOptions::new()
-            .create(true)
-            .append(true)
-            .open(path)
-            .map_err(|e| anyhow::anyhow!("cannot open {}: {e}", path.display()))?;
-        let style = output::Style {
-            format: if csv {
-                OutputFormat::Csv
-            } else {
-                OutputFormat::Json
-            },
-            colour: false,
-            ..output::Style::of(cli)
-        };
-        Ok(Log {
-            writer: ReadWriter::new(style).timed(),
-            file: std::io::BufWriter::new(file),
-        })
-    }
-}
-
-/// `--poll`: a read every interval until Ctrl-C or --count, failures as rows, a dropped
-/// connection opened again; the summary on stderr at the end. The exit status is the last
-/// read's.
+/// `--poll` of a read: the rows of every poll, a dropped connection opened again.
 fn poll_reads(
     cli: &Cli,
     target: &connection::Target,
@@ -218,85 +176,20 @@ fn poll_reads(
     (table, address): (Table, u16),
     interval: std::time::Duration,
 ) -> Result<u8> {
-    let mut screen = ReadWriter::new(output::Style::of(cli)).timed();
-    let mut log = cli
-        .poll
-        .log
-        .as_deref()
-        .map(|path| Log::open(cli, path))
-        .transpose()?;
-    // Ctrl-C ends the poll between reads, so that no line is cut and the summary shows.
-    let (stop, stopped) = mpsc::channel();
-    ctrlc::set_handler(move || {
-        let _ = stop.send(());
-    })
-    .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
-    let connect = || -> Result<Master, Error> {
-        let mut master = connection::master(cli, &target.endpoint, target.mode)?;
-        if cli.output.verbose {
-            master.trace(tracer(target.mode));
-        }
-        Ok(master)
+    let writer = |format| {
+        let style = output::Style {
+            format,
+            ..output::Style::of(cli)
+        };
+        ReadWriter::new(style).timed()
     };
-    let mut out = output::stdout();
-    let mut last_status = 0;
-    let options = PollOptions {
+    super::poll::run(
+        cli,
+        target,
         interval,
-        count: cli.poll.count,
-    };
-    let stats = poll(
-        None,
-        connect,
         |master| master.read(plan, table, address),
-        options,
-        |wait| {
-            !matches!(
-                stopped.recv_timeout(wait),
-                Err(mpsc::RecvTimeoutError::Timeout)
-            )
-        },
-        |tick| {
-            let time = now();
-            let failure = match tick {
-                Tick::Read(result) => {
-                    screen.write_at(&mut out, &result, Some(&time))?;
-                    if let Some(log) = log.as_mut() {
-                        log.writer.write_at(&mut log.file, &result, Some(&time))?;
-                    }
-                    last_status = 0;
-                    None
-                }
-                Tick::Failed(error) => {
-                    let error = Error::from(error);
-                    last_status = error.exit_code();
-                    Some(error.to_string())
-                }
-                Tick::Disconnected(why) => {
-                    last_status = 1;
-                    Some(why)
-                }
-            };
-            if let Some(error) = failure {
-                if matches!(
-                    cli.output.format(),
-                    OutputFormat::Table | OutputFormat::Values
-                ) {
-                    mbtool::note!("mbtool: {error}");
-                }
-                screen.write_failure(&mut out, &time, &error)?;
-                if let Some(log) = log.as_mut() {
-                    log.writer.write_failure(&mut log.file, &time, &error)?;
-                }
-            }
-            out.flush()?;
-            if let Some(log) = log.as_mut() {
-                log.file.flush()?;
-            }
-            Ok(())
-        },
-    )?;
-    mbtool::note!("mbtool: {}", stats.summary());
-    Ok(last_status)
+        writer,
+    )
 }
 
 fn writes(cli: &Cli, master: &mut Master, plan: &Plan, out: &mut Box<dyn Write>) -> Result<u8> {

@@ -14,6 +14,8 @@ use mbtool_core::model::values::Value;
 /// The keys of CLI.md, in its order.
 #[derive(Serialize)]
 struct JsonMap<'a> {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    time: Option<&'a str>,
     slave: u8,
     points: Vec<JsonPoint<'a>>,
 }
@@ -33,6 +35,43 @@ struct JsonPoint<'a> {
 pub struct MapWriter {
     format: OutputFormat,
     colour: bool,
+    csv_header_written: bool,
+}
+
+/// A map's reads as the rows of a poll.
+pub struct MapRows<'a> {
+    pub writer: MapWriter,
+    pub slave: u8,
+    pub points: Vec<&'a Point>,
+}
+
+impl super::PollRows for MapRows<'_> {
+    type Item = MapRead;
+
+    fn row(&mut self, out: &mut dyn Write, item: &MapRead, time: &str) -> io::Result<()> {
+        self.writer
+            .write_at(out, self.slave, &self.points, item, Some(time))
+    }
+
+    fn failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()> {
+        match self.writer.format {
+            OutputFormat::Json => {
+                serde_json::to_writer(&mut *out, &JsonFailure { time, error })?;
+                writeln!(out)
+            }
+            OutputFormat::Csv => {
+                self.writer.header(out, true)?;
+                writeln!(out, "{time},,,,,,{}", csv_field(error))
+            }
+            OutputFormat::Table | OutputFormat::Values => Ok(()),
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct JsonFailure<'a> {
+    time: &'a str,
+    error: &'a str,
 }
 
 fn raw_hex(raw: &[u16]) -> String {
@@ -44,15 +83,41 @@ fn raw_hex(raw: &[u16]) -> String {
 
 impl MapWriter {
     pub fn new(format: OutputFormat, colour: bool) -> Self {
-        Self { format, colour }
+        Self {
+            format,
+            colour,
+            csv_header_written: false,
+        }
+    }
+
+    fn header(&mut self, out: &mut dyn Write, timed: bool) -> io::Result<()> {
+        if !self.csv_header_written {
+            let time = if timed { "time," } else { "" };
+            let error = if timed { ",error" } else { "" };
+            writeln!(out, "{time}name,ref,value,unit,raw{error}")?;
+            self.csv_header_written = true;
+        }
+        Ok(())
     }
 
     pub fn write(
-        &self,
+        &mut self,
         out: &mut dyn Write,
         slave: u8,
         points: &[&Point],
         read: &MapRead,
+    ) -> io::Result<()> {
+        self.write_at(out, slave, points, read, None)
+    }
+
+    /// A read, its rows starting with `time` when it is one of a poll's.
+    pub fn write_at(
+        &mut self,
+        out: &mut dyn Write,
+        slave: u8,
+        points: &[&Point],
+        read: &MapRead,
+        time: Option<&str>,
     ) -> io::Result<()> {
         let rows = read
             .values
@@ -70,7 +135,14 @@ impl MapWriter {
                         description: &point.description,
                     })
                     .collect();
-                serde_json::to_writer(&mut *out, &JsonMap { slave, points })?;
+                serde_json::to_writer(
+                    &mut *out,
+                    &JsonMap {
+                        time,
+                        slave,
+                        points,
+                    },
+                )?;
                 writeln!(out)
             }
             OutputFormat::Values => {
@@ -80,11 +152,15 @@ impl MapWriter {
                 Ok(())
             }
             OutputFormat::Csv => {
-                writeln!(out, "name,ref,value,unit,raw")?;
+                self.header(out, time.is_some())?;
                 for (point, value) in rows {
+                    let (time, error) = match time {
+                        Some(time) => (format!("{time},"), ","),
+                        None => (String::new(), ""),
+                    };
                     writeln!(
                         out,
-                        "{},{},{},{},{}",
+                        "{time}{},{},{},{},{}{error}",
                         csv_field(&point.name),
                         point.reference(),
                         csv_field(&value.value.to_string()),

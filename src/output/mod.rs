@@ -130,3 +130,13 @@ pub fn plural(count: usize, noun: &str) -> String {
         n => format!("{n} {noun}s"),
     }
 }
+
+/// The rows of a poll, each with its time: results, and the polls that gave none.
+pub trait PollRows {
+    /// What one poll read.
+    type Item;
+    /// A poll's result.
+    fn row(&mut self, out: &mut dyn Write, item: &Self::Item, time: &str) -> io::Result<()>;
+    /// A poll that gave no result: a row with its error where the format has rows.
+    fn failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()>;
+}

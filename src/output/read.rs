@@ -50,6 +50,18 @@ struct Row<'a> {
     value: Value,
 }
 
+impl super::PollRows for ReadWriter {
+    type Item = ReadResult;
+
+    fn row(&mut self, out: &mut dyn Write, item: &ReadResult, time: &str) -> io::Result<()> {
+        self.write_at(out, item, Some(time))
+    }
+
+    fn failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()> {
+        self.write_failure(out, time, error)
+    }
+}
+
 pub struct ReadWriter {
     style: Style,
     /// The previous result, when polling: changed values are marked.

@@ -170,3 +170,49 @@ fn a_poll_goes_on_through_a_serial_port_that_goes_away_and_comes_back() {
     phases.dedup();
     assert_eq!(phases, [true, false, true], "{text}");
 }
+
+#[test]
+fn a_map_polled_is_logged_point_by_point_and_failures_are_rows() {
+    let map = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/pump3.csv");
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/pump3.txt");
+    let (_device, port, _) = crate::support::serve_tcp(&["--data", data]);
+    let dir = tempfile::tempdir().unwrap();
+    let log = dir.path().join("pump.jsonl");
+    let output = mbtool()
+        .args(&port)
+        .args([
+            "read", "17", "--map", map, "speed", "flow", "--poll", "50ms", "--count", "3", "--log",
+        ])
+        .arg(&log)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+    let lines: Vec<serde_json::Value> = std::fs::read_to_string(&log)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(lines.len(), 3);
+    for line in &lines {
+        assert!(chrono::DateTime::parse_from_rfc3339(line["time"].as_str().unwrap()).is_ok());
+        assert_eq!(line["points"][0]["name"], "speed");
+        assert_eq!(line["points"][1]["value"], 4.5);
+    }
+    // Nobody there: every poll is an error row, and the exit status is the last one's.
+    let nowhere = format!("127.0.0.1:{}", free_port());
+    let output = mbtool()
+        .args([
+            "--port", &nowhere, "read", "17", "--map", map, "--poll", "50ms", "--count", "3", "-o",
+            "csv",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    let csv = String::from_utf8_lossy(&output.stdout);
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some("time,name,ref,value,unit,raw,error"));
+    assert!(
+        lines.all(|l| l.contains(",,,,,,") && l.contains("127.0.0.1")),
+        "{csv}"
+    );
+}

@@ -1,0 +1,132 @@
+//! `--poll`: a read every interval until Ctrl-C or `--count`, as the rows of a log: a
+//! failed read is a row of its own, a dropped connection is opened again, and `--log FILE`
+//! appends the same rows while the screen shows the usual output.
+
+use std::io::Write;
+use std::sync::mpsc;
+use std::time::Duration;
+
+use anyhow::Result;
+
+use mbtool::cli::{Cli, OutputFormat};
+use mbtool::connection::{self, Target};
+use mbtool::error::Error;
+use mbtool::output::{self, PollRows};
+use mbtool_core::master::poll::{poll, PollOptions, Tick};
+use mbtool_core::master::run::RunError;
+use mbtool_core::master::Master;
+
+/// Now, as a row of a log shows it: RFC 3339 with milliseconds and the local offset.
+fn now() -> String {
+    chrono::Local::now().to_rfc3339_opts(chrono::SecondsFormat::Millis, false)
+}
+
+/// The rows of a poll appended to `--log FILE`: CSV for a `.csv` name, JSON Lines else.
+struct Log<W> {
+    rows: W,
+    file: std::io::BufWriter<std::fs::File>,
+}
+
+fn open_log<W>(path: &std::path::Path, writer: impl Fn(OutputFormat) -> W) -> Result<Log<W>> {
+    let csv = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+    let file = std::fs::OpenOptions::new()
+        .create(true)
+        .append(true)
+        .open(path)
+        .map_err(|e| anyhow::anyhow!("cannot open {}: {e}", path.display()))?;
+    Ok(Log {
+        rows: writer(if csv {
+            OutputFormat::Csv
+        } else {
+            OutputFormat::Json
+        }),
+        file: std::io::BufWriter::new(file),
+    })
+}
+
+/// Polls with `read`, showing each poll as `writer` (given a format) writes it; the
+/// summary on stderr at the end. The exit status is the last poll's.
+pub fn run<W: PollRows>(
+    cli: &Cli,
+    target: &Target,
+    interval: Duration,
+    read: impl FnMut(&mut Master) -> Result<W::Item, RunError>,
+    writer: impl Fn(OutputFormat) -> W,
+) -> Result<u8> {
+    let mut screen = writer(cli.output.format());
+    let mut log = cli
+        .poll
+        .log
+        .as_deref()
+        .map(|path| open_log(path, &writer))
+        .transpose()?;
+    // Ctrl-C ends the poll between reads, so that no line is cut and the summary shows.
+    let (stop, stopped) = mpsc::channel();
+    ctrlc::set_handler(move || {
+        let _ = stop.send(());
+    })
+    .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
+    let connect = || -> Result<Master, Error> {
+        let mut master = connection::master(cli, &target.endpoint, target.mode)?;
+        if cli.output.verbose {
+            master.trace(super::request::tracer(target.mode));
+        }
+        Ok(master)
+    };
+    let mut out = output::stdout();
+    let mut last_status = 0;
+    let options = PollOptions {
+        interval,
+        count: cli.poll.count,
+    };
+    let wait = |time| {
+        !matches!(
+            stopped.recv_timeout(time),
+            Err(mpsc::RecvTimeoutError::Timeout)
+        )
+    };
+    let stats = poll(None, connect, read, options, wait, |tick| {
+        let time = now();
+        let failure = match tick {
+            Tick::Read(item) => {
+                screen.row(&mut out, &item, &time)?;
+                if let Some(log) = log.as_mut() {
+                    log.rows.row(&mut log.file, &item, &time)?;
+                }
+                last_status = 0;
+                None
+            }
+            Tick::Failed(error) => {
+                let error = Error::from(error);
+                last_status = error.exit_code();
+                Some(error.to_string())
+            }
+            Tick::Disconnected(why) => {
+                last_status = 1;
+                Some(why)
+            }
+        };
+        if let Some(error) = failure {
+            // Where the format has no rows for it, the error goes to stderr.
+            if matches!(
+                cli.output.format(),
+                OutputFormat::Table | OutputFormat::Values
+            ) {
+                mbtool::note!("mbtool: {error}");
+            }
+            screen.failure(&mut out, &time, &error)?;
+            if let Some(log) = log.as_mut() {
+                log.rows.failure(&mut log.file, &time, &error)?;
+            }
+        }
+        out.flush()?;
+        if let Some(log) = log.as_mut() {
+            log.file.flush()?;
+        }
+        Ok(())
+    })?;
+    mbtool::note!("mbtool: {}", stats.summary());
+    Ok(last_status)
+}
