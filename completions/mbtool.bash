@@ -2812,7 +2812,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__watch)
-            opts="-p -m -b -v -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --verbose --pdu-addresses --type --order --max-per-request --poll --help --version"
+            opts="-p -m -b -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --pdu-addresses --type --order --max-per-request --poll --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

@@ -25,7 +25,7 @@ A range such as 400108-400110 may stand for ADDRESS and COUNT.
 Numbers may be decimal, 0x hex or 0b binary.";
 
 /// The top of the command line: `mbtool [OPTIONS] <COMMAND> [ARGS]`.
-#[derive(Debug, Parser)]
+#[derive(Clone, Debug, Parser)]
 #[command(
     name = "mbtool",
     version,
@@ -298,7 +298,7 @@ pub struct PollArgs {
     pub log: Option<std::path::PathBuf>,
 }
 
-#[derive(Debug, Subcommand)]
+#[derive(Clone, Debug, Subcommand)]
 pub enum Command {
     #[command(flatten)]
     Request(RequestCommand),
@@ -1043,7 +1043,14 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
         ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
         ["sniff" | "serve"] => &[LINE, FORMAT],
         ["info"] => &[LINE, MASTER, FORMAT],
-        ["watch"] => &[LINE, MASTER, ADDRESSES, SPLIT, REGISTERS, &["poll"]],
+        // watch draws the screen: no -v trace, no output format.
+        ["watch"] => &[
+            LINE,
+            &["timeout", "retries", "frame_gap", "poll"],
+            ADDRESSES,
+            SPLIT,
+            REGISTERS,
+        ],
         // dump's --output is the file it writes.
         ["dump"] => &[LINE, MASTER, SPLIT, &["output"]],
         ["restore"] => &[LINE, MASTER, SPLIT],

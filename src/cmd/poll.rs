@@ -27,7 +27,10 @@ struct Log<W> {
     file: std::io::BufWriter<std::fs::File>,
 }
 
-fn open_log<W>(path: &std::path::Path, writer: impl Fn(OutputFormat) -> W) -> Result<Log<W>> {
+fn open_log<W: PollRows>(
+    path: &std::path::Path,
+    writer: impl Fn(OutputFormat) -> W,
+) -> Result<Log<W>> {
     let csv = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
@@ -36,12 +39,17 @@ fn open_log<W>(path: &std::path::Path, writer: impl Fn(OutputFormat) -> W) -> Re
         .append(true)
         .open(path)
         .map_err(|e| anyhow::anyhow!("cannot open {}: {e}", path.display()))?;
+    let mut rows = writer(if csv {
+        OutputFormat::Csv
+    } else {
+        OutputFormat::Json
+    });
+    // A log appended to has its header already.
+    if file.metadata().is_ok_and(|m| m.len() > 0) {
+        rows.continuing();
+    }
     Ok(Log {
-        rows: writer(if csv {
-            OutputFormat::Csv
-        } else {
-            OutputFormat::Json
-        }),
+        rows,
         file: std::io::BufWriter::new(file),
     })
 }
@@ -87,7 +95,8 @@ pub fn run<W: PollRows>(
             Err(mpsc::RecvTimeoutError::Timeout)
         )
     };
-    let stats = poll(None, connect, read, options, wait, |tick| {
+    let (tried, advice) = connection::tried(cli, &target.endpoint, target.mode);
+    let stats = poll(connect, read, options, wait, |tick| {
         let time = now();
         let failure = match tick {
             Tick::Read(item) => {
@@ -99,7 +108,7 @@ pub fn run<W: PollRows>(
                 None
             }
             Tick::Failed(error) => {
-                let error = Error::from(error);
+                let error = Error::from(error).tried(tried.clone(), advice);
                 last_status = error.exit_code();
                 Some(error.to_string())
             }

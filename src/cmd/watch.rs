@@ -16,7 +16,7 @@ use mbtool_core::master::map::read_points;
 use mbtool_core::master::plan::{plan, Operation};
 use mbtool_core::master::poll::{poll, PollOptions, Tick};
 use mbtool_core::master::run::RunError;
-use mbtool_core::master::{Master, MasterError};
+use mbtool_core::master::Master;
 use mbtool_core::model::address::Access;
 use mbtool_core::model::map::{range_points, Kind, Point};
 use mbtool_core::model::values::Value;
@@ -129,16 +129,23 @@ pub fn run(cli: &Cli, args: &WatchArgs) -> Result<u8> {
         .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
     let (updates, received) = mpsc::channel();
     let mut state = WatchState::new(title, &points);
-    let outcome = std::thread::scope(|scope| {
-        scope.spawn(|| poll_thread(cli, &target, slave, &points, interval, &stop, &updates));
-        let mut terminal = ratatui::init();
-        let outcome = screen(&mut terminal, &mut state, &received, &stop);
-        let _ = terminal.show_cursor();
-        ratatui::restore();
-        // The polling thread ends at its next wait.
-        stop.store(true, Ordering::SeqCst);
-        outcome
-    });
+    let poller = {
+        let (cli, points, stop) = (cli.clone(), points.clone(), stop.clone());
+        std::thread::spawn(move || {
+            poll_thread(&cli, &target, slave, &points, interval, &stop, &updates);
+        })
+    };
+    let mut terminal = ratatui::init();
+    let outcome = screen(&mut terminal, &mut state, &received, &stop);
+    let _ = terminal.show_cursor();
+    ratatui::restore();
+    // The polling thread ends at its next wait; a read still waiting for its answer is
+    // not waited for, so that q is quick whatever the timeout.
+    stop.store(true, Ordering::SeqCst);
+    let deadline = Instant::now() + Duration::from_millis(200);
+    while !poller.is_finished() && Instant::now() < deadline {
+        std::thread::sleep(Duration::from_millis(10));
+    }
     outcome?;
     Ok(0)
 }
@@ -154,21 +161,17 @@ fn screen(
         for update in received.try_iter() {
             match update {
                 Update::Values(values, took) => {
-                    state.stats.answered(took);
+                    state.stats.record(Ok(()), took);
                     state.update(values);
                 }
                 Update::Failed(error) => {
-                    match &error {
-                        RunError::Exception { .. } => state.stats.exceptions += 1,
-                        RunError::Master(MasterError::Timeout { .. }) => state.stats.timeouts += 1,
-                        RunError::Master(MasterError::BadFrame { .. }) => {
-                            state.stats.bad_frames += 1;
-                        }
-                        RunError::Master(_) => state.stats.other += 1,
-                    }
+                    state.stats.record(Err(&error), Duration::ZERO);
                     state.failed(error.to_string());
                 }
-                Update::Disconnected(why) => state.failed(why),
+                Update::Disconnected(why) => {
+                    state.stats.disconnected += 1;
+                    state.failed(why);
+                }
             }
         }
         terminal.draw(|frame| state.render(frame))?;
@@ -221,7 +224,6 @@ fn poll_thread(
         stop.load(Ordering::SeqCst)
     };
     let _ = poll(
-        None,
         connect,
         read,
         PollOptions {

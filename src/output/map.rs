@@ -56,7 +56,7 @@ impl super::PollRows for MapRows<'_> {
     fn failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()> {
         match self.writer.format {
             OutputFormat::Json => {
-                serde_json::to_writer(&mut *out, &JsonFailure { time, error })?;
+                serde_json::to_writer(&mut *out, &super::JsonFailure { time, error })?;
                 writeln!(out)
             }
             OutputFormat::Csv => {
@@ -66,12 +66,10 @@ impl super::PollRows for MapRows<'_> {
             OutputFormat::Table | OutputFormat::Values => Ok(()),
         }
     }
-}
 
-#[derive(Serialize)]
-struct JsonFailure<'a> {
-    time: &'a str,
-    error: &'a str,
+    fn continuing(&mut self) {
+        self.writer.csv_header_written = true;
+    }
 }
 
 fn raw_hex(raw: &[u16]) -> String {

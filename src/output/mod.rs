@@ -139,4 +139,13 @@ pub trait PollRows {
     fn row(&mut self, out: &mut dyn Write, item: &Self::Item, time: &str) -> io::Result<()>;
     /// A poll that gave no result: a row with its error where the format has rows.
     fn failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()>;
+    /// The rows go on a file that has its CSV header already.
+    fn continuing(&mut self);
+}
+
+/// A poll that gave no result, as a JSON row.
+#[derive(serde::Serialize)]
+pub struct JsonFailure<'a> {
+    pub time: &'a str,
+    pub error: &'a str,
 }

@@ -31,13 +31,6 @@ struct JsonRead<'a> {
     values: Vec<JsonEntry<'a>>,
 }
 
-/// A poll that gave no values, as a row of a log.
-#[derive(Serialize)]
-struct JsonFailure<'a> {
-    time: &'a str,
-    error: &'a str,
-}
-
 /// The CSV header of a poll's rows: `time` first, `error` last.
 const TIMED_CSV_HEADER: &str = "time,ref,address,hex,value,error";
 
@@ -59,6 +52,10 @@ impl super::PollRows for ReadWriter {
 
     fn failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()> {
         self.write_failure(out, time, error)
+    }
+
+    fn continuing(&mut self) {
+        self.csv_header_written = true;
     }
 }
 
@@ -90,15 +87,10 @@ impl ReadWriter {
 
     /// A poll that gave no values: a row with its error in CSV and JSON; in the table and
     /// the values, nothing (the error goes to stderr).
-    pub fn write_failure(
-        &mut self,
-        out: &mut dyn Write,
-        time: &str,
-        error: &str,
-    ) -> io::Result<()> {
+    fn write_failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()> {
         match self.style.format {
             OutputFormat::Json => {
-                serde_json::to_writer(&mut *out, &JsonFailure { time, error })?;
+                serde_json::to_writer(&mut *out, &super::JsonFailure { time, error })?;
                 writeln!(out)
             }
             OutputFormat::Csv => {

@@ -10,6 +10,7 @@ use ratatui::text::Line;
 use ratatui::widgets::{Block, Cell, Paragraph, Row, Table};
 use ratatui::Frame;
 
+use mbtool_core::master::run::PollStats;
 use mbtool_core::model::map::Point;
 use mbtool_core::model::values::Value;
 
@@ -42,53 +43,11 @@ fn number(value: &Value) -> Option<f64> {
     }
 }
 
-/// The line's statistics as watch counts them.
-#[derive(Default)]
-pub struct LineStats {
-    pub answers: u64,
-    pub timeouts: u64,
-    pub bad_frames: u64,
-    pub exceptions: u64,
-    pub other: u64,
-    fastest: Option<Duration>,
-    slowest: Duration,
-    total: Duration,
-}
-
-impl LineStats {
-    pub fn answered(&mut self, took: Duration) {
-        self.answers += 1;
-        self.fastest = Some(self.fastest.map_or(took, |f| f.min(took)));
-        self.slowest = self.slowest.max(took);
-        self.total += took;
-    }
-
-    fn line(&self) -> String {
-        let mut text = format!(
-            "answers {}  timeouts {}  bad frames {}  exceptions {}",
-            self.answers, self.timeouts, self.bad_frames, self.exceptions
-        );
-        if self.other > 0 {
-            text.push_str(&format!("  other {}", self.other));
-        }
-        if let Some(fastest) = self.fastest {
-            let mean = self.total / u32::try_from(self.answers.max(1)).unwrap_or(u32::MAX);
-            text.push_str(&format!(
-                "  response {:.1} / {:.1} / {:.1} ms",
-                fastest.as_secs_f64() * 1e3,
-                mean.as_secs_f64() * 1e3,
-                self.slowest.as_secs_f64() * 1e3
-            ));
-        }
-        text
-    }
-}
-
 /// Everything watch shows.
 pub struct WatchState {
     title: String,
     points: Vec<PointView>,
-    pub stats: LineStats,
+    pub stats: PollStats,
     pub paused: bool,
     last_error: Option<String>,
 }
@@ -110,7 +69,7 @@ impl WatchState {
                     changed: None,
                 })
                 .collect(),
-            stats: LineStats::default(),
+            stats: PollStats::default(),
             paused: false,
             last_error: None,
         }
@@ -189,18 +148,29 @@ impl WatchState {
         });
         let header = Row::new(["name", "ref", "value", "min", "max", "trend", "changed"])
             .style(Style::default().add_modifier(Modifier::BOLD));
+        // The trend and the time since a change give way first on a narrow terminal.
+        let wide = table_area.width >= 80;
         let widths = [
-            Constraint::Fill(2),
+            Constraint::Min(8),
             Constraint::Length(10),
-            Constraint::Fill(2),
-            Constraint::Fill(1),
-            Constraint::Fill(1),
-            Constraint::Length(TREND as u16),
-            Constraint::Length(10),
+            Constraint::Min(12),
+            Constraint::Min(8),
+            Constraint::Min(8),
+            Constraint::Length(if wide { TREND as u16 } else { 0 }),
+            Constraint::Length(if wide { 9 } else { 0 }),
         ];
+        // Rows past the bottom are said in the title: the border, header and border take 3.
+        let shown = usize::from(table_area.height.saturating_sub(3));
+        let title = match self.points.len() {
+            n if n > shown => format!(
+                "{}(showing {shown} of {n}: make the terminal taller) ",
+                self.title
+            ),
+            _ => self.title.clone(),
+        };
         let table = Table::new(rows, widths)
             .header(header)
-            .block(Block::bordered().title(self.title.as_str()));
+            .block(Block::bordered().title(title));
         frame.render_widget(table, table_area);
         let state = match (&self.last_error, self.paused) {
             (_, true) => "PAUSED (p resumes)".to_string(),
@@ -208,7 +178,7 @@ impl WatchState {
             (None, false) => String::new(),
         };
         let status = Paragraph::new(vec![
-            Line::from(self.stats.line()),
+            Line::from(self.stats.summary()),
             Line::from(format!("q quit  p pause  r reset   {state}")),
         ])
         .block(Block::bordered());

@@ -216,3 +216,57 @@ fn a_map_polled_is_logged_point_by_point_and_failures_are_rows() {
         "{csv}"
     );
 }
+
+#[test]
+fn a_log_appended_to_keeps_one_header_and_timeouts_say_what_was_tried() {
+    let dir = tempfile::tempdir().unwrap();
+    let log = dir.path().join("run.csv");
+    for _ in 0..2 {
+        let output = mbtool()
+            .args([
+                "--port",
+                "sim",
+                "read-holding",
+                "17",
+                "400108",
+                "--poll",
+                "10ms",
+                "--count",
+                "2",
+                "--log",
+            ])
+            .arg(&log)
+            .output()
+            .unwrap();
+        assert!(output.status.success(), "{output:?}");
+    }
+    let text = std::fs::read_to_string(&log).unwrap();
+    assert_eq!(
+        text.lines().filter(|l| l.starts_with("time,")).count(),
+        1,
+        "{text}"
+    );
+    assert_eq!(text.lines().count(), 5, "{text}");
+    let output = mbtool()
+        .args([
+            "--port",
+            "sim",
+            "--timeout",
+            "20ms",
+            "read-holding",
+            "5",
+            "400108",
+            "--poll",
+            "10ms",
+            "--count",
+            "1",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(3));
+    assert!(
+        String::from_utf8_lossy(&output.stderr)
+            .contains("from the built-in slave (sim): it answers as slave 17 only"),
+        "{output:?}"
+    );
+}

@@ -54,7 +54,10 @@ fn watch_shows_a_map_live_and_gives_the_terminal_back() {
             .all(|c| "▁▂▃▄▅▆▇█".contains(c)),
         "{screen:#?}"
     );
-    assert!(screen.iter().any(|l| l.contains("answers ")), "{screen:#?}");
+    assert!(
+        screen.iter().any(|l| l.contains(" answers, ")),
+        "{screen:#?}"
+    );
 
     // Another process changes the device: the value changes in place, min and max follow.
     write_speed(&port, 1600);
@@ -128,4 +131,25 @@ fn watch_refuses_when_stdout_is_not_a_terminal() {
         String::from_utf8_lossy(&output.stderr).contains("--poll INTERVAL -o csv"),
         "{output:?}"
     );
+}
+
+#[test]
+fn a_small_terminal_keeps_names_and_values_and_says_what_it_cannot_show() {
+    let (_device, port, _) = serve_tcp(&["--data", PUMP]);
+    let args = format!("{} watch 17 400001 10", port.join(" "));
+    let Some(terminal) = Terminal::run(&args, 60, 10) else {
+        return;
+    };
+    let screen = terminal.wait_for(Duration::from_secs(20), |s| {
+        row(s, "400001").get(2).is_some_and(|v| v == "17254")
+    });
+    assert_eq!(
+        row(&screen, "400001")[..3],
+        ["400001", "400001", "17254"],
+        "{screen:#?}"
+    );
+    assert!(screen[0].contains("showing 3 of 10"), "{screen:#?}");
+    terminal.keys(&["q"]);
+    terminal.wait_for(Duration::from_secs(20), |_| terminal.done());
+    assert_eq!(terminal.status(), Some(0));
 }

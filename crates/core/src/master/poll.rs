@@ -22,7 +22,7 @@ pub enum Tick<T> {
     Read(T),
     /// The read failed: no answer, a bad frame, an exception, or the connection dropping.
     Failed(RunError),
-    /// No connection: why the last attempt to connect failed.
+    /// No connection: why an attempt to connect failed, or that the next is awaited.
     Disconnected(String),
 }
 
@@ -59,18 +59,17 @@ impl Backoff {
     }
 }
 
-/// Polls until `count` polls or until `wait` says stop. `connect` opens the master
-/// (`master` is one opened already, if any); `read` makes one read; `tick` is told each
-/// poll's outcome; `wait` sleeps up to the time given and returns true when polling
-/// should stop (Ctrl-C).
+/// Polls until `count` polls or until `wait` says stop. `connect` opens the master;
+/// `read` makes one read; `tick` is told each poll's outcome; `wait` sleeps up to the time
+/// given and returns true when polling should stop (Ctrl-C).
 pub fn poll<T, E: std::fmt::Display>(
-    mut master: Option<Master>,
     mut connect: impl FnMut() -> Result<Master, E>,
     mut read: impl FnMut(&mut Master) -> Result<T, RunError>,
     options: PollOptions,
     mut wait: impl FnMut(Duration) -> bool,
     mut tick: impl FnMut(Tick<T>) -> std::io::Result<()>,
 ) -> std::io::Result<PollStats> {
+    let mut master: Option<Master> = None;
     let mut stats = PollStats::default();
     let mut backoff = Backoff::new();
     let start = Instant::now();
@@ -96,7 +95,7 @@ pub fn poll<T, E: std::fmt::Display>(
             tick(Tick::Disconnected(format!(
                 "not connected ({}); trying again in {} ms",
                 backoff.last_error,
-                left.as_millis()
+                left.as_millis().max(1)
             )))?;
         }
         if let Some(current) = master.as_mut() {
@@ -122,7 +121,11 @@ pub fn poll<T, E: std::fmt::Display>(
         // The next poll at start + n x interval; after a stall, the next one still ahead.
         let interval = options.interval;
         let next = if interval.is_zero() {
-            Instant::now()
+            // Back to back, but not while there is no connection to read from.
+            match master {
+                Some(_) => Instant::now(),
+                None => backoff.next_attempt,
+            }
         } else {
             let elapsed = start.elapsed().as_nanos() / interval.as_nanos();
             start + interval * u32::try_from(elapsed + 1).unwrap_or(u32::MAX)
@@ -130,5 +133,37 @@ pub fn poll<T, E: std::fmt::Display>(
         if wait(next.saturating_duration_since(Instant::now())) {
             return Ok(stats);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn back_to_back_polls_wait_for_the_next_attempt_to_connect() {
+        let mut waits = Vec::new();
+        let mut ticks = 0;
+        let stats = poll(
+            || Err::<Master, _>("refused"),
+            |_: &mut Master| Ok(()),
+            PollOptions {
+                interval: Duration::ZERO,
+                count: Some(4),
+            },
+            |time| {
+                waits.push(time);
+                false
+            },
+            |tick| {
+                assert!(matches!(tick, Tick::Disconnected(_)));
+                ticks += 1;
+                Ok(())
+            },
+        )
+        .unwrap();
+        assert_eq!((ticks, stats.disconnected), (4, 4));
+        // Without a connection, even --poll 0 waits for the back-off instead of spinning.
+        assert!(waits.iter().all(|w| *w > Duration::ZERO), "{waits:?}");
     }
 }

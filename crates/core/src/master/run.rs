@@ -226,7 +226,8 @@ pub struct PollStats {
     pub exceptions: u64,
     /// Reads that failed otherwise (the transport, say).
     pub other_errors: u64,
-    /// Polls that found the connection down, and no read made.
+    /// Polls without a connection to read from (a failed attempt to connect, or the
+    /// wait before the next one).
     pub disconnected: u64,
     fastest: Option<Duration>,
     slowest: Duration,
