@@ -309,7 +309,7 @@ pub enum Command {
 
     /// Watch values live, full screen: min, max, trend, changes
     #[command(long_about = WATCH_ABOUT)]
-    Watch(WatchArgs),
+    Watch(ReadByReferenceArgs),
 
     /// Ask a device who it is: identification and server id
     #[command(long_about = INFO_ABOUT)]
@@ -800,24 +800,6 @@ pub struct RestoreArgs {
 }
 
 #[derive(Clone, Debug, Args)]
-pub struct WatchArgs {
-    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
-    pub slave: String,
-    /// The first reference to watch (400001, 300009, 000020, 400108.05); with --map, a
-    /// point's name
-    #[arg(required_unless_present = "map", value_name = "REFERENCE")]
-    pub reference: Option<String>,
-    /// How many values [default: 1]; with --map, a point's name
-    pub count: Option<String>,
-    /// With --map: more points' names [default: every point of the map]
-    #[arg(value_name = "NAME")]
-    pub names: Vec<String>,
-    /// Watch the points of a register map (CSV, or Home Assistant YAML)
-    #[arg(long, value_name = "FILE")]
-    pub map: Option<std::path::PathBuf>,
-}
-
-#[derive(Clone, Debug, Args)]
 pub struct InfoArgs {
     /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
     pub slave: String,
@@ -1004,6 +986,7 @@ const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
     ("write-registers", "values", "VALUES", "The values, each converted by --type"),
     ("diag", "poll_count", "N", "How many round trips of return query data to time [default: 5]"),
     ("dump", "output", "FILE", "The data file to write [default: standard output]"),
+    ("watch", "map", "FILE", "Watch the points of a register map (CSV, or Home Assistant YAML)"),
 ];
 
 /// A built command's argument `id` of `command` (also under `encode`), described as

@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 use anyhow::Result;
 use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind, KeyModifiers};
 
-use mbtool::cli::{Cli, WatchArgs};
+use mbtool::cli::{Cli, ReadByReferenceArgs};
 use mbtool::connection::{self, Target};
 use mbtool::error::Error;
 use mbtool::output::watch::WatchState;
@@ -25,15 +25,13 @@ use mbtool_core::model::values::Value;
 const DEFAULT_INTERVAL: Duration = Duration::from_secs(1);
 
 /// The points of the command line: a map's, or those of a range.
-fn points(cli: &Cli, args: &WatchArgs, target: &Target) -> Result<(u8, Vec<Point>), Error> {
+fn points(
+    cli: &Cli,
+    args: &ReadByReferenceArgs,
+    target: &Target,
+) -> Result<(u8, Vec<Point>), Error> {
     if let Some(path) = &args.map {
-        let names: Vec<&str> = args
-            .reference
-            .iter()
-            .chain(&args.count)
-            .chain(&args.names)
-            .map(String::as_str)
-            .collect();
+        let names = args.point_names();
         let plan = super::map::plan(
             cli,
             path,
@@ -108,7 +106,7 @@ enum Update {
     Disconnected(String),
 }
 
-pub fn run(cli: &Cli, args: &WatchArgs) -> Result<u8> {
+pub fn run(cli: &Cli, args: &ReadByReferenceArgs) -> Result<u8> {
     if !std::io::stdout().is_terminal() {
         return Err(Error::usage(
             "watch draws on a terminal; to log values give read ... --poll INTERVAL -o csv (or --log FILE)",
@@ -135,6 +133,16 @@ pub fn run(cli: &Cli, args: &WatchArgs) -> Result<u8> {
             poll_thread(&cli, &target, slave, &points, interval, &stop, &updates);
         })
     };
+    // A terminal that goes away (its window closed, its session killed) takes the shell
+    // that started watch with it, and leaves the terminal library waiting on a line that
+    // is gone: watch ends when its parent does, with no terminal left to give back.
+    let parent = std::os::unix::process::parent_id();
+    std::thread::spawn(move || loop {
+        std::thread::sleep(Duration::from_millis(250));
+        if std::os::unix::process::parent_id() != parent {
+            std::process::exit(1);
+        }
+    });
     let mut terminal = ratatui::init();
     let outcome = screen(&mut terminal, &mut state, &received, &stop);
     let _ = terminal.show_cursor();

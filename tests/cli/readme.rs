@@ -56,10 +56,20 @@ fn path_with_mbtool() -> String {
 }
 
 fn shell(command: &str) -> Command {
+    shell_running(&format!("{{ {command} ; }} 2>&1"))
+}
+
+/// A command run in the background: bash becomes it (`exec`), so that stopping it stops
+/// the command itself, not only a shell around it.
+fn in_background(command: &str) -> Command {
+    shell_running(&format!("exec {command} 2>&1"))
+}
+
+fn shell_running(script: &str) -> Command {
     let mut shell = Command::new("bash");
     // Grouped, so that stderr joins stdout for a whole pipeline, as on a terminal.
     shell
-        .args(["-c", &format!("{{ {command} ; }} 2>&1")])
+        .args(["-c", script])
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .env("PATH", path_with_mbtool())
         .env("NO_COLOR", "1")
@@ -94,7 +104,7 @@ fn run_session(line: usize, steps: &[Step]) {
             background = None;
             String::new()
         } else if let Some(command) = command.strip_suffix(" &") {
-            let mut child = shell(command)
+            let mut child = in_background(command)
                 .stdout(Stdio::piped())
                 .spawn()
                 .expect("bash runs");

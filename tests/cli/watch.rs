@@ -153,3 +153,29 @@ fn a_small_terminal_keeps_names_and_values_and_says_what_it_cannot_show() {
     terminal.wait_for(Duration::from_secs(20), |_| terminal.done());
     assert_eq!(terminal.status(), Some(0));
 }
+
+#[test]
+fn a_terminal_that_goes_away_ends_watch() {
+    let (_device, port, tcp) = serve_tcp(&["--data", PUMP]);
+    let args = format!("{} watch 17 400001 2", port.join(" "));
+    let Some(terminal) = Terminal::run(&args, 100, 30) else {
+        return;
+    };
+    terminal.wait_for(Duration::from_secs(20), |s| {
+        row(s, "400001").get(2).is_some_and(|v| v == "17254")
+    });
+    let running = || {
+        std::process::Command::new("pgrep")
+            .args(["-f", &format!("127.0.0.1:{tcp} watch")])
+            .output()
+            .is_ok_and(|o| o.status.success())
+    };
+    assert!(running());
+    // The window is closed: the session and its terminal are gone.
+    drop(terminal);
+    let deadline = std::time::Instant::now() + Duration::from_secs(20);
+    while running() && std::time::Instant::now() < deadline {
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    assert!(!running(), "watch went on without its terminal");
+}
