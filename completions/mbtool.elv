@@ -518,7 +518,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --type 'Register value type, for showing values read and for converting values to write'
             cand --order 'Byte order of values wider than 16 bits: A is the most significant byte'
             cand --max-per-request 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows'
-            cand --poll 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again'
+            cand --poll 'How often to read [default: 1s]'
             cand --pdu-addresses 'Take every address as a 0-based protocol address, never as a Modicon reference'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'

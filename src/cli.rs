@@ -987,6 +987,7 @@ const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
     ("diag", "poll_count", "N", "How many round trips of return query data to time [default: 5]"),
     ("dump", "output", "FILE", "The data file to write [default: standard output]"),
     ("watch", "map", "FILE", "Watch the points of a register map (CSV, or Home Assistant YAML)"),
+    ("watch", "poll", "INTERVAL", "How often to read [default: 1s]"),
 ];
 
 /// A built command's argument `id` of `command` (also under `encode`), described as
@@ -1002,7 +1003,9 @@ pub fn with_argument_help(command: clap::Command) -> clap::Command {
                 Some((_, _, value_name, help)) => arg
                     .value_name(*value_name)
                     .help(*help)
-                    .help_heading(None::<&str>),
+                    .help_heading(None::<&str>)
+                    // A file is named, not picked from the formats --output lists elsewhere.
+                    .hide_possible_values(*value_name == "FILE"),
                 None => arg,
             }
         })

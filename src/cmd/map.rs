@@ -9,7 +9,7 @@ use mbtool::connection::Connection;
 use mbtool::error::Error;
 use mbtool::output::{self, map::MapRows, map::MapWriter};
 use mbtool_core::codec::Request;
-use mbtool_core::master::map::{groups, read_points, write_request, Group};
+use mbtool_core::master::map::{groups, read_points, write_request, written_value, Group};
 use mbtool_core::master::plan::{parse_slave, Plan};
 use mbtool_core::model::address::Access;
 use mbtool_core::model::map::{load, MapError, Point, RegisterMap};
@@ -102,10 +102,24 @@ impl MapPlan {
                 })?;
                 let point = find(&self.points, name, path)?;
                 let request = write_request(point, value).map_err(Error::usage)?;
+                // What the point holds of the value asked, when it holds less (2.56 in
+                // steps of 0.1 is 2.6).
+                let written = written_value(point, &request).map(|v| v.to_string());
+                let asked =
+                    |written: &str| match (written.parse::<f64>(), value.trim().parse::<f64>()) {
+                        (Ok(a), Ok(b)) if a != b => format!(" (asked {value})"),
+                        _ => String::new(),
+                    };
+                let shown = written.as_deref().unwrap_or(value);
                 Ok(MapWrite {
                     slave: point.slave.unwrap_or(self.slave),
                     request,
-                    said: format!("{name} = {value}{} ({})", unit(point), point.reference()),
+                    said: format!(
+                        "{name} = {shown}{} ({}){}",
+                        unit(point),
+                        point.reference(),
+                        asked(shown)
+                    ),
                 })
             })
             .collect()

@@ -108,7 +108,8 @@ impl DecodeWriter {
         let mut table = new_table(self.style.colour);
         // By the mode, not by the first byte: an RTU frame from slave 58 starts with ':'.
         let frame = if report.mode == Mode::Ascii.name() {
-            String::from_utf8_lossy(shown).trim_end().to_string()
+            // Escaped: bytes read as ASCII that are not may hold control characters.
+            mbtool_core::model::values::escape_text(shown.trim_ascii_end())
         } else {
             spaced_hex(shown)
         };

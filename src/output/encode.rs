@@ -20,8 +20,9 @@ struct EncodedFrame<'a> {
 /// spaced upper-case hex.
 pub fn frame_text(mode: Mode, bytes: &[u8]) -> String {
     match mode {
+        // Escaped: bytes read as ASCII that are not may hold control characters.
         Mode::Ascii => {
-            String::from_utf8_lossy(bytes.strip_suffix(b"\r\n").unwrap_or(bytes)).into_owned()
+            mbtool_core::model::values::escape_text(bytes.strip_suffix(b"\r\n").unwrap_or(bytes))
         }
         Mode::Rtu | Mode::Tcp => spaced_hex(bytes),
     }

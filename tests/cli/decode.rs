@@ -493,3 +493,16 @@ fn a_log_line_without_a_frame_is_named() {
          frame (4 bytes at least); give one frame a line\n"
     );
 }
+
+/// Bytes read as an ASCII frame that are not one are shown escaped, never raw.
+#[test]
+fn an_rtu_frame_read_as_ascii_shows_no_control_characters() {
+    let run = decode(&["--mode", "ascii", "11 03 00 6B 00 03 76 87"], b"");
+    assert_eq!(run.code, 4);
+    assert!(
+        run.stdout.contains(r"\x11\x03\0k\0\x03v\x87"),
+        "{}",
+        run.stdout
+    );
+    assert!(!run.stdout.contains('\u{11}'), "{}", run.stdout);
+}

@@ -447,3 +447,13 @@ fn a_map_is_refused_where_it_cannot_be_what_it_says() {
     let (code, _, stderr) = run(&["encode".into()], &["read", "17", "--map", &paths[2]]);
     assert_eq!(code, 0, "{stderr}");
 }
+
+#[test]
+fn a_write_says_what_the_point_holds_of_the_value_asked() {
+    let map = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/pump3.csv");
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/pump3.txt");
+    let (_device, port, _) = serve_tcp(&["--data", data]);
+    let (code, said, stderr) = run(&port, &["write", "17", "--map", map, "pressure_max=2.56"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(said, "wrote pressure_max = 2.6 bar (400020) (asked 2.56)\n");
+}

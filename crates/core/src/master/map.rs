@@ -246,6 +246,21 @@ fn round_to(value: f64, decimals: i32) -> f64 {
     }
 }
 
+/// What `request`, made by [`write_request`] for `point`, writes, as the map shows it:
+/// the value asked for, rounded to what the point can hold.
+pub fn written_value(point: &Point, request: &Request) -> Option<Value> {
+    let (registers, bits) = match request {
+        Request::WriteSingleRegister { value, .. } => (vec![*value], Vec::new()),
+        Request::WriteMultipleRegisters { values, .. } => (values.clone(), Vec::new()),
+        Request::WriteSingleCoil { value, .. } => (Vec::new(), vec![*value]),
+        Request::MaskWriteRegister { or_mask, .. } => {
+            return Some(Value::Unsigned(u64::from(*or_mask != 0)))
+        }
+        _ => return None,
+    };
+    Some(point_value(0, point, 0, &registers, &bits).value)
+}
+
 /// The request that writes `text` to `point`, scale and offset taken back out and the
 /// value checked against the point's type; the point must be writable.
 pub fn write_request(point: &Point, text: &str) -> Result<Request, String> {

@@ -361,7 +361,7 @@ fn bit_write_plan(
     let [value] = values else {
         return Err(PlanError::BitWrite);
     };
-    let on = parse_coil(value).map_err(PlanError::Value)?;
+    let on = parse_coil(value).map_err(|_| PlanError::BitWrite)?;
     let mask = 1u16 << bit;
     Ok(Plan {
         slave,

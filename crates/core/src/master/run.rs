@@ -254,12 +254,21 @@ impl PollStats {
 
     /// One line: the counts, then min / mean / max response time.
     pub fn summary(&self) -> String {
-        let mut line = format!(
-            "{} requests, {} answers, {} timeouts, {} bad frames, {} exceptions",
-            self.requests, self.answers, self.timeouts, self.bad_frames, self.exceptions
-        );
+        let count =
+            |n: u64, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
+        let mut line = [
+            count(self.requests, "request", "requests"),
+            count(self.answers, "answer", "answers"),
+            count(self.timeouts, "timeout", "timeouts"),
+            count(self.bad_frames, "bad frame", "bad frames"),
+            count(self.exceptions, "exception", "exceptions"),
+        ]
+        .join(", ");
         if self.other_errors > 0 {
-            line.push_str(&format!(", {} other errors", self.other_errors));
+            line.push_str(&format!(
+                ", {}",
+                count(self.other_errors, "other error", "other errors")
+            ));
         }
         if self.disconnected > 0 {
             line.push_str(&format!(", {} polls while disconnected", self.disconnected));
