@@ -145,15 +145,14 @@ fn unknown_command(error: &clap::Error, command: &clap::Command, path: &[&str]) 
         .skip(1)
         .try_fold(command, |parent, name| parent.find_subcommand(name));
     let nearest = parent.and_then(|parent| {
-        parent
+        let names = parent
             .get_subcommands()
             .filter(|sub| !sub.is_hide_set() && sub.get_name() != "help")
-            .map(|sub| (strsim::jaro_winkler(typed, sub.get_name()), sub.get_name()))
-            .filter(|(likeness, _)| *likeness > 0.8)
-            .max_by(|a, b| a.0.total_cmp(&b.0))
+            .map(clap::Command::get_name);
+        mbtool::nearest(typed, names)
     });
     match nearest {
-        Some((_, name)) => format!("unknown command '{typed}': did you mean '{name}'?"),
+        Some(name) => format!("unknown command '{typed}': did you mean '{name}'?"),
         None => format!("unknown command '{typed}'"),
     }
 }

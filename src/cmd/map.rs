@@ -62,12 +62,8 @@ fn pick(map: &RegisterMap, names: &[&str], path: &std::path::Path) -> Result<Vec
 /// The point named `name`, or a message that offers the nearest name.
 fn find<'a>(points: &'a [Point], name: &str, path: &std::path::Path) -> Result<&'a Point, Error> {
     points.iter().find(|p| p.name == name).ok_or_else(|| {
-        let nearest = points
-            .iter()
-            .map(|p| (strsim::jaro_winkler(name, &p.name), p.name.as_str()))
-            .filter(|(likeness, _)| *likeness > 0.8)
-            .max_by(|a, b| a.0.total_cmp(&b.0));
-        let hint = nearest.map_or(String::new(), |(_, n)| format!(": did you mean '{n}'?"));
+        let nearest = mbtool::nearest(name, points.iter().map(|p| p.name.as_str()));
+        let hint = nearest.map_or(String::new(), |n| format!(": did you mean '{n}'?"));
         Error::usage(format!(
             "{} has no point named '{name}'{hint}",
             path.display()

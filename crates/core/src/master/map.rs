@@ -5,6 +5,8 @@
 //! further on, holes included. A request that spans holes and is refused with 02 or 0B is
 //! read again one run at a time.
 
+use std::collections::VecDeque;
+
 use super::run::RunError;
 use super::Master;
 use crate::codec::{limits, ExceptionCode, Request, Response};
@@ -110,9 +112,8 @@ pub fn read_points(
 ) -> Result<MapRead, RunError> {
     let mut read = MapRead::default();
     let mut values: Vec<Option<PointValue>> = vec![None; points.len()];
-    let mut pending = groups(points, slave, max);
-    while let Some(group) = pending.first().cloned() {
-        pending.remove(0);
+    let mut pending: VecDeque<Group> = groups(points, slave, max).into();
+    while let Some(group) = pending.pop_front() {
         match master.answer(group.slave, &group.request()) {
             Ok(response) => {
                 let (registers, bits) = match response {
@@ -145,14 +146,13 @@ pub fn read_points(
                 // Read this group's points again, one run at a time.
                 read.fell_back = true;
                 let members: Vec<&Point> = group.points.iter().map(|i| points[*i]).collect();
-                let mut runs = groups(&members, slave, None);
-                for run in &mut runs {
+                // Next in line, in address order, before the groups still to read.
+                for mut run in groups(&members, slave, None).into_iter().rev() {
                     for index in &mut run.points {
                         *index = group.points[*index];
                     }
+                    pending.push_front(run);
                 }
-                runs.append(&mut pending);
-                pending = runs;
             }
             Err(error) => return Err(error),
         }
