@@ -505,6 +505,9 @@ REFERENCE[-REFERENCE] = VALUE... [TYPE [ORDER]], and only the addresses it names
   400200-400299 = 0
   000020-000023 = on off on on   # a comment
 
+A range takes one value for each address or one value for all, and each address is named \
+once; anything else is refused with the file's line.
+
 The slave answers exception 01 to a function it does not know, 02 for addresses that do not \
 exist or are --read-only, 03 for a bad quantity; it is silent for other slave ids and does \
 not answer broadcasts, which it carries out. Over TCP, unit ids 0 and 255 address the first \

@@ -9,7 +9,7 @@ const PLANT: &str = "\
 400001-400010 = 7
 400020-400025 = 1 2 3 4 5 6
 400040 = 3.14 f32
-000001-000020 = 1 0 1
+000001-000020 = 1 0 1 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0
 300001-300004 = 9
 ";
 
@@ -116,11 +116,7 @@ fn restore_puts_a_dump_back_and_reads_it_back() {
 #[test]
 fn restore_dry_run_prints_the_frames_and_needs_no_port() {
     let dir = tempfile::tempdir().unwrap();
-    let file = data_file(
-        &dir,
-        "set.txt",
-        "400002 = 3\n400002-400003 = 10 258\n000173 = on\n",
-    );
+    let file = data_file(&dir, "set.txt", "400002-400003 = 10 258\n000173 = on\n");
     let output = mbtool()
         .args(["restore", "17", &file, "--dry-run"])
         .output()
@@ -246,4 +242,63 @@ fn overlapping_ranges_are_dumped_once_and_dash_o_takes_a_file() {
         .unwrap();
     assert_eq!(output.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&output.stderr).contains("give ./json if that is meant"));
+}
+
+#[test]
+fn a_file_that_leaves_a_value_out_or_names_an_address_twice_is_refused_with_nothing_sent() {
+    let dir = tempfile::tempdir().unwrap();
+    let asked = std::sync::Arc::new(std::sync::atomic::AtomicUsize::new(0));
+    let counter = asked.clone();
+    let tcp = scripted_tcp_device(move |_, pdu| {
+        counter.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+        Act::Answer(pdu[..5].to_vec())
+    });
+    let port = format!("127.0.0.1:{tcp}");
+    for (text, line, says) in [
+        (
+            "400001-400003 = 1 2\n",
+            1,
+            "the range has 3 holding registers and the values fill 2",
+        ),
+        (
+            "000010-000012 = 1 0 1 1\n",
+            1,
+            "the range has 3 coils and the values fill 4",
+        ),
+        (
+            "400001 = 1 2\n# again\n400001 = 3\n",
+            3,
+            "400001 is given already on line 1",
+        ),
+        (
+            "400010-400020 = 0\n400005 = 1 2 3 4 5 6\n",
+            2,
+            "400010 is given already on line 1",
+        ),
+    ] {
+        let file = data_file(&dir, "r.txt", text);
+        for dry_run in [&["--dry-run"][..], &[]] {
+            let output = mbtool()
+                .args(["--port", &port, "restore", "17", &file])
+                .args(dry_run)
+                .output()
+                .unwrap();
+            assert_eq!(output.status.code(), Some(2), "{text}: {output:?}");
+            assert!(output.stdout.is_empty(), "{text}: {output:?}");
+            let stderr = String::from_utf8_lossy(&output.stderr);
+            assert!(
+                stderr.starts_with(&format!("mbtool: {file}:{line}: {says}")),
+                "{text}: {stderr}"
+            );
+            assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        }
+        // serve reads the same file the same way: it does not start.
+        let output = mbtool()
+            .args(["--port", "127.0.0.1:9", "serve", "--data", &file])
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(2), "{text}: {output:?}");
+        assert!(String::from_utf8_lossy(&output.stderr).contains(says));
+    }
+    assert_eq!(asked.load(std::sync::atomic::Ordering::SeqCst), 0);
 }

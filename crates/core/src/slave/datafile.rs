@@ -9,12 +9,15 @@
 //! 400010 = 1.5 f32 CDAB      # ... in a byte order
 //! 400020 = "PUMP 1" ascii    # text, two characters a register
 //! 400200-400299 = 0          # a range with one value: every address gets it
-//! 000020-000056 = 1 0 1 1    # coils: on/off, 1/0, true/false; the rest of the range 0
+//! 000020-000023 = 1 0 1 1    # coils: on/off, 1/0, true/false; one value an address
 //! 300009 = 10
 //! ```
 //!
 //! With a data file only the addresses it names exist; any other gets exception 02.
+//! Nothing is made up: a range takes one value for each of its addresses or one value for
+//! all of them, and an address is named once.
 
+use std::collections::BTreeMap;
 use std::path::Path;
 
 use thiserror::Error;
@@ -69,13 +72,26 @@ pub enum EntryError {
     /// A value that does not read as the table's or the type's.
     #[error("{0}")]
     Value(String),
-    /// More values than the range has addresses.
-    #[error("{values} values do not fit in a range of {size}")]
-    TooMany {
-        /// Values given.
+    /// A range given more or fewer values than it has addresses (and not one for all).
+    #[error(
+        "the range has {size} {unit}s and the values fill {values}: \
+         give one value for each address, or one value for all"
+    )]
+    RangeCount {
+        /// Addresses the values fill.
         values: usize,
         /// Addresses in the range.
         size: u32,
+        /// What an address holds: `register`, `coil`, ...
+        unit: &'static str,
+    },
+    /// An address that an earlier entry names too.
+    #[error("{reference} is given already on line {line}: give each address once")]
+    Repeated {
+        /// The first address named twice.
+        reference: String,
+        /// The earlier entry's line, from 1.
+        line: usize,
     },
     /// Values that run past address 65535.
     #[error("the values run past the last address of the table ({0})")]
@@ -100,8 +116,44 @@ fn words(text: &str) -> Result<Vec<String>, EntryError> {
     Ok(words)
 }
 
-/// One entry: fills `model` and declares the addresses it names.
-fn entry(model: &mut DataModel, line: &str) -> Result<(), EntryError> {
+/// The addresses each table's entries have named so far, as `start -> (end, line)`.
+#[derive(Default)]
+struct Claims {
+    tables: [BTreeMap<u32, (u32, usize)>; 4],
+}
+
+impl Claims {
+    /// Claims `[start, end)` of `table` for the entry on `line`, or names the first
+    /// address an earlier entry claimed.
+    fn claim(&mut self, table: Table, start: u32, end: u32, line: usize) -> Result<(), EntryError> {
+        let claims = &mut self.tables[table as usize];
+        // Only the nearest claim at or before `start`, and the first after it, can overlap:
+        // claims never overlap each other.
+        let before = claims.range(..=start).next_back();
+        let after = claims.range(start..end).next();
+        let clash = match (before, after) {
+            (Some((_, &(before_end, line))), _) if before_end > start => Some((start, line)),
+            (_, Some((&after_start, &(_, line)))) => Some((after_start, line)),
+            _ => None,
+        };
+        if let Some((address, line)) = clash {
+            return Err(EntryError::Repeated {
+                reference: reference(table, u16::try_from(address).unwrap_or(u16::MAX)),
+                line,
+            });
+        }
+        claims.insert(start, (end, line));
+        Ok(())
+    }
+}
+
+/// One entry on line `number`: fills `model` and declares the addresses it names.
+fn entry(
+    model: &mut DataModel,
+    claims: &mut Claims,
+    line: &str,
+    number: usize,
+) -> Result<(), EntryError> {
     let (target, values) = line.split_once('=').ok_or(EntryError::NotAnEntry)?;
     let span = parse_reference_span(target.trim())?;
     let mut words = words(values)?;
@@ -127,9 +179,9 @@ fn entry(model: &mut DataModel, line: &str) -> Result<(), EntryError> {
             .iter()
             .map(|w| parse_coil(w).map_err(EntryError::Value))
             .collect::<Result<Vec<_>, _>>()?;
-        let count = fill_count(span.count, bits.len())?;
-        let values = spread(&bits, count, 1);
+        let values = fill(span.count, bits, 1, span.table)?;
         check_end(span.table, start, values.len())?;
+        claims.claim(span.table, start, start + values.len() as u32, number)?;
         let table = if span.table == Table::Coils {
             &mut model.coils
         } else {
@@ -142,9 +194,9 @@ fn entry(model: &mut DataModel, line: &str) -> Result<(), EntryError> {
         for word in &words {
             registers.extend(kind.parse(word, order).map_err(EntryError::Value)?);
         }
-        let count = fill_count(span.count, registers.len())?;
-        let values = spread(&registers, count, kind.width());
+        let values = fill(span.count, registers, kind.width(), span.table)?;
         check_end(span.table, start, values.len())?;
+        claims.claim(span.table, start, start + values.len() as u32, number)?;
         let table = if span.table == Table::HoldingRegisters {
             &mut model.holding_registers
         } else {
@@ -156,25 +208,35 @@ fn entry(model: &mut DataModel, line: &str) -> Result<(), EntryError> {
     Ok(())
 }
 
-/// How many addresses an entry fills: the range's size, or as many as the values.
-fn fill_count(range: Option<u32>, values: usize) -> Result<usize, EntryError> {
-    match range {
-        None => Ok(values),
-        Some(size) if values <= size as usize => Ok(size as usize),
-        Some(size) => Err(EntryError::TooMany { values, size }),
+/// The values of an entry's addresses: as given, or, for a range given one value (`one`
+/// addresses wide: a typed value may take several registers), that value repeated over
+/// the range. Any other count for a range is refused: no address gets a value nobody gave.
+fn fill<T: Copy>(
+    range: Option<u32>,
+    values: Vec<T>,
+    one: usize,
+    table: Table,
+) -> Result<Vec<T>, EntryError> {
+    let Some(size) = range else {
+        return Ok(values);
+    };
+    let size_addresses = size as usize;
+    if values.len() == size_addresses {
+        return Ok(values);
     }
-}
-
-/// The values repeated to fill `count` addresses when one value was given for a range
-/// (`one` addresses: a typed value may take several registers); otherwise the values,
-/// then zeros.
-fn spread<T: Copy + Default>(values: &[T], count: usize, one: usize) -> Vec<T> {
-    if values.len() != one || count % one != 0 {
-        let mut out = values.to_vec();
-        out.resize(count, T::default());
-        return out;
+    if values.len() == one && size_addresses % one == 0 {
+        return Ok(values
+            .iter()
+            .copied()
+            .cycle()
+            .take(size_addresses)
+            .collect());
     }
-    values.iter().copied().cycle().take(count).collect()
+    Err(EntryError::RangeCount {
+        values: values.len(),
+        size,
+        unit: table.name(),
+    })
 }
 
 fn check_end(table: Table, start: u32, count: usize) -> Result<(), EntryError> {
@@ -196,6 +258,7 @@ pub fn parse(name: &str, text: &str) -> Result<DataModel, DataFileError> {
     ] {
         model.declare(table, 0, 0);
     }
+    let mut claims = Claims::default();
     for (number, line) in text.lines().enumerate() {
         let content = match line.find('#') {
             // A '#' inside a quoted text is part of it.
@@ -205,10 +268,12 @@ pub fn parse(name: &str, text: &str) -> Result<DataModel, DataFileError> {
         if content.trim().is_empty() {
             continue;
         }
-        entry(&mut model, content).map_err(|error| DataFileError::Line {
-            path: name.to_string(),
-            line: number + 1,
-            error,
+        entry(&mut model, &mut claims, content, number + 1).map_err(|error| {
+            DataFileError::Line {
+                path: name.to_string(),
+                line: number + 1,
+                error,
+            }
         })?;
     }
     Ok(model)
@@ -339,21 +404,12 @@ mod tests {
         );
         let error = parse("p", "000001 = 2").unwrap_err();
         assert!(error.to_string().contains("not a coil value"), "{error}");
-        let error = parse("p", "400001-400002 = 1 2 3").unwrap_err();
-        assert!(error.to_string().contains("do not fit"), "{error}");
     }
 
     #[test]
-    fn a_range_repeats_one_value_and_pads_several_with_zeros() {
-        let model = parse(
-            "data",
-            "000001-000008 = on off on on\n400001-400004 = 1.5 f32\n",
-        )
-        .unwrap();
-        assert_eq!(
-            model.coils.read(0, 8),
-            Ok(vec![true, false, true, true, false, false, false, false])
-        );
+    fn a_range_repeats_one_value() {
+        let model = parse("data", "000001-000004 = on\n400001-400004 = 1.5 f32\n").unwrap();
+        assert_eq!(model.coils.read(0, 4), Ok(vec![true; 4]));
         assert_eq!(
             model.holding_registers.read(0, 4),
             Ok(vec![0x3FC0, 0, 0x3FC0, 0])
@@ -361,14 +417,73 @@ mod tests {
     }
 
     #[test]
+    fn a_range_with_more_or_fewer_values_than_addresses_is_refused() {
+        for (text, message) in [
+            (
+                "400001-400003 = 1 2\n",
+                "d:1: the range has 3 holding registers and the values fill 2: \
+                 give one value for each address, or one value for all",
+            ),
+            (
+                "\n400001-400002 = 1 2 3\n",
+                "d:2: the range has 2 holding registers and the values fill 3: \
+                 give one value for each address, or one value for all",
+            ),
+            (
+                "000001-000008 = on off on on\n",
+                "d:1: the range has 8 coils and the values fill 4: \
+                 give one value for each address, or one value for all",
+            ),
+            (
+                // One f32 (two registers) cannot fill three registers evenly.
+                "400001-400003 = 1.5 f32\n",
+                "d:1: the range has 3 holding registers and the values fill 2: \
+                 give one value for each address, or one value for all",
+            ),
+        ] {
+            assert_eq!(parse("d", text).unwrap_err().to_string(), message);
+        }
+    }
+
+    #[test]
+    fn an_address_named_twice_is_refused_with_the_earlier_line() {
+        for (text, message) in [
+            (
+                "400001 = 1 2\n400001 = 3\n",
+                "d:2: 400001 is given already on line 1: give each address once",
+            ),
+            (
+                "400005-400010 = 0\n# note\n400001 = 1 2 3 4 5\n",
+                "d:3: 400005 is given already on line 1: give each address once",
+            ),
+            (
+                "400001-400010 = 0\n400010 = 1.5 f32\n",
+                "d:2: 400010 is given already on line 1: give each address once",
+            ),
+            (
+                "400001 = 1.5 f32\n400020 = 1\n400002 = 7\n",
+                "d:3: 400002 is given already on line 1: give each address once",
+            ),
+        ] {
+            assert_eq!(parse("d", text).unwrap_err().to_string(), message);
+        }
+        // The same address in another table is another address; ranges that meet are fine.
+        let model = parse(
+            "d",
+            "400001 = 1\n300001 = 2\n000001 = 1\n400002-400003 = 5\n",
+        );
+        assert!(model.is_ok(), "{model:?}");
+    }
+
+    #[test]
     fn rendered_entries_read_back_as_the_same_entries() {
-        let text = "400001-400040 = 7\n400050 = 1 2 3\n000001-000020 = 1 0 1\n300009 = 10\n";
+        let text =
+            "400001-400040 = 7\n400050 = 1 2 3\n000001-000020 = 1\n000021 = 0 1\n300009 = 10\n";
         let first = entries(&parse("data", text).unwrap());
         let rendered = render(&first);
         assert_eq!(entries(&parse("again", &rendered).unwrap()), first);
         // One line a run.
-        assert!(
-            rendered.starts_with("000001 = 1 0 1 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 0\n300009 = 10\n")
-        );
+        assert!(rendered
+            .starts_with("000001 = 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 0 1\n300009 = 10\n"));
     }
 }
