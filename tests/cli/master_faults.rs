@@ -25,6 +25,11 @@ struct Outcome {
 
 /// Runs mbtool with `args` against a slave that plays `acts`.
 fn against(acts: Vec<Act>, args: &[&str]) -> Outcome {
+    against_within("300ms", acts, args)
+}
+
+/// As `against`, with `--timeout timeout`.
+fn against_within(timeout: &str, acts: Vec<Act>, args: &[&str]) -> Outcome {
     let pty = Pty::new();
     let path = pty.path.clone();
     let mut port = pty.master.try_clone_native().expect("clone the pty master");
@@ -57,7 +62,7 @@ fn against(acts: Vec<Act>, args: &[&str]) -> Outcome {
         requests
     });
     let output = mbtool()
-        .args(["--port", &path, "--timeout", "300ms"])
+        .args(["--port", &path, "--timeout", timeout])
         .args(args)
         .output()
         .unwrap();
@@ -103,6 +108,74 @@ fn a_good_answer_is_read() {
     assert_eq!(outcome.code, 0, "{}", outcome.stderr);
     assert_eq!(outcome.stdout, "555\n0\n100\n");
     assert_eq!(outcome.requests, [request()]);
+}
+
+/// The first `count` values `v` for which `body(v)` framed ends in a 00 byte: a frame whose
+/// first bytes also pass their CRC, which a framer must not wait on.
+fn ending_in_00(count: usize, body: impl Fn(u16) -> Vec<u8>) -> Vec<u16> {
+    (0..=u16::MAX)
+        .filter(|v| rtu(&body(*v)).last() == Some(&0))
+        .take(count)
+        .collect()
+}
+
+#[test]
+fn an_answer_there_at_once_is_read_at_once_whatever_its_last_byte() {
+    let read_one = |v: u16| [&[0x11, 0x03, 0x02][..], &v.to_be_bytes()].concat();
+    let echo = |v: u16| [&[0x11, 0x06, 0x00, 0x6B][..], &v.to_be_bytes()].concat();
+    // Exception codes 1-255, so that each value is a different answer.
+    let exception = |code: u16| vec![0x11, 0x83, (code % 255 + 1) as u8];
+    let mut cases: Vec<(Vec<String>, Vec<u8>, i32)> = Vec::new();
+    for v in ending_in_00(3, read_one).into_iter().chain([555, 0]) {
+        let args = "read-holding 17 400108 -o values";
+        cases.push((
+            args.split(' ').map(String::from).collect(),
+            rtu(&read_one(v)),
+            0,
+        ));
+    }
+    // Behind a noise byte the answer must be supported by what follows it: the silence
+    // after it, not the timeout.
+    for v in ending_in_00(2, read_one).into_iter().chain([555]) {
+        let args = "read-holding 17 400108 -o values";
+        let answer = [&[0xFE][..], &rtu(&read_one(v))].concat();
+        cases.push((args.split(' ').map(String::from).collect(), answer, 0));
+    }
+    for v in ending_in_00(2, echo) {
+        let args = format!("write-register 17 400108 {v}");
+        cases.push((
+            args.split(' ').map(String::from).collect(),
+            rtu(&echo(v)),
+            0,
+        ));
+    }
+    for code in ending_in_00(2, exception).into_iter().chain([1]) {
+        let args = "read-holding 17 400108 -o values";
+        // Exit 10 + the exception's code.
+        let exit = 10 + i32::from(exception(code)[2]);
+        cases.push((
+            args.split(' ').map(String::from).collect(),
+            rtu(&exception(code)),
+            exit,
+        ));
+    }
+    for (args, answer, code) in cases {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let started = std::time::Instant::now();
+        let outcome = against_within("5s", vec![now(&answer)], &args);
+        let took = started.elapsed();
+        assert_eq!(
+            outcome.code, code,
+            "{args:?} {answer:02X?}: {}",
+            outcome.stderr
+        );
+        // The slave's helper waits 300 ms for requests after the last; the read must not
+        // wait for its 5 s timeout.
+        assert!(
+            took < Duration::from_secs(1),
+            "{args:?} {answer:02X?} took {took:?}"
+        );
+    }
 }
 
 #[test]

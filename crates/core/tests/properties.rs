@@ -214,6 +214,39 @@ fn decode_stream(mode: Mode, direction: Direction, stream: &[u8], piece: usize) 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2000))]
 
+    /// A master that has sent a request takes its answer on the answer's last byte, never
+    /// waiting for silence or its timeout: the layout and the request tell the length.
+    #[test]
+    fn an_awaited_answer_is_complete_on_its_last_byte(
+        slave in 1u8..=247,
+        pdu in prop_oneof![
+            response(2..=2).prop_map(Pdu::Response),
+            exception().prop_map(Pdu::Exception),
+        ],
+        piece in 1usize..300,
+    ) {
+        let bytes = Frame { mode: Mode::Rtu, slave, transaction: 0, pdu: pdu.clone() }
+            .encode()
+            .expect("generated frames keep the protocol limits");
+        // 19200 baud: a character every 573 us, silence after 2005 us.
+        let mut framer = Framer::new(Mode::Rtu, 573.0, 2005);
+        framer.await_answer(slave, pdu.function() & 0x7F);
+        let mut events = Vec::new();
+        let mut time = 1_000_000;
+        for chunk in bytes.chunks(piece) {
+            time += 573 * chunk.len() as u64;
+            framer.push_at(chunk, time, &mut events);
+        }
+        let found: Vec<&[u8]> = events
+            .iter()
+            .filter_map(|event| match event {
+                Event::Frame(found) if found.broken.is_none() => Some(found.bytes.as_slice()),
+                _ => None,
+            })
+            .collect();
+        prop_assert_eq!(found, vec![bytes.as_slice()], "{}", mbtool_core::describe::spaced_hex(&bytes));
+    }
+
     #[test]
     fn every_frame_decodes_back_to_itself(frame in frame(any_pdu())) {
         let bytes = frame.encode().expect("generated frames keep the protocol limits");

@@ -458,6 +458,21 @@ impl Framer {
             }
             return self.broken_or_noise(at, in_step);
         }
+        // In step, the answer a request awaits stands on its CRC and is complete on its
+        // last byte: its length comes from its layout, so neither a reading against the
+        // turn nor the silence after it is worth a wait (a master would wait out its
+        // silence, or its timeout, for every answer ending in 00).
+        if in_step {
+            let awaited = found.valid.iter().find(|c| {
+                let frame = &self.buffer[at..at + c.len];
+                c.known_layout
+                    && self.answers_awaited(frame, c.direction)
+                    && pdu_reads(frame, Some(Direction::Response), false)
+            });
+            if let Some(answer) = awaited {
+                return frame_of(answer);
+            }
+        }
         // While a reading that could be preferred may still complete, wait for it, unless
         // silence says no more is coming: one in the direction the bus expects (any, when
         // it expects nothing), or one a byte longer (a frame ending in 00 leaves its prefix

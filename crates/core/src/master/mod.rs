@@ -192,7 +192,19 @@ impl Master {
     /// answers were heard on the line, in the order first heard: the slaves another master
     /// is talking to.
     pub fn listen(&mut self, duration: Duration) -> std::io::Result<Vec<u8>> {
-        let deadline = Instant::now() + duration;
+        self.hear_line(Instant::now() + duration, None)
+    }
+
+    /// Waits, sending nothing, until the line has been quiet for `quiet` (for `at_most`
+    /// at the longest), and returns the slave ids whose answers were heard meanwhile:
+    /// answers that came after their request's timeout.
+    pub fn wait_quiet(&mut self, quiet: Duration, at_most: Duration) -> std::io::Result<Vec<u8>> {
+        self.hear_line(Instant::now() + at_most, Some(quiet))
+    }
+
+    /// Hears the line until `end`, or until it has been quiet for `quiet`; the slave ids
+    /// of the answers heard, in the order first heard.
+    fn hear_line(&mut self, end: Instant, quiet: Option<Duration>) -> std::io::Result<Vec<u8>> {
         let mut framer = Framer::new(
             self.options.mode,
             self.options.character.as_secs_f64() * 1e6,
@@ -202,8 +214,12 @@ impl Master {
         let mut events = Vec::new();
         let mut heard = Vec::new();
         loop {
+            let until = match quiet {
+                Some(quiet) => end.min(Instant::now() + quiet),
+                None => end,
+            };
             chunk.clear();
-            let received = self.transport.receive(&mut chunk, deadline)?;
+            let received = self.transport.receive(&mut chunk, until)?;
             if received == 0 {
                 framer.finish(&mut events);
             } else {
@@ -235,6 +251,16 @@ impl Master {
                 return Ok(heard);
             }
         }
+    }
+
+    /// The time an answer is waited for.
+    pub fn timeout(&self) -> Duration {
+        self.options.timeout
+    }
+
+    /// Waits `timeout` for answers from now on.
+    pub fn set_timeout(&mut self, timeout: Duration) {
+        self.options.timeout = timeout;
     }
 
     /// One request, with its retries.
@@ -359,6 +385,13 @@ impl Master {
         let mut chunk = Vec::with_capacity(512);
         let mut events = Vec::new();
         let mut heard = Heard::default();
+        // Bytes have come that the framer may only decide on silence (a frame found after
+        // noise, a function without a layout): the silence is waited for, not the timeout.
+        let mut undecided = false;
+        let frame_end = match self.options.mode {
+            Mode::Rtu => self.options.silence + self.options.character,
+            _ => Duration::ZERO,
+        };
         let outcome = loop {
             self.hear(&mut events, &mut heard, slave, request);
             if heard.answer.is_some() {
@@ -369,12 +402,23 @@ impl Master {
             }
             // After a frame that is wrong, wait a little for the right one (behind noise,
             // say) before giving up.
-            let wait_until = match heard.problem {
+            let give_up = match heard.problem {
                 Some(_) => deadline.min(Instant::now() + SETTLE),
                 None => deadline,
             };
+            let silence_at = Instant::now() + frame_end;
+            let wait_until = if undecided {
+                give_up.min(silence_at)
+            } else {
+                give_up
+            };
             chunk.clear();
             match self.transport.receive(&mut chunk, wait_until) {
+                Ok(0) if undecided && Instant::now() < give_up => {
+                    undecided = false;
+                    let now = self.started.elapsed().as_micros() as u64;
+                    self.framer.idle(now, &mut events);
+                }
                 Ok(0) => {
                     // No more is awaited: what is held is decided now.
                     self.framer.finish(&mut events);
@@ -391,6 +435,7 @@ impl Master {
                     if timed {
                         let now = self.started.elapsed().as_micros() as u64;
                         self.framer.push_at(&chunk, now, &mut events);
+                        undecided = self.options.mode == Mode::Rtu;
                     } else {
                         self.framer.push(&chunk, &mut events);
                     }
