@@ -67,9 +67,7 @@ pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
         },
         listen: args.listen,
         all: args.all,
-        control_id: (mode == Mode::Tcp)
-            .then(|| (1..=247).rev().find(|id| !ids.contains(id)))
-            .flatten(),
+        tell_unit_ids: mode == Mode::Tcp,
     };
     let total = (ids.len() * settings.len()) as u64;
     let bar = progress_bar(
@@ -125,6 +123,17 @@ pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
             garbled.slave,
             place.describe(garbled.setting),
             garbled.detail
+        );
+    }
+    let late: Vec<_> = report.hits.iter().filter(|hit| hit.late).collect();
+    if let Some(first) = late.first() {
+        let ids: Vec<String> = late.iter().map(|hit| hit.slave.to_string()).collect();
+        mbtool::note!(
+            "mbtool: {} {} answered after the scan's timeout of {} ms: give a longer --timeout to read {}",
+            if late.len() == 1 { "slave" } else { "slaves" },
+            ids.join(", "),
+            timeout_at(cli, settings[first.setting], options.probe).as_millis(),
+            if late.len() == 1 { "it" } else { "them" },
         );
     }
     if let Some(first) = report.reconnected.first() {

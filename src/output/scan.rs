@@ -8,7 +8,7 @@ use serde_json::json;
 use super::{csv_field, new_table};
 use crate::cli::OutputFormat;
 use mbtool_core::codec::Mode;
-use mbtool_core::master::scan::{Answer, ScanReport};
+use mbtool_core::master::scan::{Answer, Hit, ScanReport};
 use mbtool_core::model::choice::Choice;
 use mbtool_core::transport::serial::LineSettings;
 
@@ -57,6 +57,23 @@ fn answer_json(answer: Option<Answer>) -> (&'static str, Option<u8>) {
     }
 }
 
+/// How a slave found answered: a late one says so, and one asked again in vain is only
+/// known by its late answer.
+fn hit_text(hit: &Hit) -> String {
+    match (hit.late, hit.answer) {
+        (false, answer) => answer_text(answer),
+        (true, None) => "late: answered after the timeout".into(),
+        (true, answer) => format!("{}, after the timeout", answer_text(answer)),
+    }
+}
+
+fn hit_json(hit: &Hit) -> (&'static str, Option<u8>) {
+    match (hit.late, hit.answer) {
+        (true, None) => ("late", None),
+        (_, answer) => answer_json(answer),
+    }
+}
+
 pub fn write_scan(
     out: &mut dyn Write,
     format: OutputFormat,
@@ -88,12 +105,13 @@ pub fn write_scan(
     match format {
         OutputFormat::Json => {
             for hit in report.telling_hits() {
-                let (answer, exception) = answer_json(hit.answer);
+                let (answer, exception) = hit_json(hit);
                 let mut line = json!({
                     "slave": hit.slave,
                     "mode": place.mode.name(),
                     "answer": answer,
                     "confirmed": hit.confirmed,
+                    "late": hit.late,
                 });
                 place.add_setting(&mut line, hit.setting);
                 if let (Some(object), Some(code)) = (line.as_object_mut(), exception) {
@@ -123,7 +141,7 @@ pub fn write_scan(
                     "{},{},{},{}",
                     hit.slave,
                     csv_field(&place.describe(hit.setting)),
-                    csv_field(&answer_text(hit.answer)),
+                    csv_field(&hit_text(hit)),
                     hit.confirmed
                 )?;
             }
@@ -144,7 +162,7 @@ pub fn write_scan(
                 table.add_row(vec![
                     hit.slave.to_string(),
                     place.describe(hit.setting),
-                    answer_text(hit.answer),
+                    hit_text(hit),
                     confirmed.to_string(),
                 ]);
             }

@@ -7,8 +7,8 @@ use std::process::{Command as Process, Stdio};
 use std::time::Duration;
 
 use crate::support::{
-    mbtool, pymodbus_tcp, scripted_tcp_device, serve_pty, serve_tcp, Act, PtyPair, Stopped,
-    Terminal,
+    command_exists, mbtool, peer_available, pymodbus_tcp, scripted_tcp_device, serve_pty,
+    serve_tcp, Act, PtyPair, Stopped, Terminal,
 };
 
 struct Scan {
@@ -124,6 +124,38 @@ fn a_device_that_answers_every_unit_id_is_one_device() {
     );
     let json = scan(&port, &["--ids", "1-10", "--json"]);
     assert_eq!(json_lines(&json.stdout)[0]["ignores_unit_id"], true);
+    // Whatever the range, the whole of it included, and whatever values it returns.
+    let counting = std::sync::atomic::AtomicU16::new(0);
+    let tcp = scripted_tcp_device(move |unit, _| {
+        let value = counting.fetch_add(unit.into(), std::sync::atomic::Ordering::SeqCst);
+        let [hi, lo] = value.to_be_bytes();
+        Act::Answer(vec![0x03, 2, hi, lo])
+    });
+    let counting_port = vec!["--port".to_string(), format!("127.0.0.1:{tcp}")];
+    for (port, range) in [
+        (&port, None),
+        (&port, Some("0-255")),
+        (&port, Some("1-254")),
+        (&counting_port, None),
+        (&counting_port, Some("200-247")),
+    ] {
+        let args: Vec<&str> = match range {
+            Some(range) => vec!["--ids", range],
+            None => vec![],
+        };
+        let run = scan(port, &args);
+        assert_eq!(run.code, 0, "{range:?}: {}", run.stderr);
+        assert_eq!(
+            run.stdout, "every id answered (ok): the device does not tell unit ids apart\n",
+            "{range:?}"
+        );
+        assert!(
+            run.stderr
+                .contains("one device, answering every unit id alike"),
+            "{range:?}: {}",
+            run.stderr
+        );
+    }
     // Two slaves that both exist are two slaves: an id outside the scan tells them apart.
     let (_server, served, _) = serve_tcp(&["--slave", "3", "--slave", "17"]);
     let both = scan(&served, &["--ids", "3,17", "-o", "values"]);
@@ -311,4 +343,79 @@ fn bytes_that_are_no_answer_are_something_at_other_settings() {
         "{}",
         run.stderr
     );
+}
+
+/// `tests/peers/busy_line.py` playing `slaves` on a pty; the port options for it.
+fn busy_line(slaves: &[&str]) -> Option<(Stopped, Vec<String>)> {
+    if !peer_available("python3", command_exists("python3")) {
+        return None;
+    }
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/busy_line.py");
+    let mut child = Process::new("python3")
+        .arg(script)
+        .args(slaves)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let stdout = child.stdout.take().unwrap();
+    let line = Stopped(child);
+    let mut path = String::new();
+    BufReader::new(stdout).read_line(&mut path).unwrap();
+    Some((line, vec!["--port".to_string(), path.trim().to_string()]))
+}
+
+#[test]
+fn a_late_answer_is_its_own_slave_and_never_another_ids() {
+    // The late slave's answer lands while the next id, or the one after, is asked, or
+    // after the last id; another answers with a broken CRC at first; one says 02.
+    for late in ["late:150", "late:300"] {
+        let nine = format!("9={late}");
+        let last = format!("16={late}");
+        let slaves = ["3=now", &nine, "12=badcrc:1", "14=exception:2", &last];
+        let Some((_line, port)) = busy_line(&slaves) else {
+            return;
+        };
+        let run = scan(&port, &["--ids", "1-16", "--json"]);
+        assert_eq!(run.code, 0, "{}", run.stderr);
+        let found: Vec<(u64, String, bool, bool)> = json_lines(&run.stdout)
+            .iter()
+            .map(|line| {
+                (
+                    line["slave"].as_u64().unwrap(),
+                    line["answer"].as_str().unwrap().to_string(),
+                    line["confirmed"].as_bool().unwrap(),
+                    line["late"].as_bool().unwrap(),
+                )
+            })
+            .collect();
+        let mut ids: Vec<u64> = found.iter().map(|hit| hit.0).collect();
+        ids.sort_unstable();
+        assert_eq!(
+            ids,
+            [3, 9, 12, 14, 16],
+            "{late}: {}{}",
+            run.stdout,
+            run.stderr
+        );
+        for (slave, answer, confirmed, is_late) in found {
+            assert!(confirmed, "{slave}: {}", run.stdout);
+            assert_eq!(
+                is_late,
+                slave == 9 || slave == 16,
+                "{slave}: {}",
+                run.stdout
+            );
+            let expected = if slave == 14 { "exception" } else { "ok" };
+            assert_eq!(answer, expected, "{slave}");
+        }
+        // Nothing is blamed on an id that did not answer.
+        assert!(!run.stderr.contains("something answered"), "{}", run.stderr);
+        assert!(
+            run.stderr
+                .contains("mbtool: slaves 9, 16 answered after the scan's timeout of"),
+            "{}",
+            run.stderr
+        );
+    }
 }

@@ -4,7 +4,7 @@
 
 use std::time::Duration;
 
-use super::{Master, MasterError, Reply};
+use super::{BadAnswer, Master, MasterError, Reply};
 use crate::codec::{ExceptionCode, Request};
 use crate::transport::serial::Parity;
 
@@ -40,9 +40,9 @@ pub struct ScanOptions {
     pub listen: Option<Duration>,
     /// Go on through every setting instead of stopping at the first where a slave answers.
     pub all: bool,
-    /// Over TCP: an id outside `ids`, asked when every id answered, to tell a device that
-    /// answers every unit id from one that has exactly those.
-    pub control_id: Option<u8>,
+    /// Over TCP: when every id answered, tell a device that answers every unit id from one
+    /// that has exactly those (by an id outside the scan, or a reserved one inside it).
+    pub tell_unit_ids: bool,
 }
 
 /// How a slave answered.
@@ -65,6 +65,10 @@ pub struct Hit {
     pub answer: Option<Answer>,
     /// It answered when asked again (or was heard on the line).
     pub confirmed: bool,
+    /// Its answer came after the scan's timeout, while another id was being asked: it is
+    /// there, but slower than the timeout. `answer` and `confirmed` tell how it answered
+    /// when asked again and given longer.
+    pub late: bool,
 }
 
 /// Bytes that came back for an id but were no valid answer: something is there, maybe
@@ -117,6 +121,18 @@ enum Outcome {
     Present(Answer),
     Absent,
     Garbled(String),
+    /// A whole answer came, from another slave: a late answer to an earlier request.
+    Other(u8),
+}
+
+/// How many times an id is asked again when its answer was lost: garbled, or crowded out
+/// by another slave's late answer.
+const ASK_AGAIN: usize = 2;
+
+/// How long a slave heard answering late is given when it is asked again: ten timeouts,
+/// and a second at least.
+fn late_timeout(timeout: Duration) -> Duration {
+    (timeout * 10).max(Duration::from_secs(1))
 }
 
 fn probe(master: &mut Master, slave: u8, request: &Request) -> Result<Outcome, MasterError> {
@@ -133,9 +149,51 @@ fn probe(master: &mut Master, slave: u8, request: &Request) -> Result<Outcome, M
         }
         Ok(Reply::Exception(exception)) => Outcome::Present(Answer::Exception(exception.code)),
         Ok(Reply::Broadcast) | Err(MasterError::Timeout { .. }) => Outcome::Absent,
+        Err(MasterError::BadFrame {
+            reason: BadAnswer::OtherSlave(other),
+            ..
+        }) => Outcome::Other(other),
         Err(MasterError::BadFrame { reason, .. }) => Outcome::Garbled(reason.to_string()),
         Err(error) => return Err(error),
     })
+}
+
+/// Asks `slave`, and asks again after the line is quiet when the answer was lost to
+/// noise or to another slave's late answer: an answer from another id is never evidence
+/// for the id asked. The ids heard answering late are added to `late`.
+fn ask(
+    master: &mut Master,
+    slave: u8,
+    request: &Request,
+    late: &mut Vec<u8>,
+) -> Result<Outcome, MasterError> {
+    let mut outcome = probe(master, slave, request)?;
+    for _ in 0..ASK_AGAIN {
+        match outcome {
+            Outcome::Other(other) => late.push(other),
+            Outcome::Garbled(_) => {}
+            Outcome::Present(_) | Outcome::Absent => break,
+        }
+        let quiet = master.timeout();
+        late.extend(master.wait_quiet(quiet, late_timeout(quiet))?);
+        outcome = probe(master, slave, request)?;
+    }
+    Ok(match outcome {
+        Outcome::Other(other) => {
+            late.push(other);
+            Outcome::Absent
+        }
+        outcome => outcome,
+    })
+}
+
+/// Asks a slave heard answering late once more, waiting long enough for it.
+fn ask_late(master: &mut Master, slave: u8, request: &Request) -> Result<Outcome, MasterError> {
+    let timeout = master.timeout();
+    master.set_timeout(late_timeout(timeout));
+    let outcome = probe(master, slave, request);
+    master.set_timeout(timeout);
+    outcome
 }
 
 /// Scans `settings` in order. `open` gives a master at a setting (with the scan's timeout
@@ -172,12 +230,14 @@ where
                 setting: index,
                 answer: None,
                 confirmed: true,
+                late: false,
             });
         }
         let probing = report.hits.len() == found_before;
         for slave in options.ids.iter().filter(|_| probing) {
             report.requests += 1;
-            let outcome = match probe(&mut master, *slave, &request) {
+            let mut late = Vec::new();
+            let outcome = match ask(&mut master, *slave, &request, &mut late) {
                 Err(MasterError::Io(_)) => {
                     report.reconnected.push(*slave);
                     match open(setting) {
@@ -195,12 +255,13 @@ where
             match outcome {
                 Outcome::Present(answer) => {
                     report.requests += 1;
-                    let again = probe(&mut master, *slave, &request);
+                    let again = ask(&mut master, *slave, &request, &mut late);
                     report.hits.push(Hit {
                         slave: *slave,
                         setting: index,
                         answer: Some(answer),
                         confirmed: matches!(again, Ok(Outcome::Present(_))),
+                        late: false,
                     });
                 }
                 Outcome::Garbled(detail) => report.garbled.push(Garbled {
@@ -208,14 +269,27 @@ where
                     setting: index,
                     detail,
                 }),
-                Outcome::Absent => {}
+                Outcome::Absent | Outcome::Other(_) => {}
             }
+            note_late(&mut master, late, &mut report, index, options, &request);
             progress(Progress::Asked(report.hits.len()));
         }
         if probing {
-            if let Some(control) = options.control_id {
+            // The last ids' answers may still be on their way.
+            let quiet = master.timeout() * 3;
+            if let Ok(stragglers) = master.wait_quiet(quiet, late_timeout(quiet)) {
+                note_late(
+                    &mut master,
+                    stragglers,
+                    &mut report,
+                    index,
+                    options,
+                    &request,
+                );
+            }
+            if options.tell_unit_ids {
                 report.ignores_unit_id =
-                    control_answer(&mut master, control, &request, &report, options, index);
+                    control_answer(&mut master, &request, &report, options, index);
             }
         }
         if report.hits.len() > found_before && !options.all {
@@ -225,26 +299,71 @@ where
     Ok(report)
 }
 
-/// When every id asked answered at setting `index`: how the control id answers, if it does.
+/// Adds the slaves heard answering `late` at setting `index` to the report, each asked
+/// again with time enough to answer; ids outside the scan and ids found already are left.
+fn note_late(
+    master: &mut Master,
+    late: Vec<u8>,
+    report: &mut ScanReport,
+    index: usize,
+    options: &ScanOptions,
+    request: &Request,
+) {
+    for slave in late {
+        let known = report
+            .hits
+            .iter()
+            .any(|hit| hit.slave == slave && hit.setting == index);
+        if known || !options.ids.contains(&slave) {
+            continue;
+        }
+        report.requests += 1;
+        let answer = match ask_late(master, slave, request) {
+            Ok(Outcome::Present(answer)) => Some(answer),
+            _ => None,
+        };
+        report.hits.push(Hit {
+            slave,
+            setting: index,
+            answer,
+            confirmed: answer.is_some(),
+            late: true,
+        });
+    }
+}
+
+/// When every id asked answered at setting `index`: how an id that no device behind a
+/// gateway can have answers, if it does. That is a reserved id (248-254) outside the scan,
+/// else any id outside it; when the scan asked all 256, the reserved ids it asked (0 and
+/// 248-255) answered already.
 fn control_answer(
     master: &mut Master,
-    control: u8,
     request: &Request,
     report: &ScanReport,
     options: &ScanOptions,
     index: usize,
 ) -> Option<Answer> {
-    let answered = report
+    let answered: Vec<&Hit> = report
         .hits
         .iter()
         .filter(|hit| hit.setting == index)
-        .count();
-    if options.ids.len() < 2 || answered < options.ids.len() {
+        .collect();
+    if options.ids.len() < 2 || answered.len() < options.ids.len() {
         return None;
     }
-    match probe(master, control, request) {
-        Ok(Outcome::Present(answer)) => Some(answer),
-        _ => None,
+    let outside = (248..=254)
+        .chain((1..=247).rev())
+        .chain([0, 255])
+        .find(|id| !options.ids.contains(id));
+    match outside {
+        Some(control) => match probe(master, control, request) {
+            Ok(Outcome::Present(answer)) => Some(answer),
+            _ => None,
+        },
+        None => answered
+            .iter()
+            .find(|hit| hit.slave == 0 || hit.slave >= 248)
+            .and_then(|hit| hit.answer),
     }
 }
 
