@@ -487,8 +487,9 @@ Answer as a simulated slave, for testing masters and HMIs before the device arri
 tcp://ADDRESS:PORT (Modbus TCP; tcp://:5020 listens on 127.0.0.1, give 0.0.0.0 to listen on \
 every interface), or rtu+tcp://ADDRESS:PORT (RTU frames over TCP, as behind a gateway). Many \
 TCP clients are served at once; one that sends what is not Modbus, or nothing for 60 s, or \
-does not read its answers for 5 s, is dropped without holding up the others, and when 64 \
-are connected the one silent the longest makes room for a new one. Requests are framed by \
+does not read its answers for 5 s, is dropped without holding up the others. Past 64 \
+connections a new client takes the place of the one silent the longest, if it has been \
+silent for 10 s; a busy client is never closed. Requests are framed by \
 the MBAP length however the client's bytes are split or delayed, and several in one segment \
 are answered in order. On a serial line the slave finds its requests among other slaves' \
 traffic, noise and cut frames, as sniff does; an ASCII sender may pause up to a second \

@@ -302,3 +302,103 @@ fn over_rtu_tcp_a_request_that_breaks_its_layout_gets_its_exception() {
     client.read_exact(&mut answer).expect("an answer");
     assert_eq!(answer.to_vec(), crate::support::rtu(&[17, 0x83, 0x03]));
 }
+
+/// `clients` Modbus TCP clients, all connected before any sends, each then reading
+/// 400108-400110 `requests` times back to back; how many got every answer right, and the
+/// first failures.
+fn busy_clients(port: u16, clients: usize, requests: u16) -> (usize, Vec<String>) {
+    let barrier = std::sync::Arc::new(std::sync::Barrier::new(clients));
+    let workers: Vec<_> = (0..clients)
+        .map(|_| {
+            let barrier = barrier.clone();
+            thread::spawn(move || -> Result<(), String> {
+                let mut client =
+                    TcpStream::connect(("127.0.0.1", port)).map_err(|e| e.to_string())?;
+                client
+                    .set_read_timeout(Some(Duration::from_secs(30)))
+                    .map_err(|e| e.to_string())?;
+                barrier.wait();
+                let read = Pdu::Request(Request::ReadHoldingRegisters {
+                    address: 107,
+                    quantity: 3,
+                });
+                for transaction in 0..requests {
+                    client
+                        .write_all(&encode(Mode::Tcp, SERVED, transaction, read.clone()))
+                        .map_err(|e| format!("request {transaction}: {e}"))?;
+                    let mut answer = [0u8; 15];
+                    client
+                        .read_exact(&mut answer)
+                        .map_err(|e| format!("answer {transaction}: {e}"))?;
+                    if answer[..2] != transaction.to_be_bytes()
+                        || answer[9..] != [2, 43, 0, 0, 0, 100]
+                    {
+                        return Err(format!("answer {transaction}: {answer:02X?}"));
+                    }
+                }
+                Ok(())
+            })
+        })
+        .collect();
+    let mut done = 0;
+    let mut failures = Vec::new();
+    for worker in workers {
+        match worker.join().unwrap() {
+            Ok(()) => done += 1,
+            Err(failure) => failures.push(failure),
+        }
+    }
+    failures.truncate(3);
+    (done, failures)
+}
+
+/// `mbtool serve` on TCP with at most `descriptors` open files, its stderr kept.
+fn serve_limited(
+    descriptors: u32,
+    port: u16,
+) -> (crate::support::Stopped, tempfile::NamedTempFile) {
+    let stderr = tempfile::NamedTempFile::new().unwrap();
+    let child = std::process::Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -n {descriptors} && exec {} serve --port tcp://127.0.0.1:{port}",
+            assert_cmd::cargo::cargo_bin("mbtool").display()
+        ))
+        .stdout(std::process::Stdio::null())
+        .stderr(stderr.reopen().unwrap())
+        .spawn()
+        .unwrap();
+    let server = crate::support::Stopped(child);
+    assert!(wait_for_listener(port, Duration::from_secs(10)));
+    (server, stderr)
+}
+
+#[test]
+fn hundreds_of_busy_clients_are_all_served_to_the_end() {
+    let port = free_port();
+    let (_server, stderr) = serve_limited(4096, port);
+    let (done, failures) = busy_clients(port, 400, 25);
+    assert_eq!((done, failures), (400, vec![]));
+    // None was closed to make room: every one was busy.
+    let said = std::fs::read_to_string(stderr.path()).unwrap();
+    assert!(!said.contains("make room"), "{said}");
+}
+
+#[test]
+fn out_of_file_descriptors_new_clients_wait_their_turn_and_it_is_said_once() {
+    let port = free_port();
+    let (_server, stderr) = serve_limited(40, port);
+    let (done, failures) = busy_clients(port, 120, 25);
+    assert_eq!((done, failures), (120, vec![]));
+    let said = std::fs::read_to_string(stderr.path()).unwrap();
+    let told: Vec<&str> = said
+        .lines()
+        .filter(|line| line.contains("file descriptor"))
+        .collect();
+    assert_eq!(told.len(), 1, "{said}");
+    assert!(
+        told[0].starts_with("mbtool: no file descriptor left for another client (")
+            && told[0].ends_with("new clients wait until one leaves; 'ulimit -n' raises the limit"),
+        "{said}"
+    );
+}

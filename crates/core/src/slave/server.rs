@@ -52,9 +52,13 @@ const RTU_OVER_TCP_SILENCE: Duration = Duration::from_micros(1750);
 
 /// A TCP client that sends nothing for this long is dropped.
 pub const CLIENT_IDLE: Duration = Duration::from_secs(60);
-/// At most this many clients at once; a new one takes the place of the one silent the
-/// longest.
+/// Past this many clients, a new one takes the place of the one silent the longest, if
+/// that one is idle; a busy client is never closed, so a busy server serves any number.
 pub const MAX_CLIENTS: usize = 64;
+/// How often running out of file descriptors is told while it lasts.
+const RETELL_AFTER: Duration = Duration::from_secs(10);
+/// A client silent this long is idle: it may make room for a new one.
+pub const IDLE_FOR_ROOM: Duration = Duration::from_secs(10);
 /// A client that has not taken its answers within this time is dropped: it holds a
 /// thread and the answers that wait for it.
 pub const WRITE_DEADLINE: Duration = Duration::from_secs(5);
@@ -304,9 +308,28 @@ impl Server {
         on_error: Arc<dyn Fn(io::Error) + Send + Sync>,
     ) -> io::Result<()> {
         let clients: Arc<Mutex<Vec<Client>>> = Arc::new(Mutex::new(Vec::new()));
+        // When running out of file descriptors was last told: not at every refused accept.
+        let mut told_out_of_descriptors: Option<Instant> = None;
+        let mut tell_out_of_descriptors = |connected: usize| {
+            if told_out_of_descriptors.is_none_or(|at| at.elapsed() >= RETELL_AFTER) {
+                told_out_of_descriptors = Some(Instant::now());
+                on_error(out_of_descriptors_error(connected));
+            }
+        };
         for (number, stream) in listener.incoming().enumerate() {
             let stream = match stream {
                 Ok(stream) => stream,
+                Err(error) if is_out_of_descriptors(&error) => {
+                    let mut clients = lock(&clients);
+                    if !close_idlest(&mut clients, &on_error, "no file descriptor was left") {
+                        let connected = clients.len();
+                        drop(clients);
+                        tell_out_of_descriptors(connected);
+                        // The waiting client stays in the listen queue; try again soon.
+                        std::thread::sleep(Duration::from_millis(20));
+                    }
+                    continue;
+                }
                 Err(error) => {
                     on_error(error);
                     continue;
@@ -323,14 +346,21 @@ impl Server {
             });
             match registered {
                 Ok(client) => make_room_and_add(&clients, client, &on_error),
+                // Without a second handle the client cannot be closed to make room, but it
+                // is served all the same.
+                Err(error) if is_out_of_descriptors(&error) => {
+                    let connected = lock(&clients).len();
+                    tell_out_of_descriptors(connected);
+                }
                 Err(error) => {
                     on_error(error);
                     continue;
                 }
             }
             let server = Arc::clone(&self);
-            let (clients, on_error) = (Arc::clone(&clients), Arc::clone(&on_error));
-            std::thread::spawn(move || {
+            let (clients_left, on_error_there) = (Arc::clone(&clients), Arc::clone(&on_error));
+            let spawned = std::thread::Builder::new().spawn(move || {
+                let (clients, on_error) = (clients_left, on_error_there);
                 let mut rng = fastrand::Rng::with_seed(server.seed.wrapping_add(number as u64));
                 let link = Link::Tcp {
                     idle: CLIENT_IDLE,
@@ -366,6 +396,18 @@ impl Server {
                 }
                 lock(&clients).retain(|c| c.number != number);
             });
+            if let Err(error) = spawned {
+                // No thread for it: the client is closed rather than left unanswered.
+                let mut clients = lock(&clients);
+                if let Some(index) = clients.iter().position(|c| c.number == number) {
+                    let client = clients.swap_remove(index);
+                    let _ = client.handle.shutdown(Shutdown::Both);
+                }
+                on_error(io::Error::other(format!(
+                    "no thread for another client ({} connected): {error}",
+                    clients.len()
+                )));
+            }
         }
         Ok(())
     }
@@ -405,7 +447,8 @@ fn lock<T>(mutex: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
     }
 }
 
-/// Adds a client; when all places are taken, the one silent the longest is closed first.
+/// Adds a client; past [`MAX_CLIENTS`], the one silent the longest is closed first if it
+/// is idle.
 fn make_room_and_add(
     clients: &Mutex<Vec<Client>>,
     client: Client,
@@ -413,21 +456,52 @@ fn make_room_and_add(
 ) {
     let mut clients = lock(clients);
     if clients.len() >= MAX_CLIENTS {
-        if let Some(index) =
-            (0..clients.len()).min_by_key(|&i| clients[i].activity.load(Ordering::Relaxed))
-        {
-            let idlest = clients.swap_remove(index);
-            let _ = idlest.handle.shutdown(Shutdown::Both);
-            on_error(io::Error::other(format!(
-                "{MAX_CLIENTS} clients connected: the one silent the longest ({}) was closed to make room",
-                idlest
-                    .handle
-                    .peer_addr()
-                    .map_or_else(|_| "?".to_string(), |a| a.to_string())
-            )));
-        }
+        let why = format!("{} clients were connected", clients.len());
+        close_idlest(&mut clients, on_error, &why);
     }
     clients.push(client);
+}
+
+/// Closes the client silent the longest, if it has been silent for [`IDLE_FOR_ROOM`]; says
+/// so with `why`, and whether one was closed.
+fn close_idlest(
+    clients: &mut Vec<Client>,
+    on_error: &Arc<dyn Fn(io::Error) + Send + Sync>,
+    why: &str,
+) -> bool {
+    let now = now_ms();
+    let idle_ms = IDLE_FOR_ROOM.as_millis() as u64;
+    let idlest = (0..clients.len())
+        .min_by_key(|&i| clients[i].activity.load(Ordering::Relaxed))
+        .filter(|&i| now.saturating_sub(clients[i].activity.load(Ordering::Relaxed)) >= idle_ms);
+    let Some(index) = idlest else {
+        return false;
+    };
+    let idlest = clients.swap_remove(index);
+    let _ = idlest.handle.shutdown(Shutdown::Both);
+    let silent = now.saturating_sub(idlest.activity.load(Ordering::Relaxed)) / 1000;
+    on_error(io::Error::other(format!(
+        "{why}: {}, silent for {silent} s, was closed to make room",
+        idlest
+            .handle
+            .peer_addr()
+            .map_or_else(|_| "?".to_string(), |a| a.to_string())
+    )));
+    true
+}
+
+/// What the server says when the file descriptors run out with `connected` clients.
+fn out_of_descriptors_error(connected: usize) -> io::Error {
+    io::Error::other(format!(
+        "no file descriptor left for another client ({connected} connected): \
+         new clients wait until one leaves; 'ulimit -n' raises the limit"
+    ))
+}
+
+/// Whether accepting failed because the process or the system has no file descriptor left.
+fn is_out_of_descriptors(error: &io::Error) -> bool {
+    // EMFILE and ENFILE on Linux and the BSDs alike.
+    matches!(error.raw_os_error(), Some(23 | 24))
 }
 
 /// Milliseconds since 1970, for telling which client has been silent the longest.
