@@ -326,7 +326,13 @@ fn a_bad_write_by_name_is_refused_before_anything_is_sent() {
 fn every_malformed_map_names_its_file_and_line() {
     let dir = tempfile::tempdir().unwrap();
     let port = vec!["--port".to_string(), "127.0.0.1:9".to_string()];
+    let long = format!("name,ref\n{},400001\n", "n".repeat(1_000_000));
     for (name, text, says) in [
+        (
+            "long.csv",
+            long.as_str(),
+            ":2: a name of 1000000 characters: give one of at most 128",
+        ),
         (
             "dup.csv",
             "name,ref\na,400001\na,400002\n",
@@ -340,7 +346,7 @@ fn every_malformed_map_names_its_file_and_line() {
         (
             "wide.csv",
             "name,ref,type\nc,000001,f32\n",
-            ":2: type f32 does not fit in a coil",
+            ":2: c: type f32 does not fit in a coil",
         ),
         (
             "column.csv",
@@ -356,6 +362,31 @@ fn every_malformed_map_names_its_file_and_line() {
             "bad.yaml",
             "modbus:\n  - sensors:\n      - {name: e, address: 0, data_type: int12}\n",
             ":3: e: data_type 'int12'",
+        ),
+        (
+            "nan.yaml",
+            "modbus:\n  - sensors:\n      - {name: f, address: 0, scale: .nan}\n",
+            ":3: f: scale NaN: give a finite number",
+        ),
+        (
+            "nan.csv",
+            "name,ref,offset\nf,400001,inf\n",
+            ":2: f: offset inf: give a finite number",
+        ),
+        (
+            "count.yaml",
+            "modbus:\n  - sensors:\n      - name: g\n        address: 0\n        data_type: int32\n        count: 1\n",
+            ":3: g: count 1: int32 takes 2 registers; leave count out",
+        ),
+        (
+            "switch.yaml",
+            "modbus:\n  - switches:\n      - {name: h, address: 0, write_type: input}\n",
+            ":3: h: write_type 'input': a switch writes",
+        ),
+        (
+            "coil.yaml",
+            "modbus:\n  - binary_sensors:\n      - {name: i, address: 0, data_type: float32}\n",
+            ":3: i: type f32 does not fit in a coil",
         ),
     ] {
         let path = files(&dir, &[(name, text)]).remove(0);

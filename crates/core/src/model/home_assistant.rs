@@ -2,9 +2,10 @@
 //! of `sensors`, `binary_sensors`, `switches` and `climates` is a point.
 
 use serde::Deserialize;
+use serde_saphyr::Spanned;
 
 use super::address::Table;
-use super::map::{at, check, Kind, MapError, Point, RegisterMap};
+use super::map::{at, check, check_name, checked, Kind, MapError, Point, RegisterMap};
 use super::values::{ByteOrder, ValueType};
 
 /// The configuration with its `modbus:` key.
@@ -29,7 +30,7 @@ struct Hub {
 /// ...) are Home Assistant's own.
 #[derive(Deserialize)]
 struct Entry {
-    name: String,
+    name: Spanned<String>,
     address: u32,
     input_type: Option<String>,
     write_type: Option<String>,
@@ -52,22 +53,6 @@ enum Platform {
     Climate,
 }
 
-/// The line where an entry named `name` starts, for messages.
-fn line_of(text: &str, name: &str) -> usize {
-    let names_it = |line: &str| {
-        line.match_indices("name:").any(|(at, key)| {
-            let before = line[..at].trim_end();
-            let starts_key = before.is_empty() || before.ends_with(['-', '{', ',']);
-            let value = line[at + key.len()..]
-                .split([',', '}'])
-                .next()
-                .unwrap_or_default();
-            starts_key && value.trim().trim_matches(['"', '\'']) == name
-        })
-    };
-    text.lines().position(names_it).map_or(1, |i| i + 1)
-}
-
 fn table_of(platform: Platform, entry: &Entry) -> Result<Table, String> {
     let (key, given) = match platform {
         Platform::Switch => ("write_type", entry.write_type.as_deref()),
@@ -77,22 +62,48 @@ fn table_of(platform: Platform, entry: &Entry) -> Result<Table, String> {
         Platform::BinarySensor => "coil",
         _ => "holding",
     };
-    match given.unwrap_or(default) {
-        "holding" | "holdings" => Ok(Table::HoldingRegisters),
-        "input" => Ok(Table::InputRegisters),
-        "coil" | "coils" => Ok(Table::Coils),
-        "discrete_input" => Ok(Table::DiscreteInputs),
-        other => Err(format!(
-            "{key} '{other}': give holding, input, coil or discrete_input"
+    let table = match given.unwrap_or(default) {
+        "holding" | "holdings" => Table::HoldingRegisters,
+        "input" => Table::InputRegisters,
+        "coil" | "coils" => Table::Coils,
+        "discrete_input" => Table::DiscreteInputs,
+        other => {
+            return Err(format!(
+                "{key} '{other}': give holding, input, coil or discrete_input"
+            ))
+        }
+    };
+    if platform == Platform::Switch && !table.is_writable() {
+        return Err(format!(
+            "{key} '{}': a switch writes, and {}s are read-only; give holding or coil",
+            given.unwrap_or(default),
+            table.name()
+        ));
+    }
+    Ok(table)
+}
+
+/// The point's kind from `data_type`, and `count` checked against it: a count that is not
+/// the registers the type takes would read something else than the type says.
+fn kind_of(entry: &Entry, table: Table) -> Result<Kind, String> {
+    let kind = match (entry.data_type.as_deref(), table.is_bits()) {
+        (None, true) => Kind::Bool,
+        (None, false) => Kind::Number(ValueType::I16),
+        (Some(data_type), _) => number_kind(data_type, entry.count)?,
+    };
+    match (entry.count, kind) {
+        (Some(count), Kind::Bool | Kind::Number(_)) if count != kind.width() => Err(format!(
+            "count {count}: {} takes {} {}; leave count out",
+            entry.data_type.as_deref().unwrap_or("a bit"),
+            kind.width(),
+            if table.is_bits() { "bit" } else { "registers" }
         )),
+        _ => Ok(kind),
     }
 }
 
-fn kind_of(entry: &Entry, table: Table) -> Result<Kind, String> {
-    if table.is_bits() {
-        return Ok(Kind::Bool);
-    }
-    let value_type = match entry.data_type.as_deref().unwrap_or("int16") {
+fn number_kind(data_type: &str, count: Option<u16>) -> Result<Kind, String> {
+    let value_type = match data_type {
         "int16" | "int" => ValueType::I16,
         "uint16" | "uint" => ValueType::U16,
         "int32" => ValueType::I32,
@@ -102,7 +113,7 @@ fn kind_of(entry: &Entry, table: Table) -> Result<Kind, String> {
         "float32" | "float" => ValueType::F32,
         "float64" => ValueType::F64,
         "string" => {
-            return match entry.count {
+            return match count {
                 Some(count @ 1..=125) => Ok(Kind::Text(count)),
                 _ => Err("data_type string needs count: the registers it takes, 1 to 125".into()),
             }
@@ -134,10 +145,16 @@ fn point(platform: Platform, entry: Entry, line: usize) -> Result<Point, String>
     let table = table_of(platform, &entry)?;
     let kind = kind_of(&entry, table)?;
     let address = u16::try_from(entry.address)
-        .ok()
-        .filter(|a| u32::from(*a) + u32::from(kind.width()) <= 65536)
-        .ok_or_else(|| format!("address {} is past the last, 65535", entry.address))?;
-    Ok(Point {
+        .map_err(|_| format!("address {} is past the last, 65535", entry.address))?;
+    let slave = match (entry.slave, entry.device_address) {
+        (Some(slave), Some(other)) if slave != other => {
+            return Err(format!(
+                "slave {slave} and device_address {other} disagree; give one"
+            ))
+        }
+        (slave, other) => slave.or(other),
+    };
+    checked(Point {
         table,
         address,
         bit: None,
@@ -147,10 +164,10 @@ fn point(platform: Platform, entry: Entry, line: usize) -> Result<Point, String>
         offset: entry.offset.unwrap_or(0.0),
         unit: entry.unit_of_measurement.unwrap_or_default(),
         writable: platform == Platform::Switch && table.is_writable(),
-        slave: entry.slave.or(entry.device_address),
+        slave,
         description: String::new(),
         line,
-        name: entry.name,
+        name: entry.name.value,
     })
 }
 
@@ -165,15 +182,18 @@ pub fn parse(file: &str, text: &str) -> Result<RegisterMap, MapError> {
         .find(|line| !line.trim().is_empty() && !line.trim_start().starts_with('#'))
         .unwrap_or_default();
     let unreadable = |e: serde_saphyr::Error| {
-        let message = e.to_string();
-        at(
-            file,
-            1,
-            format!(
+        let error = match e.without_snippet() {
+            // The YAML reader's guard against files that expand without end (aliases of
+            // aliases); a real configuration is far below it.
+            serde_saphyr::Error::Budget { .. } => {
+                "larger than a YAML map may be (about 40,000 points): give a CSV map".to_string()
+            }
+            e => format!(
                 "not a Home Assistant modbus configuration: {}",
-                message.lines().next().unwrap_or_default()
+                e.to_string().lines().next().unwrap_or_default()
             ),
-        )
+        };
+        at(file, 1, error)
     };
     let hubs: Vec<Hub> = if text.lines().any(|line| line.starts_with("modbus:")) {
         serde_saphyr::from_str::<Configuration>(text)
@@ -194,8 +214,9 @@ pub fn parse(file: &str, text: &str) -> Result<RegisterMap, MapError> {
         ];
         for (platform, entries) in lists {
             for entry in entries {
-                let line = line_of(text, &entry.name);
-                let name = entry.name.clone();
+                let line = usize::try_from(entry.name.referenced.line()).unwrap_or(1);
+                check_name(&entry.name.value).map_err(|error| at(file, line, error))?;
+                let name = entry.name.value.clone();
                 let point = point(platform, entry, line)
                     .map_err(|error| at(file, line, format!("{name}: {error}")))?;
                 map.points.push(point);

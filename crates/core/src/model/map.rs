@@ -174,10 +174,10 @@ fn csv_fields(line: &str) -> Result<Vec<String>, String> {
     Ok(fields.into_iter().map(|f| f.trim().to_string()).collect())
 }
 
-/// A point's kind from its `type` column and table.
+/// A point's kind from its `type` column; whether it fits its table is `checked`'s to say.
 fn kind_of(text: &str, table: Table, bit: Option<u8>) -> Result<Kind, String> {
     let bits = table.is_bits() || bit.is_some();
-    let kind = match text.to_ascii_lowercase().as_str() {
+    Ok(match text.to_ascii_lowercase().as_str() {
         "" if bits => Kind::Bool,
         "" => Kind::Number(ValueType::U16),
         "bool" => Kind::Bool,
@@ -192,23 +192,86 @@ fn kind_of(text: &str, table: Table, bit: Option<u8>) -> Result<Kind, String> {
                 format!("type '{text}': give u16, i16, u32, i32, f32, u64, i64, f64, bool or string:N")
             })?),
         },
-    };
-    match (kind, bits) {
-        (Kind::Bool, true) | (Kind::Number(_) | Kind::Text(_), false) => Ok(kind),
-        (Kind::Bool, false) => Err(format!(
-            "type bool is for coils, discrete inputs and bits of registers, not {}s",
-            table.name()
-        )),
-        (_, true) => Err(format!(
-            "type {} does not fit in {}: it is one bit",
-            kind.name(),
-            if bit.is_some() {
-                "a bit of a register".to_string()
-            } else {
-                format!("a {}", table.name())
-            }
-        )),
+    })
+}
+
+/// The longest name a point may have. Longer is a mistake (a shifted column, a paste gone
+/// wrong), and no table could show it.
+pub const LONGEST_NAME: usize = 128;
+/// The longest unit a point may have.
+pub const LONGEST_UNIT: usize = 32;
+
+fn too_long(text: &str, most: usize) -> bool {
+    text.len() > most && text.chars().nth(most).is_some()
+}
+
+/// A point's name as every map must give it, checked before anything else of its line so
+/// that no message repeats a name that is not one.
+pub(super) fn check_name(name: &str) -> Result<(), String> {
+    if name.is_empty() {
+        return Err("a point needs a name".into());
     }
+    if too_long(name, LONGEST_NAME) {
+        return Err(format!(
+            "a name of {} characters: give one of at most {LONGEST_NAME}",
+            name.chars().count()
+        ));
+    }
+    if name.chars().any(char::is_control) {
+        return Err("a name may not hold control characters (tabs, line breaks)".into());
+    }
+    Ok(())
+}
+
+/// The rules every point obeys, whichever file it was read from: a unit of sensible
+/// length, a kind that fits its table, a value that ends by the last address, and a scale
+/// and offset that are numbers (a scale not 0). The message leaves out the point's name;
+/// the reader puts it in front.
+pub(super) fn checked(point: Point) -> Result<Point, String> {
+    if too_long(&point.unit, LONGEST_UNIT) {
+        return Err(format!(
+            "a unit of {} characters: give one of at most {LONGEST_UNIT}",
+            point.unit.chars().count()
+        ));
+    }
+    let bits = point.table.is_bits() || point.bit.is_some();
+    match (point.kind, bits) {
+        (Kind::Bool, true) | (Kind::Number(_) | Kind::Text(_), false) => {}
+        (Kind::Bool, false) => {
+            return Err(format!(
+                "type bool is for coils, discrete inputs and bits of registers, not {}s",
+                point.table.name()
+            ))
+        }
+        (kind, true) => {
+            return Err(format!(
+                "type {} does not fit in {}: it is one bit",
+                kind.name(),
+                if point.bit.is_some() {
+                    "a bit of a register".to_string()
+                } else {
+                    format!("a {}", point.table.name())
+                }
+            ))
+        }
+    }
+    if point.span().1 > 65536 {
+        return Err(format!(
+            "a {} at {} runs past the last address",
+            point.kind.name(),
+            point.reference()
+        ));
+    }
+    if !point.scale.is_finite() {
+        return Err(format!("scale {}: give a finite number", point.scale));
+    }
+    if point.scale == 0.0 {
+        return Err("scale 0 would show every value as the offset".into());
+    }
+    if !point.offset.is_finite() {
+        return Err(format!("offset {}: give a finite number", point.offset));
+    }
+    Ok(point)
 }
 
 fn number(text: &str, what: &str, default: f64) -> Result<f64, String> {
@@ -216,9 +279,7 @@ fn number(text: &str, what: &str, default: f64) -> Result<f64, String> {
         return Ok(default);
     }
     text.parse::<f64>()
-        .ok()
-        .filter(|v| v.is_finite())
-        .ok_or_else(|| format!("{what} '{text}' is not a number"))
+        .map_err(|_| format!("{what} '{text}' is not a number"))
 }
 
 /// One line of a CSV map, its columns by the header's order.
@@ -239,9 +300,7 @@ fn csv_point(columns: &[usize], fields: &[String], line: usize) -> Result<Point,
         ));
     }
     let name = field("name");
-    if name.is_empty() {
-        return Err("a point needs a name".into());
-    }
+    check_name(name)?;
     let (reference_text, bit) = split_bit(field("ref")).map_err(|e| e.to_string())?;
     if reference_text.is_empty() {
         return Err(format!("{name} has no ref"));
@@ -254,13 +313,6 @@ fn csv_point(columns: &[usize], fields: &[String], line: usize) -> Result<Point,
         ));
     }
     let kind = kind_of(field("type"), table, bit)?;
-    if u32::from(address) + u32::from(kind.width()) > 65536 {
-        return Err(format!(
-            "{name}: a {} at {} runs past the last address",
-            kind.name(),
-            field("ref")
-        ));
-    }
     let order = match field("order") {
         "" => ByteOrder::default(),
         text => ByteOrder::from_name(&text.to_ascii_uppercase())
@@ -287,21 +339,14 @@ fn csv_point(columns: &[usize], fields: &[String], line: usize) -> Result<Point,
             Some(crate::model::number::parse_in_range(text, 0, 255, "slave").map(|id| id as u8)?)
         }
     };
-    Ok(Point {
+    checked(Point {
         name: name.to_string(),
         table,
         address,
         bit,
         kind,
         order,
-        scale: match number(field("scale"), "scale", 1.0)? {
-            0.0 => {
-                return Err(format!(
-                    "{name}: scale 0 would show every value as the offset"
-                ))
-            }
-            scale => scale,
-        },
+        scale: number(field("scale"), "scale", 1.0)?,
         offset: number(field("offset"), "offset", 0.0)?,
         unit: field("unit").to_string(),
         writable,
@@ -309,6 +354,7 @@ fn csv_point(columns: &[usize], fields: &[String], line: usize) -> Result<Point,
         description: field("description").to_string(),
         line,
     })
+    .map_err(|error| format!("{name}: {error}"))
 }
 
 /// Reads a CSV map: a header row naming the columns (in any order, any case), then one
@@ -539,7 +585,7 @@ running,000001,,,,,,
             "m.csv:3: b (400002) overlaps a (400001, line 2)"
         );
         assert!(fails("name,ref,type\na,000001,u32\n")
-            .starts_with("m.csv:2: type u32 does not fit in a coil"));
+            .starts_with("m.csv:2: a: type u32 does not fit in a coil"));
         assert!(fails("name,ref,colour\n").starts_with("m.csv:1: unknown column 'colour'"));
         assert!(
             fails("name,ref\na,400001,x\n").starts_with("m.csv:2: 3 fields where the header has 2")
