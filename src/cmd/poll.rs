@@ -24,7 +24,7 @@ fn now() -> String {
 /// The rows of a poll appended to `--log FILE`: CSV for a `.csv` name, JSON Lines else.
 struct Log<W> {
     rows: W,
-    file: std::io::BufWriter<std::fs::File>,
+    file: std::io::BufWriter<output::Named<std::fs::File>>,
 }
 
 fn open_log<W: PollRows>(
@@ -34,10 +34,7 @@ fn open_log<W: PollRows>(
     let csv = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
-    let file = std::fs::OpenOptions::new()
-        .create(true)
-        .append(true)
-        .open(path)
+    let file = output::create_file(path, true)
         .map_err(|e| anyhow::anyhow!("cannot open {}: {e}", path.display()))?;
     let mut rows = writer(if csv {
         OutputFormat::Csv
@@ -45,13 +42,15 @@ fn open_log<W: PollRows>(
         OutputFormat::Json
     });
     // A log appended to has its header already.
-    if file.metadata().is_ok_and(|m| m.len() > 0) {
+    if file
+        .get_ref()
+        .get_ref()
+        .metadata()
+        .is_ok_and(|m| m.len() > 0)
+    {
         rows.continuing();
     }
-    Ok(Log {
-        rows,
-        file: std::io::BufWriter::new(file),
-    })
+    Ok(Log { rows, file })
 }
 
 /// Polls with `read`, showing each poll as `writer` (given a format) writes it; the

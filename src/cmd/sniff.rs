@@ -12,7 +12,7 @@ use anyhow::{Context, Result};
 use mbtool::cli::{Cli, SniffArgs};
 use mbtool::connection::{line_settings, mode, Role};
 use mbtool::error::Error;
-use mbtool::output::{self, sniff::SniffWriter};
+use mbtool::output::{self, sniff::SniffWriter, Named};
 use mbtool_core::codec::Mode;
 use mbtool_core::sniff::pcap::{self, PcapWriter};
 use mbtool_core::sniff::session::{Filter, Record, Session};
@@ -24,7 +24,7 @@ use mbtool_core::transport::{Endpoint, Transport};
 struct Sinks {
     writer: SniffWriter,
     out: Box<dyn Write>,
-    pcap: Option<PcapWriter<BufWriter<File>>>,
+    pcap: Option<PcapWriter<OutputFile>>,
     /// Microseconds since 1970 of capture time 0, for pcap timestamps.
     epoch_us: u64,
     mode: Mode,
@@ -68,9 +68,10 @@ pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
         None => None,
     };
     let pcap = match &args.pcap {
-        Some(path) => Some(PcapWriter::new(BufWriter::new(
-            File::create(path).with_context(|| format!("cannot create {}", path.display()))?,
-        ))?),
+        Some(path) => Some(PcapWriter::new(
+            output::create_file(path, false)
+                .with_context(|| format!("cannot create {}", path.display()))?,
+        )?),
         None => None,
     };
     let epoch_us = SystemTime::now()
@@ -125,17 +126,19 @@ pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
     Ok(0)
 }
 
+/// A file sniff writes, buffered, its errors naming it.
+type OutputFile = BufWriter<Named<File>>;
+
 /// `--save`: the bytes as received and, from a port, their timing beside them.
 struct Save {
-    bytes: BufWriter<File>,
-    timing: Option<BufWriter<File>>,
+    bytes: OutputFile,
+    timing: Option<OutputFile>,
 }
 
 impl Save {
     fn create(path: &Path, timed: bool) -> Result<Save> {
         let create = |path: &Path| {
-            File::create(path)
-                .map(BufWriter::new)
+            output::create_file(path, false)
                 .with_context(|| format!("cannot create {}", path.display()))
         };
         let timing = if timed {

@@ -12,6 +12,7 @@ pub mod serve;
 pub mod sniff;
 pub mod watch;
 
+use std::fs::File;
 use std::io::{self, IsTerminal, Write};
 
 use comfy_table::{presets, Table};
@@ -24,10 +25,61 @@ use mbtool_core::model::values::{ByteOrder, ValueType};
 /// Standard output, buffered unless it is a terminal, where each line shows at once.
 pub fn stdout() -> Box<dyn Write> {
     let stdout = io::stdout();
+    let named = Named::new(stdout.lock(), "standard output");
     if stdout.is_terminal() {
-        Box::new(stdout.lock())
+        Box::new(named)
     } else {
-        Box::new(io::BufWriter::with_capacity(1 << 16, stdout.lock()))
+        Box::new(io::BufWriter::with_capacity(1 << 16, named))
+    }
+}
+
+/// A file that was created (or appended to) by name, buffered, its errors naming it.
+pub fn create_file(path: &std::path::Path, append: bool) -> io::Result<io::BufWriter<Named<File>>> {
+    let file = std::fs::OpenOptions::new()
+        .write(true)
+        .create(true)
+        .append(append)
+        .truncate(!append)
+        .open(path)?;
+    Ok(io::BufWriter::new(Named::new(
+        file,
+        &path.display().to_string(),
+    )))
+}
+
+/// A writer whose errors say what it writes to (`cannot write standard output: No space
+/// left on device`), keeping their kind, so that a full disk or a closed pipe is told of
+/// the file it happened to.
+pub struct Named<W> {
+    inner: W,
+    name: String,
+}
+
+impl<W> Named<W> {
+    pub fn new(inner: W, name: &str) -> Self {
+        Self {
+            inner,
+            name: name.to_string(),
+        }
+    }
+
+    /// The writer itself, for what it can tell (a file's length).
+    pub fn get_ref(&self) -> &W {
+        &self.inner
+    }
+
+    fn named(&self, error: io::Error) -> io::Error {
+        io::Error::new(error.kind(), format!("cannot write {}: {error}", self.name))
+    }
+}
+
+impl<W: Write> Write for Named<W> {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        self.inner.write(buf).map_err(|e| self.named(e))
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        self.inner.flush().map_err(|e| self.named(e))
     }
 }
 

@@ -12,6 +12,7 @@ mod device;
 mod docs;
 mod encode;
 mod first_contact;
+mod full_disk;
 mod golden;
 mod map;
 mod master_faults;

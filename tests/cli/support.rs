@@ -59,19 +59,27 @@ pub static WORKED_FRAMES: std::sync::LazyLock<Vec<Vec<u8>>> = std::sync::LazyLoc
         .collect()
 });
 
+/// The environment variables that would give mbtool connection settings.
+const SETTINGS_FROM_ENVIRONMENT: [&str; 8] = [
+    "MBTOOL_PORT",
+    "MBTOOL_MODE",
+    "MBTOOL_BAUD",
+    "MBTOOL_PARITY",
+    "MBTOOL_DATA_BITS",
+    "MBTOOL_STOP_BITS",
+    "MBTOOL_TIMEOUT",
+    "MBTOOL_RETRIES",
+];
+
 /// mbtool with no connection settings from the environment.
 pub fn mbtool() -> Command {
-    let mut cmd = Command::cargo_bin("mbtool").expect("the binary is built");
-    for var in [
-        "MBTOOL_PORT",
-        "MBTOOL_MODE",
-        "MBTOOL_BAUD",
-        "MBTOOL_PARITY",
-        "MBTOOL_DATA_BITS",
-        "MBTOOL_STOP_BITS",
-        "MBTOOL_TIMEOUT",
-        "MBTOOL_RETRIES",
-    ] {
+    Command::from_std(mbtool_process())
+}
+
+/// The same as a plain process, for what `assert_cmd` does not set (a file as stdout).
+pub fn mbtool_process() -> std::process::Command {
+    let mut cmd = std::process::Command::new(assert_cmd::cargo::cargo_bin("mbtool"));
+    for var in SETTINGS_FROM_ENVIRONMENT {
         cmd.env_remove(var);
     }
     cmd.env("NO_COLOR", "1");
