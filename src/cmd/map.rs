@@ -12,7 +12,8 @@ use mbtool_core::codec::Request;
 use mbtool_core::master::map::{groups, read_points, write_request, written_value, Group};
 use mbtool_core::master::plan::{parse_slave, Plan};
 use mbtool_core::model::address::Access;
-use mbtool_core::model::map::{load, MapError, Point, RegisterMap};
+use mbtool_core::model::map::{MapError, Point, RegisterMap};
+use mbtool_core::model::map_file::load;
 
 /// A map read or write, checked whole before anything is sent.
 pub struct MapPlan {

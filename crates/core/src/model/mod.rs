@@ -7,5 +7,6 @@ pub mod duration;
 pub mod hexinput;
 pub mod home_assistant;
 pub mod map;
+pub mod map_file;
 pub mod number;
 pub mod values;
