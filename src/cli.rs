@@ -47,47 +47,6 @@ pub struct Cli {
     pub command: Command,
 }
 
-impl Cli {
-    /// The response timeout: as given, else 1 s, or 100 ms for scan, which asks many ids
-    /// that are not there.
-    pub fn timeout(&self) -> std::time::Duration {
-        let default = match self.command {
-            Command::Scan(_) => 100,
-            _ => 1000,
-        };
-        self.connection
-            .timeout
-            .unwrap_or(std::time::Duration::from_millis(default))
-    }
-
-    /// An `--output` that names no format, where a format is what it takes.
-    pub fn output_problem(&self) -> Option<String> {
-        let name = self.output.output.as_deref()?;
-        let is_format = OutputFormat::from_str(name, true).is_ok();
-        (!is_format && !matches!(self.command, Command::Dump(_)))
-            .then(|| format!("--output {name}: give a format: table, json, values or csv"))
-    }
-
-    /// A list of baud rates or parities typed for a command that takes one, as a one-line
-    /// message. A list from the environment (MBTOOL_BAUD=9600,19200, set for scans) gives
-    /// the other commands its first value.
-    pub fn sweep_outside_scan(&self, matches: &clap::ArgMatches) -> Option<String> {
-        let mut leaf = matches;
-        while let Some((_, sub)) = leaf.subcommand() {
-            leaf = sub;
-        }
-        let typed =
-            |id: &str| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine);
-        let several = match (self.connection.baud.len(), self.connection.parity.len()) {
-            _ if matches!(self.command, Command::Scan(_)) => return None,
-            (2.., _) if typed("baud") => "baud rates",
-            (_, 2..) if typed("parity") => "parities",
-            _ => return None,
-        };
-        Some(format!("only scan sweeps several {several}: give one"))
-    }
-}
-
 #[derive(Clone, Debug, Args)]
 #[command(next_help_heading = "Connection")]
 pub struct ConnectionArgs {
@@ -153,18 +112,6 @@ pub struct ConnectionArgs {
     pub frame_gap: Option<std::time::Duration>,
 }
 
-impl ConnectionArgs {
-    /// The serial speed; only scan sweeps several, and the parser refuses a list elsewhere.
-    pub fn baud(&self) -> u32 {
-        self.baud.first().copied().unwrap_or(19200)
-    }
-
-    /// The serial parity, as [`ConnectionArgs::baud`].
-    pub fn parity(&self) -> Parity {
-        self.parity.first().copied().unwrap_or(Parity::Even)
-    }
-}
-
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum ModeArg {
     Rtu,
@@ -196,20 +143,6 @@ pub struct OutputArgs {
     /// Print every frame sent and received, in hex with a timestamp, on stderr
     #[arg(short, long, global = true)]
     pub verbose: bool,
-}
-
-impl OutputArgs {
-    /// The output format; a value of `--output` that names none is refused when the
-    /// command line is checked (`Cli::output_problem`).
-    pub fn format(&self) -> OutputFormat {
-        match (&self.output, self.json) {
-            (_, true) => OutputFormat::Json,
-            (Some(name), false) => {
-                OutputFormat::from_str(name, true).unwrap_or(OutputFormat::Table)
-            }
-            (None, false) => OutputFormat::Table,
-        }
-    }
 }
 
 /// The value of `--output`: a format (listed in help and completions), or, for dump,
@@ -1066,30 +999,4 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
         _ => &[],
     };
     groups.iter().any(|group| group.contains(&id))
-}
-
-/// The first global option typed on the command line that the command given does not
-/// take, as a one-line message: `decode does not take --baud (see 'mbtool decode --help')`.
-pub fn untaken_option(command: &clap::Command, matches: &clap::ArgMatches) -> Option<String> {
-    let mut path = Vec::new();
-    let mut leaf = matches;
-    while let Some((name, sub)) = leaf.subcommand() {
-        path.push(name);
-        leaf = sub;
-    }
-    let typed = command.get_arguments().find(|arg| {
-        let id = arg.get_id().as_str();
-        arg.is_global_set()
-            && !takes_option(&path, id)
-            && leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine)
-    })?;
-    let name = match (typed.get_long(), typed.get_short()) {
-        (Some(long), _) => format!("--{long}"),
-        (None, Some(short)) => format!("-{short}"),
-        (None, None) => typed.get_id().to_string(),
-    };
-    let path = path.join(" ");
-    Some(format!(
-        "{path} does not take {name} (see 'mbtool {path} --help' for the options it takes)"
-    ))
 }

@@ -2,8 +2,8 @@
 
 use std::io;
 
-use crate::cli::{Cli, ModeArg};
 use crate::error::{Error, Result};
+use crate::settings::Connection as Options;
 use mbtool_core::codec::Mode;
 use mbtool_core::master::{Master, MasterOptions};
 use mbtool_core::transport::serial::{LineSettings, Parity, Serial};
@@ -15,8 +15,8 @@ use mbtool_core::transport::{Endpoint, Transport};
 const BROADCAST_TURNAROUND: std::time::Duration = std::time::Duration::from_millis(100);
 
 /// The endpoint of `--port`; a missing port says what to give.
-pub fn endpoint(cli: &Cli) -> Result<Endpoint> {
-    let port = cli.connection.port.as_deref().ok_or_else(|| {
+pub fn endpoint(options: &Options) -> Result<Endpoint> {
+    let port = options.port.as_deref().ok_or_else(|| {
         Error::usage(
             "no --port: give a serial device (/dev/ttyUSB0), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim to try the built-in slave",
         )
@@ -37,65 +37,64 @@ pub enum Role {
 
 /// The framing on the wire: TCP for tcp://, otherwise --mode (RTU by default). `endpoint`
 /// is `None` where the command has no port to go by.
-pub fn mode(cli: &Cli, endpoint: Option<&Endpoint>, role: Role) -> Result<Mode> {
+pub fn mode(options: &Options, endpoint: Option<&Endpoint>, role: Role) -> Result<Mode> {
     let tcp_port = matches!(endpoint, Some(Endpoint::Tcp { .. }));
-    match (tcp_port, cli.connection.mode, role) {
-        (_, Some(mode), Role::Encode) => Ok(mode.into()),
-        (_, Some(ModeArg::Tcp), Role::Sniff) => Err(Error::usage(
+    match (tcp_port, options.mode, role) {
+        (_, Some(mode), Role::Encode) => Ok(mode),
+        (_, Some(Mode::Tcp), Role::Sniff) => Err(Error::usage(
             "sniff watches serial lines: --mode rtu or ascii",
         )),
-        (true, None | Some(ModeArg::Tcp), _) => Ok(Mode::Tcp),
+        (true, None | Some(Mode::Tcp), _) => Ok(Mode::Tcp),
         (true, Some(_), Role::Serve) => Err(Error::usage(
             "tcp:// serves Modbus TCP: for RTU frames over TCP use rtu+tcp://",
         )),
         (true, Some(_), _) => Err(Error::usage(
             "tcp:// carries Modbus TCP frames: for RTU through a gateway use rtu+tcp://HOST:PORT",
         )),
-        (false, Some(ModeArg::Tcp), Role::Serve) => {
+        (false, Some(Mode::Tcp), Role::Serve) => {
             Err(Error::usage("--mode tcp needs a tcp:// port"))
         }
-        (false, Some(ModeArg::Tcp), _) => {
+        (false, Some(Mode::Tcp), _) => {
             Err(Error::usage("--mode tcp needs a tcp://HOST[:PORT] port"))
         }
-        (false, Some(mode), _) => Ok(mode.into()),
+        (false, Some(mode), _) => Ok(mode),
         (false, None, _) => Ok(Mode::Rtu),
     }
 }
 
 /// The serial line settings, defaults filled in as CLI.md gives them.
-pub fn line_settings(cli: &Cli, mode: Mode) -> LineSettings {
-    line_at(cli, mode, cli.connection.baud(), cli.connection.parity())
+pub fn line_settings(options: &Options, mode: Mode) -> LineSettings {
+    line_at(options, mode, options.baud(), options.parity())
 }
 
 /// The serial line settings at `baud` and `parity` (a step of a scan's sweep), the data
 /// and stop bits as the options give them.
-pub fn line_at(cli: &Cli, mode: Mode, baud: u32, parity: Parity) -> LineSettings {
-    let c = &cli.connection;
+pub fn line_at(options: &Options, mode: Mode, baud: u32, parity: Parity) -> LineSettings {
     LineSettings {
         baud,
         parity,
-        data_bits: c
+        data_bits: options
             .data_bits
             .unwrap_or(if mode == Mode::Ascii { 7 } else { 8 }),
-        stop_bits: c
+        stop_bits: options
             .stop_bits
             .unwrap_or(if parity == Parity::None { 2 } else { 1 }),
     }
 }
 
 /// Opens the transport of `endpoint`, a serial line with the options' settings.
-pub fn open(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Box<dyn Transport>> {
-    open_at(cli, endpoint, mode, &line_settings(cli, mode))
+pub fn open(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<Box<dyn Transport>> {
+    open_at(options, endpoint, mode, &line_settings(options, mode))
 }
 
 /// Opens the transport of `endpoint`, a serial line with `line`.
 pub fn open_at(
-    cli: &Cli,
+    options: &Options,
     endpoint: &Endpoint,
     mode: Mode,
     line: &LineSettings,
 ) -> Result<Box<dyn Transport>> {
-    let timeout = cli.timeout();
+    let timeout = options.timeout;
     let opened: io::Result<Box<dyn Transport>> = match endpoint {
         Endpoint::Serial(path) => {
             Serial::open(path, line).map(|s| Box::new(s) as Box<dyn Transport>)
@@ -120,10 +119,10 @@ pub fn open_at(
 }
 
 /// Where and how a master asked, for a timeout's message, and what usually causes one there.
-pub fn tried(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> (String, &'static str) {
+pub fn tried(options: &Options, endpoint: &Endpoint, mode: Mode) -> (String, &'static str) {
     match endpoint {
         Endpoint::Serial(path) => {
-            let line = line_settings(cli, mode);
+            let line = line_settings(options, mode);
             let parity = match line.parity {
                 Parity::None => "no parity",
                 Parity::Even => "even parity",
@@ -158,12 +157,18 @@ pub fn tried(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> (String, &'static st
 }
 
 /// A master on `endpoint`, framing in `mode`, as the options resolved them.
-pub fn master(cli: &Cli, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
+pub fn master(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
     let answer = Answer {
-        timeout: cli.timeout(),
-        retries: cli.connection.retries,
+        timeout: options.timeout,
+        retries: options.retries,
     };
-    master_at(cli, endpoint, mode, &line_settings(cli, mode), answer)
+    master_at(
+        options,
+        endpoint,
+        mode,
+        &line_settings(options, mode),
+        answer,
+    )
 }
 
 /// How long a master waits for an answer, and how often it asks again.
@@ -176,15 +181,15 @@ pub struct Answer {
 /// A master on `endpoint` with the serial settings `line` and `answer`, the rest as the
 /// options resolved them.
 pub fn master_at(
-    cli: &Cli,
+    options: &Options,
     endpoint: &Endpoint,
     mode: Mode,
     line: &LineSettings,
     answer: Answer,
 ) -> Result<Master> {
-    let transport = open_at(cli, endpoint, mode, line)?;
+    let transport = open_at(options, endpoint, mode, line)?;
     let serial_line = matches!(endpoint, Endpoint::Serial(_) | Endpoint::RtuOverTcp { .. });
-    let gap = cli.connection.frame_gap.unwrap_or_else(|| match mode {
+    let gap = options.frame_gap.unwrap_or_else(|| match mode {
         Mode::Rtu if serial_line => line.frame_gap(),
         _ => std::time::Duration::ZERO,
     });
@@ -222,9 +227,9 @@ pub struct Target {
 }
 
 /// The target of the options.
-pub fn target(cli: &Cli) -> Result<Target> {
-    let endpoint = endpoint(cli)?;
-    let mode = mode(cli, Some(&endpoint), Role::Master)?;
+pub fn target(options: &Options) -> Result<Target> {
+    let endpoint = endpoint(options)?;
+    let mode = mode(options, Some(&endpoint), Role::Master)?;
     Ok(Target { endpoint, mode })
 }
 
@@ -235,8 +240,8 @@ impl Target {
     }
 
     /// A master on the target.
-    pub fn connect(self, cli: &Cli) -> Result<Connection> {
-        let master = master(cli, &self.endpoint, self.mode)?;
+    pub fn connect(self, options: &Options) -> Result<Connection> {
+        let master = master(options, &self.endpoint, self.mode)?;
         Ok(Connection {
             master,
             endpoint: self.endpoint,
@@ -246,15 +251,15 @@ impl Target {
 }
 
 /// Connects as the options say.
-pub fn connect(cli: &Cli) -> Result<Connection> {
-    target(cli)?.connect(cli)
+pub fn connect(options: &Options) -> Result<Connection> {
+    target(options)?.connect(options)
 }
 
 impl Connection {
     /// `error`, a timeout told with where and how the master asked and what usually
     /// causes one there.
-    pub fn explain(&self, cli: &Cli, error: Error) -> Error {
-        let (tried, advice) = tried(cli, &self.endpoint, self.mode);
+    pub fn explain(&self, options: &Options, error: Error) -> Error {
+        let (tried, advice) = tried(options, &self.endpoint, self.mode);
         error.tried(tried, advice)
     }
 }

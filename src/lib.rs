@@ -8,6 +8,7 @@ pub mod docs;
 pub mod error;
 pub mod lines;
 pub mod output;
+pub mod settings;
 
 /// `eprintln!` that never panics: a closed stderr (`mbtool decode 2>&1 | head -1`) ends the
 /// line quietly instead of the program.

@@ -9,55 +9,49 @@ use std::process::ExitCode;
 use clap::error::{ContextKind, ContextValue, ErrorKind};
 use clap::FromArgMatches;
 
-use mbtool::cli::Cli;
+use mbtool::cli::{Cli, Command};
+use mbtool::settings::{self, Settings};
 
 fn main() -> ExitCode {
-    let cli = match parse() {
-        Ok(cli) => cli,
+    let (settings, command) = match parse() {
+        Ok(parsed) => parsed,
         Err(code) => return code,
     };
-    match cmd::run(cli) {
+    match cmd::run(&settings, command) {
         Ok(code) => ExitCode::from(code),
         Err(error) => fail(&error),
     }
 }
 
-/// Parses the command line. Help and version are printed as clap renders them; `mbtool`
-/// alone prints a short usage with the commands; every other usage error, including an
-/// option the command does not take, becomes one `mbtool: ` line. Both end with exit
-/// status 2.
-fn parse() -> Result<Cli, ExitCode> {
+/// Parses the command line and resolves it into settings and the command to run. Help
+/// and version are printed as clap renders them; `mbtool` alone prints a short usage with
+/// the commands; every other usage error, including an option the command does not take,
+/// becomes one `mbtool: ` line. Both end with exit status 2.
+fn parse() -> Result<(Settings, Command), ExitCode> {
     let mut command = mbtool::docs::command();
     let matches = command.try_get_matches_from_mut(std::env::args_os());
-    let result = matches.and_then(|m| Ok((Cli::from_arg_matches(&m)?, m)));
-    if let Ok((cli, matches)) = result {
-        let refused = mbtool::cli::untaken_option(&command, &matches)
-            .or_else(|| cli.sweep_outside_scan(&matches))
-            .or_else(|| cli.output_problem());
-        return match refused {
-            None => Ok(cli),
-            Some(message) => {
-                mbtool::note!("mbtool: {message}");
-                Err(ExitCode::from(2))
-            }
-        };
+    let parsed = matches.and_then(|m| Ok((Cli::from_arg_matches(&m)?, m)));
+    let (cli, matches) = parsed.map_err(|error| match error.kind() {
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            let _ = error.print();
+            ExitCode::SUCCESS
+        }
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
+            mbtool::note!("{}", mbtool::docs::short_usage(&command));
+            ExitCode::from(2)
+        }
+        _ => {
+            mbtool::note!("mbtool: {}", usage_error(&error, &command));
+            ExitCode::from(2)
+        }
+    })?;
+    match settings::resolve(&cli, &command, &matches) {
+        Ok(settings) => Ok((settings, cli.command)),
+        Err(message) => {
+            mbtool::note!("mbtool: {message}");
+            Err(ExitCode::from(2))
+        }
     }
-    result
-        .map(|(cli, _)| cli)
-        .map_err(|error| match error.kind() {
-            ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
-                let _ = error.print();
-                ExitCode::SUCCESS
-            }
-            ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-                mbtool::note!("{}", mbtool::docs::short_usage(&command));
-                ExitCode::from(2)
-            }
-            _ => {
-                mbtool::note!("mbtool: {}", usage_error(&error, &command));
-                ExitCode::from(2)
-            }
-        })
 }
 
 /// A usage error on one line: what is wrong, clap's tips and the values allowed, and where

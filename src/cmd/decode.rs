@@ -4,9 +4,10 @@ use std::io::{self, Write};
 
 use anyhow::Result;
 
-use mbtool::cli::{Cli, DecodeArgs};
+use mbtool::cli::DecodeArgs;
 use mbtool::lines::{Line, Lines};
 use mbtool::output::{self, decode::DecodeWriter};
+use mbtool::settings::Settings;
 use mbtool_core::codec::framing::split_glued;
 use mbtool_core::codec::{limits, Direction, Mode};
 use mbtool_core::describe::{describe_frame, FrameReport};
@@ -75,11 +76,11 @@ impl Decoder {
     }
 }
 
-pub fn run(cli: &Cli, args: &DecodeArgs) -> Result<u8> {
+pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
     let mut decoder = Decoder {
-        mode: cli.connection.mode.map(Mode::from),
+        mode: settings.connection.mode,
         direction: args.direction.map(Direction::from),
-        writer: DecodeWriter::new(output::Style::of(cli)),
+        writer: DecodeWriter::new(settings.output.style),
         out: output::stdout(),
         frames: 0,
         failed: 0,

@@ -4,10 +4,11 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::cli::{Cli, DiagArgs};
+use mbtool::cli::DiagArgs;
 use mbtool::error::Error;
 use mbtool::output::device::{write_diag, DiagReport, Outcome};
 use mbtool::output::{self, colour_wanted};
+use mbtool::settings::Settings;
 use mbtool_core::codec::function;
 use mbtool_core::master::device::{clear_counters, counters, exception_status, round_trips, Asked};
 
@@ -16,14 +17,14 @@ use super::info::outcome;
 /// Round trips timed when `--count` does not say.
 const ROUND_TRIPS: u64 = 5;
 
-pub fn run(cli: &Cli, args: &DiagArgs) -> Result<u8> {
-    let count = cli.poll.count.unwrap_or(ROUND_TRIPS);
-    let (mut connection, slave) = super::connect_to(cli, &args.slave)?;
+pub fn run(settings: &Settings, args: &DiagArgs) -> Result<u8> {
+    let count = settings.poll.count.unwrap_or(ROUND_TRIPS);
+    let (mut connection, slave) = super::connect_to(settings, &args.slave)?;
     let master = &mut connection.master;
     // A device that does not answer at all fails here, with what was tried.
     let round_trips = round_trips(master, slave, count)
         .map(Outcome::from)
-        .map_err(|e| connection.explain(cli, e.into()))?;
+        .map_err(|e| connection.explain(&settings.connection, e.into()))?;
     let master = &mut connection.master;
     let report = (|| {
         Ok(DiagReport {
@@ -37,7 +38,9 @@ pub fn run(cli: &Cli, args: &DiagArgs) -> Result<u8> {
             },
         })
     })()
-    .map_err(|e: mbtool_core::master::MasterError| connection.explain(cli, e.into()))?;
+    .map_err(|e: mbtool_core::master::MasterError| {
+        connection.explain(&settings.connection, e.into())
+    })?;
     // A device that refuses every diagnostic (or a gateway with nothing behind that id)
     // told nothing of its health: that is its answer.
     if let Outcome::Refused(code) = report.round_trips {
@@ -57,7 +60,7 @@ pub fn run(cli: &Cli, args: &DiagArgs) -> Result<u8> {
         }
     }
     let mut out = output::stdout();
-    write_diag(&mut out, cli.output.format(), &report, colour_wanted())?;
+    write_diag(&mut out, settings.output.format, &report, colour_wanted())?;
     out.flush()?;
     Ok(0)
 }

@@ -4,28 +4,18 @@ use std::io::Write;
 
 use anyhow::{Context, Result};
 
-use clap::ValueEnum;
-
-use mbtool::cli::{Cli, DumpArgs, OutputFormat};
+use mbtool::cli::DumpArgs;
 use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output::{self, plural};
+use mbtool::settings::Settings;
 use mbtool_core::codec::ExceptionCode;
 use mbtool_core::master::backup::{self, Range};
 use mbtool_core::master::run::RunError;
 use mbtool_core::model::address::{parse_reference_span, AddressError};
 use mbtool_core::slave::datafile;
 
-pub fn run(cli: &Cli, args: &DumpArgs) -> Result<u8> {
-    // -o names the file dump writes; a format name there is a slip, not a file wanted.
-    if let Some(name) = cli.output.output.as_deref() {
-        if OutputFormat::from_str(name, true).is_ok() {
-            return Err(Error::usage(format!(
-                "dump writes a data file: -o {name} would name the file '{name}'; give ./{name} if that is meant"
-            ))
-            .into());
-        }
-    }
+pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
     let ranges = args
         .ranges
         .iter()
@@ -38,14 +28,14 @@ pub fn run(cli: &Cli, args: &DumpArgs) -> Result<u8> {
         })
         .collect::<Result<Vec<_>, AddressError>>()
         .map_err(Error::from)?;
-    let (mut connection, slave) = super::connect_to(cli, &args.slave)?;
+    let (mut connection, slave) = super::connect_to(settings, &args.slave)?;
     let dump = backup::dump(
         &mut connection.master,
         slave,
         &ranges,
-        cli.data.max_per_request,
+        settings.data.max_per_request,
     )
-    .map_err(|e| connection.explain(cli, Error::from(e)))?;
+    .map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
     if !dump.holes.is_empty() {
         let holes: Vec<String> = dump
             .holes
@@ -66,16 +56,18 @@ pub fn run(cli: &Cli, args: &DumpArgs) -> Result<u8> {
         };
         return Err(Error::from(refused).into());
     }
-    let (place, _) = connection::tried(cli, &connection.endpoint, connection.mode);
+    let (place, _) = connection::tried(&settings.connection, &connection.endpoint, connection.mode);
     let text = format!(
         "# mbtool dump of slave {slave} {place}, {}\n{}",
         output::backup::utc_now(),
         datafile::render(&dump.entries)
     );
     let values: usize = dump.entries.iter().map(|e| e.values.len()).sum();
-    let target = match cli.output.output.as_deref() {
+    let target = match &settings.output.file {
         Some(path) => {
-            std::fs::write(path, &text).with_context(|| format!("cannot write {path}"))?;
+            let path = path.display();
+            std::fs::write(path.to_string(), &text)
+                .with_context(|| format!("cannot write {path}"))?;
             path.to_string()
         }
         None => {

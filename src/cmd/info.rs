@@ -4,10 +4,11 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::cli::{Cli, InfoArgs};
+use mbtool::cli::InfoArgs;
 use mbtool::error::Error;
 use mbtool::output::device::{write_info, InfoReport, Outcome};
 use mbtool::output::{self, colour_wanted};
+use mbtool::settings::Settings;
 use mbtool_core::codec::function;
 use mbtool_core::master::device::{identification, server_id, Asked};
 use mbtool_core::master::MasterError;
@@ -22,12 +23,13 @@ pub fn outcome<T>(asked: Result<Asked<T>, MasterError>) -> Result<Outcome<T>, Ma
     }
 }
 
-pub fn run(cli: &Cli, args: &InfoArgs) -> Result<u8> {
-    let (mut connection, slave) = super::connect_to(cli, &args.slave)?;
+pub fn run(settings: &Settings, args: &InfoArgs) -> Result<u8> {
+    let (mut connection, slave) = super::connect_to(settings, &args.slave)?;
     let master = &mut connection.master;
     let asked = outcome(identification(master, slave))
         .and_then(|id| Ok((id, outcome(server_id(master, slave))?)));
-    let (identification, server_id) = asked.map_err(|e| connection.explain(cli, e.into()))?;
+    let (identification, server_id) =
+        asked.map_err(|e| connection.explain(&settings.connection, e.into()))?;
     let report = InfoReport {
         slave,
         identification,
@@ -51,13 +53,15 @@ pub fn run(cli: &Cli, args: &InfoArgs) -> Result<u8> {
         (Outcome::NoAnswer(_), Outcome::NoAnswer(_)) => {
             let timeout = MasterError::Timeout {
                 slave,
-                timeout: cli.timeout(),
+                timeout: settings.connection.timeout,
             };
-            return Err(connection.explain(cli, timeout.into()).into());
+            return Err(connection
+                .explain(&settings.connection, timeout.into())
+                .into());
         }
     }
     let mut out = output::stdout();
-    write_info(&mut out, cli.output.format(), &report, colour_wanted())?;
+    write_info(&mut out, settings.output.format, &report, colour_wanted())?;
     out.flush()?;
     Ok(0)
 }

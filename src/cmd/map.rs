@@ -4,10 +4,10 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::cli::Cli;
 use mbtool::connection::Connection;
 use mbtool::error::Error;
 use mbtool::output::{self, map::MapRows, map::MapWriter};
+use mbtool::settings::Settings;
 use mbtool_core::codec::Request;
 use mbtool_core::master::map::{groups, read_points, write_request, written_value, Group};
 use mbtool_core::master::plan::{parse_slave, Plan};
@@ -23,7 +23,7 @@ pub struct MapPlan {
 
 /// Loads the map and picks the points named (every point when none is).
 pub fn plan(
-    cli: &Cli,
+    settings: &Settings,
     path: &std::path::Path,
     slave: &str,
     names: &[&str],
@@ -37,7 +37,7 @@ pub fn plan(
     // A read goes to one slave; only a write may broadcast.
     let slave = parse_slave(slave, access == Access::WriteOne, tcp)?;
     let points = pick(&map, names, path)?;
-    if let Some(max) = cli.data.max_per_request {
+    if let Some(max) = settings.data.max_per_request {
         if let Some(wide) = points.iter().find(|p| p.kind.width() > max) {
             return Err(Error::usage(format!(
                 "--max-per-request {max} is less than {} takes ({} registers): give at least {}",
@@ -74,9 +74,9 @@ fn find<'a>(points: &'a [Point], name: &str, path: &std::path::Path) -> Result<&
 
 impl MapPlan {
     /// The read requests, grouped as the manuals' driver groups them.
-    pub fn groups(&self, cli: &Cli) -> Vec<Group> {
+    pub fn groups(&self, settings: &Settings) -> Vec<Group> {
         let points: Vec<&Point> = self.points.iter().collect();
-        groups(&points, self.slave, cli.data.max_per_request)
+        groups(&points, self.slave, settings.data.max_per_request)
     }
 
     /// The write requests of `NAME=VALUE` words, each point's own slave or the command's,
@@ -139,29 +139,29 @@ fn unit(point: &Point) -> String {
 }
 
 /// Reads the plan's points and shows them.
-pub fn read(cli: &Cli, plan: &MapPlan, connection: &mut Connection) -> Result<u8> {
+pub fn read(settings: &Settings, plan: &MapPlan, connection: &mut Connection) -> Result<u8> {
     let points: Vec<&Point> = plan.points.iter().collect();
     let read = read_points(
         &mut connection.master,
         &points,
         plan.slave,
-        cli.data.max_per_request,
+        settings.data.max_per_request,
     )
-    .map_err(|e| connection.explain(cli, Error::from(e)))?;
+    .map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
     if read.fell_back {
         mbtool::note!(
             "mbtool: a request spanning addresses no point names was refused; its points were read again one run at a time"
         );
     }
     let mut out = output::stdout();
-    MapWriter::new(cli.output.format(), output::colour_wanted())
+    MapWriter::new(settings.output.format, output::colour_wanted())
         .write(&mut out, plan.slave, &points, &read)?;
     out.flush()?;
     Ok(0)
 }
 
 /// Writes the points, then says what was written.
-pub fn write(cli: &Cli, writes: &[MapWrite], connection: &mut Connection) -> Result<u8> {
+pub fn write(settings: &Settings, writes: &[MapWrite], connection: &mut Connection) -> Result<u8> {
     let mut out = output::stdout();
     for write in writes {
         // Through a plan of its own, so that a bit is written as every bit is (22, or 03
@@ -175,7 +175,7 @@ pub fn write(cli: &Cli, writes: &[MapWrite], connection: &mut Connection) -> Res
         let written = connection
             .master
             .write(&plan)
-            .map_err(|e| connection.explain(cli, Error::from(e)))?;
+            .map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
         if written.mask_write_emulated {
             super::request::note_mask_write_emulated(write.slave, &write.said);
         }
@@ -187,7 +187,7 @@ pub fn write(cli: &Cli, writes: &[MapWrite], connection: &mut Connection) -> Res
 
 /// `read --map --poll`: the map's points read every interval, as the rows of a log.
 pub fn poll(
-    cli: &Cli,
+    settings: &Settings,
     plan: &MapPlan,
     target: &mbtool::connection::Target,
     interval: std::time::Duration,
@@ -199,10 +199,10 @@ pub fn poll(
         points: points.clone(),
     };
     super::poll::run(
-        cli,
+        settings,
         target,
         interval,
-        |master| read_points(master, &points, plan.slave, cli.data.max_per_request),
+        |master| read_points(master, &points, plan.slave, settings.data.max_per_request),
         writer,
     )
 }

@@ -16,25 +16,26 @@ mod watch;
 
 use anyhow::Result;
 
-use mbtool::cli::{Cli, Command};
+use mbtool::cli::Command;
 use mbtool::connection::{self, Connection};
 use mbtool::error::Error;
+use mbtool::settings::Settings;
 use mbtool_core::master::plan::parse_slave;
 
 /// Runs the command; `Ok` carries the exit status of a command that finished its work.
-pub fn run(cli: Cli) -> Result<u8> {
-    match &cli.command {
-        Command::Scan(args) => scan::run(&cli, args),
-        Command::Watch(args) => watch::run(&cli, args),
-        Command::Info(args) => info::run(&cli, args),
-        Command::Dump(args) => dump::run(&cli, args),
-        Command::Restore(args) => restore::run(&cli, args),
-        Command::Diag(args) => diag::run(&cli, args),
-        Command::Decode(args) => decode::run(&cli, args),
-        Command::Encode { request } => encode::run(&cli, request),
-        Command::Request(request) => request::run(&cli, request),
-        Command::Serve(args) => serve::run(&cli, args),
-        Command::Sniff(args) => sniff::run(&cli, args),
+pub fn run(settings: &Settings, command: Command) -> Result<u8> {
+    match &command {
+        Command::Scan(args) => scan::run(settings, args),
+        Command::Watch(args) => watch::run(settings, args),
+        Command::Info(args) => info::run(settings, args),
+        Command::Dump(args) => dump::run(settings, args),
+        Command::Restore(args) => restore::run(settings, args),
+        Command::Diag(args) => diag::run(settings, args),
+        Command::Decode(args) => decode::run(settings, args),
+        Command::Encode { request } => encode::run(settings, request),
+        Command::Request(request) => request::run(settings, request),
+        Command::Serve(args) => serve::run(settings, args),
+        Command::Sniff(args) => sniff::run(settings, args),
         Command::Generate(args) => {
             mbtool::docs::generate(&args.dir)?;
             Ok(0)
@@ -44,11 +45,11 @@ pub fn run(cli: Cli) -> Result<u8> {
 
 /// A connection to the one slave a device command names: the slave checked before the
 /// port is opened, and `-v` showing every frame.
-fn connect_to(cli: &Cli, slave: &str) -> Result<(Connection, u8)> {
-    let target = connection::target(cli)?;
+fn connect_to(settings: &Settings, slave: &str) -> Result<(Connection, u8)> {
+    let target = connection::target(&settings.connection)?;
     let slave = parse_slave(slave, false, target.is_tcp()).map_err(Error::from)?;
-    let mut connection = target.connect(cli)?;
-    if cli.output.verbose {
+    let mut connection = target.connect(&settings.connection)?;
+    if settings.output.verbose {
         connection.master.trace(request::tracer(connection.mode));
     }
     Ok((connection, slave))

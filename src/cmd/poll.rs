@@ -8,10 +8,11 @@ use std::time::Duration;
 
 use anyhow::Result;
 
-use mbtool::cli::{Cli, OutputFormat};
 use mbtool::connection::{self, Target};
 use mbtool::error::Error;
+use mbtool::output::Format;
 use mbtool::output::{self, PollRows};
+use mbtool::settings::Settings;
 use mbtool_core::master::poll::{poll, PollOptions, Tick};
 use mbtool_core::master::run::RunError;
 use mbtool_core::master::Master;
@@ -27,20 +28,13 @@ struct Log<W> {
     file: std::io::BufWriter<output::Named<std::fs::File>>,
 }
 
-fn open_log<W: PollRows>(
-    path: &std::path::Path,
-    writer: impl Fn(OutputFormat) -> W,
-) -> Result<Log<W>> {
+fn open_log<W: PollRows>(path: &std::path::Path, writer: impl Fn(Format) -> W) -> Result<Log<W>> {
     let csv = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
     let file = output::create_file(path, true)
         .map_err(|e| anyhow::anyhow!("cannot open {}: {e}", path.display()))?;
-    let mut rows = writer(if csv {
-        OutputFormat::Csv
-    } else {
-        OutputFormat::Json
-    });
+    let mut rows = writer(if csv { Format::Csv } else { Format::Json });
     // A log appended to has its header already.
     if file
         .get_ref()
@@ -56,14 +50,14 @@ fn open_log<W: PollRows>(
 /// Polls with `read`, showing each poll as `writer` (given a format) writes it; the
 /// summary on stderr at the end. The exit status is the last poll's.
 pub fn run<W: PollRows>(
-    cli: &Cli,
+    settings: &Settings,
     target: &Target,
     interval: Duration,
     read: impl FnMut(&mut Master) -> Result<W::Item, RunError>,
-    writer: impl Fn(OutputFormat) -> W,
+    writer: impl Fn(Format) -> W,
 ) -> Result<u8> {
-    let mut screen = writer(cli.output.format());
-    let mut log = cli
+    let mut screen = writer(settings.output.format);
+    let mut log = settings
         .poll
         .log
         .as_deref()
@@ -76,8 +70,8 @@ pub fn run<W: PollRows>(
     })
     .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
     let connect = || -> Result<Master, Error> {
-        let mut master = connection::master(cli, &target.endpoint, target.mode)?;
-        if cli.output.verbose {
+        let mut master = connection::master(&settings.connection, &target.endpoint, target.mode)?;
+        if settings.output.verbose {
             master.trace(super::request::tracer(target.mode));
         }
         Ok(master)
@@ -86,7 +80,7 @@ pub fn run<W: PollRows>(
     let mut last_status = 0;
     let options = PollOptions {
         interval,
-        count: cli.poll.count,
+        count: settings.poll.count,
     };
     let wait = |time| {
         !matches!(
@@ -94,7 +88,7 @@ pub fn run<W: PollRows>(
             Err(mpsc::RecvTimeoutError::Timeout)
         )
     };
-    let (tried, advice) = connection::tried(cli, &target.endpoint, target.mode);
+    let (tried, advice) = connection::tried(&settings.connection, &target.endpoint, target.mode);
     let stats = poll(connect, read, options, wait, |tick| {
         let time = now();
         let failure = match tick {
@@ -118,10 +112,7 @@ pub fn run<W: PollRows>(
         };
         if let Some(error) = failure {
             // Where the format has no rows for it, the error goes to stderr.
-            if matches!(
-                cli.output.format(),
-                OutputFormat::Table | OutputFormat::Values
-            ) {
+            if matches!(settings.output.format, Format::Table | Format::Values) {
                 mbtool::note!("mbtool: {error}");
             }
             screen.failure(&mut out, &time, &error)?;

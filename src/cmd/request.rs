@@ -5,12 +5,13 @@ use std::time::Instant;
 
 use anyhow::Result;
 
-use mbtool::cli::{Cli, RequestCommand};
+use mbtool::cli::RequestCommand;
 use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output::decode::DecodeWriter;
 use mbtool::output::read::{write_done, ReadWriter, WriteDone};
 use mbtool::output::{self, encode::frame_text};
+use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Mode, Pdu, Request};
 use mbtool_core::describe::describe_frame;
 use mbtool_core::master::plan::Plan;
@@ -19,42 +20,42 @@ use mbtool_core::model::address::{bit_reference, reference, Access, Table};
 
 use super::map::{MapPlan, MapWrite};
 
-pub fn run(cli: &Cli, request: &RequestCommand) -> Result<u8> {
+pub fn run(settings: &Settings, request: &RequestCommand) -> Result<u8> {
     // The whole command line is checked before a port is opened.
-    if cli.poll.count.is_some() && cli.poll.poll.is_none() {
+    if settings.poll.count.is_some() && settings.poll.interval.is_none() {
         return Err(Error::usage(
             "--count N stops a --poll after N reads: give --poll INTERVAL too, or, for N \
              values, give COUNT after the address (read-holding 17 400108 3)",
         )
         .into());
     }
-    if cli.poll.log.is_some() && cli.poll.poll.is_none() {
+    if settings.poll.log.is_some() && settings.poll.interval.is_none() {
         return Err(
             Error::usage("--log keeps the rows of a --poll: give --poll INTERVAL too").into(),
         );
     }
-    if let Some(by_map) = by_map(cli, request)? {
-        return by_map.run(cli);
+    if let Some(by_map) = by_map(settings, request)? {
+        return by_map.run(settings);
     }
-    let plan = super::encode::plan_for(cli, request)?;
-    let target = connection::target(cli)?;
-    if let (Some(interval), Some((table, address))) = (cli.poll.poll, plan.reads) {
-        return poll_reads(cli, &target, &plan, (table, address), interval);
+    let plan = super::encode::plan_for(settings, request)?;
+    let target = connection::target(&settings.connection)?;
+    if let (Some(interval), Some((table, address))) = (settings.poll.interval, plan.reads) {
+        return poll_reads(settings, &target, &plan, (table, address), interval);
     }
-    let mut connection = target.connect(cli)?;
+    let mut connection = target.connect(&settings.connection)?;
     let mode = connection.mode;
     let master = &mut connection.master;
-    if cli.output.verbose {
+    if settings.output.verbose {
         master.trace(tracer(mode));
     }
     let mut out = output::stdout();
     let code = match (request, plan.reads) {
-        (RequestCommand::Raw(_), _) => raw(cli, master, &plan, mode, &mut out),
-        (_, Some((table, address))) => reads(cli, master, &plan, table, address, &mut out),
-        (_, None) => writes(cli, master, &plan, &mut out),
+        (RequestCommand::Raw(_), _) => raw(settings, master, &plan, mode, &mut out),
+        (_, Some((table, address))) => reads(settings, master, &plan, table, address, &mut out),
+        (_, None) => writes(settings, master, &plan, &mut out),
     }
     .map_err(|error| match error.downcast::<Error>() {
-        Ok(error) => connection.explain(cli, error).into(),
+        Ok(error) => connection.explain(&settings.connection, error).into(),
         Err(error) => error,
     })?;
     out.flush()?;
@@ -68,13 +69,13 @@ pub enum ByMap {
 }
 
 /// The map work of `read --map` or `write --map`, with nothing opened yet.
-pub fn by_map(cli: &Cli, request: &RequestCommand) -> Result<Option<ByMap>> {
-    let tcp = || super::encode::mode(cli) == Mode::Tcp;
+pub fn by_map(settings: &Settings, request: &RequestCommand) -> Result<Option<ByMap>> {
+    let tcp = || super::encode::mode(settings) == Mode::Tcp;
     match request {
         RequestCommand::Read(args) => match &args.map {
             Some(path) => {
                 let names = args.point_names();
-                let plan = super::map::plan(cli, path, &args.slave, &names, tcp(), Access::Read)?;
+                let plan = super::map::plan(settings, path, &args.slave, &names, tcp(), Access::Read)?;
                 Ok(Some(ByMap::Read(plan)))
             }
             None if !args.names.is_empty() => Err(Error::usage(format!(
@@ -90,7 +91,7 @@ pub fn by_map(cli: &Cli, request: &RequestCommand) -> Result<Option<ByMap>> {
             )
             .into()),
             Some(path) => {
-                let plan = super::map::plan(cli, path, &args.slave, &[], tcp(), Access::WriteOne)?;
+                let plan = super::map::plan(settings, path, &args.slave, &[], tcp(), Access::WriteOne)?;
                 Ok(Some(ByMap::Write(plan.writes(&args.assignments(), path)?)))
             }
             None => Ok(None),
@@ -100,25 +101,30 @@ pub fn by_map(cli: &Cli, request: &RequestCommand) -> Result<Option<ByMap>> {
 }
 
 impl ByMap {
-    fn run(&self, cli: &Cli) -> Result<u8> {
-        if let (ByMap::Read(plan), Some(interval)) = (self, cli.poll.poll) {
-            return super::map::poll(cli, plan, &connection::target(cli)?, interval);
+    fn run(&self, settings: &Settings) -> Result<u8> {
+        if let (ByMap::Read(plan), Some(interval)) = (self, settings.poll.interval) {
+            return super::map::poll(
+                settings,
+                plan,
+                &connection::target(&settings.connection)?,
+                interval,
+            );
         }
-        let mut connection = connection::connect(cli)?;
-        if cli.output.verbose {
+        let mut connection = connection::connect(&settings.connection)?;
+        if settings.output.verbose {
             connection.master.trace(tracer(connection.mode));
         }
         match self {
-            ByMap::Read(plan) => super::map::read(cli, plan, &mut connection),
-            ByMap::Write(writes) => super::map::write(cli, writes, &mut connection),
+            ByMap::Read(plan) => super::map::read(settings, plan, &mut connection),
+            ByMap::Write(writes) => super::map::write(settings, writes, &mut connection),
         }
     }
 
     /// The requests it sends, with their slaves, for `encode`.
-    pub fn requests(&self, cli: &Cli) -> Vec<(u8, Request)> {
+    pub fn requests(&self, settings: &Settings) -> Vec<(u8, Request)> {
         match self {
             ByMap::Read(plan) => plan
-                .groups(cli)
+                .groups(settings)
                 .iter()
                 .map(|group| (group.slave, group.request()))
                 .collect(),
@@ -156,7 +162,7 @@ pub fn tracer(mode: Mode) -> mbtool_core::master::Tracer {
 }
 
 fn reads(
-    cli: &Cli,
+    settings: &Settings,
     master: &mut Master,
     plan: &Plan,
     table: Table,
@@ -164,13 +170,13 @@ fn reads(
     out: &mut Box<dyn Write>,
 ) -> Result<u8> {
     let result = master.read(plan, table, address).map_err(Error::from)?;
-    ReadWriter::new(output::Style::of(cli)).write(out, &result)?;
+    ReadWriter::new(settings.output.style).write(out, &result)?;
     Ok(0)
 }
 
 /// `--poll` of a read: the rows of every poll, a dropped connection opened again.
 fn poll_reads(
-    cli: &Cli,
+    settings: &Settings,
     target: &connection::Target,
     plan: &Plan,
     (table, address): (Table, u16),
@@ -179,12 +185,12 @@ fn poll_reads(
     let writer = |format| {
         let style = output::Style {
             format,
-            ..output::Style::of(cli)
+            ..settings.output.style
         };
         ReadWriter::new(style).timed()
     };
     super::poll::run(
-        cli,
+        settings,
         target,
         interval,
         |master| master.read(plan, table, address),
@@ -192,7 +198,12 @@ fn poll_reads(
     )
 }
 
-fn writes(cli: &Cli, master: &mut Master, plan: &Plan, out: &mut Box<dyn Write>) -> Result<u8> {
+fn writes(
+    settings: &Settings,
+    master: &mut Master,
+    plan: &Plan,
+    out: &mut Box<dyn Write>,
+) -> Result<u8> {
     let written = master.write(plan).map_err(Error::from)?;
     let Some(first) = plan.requests.first() else {
         return Ok(0);
@@ -223,19 +234,21 @@ fn writes(cli: &Cli, master: &mut Master, plan: &Plan, out: &mut Box<dyn Write>)
         // Values as the user typed them: one f32 is two registers.
         count: match first {
             Request::MaskWriteRegister { .. } => 1,
-            _ if table == Table::HoldingRegisters => written.count / cli.data.value_type.width(),
+            _ if table == Table::HoldingRegisters => {
+                written.count / settings.data.value_type.width()
+            }
             _ => written.count,
         },
         broadcast: plan.slave == 0,
     };
-    write_done(out, cli.output.format(), &done)?;
+    write_done(out, settings.output.format, &done)?;
     Ok(0)
 }
 
 /// `raw`: the answer decoded like `mbtool decode` shows a frame; an exception also sets
 /// the exit status.
 fn raw(
-    cli: &Cli,
+    settings: &Settings,
     master: &mut Master,
     plan: &Plan,
     mode: Mode,
@@ -269,7 +282,7 @@ fn raw(
         Some(mode),
         Some(mbtool_core::codec::Direction::Response),
     );
-    let mut writer = DecodeWriter::new(output::Style::of(cli));
+    let mut writer = DecodeWriter::new(settings.output.style);
     writer.write(out, &bytes, &report)?;
     Ok(code)
 }

@@ -4,17 +4,19 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::cli::{Cli, OutputFormat, RestoreArgs};
+use mbtool::cli::RestoreArgs;
 use mbtool::error::Error;
+use mbtool::output::Format;
 use mbtool::output::{
     self, backup::difference_text, backup::range_text, encode::write_frame, plural,
 };
+use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Mode, Pdu};
 use mbtool_core::master::backup::{restore_requests, verify};
 use mbtool_core::master::plan::parse_slave;
 use mbtool_core::slave::datafile;
 
-pub fn run(cli: &Cli, args: &RestoreArgs) -> Result<u8> {
+pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
     let model = datafile::load(&args.file).map_err(|e| match e {
         datafile::DataFileError::Read { .. } => Error::Io(std::io::Error::other(e.to_string())),
         datafile::DataFileError::Line { .. } => Error::usage(e.to_string()),
@@ -28,7 +30,7 @@ pub fn run(cli: &Cli, args: &RestoreArgs) -> Result<u8> {
             entry.table.name()
         );
     }
-    let requests = restore_requests(&entries, cli.data.max_per_request);
+    let requests = restore_requests(&entries, settings.data.max_per_request);
     if requests.is_empty() {
         return Err(Error::usage(format!(
             "{file} holds no coils or holding registers to write"
@@ -37,7 +39,7 @@ pub fn run(cli: &Cli, args: &RestoreArgs) -> Result<u8> {
     }
     if args.dry_run {
         // The frames, as encode would print them: no port is needed.
-        let mode = super::encode::mode(cli);
+        let mode = super::encode::mode(settings);
         let slave = parse_slave(&args.slave, false, mode == Mode::Tcp).map_err(Error::from)?;
         let mut out = output::stdout();
         for (i, request) in requests.iter().enumerate() {
@@ -49,18 +51,19 @@ pub fn run(cli: &Cli, args: &RestoreArgs) -> Result<u8> {
             };
             let bytes = frame.encode().map_err(|e| Error::usage(e.to_string()))?;
             let function = request.function();
-            write_frame(&mut out, OutputFormat::Table, mode, slave, function, &bytes)?;
+            write_frame(&mut out, Format::Table, mode, slave, function, &bytes)?;
         }
         out.flush()?;
         return Ok(0);
     }
-    let (mut connection, slave) = super::connect_to(cli, &args.slave)?;
+    let (mut connection, slave) = super::connect_to(settings, &args.slave)?;
     let master = &mut connection.master;
     let outcome = requests
         .iter()
         .try_for_each(|request| master.answer(slave, request).map(|_| ()))
         .and_then(|()| verify(master, slave, &entries));
-    let differences = outcome.map_err(|e| connection.explain(cli, Error::from(e)))?;
+    let differences =
+        outcome.map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
     let written: usize = entries
         .iter()
         .filter(|e| e.table.is_writable())

@@ -6,11 +6,12 @@ use std::time::{Duration, Instant};
 use anyhow::Result;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use mbtool::cli::{Cli, ProbeArg, ScanArgs};
+use mbtool::cli::{ProbeArg, ScanArgs};
 use mbtool::connection::{self, Role};
 use mbtool::error::Error;
 use mbtool::output::scan::{write_scan, Where};
 use mbtool::output::{self, colour_wanted};
+use mbtool::settings::Settings;
 use mbtool_core::codec::Mode;
 use mbtool_core::master::scan::{scan, sweep, Probe, Progress, ScanOptions, ScanReport};
 use mbtool_core::transport::serial::LineSettings;
@@ -31,9 +32,9 @@ fn progress_bar(total: u64, shown: bool) -> ProgressBar {
     bar
 }
 
-pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
-    let endpoint = connection::endpoint(cli)?;
-    let mode = connection::mode(cli, Some(&endpoint), Role::Master)?;
+pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
+    let endpoint = connection::endpoint(&settings.connection)?;
+    let mode = connection::mode(&settings.connection, Some(&endpoint), Role::Master)?;
     let ids = &args.ids.0;
     if mode != Mode::Tcp {
         if let Some(id) = ids.iter().find(|id| !(1..=247).contains(*id)) {
@@ -51,13 +52,13 @@ pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
         )
         .into());
     }
-    let settings: Vec<_> = if serial {
-        sweep(&cli.connection.baud, &cli.connection.parity)
+    let lines: Vec<_> = if serial {
+        sweep(&settings.connection.bauds, &settings.connection.parities)
             .into_iter()
-            .map(|(baud, parity)| connection::line_at(cli, mode, baud, parity))
+            .map(|(baud, parity)| connection::line_at(&settings.connection, mode, baud, parity))
             .collect()
     } else {
-        vec![connection::line_settings(cli, mode)]
+        vec![connection::line_settings(&settings.connection, mode)]
     };
     let options = ScanOptions {
         ids: ids.clone(),
@@ -69,27 +70,28 @@ pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
         all: args.all,
         tell_unit_ids: mode == Mode::Tcp,
     };
-    let total = (ids.len() * settings.len()) as u64;
+    let total = (ids.len() * lines.len()) as u64;
     let bar = progress_bar(
         total,
-        std::io::stderr().is_terminal() && !cli.output.verbose,
+        std::io::stderr().is_terminal() && !settings.output.verbose,
     );
     let place = Where {
         mode,
-        settings: &settings,
+        settings: &lines,
         serial,
     };
     let started = Instant::now();
     let report = scan(
-        &settings,
+        &lines,
         &options,
         |line| {
             let answer = connection::Answer {
-                timeout: timeout_at(cli, *line, options.probe),
+                timeout: timeout_at(settings, *line, options.probe),
                 retries: 0,
             };
-            let mut master = connection::master_at(cli, &endpoint, mode, line, answer)?;
-            if cli.output.verbose {
+            let mut master =
+                connection::master_at(&settings.connection, &endpoint, mode, line, answer)?;
+            if settings.output.verbose {
                 master.trace(super::request::tracer(mode));
             }
             Ok::<_, Error>(master)
@@ -111,7 +113,7 @@ pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
     let mut out = output::stdout();
     write_scan(
         &mut out,
-        cli.output.format(),
+        settings.output.format,
         &report,
         &place,
         colour_wanted(),
@@ -132,7 +134,7 @@ pub fn run(cli: &Cli, args: &ScanArgs) -> Result<u8> {
             "mbtool: {} {} answered after the scan's timeout of {} ms: give a longer --timeout to read {}",
             if late.len() == 1 { "slave" } else { "slaves" },
             ids.join(", "),
-            timeout_at(cli, settings[first.setting], options.probe).as_millis(),
+            timeout_at(settings, lines[first.setting], options.probe).as_millis(),
             if late.len() == 1 { "it" } else { "them" },
         );
     }
@@ -200,13 +202,13 @@ fn summary(report: &ScanReport, place: &Where, elapsed: std::time::Duration) -> 
 /// The timeout at a setting of the sweep: as given, or 100 ms after the answer to the
 /// probe has had time to travel at that baud rate (7 bytes for a read, a 32-byte server
 /// id for --probe id), so that slow lines are not taken for silent ones.
-fn timeout_at(cli: &Cli, line: LineSettings, probe: Probe) -> Duration {
-    if let Some(timeout) = cli.connection.timeout {
-        return timeout;
+fn timeout_at(settings: &Settings, line: LineSettings, probe: Probe) -> Duration {
+    if settings.connection.timeout_given {
+        return settings.connection.timeout;
     }
     let answer_bytes = match probe {
         Probe::Read => 7,
         Probe::Id => 32,
     };
-    cli.timeout() + line.character_time() * answer_bytes
+    settings.connection.timeout + line.character_time() * answer_bytes
 }

@@ -6,10 +6,12 @@ use std::sync::Arc;
 
 use anyhow::{Context, Result};
 
-use mbtool::cli::{Cli, OutputFormat, ServeArgs};
+use mbtool::cli::ServeArgs;
 use mbtool::connection::{line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::output::serve::write_entry;
+use mbtool::output::Format;
+use mbtool::settings::Settings;
 use mbtool_core::model::address::parse_reference_span;
 use mbtool_core::slave::faults::Faults;
 use mbtool_core::slave::server::{Link, Logger, Server};
@@ -18,8 +20,8 @@ use mbtool_core::transport::serial::Serial;
 use mbtool_core::transport::Endpoint;
 
 /// The port to serve on; `tcp://:PORT` listens on 127.0.0.1.
-fn endpoint(cli: &Cli) -> Result<Endpoint, Error> {
-    let port = cli.connection.port.as_deref().ok_or_else(|| {
+fn endpoint(settings: &Settings) -> Result<Endpoint, Error> {
+    let port = settings.connection.port.as_deref().ok_or_else(|| {
         Error::usage(
             "serve needs --port: a serial device, or tcp://127.0.0.1:5020 to listen on TCP",
         )
@@ -63,9 +65,9 @@ fn data_model(args: &ServeArgs) -> Result<DataModel> {
     Ok(model)
 }
 
-pub fn run(cli: &Cli, args: &ServeArgs) -> Result<u8> {
-    let endpoint = endpoint(cli)?;
-    let mode = mode(cli, Some(&endpoint), Role::Serve)?;
+pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
+    let endpoint = endpoint(settings)?;
+    let mode = mode(&settings.connection, Some(&endpoint), Role::Serve)?;
     let ids = if args.slaves.is_empty() {
         vec![mbtool_core::slave::EXAMPLE_SLAVE]
     } else {
@@ -85,7 +87,7 @@ pub fn run(cli: &Cli, args: &ServeArgs) -> Result<u8> {
         garbage: args.garbage,
     };
     let logger: Option<Logger> = (!args.quiet).then(|| {
-        let json = cli.output.format() == OutputFormat::Json;
+        let json = settings.output.format == Format::Json;
         Arc::new(move |entry: &mbtool_core::slave::server::LogEntry| {
             // One write a line, so that lines from several clients never mix.
             let mut line = Vec::with_capacity(160);
@@ -99,7 +101,7 @@ pub fn run(cli: &Cli, args: &ServeArgs) -> Result<u8> {
     let ids_text = ids.iter().map(u8::to_string).collect::<Vec<_>>().join(", ");
     match &endpoint {
         Endpoint::Serial(path) => {
-            let line = line_settings(cli, mode);
+            let line = line_settings(&settings.connection, mode);
             let mut transport = Serial::open(path, &line).map_err(Error::Io)?;
             mbtool::note!(
                 "mbtool: serving slave {ids_text} on {path} ({mode}, {} baud); Ctrl-C ends",

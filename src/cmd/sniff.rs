@@ -9,10 +9,11 @@ use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 
 use anyhow::{Context, Result};
 
-use mbtool::cli::{Cli, SniffArgs};
+use mbtool::cli::SniffArgs;
 use mbtool::connection::{line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::output::{self, sniff::SniffWriter, Named};
+use mbtool::settings::Settings;
 use mbtool_core::codec::Mode;
 use mbtool_core::sniff::pcap::{self, PcapWriter};
 use mbtool_core::sniff::session::{Filter, Record, Session};
@@ -49,9 +50,9 @@ impl Sinks {
     }
 }
 
-pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
-    let mode = mode(cli, None, Role::Sniff)?;
-    let line = line_settings(cli, mode);
+pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
+    let mode = mode(&settings.connection, None, Role::Sniff)?;
+    let line = line_settings(&settings.connection, mode);
     let filter = Filter {
         slaves: args.slaves.clone(),
         functions: args.functions.clone(),
@@ -78,7 +79,7 @@ pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
         .duration_since(UNIX_EPOCH)
         .map_or(0, |d| d.as_micros() as u64);
     let mut sinks = Sinks {
-        writer: SniffWriter::new(cli.output.format(), output::colour_wanted()),
+        writer: SniffWriter::new(settings.output.format, output::colour_wanted()),
         out: output::stdout(),
         pcap,
         epoch_us: if args.input.is_some() { 0 } else { epoch_us },
@@ -104,7 +105,7 @@ pub fn run(cli: &Cli, args: &SniffArgs) -> Result<u8> {
             None
         }
         None => Some(live(
-            cli,
+            settings,
             args,
             line,
             mode,
@@ -272,7 +273,7 @@ fn replay_timed(
 
 /// Reads the port until Ctrl-C; returns the time the capture ended, in microseconds.
 fn live(
-    cli: &Cli,
+    settings: &Settings,
     args: &SniffArgs,
     line: LineSettings,
     mode: Mode,
@@ -280,7 +281,7 @@ fn live(
     sinks: &mut Sinks,
     save: &mut Option<Save>,
 ) -> Result<u64> {
-    let path = match cli.connection.port.as_deref().map(Endpoint::parse) {
+    let path = match settings.connection.port.as_deref().map(Endpoint::parse) {
         Some(Ok(Endpoint::Serial(path))) => path,
         Some(Ok(_)) => {
             return Err(

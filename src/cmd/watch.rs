@@ -8,10 +8,11 @@ use std::time::{Duration, Instant};
 use anyhow::Result;
 use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind, KeyModifiers};
 
-use mbtool::cli::{Cli, ReadByReferenceArgs};
+use mbtool::cli::ReadByReferenceArgs;
 use mbtool::connection::{self, Target};
 use mbtool::error::Error;
 use mbtool::output::watch::WatchState;
+use mbtool::settings::Settings;
 use mbtool_core::master::map::read_points;
 use mbtool_core::master::plan::{plan, Operation};
 use mbtool_core::master::poll::{poll, PollOptions, Tick};
@@ -26,14 +27,14 @@ const DEFAULT_INTERVAL: Duration = Duration::from_secs(1);
 
 /// The points of the command line: a map's, or those of a range.
 fn points(
-    cli: &Cli,
+    settings: &Settings,
     args: &ReadByReferenceArgs,
     target: &Target,
 ) -> Result<(u8, Vec<Point>), Error> {
     if let Some(path) = &args.map {
         let names = args.point_names();
         let plan = super::map::plan(
-            cli,
+            settings,
             path,
             &args.slave,
             &names,
@@ -53,7 +54,7 @@ fn points(
         table: None,
         count: args.count.as_deref(),
     };
-    let mut options = super::encode::plan_options(cli);
+    let mut options = super::encode::plan_options(settings);
     options.tcp = target.is_tcp();
     let read = plan(&operation, options)?;
     let Some((table, address)) = read.reads else {
@@ -79,20 +80,25 @@ fn points(
             bits.count,
             Some(bits.first),
             Kind::Bool,
-            cli.data.order,
+            settings.data.order,
         ),
-        None if table.is_bits() => {
-            range_points(table, address, quantity, None, Kind::Bool, cli.data.order)
-        }
+        None if table.is_bits() => range_points(
+            table,
+            address,
+            quantity,
+            None,
+            Kind::Bool,
+            settings.data.order,
+        ),
         None => {
-            let kind = Kind::Number(cli.data.value_type);
+            let kind = Kind::Number(settings.data.value_type);
             range_points(
                 table,
                 address,
                 quantity / u32::from(kind.width()),
                 None,
                 kind,
-                cli.data.order,
+                settings.data.order,
             )
         }
     };
@@ -106,20 +112,20 @@ enum Update {
     Disconnected(String),
 }
 
-pub fn run(cli: &Cli, args: &ReadByReferenceArgs) -> Result<u8> {
+pub fn run(settings: &Settings, args: &ReadByReferenceArgs) -> Result<u8> {
     if !std::io::stdout().is_terminal() {
         return Err(Error::usage(
             "watch draws on a terminal; to log values give read ... --poll INTERVAL -o csv (or --log FILE)",
         )
         .into());
     }
-    let target = connection::target(cli)?;
-    let (slave, points) = points(cli, args, &target)?;
+    let target = connection::target(&settings.connection)?;
+    let (slave, points) = points(settings, args, &target)?;
     let title = format!(
         " slave {slave} on {} ",
-        cli.connection.port.as_deref().unwrap_or_default()
+        settings.connection.port.as_deref().unwrap_or_default()
     );
-    let interval = cli.poll.poll.unwrap_or(DEFAULT_INTERVAL);
+    let interval = settings.poll.interval.unwrap_or(DEFAULT_INTERVAL);
     let stop = Arc::new(AtomicBool::new(false));
     // Ctrl-C from outside the terminal (kill -INT) ends watch as q does.
     let on_signal = stop.clone();
@@ -128,9 +134,11 @@ pub fn run(cli: &Cli, args: &ReadByReferenceArgs) -> Result<u8> {
     let (updates, received) = mpsc::channel();
     let mut state = WatchState::new(title, &points);
     let poller = {
-        let (cli, points, stop) = (cli.clone(), points.clone(), stop.clone());
+        let (settings, points, stop) = (settings.clone(), points.clone(), stop.clone());
         std::thread::spawn(move || {
-            poll_thread(&cli, &target, slave, &points, interval, &stop, &updates);
+            poll_thread(
+                &settings, &target, slave, &points, interval, &stop, &updates,
+            );
         })
     };
     // A terminal that goes away (its window closed, its session killed) takes the shell
@@ -203,7 +211,7 @@ fn screen(
 
 /// Polls on its own thread, so that the screen answers keys between reads.
 fn poll_thread(
-    cli: &Cli,
+    settings: &Settings,
     target: &Target,
     slave: u8,
     points: &[Point],
@@ -212,11 +220,12 @@ fn poll_thread(
     updates: &mpsc::Sender<Update>,
 ) {
     let refs: Vec<&Point> = points.iter().collect();
-    let connect =
-        || -> Result<Master, Error> { connection::master(cli, &target.endpoint, target.mode) };
+    let connect = || -> Result<Master, Error> {
+        connection::master(&settings.connection, &target.endpoint, target.mode)
+    };
     let read = |master: &mut Master| {
         let began = Instant::now();
-        read_points(master, &refs, slave, cli.data.max_per_request)
+        read_points(master, &refs, slave, settings.data.max_per_request)
             .map(|read| (read, began.elapsed()))
     };
     let wait = |time: Duration| {

@@ -5,8 +5,8 @@ use std::io::{self, Write};
 
 use comfy_table::{Cell, Color};
 
+use super::Format;
 use super::{csv_field, new_table, Style};
-use crate::cli::OutputFormat;
 use mbtool_core::codec::{Checksum, ExceptionCode, Mode};
 use mbtool_core::describe::{spaced_hex, Fields, FrameReport, Values};
 use mbtool_core::model::address::{reference, Table};
@@ -37,15 +37,15 @@ impl DecodeWriter {
         report: &FrameReport,
     ) -> io::Result<()> {
         match self.style.format {
-            OutputFormat::Json => {
+            Format::Json => {
                 self.line.clear();
                 serde_json::to_writer(&mut self.line, report)?;
                 self.line.push(b'\n');
                 out.write_all(&self.line)
             }
-            OutputFormat::Values => self.write_values(out, &report.fields),
-            OutputFormat::Csv => self.write_csv(out, report),
-            OutputFormat::Table => self.write_table(out, shown, report),
+            Format::Values => self.write_values(out, &report.fields),
+            Format::Csv => self.write_csv(out, report),
+            Format::Table => self.write_table(out, shown, report),
         }
     }
 
@@ -343,7 +343,7 @@ mod tests {
     use mbtool_core::describe::describe_frame;
     use mbtool_core::model::values::{ByteOrder, ValueType};
 
-    fn shown(format: OutputFormat, frame: &[u8]) -> String {
+    fn shown(format: Format, frame: &[u8]) -> String {
         let report = describe_frame(frame, Some(Mode::Rtu), None);
         let mut writer = DecodeWriter::new(Style {
             format,
@@ -361,14 +361,14 @@ mod tests {
     #[test]
     fn json_holds_the_decode_keys() {
         assert_eq!(
-            shown(OutputFormat::Json, &REQUEST),
+            shown(Format::Json, &REQUEST),
             "{\"mode\":\"rtu\",\"kind\":\"request\",\"slave\":58,\"function\":3,\"valid\":true,\"function_name\":\"Read Holding Registers\",\"address\":107,\"ref\":\"400108\",\"count\":3}\n"
         );
     }
 
     #[test]
     fn a_table_shows_an_rtu_frame_as_hex_whatever_its_first_byte() {
-        let table = shown(OutputFormat::Table, &REQUEST);
+        let table = shown(Format::Table, &REQUEST);
         assert!(table.contains("3A 03 00 6B 00 03 70 9C"), "{table}");
         assert!(!table.contains(":\u{3}"), "{table}");
     }

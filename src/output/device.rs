@@ -5,8 +5,8 @@ use std::io::{self, Write};
 
 use serde_json::{json, Map, Value};
 
+use super::Format;
 use super::{csv_field, new_table};
-use crate::cli::OutputFormat;
 use mbtool_core::codec::{DeviceObject, ExceptionCode};
 use mbtool_core::master::device::Asked;
 use mbtool_core::master::device::{Counter, Identification, RoundTrips, ServerId};
@@ -304,31 +304,31 @@ fn diag_json(report: &DiagReport) -> Value {
 
 fn write_rows(
     out: &mut dyn Write,
-    format: OutputFormat,
+    format: Format,
     rows: &[(String, String)],
     json: impl FnOnce() -> Value,
     colour: bool,
 ) -> io::Result<()> {
     match format {
-        OutputFormat::Json => {
+        Format::Json => {
             serde_json::to_writer(&mut *out, &json())?;
             writeln!(out)
         }
-        OutputFormat::Table => {
+        Format::Table => {
             let mut table = new_table(colour);
             for (name, value) in rows {
                 table.add_row(vec![name, value]);
             }
             writeln!(out, "{table}")
         }
-        OutputFormat::Csv => {
+        Format::Csv => {
             writeln!(out, "name,value")?;
             for (name, value) in rows {
                 writeln!(out, "{},{}", csv_field(name), csv_field(value))?;
             }
             Ok(())
         }
-        OutputFormat::Values => {
+        Format::Values => {
             for (_, value) in rows {
                 writeln!(out, "{value}")?;
             }
@@ -339,7 +339,7 @@ fn write_rows(
 
 pub fn write_info(
     out: &mut dyn Write,
-    format: OutputFormat,
+    format: Format,
     report: &InfoReport,
     colour: bool,
 ) -> io::Result<()> {
@@ -354,7 +354,7 @@ pub fn write_info(
 
 pub fn write_diag(
     out: &mut dyn Write,
-    format: OutputFormat,
+    format: Format,
     report: &DiagReport,
     colour: bool,
 ) -> io::Result<()> {

@@ -4,7 +4,7 @@ use std::io::{self, Write};
 
 use serde::Serialize;
 
-use crate::cli::OutputFormat;
+use super::Format;
 use mbtool_core::codec::Mode;
 use mbtool_core::describe::spaced_hex;
 
@@ -30,7 +30,7 @@ pub fn frame_text(mode: Mode, bytes: &[u8]) -> String {
 
 pub fn write_frame(
     out: &mut dyn Write,
-    format: OutputFormat,
+    format: Format,
     mode: Mode,
     slave: u8,
     function: u8,
@@ -38,7 +38,7 @@ pub fn write_frame(
 ) -> io::Result<()> {
     let text = frame_text(mode, bytes);
     match format {
-        OutputFormat::Json => {
+        Format::Json => {
             let frame = EncodedFrame {
                 mode: mode.name(),
                 slave,
@@ -48,6 +48,6 @@ pub fn write_frame(
             serde_json::to_writer(&mut *out, &frame)?;
             writeln!(out)
         }
-        OutputFormat::Table | OutputFormat::Values | OutputFormat::Csv => writeln!(out, "{text}"),
+        Format::Table | Format::Values | Format::Csv => writeln!(out, "{text}"),
     }
 }

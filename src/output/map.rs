@@ -5,8 +5,8 @@ use std::io::{self, Write};
 
 use serde::Serialize;
 
+use super::Format;
 use super::{csv_field, new_table};
-use crate::cli::OutputFormat;
 use mbtool_core::master::map::MapRead;
 use mbtool_core::model::map::Point;
 use mbtool_core::model::values::Value;
@@ -33,7 +33,7 @@ struct JsonPoint<'a> {
 }
 
 pub struct MapWriter {
-    format: OutputFormat,
+    format: Format,
     colour: bool,
     csv_header_written: bool,
 }
@@ -55,15 +55,15 @@ impl super::PollRows for MapRows<'_> {
 
     fn failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()> {
         match self.writer.format {
-            OutputFormat::Json => {
+            Format::Json => {
                 serde_json::to_writer(&mut *out, &super::JsonFailure { time, error })?;
                 writeln!(out)
             }
-            OutputFormat::Csv => {
+            Format::Csv => {
                 self.writer.header(out, true)?;
                 writeln!(out, "{time},,,,,,{}", csv_field(error))
             }
-            OutputFormat::Table | OutputFormat::Values => Ok(()),
+            Format::Table | Format::Values => Ok(()),
         }
     }
 
@@ -80,7 +80,7 @@ fn raw_hex(raw: &[u16]) -> String {
 }
 
 impl MapWriter {
-    pub fn new(format: OutputFormat, colour: bool) -> Self {
+    pub fn new(format: Format, colour: bool) -> Self {
         Self {
             format,
             colour,
@@ -122,7 +122,7 @@ impl MapWriter {
             .iter()
             .filter_map(|value| Some((points.get(value.point)?, value)));
         match self.format {
-            OutputFormat::Json => {
+            Format::Json => {
                 let points = rows
                     .map(|(point, value)| JsonPoint {
                         name: &point.name,
@@ -143,13 +143,13 @@ impl MapWriter {
                 )?;
                 writeln!(out)
             }
-            OutputFormat::Values => {
+            Format::Values => {
                 for (point, value) in rows {
                     writeln!(out, "{}={}", point.name, value.value)?;
                 }
                 Ok(())
             }
-            OutputFormat::Csv => {
+            Format::Csv => {
                 self.header(out, time.is_some())?;
                 for (point, value) in rows {
                     let (time, error) = match time {
@@ -168,7 +168,7 @@ impl MapWriter {
                 }
                 Ok(())
             }
-            OutputFormat::Table => {
+            Format::Table => {
                 let mut table = new_table(self.colour);
                 table.set_header(["name", "ref", "value", "raw"]);
                 for (point, value) in rows {

@@ -17,7 +17,6 @@ use std::io::{self, IsTerminal, Write};
 
 use comfy_table::{presets, Table};
 
-use crate::cli::{Cli, OutputFormat};
 use mbtool_core::codec::{Pdu, Request};
 use mbtool_core::describe::{describe_pdu, Fields, Values};
 use mbtool_core::model::values::{ByteOrder, ValueType};
@@ -83,25 +82,27 @@ impl<W: Write> Write for Named<W> {
     }
 }
 
-/// How values are shown, as the options resolve it once: the format, how registers are
+/// What results are written as.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// A table for people.
+    Table,
+    /// One JSON object per line.
+    Json,
+    /// Only the values, one per line.
+    Values,
+    /// Comma-separated values with a header line.
+    Csv,
+}
+
+/// How values are shown, as the settings resolve it once: the format, how registers are
 /// read as values, and whether there is colour.
 #[derive(Clone, Copy, Debug)]
 pub struct Style {
-    pub format: OutputFormat,
+    pub format: Format,
     pub value_type: ValueType,
     pub order: ByteOrder,
     pub colour: bool,
-}
-
-impl Style {
-    pub fn of(cli: &Cli) -> Self {
-        Self {
-            format: cli.output.format(),
-            value_type: cli.data.value_type,
-            order: cli.data.order,
-            colour: colour_wanted(),
-        }
-    }
 }
 
 /// Colour only on a terminal, and never with NO_COLOR set (https://no-color.org).

@@ -6,8 +6,8 @@ use std::io::{self, Write};
 use comfy_table::{Cell, Color};
 use serde::Serialize;
 
+use super::Format;
 use super::{csv_field, new_table, Style};
-use crate::cli::OutputFormat;
 use mbtool_core::master::run::{ReadData, ReadResult};
 use mbtool_core::model::address::{bit_reference, reference};
 use mbtool_core::model::values::{text, Value, ValueType};
@@ -89,18 +89,18 @@ impl ReadWriter {
     /// the values, nothing (the error goes to stderr).
     fn write_failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()> {
         match self.style.format {
-            OutputFormat::Json => {
+            Format::Json => {
                 serde_json::to_writer(&mut *out, &super::JsonFailure { time, error })?;
                 writeln!(out)
             }
-            OutputFormat::Csv => {
+            Format::Csv => {
                 if !self.csv_header_written {
                     writeln!(out, "{TIMED_CSV_HEADER}")?;
                     self.csv_header_written = true;
                 }
                 writeln!(out, "{time},,,,,{}", csv_field(error))
             }
-            OutputFormat::Table | OutputFormat::Values => Ok(()),
+            Format::Table | Format::Values => Ok(()),
         }
     }
 
@@ -190,7 +190,7 @@ impl ReadWriter {
         let changed = self.changed(result);
         let rows = self.rows(result);
         match self.style.format {
-            OutputFormat::Json => {
+            Format::Json => {
                 let wide = self.style.value_type.width() > 1;
                 let values = rows
                     .iter()
@@ -210,12 +210,12 @@ impl ReadWriter {
                 serde_json::to_writer(&mut *out, &json)?;
                 writeln!(out)?;
             }
-            OutputFormat::Values => {
+            Format::Values => {
                 for row in &rows {
                     writeln!(out, "{}", row.value)?;
                 }
             }
-            OutputFormat::Csv => {
+            Format::Csv => {
                 // Bits have no registers, so no hex column.
                 let bits = matches!(result.data, ReadData::Bits(_));
                 if !self.csv_header_written {
@@ -253,7 +253,7 @@ impl ReadWriter {
                     }
                 }
             }
-            OutputFormat::Table => {
+            Format::Table => {
                 let mut table = new_table(self.style.colour);
                 let bits = matches!(result.data, ReadData::Bits(_));
                 let mut header = vec!["ref".to_string(), "address".to_string()];
@@ -325,13 +325,13 @@ pub struct WriteDone {
     pub broadcast: bool,
 }
 
-pub fn write_done(out: &mut dyn Write, format: OutputFormat, done: &WriteDone) -> io::Result<()> {
+pub fn write_done(out: &mut dyn Write, format: Format, done: &WriteDone) -> io::Result<()> {
     match format {
-        OutputFormat::Json => {
+        Format::Json => {
             serde_json::to_writer(&mut *out, done)?;
             writeln!(out)
         }
-        OutputFormat::Table => {
+        Format::Table => {
             let what = if done.broadcast {
                 "broadcast".to_string()
             } else {
@@ -347,7 +347,7 @@ pub fn write_done(out: &mut dyn Write, format: OutputFormat, done: &WriteDone) -
                 mbtool_core::codec::function::name(done.function)
             )
         }
-        OutputFormat::Values | OutputFormat::Csv => Ok(()),
+        Format::Values | Format::Csv => Ok(()),
     }
 }
 
@@ -368,7 +368,7 @@ mod tests {
         }
     }
 
-    fn shown(format: OutputFormat, value_type: ValueType, result: &ReadResult) -> String {
+    fn shown(format: Format, value_type: ValueType, result: &ReadResult) -> String {
         let mut writer = ReadWriter::new(Style {
             format,
             value_type,
@@ -384,7 +384,7 @@ mod tests {
     fn values_are_one_a_line_for_scripts() {
         let result = holding(vec![555, 0, 100]);
         assert_eq!(
-            shown(OutputFormat::Values, ValueType::U16, &result),
+            shown(Format::Values, ValueType::U16, &result),
             "555\n0\n100\n"
         );
     }
@@ -393,7 +393,7 @@ mod tests {
     fn csv_has_a_header_and_a_row_per_value() {
         let result = holding(vec![555, 0, 100]);
         assert_eq!(
-            shown(OutputFormat::Csv, ValueType::U16, &result),
+            shown(Format::Csv, ValueType::U16, &result),
             "ref,address,hex,value\n400108,107,022B,555\n400109,108,0000,0\n400110,109,0064,100\n"
         );
     }
@@ -402,7 +402,7 @@ mod tests {
     fn json_wide_values_carry_their_registers() {
         // 1.5 as an f32, high word first.
         let result = holding(vec![0x3FC0, 0x0000]);
-        let line = shown(OutputFormat::Json, ValueType::F32, &result);
+        let line = shown(Format::Json, ValueType::F32, &result);
         let json: serde_json::Value = serde_json::from_str(line.trim()).unwrap();
         assert_eq!(json["slave"], 17);
         assert_eq!(json["values"][0]["ref"], "400108");
@@ -415,7 +415,7 @@ mod tests {
 
     #[test]
     fn a_table_shows_reference_address_hex_and_value() {
-        let table = shown(OutputFormat::Table, ValueType::U16, &holding(vec![555]));
+        let table = shown(Format::Table, ValueType::U16, &holding(vec![555]));
         assert!(table.contains("400108"), "{table}");
         assert!(table.contains("022B"), "{table}");
         assert!(table.contains("555"), "{table}");
@@ -432,7 +432,7 @@ mod tests {
             broadcast: false,
         };
         let mut out = Vec::new();
-        write_done(&mut out, OutputFormat::Json, &done).unwrap();
+        write_done(&mut out, Format::Json, &done).unwrap();
         assert_eq!(
             String::from_utf8(out).unwrap(),
             "{\"slave\":17,\"function\":6,\"address\":1,\"ref\":\"400002\",\"count\":1}\n"

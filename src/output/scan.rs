@@ -5,8 +5,8 @@ use std::io::{self, Write};
 
 use serde_json::json;
 
+use super::Format;
 use super::{csv_field, new_table};
-use crate::cli::OutputFormat;
 use mbtool_core::codec::Mode;
 use mbtool_core::master::scan::{Answer, Hit, ScanReport};
 use mbtool_core::model::choice::Choice;
@@ -76,20 +76,20 @@ fn hit_json(hit: &Hit) -> (&'static str, Option<u8>) {
 
 pub fn write_scan(
     out: &mut dyn Write,
-    format: OutputFormat,
+    format: Format,
     report: &ScanReport,
     place: &Where,
     colour: bool,
 ) -> io::Result<()> {
     if let Some(answer) = report.ignores_unit_id {
         match format {
-            OutputFormat::Json => {
+            Format::Json => {
                 let (answer, exception) = answer_json(Some(answer));
                 let line = json!({"ignores_unit_id": true, "mode": place.mode.name(),
                     "answer": answer, "exception": exception});
                 writeln!(out, "{line}")?;
             }
-            OutputFormat::Table => writeln!(
+            Format::Table => writeln!(
                 out,
                 "every id answered ({}): the device does not tell unit ids apart{}",
                 answer_text(Some(answer)),
@@ -99,11 +99,11 @@ pub fn write_scan(
                     ""
                 }
             )?,
-            OutputFormat::Csv | OutputFormat::Values => {}
+            Format::Csv | Format::Values => {}
         }
     }
     match format {
-        OutputFormat::Json => {
+        Format::Json => {
             for hit in report.telling_hits() {
                 let (answer, exception) = hit_json(hit);
                 let mut line = json!({
@@ -127,13 +127,13 @@ pub fn write_scan(
             }
             Ok(())
         }
-        OutputFormat::Values => {
+        Format::Values => {
             for hit in report.telling_hits() {
                 writeln!(out, "{}", hit.slave)?;
             }
             Ok(())
         }
-        OutputFormat::Csv => {
+        Format::Csv => {
             writeln!(out, "slave,settings,answer,confirmed")?;
             for hit in report.telling_hits() {
                 writeln!(
@@ -147,7 +147,7 @@ pub fn write_scan(
             }
             Ok(())
         }
-        OutputFormat::Table => {
+        Format::Table => {
             if report.telling_hits().next().is_none() {
                 return Ok(());
             }

@@ -4,8 +4,8 @@ use std::io::{self, Write};
 
 use serde::Serialize;
 
+use super::Format;
 use super::{csv_field, fields_summary, request_summary, shown_values};
-use crate::cli::OutputFormat;
 use mbtool_core::codec::function;
 use mbtool_core::codec::ExceptionCode;
 use mbtool_core::describe::{describe_pdu, spaced_hex, FrameReport, Kind, Values};
@@ -67,7 +67,7 @@ struct JsonSummary<'a> {
 }
 
 pub struct SniffWriter {
-    format: OutputFormat,
+    format: Format,
     colour: bool,
     csv_header_written: bool,
     /// One JSON line is put together here and written at once: serde writes token by
@@ -134,7 +134,7 @@ fn frame_summary(report: &FrameReport) -> String {
 }
 
 impl SniffWriter {
-    pub fn new(format: OutputFormat, colour: bool) -> Self {
+    pub fn new(format: Format, colour: bool) -> Self {
         Self {
             format,
             colour,
@@ -153,7 +153,7 @@ impl SniffWriter {
 
     pub fn record(&mut self, out: &mut dyn Write, record: &Record) -> io::Result<()> {
         match (self.format, record) {
-            (OutputFormat::Json, Record::Frame(frame)) => {
+            (Format::Json, Record::Frame(frame)) => {
                 // Always hex, whatever the mode: a JSON reader gets the bytes as they were.
                 let bytes = spaced_hex(&frame.found.bytes);
                 json_line(
@@ -172,7 +172,7 @@ impl SniffWriter {
                 )
             }
             (
-                OutputFormat::Json,
+                Format::Json,
                 Record::Noise {
                     kept,
                     len,
@@ -192,7 +192,7 @@ impl SniffWriter {
                 },
             ),
             (
-                OutputFormat::Json,
+                Format::Json,
                 Record::Unanswered {
                     slave,
                     request,
@@ -212,9 +212,9 @@ impl SniffWriter {
                     },
                 )
             }
-            (OutputFormat::Csv, Record::Frame(frame)) => self.csv(out, frame),
-            (OutputFormat::Csv, _) => Ok(()),
-            (OutputFormat::Values, Record::Frame(frame)) => match &frame.report.fields.values {
+            (Format::Csv, Record::Frame(frame)) => self.csv(out, frame),
+            (Format::Csv, _) => Ok(()),
+            (Format::Values, Record::Frame(frame)) => match &frame.report.fields.values {
                 Some(values) if frame.report.kind == Kind::Response => {
                     for value in shown_values(values, usize::MAX).split(' ') {
                         writeln!(out, "{value}")?;
@@ -223,8 +223,8 @@ impl SniffWriter {
                 }
                 _ => Ok(()),
             },
-            (OutputFormat::Values, _) => Ok(()),
-            (OutputFormat::Table, record) => self.line(out, record),
+            (Format::Values, _) => Ok(()),
+            (Format::Table, record) => self.line(out, record),
         }
     }
 
@@ -362,7 +362,7 @@ impl SniffWriter {
 
     pub fn summary(&mut self, out: &mut dyn Write, counts: &Counts) -> io::Result<()> {
         match self.format {
-            OutputFormat::Json => {
+            Format::Json => {
                 serde_json::to_writer(
                     &mut *out,
                     &JsonSummary {
@@ -372,7 +372,7 @@ impl SniffWriter {
                 )?;
                 out.write_all(b"\n")
             }
-            OutputFormat::Table => {
+            Format::Table => {
                 writeln!(
                     out,
                     "summary: {} frames ({} requests, {} answers, {} exceptions), {} unanswered, {} CRC errors, {} noise bytes",
@@ -388,7 +388,7 @@ impl SniffWriter {
                 }
                 Ok(())
             }
-            OutputFormat::Values | OutputFormat::Csv => Ok(()),
+            Format::Values | Format::Csv => Ok(()),
         }
     }
 }
@@ -405,7 +405,7 @@ mod tests {
         let mut records = Vec::new();
         session.push(stream, &mut records);
         session.finish(None, &mut records);
-        let mut writer = SniffWriter::new(OutputFormat::Json, false);
+        let mut writer = SniffWriter::new(Format::Json, false);
         let mut out = Vec::new();
         for record in &records {
             writer.record(&mut out, record).unwrap();

@@ -108,8 +108,10 @@ fn every_help_example_is_one_the_command_accepts() {
         let matches = mbtool::docs::command()
             .try_get_matches_from(&words)
             .unwrap_or_else(|e| panic!("{line}: {e}"));
-        let taken = mbtool::cli::untaken_option(&mbtool::docs::command(), &matches);
-        assert_eq!(taken, None, "{line}");
+        let cli = <mbtool::cli::Cli as clap::FromArgMatches>::from_arg_matches(&matches)
+            .unwrap_or_else(|e| panic!("{line}: {e}"));
+        let resolved = mbtool::settings::resolve(&cli, &mbtool::docs::command(), &matches);
+        assert_eq!(resolved.err(), None, "{line}");
         let name = matches.subcommand_name().unwrap();
         // These need a line or a device of their own; --listen needs a serial line.
         // watch needs a terminal: its examples are checked as far as the command line.

@@ -1,0 +1,223 @@
+//! The command line resolved once into the settings the commands take. This module and
+//! `main.rs` are the only ones that know the clap definition's option types; a new option
+//! is defined in `cli` and resolved here, nowhere else. Every check of the command line as
+//! a whole (an option the command does not take, a sweep outside scan, an `--output` that
+//! is no format) is made here, before any command runs.
+
+use std::path::PathBuf;
+use std::time::Duration;
+
+use clap::ValueEnum;
+
+use crate::cli::{takes_option, Cli, Command, OutputFormat};
+use crate::output::{colour_wanted, Format, Style};
+use mbtool_core::codec::Mode;
+use mbtool_core::model::values::{ByteOrder, ValueType};
+use mbtool_core::transport::serial::Parity;
+
+/// Everything the options say, resolved.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    pub connection: Connection,
+    pub output: Output,
+    pub data: Data,
+    pub poll: Poll,
+}
+
+/// Where the slave is and how to talk to it.
+#[derive(Clone, Debug)]
+pub struct Connection {
+    /// `--port` as given; what it names is read when a command needs it, so that a
+    /// missing port is told only to commands that use one.
+    pub port: Option<String>,
+    /// `--mode`, when given.
+    pub mode: Option<Mode>,
+    /// The serial speeds given: one, or a list to sweep (scan only).
+    pub bauds: Vec<u32>,
+    /// The parities given, as `bauds`.
+    pub parities: Vec<Parity>,
+    pub data_bits: Option<u8>,
+    pub stop_bits: Option<u8>,
+    /// The response timeout: as given, else the command's default.
+    pub timeout: Duration,
+    /// Whether `--timeout` (or its variable) gave it.
+    pub timeout_given: bool,
+    pub retries: u32,
+    pub frame_gap: Option<Duration>,
+}
+
+impl Connection {
+    /// The serial speed; only scan sweeps several, and a list elsewhere is refused.
+    pub fn baud(&self) -> u32 {
+        self.bauds.first().copied().unwrap_or(19200)
+    }
+
+    /// The serial parity, as [`Connection::baud`].
+    pub fn parity(&self) -> Parity {
+        self.parities.first().copied().unwrap_or(Parity::Even)
+    }
+}
+
+/// How results are shown.
+#[derive(Clone, Debug)]
+pub struct Output {
+    pub style: Style,
+    pub format: Format,
+    /// `-v`: every frame on stderr.
+    pub verbose: bool,
+    /// The file `dump` writes (its `--output`).
+    pub file: Option<PathBuf>,
+}
+
+/// How addresses and values are read from the command line.
+#[derive(Clone, Copy, Debug)]
+pub struct Data {
+    pub pdu_addresses: bool,
+    pub value_type: ValueType,
+    pub order: ByteOrder,
+    pub max_per_request: Option<u16>,
+}
+
+/// A read repeated on a schedule.
+#[derive(Clone, Debug)]
+pub struct Poll {
+    /// `--poll`: the interval, when reads repeat.
+    pub interval: Option<Duration>,
+    /// `--count`: how many reads (for diag, how many round trips).
+    pub count: Option<u64>,
+    /// `--log`: the file every row is appended to.
+    pub log: Option<PathBuf>,
+}
+
+/// The settings of a parsed command line, or the one-line message that refuses it.
+pub fn resolve(
+    cli: &Cli,
+    definition: &clap::Command,
+    matches: &clap::ArgMatches,
+) -> Result<Settings, String> {
+    if let Some(message) = untaken_option(definition, matches)
+        .or_else(|| sweep_outside_scan(cli, matches))
+        .or_else(|| output_problem(cli))
+    {
+        return Err(message);
+    }
+    let c = &cli.connection;
+    // scan asks many ids that are not there: its timeout is short.
+    let default_timeout = match cli.command {
+        Command::Scan(_) => Duration::from_millis(100),
+        _ => Duration::from_secs(1),
+    };
+    let format = match (&cli.output.output, cli.output.json) {
+        (_, true) => Format::Json,
+        (Some(name), false) => OutputFormat::from_str(name, true).map_or(Format::Table, format_of),
+        (None, false) => Format::Table,
+    };
+    Ok(Settings {
+        connection: Connection {
+            port: c.port.clone(),
+            mode: c.mode.map(Mode::from),
+            bauds: c.baud.clone(),
+            parities: c.parity.clone(),
+            data_bits: c.data_bits,
+            stop_bits: c.stop_bits,
+            timeout: c.timeout.unwrap_or(default_timeout),
+            timeout_given: c.timeout.is_some(),
+            retries: c.retries,
+            frame_gap: c.frame_gap,
+        },
+        output: Output {
+            style: Style {
+                format,
+                value_type: cli.data.value_type,
+                order: cli.data.order,
+                colour: colour_wanted(),
+            },
+            format,
+            verbose: cli.output.verbose,
+            file: match cli.command {
+                Command::Dump(_) => cli.output.output.as_ref().map(PathBuf::from),
+                _ => None,
+            },
+        },
+        data: Data {
+            pdu_addresses: cli.data.pdu_addresses,
+            value_type: cli.data.value_type,
+            order: cli.data.order,
+            max_per_request: cli.data.max_per_request,
+        },
+        poll: Poll {
+            interval: cli.poll.poll,
+            count: cli.poll.count,
+            log: cli.poll.log.clone(),
+        },
+    })
+}
+
+fn format_of(format: OutputFormat) -> Format {
+    match format {
+        OutputFormat::Table => Format::Table,
+        OutputFormat::Json => Format::Json,
+        OutputFormat::Values => Format::Values,
+        OutputFormat::Csv => Format::Csv,
+    }
+}
+
+/// An `--output` that names no format, where a format is what it takes; for dump, a
+/// format's name, which would name a file by mistake.
+fn output_problem(cli: &Cli) -> Option<String> {
+    let name = cli.output.output.as_deref()?;
+    let is_format = OutputFormat::from_str(name, true).is_ok();
+    match (&cli.command, is_format) {
+        (Command::Dump(_), true) => Some(format!(
+            "dump writes a data file: -o {name} would name the file '{name}'; give ./{name} if that is meant"
+        )),
+        (Command::Dump(_), false) | (_, true) => None,
+        (_, false) => Some(format!(
+            "--output {name}: give a format: table, json, values or csv"
+        )),
+    }
+}
+
+/// A list of baud rates or parities typed for a command that takes one, as a one-line
+/// message. A list from the environment (MBTOOL_BAUD=9600,19200, set for scans) gives
+/// the other commands its first value.
+fn sweep_outside_scan(cli: &Cli, matches: &clap::ArgMatches) -> Option<String> {
+    let mut leaf = matches;
+    while let Some((_, sub)) = leaf.subcommand() {
+        leaf = sub;
+    }
+    let typed = |id: &str| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine);
+    let several = match (cli.connection.baud.len(), cli.connection.parity.len()) {
+        _ if matches!(cli.command, Command::Scan(_)) => return None,
+        (2.., _) if typed("baud") => "baud rates",
+        (_, 2..) if typed("parity") => "parities",
+        _ => return None,
+    };
+    Some(format!("only scan sweeps several {several}: give one"))
+}
+
+/// The first global option typed on the command line that the command given does not
+/// take, as a one-line message: `decode does not take --baud (see 'mbtool decode --help')`.
+fn untaken_option(command: &clap::Command, matches: &clap::ArgMatches) -> Option<String> {
+    let mut path = Vec::new();
+    let mut leaf = matches;
+    while let Some((name, sub)) = leaf.subcommand() {
+        path.push(name);
+        leaf = sub;
+    }
+    let typed = command.get_arguments().find(|arg| {
+        let id = arg.get_id().as_str();
+        arg.is_global_set()
+            && !takes_option(&path, id)
+            && leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine)
+    })?;
+    let name = match (typed.get_long(), typed.get_short()) {
+        (Some(long), _) => format!("--{long}"),
+        (None, Some(short)) => format!("-{short}"),
+        (None, None) => typed.get_id().to_string(),
+    };
+    let path = path.join(" ");
+    Some(format!(
+        "{path} does not take {name} (see 'mbtool {path} --help' for the options it takes)"
+    ))
+}
