@@ -19,7 +19,7 @@ const ROUND_TRIPS: u64 = 5;
 
 pub fn run(settings: &Settings, args: &DiagArgs) -> Result<u8> {
     let count = settings.poll.count.unwrap_or(ROUND_TRIPS);
-    let (mut connection, slave) = super::connect_to(settings, &args.slave)?;
+    let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
     let master = &mut connection.master;
     // A device that does not answer at all fails here, with what was tried.
     let round_trips = round_trips(master, slave, count)

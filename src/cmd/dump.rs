@@ -28,7 +28,7 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
         })
         .collect::<Result<Vec<_>, AddressError>>()
         .map_err(Error::from)?;
-    let (mut connection, slave) = super::connect_to(settings, &args.slave)?;
+    let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
     let dump = backup::dump(
         &mut connection.master,
         slave,

@@ -24,7 +24,7 @@ pub fn outcome<T>(asked: Result<Asked<T>, MasterError>) -> Result<Outcome<T>, Ma
 }
 
 pub fn run(settings: &Settings, args: &InfoArgs) -> Result<u8> {
-    let (mut connection, slave) = super::connect_to(settings, &args.slave)?;
+    let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
     let master = &mut connection.master;
     let asked = outcome(identification(master, slave))
         .and_then(|id| Ok((id, outcome(server_id(master, slave))?)));

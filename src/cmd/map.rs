@@ -4,11 +4,12 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::connection::Connection;
+use mbtool::cli::RequestCommand;
+use mbtool::connection::{self, Connection};
 use mbtool::error::Error;
 use mbtool::output::{self, map::MapRows, map::MapWriter};
 use mbtool::settings::Settings;
-use mbtool_core::codec::Request;
+use mbtool_core::codec::{Mode, Request};
 use mbtool_core::master::map::{groups, read_points, write_request, written_value, Group};
 use mbtool_core::master::plan::{parse_slave, Plan};
 use mbtool_core::model::address::Access;
@@ -177,7 +178,7 @@ pub fn write(settings: &Settings, writes: &[MapWrite], connection: &mut Connecti
             .write(&plan)
             .map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
         if written.mask_write_emulated {
-            super::request::note_mask_write_emulated(write.slave, &write.said);
+            super::shared::note_mask_write_emulated(write.slave, &write.said);
         }
         writeln!(out, "wrote {}", write.said)?;
     }
@@ -205,4 +206,80 @@ pub fn poll(
         |master| read_points(master, &points, plan.slave, settings.data.max_per_request),
         writer,
     )
+}
+
+/// A read or write by register map, checked whole; `None` for a command without `--map`.
+pub enum ByMap {
+    Read(MapPlan),
+    Write(Vec<MapWrite>),
+}
+
+/// The map work of `read --map` or `write --map`, with nothing opened yet.
+pub fn by_map(settings: &Settings, request: &RequestCommand) -> Result<Option<ByMap>> {
+    let tcp = || super::shared::mode(settings) == Mode::Tcp;
+    match request {
+        RequestCommand::Read(args) => match &args.map {
+            Some(path) => {
+                let names = args.point_names();
+                let plan = plan(settings, path, &args.slave, &names, tcp(), Access::Read)?;
+                Ok(Some(ByMap::Read(plan)))
+            }
+            None if !args.names.is_empty() => Err(Error::usage(format!(
+                "read takes SLAVE REFERENCE [COUNT]; '{}' is one word too many (point names come with --map FILE)",
+                args.names.join(" ")
+            ))
+            .into()),
+            None => Ok(None),
+        },
+        RequestCommand::Write(args) => match &args.map {
+            Some(_) if args.function.is_some() => Err(Error::usage(
+                "--function chooses how values are written by reference; a map writes each point as its type needs",
+            )
+            .into()),
+            Some(path) => {
+                let plan = plan(settings, path, &args.slave, &[], tcp(), Access::WriteOne)?;
+                Ok(Some(ByMap::Write(plan.writes(&args.assignments(), path)?)))
+            }
+            None => Ok(None),
+        },
+        _ => Ok(None),
+    }
+}
+
+impl ByMap {
+    pub fn run(&self, settings: &Settings) -> Result<u8> {
+        if let (ByMap::Read(plan), Some(interval)) = (self, settings.poll.interval) {
+            return poll(
+                settings,
+                plan,
+                &connection::target(&settings.connection)?,
+                interval,
+            );
+        }
+        let mut connection = connection::connect(&settings.connection)?;
+        if settings.output.verbose {
+            connection
+                .master
+                .trace(super::shared::tracer(connection.mode));
+        }
+        match self {
+            ByMap::Read(plan) => read(settings, plan, &mut connection),
+            ByMap::Write(writes) => write(settings, writes, &mut connection),
+        }
+    }
+
+    /// The requests it sends, with their slaves, for `encode`.
+    pub fn requests(&self, settings: &Settings) -> Vec<(u8, Request)> {
+        match self {
+            ByMap::Read(plan) => plan
+                .groups(settings)
+                .iter()
+                .map(|group| (group.slave, group.request()))
+                .collect(),
+            ByMap::Write(writes) => writes
+                .iter()
+                .map(|write| (write.slave, write.request.clone()))
+                .collect(),
+        }
+    }
 }

@@ -11,16 +11,14 @@ mod request;
 mod restore;
 mod scan;
 mod serve;
+mod shared;
 mod sniff;
 mod watch;
 
 use anyhow::Result;
 
 use mbtool::cli::Command;
-use mbtool::connection::{self, Connection};
-use mbtool::error::Error;
 use mbtool::settings::Settings;
-use mbtool_core::master::plan::parse_slave;
 
 /// Runs the command; `Ok` carries the exit status of a command that finished its work.
 pub fn run(settings: &Settings, command: Command) -> Result<u8> {
@@ -41,16 +39,4 @@ pub fn run(settings: &Settings, command: Command) -> Result<u8> {
             Ok(0)
         }
     }
-}
-
-/// A connection to the one slave a device command names: the slave checked before the
-/// port is opened, and `-v` showing every frame.
-fn connect_to(settings: &Settings, slave: &str) -> Result<(Connection, u8)> {
-    let target = connection::target(&settings.connection)?;
-    let slave = parse_slave(slave, false, target.is_tcp()).map_err(Error::from)?;
-    let mut connection = target.connect(&settings.connection)?;
-    if settings.output.verbose {
-        connection.master.trace(request::tracer(connection.mode));
-    }
-    Ok((connection, slave))
 }

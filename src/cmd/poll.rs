@@ -72,7 +72,7 @@ pub fn run<W: PollRows>(
     let connect = || -> Result<Master, Error> {
         let mut master = connection::master(&settings.connection, &target.endpoint, target.mode)?;
         if settings.output.verbose {
-            master.trace(super::request::tracer(target.mode));
+            master.trace(super::shared::tracer(target.mode));
         }
         Ok(master)
     };

@@ -1,24 +1,21 @@
 //! The commands that talk to a slave: reads, writes, `raw`, and polling.
 
 use std::io::Write;
-use std::time::Instant;
 
 use anyhow::Result;
 
 use mbtool::cli::RequestCommand;
 use mbtool::connection;
 use mbtool::error::Error;
+use mbtool::output;
 use mbtool::output::decode::DecodeWriter;
 use mbtool::output::read::{write_done, ReadWriter, WriteDone};
-use mbtool::output::{self, encode::frame_text};
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Mode, Pdu, Request};
 use mbtool_core::describe::describe_frame;
 use mbtool_core::master::plan::Plan;
-use mbtool_core::master::{Master, Reply, Traffic};
-use mbtool_core::model::address::{bit_reference, reference, Access, Table};
-
-use super::map::{MapPlan, MapWrite};
+use mbtool_core::master::{Master, Reply};
+use mbtool_core::model::address::{bit_reference, reference, Table};
 
 pub fn run(settings: &Settings, request: &RequestCommand) -> Result<u8> {
     // The whole command line is checked before a port is opened.
@@ -34,10 +31,10 @@ pub fn run(settings: &Settings, request: &RequestCommand) -> Result<u8> {
             Error::usage("--log keeps the rows of a --poll: give --poll INTERVAL too").into(),
         );
     }
-    if let Some(by_map) = by_map(settings, request)? {
+    if let Some(by_map) = super::map::by_map(settings, request)? {
         return by_map.run(settings);
     }
-    let plan = super::encode::plan_for(settings, request)?;
+    let plan = super::shared::plan_for(settings, request)?;
     let target = connection::target(&settings.connection)?;
     if let (Some(interval), Some((table, address))) = (settings.poll.interval, plan.reads) {
         return poll_reads(settings, &target, &plan, (table, address), interval);
@@ -46,7 +43,7 @@ pub fn run(settings: &Settings, request: &RequestCommand) -> Result<u8> {
     let mode = connection.mode;
     let master = &mut connection.master;
     if settings.output.verbose {
-        master.trace(tracer(mode));
+        master.trace(super::shared::tracer(mode));
     }
     let mut out = output::stdout();
     let code = match (request, plan.reads) {
@@ -60,105 +57,6 @@ pub fn run(settings: &Settings, request: &RequestCommand) -> Result<u8> {
     })?;
     out.flush()?;
     Ok(code)
-}
-
-/// A read or write by register map, checked whole; `None` for a command without `--map`.
-pub enum ByMap {
-    Read(MapPlan),
-    Write(Vec<MapWrite>),
-}
-
-/// The map work of `read --map` or `write --map`, with nothing opened yet.
-pub fn by_map(settings: &Settings, request: &RequestCommand) -> Result<Option<ByMap>> {
-    let tcp = || super::encode::mode(settings) == Mode::Tcp;
-    match request {
-        RequestCommand::Read(args) => match &args.map {
-            Some(path) => {
-                let names = args.point_names();
-                let plan = super::map::plan(settings, path, &args.slave, &names, tcp(), Access::Read)?;
-                Ok(Some(ByMap::Read(plan)))
-            }
-            None if !args.names.is_empty() => Err(Error::usage(format!(
-                "read takes SLAVE REFERENCE [COUNT]; '{}' is one word too many (point names come with --map FILE)",
-                args.names.join(" ")
-            ))
-            .into()),
-            None => Ok(None),
-        },
-        RequestCommand::Write(args) => match &args.map {
-            Some(_) if args.function.is_some() => Err(Error::usage(
-                "--function chooses how values are written by reference; a map writes each point as its type needs",
-            )
-            .into()),
-            Some(path) => {
-                let plan = super::map::plan(settings, path, &args.slave, &[], tcp(), Access::WriteOne)?;
-                Ok(Some(ByMap::Write(plan.writes(&args.assignments(), path)?)))
-            }
-            None => Ok(None),
-        },
-        _ => Ok(None),
-    }
-}
-
-impl ByMap {
-    fn run(&self, settings: &Settings) -> Result<u8> {
-        if let (ByMap::Read(plan), Some(interval)) = (self, settings.poll.interval) {
-            return super::map::poll(
-                settings,
-                plan,
-                &connection::target(&settings.connection)?,
-                interval,
-            );
-        }
-        let mut connection = connection::connect(&settings.connection)?;
-        if settings.output.verbose {
-            connection.master.trace(tracer(connection.mode));
-        }
-        match self {
-            ByMap::Read(plan) => super::map::read(settings, plan, &mut connection),
-            ByMap::Write(writes) => super::map::write(settings, writes, &mut connection),
-        }
-    }
-
-    /// The requests it sends, with their slaves, for `encode`.
-    pub fn requests(&self, settings: &Settings) -> Vec<(u8, Request)> {
-        match self {
-            ByMap::Read(plan) => plan
-                .groups(settings)
-                .iter()
-                .map(|group| (group.slave, group.request()))
-                .collect(),
-            ByMap::Write(writes) => writes
-                .iter()
-                .map(|write| (write.slave, write.request.clone()))
-                .collect(),
-        }
-    }
-}
-
-/// Says that a bit was written without function 22.
-pub fn note_mask_write_emulated(slave: u8, what: &str) {
-    mbtool::note!(
-        "mbtool: slave {slave} does not do function 22 (mask write register): {what} was set by \
-         reading the register (03) and writing it whole (06)"
-    );
-}
-
-/// `-v`: each frame on stderr with the seconds since the start.
-pub fn tracer(mode: Mode) -> mbtool_core::master::Tracer {
-    let start = Instant::now();
-    Box::new(move |traffic, bytes| {
-        let arrow = match traffic {
-            Traffic::Sent => '>',
-            Traffic::Received => '<',
-        };
-        let text = match mode {
-            // Received bytes may be noise, not ASCII: show them as hex then.
-            Mode::Ascii if bytes.is_ascii() => frame_text(mode, bytes).replace(['\r', '\n'], ""),
-            _ => frame_text(Mode::Rtu, bytes),
-        };
-        mbtool::note!("[{:>12.6}] {arrow} {text}", start.elapsed().as_secs_f64());
-    })
 }
 
 fn reads(
@@ -224,7 +122,7 @@ fn writes(
         _ => reference(table, address),
     };
     if written.mask_write_emulated {
-        note_mask_write_emulated(plan.slave, &reference);
+        super::shared::note_mask_write_emulated(plan.slave, &reference);
     }
     let done = WriteDone {
         slave: plan.slave,

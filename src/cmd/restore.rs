@@ -39,7 +39,7 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
     }
     if args.dry_run {
         // The frames, as encode would print them: no port is needed.
-        let mode = super::encode::mode(settings);
+        let mode = super::shared::mode(settings);
         let slave = parse_slave(&args.slave, false, mode == Mode::Tcp).map_err(Error::from)?;
         let mut out = output::stdout();
         for (i, request) in requests.iter().enumerate() {
@@ -56,7 +56,7 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
         out.flush()?;
         return Ok(0);
     }
-    let (mut connection, slave) = super::connect_to(settings, &args.slave)?;
+    let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
     let master = &mut connection.master;
     let outcome = requests
         .iter()

@@ -92,7 +92,7 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
             let mut master =
                 connection::master_at(&settings.connection, &endpoint, mode, line, answer)?;
             if settings.output.verbose {
-                master.trace(super::request::tracer(mode));
+                master.trace(super::shared::tracer(mode));
             }
             Ok::<_, Error>(master)
         },

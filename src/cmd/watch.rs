@@ -54,7 +54,7 @@ fn points(
         table: None,
         count: args.count.as_deref(),
     };
-    let mut options = super::encode::plan_options(settings);
+    let mut options = super::shared::plan_options(settings);
     options.tcp = target.is_tcp();
     let read = plan(&operation, options)?;
     let Some((table, address)) = read.reads else {

@@ -1,0 +1,80 @@
+//! What the commands that send requests share: the framing and planning of a request from
+//! the settings, the `-v` tracer, and what is said of a write done another way.
+
+use std::time::Instant;
+
+use anyhow::Result;
+
+use mbtool::cli::RequestCommand;
+use mbtool::connection::{self, Connection, Role};
+use mbtool::error::Error;
+use mbtool::output::encode::frame_text;
+use mbtool::settings::Settings;
+use mbtool_core::codec::Mode;
+use mbtool_core::master::plan::{parse_slave, plan, Plan, PlanOptions};
+use mbtool_core::master::Traffic;
+use mbtool_core::transport::Endpoint;
+
+/// The framing: --mode, else TCP for a tcp:// port, else RTU. Unlike a connection, encode
+/// accepts --mode tcp without a port.
+pub fn mode(settings: &Settings) -> Mode {
+    let endpoint = settings
+        .connection
+        .port
+        .as_deref()
+        .and_then(|port| Endpoint::parse(port).ok());
+    connection::mode(&settings.connection, endpoint.as_ref(), Role::Encode).unwrap_or(Mode::Rtu)
+}
+
+/// What the options say about addresses, values and request sizes.
+pub fn plan_options(settings: &Settings) -> PlanOptions {
+    PlanOptions {
+        pdu_addresses: settings.data.pdu_addresses,
+        value_type: settings.data.value_type,
+        order: settings.data.order,
+        max_per_request: settings.data.max_per_request,
+        tcp: mode(settings) == Mode::Tcp,
+    }
+}
+
+/// Checks the command line of a request command and plans its requests.
+pub fn plan_for(settings: &Settings, request: &RequestCommand) -> Result<Plan, Error> {
+    Ok(plan(&request.operation(), plan_options(settings))?)
+}
+
+/// Says that a bit was written without function 22.
+pub fn note_mask_write_emulated(slave: u8, what: &str) {
+    mbtool::note!(
+        "mbtool: slave {slave} does not do function 22 (mask write register): {what} was set by \
+         reading the register (03) and writing it whole (06)"
+    );
+}
+
+/// `-v`: each frame on stderr with the seconds since the start.
+pub fn tracer(mode: Mode) -> mbtool_core::master::Tracer {
+    let start = Instant::now();
+    Box::new(move |traffic, bytes| {
+        let arrow = match traffic {
+            Traffic::Sent => '>',
+            Traffic::Received => '<',
+        };
+        let text = match mode {
+            // Received bytes may be noise, not ASCII: show them as hex then.
+            Mode::Ascii if bytes.is_ascii() => frame_text(mode, bytes).replace(['\r', '\n'], ""),
+            _ => frame_text(Mode::Rtu, bytes),
+        };
+        mbtool::note!("[{:>12.6}] {arrow} {text}", start.elapsed().as_secs_f64());
+    })
+}
+
+/// A connection to the one slave a device command names: the slave checked before the
+/// port is opened, and `-v` showing every frame.
+pub fn connect_to(settings: &Settings, slave: &str) -> Result<(Connection, u8)> {
+    let target = connection::target(&settings.connection)?;
+    let slave = parse_slave(slave, false, target.is_tcp()).map_err(Error::from)?;
+    let mut connection = target.connect(&settings.connection)?;
+    if settings.output.verbose {
+        connection.master.trace(tracer(connection.mode));
+    }
+    Ok((connection, slave))
+}
