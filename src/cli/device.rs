@@ -1,0 +1,164 @@
+//! The commands about a whole device or line: scan, watch, info, diag, dump, restore.
+
+use clap::{Args, ValueEnum};
+
+pub(super) const SCAN_ABOUT: &str = "\
+Find the slaves on a line: each id is asked once (--probe read: function 03, one register at \
+protocol address 0; --probe id: function 17), with the scan's own timeout (--timeout, 100ms \
+by default) and no retries, and each id that answers is asked once more to confirm it. A \
+slave is there when it answers with a valid frame, an exception included; exception 0A or \
+0B (a gateway's 'no such device') counts as absent; bytes that are no valid answer are \
+reported as something that answered, maybe at other settings.
+
+--baud and --parity lists sweep the serial settings, the most common first (19200 even, \
+9600 none, 9600 even, 19200 none, then the rest), and stop at the first settings where a \
+slave answers, unless --all. --listen 2s first listens at each setting without sending: \
+slaves heard answering another master are reported, and that setting is not probed, so a \
+live bus gets no extra traffic.
+
+Over TCP the ids are unit ids; when every id answers the same, the device ignores the \
+unit id, and mbtool says so instead of listing them all.
+
+On a terminal a progress bar on stderr shows the ids tried, the slaves found and the time \
+left. The results are a table, or JSON Lines (one line per slave), then a summary line on \
+stderr. Exit status 0 when a slave was found, 3 when none answered.";
+
+pub(super) const DUMP_ABOUT: &str = "\
+Read ranges of a device's tables (400001-400200 000001-000064) in as few requests as the \
+limits allow (--max-per-request lowers them) and write them as a data file that serve \
+--data and restore read: one 'REF = values' line per run of addresses, after a comment saying which slave, when, and through which port. The file goes to \
+--output FILE, or to standard output.
+
+A request that the device answers with exception 02 is split in halves, down to single \
+addresses, so that every address that exists is dumped; only the holes are left out, and \
+they are listed on stderr. So serve --data FILE stands in for the device that was dumped, \
+holes included.";
+
+pub(super) const RESTORE_ABOUT: &str = "\
+Write every coil and holding register of a data file (as dump writes it, or as serve \
+--data reads it) to a device, with the fewest requests (05 or 06 for one value, 15 or 16 \
+for a run), then read them back and compare. Entries of discrete inputs and input \
+registers are skipped, and said so.
+
+Exit status 0 when every value reads back as written, 4 listing the addresses that differ. \
+--dry-run prints the frames it would send and sends nothing.";
+
+pub(super) const WATCH_ABOUT: &str = "\
+Fill the terminal with a live view of a range (watch 17 400001 10) or of a register map's \
+points (watch 17 --map FILE): every point with its value, minimum, maximum, a trend of its \
+recent values, and when it last changed (a changed value is highlighted), with the line's \
+statistics (answers, timeouts, bad frames, exceptions, response time). --poll sets the \
+interval [default: 1s]; a failed read or a dropped connection is shown and polling goes on.
+
+Keys: q or Esc quits, p pauses, r resets minimum, maximum and trends. The terminal is given \
+back as it was on q, Ctrl-C, an error or a crash. When standard output is not a terminal, \
+watch refuses: read ... --poll INTERVAL -o csv (and --log FILE) is the logger.";
+
+pub(super) const INFO_ABOUT: &str = "\
+Ask a device who it is. Read device identification (function 43/14) at the basic level, \
+then at the regular or extended level when the device says it has one, following 'more \
+follows' across as many requests as the objects need; and report server id (function 17): \
+the id byte, the run status, and the rest as text where printable, else hex. Objects are \
+shown by name (VendorName, ProductCode, MajorMinorRevision, VendorUrl, ProductName, \
+ModelName, UserApplicationName), private ones by number (0x80). Text from the device is \
+escaped, never printed raw.
+
+A function the device does not have is shown as such, and is no failure as long as the \
+other answered. Exit status 3 when neither answered in time; 10+N when the device refused \
+both with exception N.";
+
+pub(super) const DIAG_ABOUT: &str = "\
+A device's health, from the device itself. Times --count round trips of return query data \
+(function 08/00; 5 by default: min, mean, max, and whether every echo came back intact), \
+reads the diagnostic counters (08/0B-12: bus messages, bus communication errors, bus \
+exception errors, slave messages, slave no response, NAK, busy, character overruns) and the \
+exception status (07). A counter the device does not keep is shown as such.
+
+--clear then clears the counters (08/0A), the only thing diag ever changes on a device.
+
+Exit status 3 when the device does not answer.";
+
+#[derive(Clone, Debug, Args)]
+pub struct ScanArgs {
+    /// The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200
+    #[arg(long, value_name = "IDS", default_value = "1-247", value_parser = parse_ids)]
+    pub ids: Ids,
+    /// What each id is asked: read (03, one register at address 0) or id (17)
+    #[arg(long, value_enum, default_value_t = ProbeArg::Read)]
+    pub probe: ProbeArg,
+    /// Listen this long at each setting before sending anything: slaves heard answering
+    /// another master are found without adding traffic
+    #[arg(long, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]
+    pub listen: Option<std::time::Duration>,
+    /// Try every setting of the sweep, not only up to the first where a slave answers
+    #[arg(long)]
+    pub all: bool,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ProbeArg {
+    /// Read one holding register at protocol address 0 (function 03)
+    Read,
+    /// Report server id (function 17)
+    Id,
+}
+
+/// The ids a scan asks, in order, each once.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Ids(pub Vec<u8>);
+
+/// `1-247`, `1-10,17,200`: the ids in the order given, each once.
+fn parse_ids(text: &str) -> Result<Ids, String> {
+    let mut ids = Vec::new();
+    for part in text.split(',').map(str::trim) {
+        let (first, last) = part.split_once('-').unwrap_or((part, part));
+        let id = |t: &str| {
+            mbtool_core::model::number::parse_in_range(t.trim(), 0, 255, "id").map(|id| id as u8)
+        };
+        let (first, last) = (id(first)?, id(last)?);
+        if first > last {
+            return Err(format!("{part}: the first id of a range comes first"));
+        }
+        for id in first..=last {
+            if !ids.contains(&id) {
+                ids.push(id);
+            }
+        }
+    }
+    Ok(Ids(ids))
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct DumpArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+    /// References or ranges of references to read (400001-400200 000001-000064)
+    #[arg(required = true, value_name = "RANGE")]
+    pub ranges: Vec<String>,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct RestoreArgs {
+    /// Slave address: 1-247, or a unit id over TCP
+    pub slave: String,
+    /// The data file to write back
+    pub file: std::path::PathBuf,
+    /// Print the frames that would be sent, and send nothing
+    #[arg(long)]
+    pub dry_run: bool,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct InfoArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct DiagArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+    /// After reading them, clear the device's counters (08/0A)
+    #[arg(long)]
+    pub clear: bool,
+}

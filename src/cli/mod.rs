@@ -1,0 +1,206 @@
+//! The command line, as clap derives it. `--help`, the man pages and the shell completions
+//! are all generated from this one definition.
+
+use clap::{Args, Parser, Subcommand};
+
+mod device;
+mod options;
+mod requests;
+mod serve;
+mod traffic;
+mod values;
+
+pub use device::*;
+pub use options::*;
+pub use requests::*;
+pub use serve::*;
+pub use traffic::*;
+
+const ABOUT: &str = "Modbus RTU/ASCII/TCP diagnostics: read, write, decode, encode";
+
+const LONG_ABOUT: &str = "\
+Modbus RTU/ASCII/TCP diagnostics: read and write a device's coils and registers, decode \
+frames pasted from a log or a datasheet, and build frames by hand.
+
+Addresses: a number of exactly 5 or 6 digits whose first digit is the command's table \
+(0 coils, 1 discrete inputs, 3 input registers, 4 holding registers) is a 1-based Modicon \
+reference: 400108 and 40108 are both holding register address 107. Any other number is the \
+0-based protocol address: 107, 0x6B. --pdu-addresses makes every number a protocol address. \
+A range such as 400108-400110 may stand for ADDRESS and COUNT.
+
+Numbers may be decimal, 0x hex or 0b binary.";
+
+/// The top of the command line: `mbtool [OPTIONS] <COMMAND> [ARGS]`.
+#[derive(Clone, Debug, Parser)]
+#[command(
+    name = "mbtool",
+    version,
+    about = ABOUT,
+    long_about = LONG_ABOUT,
+    propagate_version = true,
+    max_term_width = 100
+)]
+pub struct Cli {
+    #[command(flatten)]
+    pub connection: ConnectionArgs,
+    #[command(flatten)]
+    pub output: OutputArgs,
+    #[command(flatten)]
+    pub data: DataArgs,
+    #[command(flatten)]
+    pub poll: PollArgs,
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Clone, Debug, Subcommand)]
+pub enum Command {
+    #[command(flatten)]
+    Request(RequestCommand),
+
+    /// Find the slaves on a line and the settings they use
+    #[command(long_about = SCAN_ABOUT)]
+    Scan(ScanArgs),
+
+    /// Watch values live, full screen: min, max, trend, changes
+    #[command(long_about = WATCH_ABOUT)]
+    Watch(ReadByReferenceArgs),
+
+    /// Ask a device who it is: identification and server id
+    #[command(long_about = INFO_ABOUT)]
+    Info(InfoArgs),
+
+    /// A device's health: round trips, counters, status
+    #[command(long_about = DIAG_ABOUT)]
+    Diag(DiagArgs),
+
+    /// Save a device's tables to a data file, holes left out
+    #[command(long_about = DUMP_ABOUT)]
+    Dump(DumpArgs),
+
+    /// Write a data file back to a device, and check it
+    #[command(long_about = RESTORE_ABOUT)]
+    Restore(RestoreArgs),
+
+    /// Decode frames given as arguments or on standard input
+    #[command(long_about = DECODE_ABOUT)]
+    Decode(DecodeArgs),
+
+    /// Print the frame a request command would send
+    #[command(long_about = ENCODE_ABOUT)]
+    Encode {
+        #[command(subcommand)]
+        request: RequestCommand,
+    },
+
+    /// Watch a bus without transmitting; frames decoded, paired
+    #[command(long_about = SNIFF_ABOUT)]
+    Sniff(SniffArgs),
+
+    /// Stand in for a slave on a serial line or TCP
+    #[command(long_about = SERVE_ABOUT)]
+    Serve(ServeArgs),
+
+    /// Write the shell completions and man pages (for packagers and the project's own tree)
+    #[command(hide = true)]
+    Generate(GenerateArgs),
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct GenerateArgs {
+    /// The folder that receives completions/ and man/
+    #[arg(long, default_value = ".")]
+    pub dir: std::path::PathBuf,
+}
+
+/// What an argument shared by several commands means in each: (command, argument id,
+/// value name, help). The derived definitions above say it for holding registers, and
+/// `--count` for polling.
+const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
+    ("read-coils", "address", "ADDRESS", "First coil (000020, 19) or an inclusive range (000020-000056)"),
+    ("read-coils", "count", "COUNT", "How many coils to read [default: 1]"),
+    ("read-inputs", "address", "ADDRESS", "First discrete input (100197, 196) or an inclusive range (100197-100218)"),
+    ("read-inputs", "count", "COUNT", "How many inputs to read [default: 1]"),
+    ("read-input-registers", "address", "ADDRESS", "First input register (300009, 8), an inclusive range (300009-300011), or a bit of a register (300009.00), COUNT then counting bits"),
+    ("write-coils", "address", "ADDRESS", "First coil (000020, 19), or a range that holds exactly the values given"),
+    ("write-coils", "values", "VALUES", "Each 0/1/on/off, or one bit string such as 10110"),
+    ("write-registers", "values", "VALUES", "The values, each converted by --type"),
+    ("diag", "poll_count", "N", "How many round trips of return query data to time [default: 5]"),
+    ("dump", "output", "FILE", "The data file to write [default: standard output]"),
+    ("watch", "map", "FILE", "Watch the points of a register map (CSV, or Home Assistant YAML)"),
+    ("watch", "poll", "INTERVAL", "How often to read [default: 1s]"),
+];
+
+/// A built command's argument `id` of `command` (also under `encode`), described as
+/// [`ARGUMENT_HELP`] says.
+pub fn with_argument_help(command: clap::Command) -> clap::Command {
+    fn describe(sub: clap::Command) -> clap::Command {
+        let name = sub.get_name().to_string();
+        sub.mut_args(|arg| {
+            let entry = ARGUMENT_HELP
+                .iter()
+                .find(|(command, id, ..)| *command == name && arg.get_id() == *id);
+            match entry {
+                Some((_, _, value_name, help)) => arg
+                    .value_name(*value_name)
+                    .help(*help)
+                    .help_heading(None::<&str>)
+                    // A file is named, not picked from the formats --output lists elsewhere.
+                    .hide_possible_values(*value_name == "FILE"),
+                None => arg,
+            }
+        })
+    }
+    command.mut_subcommands(|sub| describe(sub).mut_subcommands(describe))
+}
+
+/// Whether the command at `path` (`["read-holding"]`, `["encode", "write-coil"]`) takes the
+/// global option `id`. The options a command does not take are hidden from its help and
+/// refused when typed on its command line; a value from the environment is never refused.
+pub fn takes_option(path: &[&str], id: &str) -> bool {
+    const LINE: &[&str] = &["port", "mode", "baud", "parity", "data_bits", "stop_bits"];
+    const MASTER: &[&str] = &["timeout", "retries", "frame_gap", "verbose"];
+    const FORMAT: &[&str] = &["output", "json"];
+    const ADDRESSES: &[&str] = &["pdu_addresses"];
+    const SPLIT: &[&str] = &["max_per_request"];
+    const REGISTERS: &[&str] = &["value_type", "order"];
+    const POLL: &[&str] = &["poll", "poll_count", "log"];
+    let groups: &[&[&str]] = match path {
+        ["decode"] => &[&["mode"], FORMAT, REGISTERS],
+        ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
+        ["sniff" | "serve"] => &[LINE, FORMAT],
+        ["info"] => &[LINE, MASTER, FORMAT],
+        // watch draws the screen: no -v trace, no output format.
+        ["watch"] => &[
+            LINE,
+            &["timeout", "retries", "frame_gap", "poll"],
+            ADDRESSES,
+            SPLIT,
+            REGISTERS,
+        ],
+        // dump's --output is the file it writes.
+        ["dump"] => &[LINE, MASTER, SPLIT, &["output"]],
+        ["restore"] => &[LINE, MASTER, SPLIT],
+        // A scan has no retries: each id that answers is asked once more instead.
+        ["scan"] => &[LINE, &["timeout", "frame_gap", "verbose"], FORMAT],
+        ["diag"] => &[LINE, MASTER, FORMAT, &["poll_count"]],
+        // What the request command takes, less what only matters on the wire.
+        ["encode", request] => {
+            let wire = [LINE, MASTER, POLL].concat();
+            return ["port", "mode"].contains(&id)
+                || (takes_option(&[request], id) && !wire.contains(&id));
+        }
+        ["read-coils" | "read-inputs"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, POLL],
+        ["read-holding" | "read-input-registers" | "read"] => {
+            &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS, POLL]
+        }
+        ["write-coil"] => &[LINE, MASTER, FORMAT, ADDRESSES],
+        ["write-coils"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT],
+        ["write-register"] => &[LINE, MASTER, FORMAT, ADDRESSES, REGISTERS],
+        ["write-registers" | "write"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS],
+        // raw decodes the answer: --type shows its registers.
+        ["raw"] => &[LINE, MASTER, FORMAT, REGISTERS],
+        _ => &[],
+    };
+    groups.iter().any(|group| group.contains(&id))
+}

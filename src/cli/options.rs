@@ -1,0 +1,195 @@
+//! The option groups every command shares: the connection, the output, addresses and
+//! values, and polling.
+
+use clap::{Args, ValueEnum};
+
+use mbtool_core::codec::Mode;
+use mbtool_core::model::choice::Choice;
+use mbtool_core::model::values::{ByteOrder, ValueType};
+use mbtool_core::transport::serial::Parity;
+
+use super::values::{choice, positive_duration, whole};
+
+#[derive(Clone, Debug, Args)]
+#[command(next_help_heading = "Connection")]
+pub struct ConnectionArgs {
+    /// Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare
+    /// 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim
+    #[arg(
+        short,
+        long,
+        global = true,
+        env = "MBTOOL_PORT",
+        hide_env_values = true,
+        value_name = "PORT"
+    )]
+    pub port: Option<String>,
+
+    /// Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp://
+    /// ports; decode detects it]
+    #[arg(
+        short,
+        long,
+        global = true,
+        env = "MBTOOL_MODE",
+        hide_env_values = true,
+        value_enum
+    )]
+    pub mode: Option<ModeArg>,
+
+    /// Serial speed; scan sweeps a list (9600,19200,38400)
+    #[arg(
+        short,
+        long,
+        global = true,
+        env = "MBTOOL_BAUD", hide_env_values = true,
+        default_value = "19200",
+        value_delimiter = ',',
+        value_parser = whole::<u32>(50, 12_000_000)
+    )]
+    pub baud: Vec<u32>,
+
+    /// Serial parity; scan sweeps a list (none,even,odd)
+    #[arg(long, global = true, env = "MBTOOL_PARITY", hide_env_values = true, value_delimiter = ',', value_parser = choice::<Parity>(), default_value = Parity::Even.name())]
+    pub parity: Vec<Parity>,
+
+    /// Serial data bits [default: 8, 7 in ASCII mode]
+    #[arg(long, global = true, env = "MBTOOL_DATA_BITS", hide_env_values = true, value_parser = whole::<u8>(7, 8))]
+    pub data_bits: Option<u8>,
+
+    /// Serial stop bits [default: 1 with parity, 2 without]
+    #[arg(long, global = true, env = "MBTOOL_STOP_BITS", hide_env_values = true, value_parser = whole::<u8>(1, 2))]
+    pub stop_bits: Option<u8>,
+
+    /// Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]
+    #[arg(long, global = true, env = "MBTOOL_TIMEOUT", hide_env_values = true, value_parser = positive_duration)]
+    pub timeout: Option<std::time::Duration>,
+
+    /// Retries after a timeout or a bad answer (never after an exception)
+    #[arg(long, global = true, env = "MBTOOL_RETRIES", hide_env_values = true, default_value_t = 0, value_name = "N", allow_negative_numbers = true, value_parser = whole::<u32>(0, 100))]
+    pub retries: u32,
+
+    /// Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200
+    /// baud]; 0 for gateways and devices that need none
+    #[arg(long, global = true, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]
+    pub frame_gap: Option<std::time::Duration>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ModeArg {
+    Rtu,
+    Ascii,
+    Tcp,
+}
+
+impl From<ModeArg> for Mode {
+    fn from(mode: ModeArg) -> Mode {
+        match mode {
+            ModeArg::Rtu => Mode::Rtu,
+            ModeArg::Ascii => Mode::Ascii,
+            ModeArg::Tcp => Mode::Tcp,
+        }
+    }
+}
+
+#[derive(Clone, Debug, Args)]
+#[command(next_help_heading = "Output")]
+pub struct OutputArgs {
+    /// Output format [default: table]; for dump, the file to write
+    #[arg(short, long, global = true, value_name = "FORMAT", value_parser = FormatOrFile)]
+    pub output: Option<String>,
+
+    /// The same as --output json
+    #[arg(long, global = true)]
+    pub json: bool,
+
+    /// Print every frame sent and received, in hex with a timestamp, on stderr
+    #[arg(short, long, global = true)]
+    pub verbose: bool,
+}
+
+/// The value of `--output`: a format (listed in help and completions), or, for dump,
+/// a file; which it must be is checked once the command is known.
+#[derive(Clone)]
+struct FormatOrFile;
+
+impl clap::builder::TypedValueParser for FormatOrFile {
+    type Value = String;
+
+    fn parse_ref(
+        &self,
+        _: &clap::Command,
+        _: Option<&clap::Arg>,
+        value: &std::ffi::OsStr,
+    ) -> Result<String, clap::Error> {
+        Ok(value.to_string_lossy().into_owned())
+    }
+
+    fn possible_values(
+        &self,
+    ) -> Option<Box<dyn Iterator<Item = clap::builder::PossibleValue> + '_>> {
+        Some(Box::new(
+            OutputFormat::value_variants()
+                .iter()
+                .filter_map(ValueEnum::to_possible_value),
+        ))
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum OutputFormat {
+    /// A table for people
+    Table,
+    /// One JSON object per line
+    Json,
+    /// Only the values, one per line, for $(...) in scripts
+    Values,
+    /// Comma-separated values with a header line
+    Csv,
+}
+
+#[derive(Clone, Debug, Args)]
+#[command(next_help_heading = "Addresses and values")]
+pub struct DataArgs {
+    /// Take every address as a 0-based protocol address, never as a Modicon reference
+    #[arg(long, global = true)]
+    pub pdu_addresses: bool,
+
+    /// Register value type, for showing values read and for converting values to write
+    #[arg(short = 't', long = "type", global = true, value_name = "TYPE", value_parser = choice::<ValueType>(), default_value = ValueType::default().name())]
+    pub value_type: ValueType,
+
+    /// Byte order of values wider than 16 bits: A is the most significant byte
+    #[arg(long, global = true, value_parser = choice::<ByteOrder>(), default_value = ByteOrder::default().name())]
+    pub order: ByteOrder,
+
+    /// Split reads and writes into requests of at most N coils or registers, for devices
+    /// that take fewer than the protocol allows
+    #[arg(long, global = true, value_name = "N", value_parser = whole::<u16>(1, 2000))]
+    pub max_per_request: Option<u16>,
+}
+
+#[derive(Clone, Debug, Args)]
+#[command(next_help_heading = "Watching")]
+pub struct PollArgs {
+    /// Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing
+    /// what changed, with a summary on stderr at the end; a failed read is a row of its
+    /// own, and a connection that drops is opened again
+    #[arg(long, global = true, value_name = "INTERVAL", value_parser = mbtool_core::model::duration::parse_duration)]
+    pub poll: Option<std::time::Duration>,
+
+    /// With --poll: stop after N reads
+    #[arg(
+        long = "count",
+        id = "poll_count",
+        global = true,
+        value_name = "N",
+        value_parser = whole::<u64>(1, i128::from(u64::MAX))
+    )]
+    pub count: Option<u64>,
+
+    /// With --poll: also append every row, with its time, to FILE: CSV for a .csv name,
+    /// JSON Lines for any other
+    #[arg(long, global = true, value_name = "FILE")]
+    pub log: Option<std::path::PathBuf>,
+}

@@ -1,0 +1,101 @@
+//! `serve`: standing in for a slave.
+
+use clap::Args;
+
+pub(super) const SERVE_ABOUT: &str = "\
+Answer as a simulated slave, for testing masters and HMIs before the device arrives.
+
+--port is a serial device or pseudo-terminal (RTU, or ASCII with --mode ascii), or \
+tcp://ADDRESS:PORT (Modbus TCP; tcp://:5020 listens on 127.0.0.1, give 0.0.0.0 to listen on \
+every interface), or rtu+tcp://ADDRESS:PORT (RTU frames over TCP, as behind a gateway). Many \
+TCP clients are served at once; one that sends what is not Modbus, or nothing for 60 s, or \
+does not read its answers for 5 s, is dropped without holding up the others. Past 64 \
+connections a new client takes the place of the one silent the longest, if it has been \
+silent for 10 s; a busy client is never closed. Requests are framed by \
+the MBAP length however the client's bytes are split or delayed, and several in one segment \
+are answered in order. On a serial line the slave finds its requests among other slaves' \
+traffic, noise and cut frames, as sniff does; an ASCII sender may pause up to a second \
+between characters.
+
+Without --data every address of the four tables exists, holding the example values of the \
+Modbus manuals (coils 000020-000056 = CD 6B B2 0E 1B, inputs 100197-100218 = AC DB 35, \
+300009 = 10, 400108-400110 = 555, 0, 100). A data file holds one entry a line, \
+REFERENCE[-REFERENCE] = VALUE... [TYPE [ORDER]], and only the addresses it names exist:
+
+  400108 = 555 0 100
+  400001 = 3.14 f32
+  400020 = \"PUMP 1\" ascii
+  400200-400299 = 0
+  000020-000023 = on off on on   # a comment
+
+A range takes one value for each address or one value for all, and each address is named \
+once; anything else is refused with the file's line.
+
+The slave answers exception 01 to a function it does not know, 02 for addresses that do not \
+exist or are --read-only, 03 for a bad quantity; it is silent for other slave ids and does \
+not answer broadcasts, which it carries out. Over TCP, unit ids 0 and 255 address the first \
+--slave, and other unit ids get exception 0B, as from a gateway.
+
+It tells who it is as a device does: device identification (43/14; --vendor, \
+--product-code and any object with --identity, streamed over as many answers as they \
+need) and report server id (17). Its diagnostic counters (08) count what it saw on the \
+line, CRC errors included, and 08/0A clears them.
+
+Every request is logged on stderr, one line each (JSON Lines with --json).";
+
+#[derive(Clone, Debug, Args)]
+pub struct ServeArgs {
+    /// Answer as this slave id; repeat for several [default: 17]
+    #[arg(long = "slave", value_name = "ID", value_parser = clap::value_parser!(u8).range(1..=247))]
+    pub slaves: Vec<u8>,
+
+    /// Initial data and the addresses that exist (see above for the format)
+    #[arg(long, value_name = "FILE")]
+    pub data: Option<std::path::PathBuf>,
+
+    /// Addresses that may not be written (exception 02): a reference or a range; repeatable
+    #[arg(long, value_name = "RANGE")]
+    pub read_only: Vec<String>,
+
+    /// Wait this long before each answer
+    #[arg(long, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]
+    pub delay: Option<std::time::Duration>,
+
+    /// Leave this share of requests unanswered: 0 to 1, or 5%
+    #[arg(long, value_name = "RATE", value_parser = mbtool_core::slave::faults::parse_rate)]
+    pub drop: Option<f64>,
+
+    /// Corrupt this share of answers (a bad checksum; over TCP a wrong function): 0 to 1, or 5%
+    #[arg(long, value_name = "RATE", value_parser = mbtool_core::slave::faults::parse_rate)]
+    pub corrupt: Option<f64>,
+
+    /// Answer exception CODE to every request, or to those touching RANGE (CODE@RANGE, as in
+    /// 2@400100-400120); repeatable
+    #[arg(long, value_name = "CODE[@RANGE]", value_parser = mbtool_core::slave::faults::InjectedException::parse)]
+    pub exception: Vec<mbtool_core::slave::faults::InjectedException>,
+
+    /// Send a few noise bytes (00, FE) before each answer, as a bus being handed over does
+    #[arg(long)]
+    pub garbage: bool,
+
+    /// Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run
+    #[arg(long, value_name = "N")]
+    pub seed: Option<u64>,
+
+    /// No log line per request
+    #[arg(short, long)]
+    pub quiet: bool,
+
+    /// Device identification: vendor name
+    #[arg(long, default_value = mbtool_core::slave::DEFAULT_VENDOR)]
+    pub vendor: String,
+
+    /// Device identification: product code
+    #[arg(long, default_value = "mbtool-sim")]
+    pub product_code: String,
+
+    /// Device identification: any object, by name or id (VendorUrl=https://example.com,
+    /// ProductName=Pump, 0x80=serial 4711); repeatable
+    #[arg(long, value_name = "NAME=VALUE", value_parser = mbtool_core::slave::parse_object)]
+    pub identity: Vec<(u8, Vec<u8>)>,
+}

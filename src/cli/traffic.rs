@@ -1,0 +1,115 @@
+//! The commands about frames and traffic: decode, encode, sniff.
+
+use clap::{Args, ValueEnum};
+
+use mbtool_core::codec::Direction;
+
+pub(super) const DECODE_ABOUT: &str = "\
+Decode Modbus frames given as arguments, or one per line on standard input.
+
+A frame may be hex bytes in any common spelling (11 03 00 6B 00 03 76 87, 1103006B00037687, \
+0x11,0x03,..., 11:03:00:6B as Wireshark copies it, 11-03-00-6B, [11][03]... as libmodbus \
+prints it, {0x11, 0x03, ...} from C source), an ASCII frame as text (:1103006B00037E), or \
+the hex of an ASCII frame's bytes (3A 31 31 ...).
+
+Lines from logs are read as they are: the frame is the longest run of hex bytes on the line, \
+and what stands around it (a time stamp, words such as CRC ok, a # comment) is set aside. A \
+direction mark before it (> or TX for a request, < or RX for a response, as in mbtool's own \
+-v trace) settles which way it went. A line that starts with # is a comment. Frames glued \
+together on one line are split as sniff splits them.
+
+The framing (RTU, ASCII, TCP) is detected unless --mode says; request or response is \
+inferred from the bytes, and a frame that reads both ways says so (--direction settles it).
+
+Exit status 4 when any frame fails its checksum or is malformed; 2 when a line is not hex \
+(which outranks 4).";
+
+pub(super) const ENCODE_ABOUT: &str = "\
+Print the frame that a request command would send, as spaced upper-case hex (RTU or TCP) or \
+as an ASCII line (--mode ascii). A command that needs several requests prints one frame per \
+line. --port tcp://... or --mode tcp prints the MBAP frame, transaction ids counting from 1.";
+
+pub(super) const SNIFF_ABOUT: &str = "\
+Watch a bus without ever transmitting: every frame as it passes, with its time, the silence \
+before it, slave, function, request or answer, what it says, and its checksum; answers are \
+paired with their requests (400108 = 555), requests that get no answer are shown as such, \
+and bytes that are no frame are counted as noise. A summary ends the capture (Ctrl-C, or \
+the end of --input).
+
+Frames are found by what the bytes say (each frame's length follows from its function code \
+and byte count, and its CRC must hold), so bytes glued together by a USB adapter are split \
+all the same, and noise or a cut frame never costs the frame after it. Since random bytes \
+pass a CRC once in 65,536 tries, a frame found right after noise, or of a function whose \
+layout is not known (user-defined 65-72 and 100-110), is only taken when what follows \
+supports it: 3.5 characters of silence on a live line, a frame right after it, the end of \
+the input, or, for a request, its answer. A frame whose CRC fails is shown as a CRC error \
+where the conversation expects a frame (a request in turn, the answer a request awaits); \
+elsewhere its bytes are noise. A long run of noise is counted, and only its first 64 bytes \
+kept. When bytes arrive in bursts the gaps between frames are not real: mbtool says so once. \
+The fix is the adapter's latency timer: \
+echo 1 | sudo tee /sys/bus/usb-serial/devices/ttyUSB0/latency_timer, or --low-latency.
+
+--save FILE keeps every byte as received; live, the times the bytes came go to FILE.timing \
+beside it (one line per read: '<us> <count>', or '<us> idle' when the line went quiet), and \
+--input FILE reads them back when they are there, so that a replay finds the frames the live \
+session found.
+
+--pcap writes the frames for Wireshark with link type DLT_USER0 (147). Once, in Wireshark: \
+Preferences > Protocols > DLT_USER > Edit, add DLT 147 with payload protocol mbrtu.";
+
+#[derive(Clone, Debug, Args)]
+pub struct DecodeArgs {
+    /// Frames to decode; without any, one frame per line of standard input
+    pub frames: Vec<String>,
+    /// Read every frame as a request or as a response instead of inferring it
+    #[arg(long, value_enum)]
+    pub direction: Option<DirectionArg>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum DirectionArg {
+    Request,
+    Response,
+}
+
+impl From<DirectionArg> for Direction {
+    fn from(direction: DirectionArg) -> Direction {
+        match direction {
+            DirectionArg::Request => Direction::Request,
+            DirectionArg::Response => Direction::Response,
+        }
+    }
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct SniffArgs {
+    /// Read a raw byte capture instead of the port ('-' for standard input)
+    #[arg(long, value_name = "FILE")]
+    pub input: Option<std::path::PathBuf>,
+
+    /// Keep every byte seen, exactly as received, to replay it later with --input; live,
+    /// their times go to FILE.timing beside it
+    #[arg(long, value_name = "FILE")]
+    pub save: Option<std::path::PathBuf>,
+
+    /// Also write the frames to a pcap file for Wireshark (link type 147, see above)
+    #[arg(long, value_name = "FILE")]
+    pub pcap: Option<std::path::PathBuf>,
+
+    /// Show only the frames of this slave; repeatable
+    #[arg(long = "slave", value_name = "ID")]
+    pub slaves: Vec<u8>,
+
+    /// Show only the frames of this function code (3, 0x10); repeatable
+    #[arg(long = "function", value_name = "CODE", value_parser = parse_function)]
+    pub functions: Vec<u8>,
+
+    /// Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so
+    /// that gaps between frames can be seen
+    #[arg(long)]
+    pub low_latency: bool,
+}
+
+fn parse_function(text: &str) -> Result<u8, String> {
+    mbtool_core::model::number::parse_in_range(text, 1, 127, "function code").map(|f| f as u8)
+}

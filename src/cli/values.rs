@@ -1,0 +1,44 @@
+//! The parsers of option values: whole numbers in a range, durations, names the core offers.
+
+use mbtool_core::model::choice::Choice;
+
+/// The parser of a whole number option: any spelling users type (19200, 0x4B00), in
+/// `min..=max`, the range said when it is not.
+pub(super) fn whole<T>(
+    min: i128,
+    max: i128,
+) -> impl Fn(&str) -> Result<T, String> + Clone + Send + Sync
+where
+    T: TryFrom<i128>,
+{
+    move |text| {
+        mbtool_core::model::number::parse_int(text)
+            .ok()
+            .filter(|value| (min..=max).contains(value))
+            .and_then(|value| T::try_from(value).ok())
+            .ok_or_else(|| format!("give a whole number from {min} to {max}"))
+    }
+}
+
+/// A duration that must not be zero: a timeout of 0 would give up before a byte could come.
+pub(super) fn positive_duration(text: &str) -> Result<std::time::Duration, String> {
+    match mbtool_core::model::duration::parse_duration(text)? {
+        std::time::Duration::ZERO => Err("give a timeout above zero, as 500ms or 1s".into()),
+        duration => Ok(duration),
+    }
+}
+
+/// The parser of a setting the core offers by name: its names, each with its help, are
+/// what clap lists in `--help`, the man pages and the completions.
+pub(super) fn choice<T: Choice + Clone + Send + Sync>(
+) -> impl clap::builder::TypedValueParser<Value = T> {
+    use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
+    PossibleValuesParser::new(T::ALL.iter().map(|choice| {
+        let value = PossibleValue::new(choice.name());
+        match choice.help() {
+            Some(help) => value.help(help),
+            None => value,
+        }
+    }))
+    .try_map(|name| T::from_name(&name).ok_or("not one of the possible values"))
+}
