@@ -1,0 +1,636 @@
+//! Finding frames in a stream of bytes: the one framing discipline of mbtool. The master,
+//! the slave (`serve` and the sim port) and the sniffer all hand what they receive to a
+//! [`Framer`], so the same bytes are framed the same way everywhere. Pure: bytes (with
+//! their arrival times, when known) in, frames and noise out; no I/O and no clock.
+//!
+//! RTU. A frame's length is told by its function code and byte count, and its CRC must
+//! hold; where the bytes at a position make no frame, the framer moves on one byte and
+//! looks again, so that noise or another slave's traffic never costs the frame after it.
+//! A CRC-16 passes random bytes once in 65,536 tries and a noisy stream makes many tries,
+//! so wherever a frame could be chance it must have more than its CRC:
+//! - a frame found right after noise (a resynchronisation) must read as a well-formed PDU
+//!   and be supported by what follows: silence, the end of the input, a valid frame (right
+//!   after it or past some noise), or the conversation (it answers the request before it);
+//! - a function without a known layout (the user-defined codes 65-72 and 100-110, and MEI
+//!   types other than 14) is found by its CRC alone, so it always needs support, and of the
+//!   strict kind: silence, the end, a valid frame right after it, or the conversation; it
+//!   may not swallow a frame of known layout that starts inside it;
+//! - a frame followed by 00 bytes passes its CRC at longer lengths too (the CRC of a frame
+//!   and its own CRC is zero): those lengths are never taken over the frame itself.
+//!
+//! Silence (3.5 character times) counts where the times can be trusted: it supports the
+//! frame before it, and the frame after it starts in step. A frame cut short is kept until
+//! bytes show it is no frame, since a USB adapter can pause inside a frame.
+//!
+//! ASCII: ':' starts a frame and CR LF ends it; up to a second may pass between characters.
+//! TCP: the MBAP length alone frames, however the bytes were segmented.
+
+use super::function::EXCEPTION_FLAG;
+use super::{Direction, Mode};
+
+mod ascii;
+mod resync;
+mod rtu;
+mod tcp;
+
+/// How many bytes of a run of noise are kept to be shown; the rest are only counted, so
+/// that a line held in break for hours costs no memory.
+pub const NOISE_KEPT: usize = 64;
+
+/// The longest pause between the characters of an ASCII frame (the specification's
+/// default inter-character timeout).
+pub const ASCII_CHARACTER_TIMEOUT_US: u64 = 1_000_000;
+
+/// The shortest RTU frame: address, function, CRC.
+const MIN_RTU_FRAME: usize = 4;
+
+/// The highest slave address on a serial line; 248-255 are reserved.
+const MAX_SLAVE: u8 = 247;
+
+/// A frame as found in the stream.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Found {
+    /// The whole frame as received: envelope, PDU and checksum (CR LF included in ASCII).
+    pub bytes: Vec<u8>,
+    /// Position of the first byte in the whole stream.
+    pub offset: u64,
+    /// Arrival time of the first and of the last byte, in microseconds, when known.
+    pub start: Option<u64>,
+    /// Arrival time of the last byte, in microseconds, when known.
+    pub end: Option<u64>,
+    /// Why the frame is not valid: a checksum mismatch, or an ASCII frame cut off.
+    pub broken: Option<Broken>,
+    /// The way the frame travels, when its layout tells (RTU); `None` when it reads both
+    /// ways or the layout does not say.
+    pub direction: Option<Direction>,
+}
+
+/// Why a frame found in the stream is not valid.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Broken {
+    /// The frame has the length its bytes predict, but its checksum fails.
+    Checksum,
+    /// An ASCII frame cut off by a new ':' (or by silence) before its CR LF.
+    Incomplete,
+}
+
+/// Bytes that belong to no frame, in a run.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Noise {
+    /// The first [`NOISE_KEPT`] bytes of the run.
+    pub kept: Vec<u8>,
+    /// How many bytes the run holds.
+    pub len: u64,
+    /// Position of the run's first byte in the whole stream.
+    pub offset: u64,
+    /// Arrival time of the first byte, when known.
+    pub start: Option<u64>,
+}
+
+/// What a [`Framer`] hands out, in stream order.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Event {
+    /// A frame, valid or broken.
+    Frame(Found),
+    /// A run of bytes that belong to no frame.
+    Noise(Noise),
+}
+
+/// What the start of the unread bytes holds.
+enum Look {
+    Frame {
+        len: usize,
+        broken: Option<Broken>,
+        direction: Option<Direction>,
+    },
+    Noise,
+    NeedMore,
+    /// TCP: no MBAP header here, so the stream cannot be framed from here on.
+    Lost,
+}
+
+/// Finds the frames of one mode in a stream of bytes.
+pub struct Framer {
+    mode: Mode,
+    /// Silence that ends a frame, in microseconds: 3.5 characters in RTU, a second in ASCII.
+    silence_us: u64,
+    /// One character's time on the wire, in microseconds.
+    char_us: f64,
+    buffer: Vec<u8>,
+    times: Vec<Option<u64>>,
+    /// Position in the stream of `buffer[0]`.
+    offset: u64,
+    /// `buffer[0]` follows a frame, silence, or the start of the stream.
+    in_step: bool,
+    /// The line has been quiet since the last byte.
+    quiet: bool,
+    /// No more bytes will come.
+    ended: bool,
+    noise: Option<Noise>,
+    /// The direction the next frame should travel in: a master alternates request and
+    /// answer. It settles a frame that reads as valid at two lengths.
+    expect: Option<Direction>,
+    /// Slave and function of the request whose answer is due: the conversation.
+    awaiting: Option<(u8, u8)>,
+    /// TCP: a header that is no MBAP header; nothing after it can be framed.
+    lost: bool,
+}
+
+impl Framer {
+    /// `char_us`: one character's time (11 bits at the baud rate, say); `silence_us`: the
+    /// gap that ends an RTU frame (3.5 characters, 1750 us above 19200 baud). ASCII uses
+    /// its own one-second limit, and TCP no timing at all.
+    pub fn new(mode: Mode, char_us: f64, silence_us: u64) -> Self {
+        Self {
+            mode,
+            silence_us: match mode {
+                Mode::Ascii => ASCII_CHARACTER_TIMEOUT_US,
+                _ => silence_us,
+            },
+            char_us,
+            buffer: Vec::with_capacity(1024),
+            times: Vec::with_capacity(1024),
+            offset: 0,
+            in_step: true,
+            quiet: false,
+            ended: false,
+            noise: None,
+            expect: None,
+            awaiting: None,
+            lost: false,
+        }
+    }
+
+    /// Bytes without timing (a file, a TCP segment).
+    pub fn push(&mut self, bytes: &[u8], out: &mut Vec<Event>) {
+        self.quiet = false;
+        self.buffer.extend_from_slice(bytes);
+        self.times.resize(self.buffer.len(), None);
+        self.scan(out);
+    }
+
+    /// Bytes read together, the last of them at `time`: earlier ones are placed one
+    /// character time apart before it, as they travelled.
+    pub fn push_at(&mut self, bytes: &[u8], time: u64, out: &mut Vec<Event>) {
+        let Some(last) = bytes.len().checked_sub(1) else {
+            return;
+        };
+        let first_time = time.saturating_sub((last as f64 * self.char_us) as u64);
+        self.settle_before(first_time, out);
+        for (i, byte) in bytes.iter().enumerate() {
+            let back = ((last - i) as f64 * self.char_us) as u64;
+            self.buffer.push(*byte);
+            self.times.push(Some(time.saturating_sub(back)));
+        }
+        self.scan(out);
+    }
+
+    /// One byte at a known time (a timed capture).
+    pub fn push_byte_at(&mut self, byte: u8, time: u64, out: &mut Vec<Event>) {
+        self.push_at(&[byte], time, out);
+    }
+
+    /// The line has been quiet until `now`: the last frame is followed by silence. Returns
+    /// whether that was news (a replay that repeats the call gives the same frames).
+    pub fn idle(&mut self, now: u64, out: &mut Vec<Event>) -> bool {
+        if self.quiet || !self.silent_since_last(now) {
+            return false;
+        }
+        self.quiet = true;
+        self.scan(out);
+        true
+    }
+
+    /// The end of the stream: what is left is decided.
+    pub fn finish(&mut self, out: &mut Vec<Event>) {
+        self.quiet = true;
+        self.ended = true;
+        self.scan(out);
+        self.flush_noise(out);
+    }
+
+    /// A master has sent a request to `slave` with `function`: the next frame should be
+    /// its answer. What came before is forgotten.
+    pub fn await_answer(&mut self, slave: u8, function: u8) {
+        self.clear();
+        self.expect = Some(Direction::Response);
+        self.awaiting = Some((slave, function & !EXCEPTION_FLAG));
+    }
+
+    /// A slave has answered the request just framed: the next frame is a request.
+    pub fn answered(&mut self) {
+        self.expect = Some(Direction::Request);
+        self.awaiting = None;
+    }
+
+    /// Forgets the bytes not yet framed and starts in step, as after silence.
+    pub fn clear(&mut self) {
+        self.offset += self.buffer.len() as u64;
+        self.buffer.clear();
+        self.times.clear();
+        self.noise = None;
+        self.in_step = true;
+        self.quiet = false;
+        self.lost = false;
+    }
+
+    /// Bytes received but not framed yet.
+    pub fn unread(&self) -> &[u8] {
+        &self.buffer
+    }
+
+    /// TCP: a header was no MBAP header, so the connection cannot be trusted any more.
+    pub fn is_lost(&self) -> bool {
+        self.lost
+    }
+
+    /// Whether the line has been silent since the last byte, by `now`.
+    fn silent_since_last(&self, now: u64) -> bool {
+        match self.times.last() {
+            Some(Some(last)) => self.is_silence(*last, now),
+            _ => false,
+        }
+    }
+
+    /// Silence from the character that started at `from` to the one that starts at `to`.
+    fn is_silence(&self, from: u64, to: u64) -> bool {
+        to.saturating_sub(from) as f64 - self.char_us >= self.silence_us as f64
+    }
+
+    /// New bytes after silence: what was waiting is decided as `idle` would have decided
+    /// it, so that a live session and a replay of its bytes agree.
+    fn settle_before(&mut self, first_new: u64, out: &mut Vec<Event>) {
+        self.quiet = false;
+        if !self.buffer.is_empty() && self.silent_since_last(first_new) {
+            self.quiet = true;
+            self.scan(out);
+            self.quiet = false;
+        }
+    }
+
+    /// Whether silence follows byte `i` of the buffer.
+    fn silence_after(&self, i: usize) -> bool {
+        if i + 1 == self.buffer.len() {
+            return self.quiet;
+        }
+        match (
+            self.times.get(i).copied().flatten(),
+            self.times.get(i + 1).copied().flatten(),
+        ) {
+            (Some(a), Some(b)) => self.is_silence(a, b),
+            _ => false,
+        }
+    }
+
+    fn scan(&mut self, out: &mut Vec<Event>) {
+        let mut at = 0;
+        let mut in_step = self.in_step;
+        while at < self.buffer.len() {
+            in_step |= at > 0 && self.silence_after(at - 1);
+            // No frame starts with 00 00 (there is no function 00): a line held low for
+            // hours is passed over a run at a time.
+            let zeros = match self.mode {
+                Mode::Rtu => self.buffer[at..].iter().take_while(|b| **b == 0).count(),
+                _ => 0,
+            };
+            if zeros > 1 {
+                self.add_noise(at, zeros - 1);
+                at += zeros - 1;
+                in_step = false;
+                continue;
+            }
+            let look = match self.mode {
+                Mode::Rtu => self.look_rtu(at, in_step),
+                Mode::Ascii => self.look_ascii(at),
+                Mode::Tcp => self.look_tcp(at),
+            };
+            match look {
+                Look::Frame {
+                    len,
+                    broken,
+                    direction,
+                } => {
+                    self.flush_noise(out);
+                    let found = Found {
+                        bytes: self.buffer[at..at + len].to_vec(),
+                        offset: self.offset + at as u64,
+                        start: self.times[at],
+                        end: self.times[at + len - 1],
+                        broken,
+                        direction,
+                    };
+                    if broken.is_none() {
+                        self.turn(&found);
+                    }
+                    out.push(Event::Frame(found));
+                    at += len;
+                    in_step = true;
+                }
+                Look::Noise => {
+                    self.add_noise(at, 1);
+                    at += 1;
+                    in_step = false;
+                }
+                Look::NeedMore => break,
+                Look::Lost => {
+                    self.lost = true;
+                    self.add_noise(at, self.buffer.len() - at);
+                    at = self.buffer.len();
+                    self.flush_noise(out);
+                }
+            }
+        }
+        self.buffer.drain(..at);
+        self.times.drain(..at);
+        self.offset += at as u64;
+        self.in_step = in_step;
+        if self.ended {
+            self.flush_noise(out);
+        }
+    }
+
+    /// A frame was taken: the bus's turn passes, and a request awaits its answer.
+    fn turn(&mut self, found: &Found) {
+        // A frame that reads both ways passes the turn all the same.
+        match found.direction.or(self.expect) {
+            // A broadcast is not answered: another request comes next.
+            Some(Direction::Request) if found.bytes.first() == Some(&0) => {
+                self.expect = Some(Direction::Request);
+                self.awaiting = None;
+            }
+            Some(Direction::Request) => {
+                self.expect = Some(Direction::Response);
+                self.awaiting = match found.bytes.as_slice() {
+                    [slave, function, ..] => Some((*slave, *function)),
+                    _ => None,
+                };
+            }
+            Some(Direction::Response) => {
+                self.expect = Some(Direction::Request);
+                self.awaiting = None;
+            }
+            None => {}
+        }
+    }
+
+    /// Counts `count` bytes from `at` as noise, keeping the first of a run.
+    fn add_noise(&mut self, at: usize, count: usize) {
+        let noise = self.noise.get_or_insert_with(|| Noise {
+            kept: Vec::new(),
+            len: 0,
+            offset: self.offset + at as u64,
+            start: self.times[at],
+        });
+        let room = NOISE_KEPT.saturating_sub(noise.kept.len()).min(count);
+        noise.kept.extend_from_slice(&self.buffer[at..at + room]);
+        noise.len += count as u64;
+    }
+
+    fn flush_noise(&mut self, out: &mut Vec<Event>) {
+        if let Some(noise) = self.noise.take() {
+            out.push(Event::Noise(noise));
+        }
+    }
+
+    // ---- RTU ----
+}
+
+/// The frames of bytes given whole and without timing, such as a line of a log that holds
+/// a request and its answer glued together: `Some` when the bytes are two or more valid
+/// frames of `mode` end to end and nothing else.
+pub fn split_glued(mode: Mode, bytes: &[u8]) -> Option<Vec<Vec<u8>>> {
+    let mut framer = Framer::new(mode, 0.0, 0);
+    let mut events = Vec::new();
+    framer.push(bytes, &mut events);
+    framer.finish(&mut events);
+    let frames: Vec<Vec<u8>> = events
+        .into_iter()
+        .map(|event| match event {
+            Event::Frame(found) if found.broken.is_none() => Some(found.bytes),
+            _ => None,
+        })
+        .collect::<Option<_>>()?;
+    (frames.len() >= 2).then_some(frames)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::codec::limits::MAX_RTU_ADU;
+
+    #[test]
+    fn frames_glued_on_one_line_are_split_and_nothing_else_is() {
+        let request = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
+        let response = [
+            0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64, 0xC8, 0xBA,
+        ];
+        let glued = [&request[..], &response[..]].concat();
+        assert_eq!(
+            split_glued(Mode::Rtu, &glued),
+            Some(vec![request.to_vec(), response.to_vec()])
+        );
+        assert_eq!(split_glued(Mode::Rtu, &request), None);
+        let mut bad = glued.clone();
+        bad[12] ^= 1;
+        assert_eq!(split_glued(Mode::Rtu, &bad), None);
+        assert_eq!(
+            split_glued(Mode::Rtu, &[&glued[..], &[0xFF][..]].concat()),
+            None
+        );
+    }
+    use crate::codec::checksum::crc16;
+
+    const REQUEST: [u8; 8] = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
+    const ANSWER: [u8; 11] = [
+        0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64, 0xC8, 0xBA,
+    ];
+
+    fn rtu(body: &[u8]) -> Vec<u8> {
+        let mut frame = body.to_vec();
+        frame.extend_from_slice(&crc16(body).to_le_bytes());
+        frame
+    }
+
+    fn framer(mode: Mode) -> Framer {
+        Framer::new(mode, 573.0, 2005)
+    }
+
+    /// Every event of `stream` fed all at once, then finished.
+    fn events(mode: Mode, stream: &[u8]) -> Vec<Event> {
+        let mut framer = framer(mode);
+        let mut out = Vec::new();
+        framer.push(stream, &mut out);
+        framer.finish(&mut out);
+        out
+    }
+
+    /// The valid frames of `stream`.
+    fn frames(stream: &[u8]) -> Vec<Vec<u8>> {
+        events(Mode::Rtu, stream)
+            .into_iter()
+            .filter_map(|e| match e {
+                Event::Frame(f) if f.broken.is_none() => Some(f.bytes),
+                _ => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn glued_frames_with_noise_between_them() {
+        let mut stream = REQUEST.to_vec();
+        stream.push(0x00);
+        stream.extend_from_slice(&ANSWER);
+        stream.push(0xFE);
+        let out = events(Mode::Rtu, &stream);
+        assert_eq!(frames(&stream), [REQUEST.to_vec(), ANSWER.to_vec()]);
+        let noise = out.iter().filter(|e| matches!(e, Event::Noise(_))).count();
+        assert_eq!(noise, 2);
+    }
+
+    #[test]
+    fn byte_by_byte_and_all_at_once_agree() {
+        let mut stream = vec![0x00, 0xFE];
+        stream.extend_from_slice(&REQUEST);
+        stream.extend_from_slice(&ANSWER);
+        let whole = events(Mode::Rtu, &stream);
+        let mut single = Vec::new();
+        let mut framer = framer(Mode::Rtu);
+        for byte in &stream {
+            framer.push(&[*byte], &mut single);
+        }
+        framer.finish(&mut single);
+        assert_eq!(whole, single);
+    }
+
+    #[test]
+    fn a_corrupt_request_followed_by_its_answer_is_a_crc_error() {
+        let mut bad = REQUEST;
+        bad[7] ^= 0xFF;
+        let mut stream = bad.to_vec();
+        stream.extend_from_slice(&ANSWER);
+        let out = events(Mode::Rtu, &stream);
+        assert!(
+            matches!(&out[0], Event::Frame(f) if f.broken == Some(Broken::Checksum) && f.bytes == bad)
+        );
+        assert!(matches!(&out[1], Event::Frame(f) if f.broken.is_none() && f.bytes == ANSWER));
+    }
+
+    #[test]
+    fn an_unknown_function_before_a_request_does_not_swallow_it() {
+        // 01 41: a byte whose next byte is a user-defined function.
+        let mut stream = vec![0x01, 0x41];
+        stream.extend_from_slice(&REQUEST);
+        stream.extend_from_slice(&ANSWER);
+        assert_eq!(frames(&stream), [REQUEST.to_vec(), ANSWER.to_vec()]);
+    }
+
+    #[test]
+    fn a_request_after_noise_is_taken_at_the_silence_after_it() {
+        let mut framer = framer(Mode::Rtu);
+        let mut out = Vec::new();
+        let mut stream = vec![0x01, 0x41, 0x7F];
+        stream.extend_from_slice(&REQUEST);
+        framer.push_at(&stream, 10_000, &mut out);
+        assert!(!out.iter().any(|e| matches!(e, Event::Frame(_))));
+        assert!(!framer.idle(10_500, &mut out), "not silent yet");
+        assert!(framer.idle(13_000, &mut out));
+        assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes == REQUEST));
+    }
+
+    #[test]
+    fn user_defined_functions_need_support_and_keep_a_crc_ending_in_00() {
+        // Find a user-function frame whose CRC ends in 00, so that its prefix one byte
+        // shorter passes the CRC too.
+        let ends_in_00 = (0u16..)
+            .map(|n| rtu(&[0x05, 0x41, (n >> 8) as u8, n as u8, 0x10]))
+            .find(|f| f.last() == Some(&0))
+            .unwrap();
+        let answer = rtu(&[0x05, 0x41, 0x99]);
+        let mut stream = ends_in_00.clone();
+        stream.extend_from_slice(&answer);
+        stream.extend_from_slice(&REQUEST);
+        assert_eq!(frames(&stream), [ends_in_00, answer, REQUEST.to_vec()]);
+    }
+
+    #[test]
+    fn trailing_zeros_never_lengthen_a_frame() {
+        let user = rtu(&[0x05, 0x42, 0x01, 0x02]);
+        let mut stream = user.clone();
+        stream.extend_from_slice(&[0, 0, 0, 0]);
+        stream.extend_from_slice(&REQUEST);
+        assert_eq!(frames(&stream), [user, REQUEST.to_vec()]);
+    }
+
+    #[test]
+    fn random_bytes_are_noise() {
+        let mut rng = 0x2545_F491_4F6C_DD1Du64;
+        let stream: Vec<u8> = (0..200_000)
+            .map(|_| {
+                rng ^= rng << 13;
+                rng ^= rng >> 7;
+                rng ^= rng << 17;
+                rng as u8
+            })
+            .collect();
+        // The very first position is in step and may be taken on its CRC alone; nothing
+        // after it may.
+        let found = frames(&stream);
+        assert!(found.len() <= 1, "{} frames in random bytes", found.len());
+    }
+
+    #[test]
+    fn a_long_run_of_one_byte_is_counted_not_kept() {
+        let mut framer = framer(Mode::Rtu);
+        let mut out = Vec::new();
+        for _ in 0..1000 {
+            framer.push(&[0u8; 1000], &mut out);
+            assert!(framer.unread().len() <= MAX_RTU_ADU);
+        }
+        framer.finish(&mut out);
+        match out.as_slice() {
+            [Event::Noise(noise)] => {
+                assert_eq!(noise.len, 1_000_000);
+                assert_eq!(noise.kept.len(), NOISE_KEPT);
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn ascii_frames_noise_a_cut_frame_and_a_slow_sender() {
+        let stream = b"xx:1103006B00037E\r\n:1103006B:110306022B0000006455\r\n";
+        let out = events(Mode::Ascii, stream);
+        assert!(matches!(&out[0], Event::Noise(n) if n.kept == b"xx"));
+        assert!(matches!(&out[1], Event::Frame(f) if f.broken.is_none()));
+        assert!(
+            matches!(&out[2], Event::Frame(f) if f.broken == Some(Broken::Incomplete) && f.bytes == b":1103006B")
+        );
+        assert!(matches!(&out[3], Event::Frame(f) if f.broken.is_none()));
+
+        // Half a second between characters is within the one-second limit.
+        let mut framer = framer(Mode::Ascii);
+        let mut out = Vec::new();
+        for (i, byte) in b":1103006B00037E\r\n".iter().enumerate() {
+            framer.push_byte_at(*byte, i as u64 * 500_000, &mut out);
+            framer.idle(i as u64 * 500_000 + 499_000, &mut out);
+        }
+        assert!(matches!(out.as_slice(), [Event::Frame(f)] if f.broken.is_none()));
+    }
+
+    #[test]
+    fn tcp_frames_by_the_mbap_length_however_split() {
+        let frame = [0, 1, 0, 0, 0, 6, 0x11, 0x03, 0x00, 0x6B, 0x00, 0x03];
+        let mut stream = frame.to_vec();
+        stream.extend_from_slice(&frame);
+        let mut framer = framer(Mode::Tcp);
+        let mut out = Vec::new();
+        for byte in &stream {
+            framer.push(&[*byte], &mut out);
+        }
+        assert_eq!(out.len(), 2);
+        // Protocol id 99: no MBAP header, and nothing after it can be trusted.
+        framer.push(&[0, 2, 0, 99, 0, 6, 0x11], &mut out);
+        assert!(matches!(out.last(), Some(Event::Noise(n)) if n.len == 7));
+        assert!(framer.is_lost());
+    }
+}

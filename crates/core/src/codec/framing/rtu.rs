@@ -1,0 +1,347 @@
+//! RTU: a frame's length from its function code and byte count, its CRC, and what the
+//! bytes at a position could be when they make no frame yet.
+
+use crate::codec::checksum::{crc_holds, crc_matches};
+use crate::codec::length::{rtu_frame_length, Length};
+use crate::codec::limits::MAX_RTU_ADU;
+use crate::codec::Direction;
+
+use super::resync::Tell;
+use super::resync::{may_lack_layout, pdu_reads};
+use super::{Broken, Framer, Look, MIN_RTU_FRAME};
+
+/// One way the bytes at a position read as a frame whose CRC holds.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Candidate {
+    pub(super) len: usize,
+    /// `None`: the same length reads both ways.
+    pub(super) direction: Option<Direction>,
+    /// Its length came from the function's layout, not from the CRC alone.
+    pub(super) known_layout: bool,
+}
+
+/// What the bytes at one position could be.
+#[derive(Default)]
+pub(super) struct Candidates {
+    /// Lengths whose CRC holds, shortest first.
+    pub(super) valid: Vec<Candidate>,
+    /// Directions in which more bytes could still make a frame here, with the length
+    /// awaited when the layout tells it.
+    pub(super) pending: Vec<(Direction, Option<usize>)>,
+}
+
+impl Candidates {
+    pub(super) fn add(&mut self, len: usize, direction: Direction, known_layout: bool) {
+        match self.valid.iter_mut().find(|c| c.len == len) {
+            Some(same) if same.direction != Some(direction) => same.direction = None,
+            Some(_) => {}
+            None => self.valid.push(Candidate {
+                len,
+                direction: Some(direction),
+                known_layout,
+            }),
+        }
+    }
+}
+
+pub(super) fn frame_of(candidate: &Candidate) -> Look {
+    Look::Frame {
+        len: candidate.len,
+        broken: None,
+        direction: candidate.direction,
+    }
+}
+
+impl Framer {
+    pub(super) fn look_rtu(&self, at: usize, in_step: bool) -> Look {
+        let found = self.candidates(at);
+        // A frame cut short may still complete (a USB adapter pauses inside frames), unless
+        // silence came and a whole frame of known layout after its start shows it never
+        // will.
+        let cut_off =
+            self.ended || (self.quiet && self.inner_frame_end(at, self.buffer.len()).is_some());
+        let may_complete = !found.pending.is_empty() && !cut_off;
+        if found.valid.is_empty() {
+            if may_complete {
+                return Look::NeedMore;
+            }
+            return self.broken_or_noise(at, in_step);
+        }
+        // In step, the answer a request awaits stands on its CRC and is complete on its
+        // last byte: its length comes from its layout, so neither a reading against the
+        // turn nor the silence after it is worth a wait (a master would wait out its
+        // silence, or its timeout, for every answer ending in 00).
+        if in_step {
+            let awaited = found.valid.iter().find(|c| {
+                let frame = &self.buffer[at..at + c.len];
+                c.known_layout
+                    && self.answers_awaited(frame, c.direction)
+                    && pdu_reads(frame, Some(Direction::Response), false)
+            });
+            if let Some(answer) = awaited {
+                return frame_of(answer);
+            }
+        }
+        // While a reading that could be preferred may still complete, wait for it, unless
+        // silence says no more is coming: one in the direction the bus expects (any, when
+        // it expects nothing), or one a byte longer (a frame ending in 00 leaves its prefix
+        // valid too).
+        let expected = |direction: Option<Direction>| match (self.expect, direction) {
+            (Some(expected), Some(direction)) => direction == expected,
+            _ => true,
+        };
+        let waits = match self.expect {
+            Some(direction) => {
+                found.pending.iter().any(|(d, _)| *d == direction)
+                    && !found.valid.iter().any(|c| expected(c.direction))
+            }
+            None => true,
+        } || found
+            .pending
+            .iter()
+            .any(|(_, len)| found.valid.iter().any(|c| Some(c.len + 1) == *len));
+        if waits && may_complete && !self.quiet {
+            return Look::NeedMore;
+        }
+        let mut acceptable: Vec<Candidate> = Vec::with_capacity(found.valid.len());
+        for candidate in &found.valid {
+            // In step with the bus, a frame of known layout on its turn stands on its CRC;
+            // one against the turn needs what follows it too. While a request awaits its
+            // answer, only that answer is on the turn.
+            let frame = &self.buffer[at..at + candidate.len];
+            let on_turn = match self.expect {
+                Some(Direction::Response) => {
+                    candidate.direction != Some(Direction::Request)
+                        && (self.awaiting.is_none()
+                            || self.answers_awaited(frame, candidate.direction))
+                }
+                _ => expected(candidate.direction),
+            };
+            let tell = if in_step && candidate.known_layout && on_turn {
+                // One whose PDU does not read is a master's mistake to be shown, or bytes
+                // that only happen to pass: what follows must be sound too.
+                if pdu_reads(frame, candidate.direction, false) {
+                    Tell::Yes
+                } else {
+                    self.followed_well(at + candidate.len, 1, true, self.asked_by(at, candidate))
+                }
+            } else {
+                self.supported(at, candidate, 1, in_step)
+            };
+            match tell {
+                Tell::Yes => acceptable.push(*candidate),
+                Tell::NotYet => return Look::NeedMore,
+                Tell::No => {}
+            }
+        }
+        let chosen = match acceptable.as_slice() {
+            [] => None,
+            [one] => Some(*one),
+            several => match self.choose(at, several, expected) {
+                Ok(choice) => Some(choice),
+                Err(()) => return Look::NeedMore,
+            },
+        };
+        match chosen {
+            Some(candidate) => frame_of(&candidate),
+            None if may_complete => Look::NeedMore,
+            None => self.broken_or_noise(at, in_step),
+        }
+    }
+
+    /// Of several readings that would all do (shortest first): the one in the direction
+    /// the bus expects, unless a shorter one against the turn is followed by a frame and
+    /// it is not (the 00 that seemed to end it starts the next frame). Where the turn does
+    /// not tell, the shortest right after which a frame or silence follows, then one
+    /// followed so past 00 bytes, then the shortest. `Err` while what follows is not here.
+    pub(super) fn choose(
+        &self,
+        at: usize,
+        several: &[Candidate],
+        expected: impl Fn(Option<Direction>) -> bool,
+    ) -> Result<Candidate, ()> {
+        let followed = |candidate: &Candidate, past_runs| {
+            self.followed_well(
+                at + candidate.len,
+                1,
+                past_runs,
+                self.asked_by(at, candidate),
+            )
+        };
+        let on_turn: Vec<Candidate> = several
+            .iter()
+            .filter(|c| self.expect.is_some() && c.direction.is_some() && expected(c.direction))
+            .copied()
+            .collect();
+        if let Some(primary) = on_turn.first() {
+            let primary_followed = followed(primary, false);
+            if primary_followed == Tell::NotYet {
+                return Err(());
+            }
+            if primary_followed == Tell::No {
+                for shorter in several.iter().filter(|c| c.len < primary.len) {
+                    match followed(shorter, false) {
+                        Tell::Yes => return Ok(*shorter),
+                        Tell::NotYet => return Err(()),
+                        Tell::No => {}
+                    }
+                }
+            }
+            return Ok(*primary);
+        }
+        for past_zeros in [false, true] {
+            for candidate in several {
+                match followed(candidate, past_zeros) {
+                    Tell::Yes => return Ok(*candidate),
+                    Tell::NotYet => return Err(()),
+                    Tell::No => {}
+                }
+            }
+        }
+        Ok(several[0])
+    }
+
+    /// The readings of the bytes at `at` whose CRC holds, and the directions still waiting
+    /// for bytes.
+    pub(super) fn candidates(&self, at: usize) -> Candidates {
+        let data = &self.buffer[at..];
+        let mut found = Candidates::default();
+        let mut unknown_done = false;
+        for direction in [Direction::Request, Direction::Response] {
+            match rtu_frame_length(data, direction) {
+                Length::Known(len) if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len) => {
+                    match data.get(..len) {
+                        Some(frame) if crc_holds(frame) => found.add(len, direction, true),
+                        Some(_) => {}
+                        None => found.pending.push((direction, Some(len))),
+                    }
+                }
+                Length::AtLeast(_) => found.pending.push((direction, None)),
+                // The same CRC scan serves both directions.
+                Length::Unknown if may_lack_layout(data) && !unknown_done => {
+                    unknown_done = true;
+                    let (lengths, pending) = self.unknown_lengths(at);
+                    for len in lengths {
+                        found.add(len, Direction::Request, false);
+                        found.add(len, Direction::Response, false);
+                    }
+                    if pending {
+                        found.pending.push((Direction::Request, None));
+                        found.pending.push((Direction::Response, None));
+                    }
+                }
+                _ => {}
+            }
+        }
+        found.valid.sort_unstable_by_key(|c| c.len);
+        found
+    }
+
+    /// A function without a known layout: every length whose CRC holds, save those that
+    /// only add 00 bytes to a shorter one (the CRC of a frame and its own CRC is zero). No
+    /// length may swallow a whole frame of known layout. Also says whether more bytes could
+    /// still give a length.
+    pub(super) fn unknown_lengths(&self, at: usize) -> (Vec<usize>, bool) {
+        let data = &self.buffer[at..];
+        let reach = data.len().min(MAX_RTU_ADU);
+        let inner_end = self.inner_frame_end(at, at + reach);
+        let limit = inner_end.map_or(reach, |end| end - at - 1);
+        let lengths = crc_matches(data, MIN_RTU_FRAME, limit)
+            .into_iter()
+            .filter(|len| len - 2 < MIN_RTU_FRAME || data[len - 2..*len] != [0, 0])
+            .collect();
+        let more_could_come =
+            inner_end.is_none() && data.len() < MAX_RTU_ADU && !self.quiet && !self.ended;
+        (lengths, more_could_come)
+    }
+
+    /// Where the first whole frame of known layout that lies entirely after `at` and
+    /// before `end` ends. Only whole frames count, so that the answer depends on the
+    /// bytes and not on when they came.
+    pub(super) fn inner_frame_end(&self, at: usize, end: usize) -> Option<usize> {
+        let end = end.min(self.buffer.len());
+        (at + 1..end.saturating_sub(MIN_RTU_FRAME - 1))
+            .filter_map(|inner| self.known_frame_len(inner, end).map(|len| inner + len))
+            .min()
+    }
+
+    /// The length of the whole frame of known layout, CRC and PDU sound, at `at` and ending
+    /// by `end`.
+    pub(super) fn known_frame_len(&self, at: usize, end: usize) -> Option<usize> {
+        let data = &self.buffer[at..end.min(self.buffer.len())];
+        [Direction::Request, Direction::Response]
+            .into_iter()
+            .find_map(|direction| match rtu_frame_length(data, direction) {
+                Length::Known(len) if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len) => data
+                    .get(..len)
+                    .filter(|frame| crc_holds(frame) && pdu_reads(frame, Some(direction), true))
+                    .map(|_| len),
+                _ => None,
+            })
+    }
+
+    /// The bytes at `at` as a frame of known layout whose CRC fails, or else as noise. A
+    /// broken frame is a request in step with the bus, or the answer a request awaits; it
+    /// must end where a frame, silence or the end of the input follows, and hold no valid
+    /// frame. Random bytes are noise.
+    pub(super) fn broken_or_noise(&self, at: usize, in_step: bool) -> Look {
+        match self.broken(at, in_step) {
+            (Tell::Yes, Some((len, direction))) => Look::Frame {
+                len,
+                broken: Some(Broken::Checksum),
+                direction: Some(direction),
+            },
+            (Tell::NotYet, _) => Look::NeedMore,
+            _ => Look::Noise,
+        }
+    }
+
+    pub(super) fn broken(&self, at: usize, in_step: bool) -> (Tell, Option<(usize, Direction)>) {
+        let data = &self.buffer[at..];
+        let mut lengths: Vec<(usize, Direction)> = [Direction::Request, Direction::Response]
+            .into_iter()
+            .filter_map(|direction| match rtu_frame_length(data, direction) {
+                Length::Known(len)
+                    if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len) && len <= data.len() =>
+                {
+                    Some((len, direction))
+                }
+                _ => None,
+            })
+            .collect();
+        lengths.sort_unstable_by_key(|(len, _)| *len);
+        for (len, direction) in lengths {
+            let frame = &data[..len];
+            let plausible = match direction {
+                Direction::Request => in_step,
+                Direction::Response => self.answers_awaited(frame, Some(direction)),
+            };
+            if !plausible {
+                continue;
+            }
+            // What follows first: it is cheaper to tell than what lies inside.
+            match self.followed_well(at + len, 0, false, None) {
+                Tell::Yes
+                    if self.inner_frame_end(at, at + len).is_none()
+                        && !self.holds_unknown_frame(at, at + len) =>
+                {
+                    return (Tell::Yes, Some((len, direction)))
+                }
+                Tell::NotYet => return (Tell::NotYet, None),
+                _ => {}
+            }
+        }
+        (Tell::No, None)
+    }
+
+    /// Whether a frame of a function without a known layout, its CRC sound, lies inside
+    /// `at..end` after its first byte.
+    pub(super) fn holds_unknown_frame(&self, at: usize, end: usize) -> bool {
+        (at + 1..end).any(|inner| {
+            let data = &self.buffer[inner..end];
+            may_lack_layout(data) && !crc_matches(data, MIN_RTU_FRAME, data.len()).is_empty()
+        })
+    }
+
+    // ---- ASCII ----
+}
