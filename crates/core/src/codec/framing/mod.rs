@@ -96,6 +96,16 @@ pub enum Event {
     Noise(Noise),
 }
 
+/// One way the bytes at a position read as a frame whose CRC holds.
+#[derive(Clone, Copy, Debug)]
+struct Candidate {
+    len: usize,
+    /// `None`: the same length reads both ways.
+    direction: Option<Direction>,
+    /// Its length came from the function's layout, not from the CRC alone.
+    known_layout: bool,
+}
+
 /// What the start of the unread bytes holds.
 enum Look {
     Frame {

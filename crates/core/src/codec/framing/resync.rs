@@ -8,8 +8,7 @@ use crate::codec::function::{
 use crate::codec::limits::MAX_RTU_ADU;
 use crate::codec::{Direction, Pdu};
 
-use super::rtu::Candidate;
-use super::{Framer, MAX_SLAVE};
+use super::{Candidate, Framer, MAX_SLAVE};
 
 /// Three answers to "is it so?": the bytes that would tell may not be here yet.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -8,17 +8,7 @@ use crate::codec::Direction;
 
 use super::resync::Tell;
 use super::resync::{may_lack_layout, pdu_reads};
-use super::{Broken, Framer, Look, MIN_RTU_FRAME};
-
-/// One way the bytes at a position read as a frame whose CRC holds.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Candidate {
-    pub(super) len: usize,
-    /// `None`: the same length reads both ways.
-    pub(super) direction: Option<Direction>,
-    /// Its length came from the function's layout, not from the CRC alone.
-    pub(super) known_layout: bool,
-}
+use super::{Broken, Candidate, Framer, Look, MIN_RTU_FRAME};
 
 /// What the bytes at one position could be.
 #[derive(Default)]
