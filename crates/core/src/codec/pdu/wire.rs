@@ -5,12 +5,16 @@ use crate::codec::error::PduError;
 use crate::codec::function::*;
 use crate::codec::limits;
 
+#[inline]
+
 pub(super) fn check_quantity(quantity: u16, max: u16) -> Result<(), PduError> {
     if quantity == 0 || quantity > max {
         return Err(PduError::QuantityOutOfRange { quantity, max });
     }
     Ok(())
 }
+
+#[inline]
 
 pub(super) fn check_range(address: u16, quantity: u16) -> Result<(), PduError> {
     if u32::from(address) + u32::from(quantity) > 65536 {
@@ -19,10 +23,14 @@ pub(super) fn check_range(address: u16, quantity: u16) -> Result<(), PduError> {
     Ok(())
 }
 
+#[inline]
+
 pub(super) fn check_read(address: u16, quantity: u16, max: u16) -> Result<(), PduError> {
     check_quantity(quantity, max)?;
     check_range(address, quantity)
 }
+
+#[inline]
 
 pub(super) fn coil_word(value: bool) -> u16 {
     if value {
@@ -32,6 +40,8 @@ pub(super) fn coil_word(value: bool) -> u16 {
     }
 }
 
+#[inline]
+
 pub(super) fn coil_from_word(word: u16) -> Result<bool, PduError> {
     match word {
         0xFF00 => Ok(true),
@@ -39,6 +49,8 @@ pub(super) fn coil_from_word(word: u16) -> Result<bool, PduError> {
         other => Err(PduError::BadCoilValue(other)),
     }
 }
+
+#[inline]
 
 pub(super) fn len_u8(len: usize, max: usize) -> Result<u8, PduError> {
     u8::try_from(len)
@@ -51,18 +63,22 @@ pub(super) fn len_u8(len: usize, max: usize) -> Result<u8, PduError> {
 pub(super) struct Writer<'a>(pub(super) &'a mut Vec<u8>);
 
 impl Writer<'_> {
+    #[inline]
     pub(super) fn u8(&mut self, value: u8) -> &mut Self {
         self.0.push(value);
         self
     }
+    #[inline]
     pub(super) fn u16(&mut self, value: u16) -> &mut Self {
         self.0.extend_from_slice(&value.to_be_bytes());
         self
     }
+    #[inline]
     pub(super) fn bytes(&mut self, bytes: &[u8]) -> &mut Self {
         self.0.extend_from_slice(bytes);
         self
     }
+    #[inline]
     pub(super) fn registers(&mut self, values: &[u16]) -> &mut Self {
         for value in values {
             self.u16(*value);
@@ -80,6 +96,7 @@ pub(super) struct Reader<'a> {
 
 impl<'a> Reader<'a> {
     /// A reader positioned after the function code.
+    #[inline]
     pub(super) fn new(pdu: &'a [u8]) -> Result<Self, PduError> {
         let function = *pdu.first().ok_or(PduError::Empty)?;
         Ok(Self {
@@ -88,6 +105,8 @@ impl<'a> Reader<'a> {
             pos: 1,
         })
     }
+
+    #[inline]
 
     pub(super) fn take(&mut self, n: usize) -> Result<&'a [u8], PduError> {
         let end = self.pos + n;
@@ -100,14 +119,20 @@ impl<'a> Reader<'a> {
         Ok(slice)
     }
 
+    #[inline]
+
     pub(super) fn u8(&mut self) -> Result<u8, PduError> {
         Ok(self.take(1)?[0])
     }
+
+    #[inline]
 
     pub(super) fn u16(&mut self) -> Result<u16, PduError> {
         let b = self.take(2)?;
         Ok(u16::from_be_bytes([b[0], b[1]]))
     }
+
+    #[inline]
 
     pub(super) fn registers(&mut self, count: usize) -> Result<Vec<u16>, PduError> {
         Ok(self
@@ -117,6 +142,8 @@ impl<'a> Reader<'a> {
             .collect())
     }
 
+    #[inline]
+
     pub(super) fn rest(&mut self) -> &'a [u8] {
         let rest = self.bytes.get(self.pos..).unwrap_or_default();
         self.pos = self.bytes.len();
@@ -124,6 +151,7 @@ impl<'a> Reader<'a> {
     }
 
     /// The PDU must end here: extra bytes mean the frame is not what its function says.
+    #[inline]
     pub(super) fn finish(self) -> Result<(), PduError> {
         if self.pos != self.bytes.len() {
             return Err(PduError::LengthMismatch {
@@ -136,6 +164,7 @@ impl<'a> Reader<'a> {
     }
 
     /// A byte count, then that many bytes, which must be the rest of the PDU.
+    #[inline]
     pub(super) fn counted_rest(&mut self) -> Result<&'a [u8], PduError> {
         let byte_count = usize::from(self.u8()?);
         let expected = self.pos + byte_count;
@@ -151,6 +180,7 @@ impl<'a> Reader<'a> {
 }
 
 /// Requests and normal responses carry function codes 01-7F; 80-FF mark exceptions.
+#[inline]
 pub(super) fn check_normal_function(function: u8) -> Result<(), PduError> {
     if function == 0 || function & EXCEPTION_FLAG != 0 {
         return Err(PduError::BadField(
@@ -160,12 +190,16 @@ pub(super) fn check_normal_function(function: u8) -> Result<(), PduError> {
     Ok(())
 }
 
+#[inline]
+
 pub(super) fn check_pdu_len(len: usize) -> Result<(), PduError> {
     if len > limits::MAX_PDU {
         return Err(PduError::TooLong(len));
     }
     Ok(())
 }
+
+#[inline]
 
 pub(super) fn quantity_of(len: usize, max: u16) -> Result<u16, PduError> {
     let quantity = u16::try_from(len).unwrap_or(u16::MAX);
@@ -174,6 +208,7 @@ pub(super) fn quantity_of(len: usize, max: u16) -> Result<u16, PduError> {
 }
 
 /// Reads a byte count that must equal `expected`, then the bytes it counts.
+#[inline]
 pub(super) fn counted_exactly<'a>(
     r: &mut Reader<'a>,
     expected: usize,
@@ -191,6 +226,7 @@ pub(super) fn counted_exactly<'a>(
 }
 
 /// Checks a register byte count (2 per register) without consuming the registers.
+#[inline]
 pub(super) fn counted_registers(r: &mut Reader<'_>, quantity: u16) -> Result<(), PduError> {
     let byte_count = r.u8()?;
     let expected = usize::from(quantity) * 2;
