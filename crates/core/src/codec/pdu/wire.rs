@@ -6,7 +6,6 @@ use crate::codec::function::*;
 use crate::codec::limits;
 
 #[inline]
-
 pub(super) fn check_quantity(quantity: u16, max: u16) -> Result<(), PduError> {
     if quantity == 0 || quantity > max {
         return Err(PduError::QuantityOutOfRange { quantity, max });
@@ -15,7 +14,6 @@ pub(super) fn check_quantity(quantity: u16, max: u16) -> Result<(), PduError> {
 }
 
 #[inline]
-
 pub(super) fn check_range(address: u16, quantity: u16) -> Result<(), PduError> {
     if u32::from(address) + u32::from(quantity) > 65536 {
         return Err(PduError::AddressOverflow { address, quantity });
@@ -24,14 +22,12 @@ pub(super) fn check_range(address: u16, quantity: u16) -> Result<(), PduError> {
 }
 
 #[inline]
-
 pub(super) fn check_read(address: u16, quantity: u16, max: u16) -> Result<(), PduError> {
     check_quantity(quantity, max)?;
     check_range(address, quantity)
 }
 
 #[inline]
-
 pub(super) fn coil_word(value: bool) -> u16 {
     if value {
         0xFF00
@@ -41,7 +37,6 @@ pub(super) fn coil_word(value: bool) -> u16 {
 }
 
 #[inline]
-
 pub(super) fn coil_from_word(word: u16) -> Result<bool, PduError> {
     match word {
         0xFF00 => Ok(true),
@@ -51,7 +46,6 @@ pub(super) fn coil_from_word(word: u16) -> Result<bool, PduError> {
 }
 
 #[inline]
-
 pub(super) fn len_u8(len: usize, max: usize) -> Result<u8, PduError> {
     u8::try_from(len)
         .ok()
@@ -107,7 +101,6 @@ impl<'a> Reader<'a> {
     }
 
     #[inline]
-
     pub(super) fn take(&mut self, n: usize) -> Result<&'a [u8], PduError> {
         let end = self.pos + n;
         let slice = self.bytes.get(self.pos..end).ok_or(PduError::Truncated {
@@ -120,20 +113,17 @@ impl<'a> Reader<'a> {
     }
 
     #[inline]
-
     pub(super) fn u8(&mut self) -> Result<u8, PduError> {
         Ok(self.take(1)?[0])
     }
 
     #[inline]
-
     pub(super) fn u16(&mut self) -> Result<u16, PduError> {
         let b = self.take(2)?;
         Ok(u16::from_be_bytes([b[0], b[1]]))
     }
 
     #[inline]
-
     pub(super) fn registers(&mut self, count: usize) -> Result<Vec<u16>, PduError> {
         Ok(self
             .take(count * 2)?
@@ -143,7 +133,6 @@ impl<'a> Reader<'a> {
     }
 
     #[inline]
-
     pub(super) fn rest(&mut self) -> &'a [u8] {
         let rest = self.bytes.get(self.pos..).unwrap_or_default();
         self.pos = self.bytes.len();
@@ -191,7 +180,6 @@ pub(super) fn check_normal_function(function: u8) -> Result<(), PduError> {
 }
 
 #[inline]
-
 pub(super) fn check_pdu_len(len: usize) -> Result<(), PduError> {
     if len > limits::MAX_PDU {
         return Err(PduError::TooLong(len));
@@ -200,7 +188,6 @@ pub(super) fn check_pdu_len(len: usize) -> Result<(), PduError> {
 }
 
 #[inline]
-
 pub(super) fn quantity_of(len: usize, max: u16) -> Result<u16, PduError> {
     let quantity = u16::try_from(len).unwrap_or(u16::MAX);
     check_quantity(quantity, max)?;
