@@ -265,3 +265,49 @@ fn diag_shows_the_counters_a_device_lacks_as_such() {
         "{table}"
     );
 }
+
+/// With a long `--timeout`, every command that asks a slave that answers at once is done at
+/// once: none of them waits out its timeout (or a multiple of it) once the answers are in.
+#[test]
+fn with_a_long_timeout_every_command_is_done_as_soon_as_it_is_answered() {
+    let Some(pair) = PtyPair::new() else { return };
+    let pump = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/pump3.txt");
+    let map = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/pump3.csv");
+    // The pump's data, and the register serve_pty asks to see that it is up.
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("pump.txt");
+    std::fs::write(
+        &data,
+        std::fs::read_to_string(pump).unwrap() + "400108 = 0\n",
+    )
+    .unwrap();
+    let (_server, port) = serve_pty(&pair, &["--data", data.to_str().unwrap()]);
+    for args in [
+        "read-holding 17 400001",
+        "read-holding 17 400001 3",
+        "read-coils 17 000001",
+        "read-input-registers 17 300001",
+        "write-register 17 400020 10",
+        "write-coil 17 000001 1",
+        "raw 17 03 00 00 00 01",
+        "info 17",
+        "diag 17 --count 1",
+        "dump 17 400001-400003",
+        "scan --ids 17",
+        "scan --ids 16-17",
+        &format!("read 17 --map {map}"),
+    ] {
+        let mut words: Vec<&str> = vec!["--timeout", "5s"];
+        words.extend(args.split(' '));
+        let started = std::time::Instant::now();
+        let output = mbtool().args(&port).args(&words).output().unwrap();
+        let took = started.elapsed();
+        assert!(output.status.success(), "{words:?}: {output:?}");
+        // scan --ids 16-17 waits out 16's timeout once, and no more.
+        let bound = if args.contains("16-17") { 6 } else { 1 };
+        assert!(
+            took < std::time::Duration::from_secs(bound),
+            "{words:?} took {took:?}"
+        );
+    }
+}

@@ -135,6 +135,13 @@ fn late_timeout(timeout: Duration) -> Duration {
     (timeout * 10).max(Duration::from_secs(1))
 }
 
+/// How long the line is listened to after a scan whose last id was silent: three
+/// timeouts (a late answer is late by a fraction of a second: a slow gateway or device),
+/// and with a long timeout one second more than it.
+fn straggler_wait(timeout: Duration) -> Duration {
+    (timeout * 3).min(timeout + Duration::from_secs(1))
+}
+
 fn probe(master: &mut Master, slave: u8, request: &Request) -> Result<Outcome, MasterError> {
     Ok(match master.transact(slave, request) {
         Ok(Reply::Response(_)) => Outcome::Present(Answer::Ok),
@@ -234,6 +241,8 @@ where
             });
         }
         let probing = report.hits.len() == found_before;
+        // Whether the last id asked was silent: its answer may still be on its way.
+        let mut last_silent = false;
         for slave in options.ids.iter().filter(|_| probing) {
             report.requests += 1;
             let mut late = Vec::new();
@@ -252,6 +261,7 @@ where
                 Err(error) => return Err(error.into()),
                 Ok(outcome) => outcome,
             };
+            last_silent = matches!(outcome, Outcome::Absent | Outcome::Other(_));
             match outcome {
                 Outcome::Present(answer) => {
                     report.requests += 1;
@@ -274,10 +284,11 @@ where
             note_late(&mut master, late, &mut report, index, options, &request);
             progress(Progress::Asked(report.hits.len()));
         }
-        if probing {
-            // The last ids' answers may still be on their way.
-            let quiet = master.timeout() * 3;
-            if let Ok(stragglers) = master.wait_quiet(quiet, late_timeout(quiet)) {
+        // The last id's answer may still be on its way when it was silent; when it
+        // answered, nothing is awaited.
+        if probing && last_silent {
+            let quiet = straggler_wait(master.timeout());
+            if let Ok(stragglers) = master.wait_quiet(quiet, quiet) {
                 note_late(
                     &mut master,
                     stragglers,
@@ -287,10 +298,9 @@ where
                     &request,
                 );
             }
-            if options.tell_unit_ids {
-                report.ignores_unit_id =
-                    control_answer(&mut master, &request, &report, options, index);
-            }
+        }
+        if probing && options.tell_unit_ids {
+            report.ignores_unit_id = control_answer(&mut master, &request, &report, options, index);
         }
         if report.hits.len() > found_before && !options.all {
             break;
