@@ -15,8 +15,12 @@ the hex of an ASCII frame's bytes (3A 31 31 ...).
 Lines from logs are read as they are: the frame is the longest run of hex bytes on the line, \
 and what stands around it (a time stamp, words such as CRC ok, a # comment) is set aside. A \
 direction mark before it (> or TX for a request, < or RX for a response, as in mbtool's own \
--v trace) settles which way it went. A line that starts with # is a comment. Frames glued \
-together on one line are split as sniff splits them.
+-v trace) settles which way it went. The traffic logs of Modbus Poll (000000-Tx:01 03 ...), \
+QModMaster ([RTU]>Rx > 10:33:38:374 : 01 03 ...), mbpoll -v and libmodbus ([01][03]... sent, \
+<01><03>... received) and pymodbus's debug log (SEND: 0x1 0x3 ...) are read with the \
+direction they mark; their own messages (Waiting for a confirmation...) are passed over and \
+counted. A line that starts with # is a comment. Frames glued together on one line are \
+split as sniff splits them.
 
 The framing (RTU, ASCII, TCP) is detected unless --mode says; request or response is \
 inferred from the bytes, and a frame that reads both ways says so (--direction settles it).

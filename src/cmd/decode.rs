@@ -11,7 +11,7 @@ use mbtool::settings::Settings;
 use mbtool_core::codec::framing::split_glued;
 use mbtool_core::codec::{limits, Direction, Mode};
 use mbtool_core::describe::{describe_frame, FrameReport};
-use mbtool_core::model::hexinput::read_line;
+use mbtool_core::model::hexinput::{read_line, HexError};
 
 /// Longer lines cannot be a frame: even spaced hex of the longest ASCII frame is shorter.
 const MAX_LINE: usize = 4 * limits::MAX_ASCII_ADU;
@@ -24,14 +24,21 @@ struct Decoder {
     frames: u64,
     failed: u64,
     unreadable: u64,
+    /// Lines of a log that were its own messages, not frames.
+    messages: u64,
 }
 
 impl Decoder {
-    /// Decodes one line (or argument); `place` names it in error messages.
-    fn line(&mut self, text: &[u8], place: impl Fn() -> String) -> io::Result<()> {
+    /// Decodes one line (or argument); `place` names it in error messages. `in_log`: a
+    /// line of standard input, where a log's own messages are passed over.
+    fn line(&mut self, text: &[u8], in_log: bool, place: impl Fn() -> String) -> io::Result<()> {
         let frame = match read_line(text) {
             Ok(Some(frame)) => frame,
             Ok(None) => return Ok(()),
+            Err(HexError::Message) if in_log => {
+                self.messages += 1;
+                return Ok(());
+            }
             Err(error) => {
                 self.unreadable += 1;
                 mbtool::note!("mbtool: {}: {error}", place());
@@ -85,6 +92,7 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
         frames: 0,
         failed: 0,
         unreadable: 0,
+        messages: 0,
     };
     if args.frames.is_empty() {
         let stdin = io::stdin();
@@ -94,7 +102,7 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
         while let Some(kind) = lines.next_line(&mut line)? {
             number += 1;
             match kind {
-                Line::Complete => decoder.line(&line, || format!("line {number}"))?,
+                Line::Complete => decoder.line(&line, true, || format!("line {number}"))?,
                 Line::TooLong => decoder.too_long(format!("line {number}")),
             }
         }
@@ -114,10 +122,20 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
                 decoder.too_long(format!("frame {}", i + 1));
                 continue;
             }
-            decoder.line(frame.as_bytes(), || format!("frame {}", i + 1))?;
+            decoder.line(frame.as_bytes(), false, || format!("frame {}", i + 1))?;
         }
     }
     decoder.out.flush()?;
+    if decoder.messages > 0 {
+        mbtool::note!(
+            "mbtool: {} passed over: words, no frame (a log's own messages)",
+            output::plural(decoder.messages as usize, "line")
+        );
+        // Words alone are no frames: an input of nothing else is a mistake.
+        if decoder.frames == 0 {
+            decoder.unreadable += 1;
+        }
+    }
     if decoder.failed > 0 {
         mbtool::note!(
             "mbtool: {} of {} frames failed their check",

@@ -506,3 +506,75 @@ fn an_rtu_frame_read_as_ascii_shows_no_control_characters() {
     );
     assert!(!run.stdout.contains('\u{11}'), "{}", run.stdout);
 }
+
+/// The traffic logs of the tools engineers come from, piped in as they are: every line is
+/// decoded whole, as the request or answer its tool marks it.
+#[test]
+fn the_traffic_logs_of_other_tools_decode_with_their_directions() {
+    let request = crate::support::rtu(&[0x01, 0x03, 0x00, 0x00, 0x00, 0x0A]);
+    let mut answer_body = vec![0x01, 0x03, 0x14];
+    answer_body.extend((0..20u8).map(|i| i * 3));
+    let answer = crate::support::rtu(&answer_body);
+    let spaced = |bytes: &[u8], sep: &str| {
+        bytes
+            .iter()
+            .map(|b| format!("{b:02X}"))
+            .collect::<Vec<_>>()
+            .join(sep)
+    };
+    let pymodbus = |bytes: &[u8]| {
+        bytes
+            .iter()
+            .map(|b| format!("{b:#x}"))
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    let brackets = |bytes: &[u8], open: char, close: char| {
+        bytes
+            .iter()
+            .map(|b| format!("{open}{b:02X}{close}"))
+            .collect::<String>()
+    };
+    let logs = [
+        // Modbus Poll's Communication Traffic.
+        format!(
+            "000000-Tx:{}\n000001-Rx:{}\n000002-Tx:{}\n000003-Rx:{}\n",
+            spaced(&request, " "),
+            spaced(&answer, " "),
+            spaced(&request, " "),
+            spaced(&answer, " ")
+        ),
+        // QModMaster's bus monitor.
+        format!(
+            "Sys > 10:33:38:100 : Connecting to Serial Port [/dev/ttyUSB0]...OK\n\
+             [RTU]>Tx > 10:33:38:290 : {}  \n[RTU]>Rx > 10:33:38:374 : {}  \n",
+            spaced(&request, "  "),
+            spaced(&answer, "  ")
+        ),
+        // mbpoll -v (libmodbus debug).
+        format!(
+            "{}\nWaiting for a confirmation...\n{}\n",
+            brackets(&request, '[', ']'),
+            brackets(&answer, '<', '>')
+        ),
+        // pymodbus debug logging.
+        format!(
+            "DEBUG:pymodbus.transaction:SEND: {}\nDEBUG:pymodbus.transaction:RECV: {}\n",
+            pymodbus(&request),
+            pymodbus(&answer)
+        ),
+    ];
+    for log in logs {
+        let run = decode(&["--json"], log.as_bytes());
+        assert_eq!(run.code, 0, "{log}{}", run.stderr);
+        let frames = json_lines(&run.stdout);
+        assert!(frames.len() >= 2, "{log}{}", run.stdout);
+        for (i, frame) in frames.iter().enumerate() {
+            let kind = if i % 2 == 0 { "request" } else { "response" };
+            assert_eq!(frame["kind"], kind, "{log}{frame}");
+            assert_eq!(frame["slave"], 1, "{log}{frame}");
+            assert_eq!(frame["function"], 3, "{log}{frame}");
+            assert_eq!(frame["valid"], true, "{log}{frame}");
+        }
+    }
+}

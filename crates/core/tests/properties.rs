@@ -345,6 +345,8 @@ proptest! {
             _ => hex.join("-"),
         };
         let (word, direction) = [("", None), ("TX:", Some(Direction::Request)), ("<", Some(Direction::Response))][mark];
+        // Bytes in [] are what libmodbus sent, when no mark says otherwise.
+        let direction = direction.or((spelling == 2).then_some(Direction::Request));
         let text = format!("2026-11-23 08:15:02.125 {word} {spelled}  CRC ok  # from the panel");
         let frame = read_line(text.as_bytes()).map_err(|e| TestCaseError::fail(format!("{text}: {e}")))?;
         let frame = frame.ok_or_else(|| TestCaseError::fail(text.clone()))?;

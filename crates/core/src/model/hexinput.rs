@@ -22,6 +22,10 @@ pub enum HexError {
     /// A character that is no hex digit, with its column (1-based).
     #[error("'{0}' at column {1} is not a hex digit")]
     NotHex(String, usize),
+    /// A line of words, a log's own message (`Waiting for a confirmation...`), with no
+    /// frame on it.
+    #[error("no frame: the line is words, a log's own message")]
+    Message,
     /// A log line whose hex bytes are too few for a frame.
     #[error("no frame: the line's longest run of hex bytes, {0}, is shorter than any frame (4 bytes at least); give one frame a line")]
     TooShort(String),
@@ -147,18 +151,53 @@ struct Run {
     ascii: bool,
 }
 
-/// A direction mark: `>`, `<`, `TX`, `RX`, `Tx:`, `[RX]`.
-fn direction_mark(word: &[u8]) -> Option<Direction> {
+/// A direction mark: a word (`TX`, `Rx:`, `[RX]`, `SEND:`, `recv:`) or a symbol (`>`,
+/// `<`). `Some((direction, named))`; a named mark is not overridden by a symbol after it,
+/// as in QModMaster's `[RTU]>Rx > 10:33:38:374`.
+fn direction_mark(word: &[u8]) -> Option<(Direction, bool)> {
     let word = word.strip_suffix(b":").unwrap_or(word);
     let word = word
         .strip_prefix(b"[")
         .and_then(|w| w.strip_suffix(b"]"))
         .unwrap_or(word);
     match word.to_ascii_uppercase().as_slice() {
-        b">" | b"TX" => Some(Direction::Request),
-        b"<" | b"RX" => Some(Direction::Response),
+        b">" => Some((Direction::Request, false)),
+        b"<" => Some((Direction::Response, false)),
+        b"TX" | b"SEND" | b"SENT" => Some((Direction::Request, true)),
+        b"RX" | b"RECV" | b"RECEIVED" => Some((Direction::Response, true)),
         _ => None,
     }
+}
+
+/// A word split where a direction mark is glued to what stands around it, as Modbus Poll
+/// writes `000000-Tx:01`, QModMaster `[RTU]>Rx` and Python's logging
+/// `DEBUG:pymodbus.transaction:SEND:`: the part before, the mark with its colon, and the
+/// part after.
+fn split_glued_mark(word: &[u8]) -> Vec<&[u8]> {
+    const NAMES: [&[u8]; 4] = [b"TX", b"RX", b"SEND", b"RECV"];
+    let alnum = |at: usize| word.get(at).is_some_and(u8::is_ascii_alphanumeric);
+    let found = (0..word.len()).find_map(|i| {
+        NAMES.iter().find_map(|name| {
+            let end = i + name.len();
+            let named = word
+                .get(i..end)
+                .is_some_and(|w| w.eq_ignore_ascii_case(name));
+            (named && (i == 0 || !alnum(i - 1)) && !alnum(end) && word.len() > end - i)
+                .then_some((i, end))
+        })
+    });
+    let Some((at, end)) = found else {
+        return vec![word];
+    };
+    let end = if word.get(end) == Some(&b':') {
+        end + 1
+    } else {
+        end
+    };
+    [&word[..at], &word[at..end], &word[end..]]
+        .into_iter()
+        .filter(|piece| !piece.is_empty())
+        .collect()
 }
 
 /// The bytes one piece of a word spells in one spelling, or `None` when it is no hex.
@@ -242,19 +281,38 @@ fn frame_of(line: &[u8]) -> Result<LineFrame, HexError> {
         }
         Err(error) => error,
     };
+    let run = longest_run(line);
+    let frame = run
+        .as_ref()
+        .is_some_and(|run| run.ascii || run.bytes.len() >= SHORTEST_FRAME);
+    if !frame && is_prose(line) {
+        return Err(HexError::Message);
+    }
     // A byte mistyped among hex bytes (`8G`, `1O`) is a mistake to point at, not a word
     // of a log to set aside.
     if line.split(u8::is_ascii_whitespace).any(mistyped_byte) {
         return Err(strict_error);
     }
-    match longest_run(line) {
-        Some(run) if run.ascii || run.bytes.len() >= SHORTEST_FRAME => Ok(LineFrame {
+    match run {
+        Some(run) if frame => Ok(LineFrame {
             bytes: run.bytes,
             direction: run.direction,
         }),
         Some(run) => Err(HexError::TooShort(crate::describe::spaced_hex(&run.bytes))),
         None => Err(strict_error),
     }
+}
+
+/// Whether a line without a frame is words, as the messages tools write among the frames
+/// of their logs: two words or more of three letters or more, one of them no hex.
+fn is_prose(line: &[u8]) -> bool {
+    let words: Vec<&[u8]> = line
+        .split(u8::is_ascii_whitespace)
+        .map(|word| word.trim_ascii_end().strip_suffix(b"...").unwrap_or(word))
+        .map(|word| word.strip_suffix(b":").unwrap_or(word))
+        .filter(|word| word.len() >= 3 && word.iter().all(u8::is_ascii_alphabetic))
+        .collect();
+    words.len() >= 2 && words.iter().any(|w| !w.iter().all(u8::is_ascii_hexdigit))
 }
 
 /// A word of one or two letters and digits, some hex and some not.
@@ -270,7 +328,7 @@ fn mistyped_byte(word: &[u8]) -> bool {
 fn longest_run(line: &[u8]) -> Option<Run> {
     let mut best: Option<Run> = None;
     let mut run = Run::default();
-    let mut mark = None;
+    let mut mark: Option<(Direction, bool)> = None;
     let keep = |run: &mut Run, best: &mut Option<Run>| {
         let run = std::mem::take(run);
         let longer = best
@@ -283,10 +341,14 @@ fn longest_run(line: &[u8]) -> Option<Run> {
     for word in line
         .split(u8::is_ascii_whitespace)
         .filter(|w| !w.is_empty())
+        .flat_map(split_glued_mark)
     {
-        if let Some(direction) = direction_mark(word) {
+        if let Some(found) = direction_mark(word) {
             keep(&mut run, &mut best);
-            mark = Some(direction);
+            let named_before = mark.is_some_and(|(_, named)| named) && run.bytes.is_empty();
+            if found.1 || !named_before {
+                mark = Some(found);
+            }
             continue;
         }
         if let Some(bytes) = ascii_frames(word) {
@@ -294,13 +356,20 @@ fn longest_run(line: &[u8]) -> Option<Run> {
             run = Run {
                 bytes,
                 spelling: None,
-                direction: mark,
+                direction: mark.map(|(direction, _)| direction),
                 ascii: true,
             };
             keep(&mut run, &mut best);
             continue;
         }
         let bracketed = word.iter().any(|b| matches!(b, b'[' | b'<'));
+        // libmodbus (and mbpoll -v) write what they send as [11][03] and what they
+        // receive as <11><03>.
+        let bracket_direction = match word.first() {
+            Some(b'[') => Some(Direction::Request),
+            Some(b'<') => Some(Direction::Response),
+            _ => None,
+        };
         let pieces = word.split(|b| {
             matches!(
                 b,
@@ -314,7 +383,9 @@ fn longest_run(line: &[u8]) -> Option<Run> {
                         keep(&mut run, &mut best);
                     }
                     if run.bytes.is_empty() {
-                        run.direction = mark;
+                        run.direction = mark
+                            .map(|(direction, _)| direction)
+                            .or(bracket_direction.filter(|_| spelling == Spelling::Bracketed));
                     }
                     run.spelling = Some(spelling);
                     run.bytes.extend_from_slice(&bytes);
@@ -371,8 +442,6 @@ mod tests {
     fn log_spellings_give_the_frame() {
         for text in [
             "11 03 00 6B 00 03 76 87",
-            "[11][03][00][6B][00][03][76][87]",
-            "<11><03><00><6B><00><03><76><87>",
             "11:03:00:6b:00:03:76:87",
             "11-03-00-6B-00-03-76-87",
             "{0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87};",
@@ -399,6 +468,45 @@ mod tests {
             line("11 03 00 6B 00 03 76 87 < reply"),
             frame(&REQUEST, None)
         );
+    }
+
+    /// Lines as the tools that engineers use write them, each with its direction.
+    #[test]
+    fn the_traffic_logs_of_other_tools_with_their_directions() {
+        let request = frame(&REQUEST, Some(Direction::Request));
+        let response = frame(&REQUEST, Some(Direction::Response));
+        for (tool, text, want) in [
+            // Modbus Poll, Communication Traffic window (and its saved log).
+            ("Modbus Poll", "000000-Tx:11 03 00 6B 00 03 76 87", &request),
+            ("Modbus Poll", "000001-Rx:11 03 00 6B 00 03 76 87", &response),
+            // QModMaster's bus monitor: mode, direction, time, then the bytes.
+            (
+                "QModMaster",
+                "[RTU]>Tx > 10:33:38:290 : 11  03  00  6B  00  03  76  87  ",
+                &request,
+            ),
+            (
+                "QModMaster",
+                "[RTU]>Rx > 10:33:38:374 : 11  03  00  6B  00  03  76  87  ",
+                &response,
+            ),
+            // libmodbus debug output, which mbpoll -v prints: sent in [], received in <>.
+            ("libmodbus", "[11][03][00][6B][00][03][76][87]", &request),
+            ("libmodbus", "<11><03><00><6B><00><03><76><87>", &response),
+            // pymodbus debug logging, 2.x and 3.x.
+            (
+                "pymodbus",
+                "DEBUG:pymodbus.transaction:SEND: 0x11 0x3 0x0 0x6b 0x0 0x3 0x76 0x87",
+                &request,
+            ),
+            (
+                "pymodbus",
+                "2024-03-01 10:00:00,123 DEBUG logging:103 recv: 0x11 0x3 0x0 0x6b 0x0 0x3 0x76 0x87 old_data:  addr=None",
+                &response,
+            ),
+        ] {
+            assert_eq!(&line(text), want, "{tool}: {text}");
+        }
     }
 
     #[test]
@@ -435,9 +543,19 @@ mod tests {
         // An escaped string does not join the 0x bytes before it.
         assert_eq!(
             line("sent 0x11 0x03 0x00 0x6B 0x00 0x03 0x76 0x87 \\x11"),
-            frame(&REQUEST, None)
+            frame(&REQUEST, Some(Direction::Request))
         );
-        assert!(matches!(line("hello world"), Err(HexError::NotHex(c, 1)) if c == "h"));
+        assert!(matches!(line("hello"), Err(HexError::NotHex(c, 1)) if c == "h"));
+        // The messages of a log among its frames are words, no frame.
+        for message in [
+            "hello world",
+            "Waiting for a confirmation...",
+            "Sys > 10:33:38:100 : Connecting to Serial Port [/dev/ttyUSB0]...OK",
+            "DEBUG:pymodbus.transaction:Current transaction state - IDLE",
+            "Opening /dev/ttyUSB0 at 19200 bauds (E, 8, 1)",
+        ] {
+            assert_eq!(line(message), Err(HexError::Message), "{message}");
+        }
         // A mistyped byte is pointed at, not set aside as a word of a log.
         assert!(
             matches!(line("11 03 00 6B 00 03 76 8G"), Err(HexError::NotHex(c, 23)) if c == "G")
