@@ -34,7 +34,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_needs_command" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -101,7 +101,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -127,7 +127,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -153,7 +153,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -179,7 +179,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -220,7 +220,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -261,7 +261,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -302,7 +302,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -344,7 +344,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -385,7 +385,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -407,7 +407,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -430,7 +430,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -467,7 +467,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -510,7 +510,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -548,7 +548,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -588,7 +588,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
@@ -610,7 +610,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
@@ -643,7 +643,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -664,7 +664,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
@@ -687,7 +687,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s o -l output -d 'The data file to write [default: standard output]' -r -f -a "table\t'A table for people'
@@ -708,7 +708,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r

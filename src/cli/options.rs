@@ -61,7 +61,8 @@ pub struct ConnectionArgs {
     #[arg(long, global = true, env = "MBTOOL_STOP_BITS", hide_env_values = true, value_parser = whole::<u8>(1, 2))]
     pub stop_bits: Option<u8>,
 
-    /// Response timeout for a whole answer: 500ms, 1s, 2.5s [default: 1s; 100ms for scan]
+    /// Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up
+    /// to 60) [default: 1s; 100ms for scan]
     #[arg(long, global = true, env = "MBTOOL_TIMEOUT", hide_env_values = true, value_parser = positive_duration)]
     pub timeout: Option<std::time::Duration>,
 

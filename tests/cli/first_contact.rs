@@ -393,3 +393,56 @@ fn help_names_the_environment_variables_without_empty_values() {
     assert!(help.contains("[env: MBTOOL_PORT]"), "{help}");
     assert!(!help.contains("MBTOOL_PORT=]"), "{help}");
 }
+
+/// A bare number above 60 for a duration is refused with the spelling probably meant, from
+/// the command line and from the environment, before anything is sent.
+#[test]
+fn a_bare_timeout_of_500_is_not_taken_for_eight_minutes() {
+    let run = |args: &[&str], env: Option<&str>| {
+        let mut command = crate::support::mbtool();
+        if let Some(value) = env {
+            command.env("MBTOOL_TIMEOUT", value);
+        }
+        let output = command.args(args).output().unwrap();
+        (
+            output.status.code(),
+            String::from_utf8_lossy(&output.stderr).into_owned(),
+        )
+    };
+    for (args, env) in [
+        (
+            vec![
+                "--port",
+                "sim",
+                "--timeout",
+                "500",
+                "read-holding",
+                "17",
+                "1",
+            ],
+            None,
+        ),
+        (
+            vec!["--port", "sim", "read-holding", "17", "1"],
+            Some("500"),
+        ),
+        (
+            vec!["--port", "sim", "--poll", "250", "read-holding", "17", "1"],
+            None,
+        ),
+    ] {
+        let (code, stderr) = run(&args, env);
+        assert_eq!(code, Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains("give 500ms") || stderr.contains("give 250ms"),
+            "{stderr}"
+        );
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    }
+    // Up to 60 a bare number is seconds, as before.
+    let (code, stderr) = run(
+        &["--port", "sim", "--timeout", "2", "read-holding", "17", "1"],
+        None,
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+}

@@ -2,7 +2,11 @@
 
 use std::time::Duration;
 
-/// Parses a duration; a bare number is seconds.
+/// The largest bare number taken as seconds: a bare 500 is far more often milliseconds
+/// meant (as Modbus Poll and most device manuals count) than eight minutes.
+const BARE_SECONDS_MAX: f64 = 60.0;
+
+/// Parses a duration; a bare number is seconds, up to 60.
 pub fn parse_duration(text: &str) -> Result<Duration, String> {
     let text = text.trim();
     let split = text
@@ -13,6 +17,11 @@ pub fn parse_duration(text: &str) -> Result<Duration, String> {
         .parse()
         .map_err(|_| format!("'{text}' is not a duration: write 500ms, 1s or 2.5s"))?;
     let seconds = match unit.trim() {
+        "" if value > BARE_SECONDS_MAX => {
+            return Err(format!(
+                "'{text}' without a unit would be {text} seconds: give {text}ms, or {text}s if seconds are meant"
+            ))
+        }
         "" | "s" => value,
         "ms" => value / 1e3,
         "us" | "µs" => value / 1e6,
@@ -48,6 +57,12 @@ mod tests {
         assert_eq!(parse_duration("1s"), Ok(Duration::from_secs(1)));
         assert_eq!(parse_duration("2.5s"), Ok(Duration::from_millis(2500)));
         assert_eq!(parse_duration("0"), Ok(Duration::ZERO));
+        assert_eq!(parse_duration("60"), Ok(Duration::from_secs(60)));
+        assert_eq!(
+            parse_duration("500"),
+            Err("'500' without a unit would be 500 seconds: give 500ms, or 500s if seconds are meant".into())
+        );
+        assert_eq!(parse_duration("500s"), Ok(Duration::from_secs(500)));
         assert!(parse_duration("fast").is_err());
         assert!(parse_duration("5 parsecs").is_err());
     }
