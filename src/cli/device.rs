@@ -21,7 +21,8 @@ unit id, and mbtool says so instead of listing them all.
 
 On a terminal a progress bar on stderr shows the ids tried, the slaves found and the time \
 left. The results are a table, or JSON Lines (one line per slave), then a summary line on \
-stderr. Exit status 0 when a slave was found, 3 when none answered.";
+stderr. Exit status 0 when a slave was found, 3 when none answered. Ctrl-C or SIGTERM \
+ends the scan before the next id, with the slaves found so far, and exit status 130.";
 
 pub(super) const DUMP_ABOUT: &str = "\
 Read ranges of a device's tables (400001-400200 000001-000064) in as few requests as the \
@@ -32,7 +33,11 @@ limits allow (--max-per-request lowers them) and write them as a data file that 
 A request that the device answers with exception 02 is split in halves, down to single \
 addresses, so that every address that exists is dumped; only the holes are left out, and \
 they are listed on stderr. So serve --data FILE stands in for the device that was dumped, \
-holes included.";
+holes included.
+
+The file is written whole or not at all: Ctrl-C or SIGTERM ends the dump with nothing \
+written (an older file of that name stays as it was), says how much was read, and exits \
+130.";
 
 pub(super) const RESTORE_ABOUT: &str = "\
 Write every coil and holding register of a data file (as dump writes it, or as serve \

@@ -29,13 +29,23 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
         .collect::<Result<Vec<_>, AddressError>>()
         .map_err(Error::from)?;
     let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
+    let stop = super::shared::stop_on_signal()?;
     let dump = backup::dump(
         &mut connection.master,
         slave,
         &ranges,
         settings.data.max_per_request,
+        &stop,
     )
     .map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
+    if dump.interrupted {
+        let values: usize = dump.entries.iter().map(|e| e.values.len()).sum();
+        mbtool::note!(
+            "mbtool: dump interrupted after reading {values} addresses of slave {slave} in {}; nothing was written, since a part of a device is no backup",
+            plural(dump.requests as usize, "request")
+        );
+        return Ok(super::shared::INTERRUPTED);
+    }
     if !dump.holes.is_empty() {
         let holes: Vec<String> = dump
             .holes
@@ -65,10 +75,9 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
     let values: usize = dump.entries.iter().map(|e| e.values.len()).sum();
     let target = match &settings.output.file {
         Some(path) => {
-            let path = path.display();
-            std::fs::write(path.to_string(), &text)
-                .with_context(|| format!("cannot write {path}"))?;
-            path.to_string()
+            write_whole(path, text.as_bytes())
+                .with_context(|| format!("cannot write {}", path.display()))?;
+            path.display().to_string()
         }
         None => {
             let mut out = output::stdout();
@@ -82,4 +91,33 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
         plural(dump.requests as usize, "request")
     );
     Ok(0)
+}
+
+/// Writes the file at `path` whole or not at all: into a file beside it, renamed over it
+/// once written and synced, so that an interruption or a full disk never leaves half a
+/// dump (or an empty file) where a dump is expected, and an older dump there stays as it
+/// was.
+fn write_whole(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
+    // A device or a pipe (/dev/stdout, a fifo) is written as it is, never replaced.
+    if path.metadata().is_ok_and(|m| !m.is_file()) {
+        return std::fs::write(path, bytes);
+    }
+    let name = path.file_name().map_or_else(
+        || std::ffi::OsString::from("dump"),
+        std::ffi::OsStr::to_os_string,
+    );
+    let mut partial_name = std::ffi::OsString::from(".");
+    partial_name.push(&name);
+    partial_name.push(format!(".{}.partial", std::process::id()));
+    let partial = path.with_file_name(partial_name);
+    let written = (|| {
+        let mut file = std::fs::File::create(&partial)?;
+        file.write_all(bytes)?;
+        file.sync_all()?;
+        std::fs::rename(&partial, path)
+    })();
+    if written.is_err() {
+        let _ = std::fs::remove_file(&partial);
+    }
+    written
 }

@@ -80,6 +80,7 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
         settings: &lines,
         serial,
     };
+    let stop = super::shared::stop_on_signal()?;
     let started = Instant::now();
     let report = scan(
         &lines,
@@ -108,6 +109,7 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
                 bar.set_message(format!("{found} found"));
             }
         },
+        &stop,
     )?;
     bar.finish_and_clear();
     let mut out = output::stdout();
@@ -146,6 +148,13 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
     }
     if let Some(why) = &report.interrupted {
         mbtool::note!("mbtool: the scan stopped early: {why}");
+    }
+    if report.stopped {
+        mbtool::note!(
+            "mbtool: scan interrupted; so far {}",
+            summary(&report, &place, started.elapsed())
+        );
+        return Ok(super::shared::INTERRUPTED);
     }
     mbtool::note!("mbtool: {}", summary(&report, &place, started.elapsed()));
     Ok(if report.hits.is_empty() { 3 } else { 0 })

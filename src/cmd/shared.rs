@@ -1,6 +1,8 @@
 //! What the commands that send requests share: the framing and planning of a request from
 //! the settings, the `-v` tracer, and what is said of a write done another way.
 
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 use std::time::Instant;
 
 use anyhow::Result;
@@ -77,4 +79,19 @@ pub fn connect_to(settings: &Settings, slave: &str) -> Result<(Connection, u8)> 
         connection.master.trace(tracer(connection.mode));
     }
     Ok((connection, slave))
+}
+
+/// The exit status of a command ended by Ctrl-C or SIGTERM, as a shell reports one killed
+/// by SIGINT.
+pub const INTERRUPTED: u8 = 130;
+
+/// A flag that Ctrl-C (SIGINT), SIGTERM and SIGHUP set, for a long command to end with
+/// what it has. Installed in place of the default action, so a command started in the
+/// background of a script (where SIGINT is ignored) ends on it too.
+pub fn stop_on_signal() -> Result<Arc<AtomicBool>> {
+    let stop = Arc::new(AtomicBool::new(false));
+    let flag = Arc::clone(&stop);
+    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
+        .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
+    Ok(stop)
 }

@@ -15,6 +15,7 @@ mod encode;
 mod first_contact;
 mod full_disk;
 mod golden;
+mod interrupt;
 mod map;
 mod master_faults;
 mod master_pymodbus;

@@ -431,8 +431,10 @@ impl Terminal {
         let terminal = Terminal {
             socket: tempfile::tempdir().expect("a temporary folder"),
         };
+        // The shell catches SIGINT (its child gets the default action), so that after a
+        // Ctrl-C that ends mbtool it still records mbtool's exit status.
         let script = format!(
-            "NO_COLOR=1 {} {args}; echo $? > {}; touch {}; sleep 600",
+            "trap : INT; NO_COLOR=1 {} {args}; echo $? > {}; touch {}; sleep 600",
             assert_cmd::cargo::cargo_bin("mbtool").display(),
             terminal.socket.path().join("status").display(),
             terminal.done_marker().display()

@@ -4,6 +4,8 @@
 //! left out. `restore` writes the coils and holding registers of data file entries with the
 //! fewest requests, then reads them back and tells what differs.
 
+use std::sync::atomic::{AtomicBool, Ordering};
+
 use super::run::{ReadData, RunError};
 use super::Master;
 use crate::codec::{limits, ExceptionCode, Request, Response};
@@ -30,6 +32,8 @@ pub struct Dump {
     pub holes: Vec<Range>,
     /// How many requests it took.
     pub requests: u64,
+    /// It was stopped before every range was read: what it holds is a part.
+    pub interrupted: bool,
 }
 
 /// The most one read request carries of `table`, or `max` when lower.
@@ -161,12 +165,14 @@ fn merged(ranges: &[Range]) -> Vec<Range> {
 }
 
 /// Reads every range, overlapping ones once, in requests of at most the protocol's limit
-/// (or `max`).
+/// (or `max`). `stop`, once set (by a signal handler, say), ends it between requests with
+/// the part read so far, marked `interrupted`.
 pub fn dump(
     master: &mut Master,
     slave: u8,
     ranges: &[Range],
     max: Option<u16>,
+    stop: &AtomicBool,
 ) -> Result<Dump, RunError> {
     let mut dump = Dump::default();
     for range in &merged(ranges) {
@@ -174,6 +180,10 @@ pub fn dump(
         let end = u32::from(range.address) + range.count;
         let mut at = u32::from(range.address);
         while at < end {
+            if stop.load(Ordering::SeqCst) {
+                dump.interrupted = true;
+                return Ok(dump);
+            }
             let quantity = (end - at).min(limit);
             // Both fit: addresses end at 65536 and a quantity at the protocol's limit.
             read_splitting(
@@ -265,7 +275,7 @@ pub fn verify(
             address: entry.address,
             count: entry.values.len() as u32,
         };
-        let read = dump(master, slave, &[range], None)?;
+        let read = dump(master, slave, &[range], None, &AtomicBool::new(false))?;
         let wanted = as_numbers(&entry.values);
         let mut found = vec![None; wanted.len()];
         for got in &read.entries {

@@ -2,6 +2,7 @@
 //! common settings first, each id that answers asked again to confirm it, and, before
 //! anything is sent, an ear on the line for slaves another master is already talking to.
 
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
 use super::{BadAnswer, Master, MasterError, Reply};
@@ -99,6 +100,8 @@ pub struct ScanReport {
     /// of its own). The control id's answer; the hits that answered otherwise are the
     /// ones that tell.
     pub ignores_unit_id: Option<Answer>,
+    /// It was stopped before every id was asked: the hits are those found so far.
+    pub stopped: bool,
     /// The ids after which the connection was closed by the other end, and opened again.
     pub reconnected: Vec<u8>,
     /// Why the scan stopped before its end, when it did: what it found so far stands.
@@ -206,12 +209,14 @@ fn ask_late(master: &mut Master, slave: u8, request: &Request) -> Result<Outcome
 /// Scans `settings` in order. `open` gives a master at a setting (with the scan's timeout
 /// and no retries); `progress` is told what is going on. A connection the other end
 /// closes is opened again (many TCP devices close on a unit id they lack); when it cannot
-/// be, the scan stops there and the report says why.
+/// be, the scan stops there and the report says why. `stop`, once set (by a signal
+/// handler, say), ends the scan before the next id, with what was found so far.
 pub fn scan<S, E>(
     settings: &[S],
     options: &ScanOptions,
     mut open: impl FnMut(&S) -> Result<Master, E>,
     mut progress: impl FnMut(Progress),
+    stop: &AtomicBool,
 ) -> Result<ScanReport, E>
 where
     E: From<MasterError> + std::fmt::Display,
@@ -244,6 +249,10 @@ where
         // Whether the last id asked was silent: its answer may still be on its way.
         let mut last_silent = false;
         for slave in options.ids.iter().filter(|_| probing) {
+            if stop.load(Ordering::SeqCst) {
+                report.stopped = true;
+                break 'settings;
+            }
             report.requests += 1;
             let mut late = Vec::new();
             let outcome = match ask(&mut master, *slave, &request, &mut late) {

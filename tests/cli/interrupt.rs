@@ -1,0 +1,155 @@
+//! Long commands ended by Ctrl-C, SIGINT or SIGTERM end with what they have: scan shows the
+//! slaves found so far, dump writes its file whole or not at all, and both exit 130. In a
+//! real terminal (tmux) and in the background of a script, where SIGINT is ignored unless
+//! the program catches it.
+
+use std::process::{Command as Process, Output, Stdio};
+use std::time::{Duration, Instant};
+
+use crate::support::{serve_pty, PtyPair, Terminal};
+
+/// Runs mbtool in the background of a non-interactive shell, as a script would (`&`, then
+/// `wait`), sends it `signal` after `after`, and returns its output and how long it took
+/// to end once signalled.
+fn signalled(args: &[String], after: Duration, signal: &str) -> (Output, Duration) {
+    let dir = tempfile::tempdir().unwrap();
+    let pid_file = dir.path().join("pid");
+    let mut child = Process::new("sh")
+        .arg("-c")
+        .arg(r#""$@" & echo $! > "$PID_FILE"; wait $!"#)
+        .arg("sh")
+        .arg(assert_cmd::cargo::cargo_bin("mbtool"))
+        .args(args)
+        .env("PID_FILE", &pid_file)
+        .env("NO_COLOR", "1")
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    std::thread::sleep(after);
+    let pid = std::fs::read_to_string(&pid_file).unwrap();
+    let sent = Instant::now();
+    let killed = Process::new("kill")
+        .args([&format!("-{signal}"), pid.trim()])
+        .status()
+        .unwrap();
+    assert!(killed.success());
+    let output = loop {
+        if let Some(_status) = child.try_wait().unwrap() {
+            break child.wait_with_output().unwrap();
+        }
+        if sent.elapsed() > Duration::from_secs(10) {
+            let _ = child.kill();
+            panic!("mbtool did not end on SIG{signal}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    };
+    (output, sent.elapsed())
+}
+
+fn words(port: &[String], args: &str) -> Vec<String> {
+    port.iter()
+        .cloned()
+        .chain(args.split(' ').map(String::from))
+        .collect()
+}
+
+#[test]
+fn an_interrupted_scan_shows_the_slaves_found_so_far_and_exits_130() {
+    let Some(pair) = PtyPair::new() else { return };
+    let (_server, port) = serve_pty(&pair, &["--slave", "3", "--slave", "17"]);
+    for signal in ["INT", "TERM"] {
+        // 247 ids at 100 ms take 25 s; by 3 s ids 3 and 17 have been asked.
+        let args = words(&port, "scan --ids 1-247 --timeout 100ms --json");
+        let (output, took) = signalled(&args, Duration::from_secs(3), signal);
+        let stdout = String::from_utf8_lossy(&output.stdout);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(130), "SIG{signal}: {stderr}");
+        assert!(
+            took < Duration::from_secs(1),
+            "SIG{signal}: ended {took:?} after"
+        );
+        let found: Vec<u64> = stdout
+            .lines()
+            .map(|line| {
+                serde_json::from_str::<serde_json::Value>(line).unwrap()["slave"]
+                    .as_u64()
+                    .unwrap()
+            })
+            .collect();
+        assert_eq!(found, [3, 17], "SIG{signal}: {stdout}");
+        assert!(
+            stderr.contains("mbtool: scan interrupted; so far 2 slaves found: 3, 17"),
+            "SIG{signal}: {stderr}"
+        );
+    }
+}
+
+#[test]
+fn an_interrupted_dump_writes_no_file_and_leaves_an_older_one_as_it_was() {
+    let Some(pair) = PtyPair::new() else { return };
+    let (_server, port) = serve_pty(&pair, &["--delay", "50ms"]);
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("pump.txt");
+    // 100 requests of 10 registers, 50 ms each: interrupted after about 20.
+    let args = words(
+        &port,
+        &format!(
+            "dump 17 400001-401000 --max-per-request 10 -o {}",
+            file.display()
+        ),
+    );
+    let (output, took) = signalled(&args, Duration::from_secs(1), "INT");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(130), "{stderr}");
+    assert!(took < Duration::from_secs(1), "ended {took:?} after");
+    assert!(
+        stderr.contains("mbtool: dump interrupted after reading")
+            && stderr.contains("nothing was written"),
+        "{stderr}"
+    );
+    assert!(
+        !file.exists(),
+        "an interrupted dump left {}",
+        file.display()
+    );
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        0,
+        "a partial file was left"
+    );
+    // A dump that was there stays whole.
+    std::fs::write(&file, "# an older dump\n400001 = 7\n").unwrap();
+    let (output, _) = signalled(&args, Duration::from_secs(1), "TERM");
+    assert_eq!(output.status.code(), Some(130));
+    assert_eq!(
+        std::fs::read_to_string(&file).unwrap(),
+        "# an older dump\n400001 = 7\n"
+    );
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+}
+
+#[test]
+fn ctrl_c_in_a_terminal_ends_a_scan_with_what_it_found() {
+    let Some(pair) = PtyPair::new() else { return };
+    let (_server, port) = serve_pty(&pair, &["--slave", "5", "--slave", "17"]);
+    let args = format!("{} scan --ids 1-247 --timeout 100ms", port.join(" "));
+    let Some(terminal) = Terminal::run(&args, 100, 30) else {
+        return;
+    };
+    // By 3 s ids 5 and 17 have been asked, and 30 more ids are to go at the least.
+    std::thread::sleep(Duration::from_secs(3));
+    terminal.keys(&["C-c"]);
+    let screen = terminal.wait_for(Duration::from_secs(10), |_| terminal.done());
+    assert_eq!(terminal.status(), Some(130), "{screen:#?}");
+    assert!(
+        screen.iter().any(|line| line.contains("│ 5 ")),
+        "{screen:#?}"
+    );
+    assert!(
+        screen
+            .iter()
+            .any(|line| line.contains("scan interrupted; so far 2 slaves found: 5, 17")),
+        "{screen:#?}"
+    );
+}
