@@ -578,3 +578,43 @@ fn the_traffic_logs_of_other_tools_decode_with_their_directions() {
         }
     }
 }
+
+/// A frame pasted without its CRC or LRC is told so in a line that fits 80 columns, with
+/// the frame whole.
+#[test]
+fn a_frame_without_its_checksum_is_told_with_the_checksum_it_lacks() {
+    for (pasted, says) in [
+        (
+            "11 03 00 6B 00 03",
+            "without its CRC? With it: 11 03 00 6B 00 03 76 87",
+        ),
+        (":1103006B0003", "without its LRC? With it: :1103006B00037E"),
+        (
+            "11 10 00 01 00 02 04 00 0A 01 02",
+            "without its CRC? With it: 11 10 00 01 00 02 04 00 0A 01 02 C6 F0",
+        ),
+        (
+            "01 03 14 00 00 00 01 00 02 00 03 00 04 00 05 00 06 00 07 00 08 00 09",
+            "without its CRC? It would end ",
+        ),
+    ] {
+        let run = decode(&[pasted], b"");
+        assert_eq!(run.code, 4, "{pasted}: {}", run.stderr);
+        let error = run
+            .stdout
+            .lines()
+            .find(|line| line.contains("error"))
+            .unwrap_or_default();
+        assert!(error.contains(says), "{pasted}: {}", run.stdout);
+        // With the table's label column and borders, the row fits 80 columns.
+        let message = error
+            .split('┆')
+            .nth(1)
+            .unwrap_or_default()
+            .trim_matches(['│', ' ']);
+        assert!(message.chars().count() + 15 <= 80, "{message}");
+    }
+    // A wrong CRC is still a wrong CRC.
+    let run = decode(&["11 03 00 6B 00 03 76 88"], b"");
+    assert!(run.stdout.contains("CRC mismatch"), "{}", run.stdout);
+}

@@ -3,6 +3,8 @@
 
 use serde::Serialize;
 
+use crate::codec::adu::hex_digit;
+use crate::codec::checksum::{crc16, lrc};
 use crate::codec::function::{self, EXCEPTION_FLAG};
 use crate::codec::length::pdu_length;
 use crate::codec::DeviceIdentification;
@@ -371,6 +373,60 @@ pub fn describe_frame(
     direction: Option<Direction>,
 ) -> FrameReport {
     let mode = mode.unwrap_or_else(|| Mode::detect(bytes));
+    let report = describe_as(bytes, mode, direction);
+    if report.valid || report.checksum.error().is_none() && report.mode != "ascii" {
+        return report;
+    }
+    without_checksum(bytes, mode, direction).unwrap_or(report)
+}
+
+/// The longest message that a frame pasted without its checksum gets, so that it shows
+/// whole in a table on an 80-column terminal.
+const WITHOUT_CHECKSUM_MESSAGE: usize = 65;
+
+/// A frame pasted without its CRC (or LRC): when the bytes with one appended read as a
+/// valid frame, that frame is described, with a short error that gives it whole.
+fn without_checksum(bytes: &[u8], mode: Mode, direction: Option<Direction>) -> Option<FrameReport> {
+    let (name, whole, shown) = match mode {
+        Mode::Rtu => {
+            let whole = [bytes, &crc16(bytes).to_le_bytes()].concat();
+            let shown = spaced_hex(&whole);
+            ("CRC", whole, shown)
+        }
+        Mode::Ascii => {
+            let body = bytes.strip_prefix(b":")?;
+            let body = body.strip_suffix(b"\r\n").unwrap_or(body);
+            if body.len() % 2 != 0 {
+                return None;
+            }
+            let data = body
+                .chunks_exact(2)
+                .map(|pair| Some(hex_digit(pair[0])? << 4 | hex_digit(pair[1])?))
+                .collect::<Option<Vec<u8>>>()?;
+            let text = format!(":{}{:02X}", String::from_utf8_lossy(body), lrc(&data));
+            ("LRC", format!("{text}\r\n").into_bytes(), text)
+        }
+        Mode::Tcp => return None,
+    };
+    let mut report = describe_as(&whole, mode, direction);
+    if !report.valid {
+        return None;
+    }
+    let message = format!("without its {name}? With it: {shown}");
+    let end = &shown[shown
+        .len()
+        .saturating_sub(if mode == Mode::Rtu { 5 } else { 2 })..];
+    report.error = Some(if message.len() <= WITHOUT_CHECKSUM_MESSAGE {
+        message
+    } else {
+        format!("without its {name}? It would end {end}")
+    });
+    report.valid = false;
+    report.checksum = Checksum::None;
+    Some(report)
+}
+
+fn describe_as(bytes: &[u8], mode: Mode, direction: Option<Direction>) -> FrameReport {
     let envelope = match Envelope::open(mode, bytes) {
         Ok(envelope) => envelope,
         Err(error) => return unreadable(mode, bytes, error),
