@@ -6,6 +6,7 @@ pub mod cli;
 pub mod connection;
 pub mod docs;
 pub mod error;
+pub mod habits;
 pub mod lines;
 pub mod output;
 pub mod settings;

@@ -78,7 +78,7 @@ fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
     let mut message = match error.kind() {
         ErrorKind::MissingRequiredArgument => missing(error, &subcommand),
         ErrorKind::InvalidSubcommand => unknown_command(error, command, &path),
-        _ => first_line(&rendered, error, command),
+        _ => mbpoll_habit(error).unwrap_or_else(|| first_line(&rendered, error, command)),
     };
     let see = if path.len() > 1 {
         path.join(" ")
@@ -87,6 +87,29 @@ fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
     };
     message.push_str(&format!(" (see '{see} --help')"));
     message
+}
+
+/// An option of mbpoll or modpoll typed out of habit (`-a 17 -r 1 -c 2`, or `-t 4`, which
+/// mbtool's --type takes for a value type), answered with mbtool's spelling.
+fn mbpoll_habit(error: &clap::Error) -> Option<String> {
+    let args: Vec<String> = std::env::args().collect();
+    let Some(ContextValue::String(arg)) = error.get(ContextKind::InvalidArg) else {
+        return None;
+    };
+    match error.kind() {
+        ErrorKind::UnknownArgument => mbtool::habits::mbpoll_habit(arg, &args),
+        ErrorKind::InvalidValue if arg.starts_with("--type") => {
+            let Some(ContextValue::String(value)) = error.get(ContextKind::InvalidValue) else {
+                return None;
+            };
+            let table = value.split(':').next().unwrap_or_default();
+            ["0", "1", "3", "4"]
+                .contains(&table)
+                .then(|| mbtool::habits::mbpoll_habit("-t", &args))
+                .flatten()
+        }
+        _ => None,
+    }
 }
 
 /// `mbtool` and the command names on the command line: `["mbtool", "encode", "raw"]`.

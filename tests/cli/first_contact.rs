@@ -446,3 +446,35 @@ fn a_bare_timeout_of_500_is_not_taken_for_eight_minutes() {
     );
     assert_eq!(code, Some(0), "{stderr}");
 }
+
+/// mbpoll's and modpoll's options, typed out of habit, get mbtool's spelling, and a whole
+/// mbpoll line the mbtool command that does the same; never clap's `-- -c`.
+#[test]
+fn mbpoll_habits_get_mbtools_spelling() {
+    for (line, says) in [
+        (
+            "--port sim -a 17 -r 1 -c 2",
+            "mbtool: -a is mbpoll's slave address: here it is the first argument after the command, read-holding 17 ...; the line given is mbtool read-holding 17 400001 2",
+        ),
+        (
+            "--port sim read 17 400001 -c 2",
+            "mbtool: -c is mbpoll's count: here it is the third argument, read 17 400001 2",
+        ),
+        (
+            "--port sim -t 3 -a 5 -r 10 -c 4",
+            "the line given is mbtool read-input-registers 5 300010 4",
+        ),
+        ("--port sim read-holding 17 1 -l 1000", "-l is mbpoll's poll rate: here it is --poll 1s"),
+        ("--port sim read-holding 17 1 -P none", "-P is mbpoll's parity: here it is --parity"),
+    ] {
+        let output = crate::support::mbtool()
+            .args(line.split(' '))
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(2), "{line}: {stderr}");
+        assert!(stderr.contains(says), "{line}: {stderr}");
+        assert!(!stderr.contains("-- -"), "{line}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    }
+}
