@@ -110,7 +110,7 @@ pub fn open_at(
         ))),
     };
     opened.map_err(|e| match endpoint {
-        Endpoint::Serial(_) => Error::Io(e),
+        Endpoint::Serial(path) => Error::Io(with_ports_here(path, e)),
         _ => Error::Io(io::Error::new(
             e.kind(),
             format!("cannot connect to {endpoint}: {e}"),
@@ -262,4 +262,19 @@ impl Connection {
         let (tried, advice) = tried(options, &self.endpoint, self.mode);
         error.tried(tried, advice)
     }
+}
+
+/// A serial port that cannot be opened because it is not there, told with the serial
+/// ports that are (`/dev/ttyUSB0, /dev/ttyS0`), or that there is none.
+fn with_ports_here(path: &str, error: io::Error) -> io::Error {
+    if std::path::Path::new(path).exists() {
+        return error;
+    }
+    let mut ports: Vec<String> = mbtool_core::transport::serial::ports_here();
+    ports.retain(|port| port != path);
+    let here = match ports.as_slice() {
+        [] => "no serial port is here".to_string(),
+        ports => format!("the serial ports here are {}", ports.join(", ")),
+    };
+    io::Error::new(error.kind(), format!("{error} ({here})"))
 }

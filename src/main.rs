@@ -144,6 +144,9 @@ fn missing(error: &clap::Error, subcommand: &str) -> String {
         subcommand
     };
     match names.split_last() {
+        Some((last, [])) if who == "dump" && last == "RANGE" => {
+            "dump needs RANGE, the addresses to save: 400001-400100 (or several, 400001-400100 000001-000032)".into()
+        }
         Some((last, [])) => format!("{who} needs {last}"),
         Some((last, rest)) => format!("{who} needs {} and {last}", rest.join(", ")),
         None => format!("{who} needs more arguments"),

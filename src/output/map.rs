@@ -72,7 +72,11 @@ impl super::PollRows for MapRows<'_> {
     }
 }
 
-fn raw_hex(raw: &[u16]) -> String {
+/// What a point read as: its registers in hex, or a coil's or input's 0 or 1.
+fn raw_text(point: &Point, raw: &[u16]) -> String {
+    if point.table.is_bits() {
+        return raw.iter().map(u16::to_string).collect::<Vec<_>>().join(" ");
+    }
     raw.iter()
         .map(|r| format!("{r:04X}"))
         .collect::<Vec<_>>()
@@ -163,7 +167,7 @@ impl MapWriter {
                         point.reference(),
                         csv_field(&value.value.to_string()),
                         csv_field(&point.unit),
-                        raw_hex(&value.raw)
+                        raw_text(point, &value.raw)
                     )?;
                 }
                 Ok(())
@@ -180,7 +184,7 @@ impl MapWriter {
                         point.name.clone(),
                         point.reference(),
                         shown,
-                        raw_hex(&value.raw),
+                        raw_text(point, &value.raw),
                     ]);
                 }
                 writeln!(out, "{table}")

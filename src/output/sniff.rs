@@ -373,17 +373,27 @@ impl SniffWriter {
                 out.write_all(b"\n")
             }
             Format::Table => {
+                let n = |count: u64, noun: &str| super::plural(count as usize, noun);
                 writeln!(
                     out,
-                    "summary: {} frames ({} requests, {} answers, {} exceptions), {} unanswered, {} CRC errors, {} noise bytes",
-                    counts.frames, counts.requests, counts.answers, counts.exceptions, counts.unanswered,
-                    counts.crc_errors, counts.noise_bytes
+                    "summary: {} ({}, {}, {}), {} unanswered, {}, {}",
+                    n(counts.frames, "frame"),
+                    n(counts.requests, "request"),
+                    n(counts.answers, "answer"),
+                    n(counts.exceptions, "exception"),
+                    counts.unanswered,
+                    n(counts.crc_errors, "CRC error"),
+                    n(counts.noise_bytes, "noise byte"),
                 )?;
                 for (slave, c) in &counts.slaves {
                     writeln!(
                         out,
-                        "  slave {slave}: {} requests, {} answers, {} exceptions, {} unanswered, {} CRC errors",
-                        c.requests, c.answers, c.exceptions, c.unanswered, c.crc_errors
+                        "  slave {slave}: {}, {}, {}, {} unanswered, {}",
+                        n(c.requests, "request"),
+                        n(c.answers, "answer"),
+                        n(c.exceptions, "exception"),
+                        c.unanswered,
+                        n(c.crc_errors, "CRC error"),
                     )?;
                 }
                 Ok(())

@@ -478,3 +478,31 @@ fn mbpoll_habits_get_mbtools_spelling() {
         assert_eq!(stderr.lines().count(), 1, "{stderr}");
     }
 }
+
+/// Small things a newcomer meets: a port that is not there names the ones that are, and
+/// `dump` without a range says what one looks like.
+#[test]
+fn a_missing_port_and_a_missing_range_say_what_is_there_and_what_to_give() {
+    let output = crate::support::mbtool()
+        .args(["--port", "/dev/ttyUSB-none", "read-holding", "17", "1"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.starts_with("mbtool: cannot open /dev/ttyUSB-none: No such file or directory (")
+            && (stderr.contains("the serial ports here are /dev/")
+                || stderr.contains("no serial port is here")),
+        "{stderr}"
+    );
+    let output = crate::support::mbtool()
+        .args(["--port", "sim", "dump", "17"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("dump needs RANGE, the addresses to save: 400001-400100"),
+        "{stderr}"
+    );
+}

@@ -499,7 +499,10 @@ fn an_exception_line_names_its_function_and_code() {
         "{line}"
     );
     assert!(line.contains("exception 02 illegal data address"), "{line}");
-    assert!(text.contains("1 exceptions"), "{text}");
+    assert!(
+        text.contains("(1 request, 1 answer, 1 exception)"),
+        "{text}"
+    );
 }
 
 #[test]

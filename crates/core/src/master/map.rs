@@ -88,7 +88,8 @@ pub fn groups(points: &[&Point], slave: u8, max: Option<u16>) -> Vec<Group> {
 pub struct PointValue {
     /// The index of the point in those read.
     pub point: usize,
-    /// The registers it takes (empty for coils, inputs and bits).
+    /// The registers it takes (for a bit of a register, that register), or for a coil or
+    /// discrete input its state as 0 or 1.
     pub raw: Vec<u16>,
     /// Its value, scaled.
     pub value: Value,
@@ -192,17 +193,22 @@ fn point_value(
             let register = raw.first().copied().unwrap_or_default();
             Value::Unsigned(u64::from(register >> bit & 1))
         }
-        (Kind::Bool, None) => {
-            Value::Unsigned(u64::from(bits.get(offset).copied().unwrap_or_default()))
-        }
+        (Kind::Bool, None) => Value::Unsigned(u64::from(coil(bits, offset))),
         (Kind::Number(value_type), _) => scaled(point, value_type.read(&raw, point.order)),
         (Kind::Text(_), _) => text(&raw, point.order),
     };
     PointValue {
         point: index,
-        raw: if point.bit.is_some() { Vec::new() } else { raw },
+        raw: match (point.kind, point.bit) {
+            (Kind::Bool, None) => vec![u16::from(coil(bits, offset))],
+            _ => raw,
+        },
         value,
     }
+}
+
+fn coil(bits: &[bool], offset: usize) -> bool {
+    bits.get(offset).copied().unwrap_or_default()
 }
 
 /// A raw value as the map shows it: raw x scale + offset.

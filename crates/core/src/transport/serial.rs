@@ -137,6 +137,17 @@ impl Transport for Serial {
     }
 }
 
+/// The serial ports of this machine, by their device names, as the system lists them.
+pub fn ports_here() -> Vec<String> {
+    let mut ports: Vec<String> = serialport::available_ports()
+        .unwrap_or_default()
+        .into_iter()
+        .map(|port| port.port_name)
+        .collect();
+    ports.sort();
+    ports
+}
+
 /// `--low-latency`: the FTDI latency timer of the USB serial adapter behind `path` to 1 ms,
 /// through sysfs, so that the gaps between frames can be seen.
 pub fn set_low_latency(path: &str) -> Result<(), String> {
