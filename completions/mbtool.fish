@@ -28,8 +28,8 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -s p -l port -d 'Where the s
 complete -c mbtool -n "__fish_mbtool_needs_command" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_needs_command" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_needs_command" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_needs_command" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -95,8 +95,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s p -l port -
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -121,8 +121,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s p -l port 
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -147,8 +147,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s p
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -173,8 +173,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s p -l port
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -214,8 +214,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -255,8 +255,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s p
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -296,8 +296,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s p -l p
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -338,8 +338,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s p -l port -d 'Whe
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -379,8 +379,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s p -l port -
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -401,8 +401,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s p -l port 
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -424,8 +424,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s p -l po
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -461,8 +461,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s p -l p
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -504,8 +504,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s p -l port -d 'Wh
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -542,8 +542,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s p -l port -d 'Wher
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -582,8 +582,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s p -l port -d 'Whe
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -604,8 +604,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s p -l port -d 'Wh
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -637,8 +637,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s p -l port -d 'Whe
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -658,8 +658,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s p -l port -d 'Whe
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -681,8 +681,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s p -l port -d 'Whe
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -702,8 +702,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s p -l port -d '
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -1126,8 +1126,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Wh
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -1155,8 +1155,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Wh
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s b -l baud -d 'Serial speed; scan sweeps a list (9600,19200,38400)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l parity -d 'Serial parity; scan sweeps a list (none,even,odd)' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r

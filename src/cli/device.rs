@@ -10,9 +10,12 @@ slave is there when it answers with a valid frame, an exception included; except
 0B (a gateway's 'no such device') counts as absent; bytes that are no valid answer are \
 reported as something that answered, maybe at other settings.
 
---baud and --parity lists sweep the serial settings, the most common first (19200 even, \
-9600 none, 9600 even, 19200 none, then the rest), and stop at the first settings where a \
-slave answers, unless --all. --listen 2s first listens at each setting without sending: \
+A plain scan tries one serial setting, that of --baud and --parity (19200 baud, even \
+parity by default). Given as lists (--baud 9600,19200 --parity none,even), they are swept, \
+the most common first (19200 even, 9600 none, 9600 even, 19200 none, then the rest), \
+stopping at the first settings where a slave answers, unless --all. A pseudo-terminal \
+carries any baud and parity, so there the setting that answered is said to be tried, not \
+found. --listen 2s first listens at each setting without sending: \
 slaves heard answering another master are reported, and that setting is not probed, so a \
 live bus gets no extra traffic.
 

@@ -37,7 +37,7 @@ pub struct ConnectionArgs {
     )]
     pub mode: Option<ModeArg>,
 
-    /// Serial speed; scan sweeps a list (9600,19200,38400)
+    /// Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one
     #[arg(
         short,
         long,
@@ -49,7 +49,7 @@ pub struct ConnectionArgs {
     )]
     pub baud: Vec<u32>,
 
-    /// Serial parity; scan sweeps a list (none,even,odd)
+    /// Serial parity; scan takes a list to sweep (none,even,odd), else tries this one
     #[arg(long, global = true, env = "MBTOOL_PARITY", hide_env_values = true, value_delimiter = ',', value_parser = choice::<Parity>(), default_value = Parity::Even.name())]
     pub parity: Vec<Parity>,
 

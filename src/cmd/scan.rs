@@ -14,7 +14,7 @@ use mbtool::output::{self, colour_wanted};
 use mbtool::settings::Settings;
 use mbtool_core::codec::Mode;
 use mbtool_core::master::scan::{scan, sweep, Probe, Progress, ScanOptions, ScanReport};
-use mbtool_core::transport::serial::LineSettings;
+use mbtool_core::transport::serial::{self, LineSettings};
 use mbtool_core::transport::Endpoint;
 
 /// A progress bar on stderr, drawn only on a terminal.
@@ -157,6 +157,12 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
         return Ok(super::shared::INTERRUPTED);
     }
     mbtool::note!("mbtool: {}", summary(&report, &place, started.elapsed()));
+    if matches!(&endpoint, Endpoint::Serial(path) if serial::is_pseudo_terminal(path)) {
+        mbtool::note!(
+            "mbtool: {} is a pseudo-terminal, which carries any baud and parity: the settings shown were tried, not found",
+            endpoint
+        );
+    }
     Ok(if report.hits.is_empty() { 3 } else { 0 })
 }
 

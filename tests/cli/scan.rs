@@ -50,6 +50,14 @@ fn scan_finds_every_slave_on_a_serial_line() {
         })
         .collect();
     assert_eq!(found, [(3, true), (17, true), (200, true)]);
+    // A pty carries any setting: what answered was tried, not found, and that is said.
+    assert!(
+        run.stderr.contains(
+            "is a pseudo-terminal, which carries any baud and parity: the settings shown were tried, not found"
+        ),
+        "{}",
+        run.stderr
+    );
     assert!(
         run.stderr
             .contains("3 slaves found: 3, 17, 200 at 19200 baud, even parity; 1 setting tried"),

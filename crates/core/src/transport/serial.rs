@@ -137,6 +137,17 @@ impl Transport for Serial {
     }
 }
 
+/// Whether `path` is a pseudo-terminal (`/dev/pts/N` on Linux, `/dev/ttysNNN` on macOS),
+/// which carries bytes at any baud rate and parity: settings are not told apart there.
+pub fn is_pseudo_terminal(path: &str) -> bool {
+    let real = std::fs::canonicalize(path).unwrap_or_else(|_| path.into());
+    let real = real.to_string_lossy();
+    real.starts_with("/dev/pts/")
+        || real
+            .strip_prefix("/dev/ttys")
+            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+}
+
 /// The serial ports of this machine, by their device names, as the system lists them.
 pub fn ports_here() -> Vec<String> {
     let mut ports: Vec<String> = serialport::available_ports()
