@@ -7,6 +7,8 @@ use mbtool_core::master::plan::PlanError;
 use mbtool_core::master::run::RunError;
 use mbtool_core::master::MasterError;
 use mbtool_core::model::address::AddressError;
+use mbtool_core::model::map::MapError;
+use mbtool_core::slave::datafile::DataFileError;
 use mbtool_core::transport::endpoint::EndpointError;
 
 #[derive(Debug, Error)]
@@ -14,6 +16,10 @@ pub enum Error {
     /// A bad command line or bad input: nothing was sent.
     #[error("{0}")]
     Usage(String),
+    /// Bad input with several faults (the lines of a map or data file), each told on a
+    /// line of its own: nothing was sent.
+    #[error("{}", .0.join("\n"))]
+    Faults(Vec<String>),
     #[error(transparent)]
     Address(#[from] AddressError),
     #[error(transparent)]
@@ -39,6 +45,28 @@ pub enum Error {
     },
 }
 
+/// A map that cannot be read is an I/O failure; one with faults in it is bad input.
+impl From<MapError> for Error {
+    fn from(error: MapError) -> Self {
+        match error {
+            MapError::Unreadable { .. } => Error::Io(std::io::Error::other(error.to_string())),
+            MapError::At { .. } => Error::usage(error.to_string()),
+            MapError::Several { .. } => Error::faults(&error),
+        }
+    }
+}
+
+/// A data file that cannot be read is an I/O failure; one with faults in it is bad input.
+impl From<DataFileError> for Error {
+    fn from(error: DataFileError) -> Self {
+        match error {
+            DataFileError::Read { .. } => Error::Io(std::io::Error::other(error.to_string())),
+            DataFileError::Line { .. } => Error::usage(error.to_string()),
+            DataFileError::Lines { .. } => Error::faults(&error),
+        }
+    }
+}
+
 /// A request that got no usable answer: the master's error, or the slave's exception.
 impl From<RunError> for Error {
     fn from(error: RunError) -> Self {
@@ -62,6 +90,11 @@ impl Error {
         Error::Usage(message.into())
     }
 
+    /// The faults an error tells one a line.
+    fn faults(error: &dyn std::fmt::Display) -> Self {
+        Error::Faults(error.to_string().lines().map(String::from).collect())
+    }
+
     /// A timeout told with what was tried (`on /dev/ttyUSB0 (rtu, 19200 baud, ...)`) and
     /// what usually causes it; other errors as they are.
     pub fn tried(self, tried: String, advice: &'static str) -> Self {
@@ -78,7 +111,11 @@ impl Error {
     /// The process exit status for this error (CLI.md, "Exit status").
     pub fn exit_code(&self) -> u8 {
         match self {
-            Error::Usage(_) | Error::Address(_) | Error::Plan(_) | Error::Endpoint(_) => 2,
+            Error::Usage(_)
+            | Error::Faults(_)
+            | Error::Address(_)
+            | Error::Plan(_)
+            | Error::Endpoint(_) => 2,
             Error::Io(_) => 1,
             Error::Master(MasterError::Timeout { .. }) | Error::NoAnswer { .. } => 3,
             Error::Master(MasterError::BadFrame { .. }) => 4,

@@ -232,10 +232,17 @@ fn fail(error: &anyhow::Error) -> ExitCode {
     if broken_pipe {
         return ExitCode::SUCCESS;
     }
-    let code = error
+    let ours = error
         .chain()
-        .find_map(|cause| cause.downcast_ref::<mbtool::error::Error>())
-        .map_or(1, mbtool::error::Error::exit_code);
+        .find_map(|cause| cause.downcast_ref::<mbtool::error::Error>());
+    // The faults of a file, each on a line of its own.
+    if let Some(mbtool::error::Error::Faults(faults)) = ours {
+        for fault in faults {
+            mbtool::note!("mbtool: {fault}");
+        }
+        return ExitCode::from(2);
+    }
+    let code = ours.map_or(1, mbtool::error::Error::exit_code);
     let message = error
         .chain()
         .map(ToString::to_string)

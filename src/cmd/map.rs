@@ -13,7 +13,7 @@ use mbtool_core::codec::{Mode, Request};
 use mbtool_core::master::map::{groups, read_points, write_request, written_value, Group};
 use mbtool_core::master::plan::{parse_slave, Plan};
 use mbtool_core::model::address::Access;
-use mbtool_core::model::map::{MapError, Point, RegisterMap};
+use mbtool_core::model::map::{Point, RegisterMap};
 use mbtool_core::model::map_file::load;
 
 /// A map read or write, checked whole before anything is sent.
@@ -31,10 +31,7 @@ pub fn plan(
     tcp: bool,
     access: Access,
 ) -> Result<MapPlan, Error> {
-    let map = load(path).map_err(|e| match e {
-        MapError::Unreadable { .. } => Error::Io(std::io::Error::other(e.to_string())),
-        MapError::At { .. } => Error::usage(e.to_string()),
-    })?;
+    let map = load(path)?;
     // A read goes to one slave; only a write may broadcast.
     let slave = parse_slave(slave, access == Access::WriteOne, tcp)?;
     let points = pick(&map, names, path)?;

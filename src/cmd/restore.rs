@@ -17,10 +17,7 @@ use mbtool_core::master::plan::parse_slave;
 use mbtool_core::slave::datafile;
 
 pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
-    let model = datafile::load(&args.file).map_err(|e| match e {
-        datafile::DataFileError::Read { .. } => Error::Io(std::io::Error::other(e.to_string())),
-        datafile::DataFileError::Line { .. } => Error::usage(e.to_string()),
-    })?;
+    let model = datafile::load(&args.file).map_err(Error::from)?;
     let file = args.file.display();
     let entries = datafile::entries(&model);
     for entry in entries.iter().filter(|e| !e.table.is_writable()) {

@@ -37,10 +37,7 @@ fn endpoint(settings: &Settings) -> Result<Endpoint, Error> {
 fn data_model(args: &ServeArgs) -> Result<DataModel> {
     let mut model = match &args.data {
         // A file that cannot be read is an I/O failure; a bad line in it is bad input.
-        Some(path) => datafile::load(path).map_err(|e| match e {
-            datafile::DataFileError::Read { .. } => Error::Io(std::io::Error::other(e.to_string())),
-            datafile::DataFileError::Line { .. } => Error::usage(e.to_string()),
-        })?,
+        Some(path) => datafile::load(path).map_err(Error::from)?,
         None => DataModel::manual_examples(),
     };
     for range in &args.read_only {

@@ -488,3 +488,49 @@ fn a_write_says_what_the_point_holds_of_the_value_asked() {
     assert_eq!(code, 0, "{stderr}");
     assert_eq!(said, "wrote pressure_max = 2.6 bar (400020) (asked 2.56)\n");
 }
+
+/// A map (and a data file) with several mistakes tells them all at once, one line each
+/// with its file:line, in the order of the file, and at most twenty.
+#[test]
+fn every_fault_of_a_map_or_data_file_is_told_at_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let many: String = (0..30).map(|i| format!("p{i},4000{i:02}x\n")).collect();
+    let paths = files(
+        &dir,
+        &[
+            (
+                "three.csv",
+                "name,ref,type,scale\na,400001,f32,\nb,400010,,0\nc,000001,u32,\na,400020,,\n",
+            ),
+            ("many.csv", &format!("name,ref\n{many}")),
+            (
+                "three.yaml",
+                "modbus:\n  - sensors:\n      - {name: d, address: 0, scale: .nan}\n      - {name: e, address: 1, data_type: int32, count: 1}\n      - {name: f, address: 9, swap: sideways}\n",
+            ),
+            ("device.txt", "400001-400003 = 1 2\n400010 = x\n400020 = 5\nfoo\n"),
+        ],
+    );
+    let nowhere = vec!["--port".to_string(), "127.0.0.1:9".to_string()];
+    let faults = |args: &[&str]| {
+        let (code, _, stderr) = run(&nowhere, args);
+        assert_eq!(code, 2, "{args:?}: {stderr}");
+        assert!(
+            stderr.lines().all(|l| l.starts_with("mbtool: ")),
+            "{stderr}"
+        );
+        stderr
+            .lines()
+            .map(|line| line.split(':').nth(2).unwrap_or_default().to_string())
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(faults(&["read", "17", "--map", &paths[0]]), ["3", "4", "5"]);
+    let many = faults(&["read", "17", "--map", &paths[1]]);
+    assert_eq!(many.len(), 21, "{many:?}");
+    let (_, _, stderr) = run(&nowhere, &["read", "17", "--map", &paths[1]]);
+    assert!(stderr.ends_with("mbtool: ... and 10 more\n"), "{stderr}");
+    assert_eq!(faults(&["read", "17", "--map", &paths[2]]), ["3", "4", "5"]);
+    assert_eq!(
+        faults(&["restore", "17", &paths[3], "--dry-run"]),
+        ["1", "2", "4"]
+    );
+}

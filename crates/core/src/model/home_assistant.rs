@@ -5,7 +5,7 @@ use serde::Deserialize;
 use serde_saphyr::Spanned;
 
 use super::address::Table;
-use super::map::{at, check, check_name, checked, Kind, MapError, Point, RegisterMap};
+use super::map::{at, check, check_name, checked, Faults, Kind, MapError, Point, RegisterMap};
 use super::values::{ByteOrder, ValueType};
 
 /// The configuration with its `modbus:` key.
@@ -205,6 +205,7 @@ pub fn parse(file: &str, text: &str) -> Result<RegisterMap, MapError> {
         vec![serde_saphyr::from_str(text).map_err(unreadable)?]
     };
     let mut map = RegisterMap::default();
+    let mut faults = Faults::default();
     for hub in hubs {
         let lists = [
             (Platform::Sensor, hub.sensors),
@@ -215,15 +216,19 @@ pub fn parse(file: &str, text: &str) -> Result<RegisterMap, MapError> {
         for (platform, entries) in lists {
             for entry in entries {
                 let line = usize::try_from(entry.name.referenced.line()).unwrap_or(1);
-                check_name(&entry.name.value).map_err(|error| at(file, line, error))?;
+                if let Err(error) = check_name(&entry.name.value) {
+                    faults.add(at(file, line, error));
+                    continue;
+                }
                 let name = entry.name.value.clone();
-                let point = point(platform, entry, line)
-                    .map_err(|error| at(file, line, format!("{name}: {error}")))?;
-                map.points.push(point);
+                match point(platform, entry, line) {
+                    Ok(point) => map.points.push(point),
+                    Err(error) => faults.add(at(file, line, format!("{name}: {error}"))),
+                }
             }
         }
     }
-    check(file, map)
+    check(file, map, faults)
 }
 
 #[cfg(test)]

@@ -122,6 +122,63 @@ pub enum MapError {
         /// What is wrong.
         error: String,
     },
+    /// What is wrong on several lines: each, in the order of the file, at most
+    /// [`MOST_TOLD`], and how many more there are. Shown one a line.
+    #[error("{}", several(.errors, *.more))]
+    Several {
+        /// The first errors.
+        errors: Vec<MapError>,
+        /// How many more there are.
+        more: usize,
+    },
+}
+
+/// How many faults of one file are told at once.
+pub const MOST_TOLD: usize = 20;
+
+fn several(errors: &[MapError], more: usize) -> String {
+    let mut text = errors
+        .iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join("\n");
+    if more > 0 {
+        text.push_str(&format!("\n... and {more} more"));
+    }
+    text
+}
+
+/// The faults of a file, told at once: collected in order, at most [`MOST_TOLD`] kept.
+#[derive(Default)]
+pub(super) struct Faults {
+    errors: Vec<MapError>,
+    more: usize,
+}
+
+impl Faults {
+    pub(super) fn add(&mut self, error: MapError) {
+        if self.errors.len() < MOST_TOLD {
+            self.errors.push(error);
+        } else {
+            self.more += 1;
+        }
+    }
+
+    /// `value`, or every fault found, in the order of the file.
+    pub(super) fn or<T>(mut self, value: T) -> Result<T, MapError> {
+        self.errors.sort_by_key(|error| match error {
+            MapError::At { line, .. } => *line,
+            _ => 0,
+        });
+        match self.errors.len() {
+            0 => Ok(value),
+            1 if self.more == 0 => Err(self.errors.remove(0)),
+            _ => Err(MapError::Several {
+                errors: self.errors,
+                more: self.more,
+            }),
+        }
+    }
 }
 
 pub(super) fn at(file: &str, line: usize, error: impl fmt::Display) -> MapError {
@@ -418,15 +475,20 @@ pub fn parse_csv(file: &str, text: &str) -> Result<RegisterMap, MapError> {
         }
     }
     let mut map = RegisterMap::default();
+    let mut faults = Faults::default();
     for (number, line) in lines {
-        let mut fields = csv_fields(line).map_err(|e| at(file, number, e))?;
-        while fields.len() > columns.len() && fields.last().is_some_and(String::is_empty) {
-            fields.pop();
+        let point = csv_fields(line).and_then(|mut fields| {
+            while fields.len() > columns.len() && fields.last().is_some_and(String::is_empty) {
+                fields.pop();
+            }
+            csv_point(&columns, &fields, number)
+        });
+        match point {
+            Ok(point) => map.points.push(point),
+            Err(error) => faults.add(at(file, number, error)),
         }
-        let point = csv_point(&columns, &fields, number).map_err(|e| at(file, number, e))?;
-        map.points.push(point);
     }
-    check(file, map)
+    check(file, map, faults)
 }
 
 /// The points of a range as `read` would show them, each named by its reference: `count`
@@ -473,15 +535,17 @@ pub fn range_points(
 }
 
 /// Checks a map as a whole: names unique, no two points on the same addresses (bits of
-/// one register apart).
-pub fn check(file: &str, map: RegisterMap) -> Result<RegisterMap, MapError> {
-    if map.points.is_empty() {
+/// one register apart). `faults`: those its lines had already; all are told at once, in
+/// the order of the file.
+pub(super) fn check(file: &str, map: RegisterMap, faults: Faults) -> Result<RegisterMap, MapError> {
+    let mut faults = faults;
+    if map.points.is_empty() && faults.errors.is_empty() {
         return Err(at(file, 1, "the map names no point"));
     }
     let mut names: HashMap<&str, usize> = HashMap::new();
     for point in &map.points {
-        if let Some(first) = names.insert(&point.name, point.line) {
-            return Err(at(
+        if let Some(first) = names.get(point.name.as_str()) {
+            faults.add(at(
                 file,
                 point.line,
                 format!(
@@ -489,6 +553,8 @@ pub fn check(file: &str, map: RegisterMap) -> Result<RegisterMap, MapError> {
                     point.name
                 ),
             ));
+        } else {
+            names.insert(&point.name, point.line);
         }
     }
     let mut by_place: Vec<&Point> = map.points.iter().collect();
@@ -502,7 +568,7 @@ pub fn check(file: &str, map: RegisterMap) -> Result<RegisterMap, MapError> {
         let bit_beside = (a.bit.is_some() || b.bit.is_some()) && a.bit != b.bit;
         if overlap && !bit_beside {
             let (first, second) = if a.line < b.line { (a, b) } else { (b, a) };
-            return Err(at(
+            faults.add(at(
                 file,
                 second.line,
                 format!(
@@ -516,7 +582,7 @@ pub fn check(file: &str, map: RegisterMap) -> Result<RegisterMap, MapError> {
             ));
         }
     }
-    Ok(map)
+    faults.or(map)
 }
 
 #[cfg(test)]

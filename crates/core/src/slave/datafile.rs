@@ -49,6 +49,30 @@ pub enum DataFileError {
         /// What is wrong with it.
         error: EntryError,
     },
+    /// Several entries are wrong: each, in the order of the file, at most
+    /// [`MOST_TOLD`], and how many more there are. Shown one a line.
+    #[error("{}", several(.errors, *.more))]
+    Lines {
+        /// The first errors.
+        errors: Vec<DataFileError>,
+        /// How many more there are.
+        more: usize,
+    },
+}
+
+/// How many faults of one file are told at once.
+pub const MOST_TOLD: usize = 20;
+
+fn several(errors: &[DataFileError], more: usize) -> String {
+    let mut text = errors
+        .iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join("\n");
+    if more > 0 {
+        text.push_str(&format!("\n... and {more} more"));
+    }
+    text
 }
 
 /// What is wrong with one entry of a data file.
@@ -259,6 +283,8 @@ pub fn parse(name: &str, text: &str) -> Result<DataModel, DataFileError> {
         model.declare(table, 0, 0);
     }
     let mut claims = Claims::default();
+    let mut errors = Vec::new();
+    let mut more = 0;
     for (number, line) in text.lines().enumerate() {
         let content = match line.find('#') {
             // A '#' inside a quoted text is part of it.
@@ -268,15 +294,23 @@ pub fn parse(name: &str, text: &str) -> Result<DataModel, DataFileError> {
         if content.trim().is_empty() {
             continue;
         }
-        entry(&mut model, &mut claims, content, number + 1).map_err(|error| {
-            DataFileError::Line {
-                path: name.to_string(),
-                line: number + 1,
-                error,
+        if let Err(error) = entry(&mut model, &mut claims, content, number + 1) {
+            if errors.len() < MOST_TOLD {
+                errors.push(DataFileError::Line {
+                    path: name.to_string(),
+                    line: number + 1,
+                    error,
+                });
+            } else {
+                more += 1;
             }
-        })?;
+        }
     }
-    Ok(model)
+    match errors.len() {
+        0 => Ok(model),
+        1 => Err(errors.remove(0)),
+        _ => Err(DataFileError::Lines { errors, more }),
+    }
 }
 
 /// A run of addresses of one table with their values, as one or more lines of a data file.
