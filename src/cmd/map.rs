@@ -10,7 +10,7 @@ use mbtool::error::Error;
 use mbtool::output::{self, map::MapRows, map::MapWriter};
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Mode, Request};
-use mbtool_core::master::map::{groups, read_points, write_request, written_value, Group};
+use mbtool_core::master::map::{groups, read_points, write_request, written_value, Group, Refused};
 use mbtool_core::master::plan::{parse_slave, Plan};
 use mbtool_core::model::address::Access;
 use mbtool_core::model::map::{Point, RegisterMap};
@@ -144,6 +144,7 @@ pub fn read(settings: &Settings, plan: &MapPlan, connection: &mut Connection) ->
         &points,
         plan.slave,
         settings.data.max_per_request,
+        Refused::Error,
     )
     .map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
     if read.fell_back {
@@ -200,7 +201,15 @@ pub fn poll(
         settings,
         target,
         interval,
-        |master| read_points(master, &points, plan.slave, settings.data.max_per_request),
+        |master| {
+            read_points(
+                master,
+                &points,
+                plan.slave,
+                settings.data.max_per_request,
+                Refused::Error,
+            )
+        },
         writer,
     )
 }

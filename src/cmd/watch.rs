@@ -13,7 +13,7 @@ use mbtool::connection::{self, Target};
 use mbtool::error::Error;
 use mbtool::output::watch::WatchState;
 use mbtool::settings::Settings;
-use mbtool_core::master::map::read_points;
+use mbtool_core::master::map::{read_points, Refused};
 use mbtool_core::master::plan::{plan, Operation};
 use mbtool_core::master::poll::{poll, PollOptions, Tick};
 use mbtool_core::master::run::RunError;
@@ -225,8 +225,14 @@ fn poll_thread(
     };
     let read = |master: &mut Master| {
         let began = Instant::now();
-        read_points(master, &refs, slave, settings.data.max_per_request)
-            .map(|read| (read, began.elapsed()))
+        read_points(
+            master,
+            &refs,
+            slave,
+            settings.data.max_per_request,
+            Refused::Around,
+        )
+        .map(|read| (read, began.elapsed()))
     };
     let wait = |time: Duration| {
         let until = Instant::now() + time;
@@ -250,10 +256,16 @@ fn poll_thread(
         wait,
         |tick| {
             let update = match tick {
+                // An address the device does not have is said so in its row.
                 Tick::Read((read, took)) => Update::Values(
                     read.values
                         .into_iter()
                         .map(|v| (v.point, v.value))
+                        .chain(
+                            read.missing
+                                .into_iter()
+                                .map(|index| (index, Value::Text("no such address".into()))),
+                        )
                         .collect(),
                     took,
                 ),

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 use ratatui::layout::{Constraint, Layout};
 use ratatui::style::{Modifier, Style};
 use ratatui::text::Line;
-use ratatui::widgets::{Block, Cell, Paragraph, Row, Table};
+use ratatui::widgets::{Block, Cell, Paragraph, Row, Table, Wrap};
 use ratatui::Frame;
 
 use mbtool_core::master::run::PollStats;
@@ -115,8 +115,31 @@ impl WatchState {
     }
 
     pub fn render(&self, frame: &mut Frame) {
+        let state = match (&self.last_error, self.paused) {
+            (_, true) => "PAUSED (p resumes)".to_string(),
+            (Some(error), false) => error.clone(),
+            (None, false) => String::new(),
+        };
+        // The counts, the response times and the keys each on a line of their own.
+        let summary = self.stats.summary();
+        let status_lines: Vec<String> = summary
+            .split("; ")
+            .map(String::from)
+            .chain([format!("q quit  p pause  r reset   {state}")])
+            .collect();
+        // The status wraps rather than being cut off: as many rows as it takes inside the
+        // border, up to half the screen.
+        let inner = usize::from(frame.area().width.saturating_sub(2)).max(1);
+        let rows: usize = status_lines
+            .iter()
+            .map(|line| line.chars().count().div_ceil(inner).max(1))
+            .sum();
+        let height = u16::try_from(rows + 2)
+            .unwrap_or(u16::MAX)
+            .min(frame.area().height / 2)
+            .max(4);
         let [table_area, status_area] =
-            Layout::vertical([Constraint::Min(3), Constraint::Length(4)]).areas(frame.area());
+            Layout::vertical([Constraint::Min(3), Constraint::Length(height)]).areas(frame.area());
         let now = Instant::now();
         let rows = self.points.iter().map(|view| {
             let shown = |x: Option<f64>| x.map(|v| Value::Float(v).to_string()).unwrap_or_default();
@@ -153,7 +176,7 @@ impl WatchState {
         let widths = [
             Constraint::Min(8),
             Constraint::Length(10),
-            Constraint::Min(12),
+            Constraint::Min(15),
             Constraint::Min(8),
             Constraint::Min(8),
             Constraint::Length(if wide { TREND as u16 } else { 0 }),
@@ -172,16 +195,9 @@ impl WatchState {
             .header(header)
             .block(Block::bordered().title(title));
         frame.render_widget(table, table_area);
-        let state = match (&self.last_error, self.paused) {
-            (_, true) => "PAUSED (p resumes)".to_string(),
-            (Some(error), false) => error.clone(),
-            (None, false) => String::new(),
-        };
-        let status = Paragraph::new(vec![
-            Line::from(self.stats.summary()),
-            Line::from(format!("q quit  p pause  r reset   {state}")),
-        ])
-        .block(Block::bordered());
+        let status = Paragraph::new(status_lines.into_iter().map(Line::from).collect::<Vec<_>>())
+            .wrap(Wrap { trim: true })
+            .block(Block::bordered());
         frame.render_widget(status, status_area);
     }
 }

@@ -151,7 +151,11 @@ fn a_small_terminal_keeps_names_and_values_and_says_what_it_cannot_show() {
         ["400001", "400001", "17254"],
         "{screen:#?}"
     );
-    assert!(screen[0].contains("showing 3 of 10"), "{screen:#?}");
+    // The rows that fit are shown, and the title says how many of the ten.
+    assert!(
+        screen[0].contains("(showing ") && screen[0].contains(" of 10"),
+        "{screen:#?}"
+    );
     terminal.keys(&["q"]);
     terminal.wait_for(Duration::from_secs(20), |_| terminal.done());
     assert_eq!(terminal.status(), Some(0));
@@ -181,4 +185,39 @@ fn a_terminal_that_goes_away_ends_watch() {
         std::thread::sleep(Duration::from_millis(50));
     }
     assert!(!running(), "watch went on without its terminal");
+}
+
+/// A range with a hole is read around it, as dump and maps read: every address that exists
+/// shows its value, the one that does not says so, and the status line shows whole.
+#[test]
+fn watch_reads_around_a_hole_and_shows_the_whole_status() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("holey.txt");
+    std::fs::write(&data, "400003 = 1\n400004 = 2\n400006 = 4\n400007 = 5\n").unwrap();
+    let (_device, port, _) = serve_tcp(&["--data", data.to_str().unwrap()]);
+    let args = format!("{} watch 17 400003 5 --poll 100ms", port.join(" "));
+    let Some(terminal) = Terminal::run(&args, 100, 30) else {
+        return;
+    };
+    let screen = terminal.wait_for(Duration::from_secs(20), |s| {
+        row(s, "400007").get(2).is_some_and(|v| v == "5") && s.iter().any(|l| l.contains("max"))
+    });
+    for (reference, value) in [
+        ("400003", "1"),
+        ("400004", "2"),
+        ("400005", "no such address"),
+        ("400006", "4"),
+        ("400007", "5"),
+    ] {
+        assert_eq!(
+            row(&screen, reference).get(2).map(String::as_str),
+            Some(value),
+            "{screen:#?}"
+        );
+    }
+    // The statistics are not cut off: the response times end with their maximum.
+    assert!(screen.iter().any(|l| l.contains("/ max ")), "{screen:#?}");
+    terminal.keys(&["q"]);
+    terminal.wait_for(Duration::from_secs(10), |_| terminal.done());
+    assert_eq!(terminal.status(), Some(0));
 }

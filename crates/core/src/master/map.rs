@@ -102,14 +102,29 @@ pub struct MapRead {
     pub values: Vec<PointValue>,
     /// A request that spanned holes was refused, and its points read again run by run.
     pub fell_back: bool,
+    /// The points the device says it does not have (exception 02), when read around
+    /// holes: indexes into the points read.
+    pub missing: Vec<usize>,
 }
 
-/// Reads `points` in the requests [`groups`] gives.
+/// What a run of points the device refuses with exception 02 is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Refused {
+    /// An error: a map says its points exist.
+    Error,
+    /// Holes to read around, as in a range asked for by address: the run is split in
+    /// halves down to single points, and the points refused alone are `missing`.
+    Around,
+}
+
+/// Reads `points` in the requests [`groups`] gives; `refused` says what a run the device
+/// refuses is.
 pub fn read_points(
     master: &mut Master,
     points: &[&Point],
     slave: u8,
     max: Option<u16>,
+    refused: Refused,
 ) -> Result<MapRead, RunError> {
     let mut read = MapRead::default();
     let mut values: Vec<Option<PointValue>> = vec![None; points.len()];
@@ -153,6 +168,25 @@ pub fn read_points(
                         *index = group.points[*index];
                     }
                     pending.push_front(run);
+                }
+            }
+            Err(RunError::Exception { code, .. })
+                if refused == Refused::Around && code == ExceptionCode::ILLEGAL_DATA_ADDRESS =>
+            {
+                if let [index] = group.points[..] {
+                    read.missing.push(index);
+                    continue;
+                }
+                // Halves, the first read first, until the holes are single points.
+                let (first, second) = group.points.split_at(group.points.len() / 2);
+                for half in [second, first] {
+                    let members: Vec<&Point> = half.iter().map(|i| points[*i]).collect();
+                    for mut run in groups(&members, slave, None).into_iter().rev() {
+                        for index in &mut run.points {
+                            *index = half[*index];
+                        }
+                        pending.push_front(run);
+                    }
                 }
             }
             Err(error) => return Err(error),
