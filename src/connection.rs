@@ -6,6 +6,7 @@ use crate::error::{Error, Result};
 use crate::settings::Connection as Options;
 use mbtool_core::codec::Mode;
 use mbtool_core::master::{Master, MasterOptions};
+use mbtool_core::model::map::MapConnection;
 use mbtool_core::transport::serial::{LineSettings, Parity, Serial};
 use mbtool_core::transport::tcp::Tcp;
 use mbtool_core::transport::{Endpoint, Transport};
@@ -277,4 +278,36 @@ fn with_ports_here(path: &str, error: io::Error) -> io::Error {
         ports => format!("the serial ports here are {}", ports.join(", ")),
     };
     io::Error::new(error.kind(), format!("{error} ({here})"))
+}
+
+/// The connection settings with what a map's file says of its device (a Home Assistant
+/// hub's host and port, or serial device and line) where the command line says nothing.
+pub fn with_map_connection(options: &Options, from_map: Option<&MapConnection>) -> Options {
+    let mut options = options.clone();
+    let Some(from_map) = from_map.filter(|_| options.port.is_none()) else {
+        return options;
+    };
+    options.port = Some(from_map.port.clone());
+    if options.mode.is_none() {
+        options.mode = match from_map.mode.as_deref() {
+            Some("ascii") => Some(Mode::Ascii),
+            Some("rtu") => Some(Mode::Rtu),
+            _ => None,
+        };
+    }
+    if let (false, Some(baud)) = (options.baud_given, from_map.baud) {
+        options.bauds = vec![baud];
+    }
+    let parity = match from_map.parity.map(|p| p.to_ascii_uppercase()) {
+        Some('E') => Some(Parity::Even),
+        Some('O') => Some(Parity::Odd),
+        Some('N') => Some(Parity::None),
+        _ => None,
+    };
+    if let (false, Some(parity)) = (options.parity_given, parity) {
+        options.parities = vec![parity];
+    }
+    options.data_bits = options.data_bits.or(from_map.data_bits);
+    options.stop_bits = options.stop_bits.or(from_map.stop_bits);
+    options
 }

@@ -34,8 +34,12 @@ pub struct Connection {
     pub mode: Option<Mode>,
     /// The serial speeds given: one, or a list to sweep (scan only).
     pub bauds: Vec<u32>,
+    /// Whether `--baud` (or its variable) gave them, rather than the default.
+    pub baud_given: bool,
     /// The parities given, as `bauds`.
     pub parities: Vec<Parity>,
+    /// Whether `--parity` (or its variable) gave them.
+    pub parity_given: bool,
     pub data_bits: Option<u8>,
     pub stop_bits: Option<u8>,
     /// The response timeout: as given, else the command's default.
@@ -102,6 +106,16 @@ pub fn resolve(
         return Err(message);
     }
     let c = &cli.connection;
+    let given = |id: &str| {
+        let mut leaf = matches;
+        while let Some((_, sub)) = leaf.subcommand() {
+            leaf = sub;
+        }
+        !matches!(
+            leaf.value_source(id),
+            None | Some(clap::parser::ValueSource::DefaultValue)
+        )
+    };
     // scan asks many ids that are not there: its timeout is short.
     let default_timeout = match cli.command {
         Command::Scan(_) => Duration::from_millis(100),
@@ -117,7 +131,9 @@ pub fn resolve(
             port: c.port.clone(),
             mode: c.mode.map(Mode::from),
             bauds: c.baud.clone(),
+            baud_given: given("baud"),
             parities: c.parity.clone(),
+            parity_given: given("parity"),
             data_bits: c.data_bits,
             stop_bits: c.stop_bits,
             timeout: c.timeout.unwrap_or(default_timeout),

@@ -13,13 +13,15 @@ use mbtool_core::codec::{Mode, Request};
 use mbtool_core::master::map::{groups, read_points, write_request, written_value, Group, Refused};
 use mbtool_core::master::plan::{parse_slave, Plan};
 use mbtool_core::model::address::Access;
-use mbtool_core::model::map::{Point, RegisterMap};
+use mbtool_core::model::map::{MapConnection, Point, RegisterMap};
 use mbtool_core::model::map_file::load;
 
 /// A map read or write, checked whole before anything is sent.
 pub struct MapPlan {
     pub slave: u8,
     pub points: Vec<Point>,
+    /// Where the device is, as the map's file says.
+    pub connection: Option<MapConnection>,
 }
 
 /// Loads the map and picks the points named (every point when none is).
@@ -45,7 +47,11 @@ pub fn plan(
             )));
         }
     }
-    Ok(MapPlan { slave, points })
+    Ok(MapPlan {
+        slave,
+        points,
+        connection: map.connection,
+    })
 }
 
 fn pick(map: &RegisterMap, names: &[&str], path: &std::path::Path) -> Result<Vec<Point>, Error> {
@@ -217,7 +223,7 @@ pub fn poll(
 /// A read or write by register map, checked whole; `None` for a command without `--map`.
 pub enum ByMap {
     Read(MapPlan),
-    Write(Vec<MapWrite>),
+    Write(Vec<MapWrite>, Option<MapConnection>),
 }
 
 /// The map work of `read --map` or `write --map`, with nothing opened yet.
@@ -244,7 +250,8 @@ pub fn by_map(settings: &Settings, request: &RequestCommand) -> Result<Option<By
             .into()),
             Some(path) => {
                 let plan = plan(settings, path, &args.slave, &[], tcp(), Access::WriteOne)?;
-                Ok(Some(ByMap::Write(plan.writes(&args.assignments(), path)?)))
+                let writes = plan.writes(&args.assignments(), path)?;
+                Ok(Some(ByMap::Write(writes, plan.connection)))
             }
             None => Ok(None),
         },
@@ -254,6 +261,15 @@ pub fn by_map(settings: &Settings, request: &RequestCommand) -> Result<Option<By
 
 impl ByMap {
     pub fn run(&self, settings: &Settings) -> Result<u8> {
+        // The device is where the map's file says, unless the command line says otherwise.
+        let from_file = match self {
+            ByMap::Read(plan) => plan.connection.as_ref(),
+            ByMap::Write(_, connection) => connection.as_ref(),
+        };
+        let settings = &Settings {
+            connection: connection::with_map_connection(&settings.connection, from_file),
+            ..settings.clone()
+        };
         if let (ByMap::Read(plan), Some(interval)) = (self, settings.poll.interval) {
             return poll(
                 settings,
@@ -270,7 +286,7 @@ impl ByMap {
         }
         match self {
             ByMap::Read(plan) => read(settings, plan, &mut connection),
-            ByMap::Write(writes) => write(settings, writes, &mut connection),
+            ByMap::Write(writes, _) => write(settings, writes, &mut connection),
         }
     }
 
@@ -282,7 +298,7 @@ impl ByMap {
                 .iter()
                 .map(|group| (group.slave, group.request()))
                 .collect(),
-            ByMap::Write(writes) => writes
+            ByMap::Write(writes, _) => writes
                 .iter()
                 .map(|write| (write.slave, write.request.clone()))
                 .collect(),

@@ -2,7 +2,7 @@
 //! as the manuals' driver groups them (counted on the wire), the same map as CSV and as
 //! Home Assistant YAML, and every malformed map refused before anything is sent.
 
-use crate::support::{mbtool, serve_tcp};
+use crate::support::{mbtool, serve_pty, serve_tcp, PtyPair};
 
 /// One point of each kind, in a device's data file and in a map of it.
 const DEVICE: &str = "\
@@ -533,4 +533,60 @@ fn every_fault_of_a_map_or_data_file_is_told_at_once() {
         faults(&["restore", "17", &paths[3], "--dry-run"]),
         ["1", "2", "4"]
     );
+}
+
+/// A Home Assistant file's hub says where the device is: without --port, a read or write by
+/// its map goes there (TCP host and port, or a serial device and its line); what the
+/// command line gives wins.
+#[test]
+fn a_home_assistant_hub_says_where_the_device_is() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = files(
+        &dir,
+        &[("device.txt", "400001 = 230\n400002 = 7\n400003 = 0\n")],
+    )
+    .remove(0);
+    let (_device, _, tcp_port) = serve_tcp(&["--data", &data]);
+    let yaml = format!(
+        "modbus:\n  - name: pump station\n    type: tcp\n    host: 127.0.0.1\n    port: {tcp_port}\n    sensors:\n      - {{name: voltage, address: 0, slave: 17}}\n      - {{name: flow, address: 1, slave: 17}}\n    switches:\n      - {{name: valve, address: 2, write_type: holding, slave: 17}}\n"
+    );
+    let path = files(&dir, &[("ha.yaml", &yaml)]).remove(0);
+    let (code, values, stderr) = run(&[], &["read", "17", "--map", &path, "-o", "values"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(values, "voltage=230\nflow=7\nvalve=0\n");
+    let (code, _, stderr) = run(&[], &["write", "17", "--map", &path, "valve=1"]);
+    assert_eq!(code, 0, "{stderr}");
+    let (_, values, _) = run(
+        &[],
+        &["read", "17", "--map", &path, "valve", "-o", "values"],
+    );
+    assert_eq!(values, "valve=1\n");
+    // The command line wins: its port is the one asked.
+    let (code, _, stderr) = run(
+        &["--port".into(), "127.0.0.1:9".into()],
+        &["read", "17", "--map", &path],
+    );
+    assert_eq!(code, 1, "{stderr}");
+    assert!(stderr.contains("127.0.0.1:9"), "{stderr}");
+    // A place kept in Home Assistant's secrets is not in the file: --port is asked for.
+    let secret = yaml.replace("host: 127.0.0.1", "host: !secret pump_host");
+    let path = files(&dir, &[("secret.yaml", &secret)]).remove(0);
+    let (code, _, stderr) = run(&[], &["read", "17", "--map", &path]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("no --port"), "{stderr}");
+}
+
+#[test]
+fn a_home_assistant_serial_hub_gives_the_device_and_its_line() {
+    let Some(pair) = PtyPair::new() else { return };
+    let (_server, _) = serve_pty(&pair, &["--parity", "none"]);
+    let dir = tempfile::tempdir().unwrap();
+    let yaml = format!(
+        "modbus:\n  - name: line 1\n    type: serial\n    port: {}\n    baudrate: 9600\n    parity: N\n    bytesize: 8\n    stopbits: 2\n    method: rtu\n    sensors:\n      - {{name: setpoint, address: 107}}\n",
+        pair.b.display()
+    );
+    let path = files(&dir, &[("ha.yaml", &yaml)]).remove(0);
+    let (code, values, stderr) = run(&[], &["read", "17", "--map", &path, "-o", "values"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(values, "setpoint=555\n");
 }

@@ -5,7 +5,9 @@ use serde::Deserialize;
 use serde_saphyr::Spanned;
 
 use super::address::Table;
-use super::map::{at, check, check_name, checked, Faults, Kind, MapError, Point, RegisterMap};
+use super::map::{
+    at, check, check_name, checked, Faults, Kind, MapConnection, MapError, Point, RegisterMap,
+};
 use super::values::{ByteOrder, ValueType};
 
 /// The configuration with its `modbus:` key.
@@ -16,6 +18,16 @@ struct Configuration {
 
 #[derive(Default, Deserialize)]
 struct Hub {
+    name: Option<String>,
+    #[serde(rename = "type")]
+    kind: Option<String>,
+    host: Option<String>,
+    port: Option<HubPort>,
+    baudrate: Option<u32>,
+    parity: Option<String>,
+    bytesize: Option<u8>,
+    stopbits: Option<u8>,
+    method: Option<String>,
     #[serde(default)]
     sensors: Vec<Entry>,
     #[serde(default)]
@@ -24,6 +36,41 @@ struct Hub {
     switches: Vec<Entry>,
     #[serde(default)]
     climates: Vec<Entry>,
+}
+
+/// A hub's `port`: a TCP port number, or a serial device.
+#[derive(Deserialize)]
+#[serde(untagged)]
+enum HubPort {
+    Number(u16),
+    Device(String),
+}
+
+impl Hub {
+    /// Where the hub's device is, as `--port` and the line options would say it: `None`
+    /// for a hub that names no place (`!secret` values are left for the command line).
+    fn connection(&self) -> Option<MapConnection> {
+        let hub = self.name.clone().unwrap_or_default();
+        let port = match (self.kind.as_deref(), &self.host, &self.port) {
+            (Some("tcp"), Some(host), Some(HubPort::Number(port))) => {
+                format!("tcp://{host}:{port}")
+            }
+            (Some("rtuovertcp"), Some(host), Some(HubPort::Number(port))) => {
+                format!("rtu+tcp://{host}:{port}")
+            }
+            (Some("serial"), _, Some(HubPort::Device(device))) => device.clone(),
+            _ => return None,
+        };
+        Some(MapConnection {
+            hub,
+            port,
+            mode: self.method.clone(),
+            baud: self.baudrate,
+            parity: self.parity.as_deref().and_then(|p| p.chars().next()),
+            data_bits: self.bytesize,
+            stop_bits: self.stopbits,
+        })
+    }
 }
 
 /// The keys of an entry that make a point; the others (`scan_interval`, `device_class`,
@@ -206,6 +253,13 @@ pub fn parse(file: &str, text: &str) -> Result<RegisterMap, MapError> {
     };
     let mut map = RegisterMap::default();
     let mut faults = Faults::default();
+    // The device is where the first hub with a place says; a place kept in Home
+    // Assistant's secrets (`host: !secret pump_host`) is not in the file.
+    let secret = text.lines().any(|line| {
+        let line = line.trim_start();
+        (line.starts_with("host:") || line.starts_with("port:")) && line.contains("!secret")
+    });
+    map.connection = hubs.iter().find_map(Hub::connection).filter(|_| !secret);
     for hub in hubs {
         let lists = [
             (Platform::Sensor, hub.sensors),

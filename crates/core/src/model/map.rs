@@ -99,6 +99,28 @@ impl Point {
 pub struct RegisterMap {
     /// The points.
     pub points: Vec<Point>,
+    /// Where the device is, when the file says (a Home Assistant hub).
+    pub connection: Option<MapConnection>,
+}
+
+/// Where a map's device is, as its file says; what the command line gives wins.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct MapConnection {
+    /// The hub's name, for messages.
+    pub hub: String,
+    /// The port as `--port` takes it: `tcp://HOST:PORT`, `rtu+tcp://HOST:PORT`, or a
+    /// serial device.
+    pub port: String,
+    /// `rtu` or `ascii`, for a serial line.
+    pub mode: Option<String>,
+    /// The serial speed.
+    pub baud: Option<u32>,
+    /// The serial parity: `E`, `O` or `N`.
+    pub parity: Option<char>,
+    /// The serial data bits.
+    pub data_bits: Option<u8>,
+    /// The serial stop bits.
+    pub stop_bits: Option<u8>,
 }
 
 /// Why a map cannot be used.
