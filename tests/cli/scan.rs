@@ -427,3 +427,18 @@ fn a_late_answer_is_its_own_slave_and_never_another_ids() {
         );
     }
 }
+
+/// The last id of a scan answering well after a short timeout is still found, as late.
+#[test]
+fn the_last_ids_late_answer_is_heard_after_a_short_timeout() {
+    let Some((_line, port)) = busy_line(&["30=late:450"]) else {
+        return;
+    };
+    let run = scan(&port, &["--ids", "25-30", "--timeout", "50ms", "--json"]);
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let found: Vec<(u64, bool)> = json_lines(&run.stdout)
+        .iter()
+        .map(|line| (line["slave"].as_u64().unwrap(), line["late"] == true))
+        .collect();
+    assert_eq!(found, [(30, true)], "{}", run.stderr);
+}

@@ -138,11 +138,13 @@ fn late_timeout(timeout: Duration) -> Duration {
     (timeout * 10).max(Duration::from_secs(1))
 }
 
-/// How long the line is listened to after a scan whose last id was silent: three
-/// timeouts (a late answer is late by a fraction of a second: a slow gateway or device),
-/// and with a long timeout one second more than it.
+/// How long the line must be quiet after a scan whose last id was silent before it ends:
+/// three timeouts and half a second at least (a late answer is late by a fraction of a
+/// second: a slow gateway or device), and with a long timeout one second more than it.
 fn straggler_wait(timeout: Duration) -> Duration {
-    (timeout * 3).min(timeout + Duration::from_secs(1))
+    (timeout * 3)
+        .max(Duration::from_millis(500))
+        .min(timeout + Duration::from_secs(1))
 }
 
 fn probe(master: &mut Master, slave: u8, request: &Request) -> Result<Outcome, MasterError> {
