@@ -119,6 +119,19 @@ pub fn run(settings: &Settings, args: &ReadByReferenceArgs) -> Result<u8> {
         )
         .into());
     }
+    // A map's file may say where its device is, where the command line does not.
+    let from_file = match &args.map {
+        Some(path) => {
+            mbtool_core::model::map_file::load(path)
+                .map_err(Error::from)?
+                .connection
+        }
+        None => None,
+    };
+    let settings = &Settings {
+        connection: connection::with_map_connection(&settings.connection, from_file.as_ref()),
+        ..settings.clone()
+    };
     let target = connection::target(&settings.connection)?;
     let (slave, points) = points(settings, args, &target)?;
     let title = format!(
