@@ -31,7 +31,10 @@ Exit status 4 when any frame fails its checksum or is malformed; 2 when a line i
 pub(super) const ENCODE_ABOUT: &str = "\
 Print the frame that a request command would send, as spaced upper-case hex (RTU or TCP) or \
 as an ASCII line (--mode ascii). A command that needs several requests prints one frame per \
-line. --port tcp://... or --mode tcp prints the MBAP frame, transaction ids counting from 1.";
+line. --port tcp://... or --mode tcp prints the MBAP frame, transaction ids counting from 1. \
+encode opens nothing and sends nothing: --port only chooses the framing (tcp:// gives MBAP, \
+any other port, sim or a serial device, RTU unless --mode says otherwise), which is why \
+encode takes --port and --mode and no other connection option.";
 
 pub(super) const SNIFF_ABOUT: &str = "\
 Watch a bus without ever transmitting: every frame as it passes, with its time, the silence \
