@@ -5,8 +5,9 @@ use serde::Deserialize;
 use serde_saphyr::Spanned;
 
 use super::address::Table;
+use super::faults::Faults;
 use super::map::{
-    at, check, check_name, checked, Faults, Kind, MapConnection, MapError, Point, RegisterMap,
+    at, check, check_name, checked, Kind, MapConnection, MapError, Point, RegisterMap,
 };
 use super::values::{ByteOrder, ValueType};
 

@@ -10,6 +10,7 @@ use thiserror::Error;
 
 use super::address::{bit_reference, parse_reference, reference, split_bit, Table};
 use super::choice::Choice;
+use super::faults::{told, Faults};
 use super::values::{ByteOrder, ValueType};
 
 /// What a point holds.
@@ -145,62 +146,15 @@ pub enum MapError {
         error: String,
     },
     /// What is wrong on several lines: each, in the order of the file, at most
-    /// [`MOST_TOLD`], and how many more there are. Shown one a line.
-    #[error("{}", several(.errors, *.more))]
+    /// [`MOST_TOLD`](super::faults::MOST_TOLD), and how many more there are. Shown one a
+    /// line.
+    #[error("{}", told(.errors, *.more))]
     Several {
         /// The first errors.
         errors: Vec<MapError>,
         /// How many more there are.
         more: usize,
     },
-}
-
-/// How many faults of one file are told at once.
-pub const MOST_TOLD: usize = 20;
-
-fn several(errors: &[MapError], more: usize) -> String {
-    let mut text = errors
-        .iter()
-        .map(ToString::to_string)
-        .collect::<Vec<_>>()
-        .join("\n");
-    if more > 0 {
-        text.push_str(&format!("\n... and {more} more"));
-    }
-    text
-}
-
-/// The faults of a file, told at once: collected in order, at most [`MOST_TOLD`] kept.
-#[derive(Default)]
-pub(super) struct Faults {
-    errors: Vec<MapError>,
-    more: usize,
-}
-
-impl Faults {
-    pub(super) fn add(&mut self, error: MapError) {
-        if self.errors.len() < MOST_TOLD {
-            self.errors.push(error);
-        } else {
-            self.more += 1;
-        }
-    }
-
-    /// `value`, or every fault found, in the order of the file.
-    pub(super) fn or<T>(mut self, value: T) -> Result<T, MapError> {
-        self.errors.sort_by_key(|error| match error {
-            MapError::At { line, .. } => *line,
-            _ => 0,
-        });
-        match self.errors.len() {
-            0 => Ok(value),
-            1 if self.more == 0 => Err(self.errors.remove(0)),
-            _ => Err(MapError::Several {
-                errors: self.errors,
-                more: self.more,
-            }),
-        }
-    }
 }
 
 pub(super) fn at(file: &str, line: usize, error: impl fmt::Display) -> MapError {
@@ -559,9 +513,13 @@ pub fn range_points(
 /// Checks a map as a whole: names unique, no two points on the same addresses (bits of
 /// one register apart). `faults`: those its lines had already; all are told at once, in
 /// the order of the file.
-pub(super) fn check(file: &str, map: RegisterMap, faults: Faults) -> Result<RegisterMap, MapError> {
+pub(super) fn check(
+    file: &str,
+    map: RegisterMap,
+    faults: Faults<MapError>,
+) -> Result<RegisterMap, MapError> {
     let mut faults = faults;
-    if map.points.is_empty() && faults.errors.is_empty() {
+    if map.points.is_empty() && faults.is_empty() {
         return Err(at(file, 1, "the map names no point"));
     }
     let mut names: HashMap<&str, usize> = HashMap::new();
@@ -604,7 +562,12 @@ pub(super) fn check(file: &str, map: RegisterMap, faults: Faults) -> Result<Regi
             ));
         }
     }
-    faults.or(map)
+    // Told in the order of the file.
+    faults.sort_by_key(|error| match error {
+        MapError::At { line, .. } => *line,
+        _ => 0,
+    });
+    faults.or(map, |errors, more| MapError::Several { errors, more })
 }
 
 #[cfg(test)]

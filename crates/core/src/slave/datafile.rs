@@ -25,6 +25,7 @@ use thiserror::Error;
 use crate::master::run::ReadData;
 use crate::model::address::{parse_reference_span, reference, AddressError, Table};
 use crate::model::choice::Choice;
+use crate::model::faults::{told, Faults};
 use crate::model::values::{parse_coil, ByteOrder, ValueType};
 use crate::slave::DataModel;
 
@@ -50,29 +51,15 @@ pub enum DataFileError {
         error: EntryError,
     },
     /// Several entries are wrong: each, in the order of the file, at most
-    /// [`MOST_TOLD`], and how many more there are. Shown one a line.
-    #[error("{}", several(.errors, *.more))]
+    /// [`MOST_TOLD`](crate::model::faults::MOST_TOLD), and how many more there are. Shown
+    /// one a line.
+    #[error("{}", told(.errors, *.more))]
     Lines {
         /// The first errors.
         errors: Vec<DataFileError>,
         /// How many more there are.
         more: usize,
     },
-}
-
-/// How many faults of one file are told at once.
-pub const MOST_TOLD: usize = 20;
-
-fn several(errors: &[DataFileError], more: usize) -> String {
-    let mut text = errors
-        .iter()
-        .map(ToString::to_string)
-        .collect::<Vec<_>>()
-        .join("\n");
-    if more > 0 {
-        text.push_str(&format!("\n... and {more} more"));
-    }
-    text
 }
 
 /// What is wrong with one entry of a data file.
@@ -283,8 +270,7 @@ pub fn parse(name: &str, text: &str) -> Result<DataModel, DataFileError> {
         model.declare(table, 0, 0);
     }
     let mut claims = Claims::default();
-    let mut errors = Vec::new();
-    let mut more = 0;
+    let mut faults = Faults::default();
     for (number, line) in text.lines().enumerate() {
         let content = match line.find('#') {
             // A '#' inside a quoted text is part of it.
@@ -295,22 +281,14 @@ pub fn parse(name: &str, text: &str) -> Result<DataModel, DataFileError> {
             continue;
         }
         if let Err(error) = entry(&mut model, &mut claims, content, number + 1) {
-            if errors.len() < MOST_TOLD {
-                errors.push(DataFileError::Line {
-                    path: name.to_string(),
-                    line: number + 1,
-                    error,
-                });
-            } else {
-                more += 1;
-            }
+            faults.add(DataFileError::Line {
+                path: name.to_string(),
+                line: number + 1,
+                error,
+            });
         }
     }
-    match errors.len() {
-        0 => Ok(model),
-        1 => Err(errors.remove(0)),
-        _ => Err(DataFileError::Lines { errors, more }),
-    }
+    faults.or(model, |errors, more| DataFileError::Lines { errors, more })
 }
 
 /// A run of addresses of one table with their values, as one or more lines of a data file.
