@@ -4,13 +4,13 @@
 /// What an option of mbpoll or modpoll is, and how mbtool says it.
 const OPTIONS: &[(&str, &str, &str)] = &[
     ("-a", "slave address", "here it is the first argument after the command, read-holding 17 ..."),
-    ("-r", "start reference", "here it is the argument after the slave, read-holding 17 400001 (5 or 6 digits are a 1-based reference)"),
+    ("-r", "start reference", "here it is the argument after the slave: read-holding 17 400001, or read-holding --address-base 1 17 1 to count from 1 as mbpoll does"),
     ("-c", "count", "here it is the third argument, read 17 400001 2"),
     ("-t", "data type", "here the command says it: read-coils, read-inputs, read-input-registers or read-holding (--type sets how registers are shown)"),
     ("-1", "poll once", "here a read is done once unless --poll INTERVAL is given"),
     ("-l", "poll rate", "here it is --poll 1s"),
     ("-P", "parity", "here it is --parity even|odd|none"),
-    ("-0", "0-based references", "here a bare number (not 5 or 6 digits) is a 0-based protocol address, and --pdu-addresses takes every number so"),
+    ("-0", "0-based references", "here a bare number (not 5 or 6 digits) is a 0-based protocol address unless --address-base 1 is given, and --pdu-addresses takes every number so"),
     ("-R", "RTS for RS-485", "here it is not supported yet: use an adapter that switches its driver itself"),
 ];
 

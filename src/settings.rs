@@ -12,6 +12,7 @@ use clap::ValueEnum;
 use crate::cli::{takes_option, Cli, Command, OutputFormat};
 use crate::output::{colour_wanted, Format, Style};
 use mbtool_core::codec::Mode;
+use mbtool_core::model::address::Numbering;
 use mbtool_core::model::values::{ByteOrder, ValueType};
 use mbtool_core::transport::serial::Parity;
 
@@ -76,7 +77,7 @@ pub struct Output {
 /// How addresses and values are read from the command line.
 #[derive(Clone, Copy, Debug)]
 pub struct Data {
-    pub pdu_addresses: bool,
+    pub numbering: Numbering,
     pub value_type: ValueType,
     pub order: ByteOrder,
     pub max_per_request: Option<u16>,
@@ -146,6 +147,7 @@ pub fn resolve(
                 format,
                 value_type: cli.data.value_type,
                 order: cli.data.order,
+                address_base: cli.data.address_base.into(),
                 colour: colour_wanted(),
             },
             format,
@@ -156,7 +158,10 @@ pub fn resolve(
             },
         },
         data: Data {
-            pdu_addresses: cli.data.pdu_addresses,
+            numbering: Numbering {
+                references: !cli.data.pdu_addresses,
+                base: cli.data.address_base.into(),
+            },
             value_type: cli.data.value_type,
             order: cli.data.order,
             max_per_request: cli.data.max_per_request,

@@ -25,7 +25,10 @@ frames pasted from a log or a datasheet, and build frames by hand.
 Addresses: a number of exactly 5 or 6 digits whose first digit is the command's table \
 (0 coils, 1 discrete inputs, 3 input registers, 4 holding registers) is a 1-based Modicon \
 reference: 400108 and 40108 are both holding register address 107. Any other number is the \
-0-based protocol address: 107, 0x6B. --pdu-addresses makes every number a protocol address. \
+0-based protocol address: 107, 0x6B; with --address-base 1 (or MBTOOL_ADDRESS_BASE=1) it \
+is the 1-based register number, as manuals and mbpoll count: 108, and the address column \
+of what is shown counts from 1 too. --pdu-addresses turns references off: every number is \
+then a plain number. \
 A range such as 400108-400110 may stand for ADDRESS and COUNT.
 
 Numbers may be decimal, 0x hex or 0b binary.";
@@ -117,12 +120,12 @@ pub struct GenerateArgs {
 /// value name, help). The derived definitions above say it for holding registers, and
 /// `--count` for polling.
 const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
-    ("read-coils", "address", "ADDRESS", "First coil (000020, 19) or an inclusive range (000020-000056)"),
+    ("read-coils", "address", "ADDRESS", "First coil: a reference (000020) or a number (19; counted from 0, or from 1 with --address-base 1), or an inclusive range (000020-000056)"),
     ("read-coils", "count", "COUNT", "How many coils to read [default: 1]"),
-    ("read-inputs", "address", "ADDRESS", "First discrete input (100197, 196) or an inclusive range (100197-100218)"),
+    ("read-inputs", "address", "ADDRESS", "First discrete input: a reference (100197) or a number (196; counted from 0, or from 1 with --address-base 1), or an inclusive range (100197-100218)"),
     ("read-inputs", "count", "COUNT", "How many inputs to read [default: 1]"),
-    ("read-input-registers", "address", "ADDRESS", "First input register (300009, 8), an inclusive range (300009-300011), or a bit of a register (300009.00), COUNT then counting bits"),
-    ("write-coils", "address", "ADDRESS", "First coil (000020, 19), or a range that holds exactly the values given"),
+    ("read-input-registers", "address", "ADDRESS", "First input register: a reference (300009), a number (8; counted from 0, or from 1 with --address-base 1), an inclusive range (300009-300011), or a bit of a register (300009.00), COUNT then counting bits"),
+    ("write-coils", "address", "ADDRESS", "First coil: a reference (000020) or a number (19; counted from 0, or from 1 with --address-base 1), or a range that holds exactly the values given"),
     ("write-coils", "values", "VALUES", "Each 0/1/on/off, or one bit string such as 10110"),
     ("write-registers", "values", "VALUES", "The values, each converted by --type"),
     ("diag", "poll_count", "N", "How many round trips of return query data to time [default: 5]"),
@@ -161,7 +164,7 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
     const LINE: &[&str] = &["port", "mode", "baud", "parity", "data_bits", "stop_bits"];
     const MASTER: &[&str] = &["timeout", "retries", "frame_gap", "verbose"];
     const FORMAT: &[&str] = &["output", "json"];
-    const ADDRESSES: &[&str] = &["pdu_addresses"];
+    const ADDRESSES: &[&str] = &["pdu_addresses", "address_base"];
     const SPLIT: &[&str] = &["max_per_request"];
     const REGISTERS: &[&str] = &["value_type", "order"];
     const POLL: &[&str] = &["poll", "poll_count", "log"];

@@ -4,6 +4,7 @@
 use clap::{Args, ValueEnum};
 
 use mbtool_core::codec::Mode;
+use mbtool_core::model::address::AddressBase;
 use mbtool_core::model::choice::Choice;
 use mbtool_core::model::values::{ByteOrder, ValueType};
 use mbtool_core::transport::serial::Parity;
@@ -83,6 +84,25 @@ pub enum ModeArg {
     Tcp,
 }
 
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum AddressBaseArg {
+    /// Protocol addresses, 0-65535
+    #[value(name = "0")]
+    Zero,
+    /// Register numbers, 1-65536
+    #[value(name = "1")]
+    One,
+}
+
+impl From<AddressBaseArg> for AddressBase {
+    fn from(base: AddressBaseArg) -> AddressBase {
+        match base {
+            AddressBaseArg::Zero => AddressBase::Zero,
+            AddressBaseArg::One => AddressBase::One,
+        }
+    }
+}
+
 impl From<ModeArg> for Mode {
     fn from(mode: ModeArg) -> Mode {
         match mode {
@@ -152,9 +172,25 @@ pub enum OutputFormat {
 #[derive(Clone, Debug, Args)]
 #[command(next_help_heading = "Addresses and values")]
 pub struct DataArgs {
-    /// Take every address as a 0-based protocol address, never as a Modicon reference
+    /// Take every address as a plain number, never as a Modicon reference: 40001 is then
+    /// protocol address 40001 (register number 40001 with --address-base 1)
     #[arg(long, global = true)]
     pub pdu_addresses: bool,
+
+    /// What a bare address number counts from, in what is typed and in the address column
+    /// shown: 0, the protocol address (107 is 400108), or 1, the register number as
+    /// manuals and mbpoll count (108 is 400108). References (400108) are the same either
+    /// way; decode, sniff and serve show a frame's address field as it is on the wire
+    #[arg(
+        long,
+        global = true,
+        env = "MBTOOL_ADDRESS_BASE",
+        hide_env_values = true,
+        value_name = "BASE",
+        value_enum,
+        default_value = "0"
+    )]
+    pub address_base: AddressBaseArg,
 
     /// Register value type, for showing values read and for converting values to write
     #[arg(short = 't', long = "type", global = true, value_name = "TYPE", value_parser = choice::<ValueType>(), default_value = ValueType::default().name())]

@@ -102,8 +102,9 @@ impl RequestCommand {
 pub struct ReadArgs {
     /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
     pub slave: String,
-    /// First holding register (400108, 107, 0x6B), an inclusive range (400108-400110), or
-    /// a bit of a register (400108.05), COUNT then counting bits
+    /// First holding register: a reference (400108), a number (107, 0x6B; counted from 0, or from 1 with --address-base 1),
+    /// an inclusive range (400108-400110), or a bit of a register (400108.05), COUNT then
+    /// counting bits
     pub address: String,
     /// How many registers to read [default: 1]; with --type wider than 16 bits, values of
     /// that type
@@ -114,7 +115,7 @@ pub struct ReadArgs {
 pub struct WriteCoilArgs {
     /// Slave address: 1-247, or 0 to broadcast
     pub slave: String,
-    /// Coil address (000020, 19)
+    /// Coil: a reference (000020) or a number (19; counted from 0, or from 1 with --address-base 1)
     pub address: String,
     /// on, off, 1, 0, true or false
     pub value: String,
@@ -124,7 +125,7 @@ pub struct WriteCoilArgs {
 pub struct WriteRegisterArgs {
     /// Slave address: 1-247, or 0 to broadcast
     pub slave: String,
-    /// Register address (400002, 1)
+    /// Holding register: a reference (400002) or a number (1; counted from 0, or from 1 with --address-base 1)
     pub address: String,
     /// The value, converted by --type
     #[arg(allow_negative_numbers = true)]
@@ -135,7 +136,8 @@ pub struct WriteRegisterArgs {
 pub struct WriteArgs {
     /// Slave address: 1-247, or 0 to broadcast
     pub slave: String,
-    /// First holding register (400002, 1), or a range that holds exactly the values given
+    /// First holding register: a reference (400002) or a number (1; counted from 0, or from 1 with --address-base 1), or a
+    /// range that holds exactly the values given
     pub address: String,
     /// The values: registers each converted by --type; coils each 0/1/on/off, or one bit
     /// string such as 10110
@@ -147,8 +149,8 @@ pub struct WriteArgs {
 pub struct ReadByReferenceArgs {
     /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
     pub slave: String,
-    /// A reference whose first digit picks the table (000020 coils, 100197 discrete
-    /// inputs, 300009 input registers, 400108 holding registers), an inclusive range
+    /// A reference, 1-based, whose first digit picks the table (000020 coils, 100197
+    /// discrete inputs, 300009 input registers, 400108 holding registers), an inclusive range
     /// (400108-400110), or a bit of a register (400108.05), COUNT then counting bits;
     /// with --map, a point's name
     #[arg(required_unless_present = "map", value_name = "REFERENCE")]
@@ -180,7 +182,7 @@ impl ReadByReferenceArgs {
 pub struct WriteByReferenceArgs {
     /// Slave address: 1-247, or 0 to broadcast
     pub slave: String,
-    /// A coil (000020) or holding register (400001) reference, a range that holds exactly
+    /// A coil (000020) or holding register (400001) reference, 1-based; a range that holds exactly
     /// the values given, or a bit of a holding register (400001.03), set alone with
     /// function 22; with --map, NAME=VALUE
     #[arg(required_unless_present = "map", value_name = "REFERENCE")]

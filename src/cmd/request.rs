@@ -127,7 +127,7 @@ fn writes(
     let done = WriteDone {
         slave: plan.slave,
         function: first.function(),
-        address,
+        address: settings.output.style.address_base.number(address),
         reference,
         // Values as the user typed them: one f32 is two registers.
         count: match first {

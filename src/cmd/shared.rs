@@ -31,7 +31,7 @@ pub fn mode(settings: &Settings) -> Mode {
 /// What the options say about addresses, values and request sizes.
 pub fn plan_options(settings: &Settings) -> PlanOptions {
     PlanOptions {
-        pdu_addresses: settings.data.pdu_addresses,
+        numbering: settings.data.numbering,
         value_type: settings.data.value_type,
         order: settings.data.order,
         max_per_request: settings.data.max_per_request,

@@ -341,6 +341,7 @@ mod tests {
     use super::*;
     use mbtool_core::codec::Mode;
     use mbtool_core::describe::describe_frame;
+    use mbtool_core::model::address::AddressBase;
     use mbtool_core::model::values::{ByteOrder, ValueType};
 
     fn shown(format: Format, frame: &[u8]) -> String {
@@ -349,6 +350,7 @@ mod tests {
             format,
             value_type: ValueType::U16,
             order: ByteOrder::Abcd,
+            address_base: AddressBase::Zero,
             colour: false,
         });
         let mut out = Vec::new();

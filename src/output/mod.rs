@@ -19,6 +19,7 @@ use comfy_table::{presets, Table};
 
 use mbtool_core::codec::{Pdu, Request};
 use mbtool_core::describe::{describe_pdu, Fields, Values};
+use mbtool_core::model::address::AddressBase;
 use mbtool_core::model::values::{ByteOrder, ValueType};
 
 /// Standard output, buffered unless it is a terminal, where each line shows at once.
@@ -102,6 +103,8 @@ pub struct Style {
     pub format: Format,
     pub value_type: ValueType,
     pub order: ByteOrder,
+    /// What the address column counts from.
+    pub address_base: AddressBase,
     pub colour: bool,
 }
 

@@ -36,6 +36,7 @@ const TIMED_CSV_HEADER: &str = "time,ref,address,hex,value,error";
 
 /// One shown value: where it is, its registers, what it means.
 struct Row<'a> {
+    /// The address as shown: counted from the address base.
     address: u32,
     /// `400108`, or `400108.05` for a bit of a register.
     reference: String,
@@ -107,11 +108,12 @@ impl ReadWriter {
     fn rows<'a>(&self, result: &'a ReadResult) -> Vec<Row<'a>> {
         let start = u32::from(result.address);
         let ref_of = |address: u32| reference(result.table, address as u16);
+        let shown = |address: u32| address + self.style.address_base.first();
         match &result.data {
             // Text is one value, whatever the number of registers that hold it.
             ReadData::Registers(registers) if self.style.value_type == ValueType::Ascii => {
                 vec![Row {
-                    address: start,
+                    address: shown(start),
                     reference: ref_of(start),
                     registers,
                     value: text(registers, self.style.order),
@@ -123,7 +125,7 @@ impl ReadWriter {
                     .chunks_exact(width)
                     .enumerate()
                     .map(|(i, chunk)| Row {
-                        address: start + (i * width) as u32,
+                        address: shown(start + (i * width) as u32),
                         reference: ref_of(start + (i * width) as u32),
                         registers: chunk,
                         value: self.style.value_type.read(chunk, self.style.order),
@@ -139,7 +141,7 @@ impl ReadWriter {
                         let address = start + ((first + i) / 16) as u32;
                         let number = ((first + i) % 16) as u8;
                         Row {
-                            address,
+                            address: shown(address),
                             reference: bit_reference(result.table, address as u16, number),
                             registers: &[],
                             value: Value::Unsigned(u64::from(*bit)),
@@ -151,7 +153,7 @@ impl ReadWriter {
                 .iter()
                 .enumerate()
                 .map(|(i, bit)| Row {
-                    address: start + i as u32,
+                    address: shown(start + i as u32),
                     reference: ref_of(start + i as u32),
                     registers: &[],
                     value: Value::Unsigned(u64::from(*bit)),
@@ -317,7 +319,8 @@ fn hex_of(registers: &[u16]) -> String {
 pub struct WriteDone {
     pub slave: u8,
     pub function: u8,
-    pub address: u16,
+    /// The first address as shown: counted from the address base.
+    pub address: u32,
     #[serde(rename = "ref")]
     pub reference: String,
     pub count: usize,
@@ -354,6 +357,7 @@ pub fn write_done(out: &mut dyn Write, format: Format, done: &WriteDone) -> io::
 #[cfg(test)]
 mod tests {
     use super::*;
+    use mbtool_core::model::address::AddressBase;
     use mbtool_core::model::address::Table;
     use mbtool_core::model::values::{ByteOrder, ValueType};
 
@@ -373,6 +377,7 @@ mod tests {
             format,
             value_type,
             order: ByteOrder::Abcd,
+            address_base: AddressBase::Zero,
             colour: false,
         });
         let mut out = Vec::new();

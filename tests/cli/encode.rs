@@ -100,7 +100,7 @@ fn counts_past_the_protocol_limit_are_split() {
 fn bad_counts_and_ranges_are_refused() {
     refused(
         "encode read-holding 17 465536 2",
-        "past the last address, 65535",
+        "goes past the end of the table, which holds 65536",
     );
     refused("encode read-holding 17 400001 0", "COUNT");
     refused(

@@ -211,7 +211,7 @@ fn a_reference_of_the_wrong_table_names_the_command_that_fits() {
     );
     refused_with(
         "--port sim read-holding 17 65535 2",
-        "65535 with 2 items goes past the last address, 65535",
+        "65535 with 2 items goes past the end of the table, which holds 65536",
     );
 }
 
@@ -505,4 +505,111 @@ fn a_missing_port_and_a_missing_range_say_what_is_there_and_what_to_give() {
         stderr.contains("dump needs RANGE, the addresses to save: 400001-400100"),
         "{stderr}"
     );
+}
+
+/// With `--address-base 1` a bare number is a register number counted from 1, in what is
+/// typed and in the address column shown; references are unchanged; the help of every
+/// command that takes an address says which base its numbers are in.
+#[test]
+fn address_base_one_counts_register_numbers_from_one() {
+    let csv = |args: &str| {
+        let (code, stdout, stderr) = run(args);
+        assert_eq!(code, 0, "{args}: {stderr}");
+        stdout
+    };
+    assert_eq!(
+        csv("--port sim --address-base 1 read-holding 17 108 3 -o csv"),
+        "ref,address,hex,value\n400108,108,022B,555\n400109,109,0000,0\n400110,110,0064,100\n"
+    );
+    assert_eq!(
+        csv("--port sim --address-base 1 read-holding 17 400108-400110 -o csv"),
+        csv("--port sim --address-base 1 read-holding 17 108-110 -o csv"),
+    );
+    assert_eq!(
+        csv("--port sim --address-base 1 read-coils 17 20 2 -o csv"),
+        "ref,address,value\n000020,20,1\n000021,21,0\n"
+    );
+    assert_eq!(
+        csv("--port sim --address-base 1 read-holding 17 108.05 -o csv"),
+        "ref,address,value\n400108.05,108,1\n"
+    );
+    assert_eq!(
+        csv("--port sim --address-base 1 write-register 17 2 7 -o json"),
+        "{\"slave\":17,\"function\":6,\"address\":2,\"ref\":\"400002\",\"count\":1}\n"
+    );
+    // The environment says it as well, and the command line wins.
+    let from_env = |args: &str| {
+        let output = mbtool()
+            .env("MBTOOL_ADDRESS_BASE", "1")
+            .args(args.split_whitespace())
+            .output()
+            .expect("mbtool runs");
+        String::from_utf8_lossy(&output.stdout).into_owned()
+    };
+    assert_eq!(
+        from_env("--port sim read-holding 17 108 -o csv"),
+        "ref,address,hex,value\n400108,108,022B,555\n"
+    );
+    assert_eq!(
+        from_env("--port sim --address-base 0 read-holding 17 107 -o csv"),
+        "ref,address,hex,value\n400108,107,022B,555\n"
+    );
+    assert_eq!(
+        from_env("--address-base 1 encode read-holding 17 108 3"),
+        "11 03 00 6B 00 03 76 87\n"
+    );
+
+    refused_with(
+        "--port sim --address-base 1 read-holding 17 0",
+        "0 is no register number: with --address-base 1 they count from 1 (the first register \
+         is 1); give --address-base 0 to mean protocol address 0",
+    );
+    refused_with(
+        "--port sim --address-base 1 read-holding 17 65537",
+        "register number 65537 is out of range 1-65536",
+    );
+    refused_with(
+        "--port sim --address-base 1 read-holding 17 19033",
+        "19033 is a discrete input reference: use read-inputs, or give --pdu-addresses to \
+         mean register number 19033",
+    );
+    refused_with(
+        "--port sim --address-base 2 read-holding 17 1",
+        "invalid value '2' for '--address-base <BASE>'; possible values: 0, 1 (see 'mbtool \
+         read-holding --help')",
+    );
+
+    for command in [
+        "read-coils",
+        "read-inputs",
+        "read-holding",
+        "read-input-registers",
+        "write-coil",
+        "write-coils",
+        "write-register",
+        "write-registers",
+    ] {
+        for line in [command.to_string(), format!("encode {command}")] {
+            let help = csv(&format!("{line} --help"));
+            let address = help
+                .split("<ADDRESS>")
+                .nth(2)
+                .unwrap_or_default()
+                .split("\n\n")
+                .next()
+                .unwrap_or_default()
+                .split_whitespace()
+                .collect::<Vec<_>>()
+                .join(" ");
+            assert!(
+                address.contains("counted from 0, or from 1 with --address-base 1"),
+                "{line}: {address}"
+            );
+            assert!(help.contains("--address-base <BASE>"), "{line}");
+        }
+    }
+    for command in ["read", "write", "watch"] {
+        let help = csv(&format!("{command} --help"));
+        assert!(help.contains("reference, 1-based"), "{command}");
+    }
 }

@@ -8,7 +8,7 @@ use std::process::Command as Process;
 use std::time::Duration;
 
 use crate::support::{
-    command_exists, peer_available, python_has, run_against, serve, serve_pty, serve_tcp,
+    command_exists, mbtool, peer_available, python_has, run_against, serve, serve_pty, serve_tcp,
     values_of, writes_read_back, PtyPair,
 };
 
@@ -337,4 +337,58 @@ fn serve_refuses_what_it_cannot_do() {
         .output()
         .unwrap();
     assert_eq!(output.status.code(), Some(2));
+}
+
+/// `--address-base 1` counts as mbpoll's `-r` does: what one writes at number N the other
+/// reads at N, at the ends of the table too, and the address column says N.
+#[test]
+fn address_base_one_counts_as_mbpoll_does() {
+    if !peer_available("mbpoll", command_exists("mbpoll")) {
+        return;
+    }
+    let (_server, port, tcp) = serve_tcp(&[]);
+    let tcp = tcp.to_string();
+    let connection = ["-m", "tcp", "-p", tcp.as_str(), "127.0.0.1"];
+    let mut rng = fastrand::Rng::with_seed(26);
+    // 5 or 6 digits that start with a table's digit are a reference unless --pdu-addresses.
+    let numbers = [1, 2, 65535, 65536, rng.u32(3..10000), 19033, 40001];
+    for (i, number) in numbers.into_iter().enumerate() {
+        let value = 1000 + i;
+        mbpoll(&connection, &format!("-a 17 -1 -t 4 -r {number} {value}"));
+        let plain = if number > 9999 {
+            "--pdu-addresses "
+        } else {
+            ""
+        };
+        let from_one = format!("--address-base 1 {plain}read-holding 17 {number} -o csv");
+        let (code, csv) = run_against(&port, &from_one);
+        assert_eq!(code, 0, "{from_one}: {csv}");
+        let row = csv.lines().nth(1).unwrap_or_default().to_string();
+        let fields: Vec<&str> = row.split(',').collect();
+        assert_eq!(
+            fields[1..],
+            [
+                number.to_string().as_str(),
+                &format!("{value:04X}"),
+                &value.to_string()
+            ],
+            "{from_one}"
+        );
+        assert_eq!(fields[0], format!("4{:05}", number), "{from_one}");
+
+        let written = 2000 + i;
+        let write = format!("--address-base 1 {plain}write-register 17 {number} {written}");
+        assert_eq!(run_against(&port, &write).0, 0, "{write}");
+        let read = mbpoll(&connection, &format!("-a 17 -1 -t 4 -r {number}"));
+        assert_eq!(read, [written.to_string()], "{write}, read by mbpoll");
+    }
+    // Coils too, and from the environment.
+    mbpoll(&connection, "-a 17 -1 -t 0 -r 500 1 0 1");
+    let output = mbtool()
+        .env("MBTOOL_ADDRESS_BASE", "1")
+        .args(&port)
+        .args(["read-coils", "17", "500", "3", "-o", "values"])
+        .output()
+        .expect("mbtool runs");
+    assert_eq!(String::from_utf8_lossy(&output.stdout), "1\n0\n1\n");
 }

@@ -8,7 +8,7 @@ use thiserror::Error;
 
 use crate::codec::{limits, Request};
 use crate::model::address::{
-    parse_reference_span, parse_span, split_bit, Access, AddressError, Span, Table,
+    parse_reference_span, parse_span, split_bit, Access, AddressError, Numbering, Span, Table,
 };
 use crate::model::choice::Choice;
 use crate::model::hexinput::HexError;
@@ -43,7 +43,7 @@ pub enum PlanError {
     #[error("{0}")]
     Count(String),
     /// The items asked for run past the last address of the table.
-    #[error("{span} with {count} items goes past the last address, 65535")]
+    #[error("{span} with {count} items goes past the end of the table, which holds 65536")]
     PastEnd {
         /// The address or range as typed.
         span: String,
@@ -174,8 +174,8 @@ pub enum How {
 /// What the options say about addresses, values and request sizes.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct PlanOptions {
-    /// Every address is a 0-based protocol address, never a Modicon reference.
-    pub pdu_addresses: bool,
+    /// How a bare number given as an address is read.
+    pub numbering: Numbering,
     /// How registers are read as values.
     pub value_type: ValueType,
     /// The order of bytes and words in a multi-register value.
@@ -489,7 +489,7 @@ impl<T: Copy> WriteValues<T> {
             return Ok(self
                 .values
                 .iter()
-                .zip(span.address..)
+                .zip(span.address..=u16::MAX)
                 .map(|(value, address)| (self.single)(address, *value))
                 .collect());
         }
@@ -531,7 +531,7 @@ fn forced_style(table: Table, function: Option<u8>) -> Result<Option<WriteStyle>
 pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
     let span = |address, table: Option<Table>, access| -> Result<(&str, Span)> {
         let span = match table {
-            Some(table) => parse_span(address, table, access, options.pdu_addresses),
+            Some(table) => parse_span(address, table, access, options.numbering),
             None => parse_reference_span(address),
         };
         Ok((address, span?))
@@ -685,6 +685,34 @@ mod tests {
                 values: vec![true, false, true, true, false]
             }]
         );
+    }
+
+    /// The last address of a table is written like any other, one request a value.
+    #[test]
+    fn the_last_address_can_be_written() {
+        for (address, how) in [("465536", How::Single), ("065536", How::Function(None))] {
+            let values = ["1".to_string()];
+            let plan = plan(
+                &Operation::Write {
+                    slave: "17",
+                    address,
+                    table: None,
+                    values: &values,
+                    how,
+                },
+                PlanOptions::default(),
+            )
+            .unwrap();
+            assert!(
+                matches!(
+                    plan.requests[..],
+                    [Request::WriteSingleRegister { address: 65535, .. }
+                        | Request::WriteSingleCoil { address: 65535, .. }]
+                ),
+                "{address}: {:?}",
+                plan.requests
+            );
+        }
     }
 
     #[test]

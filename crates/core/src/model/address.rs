@@ -124,6 +124,58 @@ pub fn reference(table: Table, address: u16) -> String {
     format!("{}{:05}", table.digit(), u32::from(address) + 1)
 }
 
+/// Where a bare address number counts from: 0 as the protocol does (`107` is the 108th
+/// register), or 1 as register numbers do in many manuals and in mbpoll (`108` is it).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum AddressBase {
+    /// Protocol (PDU) addresses, 0-65535.
+    #[default]
+    Zero,
+    /// Register numbers, 1-65536.
+    One,
+}
+
+impl AddressBase {
+    /// The number a protocol address is shown as: 107 is 107 at base 0, 108 at base 1.
+    pub fn number(self, address: u16) -> u32 {
+        u32::from(address) + self.first()
+    }
+
+    /// The smallest number there is: 0 or 1.
+    pub fn first(self) -> u32 {
+        match self {
+            AddressBase::Zero => 0,
+            AddressBase::One => 1,
+        }
+    }
+
+    /// The protocol address a number stands for, if it is one.
+    fn address(self, number: u64) -> Option<u16> {
+        number
+            .checked_sub(u64::from(self.first()))
+            .and_then(|address| u16::try_from(address).ok())
+    }
+}
+
+/// How a bare number given as an address is read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Numbering {
+    /// A 5- or 6-digit number of the table is a Modicon reference (`--pdu-addresses` turns
+    /// this off, and every number is then counted from `base`).
+    pub references: bool,
+    /// What any other number counts from.
+    pub base: AddressBase,
+}
+
+impl Default for Numbering {
+    fn default() -> Self {
+        Self {
+            references: true,
+            base: AddressBase::Zero,
+        }
+    }
+}
+
 /// What a command does with a table, which decides the command a wrong reference is sent to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Access {
@@ -158,6 +210,12 @@ pub enum AddressError {
     /// Neither a reference nor a number.
     #[error("'{0}' is not an address: give a Modicon reference (400108) or a protocol address (107, 0x6B)")]
     NotANumber(String),
+    /// A register number of 0 where numbers count from 1.
+    #[error("{0} is no register number: with --address-base 1 they count from 1 (the first register is 1); give --address-base 0 to mean protocol address 0")]
+    ZeroNumber(String),
+    /// A register number above 65536 where numbers count from 1.
+    #[error("register number {0} is out of range 1-65536")]
+    NumberOutOfRange(String),
     /// A reference to another table than the command's.
     #[error("{text} is {table} reference: use {command}{hint}")]
     WrongTable {
@@ -171,8 +229,15 @@ pub enum AddressError {
         hint: String,
     },
     /// A reference to item 0 of a table (references count from 1).
-    #[error("{0} is not a valid reference: references count from 1 ({1}00001 is the first){hint}", hint = pdu_hint(.0))]
-    ZeroReference(String, u8),
+    #[error("{text} is not a valid reference: references count from 1 ({digit}00001 is the first){hint}")]
+    ZeroReference {
+        /// The reference as typed.
+        text: String,
+        /// Its table's digit.
+        digit: u8,
+        /// How to mean a plain number instead, where the number can be one.
+        hint: String,
+    },
     /// A write to a reference of a read-only table.
     #[error("{text} is {table} reference, and that table is read-only: write to coils (0xxxxx) or holding registers (4xxxxx)")]
     ReadOnly {
@@ -204,10 +269,14 @@ pub enum AddressError {
     BitRange(String),
 }
 
-/// How to mean `text` as a protocol address, where it can be one.
-fn pdu_hint(text: &str) -> String {
-    match protocol_address(text) {
-        Ok(_) => format!(", or give --pdu-addresses to mean protocol address {text}"),
+/// How to mean `text` as a plain number counted from `base`, where it can be one.
+fn pdu_hint(text: &str, base: AddressBase) -> String {
+    let meaning = match base {
+        AddressBase::Zero => "protocol address",
+        AddressBase::One => "register number",
+    };
+    match numbered_address(text, base) {
+        Ok(_) => format!(", or give --pdu-addresses to mean {meaning} {text}"),
         Err(_) => String::new(),
     }
 }
@@ -228,8 +297,9 @@ pub fn split_bit(text: &str) -> Result<(&str, Option<u8>), AddressError> {
     }
 }
 
-/// A 5- or 6-digit decimal Modicon reference: its table and 0-based address.
-fn as_reference(text: &str) -> Option<Result<(Table, u16), AddressError>> {
+/// A 5- or 6-digit decimal Modicon reference: its table and 0-based address; `base` is
+/// what a plain number counts from, for the hint of a reference to item 0.
+fn as_reference(text: &str, base: AddressBase) -> Option<Result<(Table, u16), AddressError>> {
     let digits = text.trim();
     if !(5..=6).contains(&digits.len()) || !digits.bytes().all(|b| b.is_ascii_digit()) {
         return None;
@@ -238,16 +308,29 @@ fn as_reference(text: &str) -> Option<Result<(Table, u16), AddressError>> {
     let table = Table::from_digit(first)?;
     let number: u32 = digits[1..].parse().ok()?;
     Some(match number {
-        0 => Err(AddressError::ZeroReference(text.to_string(), first)),
+        0 => Err(AddressError::ZeroReference {
+            text: text.to_string(),
+            digit: first,
+            hint: pdu_hint(text, base),
+        }),
         n => u16::try_from(n - 1)
             .map(|address| (table, address))
             .map_err(|_| AddressError::OutOfRange(text.to_string())),
     })
 }
 
-fn protocol_address(text: &str) -> Result<u16, AddressError> {
+/// A bare number counted from `base`, as the protocol address it stands for.
+fn numbered_address(text: &str, base: AddressBase) -> Result<u16, AddressError> {
     let value = parse_int(text).map_err(|_| AddressError::NotANumber(text.to_string()))?;
-    u16::try_from(value).map_err(|_| AddressError::OutOfRange(text.to_string()))
+    let number = u64::try_from(value).ok();
+    match (number.and_then(|n| base.address(n)), base) {
+        (Some(address), _) => Ok(address),
+        (None, AddressBase::One) if number == Some(0) => {
+            Err(AddressError::ZeroNumber(text.to_string()))
+        }
+        (None, AddressBase::One) => Err(AddressError::NumberOutOfRange(text.to_string())),
+        (None, AddressBase::Zero) => Err(AddressError::OutOfRange(text.to_string())),
+    }
 }
 
 /// One address for a command that works on `table` as `access` says.
@@ -255,10 +338,10 @@ pub fn parse_address(
     text: &str,
     table: Table,
     access: Access,
-    pdu_addresses: bool,
+    numbering: Numbering,
 ) -> Result<u16, AddressError> {
-    if !pdu_addresses {
-        if let Some(reference) = as_reference(text) {
+    if numbering.references {
+        if let Some(reference) = as_reference(text, numbering.base) {
             let (found, address) = reference?;
             if found != table {
                 let Some(command) = found.command(access) else {
@@ -271,18 +354,19 @@ pub fn parse_address(
                     text: text.to_string(),
                     table: found.a_name(),
                     command,
-                    hint: pdu_hint(text),
+                    hint: pdu_hint(text, numbering.base),
                 });
             }
             return Ok(address);
         }
     }
-    protocol_address(text)
+    numbered_address(text, numbering.base)
 }
 
 /// One Modicon reference, whose first digit picks the table.
 pub fn parse_reference(text: &str) -> Result<(Table, u16), AddressError> {
-    as_reference(text).unwrap_or_else(|| Err(AddressError::NotAReference(text.to_string())))
+    as_reference(text, AddressBase::Zero)
+        .unwrap_or_else(|| Err(AddressError::NotAReference(text.to_string())))
 }
 
 /// `first-last` as a start and an inclusive count, both ends parsed by `one`.
@@ -319,10 +403,10 @@ pub fn parse_span(
     text: &str,
     table: Table,
     access: Access,
-    pdu_addresses: bool,
+    numbering: Numbering,
 ) -> Result<Span, AddressError> {
     parse_range(text, |one| {
-        parse_address(one, table, access, pdu_addresses).map(|address| (table, address))
+        parse_address(one, table, access, numbering).map(|address| (table, address))
     })
 }
 
@@ -335,25 +419,77 @@ pub fn parse_reference_span(text: &str) -> Result<Span, AddressError> {
 mod tests {
     use super::*;
 
+    const STANDARD: Numbering = Numbering {
+        references: true,
+        base: AddressBase::Zero,
+    };
+    const PLAIN: Numbering = Numbering {
+        references: false,
+        base: AddressBase::Zero,
+    };
+    const FROM_ONE: Numbering = Numbering {
+        references: true,
+        base: AddressBase::One,
+    };
+
+    #[test]
+    fn at_base_one_a_bare_number_is_a_register_number() {
+        let holding = Table::HoldingRegisters;
+        assert_eq!(
+            parse_address("108", holding, Access::Read, FROM_ONE),
+            Ok(107)
+        );
+        assert_eq!(
+            parse_address("0x6C", holding, Access::Read, FROM_ONE),
+            Ok(107)
+        );
+        assert_eq!(
+            parse_address("65536", holding, Access::Read, FROM_ONE),
+            Ok(65535)
+        );
+        // References are 1-based already: the base leaves them alone.
+        assert_eq!(
+            parse_address("400108", holding, Access::Read, FROM_ONE),
+            Ok(107)
+        );
+        let zero = parse_address("0", holding, Access::Read, FROM_ONE).unwrap_err();
+        assert!(zero.to_string().contains("count from 1"), "{zero}");
+        let past = parse_address("65537", holding, Access::Read, FROM_ONE).unwrap_err();
+        assert_eq!(
+            past.to_string(),
+            "register number 65537 is out of range 1-65536"
+        );
+        let span = parse_span("1-10", holding, Access::Read, FROM_ONE).unwrap();
+        assert_eq!((span.address, span.count), (0, Some(10)));
+        assert_eq!(AddressBase::One.number(107), 108);
+        assert_eq!(AddressBase::Zero.number(65535), 65535);
+    }
+
     #[test]
     fn five_and_six_digit_references() {
         let holding = Table::HoldingRegisters;
         assert_eq!(
-            parse_address("400108", holding, Access::Read, false),
+            parse_address("400108", holding, Access::Read, STANDARD),
             Ok(107)
         );
         assert_eq!(
-            parse_address("40108", holding, Access::Read, false),
+            parse_address("40108", holding, Access::Read, STANDARD),
             Ok(107)
         );
-        assert_eq!(parse_address("107", holding, Access::Read, false), Ok(107));
-        assert_eq!(parse_address("0x6B", holding, Access::Read, false), Ok(107));
         assert_eq!(
-            parse_address("000020", Table::Coils, Access::Read, false),
+            parse_address("107", holding, Access::Read, STANDARD),
+            Ok(107)
+        );
+        assert_eq!(
+            parse_address("0x6B", holding, Access::Read, STANDARD),
+            Ok(107)
+        );
+        assert_eq!(
+            parse_address("000020", Table::Coils, Access::Read, STANDARD),
             Ok(19)
         );
         assert_eq!(
-            parse_address("465536", holding, Access::Read, false),
+            parse_address("465536", holding, Access::Read, STANDARD),
             Ok(65535)
         );
     }
@@ -361,31 +497,31 @@ mod tests {
     #[test]
     fn pdu_addresses_turns_references_off() {
         assert_eq!(
-            parse_address("40108", Table::Coils, Access::Read, true),
+            parse_address("40108", Table::Coils, Access::Read, PLAIN),
             Ok(40108)
         );
     }
 
     #[test]
     fn a_reference_of_another_table_names_the_right_command() {
-        let error = parse_address("400108", Table::Coils, Access::Read, false).unwrap_err();
+        let error = parse_address("400108", Table::Coils, Access::Read, STANDARD).unwrap_err();
         assert!(error.to_string().contains("read-holding"), "{error}");
     }
 
     #[test]
     fn a_write_names_the_write_command_or_says_the_table_is_read_only() {
         let holding = Table::HoldingRegisters;
-        let error = parse_address("400001", Table::Coils, Access::WriteOne, false).unwrap_err();
+        let error = parse_address("400001", Table::Coils, Access::WriteOne, STANDARD).unwrap_err();
         // 400001 is no protocol address (above 65535), so no --pdu-addresses hint.
         assert_eq!(
             error.to_string(),
             "400001 is a holding register reference: use write-register"
         );
-        let error = parse_address("000001", holding, Access::WriteMany, false).unwrap_err();
+        let error = parse_address("000001", holding, Access::WriteMany, STANDARD).unwrap_err();
         assert!(error
             .to_string()
             .starts_with("000001 is a coil reference: use write-coils"));
-        let error = parse_address("300009", holding, Access::WriteOne, false).unwrap_err();
+        let error = parse_address("300009", holding, Access::WriteOne, STANDARD).unwrap_err();
         assert_eq!(
             error.to_string(),
             "300009 is an input register reference, and that table is read-only: write to \
@@ -395,7 +531,7 @@ mod tests {
 
     #[test]
     fn reference_zero_offers_the_protocol_address() {
-        let error = parse_address("40000", Table::HoldingRegisters, Access::Read, false);
+        let error = parse_address("40000", Table::HoldingRegisters, Access::Read, STANDARD);
         assert_eq!(
             error.unwrap_err().to_string(),
             "40000 is not a valid reference: references count from 1 (400001 is the first), \
@@ -409,7 +545,7 @@ mod tests {
             "400108-400110",
             Table::HoldingRegisters,
             Access::Read,
-            false,
+            STANDARD,
         )
         .unwrap();
         assert_eq!((span.address, span.count), (107, Some(3)));
@@ -417,7 +553,7 @@ mod tests {
             "400110-400108",
             Table::HoldingRegisters,
             Access::Read,
-            false
+            STANDARD
         )
         .is_err());
         assert!(parse_reference_span("400001-300002").is_err());
