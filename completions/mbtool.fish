@@ -59,7 +59,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_needs_command" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_needs_command" -l json -d 'The same as --output json'
@@ -113,7 +113,7 @@ csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l json -d 'The same as --output json'
@@ -141,7 +141,7 @@ csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l json -d 'The same as --output json'
@@ -169,7 +169,7 @@ csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l json -d 'The same as --output json'
@@ -212,7 +212,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l json -d 'The same as --output json'
@@ -255,7 +255,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l json -d 'The same as --output json'
@@ -298,7 +298,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l json -d 'The same as --output json'
@@ -341,7 +341,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l json -d 'The same as --output json'
@@ -385,7 +385,7 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l json -d 'The same as --output json'

@@ -211,7 +211,8 @@ pub struct DataArgs {
 pub struct PollArgs {
     /// Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing
     /// what changed, with a summary on stderr at the end; a failed read is a row of its
-    /// own, and a connection that drops is opened again
+    /// own, a range with holes is read around them (each hole a "no such address" row),
+    /// and a connection that drops is opened again
     #[arg(long, global = true, value_name = "INTERVAL", value_parser = mbtool_core::model::duration::parse_duration)]
     pub poll: Option<std::time::Duration>,
 

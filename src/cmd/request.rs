@@ -14,6 +14,7 @@ use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Mode, Pdu, Request};
 use mbtool_core::describe::describe_frame;
 use mbtool_core::master::plan::Plan;
+use mbtool_core::master::range::{read_range, Items};
 use mbtool_core::master::{Master, Reply};
 use mbtool_core::model::address::{bit_reference, reference, Table};
 
@@ -68,7 +69,7 @@ fn reads(
     out: &mut Box<dyn Write>,
 ) -> Result<u8> {
     let result = master.read(plan, table, address).map_err(Error::from)?;
-    ReadWriter::new(settings.output.style).write(out, &result)?;
+    ReadWriter::new(settings.output.style).write(out, &result.into())?;
     Ok(0)
 }
 
@@ -87,11 +88,17 @@ fn poll_reads(
         };
         ReadWriter::new(style).timed()
     };
+    // A poll of a range reads around its holes, as watch does.
+    let items = Items {
+        value_type: settings.data.value_type,
+        order: settings.data.order,
+        max_per_request: settings.data.max_per_request,
+    };
     super::poll::run(
         settings,
         target,
         interval,
-        |master| master.read(plan, table, address),
+        |master| read_range(master, plan, (table, address), items),
         writer,
     )
 }

@@ -63,15 +63,7 @@ fn points(
     let quantity: u32 = read
         .requests
         .iter()
-        .map(|r| match r {
-            mbtool_core::codec::Request::ReadCoils { quantity, .. }
-            | mbtool_core::codec::Request::ReadDiscreteInputs { quantity, .. }
-            | mbtool_core::codec::Request::ReadHoldingRegisters { quantity, .. }
-            | mbtool_core::codec::Request::ReadInputRegisters { quantity, .. } => {
-                u32::from(*quantity)
-            }
-            _ => 0,
-        })
+        .map(|request| u32::from(request.read_quantity()))
         .sum();
     let points = match read.bits {
         Some(bits) => range_points(

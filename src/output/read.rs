@@ -8,6 +8,7 @@ use serde::Serialize;
 
 use super::Format;
 use super::{csv_field, new_table, Style};
+use mbtool_core::master::range::RangeRead;
 use mbtool_core::master::run::{ReadData, ReadResult};
 use mbtool_core::model::address::{bit_reference, reference};
 use mbtool_core::model::values::{text, Value, ValueType};
@@ -17,10 +18,16 @@ struct JsonEntry<'a> {
     address: u32,
     #[serde(rename = "ref")]
     reference: String,
-    value: &'a Value,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    value: Option<&'a Value>,
     #[serde(skip_serializing_if = "Option::is_none")]
     registers: Option<&'a [u16]>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    error: Option<&'static str>,
 }
+
+/// What a row of an address the device does not have says in place of its value.
+const NO_SUCH_ADDRESS: &str = "no such address";
 
 #[derive(Serialize)]
 struct JsonRead<'a> {
@@ -41,13 +48,14 @@ struct Row<'a> {
     /// `400108`, or `400108.05` for a bit of a register.
     reference: String,
     registers: &'a [u16],
-    value: Value,
+    /// `None` for an address the device said it does not have.
+    value: Option<Value>,
 }
 
 impl super::PollRows for ReadWriter {
-    type Item = ReadResult;
+    type Item = RangeRead;
 
-    fn row(&mut self, out: &mut dyn Write, item: &ReadResult, time: &str) -> io::Result<()> {
+    fn row(&mut self, out: &mut dyn Write, item: &RangeRead, time: &str) -> io::Result<()> {
         self.write_at(out, item, Some(time))
     }
 
@@ -62,8 +70,8 @@ impl super::PollRows for ReadWriter {
 
 pub struct ReadWriter {
     style: Style,
-    /// The previous result, when polling: changed values are marked.
-    previous: Option<ReadResult>,
+    /// The previous rows' references and values, when polling: changed values are marked.
+    previous: Option<Vec<(String, Option<Value>)>>,
     csv_header_written: bool,
     /// Every row starts with its time (a poll's rows, a log).
     timed: bool,
@@ -105,7 +113,8 @@ impl ReadWriter {
         }
     }
 
-    fn rows<'a>(&self, result: &'a ReadResult) -> Vec<Row<'a>> {
+    /// The rows of one run of addresses read.
+    fn part_rows<'a>(&self, result: &'a ReadResult) -> Vec<Row<'a>> {
         let start = u32::from(result.address);
         let ref_of = |address: u32| reference(result.table, address as u16);
         let shown = |address: u32| address + self.style.address_base.first();
@@ -116,7 +125,7 @@ impl ReadWriter {
                     address: shown(start),
                     reference: ref_of(start),
                     registers,
-                    value: text(registers, self.style.order),
+                    value: Some(text(registers, self.style.order)),
                 }]
             }
             ReadData::Registers(registers) => {
@@ -128,7 +137,7 @@ impl ReadWriter {
                         address: shown(start + (i * width) as u32),
                         reference: ref_of(start + (i * width) as u32),
                         registers: chunk,
-                        value: self.style.value_type.read(chunk, self.style.order),
+                        value: Some(self.style.value_type.read(chunk, self.style.order)),
                     })
                     .collect()
             }
@@ -144,7 +153,7 @@ impl ReadWriter {
                             address: shown(address),
                             reference: bit_reference(result.table, address as u16, number),
                             registers: &[],
-                            value: Value::Unsigned(u64::from(*bit)),
+                            value: Some(Value::Unsigned(u64::from(*bit))),
                         }
                     })
                     .collect()
@@ -156,41 +165,64 @@ impl ReadWriter {
                     address: shown(start + i as u32),
                     reference: ref_of(start + i as u32),
                     registers: &[],
-                    value: Value::Unsigned(u64::from(*bit)),
+                    value: Some(Value::Unsigned(u64::from(*bit))),
                 })
                 .collect(),
         }
     }
 
-    /// Indices of rows whose value differs from the previous poll.
-    fn changed(&self, result: &ReadResult) -> Vec<bool> {
-        let now = self.rows(result);
+    /// The rows of a range: those of its runs, and one for each address it lacks, in
+    /// address order.
+    fn rows<'a>(&self, range: &'a RangeRead) -> Vec<Row<'a>> {
+        let table = range.parts.first().map(|part| part.table);
+        let mut rows: Vec<Row> = range
+            .parts
+            .iter()
+            .flat_map(|part| self.part_rows(part))
+            .collect();
+        for (address, table) in range.missing.iter().zip(std::iter::repeat(table).flatten()) {
+            rows.push(Row {
+                address: self.style.address_base.number(*address),
+                reference: reference(table, *address),
+                registers: &[],
+                value: None,
+            });
+        }
+        // Stable: the bits of one register keep their order.
+        rows.sort_by_key(|row| row.address);
+        rows
+    }
+
+    /// Which rows' values differ from the previous poll's.
+    fn changed(&self, rows: &[Row]) -> Vec<bool> {
         match &self.previous {
-            Some(previous) if previous.data.len() == result.data.len() => {
-                let before = self.rows(previous);
-                now.iter()
-                    .zip(&before)
-                    .map(|(a, b)| a.value != b.value)
-                    .collect()
-            }
-            _ => vec![false; now.len()],
+            Some(previous) if previous.len() == rows.len() => rows
+                .iter()
+                .zip(previous)
+                .map(|(row, (reference, value))| row.reference == *reference && row.value != *value)
+                .collect(),
+            _ => vec![false; rows.len()],
         }
     }
 
-    pub fn write(&mut self, out: &mut dyn Write, result: &ReadResult) -> io::Result<()> {
-        self.write_at(out, result, None)
+    pub fn write(&mut self, out: &mut dyn Write, range: &RangeRead) -> io::Result<()> {
+        self.write_at(out, range, None)
     }
 
     /// A result, its rows starting with `time` when the writer is timed.
     pub fn write_at(
         &mut self,
         out: &mut dyn Write,
-        result: &ReadResult,
+        range: &RangeRead,
         time: Option<&str>,
     ) -> io::Result<()> {
+        let Some(first) = range.parts.first() else {
+            return Ok(());
+        };
         let time = time.filter(|_| self.timed);
-        let changed = self.changed(result);
-        let rows = self.rows(result);
+        let rows = self.rows(range);
+        let changed = self.changed(&rows);
+        let bits = matches!(first.data, ReadData::Bits(_));
         match self.style.format {
             Format::Json => {
                 let wide = self.style.value_type.width() > 1;
@@ -199,27 +231,31 @@ impl ReadWriter {
                     .map(|row| JsonEntry {
                         address: row.address,
                         reference: row.reference.clone(),
-                        value: &row.value,
-                        registers: wide.then_some(row.registers),
+                        value: row.value.as_ref(),
+                        registers: (wide && row.value.is_some()).then_some(row.registers),
+                        error: row.value.is_none().then_some(NO_SUCH_ADDRESS),
                     })
                     .collect();
                 let json = JsonRead {
                     time,
-                    slave: result.slave,
-                    function: result.function,
+                    slave: first.slave,
+                    function: first.function,
                     values,
                 };
                 serde_json::to_writer(&mut *out, &json)?;
                 writeln!(out)?;
             }
             Format::Values => {
+                // A line for every row, so that the lines stay in step with the addresses.
                 for row in &rows {
-                    writeln!(out, "{}", row.value)?;
+                    match &row.value {
+                        Some(value) => writeln!(out, "{value}")?,
+                        None => writeln!(out, "-")?,
+                    }
                 }
             }
             Format::Csv => {
                 // Bits have no registers, so no hex column.
-                let bits = matches!(result.data, ReadData::Bits(_));
                 if !self.csv_header_written {
                     let header = match (time, bits) {
                         (Some(_), _) => TIMED_CSV_HEADER,
@@ -230,12 +266,22 @@ impl ReadWriter {
                     self.csv_header_written = true;
                 }
                 for row in &rows {
-                    let value = csv_field(&row.value.to_string());
+                    let value = csv_field(
+                        &row.value
+                            .as_ref()
+                            .map(ToString::to_string)
+                            .unwrap_or_default(),
+                    );
+                    let error = if row.value.is_none() {
+                        NO_SUCH_ADDRESS
+                    } else {
+                        ""
+                    };
                     match time {
                         // A log's rows: one shape for bits, registers and failures alike.
                         Some(time) => writeln!(
                             out,
-                            "{time},{},{},{},{value},",
+                            "{time},{},{},{},{value},{error}",
                             row.reference,
                             row.address,
                             if bits {
@@ -257,7 +303,6 @@ impl ReadWriter {
             }
             Format::Table => {
                 let mut table = new_table(self.style.colour);
-                let bits = matches!(result.data, ReadData::Bits(_));
                 let mut header = vec!["ref".to_string(), "address".to_string()];
                 if bits {
                     header.push("state".into());
@@ -269,15 +314,11 @@ impl ReadWriter {
                 }
                 table.set_header(header);
                 for (row, changed) in rows.iter().zip(&changed) {
-                    let shown = if bits {
-                        if row.value == Value::Unsigned(1) {
-                            "ON"
-                        } else {
-                            "OFF"
-                        }
-                        .to_string()
-                    } else {
-                        row.value.to_string()
+                    let shown = match &row.value {
+                        None => NO_SUCH_ADDRESS.to_string(),
+                        Some(Value::Unsigned(1)) if bits => "ON".to_string(),
+                        Some(_) if bits => "OFF".to_string(),
+                        Some(value) => value.to_string(),
                     };
                     let mut value = Cell::new(shown);
                     if *changed && self.style.colour {
@@ -296,13 +337,12 @@ impl ReadWriter {
                 writeln!(out, "{table}")?;
             }
         }
-        self.previous = Some(result.clone());
+        self.previous = Some(
+            rows.into_iter()
+                .map(|row| (row.reference, row.value))
+                .collect(),
+        );
         Ok(())
-    }
-
-    /// Keeps the first result, so that the next poll's changes show.
-    pub fn polling(&mut self, result: &ReadResult) {
-        self.previous.get_or_insert_with(|| result.clone());
     }
 }
 
@@ -381,7 +421,7 @@ mod tests {
             colour: false,
         });
         let mut out = Vec::new();
-        writer.write(&mut out, result).unwrap();
+        writer.write(&mut out, &result.clone().into()).unwrap();
         String::from_utf8(out).unwrap()
     }
 

@@ -270,3 +270,99 @@ fn a_log_appended_to_keeps_one_header_and_timeouts_say_what_was_tried() {
         "{output:?}"
     );
 }
+
+/// A poll's output for `args` against `port`: (exit status, stdout).
+fn polled(port: &[String], args: &str) -> (i32, String) {
+    let output = mbtool()
+        .args(port)
+        .args(args.split_whitespace())
+        .args(["--poll", "100ms", "--count", "1"])
+        .output()
+        .expect("mbtool runs");
+    (
+        output.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&output.stdout).into_owned(),
+    )
+}
+
+/// The (ref, value, error) of each row of a poll's CSV.
+fn cells(csv: &str) -> Vec<(String, String, String)> {
+    csv.lines()
+        .skip(1)
+        .map(|line| {
+            let fields: Vec<&str> = line.splitn(6, ',').collect();
+            (fields[1].into(), fields[4].into(), fields[5].into())
+        })
+        .collect()
+}
+
+/// A poll of a range with holes reads around them, as watch does, against pymodbus (whose
+/// sparse block refuses a hole with exception 02) and against serve with a data file: the
+/// addresses that exist show their values, each hole says so, and a wide type is never cut
+/// in two.
+#[test]
+fn a_poll_of_a_range_reads_around_its_holes() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("holes.txt");
+    std::fs::write(
+        &data,
+        "400003-400004 = 3 4\n400006-400011 = 6 7 8 9 10 11\n",
+    )
+    .unwrap();
+    let (_serve, serve_port, _) = crate::support::serve_tcp(&["--data", data.to_str().unwrap()]);
+    let holding = "--holding=2=3,3=4,5=6,6=7,7=8,8=9,9=10,10=11".to_string();
+    let peers = crate::support::pymodbus_tcp(&[holding]);
+    let mut ports = vec![serve_port];
+    ports.extend(peers.as_ref().map(|(_, port)| port.clone()));
+    let row = |r: &str, v: &str| (r.to_string(), v.to_string(), String::new());
+    let hole = |r: &str| (r.to_string(), String::new(), "no such address".to_string());
+    for port in &ports {
+        let (code, csv) = polled(port, "read-holding 17 400003 5 -o csv");
+        assert_eq!(code, 0, "{csv}");
+        assert_eq!(
+            cells(&csv),
+            [
+                row("400003", "3"),
+                row("400004", "4"),
+                hole("400005"),
+                row("400006", "6"),
+                row("400007", "7")
+            ],
+            "{port:?}"
+        );
+        // Two requests of at most 2 each; the hole in the first is found all the same.
+        let (_, csv) = polled(port, "read-holding 17 400004 4 --max-per-request 2 -o csv");
+        assert_eq!(
+            cells(&csv),
+            [
+                row("400004", "4"),
+                hole("400005"),
+                row("400006", "6"),
+                row("400007", "7")
+            ],
+            "{port:?}"
+        );
+        // A u32 that would take the hole is the hole; the next one is whole.
+        let (_, csv) = polled(port, "read-holding 17 400003 3 -t u32 -o csv");
+        assert_eq!(
+            cells(&csv),
+            [
+                row("400003", "196612"),
+                hole("400005"),
+                row("400007", "458760")
+            ],
+            "{port:?}"
+        );
+        let (_, values) = polled(port, "read-holding 17 400004 3 -o values");
+        assert_eq!(values, "4\n-\n6\n", "{port:?}");
+        let (_, json) = polled(port, "read-holding 17 400005 2 --json");
+        let json: serde_json::Value = serde_json::from_str(json.trim()).unwrap();
+        assert_eq!(json["values"][0]["error"], "no such address", "{json}");
+        assert_eq!(json["values"][0].get("value"), None, "{json}");
+        assert_eq!(json["values"][1]["value"], 6, "{json}");
+        // Nothing of the range there: the device's answer stands.
+        let (code, csv) = polled(port, "read-holding 17 400012 3 -o csv");
+        assert_eq!(code, 12, "{csv}");
+        assert!(csv.contains("exception 02"), "{csv}");
+    }
+}

@@ -10,6 +10,7 @@ from pymodbus import FramerType
 from pymodbus.datastore import (
     ModbusDeviceContext,
     ModbusSequentialDataBlock,
+    ModbusSparseDataBlock,
     ModbusServerContext,
 )
 from pymodbus.pdu.device import ModbusDeviceIdentification
@@ -24,6 +25,11 @@ def main():
     parser.add_argument("--serial")
     parser.add_argument("--tcp", type=int)
     parser.add_argument("--identity", action="append", default=[], metavar="NAME=VALUE")
+    parser.add_argument(
+        "--holding",
+        metavar="ADDRESS=VALUE,...",
+        help="only these holding registers exist (protocol addresses); the others are holes",
+    )
     args = parser.parse_args()
     identity = ModbusDeviceIdentification(
         info_name=dict(item.split("=", 1) for item in args.identity)
@@ -33,7 +39,12 @@ def main():
         # pymodbus counts block addresses from 1; protocol address 0 is its first cell.
         return ModbusSequentialDataBlock(1, [0] * SIZE)
 
-    device = ModbusDeviceContext(di=block(), co=block(), ir=block(), hr=block())
+    holding = block()
+    if args.holding:
+        # A sparse block's keys are protocol addresses, unlike a sequential block's start.
+        cells = dict(item.split("=") for item in args.holding.split(","))
+        holding = ModbusSparseDataBlock({int(a): int(v) for a, v in cells.items()})
+    device = ModbusDeviceContext(di=block(), co=block(), ir=block(), hr=holding)
     context = ModbusServerContext(devices={17: device}, single=False)
     framer = FramerType(args.framer)
     if args.tcp:

@@ -16,6 +16,7 @@ pub mod device;
 pub mod map;
 pub mod plan;
 pub mod poll;
+pub mod range;
 pub mod run;
 pub mod scan;
 

@@ -32,6 +32,18 @@ impl Request {
         }
     }
 
+    /// How many coils or registers a read of one table (01-04) asks for; 0 for any other
+    /// request.
+    pub fn read_quantity(&self) -> u16 {
+        match self {
+            Request::ReadCoils { quantity, .. }
+            | Request::ReadDiscreteInputs { quantity, .. }
+            | Request::ReadHoldingRegisters { quantity, .. }
+            | Request::ReadInputRegisters { quantity, .. } => *quantity,
+            _ => 0,
+        }
+    }
+
     /// Appends the PDU to `out`, after checking every protocol limit.
     pub fn encode(&self, out: &mut Vec<u8>) -> Result<(), PduError> {
         let start = out.len();
