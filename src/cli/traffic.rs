@@ -61,8 +61,20 @@ beside it (one line per read: '<us> <count>', or '<us> idle' when the line went 
 --input FILE reads them back when they are there, so that a replay finds the frames the live \
 session found.
 
---pcap writes the frames for Wireshark with link type DLT_USER0 (147). Once, in Wireshark: \
-Preferences > Protocols > DLT_USER > Edit, add DLT 147 with payload protocol mbrtu.";
+Modbus TCP: --input also reads pcap and pcapng files (tcpdump, dumpcap, tshark, Wireshark; \
+known by their first bytes, whatever the name): Ethernet with VLAN tags, Linux cooked captures \
+(tcpdump -i any), raw IP and loopback. Each connection's two directions are put back in order \
+before framing: retransmitted bytes are read once, segments out of order put in order, and \
+after a lost segment, or where the capture starts mid-connection, framing picks up at the \
+next MBAP header that reads. Port 502 is Modbus unless --tcp-port names others; other \
+packets are counted and passed over. Answers are paired with their requests by transaction \
+and unit id, with the response time; each line shows the connection, and JSON has client, \
+server, transaction, packet (numbered as Wireshark numbers them), and on answers \
+request_packet and response_time_us.
+
+--pcap writes the frames for Wireshark with link type DLT_USER0 (147), a TCP frame as the \
+RTU frame it carries. Once, in Wireshark: Preferences > Protocols > DLT_USER > Edit, add DLT \
+147 with payload protocol mbrtu.";
 
 #[derive(Clone, Debug, Args)]
 pub struct DecodeArgs {
@@ -90,9 +102,15 @@ impl From<DirectionArg> for Direction {
 
 #[derive(Clone, Debug, Args)]
 pub struct SniffArgs {
-    /// Read a raw byte capture instead of the port ('-' for standard input)
+    /// Read a capture instead of the port ('-' for standard input): a pcap or pcapng file
+    /// of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line
     #[arg(long, value_name = "FILE")]
     pub input: Option<std::path::PathBuf>,
+
+    /// In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502];
+    /// repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)
+    #[arg(long = "tcp-port", value_name = "PORT", value_parser = clap::value_parser!(u16).range(1..))]
+    pub tcp_ports: Vec<u16>,
 
     /// Keep every byte seen, exactly as received, to replay it later with --input; live,
     /// their times go to FILE.timing beside it

@@ -1,7 +1,7 @@
 //! `mbtool sniff`: a passive capture of a bus, live from a port or replayed from a file.
 
 use std::fs::File;
-use std::io::{self, BufWriter, Read, Write};
+use std::io::{self, BufRead, BufWriter, Read, Write};
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
@@ -15,8 +15,10 @@ use mbtool::error::Error;
 use mbtool::output::{self, sniff::SniffWriter, Named};
 use mbtool::settings::Settings;
 use mbtool_core::codec::Mode;
+use mbtool_core::sniff::capture;
 use mbtool_core::sniff::pcap::{self, PcapWriter};
 use mbtool_core::sniff::session::{Filter, Record, Session};
+use mbtool_core::sniff::tcp::{TcpSession, MODBUS_PORT};
 use mbtool_core::sniff::timing;
 use mbtool_core::transport::serial::{self, LineSettings, Serial};
 use mbtool_core::transport::{Endpoint, Transport};
@@ -50,7 +52,48 @@ impl Sinks {
     }
 }
 
+/// A capture file or standard input, its first bytes readable before it is read.
+type Input = io::BufReader<Box<dyn Read + Send>>;
+
+fn open_input(path: &Path) -> Result<Input> {
+    let input: Box<dyn Read + Send> = if path.as_os_str() == "-" {
+        Box::new(io::stdin())
+    } else {
+        Box::new(File::open(path).with_context(|| format!("cannot open {}", path.display()))?)
+    };
+    Ok(io::BufReader::with_capacity(1 << 16, input))
+}
+
 pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
+    let mut input = match &args.input {
+        Some(path) => Some(open_input(path)?),
+        None => None,
+    };
+    match (&args.input, input.as_mut()) {
+        (Some(path), Some(reader)) => {
+            let start = reader
+                .fill_buf()
+                .with_context(|| format!("cannot read {}", path.display()))?;
+            if capture::is_capture(start) {
+                return replay_capture(settings, args, path, reader);
+            }
+            if !args.tcp_ports.is_empty() || named_as_capture(path) {
+                return Err(Error::usage(format!(
+                    "{} is neither a pcap nor a pcapng file: give a capture written by \
+                     tcpdump, dumpcap or Wireshark (a raw serial capture takes no --tcp-port)",
+                    path.display()
+                ))
+                .into());
+            }
+        }
+        _ if !args.tcp_ports.is_empty() => {
+            return Err(Error::usage(
+                "--tcp-port picks the Modbus connections of a capture: give --input FILE.pcap",
+            )
+            .into())
+        }
+        _ => {}
+    }
     let mode = mode(&settings.connection, None, Role::Sniff)?;
     let line = line_settings(&settings.connection, mode);
     let filter = Filter {
@@ -68,13 +111,7 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         Some(path) => Some(Save::create(path, args.input.is_none())?),
         None => None,
     };
-    let pcap = match &args.pcap {
-        Some(path) => Some(PcapWriter::new(
-            output::create_file(path, false)
-                .with_context(|| format!("cannot create {}", path.display()))?,
-        )?),
-        None => None,
-    };
+    let pcap = pcap_file(args)?;
     let epoch_us = SystemTime::now()
         .duration_since(UNIX_EPOCH)
         .map_or(0, |d| d.as_micros() as u64);
@@ -87,24 +124,17 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         live: args.input.is_none(),
     };
     let mut records = Vec::new();
-    let end = match &args.input {
-        Some(path) => {
-            let mut input: Box<dyn Read> = if path.as_os_str() == "-" {
-                Box::new(io::stdin().lock())
-            } else {
-                Box::new(
-                    File::open(path).with_context(|| format!("cannot open {}", path.display()))?,
-                )
-            };
+    let end = match (&args.input, input.as_mut()) {
+        (Some(path), Some(input)) => {
             match replay_timing(path)? {
                 Some(events) => {
-                    replay_timed(&mut input, &events, &mut session, &mut sinks, &mut save)?;
+                    replay_timed(input, &events, &mut session, &mut sinks, &mut save)?;
                 }
-                None => replay(&mut input, &mut session, &mut sinks, &mut save)?,
+                None => replay(input, &mut session, &mut sinks, &mut save)?,
             }
             None
         }
-        None => Some(live(
+        _ => Some(live(
             settings,
             args,
             line,
@@ -116,7 +146,9 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
     };
     session.finish(end, &mut records);
     sinks.write(&mut records)?;
-    sinks.writer.summary(&mut sinks.out, session.counts())?;
+    sinks
+        .writer
+        .summary(&mut sinks.out, session.counts(), None)?;
     sinks.out.flush()?;
     if let Some(pcap) = sinks.pcap.as_mut() {
         pcap.flush()?;
@@ -125,6 +157,97 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         save.flush()?;
     }
     Ok(0)
+}
+
+/// A name that says the file is a packet capture.
+fn named_as_capture(path: &Path) -> bool {
+    let extension = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or_default();
+    ["pcap", "pcapng", "cap", "dmp"]
+        .iter()
+        .any(|known| extension.eq_ignore_ascii_case(known))
+}
+
+/// A pcap or pcapng capture of Modbus TCP (or RTU over TCP): every packet through the
+/// TCP session, the records shown as they come.
+fn replay_capture(
+    settings: &Settings,
+    args: &SniffArgs,
+    path: &Path,
+    input: &mut Input,
+) -> Result<u8> {
+    if args.save.is_some() {
+        return Err(Error::usage(
+            "--save keeps the bytes of a serial line; a capture file is kept already (--pcap writes its Modbus frames)",
+        )
+        .into());
+    }
+    let mode = match settings.connection.mode {
+        None | Some(Mode::Tcp) => Mode::Tcp,
+        Some(Mode::Rtu) => Mode::Rtu,
+        Some(Mode::Ascii) => {
+            return Err(Error::usage(
+                "a capture carries MBAP frames (--mode tcp) or RTU frames through a gateway (--mode rtu)",
+            )
+            .into())
+        }
+    };
+    let ports = match args.tcp_ports.is_empty() {
+        true => vec![MODBUS_PORT],
+        false => args.tcp_ports.clone(),
+    };
+    let filter = Filter {
+        slaves: args.slaves.clone(),
+        functions: args.functions.clone(),
+    };
+    let mut session = TcpSession::new(mode, ports, filter);
+    let mut sinks = Sinks {
+        writer: SniffWriter::new(settings.output.format, output::colour_wanted()),
+        out: output::stdout(),
+        pcap: pcap_file(args)?,
+        epoch_us: 0,
+        mode,
+        live: false,
+    };
+    let mut records = Vec::new();
+    let mut written = Ok(());
+    let read = capture::read_packets(input, |packet| {
+        session.packet(&packet, &mut records);
+        sinks.epoch_us = session.first_time();
+        written = sinks.write(&mut records);
+        written.is_ok()
+    });
+    written?;
+    session.finish(&mut records);
+    sinks.write(&mut records)?;
+    let packets = session.packet_counts();
+    sinks
+        .writer
+        .summary(&mut sinks.out, session.counts(), Some(&packets))?;
+    sinks.out.flush()?;
+    if let Some(pcap) = sinks.pcap.as_mut() {
+        pcap.flush()?;
+    }
+    match read {
+        Ok(_) => Ok(0),
+        Err(error) => Err(Error::usage(format!(
+            "{} {error}; what came before is shown",
+            path.display()
+        ))
+        .into()),
+    }
+}
+
+/// `--pcap FILE`: the frames found, for Wireshark.
+fn pcap_file(args: &SniffArgs) -> Result<Option<PcapWriter<OutputFile>>> {
+    let Some(path) = &args.pcap else {
+        return Ok(None);
+    };
+    let file = output::create_file(path, false)
+        .with_context(|| format!("cannot create {}", path.display()))?;
+    Ok(Some(PcapWriter::new(file)?))
 }
 
 /// A file sniff writes, buffered, its errors naming it.

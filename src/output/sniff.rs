@@ -9,7 +9,8 @@ use super::{csv_field, fields_summary, request_summary, shown_values};
 use mbtool_core::codec::function;
 use mbtool_core::codec::ExceptionCode;
 use mbtool_core::describe::{describe_pdu, spaced_hex, FrameReport, Kind, Values};
-use mbtool_core::sniff::session::{Counts, FrameRecord, Record};
+use mbtool_core::sniff::session::{Counts, FrameRecord, Record, TcpPlace};
+use mbtool_core::sniff::tcp::PacketCounts;
 
 const RED: &str = "\x1b[31m";
 const YELLOW: &str = "\x1b[33m";
@@ -34,6 +35,32 @@ struct JsonFrame<'a> {
     report: &'a FrameReport,
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     paired: bool,
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    tcp: Option<JsonTcp>,
+}
+
+/// Where a frame of a TCP capture was, as JSON says it.
+#[derive(Serialize)]
+struct JsonTcp {
+    client: String,
+    server: String,
+    packet: u64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    request_packet: Option<u64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    response_time_us: Option<u64>,
+}
+
+impl From<&TcpPlace> for JsonTcp {
+    fn from(place: &TcpPlace) -> Self {
+        Self {
+            client: place.client.to_string(),
+            server: place.server.to_string(),
+            packet: place.packet,
+            request_packet: place.request_packet,
+            response_time_us: place.response_time,
+        }
+    }
 }
 
 #[derive(Serialize)]
@@ -56,6 +83,10 @@ struct JsonUnanswered {
     request: mbtool_core::describe::Fields,
     #[serde(skip_serializing_if = "Option::is_none")]
     waited: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    transaction: Option<u16>,
+    #[serde(flatten, skip_serializing_if = "Option::is_none")]
+    tcp: Option<JsonTcp>,
 }
 
 #[derive(Serialize)]
@@ -64,6 +95,8 @@ struct JsonSummary<'a> {
     kind: &'static str,
     #[serde(flatten)]
     counts: &'a Counts,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    packets: Option<&'a PacketCounts>,
 }
 
 pub struct SniffWriter {
@@ -168,6 +201,7 @@ impl SniffWriter {
                         bytes: &bytes,
                         report: &frame.report,
                         paired: frame.paired,
+                        tcp: frame.tcp.as_ref().map(JsonTcp::from),
                     },
                 )
             }
@@ -197,6 +231,7 @@ impl SniffWriter {
                     slave,
                     request,
                     waited,
+                    tcp,
                 },
             ) => {
                 let (_, fields) = describe_pdu(&mbtool_core::codec::Pdu::Request(request.clone()));
@@ -209,6 +244,8 @@ impl SniffWriter {
                         function: request.function(),
                         request: fields,
                         waited: waited.map(seconds),
+                        transaction: tcp.map(|(_, transaction)| transaction),
+                        tcp: tcp.as_ref().map(|(place, _)| JsonTcp::from(place)),
                     },
                 )
             }
@@ -229,6 +266,9 @@ impl SniffWriter {
     }
 
     fn csv(&mut self, out: &mut dyn Write, frame: &FrameRecord) -> io::Result<()> {
+        if let Some(place) = &frame.tcp {
+            return self.tcp_csv(out, frame, place);
+        }
         if !self.csv_header_written {
             writeln!(out, "number,time,gap,slave,function,kind,valid,summary")?;
             self.csv_header_written = true;
@@ -251,6 +291,41 @@ impl SniffWriter {
             r.function,
             r.kind.name(),
             r.valid,
+            csv_field(&frame_summary(r)),
+        )
+    }
+
+    /// A frame of a TCP capture: its connection, transaction and response time instead
+    /// of the silence before it.
+    fn tcp_csv(
+        &mut self,
+        out: &mut dyn Write,
+        frame: &FrameRecord,
+        place: &TcpPlace,
+    ) -> io::Result<()> {
+        if !self.csv_header_written {
+            writeln!(
+                out,
+                "number,time,client,server,packet,transaction,slave,function,kind,valid,response_time_us,summary"
+            )?;
+            self.csv_header_written = true;
+        }
+        let r = &frame.report;
+        let show = |value: Option<u64>| value.map(|v| v.to_string()).unwrap_or_default();
+        writeln!(
+            out,
+            "{},{:.6},{},{},{},{},{},{},{},{},{},{}",
+            frame.number,
+            seconds(frame.at),
+            place.client,
+            place.server,
+            place.packet,
+            show(r.transaction.map(u64::from)),
+            r.slave,
+            r.function,
+            r.kind.name(),
+            r.valid,
+            show(place.response_time),
             csv_field(&frame_summary(r)),
         )
     }
@@ -300,17 +375,35 @@ impl SniffWriter {
                     }
                     _ => String::new(),
                 };
-                let mut text = format!(
-                    "#{:<6}{} {:>12}  slave {:<3} {:>2} {:<30} {:<9} {}  [{check}]",
-                    frame.number,
-                    Self::when(frame.found.start, frame.found.offset),
-                    gap,
-                    r.slave,
-                    r.function & 0x7F,
-                    function::name(r.function),
-                    kind,
-                    frame_summary(r),
-                );
+                let mut text = match &frame.tcp {
+                    Some(place) => format!(
+                        "#{:<6}{} {}  tid {:<5} unit {:<3} {:>2} {:<30} {:<9} {}{}",
+                        frame.number,
+                        Self::when(Some(frame.at), frame.found.offset),
+                        connection(place),
+                        r.transaction.unwrap_or_default(),
+                        r.slave,
+                        r.function & 0x7F,
+                        function::name(r.function),
+                        kind,
+                        frame_summary(r),
+                        place
+                            .response_time
+                            .map(|us| format!("  [{}]", duration(us)))
+                            .unwrap_or_default(),
+                    ),
+                    None => format!(
+                        "#{:<6}{} {:>12}  slave {:<3} {:>2} {:<30} {:<9} {}  [{check}]",
+                        frame.number,
+                        Self::when(frame.found.start, frame.found.offset),
+                        gap,
+                        r.slave,
+                        r.function & 0x7F,
+                        function::name(r.function),
+                        kind,
+                        frame_summary(r),
+                    ),
+                };
                 if !r.valid {
                     text = self.paint(RED, text);
                 } else if r.kind == Kind::Exception {
@@ -340,6 +433,7 @@ impl SniffWriter {
                 slave,
                 request,
                 waited,
+                tcp,
             } => {
                 let waited = waited
                     .map(|w| {
@@ -349,8 +443,13 @@ impl SniffWriter {
                         )
                     })
                     .unwrap_or_default();
+                let on = tcp
+                    .map(|(place, transaction)| {
+                        format!(" on {}, tid {transaction}", connection(&place))
+                    })
+                    .unwrap_or_default();
                 let text = format!(
-                    "       no answer from slave {slave} to {} {} {}{waited}",
+                    "       no answer from slave {slave} to {} {} {}{waited}{on}",
                     request.function(),
                     function::name(request.function()),
                     request_summary(request)
@@ -360,7 +459,14 @@ impl SniffWriter {
         }
     }
 
-    pub fn summary(&mut self, out: &mut dyn Write, counts: &Counts) -> io::Result<()> {
+    /// The counts at the end; `packets` for a pcap or pcapng capture.
+    pub fn summary(
+        &mut self,
+        out: &mut dyn Write,
+        counts: &Counts,
+        packets: Option<&PacketCounts>,
+    ) -> io::Result<()> {
+        let n = |count: u64, noun: &str| super::plural(count as usize, noun);
         match self.format {
             Format::Json => {
                 serde_json::to_writer(
@@ -368,12 +474,23 @@ impl SniffWriter {
                     &JsonSummary {
                         kind: "summary",
                         counts,
+                        packets,
                     },
                 )?;
                 out.write_all(b"\n")
             }
             Format::Table => {
-                let n = |count: u64, noun: &str| super::plural(count as usize, noun);
+                if let Some(p) = packets {
+                    writeln!(
+                        out,
+                        "capture: {} ({} of Modbus connections, {} passed over), {} repeated, {} missing",
+                        n(p.packets, "packet"),
+                        p.modbus,
+                        p.other,
+                        n(p.repeated_bytes, "byte"),
+                        n(p.missing_bytes, "byte"),
+                    )?;
+                }
                 writeln!(
                     out,
                     "summary: {} ({}, {}, {}), {} unanswered, {}, {}",
@@ -403,6 +520,18 @@ impl SniffWriter {
     }
 }
 
+/// `client → server`, as a line shows a connection.
+fn connection(place: &TcpPlace) -> String {
+    match place.from_client {
+        true => format!("{} → {}", place.client, place.server),
+        false => format!("{} ← {}", place.client, place.server),
+    }
+}
+
+fn duration(us: u64) -> String {
+    mbtool_core::model::duration::show(std::time::Duration::from_micros(us))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -420,7 +549,7 @@ mod tests {
         for record in &records {
             writer.record(&mut out, record).unwrap();
         }
-        writer.summary(&mut out, session.counts()).unwrap();
+        writer.summary(&mut out, session.counts(), None).unwrap();
         String::from_utf8(out)
             .unwrap()
             .lines()

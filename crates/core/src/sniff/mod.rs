@@ -2,7 +2,10 @@
 //! apart as requests and answers and paired (`pairing`, `session`), and written as pcap
 //! (`pcap`); a saved capture keeps its timing beside it (`timing`).
 
+pub mod capture;
 mod pairing;
 pub mod pcap;
+pub mod reassembly;
 pub mod session;
+pub mod tcp;
 pub mod timing;

@@ -10,11 +10,11 @@ use crate::codec::{Envelope, Mode};
 /// DLT_USER0.
 pub const LINK_TYPE: u32 = 147;
 
-/// The frame as Wireshark reads it, Modbus RTU: an ASCII frame is written as the RTU frame
-/// it carries.
+/// The frame as Wireshark reads it, Modbus RTU: an ASCII or MBAP frame is written as the
+/// RTU frame it carries.
 pub fn rtu_form(mode: Mode, bytes: &[u8]) -> Vec<u8> {
     match (mode, Envelope::open(mode, bytes)) {
-        (Mode::Ascii, Ok(envelope)) => {
+        (Mode::Ascii | Mode::Tcp, Ok(envelope)) => {
             let mut frame = vec![envelope.slave];
             frame.extend_from_slice(&envelope.pdu);
             let crc = crc16(&frame);

@@ -2,6 +2,7 @@
 //! counted. Pure, like the framer it drives.
 
 use std::collections::BTreeMap;
+use std::net::SocketAddr;
 
 use serde::Serialize;
 
@@ -39,7 +40,26 @@ pub enum Record {
         request: Request,
         /// Microseconds from the end of the request until the next frame (or the end of the capture), when known.
         waited: Option<u64>,
+        /// In a TCP capture: its connection and packet, and its transaction id.
+        tcp: Option<(TcpPlace, u16)>,
     },
+}
+
+/// Where a frame of a TCP capture was.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TcpPlace {
+    /// The client's address and port.
+    pub client: SocketAddr,
+    /// The server's: the side on a Modbus port.
+    pub server: SocketAddr,
+    /// The frame went from the client to the server.
+    pub from_client: bool,
+    /// The packet its last byte came in, numbered from 1 as Wireshark numbers them.
+    pub packet: u64,
+    /// For an answer: the packet of the request it answers.
+    pub request_packet: Option<u64>,
+    /// For an answer: microseconds from its request's packet to its own.
+    pub response_time: Option<u64>,
 }
 
 /// A frame as a session shows it.
@@ -58,6 +78,8 @@ pub struct FrameRecord {
     pub gap: Option<u64>,
     /// An answer that follows its request.
     pub paired: bool,
+    /// In a TCP capture: where the frame was.
+    pub tcp: Option<TcpPlace>,
 }
 
 /// The tally of one slave address.
@@ -98,6 +120,39 @@ pub struct Counts {
     pub slaves: BTreeMap<u8, SlaveCounts>,
 }
 
+impl Counts {
+    /// A frame, told by what it says.
+    pub(super) fn frame(&mut self, report: &FrameReport) {
+        self.frames += 1;
+        let slave = self.slaves.entry(report.slave).or_default();
+        if !report.valid {
+            return;
+        }
+        match report.kind {
+            Kind::Request => {
+                self.requests += 1;
+                slave.requests += 1;
+            }
+            Kind::Response => {
+                self.answers += 1;
+                slave.answers += 1;
+            }
+            Kind::Exception => {
+                self.answers += 1;
+                self.exceptions += 1;
+                slave.answers += 1;
+                slave.exceptions += 1;
+            }
+        }
+    }
+
+    /// A request of `slave` that got no answer.
+    pub(super) fn unanswered(&mut self, slave: u8) {
+        self.unanswered += 1;
+        self.slaves.entry(slave).or_default().unanswered += 1;
+    }
+}
+
 /// Which frames to show: by slave and by function; empty shows all.
 #[derive(Clone, Debug, Default)]
 pub struct Filter {
@@ -108,12 +163,12 @@ pub struct Filter {
 }
 
 impl Filter {
-    fn shows(&self, slave: u8, function: u8) -> bool {
+    pub(super) fn shows(&self, slave: u8, function: u8) -> bool {
         (self.slaves.is_empty() || self.slaves.contains(&slave))
             && (self.functions.is_empty() || self.functions.contains(&(function & 0x7F)))
     }
 
-    fn is_empty(&self) -> bool {
+    pub(super) fn is_empty(&self) -> bool {
         self.slaves.is_empty() && self.functions.is_empty()
     }
 }
@@ -240,8 +295,7 @@ impl Session {
 
     fn unanswered(&mut self, unanswered: Unanswered, out: &mut Vec<Record>) {
         let slave = unanswered.pending.slave;
-        self.counts.unanswered += 1;
-        self.counts.slaves.entry(slave).or_default().unanswered += 1;
+        self.counts.unanswered(slave);
         if self
             .filter
             .shows(slave, unanswered.pending.request.function())
@@ -250,12 +304,12 @@ impl Session {
                 slave,
                 request: unanswered.pending.request,
                 waited: unanswered.waited,
+                tcp: None,
             });
         }
     }
 
     fn frame(&mut self, found: Found, out: &mut Vec<Record>) {
-        self.counts.frames += 1;
         let gap = match (self.last_end, found.start) {
             (Some(end), Some(start)) => Some(start.saturating_sub(end + self.char_us as u64)),
             _ => None,
@@ -278,25 +332,7 @@ impl Session {
             }
             None => self.valid_frame(&found, out),
         };
-        let slave_counts = self.counts.slaves.entry(report.slave).or_default();
-        if report.valid {
-            match report.kind {
-                Kind::Request => {
-                    self.counts.requests += 1;
-                    slave_counts.requests += 1;
-                }
-                Kind::Response => {
-                    self.counts.answers += 1;
-                    slave_counts.answers += 1;
-                }
-                Kind::Exception => {
-                    self.counts.answers += 1;
-                    self.counts.exceptions += 1;
-                    slave_counts.answers += 1;
-                    slave_counts.exceptions += 1;
-                }
-            }
-        }
+        self.counts.frame(&report);
         self.numbered += 1;
         if self.filter.shows(report.slave, report.function) {
             out.push(Record::Frame(Box::new(FrameRecord {
@@ -306,6 +342,7 @@ impl Session {
                 report,
                 gap,
                 paired,
+                tcp: None,
             })));
         }
     }
@@ -346,7 +383,7 @@ impl Session {
 
 /// Gives a read answer the addresses of the request it answers, and cuts bit answers to
 /// the quantity asked.
-fn locate(report: &mut FrameReport, request: &Request) {
+pub(super) fn locate(report: &mut FrameReport, request: &Request) {
     let (address, quantity) = match request {
         Request::ReadCoils { address, quantity }
         | Request::ReadDiscreteInputs { address, quantity }

@@ -144,6 +144,8 @@ pub struct Framer {
     awaiting: Option<(u8, u8)>,
     /// TCP: a header that is no MBAP header; nothing after it can be framed.
     lost: bool,
+    /// TCP seen from outside: look for the next header that reads instead of giving up.
+    resync: bool,
 }
 
 impl Framer {
@@ -168,6 +170,7 @@ impl Framer {
             expect: None,
             awaiting: None,
             lost: false,
+            resync: false,
         }
     }
 
@@ -217,6 +220,20 @@ impl Framer {
         self.ended = true;
         self.scan(out);
         self.flush_noise(out);
+    }
+
+    /// `missing` bytes of the stream never came (a lost segment, a packet cut short by the
+    /// capture): what is buffered is decided now, a frame begun shown as cut off, and the
+    /// framer picks up again at the next frame that reads.
+    pub fn gap(&mut self, missing: u64, out: &mut Vec<Event>) {
+        self.quiet = true;
+        self.ended = true;
+        self.scan(out);
+        self.flush_noise(out);
+        self.ended = false;
+        self.clear();
+        self.offset += missing;
+        self.in_step = false;
     }
 
     /// A master has sent a request to `slave` with `function`: the next frame should be
@@ -312,7 +329,7 @@ impl Framer {
             let look = match self.mode {
                 Mode::Rtu => self.look_rtu(at, in_step),
                 Mode::Ascii => self.look_ascii(at),
-                Mode::Tcp => self.look_tcp(at),
+                Mode::Tcp => self.look_tcp(at, in_step),
             };
             match look {
                 Look::Frame {

@@ -1,0 +1,192 @@
+//! One direction of a TCP connection put back in order from the segments a capture saw:
+//! retransmitted and duplicated bytes kept once, segments out of order put in order, and a
+//! lost segment told as a gap of so many bytes, so that the framer after it picks up at the
+//! next frame instead of losing the rest of the connection.
+
+use std::collections::BTreeMap;
+
+/// At most this many bytes wait for a segment that has not come; past it, that segment is
+/// taken as lost. Memory stays bounded whatever the capture holds.
+const MOST_WAITING: usize = 256 * 1024;
+
+/// What comes out of a stream, in order.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Piece {
+    /// Bytes in order, from one segment.
+    Bytes {
+        /// The bytes.
+        data: Vec<u8>,
+        /// When their segment was captured, in microseconds since 1970.
+        time: u64,
+    },
+    /// Bytes that never came.
+    Gap(u64),
+}
+
+/// One direction of a connection.
+#[derive(Debug, Default)]
+pub struct Stream {
+    /// Where the next byte in order is, counted on 64 bits from the first sequence number
+    /// seen; `None` before the first segment.
+    next: Option<u64>,
+    /// The first sequence number seen, which positions count from.
+    first: u32,
+    /// Segments ahead of `next`, by position: their bytes and their time.
+    waiting: BTreeMap<u64, (Vec<u8>, u64)>,
+    waiting_bytes: usize,
+    /// Bytes seen again (retransmitted or duplicated), kept once.
+    pub repeated: u64,
+    /// Bytes that never came.
+    pub missing: u64,
+}
+
+impl Stream {
+    /// A segment whose first byte has sequence number `sequence` (after its SYN, when it
+    /// has one), captured at `time`; the `cut` bytes after `payload` were not captured.
+    pub fn segment(
+        &mut self,
+        sequence: u32,
+        syn: bool,
+        (payload, cut): (&[u8], u32),
+        time: u64,
+        out: &mut Vec<Piece>,
+    ) {
+        let start = sequence.wrapping_add(u32::from(syn));
+        let next = match self.next {
+            Some(next) => next,
+            None => {
+                self.first = start;
+                self.next = Some(0);
+                0
+            }
+        };
+        if payload.is_empty() {
+            return;
+        }
+        // The position nearest to `next` that the 32-bit sequence number can stand for:
+        // up to half the sequence space ahead, or behind.
+        let ahead = start.wrapping_sub(self.first).wrapping_sub(next as u32);
+        let position = match ahead < 1 << 31 {
+            true => next.checked_add(u64::from(ahead)),
+            false => next.checked_sub(u64::from(ahead.wrapping_neg())),
+        };
+        let Some(position) = position else {
+            self.repeated += payload.len() as u64;
+            return;
+        };
+        let end = position + payload.len() as u64;
+        self.take(position, payload, time, out);
+        if cut > 0 && self.next == Some(end) {
+            out.push(Piece::Gap(u64::from(cut)));
+            self.missing += u64::from(cut);
+            self.next = Some(end + u64::from(cut));
+            self.release(out);
+        }
+        while self.waiting_bytes > MOST_WAITING {
+            self.skip_hole(out);
+        }
+    }
+
+    /// The connection ends: what waits behind a hole comes out after it.
+    pub fn finish(&mut self, out: &mut Vec<Piece>) {
+        while !self.waiting.is_empty() {
+            self.skip_hole(out);
+        }
+    }
+
+    /// Bytes at `position`: those in order go out, with what waited behind them; those
+    /// ahead wait; those already out are counted as repeated.
+    fn take(&mut self, position: u64, payload: &[u8], time: u64, out: &mut Vec<Piece>) {
+        let next = self.next.unwrap_or(0);
+        let end = position + payload.len() as u64;
+        if end <= next {
+            self.repeated += payload.len() as u64;
+            return;
+        }
+        if position > next {
+            let kept = self
+                .waiting
+                .entry(position)
+                .or_insert_with(|| (Vec::new(), time));
+            if kept.0.len() < payload.len() {
+                self.waiting_bytes += payload.len() - kept.0.len();
+                self.repeated += kept.0.len() as u64;
+                *kept = (payload.to_vec(), time);
+            } else {
+                self.repeated += payload.len() as u64;
+            }
+            return;
+        }
+        let skip = (next - position) as usize;
+        self.repeated += skip as u64;
+        out.push(Piece::Bytes {
+            data: payload[skip..].to_vec(),
+            time,
+        });
+        self.next = Some(end);
+        self.release(out);
+    }
+
+    /// What waited behind the bytes out so far, now that they reach it.
+    fn release(&mut self, out: &mut Vec<Piece>) {
+        while let Some(entry) = self.waiting.first_entry() {
+            if *entry.key() > self.next.unwrap_or(0) {
+                break;
+            }
+            let (at, (data, time)) = entry.remove_entry();
+            self.waiting_bytes -= data.len();
+            self.take(at, &data, time, out);
+        }
+    }
+
+    /// The first segment waiting is taken as following a hole: the gap, then it.
+    fn skip_hole(&mut self, out: &mut Vec<Piece>) {
+        let Some((at, (data, time))) = self.waiting.pop_first() else {
+            return;
+        };
+        self.waiting_bytes -= data.len();
+        let next = self.next.unwrap_or(0);
+        if at > next {
+            out.push(Piece::Gap(at - next));
+            self.missing += at - next;
+            self.next = Some(at);
+        }
+        self.take(at, &data, time, out);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn bytes_of(pieces: &[Piece]) -> Vec<u8> {
+        pieces
+            .iter()
+            .flat_map(|p| match p {
+                Piece::Bytes { data, .. } => data.clone(),
+                Piece::Gap(_) => b"|".to_vec(),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn out_of_order_repeated_and_lost_segments() {
+        let mut stream = Stream::default();
+        let mut out = Vec::new();
+        stream.segment(u32::MAX - 1, true, (b"", 0), 0, &mut out);
+        // Across the wrap of the sequence numbers.
+        stream.segment(u32::MAX, false, (b"abc", 0), 1, &mut out);
+        stream.segment(5, false, (b"gh", 0), 3, &mut out);
+        stream.segment(2, false, (b"def", 0), 2, &mut out);
+        stream.segment(2, false, (b"def", 0), 4, &mut out);
+        stream.segment(1, false, (b"cde", 0), 4, &mut out);
+        stream.segment(12, false, (b"xy", 0), 5, &mut out);
+        // A packet the snap length cut: its last 4 bytes are a gap at once.
+        stream.segment(14, false, (b"z", 4), 6, &mut out);
+        stream.segment(19, false, (b"w", 0), 7, &mut out);
+        stream.finish(&mut out);
+        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcdefgh|xyz|w");
+        assert_eq!(stream.missing, 9);
+        assert_eq!(stream.repeated, 6);
+    }
+}

@@ -1,0 +1,414 @@
+//! Modbus in a TCP capture: each connection's two directions put back in order
+//! (`reassembly`), framed by the codec's framer (MBAP, or RTU through a transparent gateway),
+//! each answer paired with its request by transaction and unit id, and the tally kept.
+//! Pure: packets in, records out.
+
+use std::collections::BTreeMap;
+use std::net::SocketAddr;
+
+use serde::Serialize;
+
+use super::capture::{segment, Packet};
+use super::reassembly::{Piece, Stream};
+use super::session::{locate, Counts, Filter, FrameRecord, Record, TcpPlace};
+use crate::codec::answer::check;
+use crate::codec::framing::{Broken, Event, Found, Framer};
+use crate::codec::{Direction, Envelope, Mode, Pdu, Reading, Request};
+use crate::describe::{describe_frame, describe_reading};
+
+/// The port Modbus TCP servers listen on, unless told otherwise.
+pub const MODBUS_PORT: u16 = 502;
+
+/// What a capture held beside its Modbus frames.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct PacketCounts {
+    /// Every packet read.
+    pub packets: u64,
+    /// Packets of TCP connections on a Modbus port.
+    pub modbus: u64,
+    /// Everything else, passed over: other ports, other protocols.
+    pub other: u64,
+    /// Bytes seen twice (retransmitted, duplicated), read once.
+    pub repeated_bytes: u64,
+    /// Bytes that never came (lost segments, packets the snap length cut).
+    pub missing_bytes: u64,
+}
+
+/// One direction of a connection: its bytes in order, and the frames in them.
+struct Side {
+    stream: Stream,
+    framer: Framer,
+}
+
+impl Side {
+    /// Bytes, or their absence, given to the framer.
+    fn frame(&mut self, pieces: &mut Vec<Piece>, events: &mut Vec<Event>) {
+        for piece in pieces.drain(..) {
+            match piece {
+                Piece::Bytes { data, time } => self.framer.push_at(&data, time, events),
+                Piece::Gap(missing) => self.framer.gap(missing, events),
+            }
+        }
+    }
+
+    fn new(mode: Mode) -> Self {
+        // No timing: frames are found by their length (MBAP) or their layout and CRC
+        // (RTU), never by silence.
+        let framer = Framer::new(mode, 0.0, u64::MAX).resynchronising();
+        Self {
+            stream: Stream::default(),
+            framer,
+        }
+    }
+}
+
+/// A request waiting for its answer.
+struct Pending {
+    slave: u8,
+    transaction: u16,
+    request: Request,
+    /// When its last byte came.
+    time: u64,
+    packet: u64,
+}
+
+/// A connection, from the client's side to the server's.
+struct Connection {
+    to_server: Side,
+    to_client: Side,
+    /// By transaction id and unit id; in RTU, in the order sent.
+    pending: Vec<Pending>,
+    /// FINs seen: at two, both sides are done.
+    fins: u8,
+}
+
+/// A Modbus TCP capture's session: packets in, records out.
+pub struct TcpSession {
+    mode: Mode,
+    ports: Vec<u16>,
+    filter: Filter,
+    connections: BTreeMap<(SocketAddr, SocketAddr), Connection>,
+    counts: Counts,
+    packets: PacketCounts,
+    numbered: u64,
+    /// The first packet's time: frames are timed from it, as Wireshark does.
+    first_time: Option<u64>,
+    last_time: u64,
+    pieces: Vec<Piece>,
+    events: Vec<Event>,
+}
+
+impl TcpSession {
+    /// `mode`: MBAP (`Mode::Tcp`) or RTU frames (`Mode::Rtu`) in the streams; `ports`: the
+    /// servers' ports.
+    pub fn new(mode: Mode, ports: Vec<u16>, filter: Filter) -> Self {
+        Self {
+            mode,
+            ports,
+            filter,
+            connections: BTreeMap::new(),
+            counts: Counts::default(),
+            packets: PacketCounts::default(),
+            numbered: 0,
+            first_time: None,
+            last_time: 0,
+            pieces: Vec::new(),
+            events: Vec::new(),
+        }
+    }
+
+    /// The first packet's time, in microseconds since 1970: frames are timed from it.
+    pub fn first_time(&self) -> u64 {
+        self.first_time.unwrap_or(0)
+    }
+
+    /// The tally of frames so far.
+    pub fn counts(&self) -> &Counts {
+        &self.counts
+    }
+
+    /// The tally of packets so far.
+    pub fn packet_counts(&self) -> PacketCounts {
+        let mut counts = self.packets.clone();
+        for connection in self.connections.values() {
+            for side in [&connection.to_server, &connection.to_client] {
+                counts.repeated_bytes += side.stream.repeated;
+                counts.missing_bytes += side.stream.missing;
+            }
+        }
+        counts
+    }
+
+    /// One packet of the capture.
+    pub fn packet(&mut self, packet: &Packet, out: &mut Vec<Record>) {
+        self.packets.packets += 1;
+        let first = *self.first_time.get_or_insert(packet.time_us);
+        self.last_time = packet.time_us.max(first);
+        let Ok(segment) = segment(packet) else {
+            self.packets.other += 1;
+            return;
+        };
+        let (client, server, from_client) = if self.ports.contains(&segment.destination.port()) {
+            (segment.source, segment.destination, true)
+        } else if self.ports.contains(&segment.source.port()) {
+            (segment.destination, segment.source, false)
+        } else {
+            self.packets.other += 1;
+            return;
+        };
+        self.packets.modbus += 1;
+        let key = (client, server);
+        if segment.syn && from_client {
+            // A new connection on the same addresses: the old one is over.
+            self.close(key, out);
+        }
+        let mode = self.mode;
+        let connection = self.connections.entry(key).or_insert_with(|| Connection {
+            to_server: Side::new(mode),
+            to_client: Side::new(mode),
+            pending: Vec::new(),
+            fins: 0,
+        });
+        let side = match from_client {
+            true => &mut connection.to_server,
+            false => &mut connection.to_client,
+        };
+        let mut pieces = std::mem::take(&mut self.pieces);
+        side.stream.segment(
+            segment.sequence,
+            segment.syn,
+            (segment.payload, segment.cut),
+            packet.time_us,
+            &mut pieces,
+        );
+        let mut events = std::mem::take(&mut self.events);
+        side.frame(&mut pieces, &mut events);
+        self.pieces = pieces;
+        let place = TcpPlace {
+            client,
+            server,
+            from_client,
+            packet: packet.number,
+            request_packet: None,
+            response_time: None,
+        };
+        self.read_events(&mut events, place, out);
+        self.events = events;
+        if segment.rst {
+            self.close(key, out);
+        } else if segment.fin {
+            let done = self.connections.get_mut(&key).is_some_and(|c| {
+                c.fins += 1;
+                c.fins >= 2
+            });
+            if done {
+                self.close(key, out);
+            }
+        }
+    }
+
+    /// The end of the capture: what every connection still holds is decided, and the
+    /// requests still waiting are unanswered.
+    pub fn finish(&mut self, out: &mut Vec<Record>) {
+        let keys: Vec<_> = self.connections.keys().copied().collect();
+        for key in keys {
+            self.close(key, out);
+        }
+    }
+
+    /// A connection is over: its streams are read to their end, and what still waits
+    /// for an answer is unanswered.
+    fn close(&mut self, key: (SocketAddr, SocketAddr), out: &mut Vec<Record>) {
+        for from_client in [true, false] {
+            let Some(connection) = self.connections.get_mut(&key) else {
+                return;
+            };
+            let side = match from_client {
+                true => &mut connection.to_server,
+                false => &mut connection.to_client,
+            };
+            let (mut pieces, mut events) = (Vec::new(), Vec::new());
+            side.stream.finish(&mut pieces);
+            side.frame(&mut pieces, &mut events);
+            side.framer.finish(&mut events);
+            let place = TcpPlace {
+                client: key.0,
+                server: key.1,
+                from_client,
+                packet: self.packets.packets,
+                request_packet: None,
+                response_time: None,
+            };
+            self.read_events(&mut events, place, out);
+        }
+        let Some(connection) = self.connections.remove(&key) else {
+            return;
+        };
+        for side in [&connection.to_server, &connection.to_client] {
+            self.packets.repeated_bytes += side.stream.repeated;
+            self.packets.missing_bytes += side.stream.missing;
+        }
+        for pending in connection.pending {
+            self.unanswered(pending, key, out);
+        }
+    }
+
+    fn unanswered(
+        &mut self,
+        pending: Pending,
+        key: (SocketAddr, SocketAddr),
+        out: &mut Vec<Record>,
+    ) {
+        self.counts.unanswered(pending.slave);
+        if self.filter.shows(pending.slave, pending.request.function()) {
+            let place = TcpPlace {
+                client: key.0,
+                server: key.1,
+                from_client: true,
+                packet: pending.packet,
+                request_packet: None,
+                response_time: None,
+            };
+            out.push(Record::Unanswered {
+                slave: pending.slave,
+                request: pending.request,
+                waited: Some(self.last_time.saturating_sub(pending.time)),
+                tcp: Some((place, pending.transaction)),
+            });
+        }
+    }
+
+    fn read_events(&mut self, events: &mut Vec<Event>, place: TcpPlace, out: &mut Vec<Record>) {
+        for event in events.drain(..) {
+            match event {
+                Event::Noise(noise) => {
+                    self.counts.noise_bytes += noise.len;
+                    if self.filter.is_empty() {
+                        let at = self.at(noise.start);
+                        out.push(Record::Noise {
+                            kept: noise.kept,
+                            len: noise.len,
+                            offset: noise.offset,
+                            time: Some(at),
+                            at,
+                        });
+                    }
+                }
+                Event::Frame(found) => self.frame(found, place, out),
+            }
+        }
+    }
+
+    /// Microseconds from the first packet.
+    fn at(&self, time: Option<u64>) -> u64 {
+        time.unwrap_or(self.last_time)
+            .saturating_sub(self.first_time.unwrap_or(0))
+    }
+
+    fn frame(&mut self, found: Found, mut place: TcpPlace, out: &mut Vec<Record>) {
+        let direction = match place.from_client {
+            true => Direction::Request,
+            false => Direction::Response,
+        };
+        let key = (place.client, place.server);
+        let time = found.end.unwrap_or(self.last_time);
+        let report = match (found.broken, Envelope::open(self.mode, &found.bytes)) {
+            (None, Ok(envelope)) => match Pdu::decode(&envelope.pdu, direction) {
+                Ok(pdu) => {
+                    let request = self.pair(&envelope, &pdu, key, time, &mut place, out);
+                    let mut report =
+                        describe_reading(self.mode, &envelope, Reading::One(pdu.clone()));
+                    if let (Some(request), Pdu::Response(_)) = (&request, &pdu) {
+                        locate(&mut report, request);
+                    }
+                    report
+                }
+                Err(_) => {
+                    self.counts.malformed += 1;
+                    describe_frame(&found.bytes, Some(self.mode), Some(direction))
+                }
+            },
+            (broken, _) => {
+                let mut report = describe_frame(&found.bytes, Some(self.mode), Some(direction));
+                report.valid = false;
+                if broken == Some(Broken::Incomplete) {
+                    report.error =
+                        Some("incomplete: bytes of the frame are missing from the capture".into());
+                }
+                self.counts.crc_errors += u64::from(broken == Some(Broken::Checksum));
+                report
+            }
+        };
+        self.counts.frame(&report);
+        self.numbered += 1;
+        if self.filter.shows(report.slave, report.function) {
+            out.push(Record::Frame(Box::new(FrameRecord {
+                number: self.numbered,
+                at: self.at(found.start),
+                paired: place.request_packet.is_some(),
+                found,
+                report,
+                gap: None,
+                tcp: Some(place),
+            })));
+        }
+    }
+
+    /// A request waits for its answer; an answer is paired with its request, which it
+    /// returns, and `place` learns the request's packet and the response time.
+    fn pair(
+        &mut self,
+        envelope: &Envelope,
+        pdu: &Pdu,
+        key: (SocketAddr, SocketAddr),
+        time: u64,
+        place: &mut TcpPlace,
+        out: &mut Vec<Record>,
+    ) -> Option<Request> {
+        let by_transaction = self.mode == Mode::Tcp;
+        let connection = self.connections.get_mut(&key)?;
+        let slave = envelope.slave;
+        let transaction = envelope.transaction;
+        match pdu {
+            Pdu::Request(request) => {
+                // A transaction id used again while its request waits: that one got no answer.
+                let reused = connection.pending.iter().position(|p| {
+                    by_transaction && p.transaction == transaction && p.slave == slave
+                });
+                let pending = Pending {
+                    slave,
+                    transaction,
+                    request: request.clone(),
+                    time,
+                    packet: place.packet,
+                };
+                connection.pending.push(pending);
+                if let Some(index) = reused {
+                    let old = connection.pending.remove(index);
+                    self.unanswered(old, key, out);
+                }
+                None
+            }
+            answer => {
+                // MBAP pairs by transaction and unit id alone, as Wireshark does; RTU by
+                // unit, function and an answer that fits the request, oldest first.
+                let index = connection
+                    .pending
+                    .iter()
+                    .position(|p| match by_transaction {
+                        true => p.transaction == transaction && p.slave == slave,
+                        false => {
+                            p.slave == slave
+                                && p.request.function() == answer.function() & 0x7F
+                                && (matches!(answer, Pdu::Exception(_))
+                                    || check(&p.request, answer).is_ok())
+                        }
+                    })?;
+                let pending = connection.pending.remove(index);
+                place.request_packet = Some(pending.packet);
+                place.response_time = Some(time.saturating_sub(pending.time));
+                Some(pending.request)
+            }
+        }
+    }
+}
