@@ -11,6 +11,10 @@ missing=()
 command -v socat >/dev/null || missing+=(socat)
 command -v mbpoll >/dev/null || missing+=(mbpoll)
 command -v tmux >/dev/null || missing+=(tmux)
+# tcpdump records the loopback, tshark (with editcap) is the reference dissector of the
+# Modbus TCP capture tests.
+command -v tcpdump >/dev/null || missing+=(tcpdump)
+command -v tshark >/dev/null || missing+=(tshark)
 command -v pkg-config >/dev/null || missing+=(pkg-config)
 pkg-config --exists libudev 2>/dev/null || missing+=(libudev-dev)
 pkg-config --exists libmodbus 2>/dev/null || missing+=(libmodbus-dev)

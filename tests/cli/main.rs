@@ -29,4 +29,5 @@ mod serve;
 mod serve_framing;
 mod sniff;
 mod sniff_faults;
+mod sniff_tcp;
 mod watch;

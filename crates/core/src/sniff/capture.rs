@@ -191,6 +191,8 @@ pub struct Segment<'a> {
     pub fin: bool,
     /// The connection was reset.
     pub rst: bool,
+    /// The next byte the sender expects from the other side, when it says.
+    pub acknowledgement: Option<u32>,
     /// The payload as captured.
     pub payload: &'a [u8],
     /// Payload bytes the capture left out (a snap length shorter than the packet).
@@ -257,6 +259,7 @@ pub fn segment<'a>(packet: &Packet<'a>) -> Result<Segment<'a>, NotTcp> {
         syn: tcp.syn(),
         fin: tcp.fin(),
         rst: tcp.rst(),
+        acknowledgement: tcp.ack().then(|| tcp.acknowledgment_number()),
         payload: tcp.payload(),
         cut,
     })

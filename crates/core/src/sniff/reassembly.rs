@@ -9,6 +9,10 @@ use std::collections::BTreeMap;
 /// taken as lost. Memory stays bounded whatever the capture holds.
 const MOST_WAITING: usize = 256 * 1024;
 
+/// At most this many segments wait: a capture of one direction alone has no
+/// acknowledgements to tell a lost segment by.
+const MOST_SEGMENTS_WAITING: usize = 64;
+
 /// What comes out of a stream, in order.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Piece {
@@ -63,13 +67,7 @@ impl Stream {
         if payload.is_empty() {
             return;
         }
-        // The position nearest to `next` that the 32-bit sequence number can stand for:
-        // up to half the sequence space ahead, or behind.
-        let ahead = start.wrapping_sub(self.first).wrapping_sub(next as u32);
-        let position = match ahead < 1 << 31 {
-            true => next.checked_add(u64::from(ahead)),
-            false => next.checked_sub(u64::from(ahead.wrapping_neg())),
-        };
+        let position = self.position(start, next);
         let Some(position) = position else {
             self.repeated += payload.len() as u64;
             return;
@@ -82,8 +80,43 @@ impl Stream {
             self.next = Some(end + u64::from(cut));
             self.release(out);
         }
-        while self.waiting_bytes > MOST_WAITING {
+        while self.waiting_bytes > MOST_WAITING || self.waiting.len() > MOST_SEGMENTS_WAITING {
             self.skip_hole(out);
+        }
+    }
+
+    /// The other side acknowledged every byte before `acknowledgement`: bytes before it that
+    /// never came were lost to the capture, not to the connection, and will not come.
+    pub fn acknowledged(&mut self, acknowledgement: u32, out: &mut Vec<Piece>) {
+        let Some(next) = self.next else {
+            return;
+        };
+        let Some(until) = self.position(acknowledgement, next) else {
+            return;
+        };
+        while self
+            .waiting
+            .first_key_value()
+            .is_some_and(|(at, _)| *at < until)
+        {
+            self.skip_hole(out);
+        }
+        let next = self.next.unwrap_or(0);
+        if until > next {
+            out.push(Piece::Gap(until - next));
+            self.missing += until - next;
+            self.next = Some(until);
+            self.release(out);
+        }
+    }
+
+    /// The position nearest to `next` that the 32-bit sequence number `sequence` can stand
+    /// for: up to half the sequence space ahead, or behind.
+    fn position(&self, sequence: u32, next: u64) -> Option<u64> {
+        let ahead = sequence.wrapping_sub(self.first).wrapping_sub(next as u32);
+        match ahead < 1 << 31 {
+            true => next.checked_add(u64::from(ahead)),
+            false => next.checked_sub(u64::from(ahead.wrapping_neg())),
         }
     }
 
@@ -180,13 +213,21 @@ mod tests {
         stream.segment(2, false, (b"def", 0), 2, &mut out);
         stream.segment(2, false, (b"def", 0), 4, &mut out);
         stream.segment(1, false, (b"cde", 0), 4, &mut out);
-        stream.segment(12, false, (b"xy", 0), 5, &mut out);
+        // Acknowledged by the other side: the bytes before 12 were lost to the capture.
+        stream.segment(12, false, (b"ij", 0), 5, &mut out);
+        stream.acknowledged(12, &mut out);
+        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcdefgh|ij");
+        stream.acknowledged(16, &mut out);
+        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcdefgh|ij|");
         // A packet the snap length cut: its last 4 bytes are a gap at once.
-        stream.segment(14, false, (b"z", 4), 6, &mut out);
-        stream.segment(19, false, (b"w", 0), 7, &mut out);
+        stream.segment(16, false, (b"z", 4), 6, &mut out);
+        stream.segment(21, false, (b"w", 0), 7, &mut out);
         stream.finish(&mut out);
-        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcdefgh|xyz|w");
-        assert_eq!(stream.missing, 9);
+        assert_eq!(
+            String::from_utf8(bytes_of(&out)).unwrap(),
+            "abcdefgh|ij|z|w"
+        );
+        assert_eq!(stream.missing, 11);
         assert_eq!(stream.repeated, 6);
     }
 }

@@ -169,11 +169,12 @@ impl TcpSession {
             pending: Vec::new(),
             fins: 0,
         });
-        let side = match from_client {
-            true => &mut connection.to_server,
-            false => &mut connection.to_client,
+        let (side, other) = match from_client {
+            true => (&mut connection.to_server, &mut connection.to_client),
+            false => (&mut connection.to_client, &mut connection.to_server),
         };
         let mut pieces = std::mem::take(&mut self.pieces);
+        let mut events = std::mem::take(&mut self.events);
         side.stream.segment(
             segment.sequence,
             segment.syn,
@@ -181,8 +182,13 @@ impl TcpSession {
             packet.time_us,
             &mut pieces,
         );
-        let mut events = std::mem::take(&mut self.events);
         side.frame(&mut pieces, &mut events);
+        // What this side acknowledges and the capture never had is a gap on the other.
+        let mut acknowledged = Vec::new();
+        if let Some(acknowledgement) = segment.acknowledgement {
+            other.stream.acknowledged(acknowledgement, &mut pieces);
+            other.frame(&mut pieces, &mut acknowledged);
+        }
         self.pieces = pieces;
         let place = TcpPlace {
             client,
@@ -193,6 +199,11 @@ impl TcpSession {
             response_time: None,
         };
         self.read_events(&mut events, place, out);
+        let other_place = TcpPlace {
+            from_client: !from_client,
+            ..place
+        };
+        self.read_events(&mut acknowledged, other_place, out);
         self.events = events;
         if segment.rst {
             self.close(key, out);
@@ -313,21 +324,38 @@ impl TcpSession {
         let key = (place.client, place.server);
         let time = found.end.unwrap_or(self.last_time);
         let report = match (found.broken, Envelope::open(self.mode, &found.bytes)) {
-            (None, Ok(envelope)) => match Pdu::decode(&envelope.pdu, direction) {
-                Ok(pdu) => {
-                    let request = self.pair(&envelope, &pdu, key, time, &mut place, out);
-                    let mut report =
-                        describe_reading(self.mode, &envelope, Reading::One(pdu.clone()));
-                    if let (Some(request), Pdu::Response(_)) = (&request, &pdu) {
-                        locate(&mut report, request);
+            (None, Ok(envelope)) => {
+                let decoded = Pdu::decode(&envelope.pdu, direction);
+                // A request that breaks its function's rules is still answered, with an
+                // exception: it waits for that answer all the same.
+                let pdu = match (&decoded, direction) {
+                    (Ok(pdu), _) => Some(pdu.clone()),
+                    (Err(_), Direction::Request) => envelope.pdu.split_first().map(|(f, data)| {
+                        Pdu::Request(Request::Other {
+                            function: *f,
+                            data: data.to_vec(),
+                        })
+                    }),
+                    (Err(_), Direction::Response) => None,
+                };
+                let request = pdu
+                    .as_ref()
+                    .and_then(|pdu| self.pair(&envelope, pdu, key, time, &mut place, out));
+                match decoded {
+                    Ok(pdu) => {
+                        let answer_to_read = matches!(pdu, Pdu::Response(_));
+                        let mut report = describe_reading(self.mode, &envelope, Reading::One(pdu));
+                        if let (Some(request), true) = (&request, answer_to_read) {
+                            locate(&mut report, request);
+                        }
+                        report
                     }
-                    report
+                    Err(_) => {
+                        self.counts.malformed += 1;
+                        describe_frame(&found.bytes, Some(self.mode), Some(direction))
+                    }
                 }
-                Err(_) => {
-                    self.counts.malformed += 1;
-                    describe_frame(&found.bytes, Some(self.mode), Some(direction))
-                }
-            },
+            }
             (broken, _) => {
                 let mut report = describe_frame(&found.bytes, Some(self.mode), Some(direction));
                 report.valid = false;

@@ -1,0 +1,319 @@
+//! `sniff --input` on captures of Modbus TCP, against Wireshark's own dissector: tcpdump
+//! records the loopback while pymodbus, mbpoll and raw sockets talk to `serve` and to
+//! pymodbus's server, and every PDU tshark finds mbtool finds, paired alike, with the
+//! same response time to the microsecond; in pcap, pcapng and a capture on `any`.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::io::{BufRead, BufReader};
+use std::path::Path;
+use std::process::{Command as Process, Stdio};
+
+use crate::support::{command_exists, mbtool, peer_available, pymodbus_tcp, serve_tcp, Stopped};
+
+/// A PDU as both tools place it: the client's port, packet, transaction id, unit id,
+/// function (without the exception bit).
+type Place = (u16, u64, u16, u8, u8);
+
+/// For an answer: the request's packet and the response time in microseconds.
+type Pairing = (u64, u64);
+
+/// tcpdump recording `interface` to `file`, once it says it listens.
+fn tcpdump(interface: &str, file: &Path, filter: &str) -> Stopped {
+    let mut child = Process::new("tcpdump")
+        .args(["-i", interface, "--immediate-mode", "-U", "-s", "0", "-w"])
+        .arg(file)
+        .arg(filter)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("tcpdump starts");
+    let stderr = child.stderr.take().expect("tcpdump's stderr");
+    let mut lines = BufReader::new(stderr).lines();
+    let listening = lines.any(|line| line.is_ok_and(|l| l.contains("listening on")));
+    assert!(listening, "tcpdump did not start listening on {interface}");
+    // Its later words are not read: they must not fill the pipe.
+    std::thread::spawn(move || lines.for_each(drop));
+    Stopped(child)
+}
+
+/// Ends a tcpdump as Ctrl-C does, so that it writes out what it holds.
+fn stop(mut tcpdump: Stopped) {
+    let pid = tcpdump.0.id().to_string();
+    let _ = Process::new("kill").args(["-INT", &pid]).status();
+    let _ = tcpdump.0.wait();
+}
+
+/// What tshark's Modbus/TCP dissector finds on `port`.
+fn tshark(file: &Path, port: u16) -> BTreeMap<Place, Option<Pairing>> {
+    let output = Process::new("tshark")
+        .arg("-r")
+        .arg(file)
+        .args(["-o", &format!("mbtcp.tcp.port:{port}")])
+        .args(["-Y", &format!("mbtcp && tcp.port == {port}")])
+        .args(["-T", "fields", "-E", "occurrence=a", "-E", "aggregator=,"])
+        .args([
+            "-e",
+            "frame.number",
+            "-e",
+            "mbtcp.trans_id",
+            "-e",
+            "mbtcp.unit_id",
+        ])
+        .args(["-e", "modbus.func_code", "-e", "modbus.request_frame"])
+        .args([
+            "-e",
+            "modbus.response_time",
+            "-e",
+            "tcp.srcport",
+            "-e",
+            "tcp.dstport",
+        ])
+        .output()
+        .expect("tshark runs");
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let mut pdus = BTreeMap::new();
+    for line in String::from_utf8_lossy(&output.stdout).lines() {
+        let fields: Vec<Vec<&str>> = line
+            .split('\t')
+            .map(|f| f.split(',').filter(|v| !v.is_empty()).collect())
+            .collect();
+        let packet: u64 = fields[0][0].parse().unwrap();
+        let count = fields[1].len();
+        let ports: Vec<u16> = [&fields[6], &fields[7]]
+            .map(|f| f[0].parse().unwrap())
+            .to_vec();
+        let client = if ports[1] == port { ports[0] } else { ports[1] };
+        for i in 0..count {
+            let function: u8 = fields[3].get(i).map_or(0, |f| f.parse().unwrap());
+            let place = (
+                client,
+                packet,
+                fields[1][i].parse().unwrap(),
+                fields[2][i].parse().unwrap(),
+                function & 0x7F,
+            );
+            // Where some PDUs of a packet are paired and others not, which is which is not
+            // told: those are left out of the pairing compared.
+            let paired = (fields[4].len() == count && fields[5].len() == count).then(|| {
+                let seconds: f64 = fields[5][i].parse().unwrap();
+                (
+                    fields[4][i].parse().unwrap(),
+                    (seconds * 1e6).round() as u64,
+                )
+            });
+            pdus.insert(place, paired);
+        }
+    }
+    pdus
+}
+
+/// What mbtool's sniff finds on `port`, as JSON Lines.
+fn mbtool_sniff(file: &Path, port: u16) -> (BTreeMap<Place, Option<Pairing>>, String) {
+    let output = mbtool()
+        .args(["sniff", "--input"])
+        .arg(file)
+        .args(["--tcp-port", &port.to_string(), "--json"])
+        .output()
+        .expect("mbtool runs");
+    let stdout = String::from_utf8_lossy(&output.stdout).into_owned();
+    assert!(
+        output.status.success(),
+        "{}",
+        String::from_utf8_lossy(&output.stderr)
+    );
+    let mut pdus = BTreeMap::new();
+    for line in stdout.lines() {
+        let json: serde_json::Value = serde_json::from_str(line).unwrap();
+        if json["type"] != "frame" {
+            continue;
+        }
+        let number = |key: &str| json[key].as_u64();
+        let client = json["client"].as_str().unwrap().rsplit(':').next().unwrap();
+        let place = (
+            client.parse().unwrap(),
+            number("packet").unwrap(),
+            number("transaction").unwrap() as u16,
+            number("slave").unwrap() as u8,
+            number("function").unwrap() as u8 & 0x7F,
+        );
+        let paired = number("request_packet").zip(number("response_time_us"));
+        pdus.insert(place, paired);
+    }
+    (pdus, stdout)
+}
+
+/// The client ports of the connections where the capture missed bytes that were sent
+/// (tcpdump on `any` does, now and then): there a PDU after the hole is placed by tshark in
+/// its own packet at once, and by mbtool once the hole is known to be one.
+fn lossy(file: &Path, port: u16) -> BTreeSet<u16> {
+    let output = Process::new("tshark")
+        .arg("-r")
+        .arg(file)
+        .args([
+            "-Y",
+            "tcp.analysis.lost_segment || tcp.analysis.ack_lost_segment",
+        ])
+        .args(["-T", "fields", "-e", "tcp.srcport", "-e", "tcp.dstport"])
+        .output()
+        .expect("tshark runs");
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .flat_map(|line| {
+            line.split('\t')
+                .map(|p| p.parse::<u16>().unwrap_or(port))
+                .collect::<Vec<_>>()
+        })
+        .filter(|p| *p != port)
+        .collect()
+}
+
+/// Every PDU tshark finds, mbtool finds and no other; every answer tshark pairs, mbtool
+/// pairs with the same request and the same response time. On a connection the capture
+/// lost bytes of, the same PDUs are found, in the same or a later packet.
+fn agree(file: &Path, port: u16) -> String {
+    let lost = lossy(file, port);
+    let (mut theirs, (mut ours, json)) = (tshark(file, port), mbtool_sniff(file, port));
+    assert!(
+        theirs.len() > 40,
+        "too little traffic on {port}: {theirs:?}"
+    );
+    let of_lossy = |pdus: &mut BTreeMap<Place, Option<Pairing>>| {
+        let taken: BTreeSet<_> = pdus
+            .keys()
+            .filter(|p| lost.contains(&p.0))
+            .copied()
+            .collect();
+        pdus.retain(|p, _| !lost.contains(&p.0));
+        taken
+            .into_iter()
+            .map(|(c, _, t, u, f)| (c, t, u, f))
+            .collect::<BTreeSet<_>>()
+    };
+    assert_eq!(
+        of_lossy(&mut ours),
+        of_lossy(&mut theirs),
+        "{}",
+        file.display()
+    );
+    let places =
+        |pdus: &BTreeMap<Place, Option<Pairing>>| pdus.keys().copied().collect::<BTreeSet<_>>();
+    let missed: Vec<_> = places(&theirs)
+        .difference(&places(&ours))
+        .copied()
+        .collect();
+    assert_eq!(
+        missed,
+        [],
+        "PDUs tshark finds in {} and mbtool does not",
+        file.display()
+    );
+    // tshark passes over a request whose first segment is shorter than an MBAP header
+    // (the one written a byte at a time, transaction 200); mbtool puts it together.
+    let more: Vec<_> = places(&ours)
+        .difference(&places(&theirs))
+        .copied()
+        .collect();
+    assert!(
+        more.iter().all(|place| place.2 == 200),
+        "{more:?} in {}",
+        file.display()
+    );
+    let mut paired = 0;
+    for (place, pairing) in &theirs {
+        if let Some(pairing) = pairing {
+            assert_eq!(
+                ours[place],
+                Some(*pairing),
+                "{place:?} in {}",
+                file.display()
+            );
+            paired += 1;
+        }
+    }
+    assert!(paired > 5, "tshark paired only {paired} answers on {port}");
+    json
+}
+
+#[test]
+fn every_pdu_tshark_finds_mbtool_finds_paired_alike() {
+    let root = Process::new("id")
+        .arg("-u")
+        .output()
+        .is_ok_and(|o| o.stdout == b"0\n");
+    let tools = ["tcpdump", "tshark", "editcap", "mbpoll"]
+        .iter()
+        .all(|t| command_exists(t));
+    if !peer_available(
+        "tcpdump, tshark, editcap and mbpoll, as root (captures the loopback)",
+        root && tools,
+    ) {
+        return;
+    }
+    let Some((_pymodbus, pymodbus_port)) = pymodbus_tcp(&[]) else {
+        return;
+    };
+    let (_serve, serve_port, serve_tcp_port) = serve_tcp(&[]);
+    let pymodbus_tcp_port: u16 = pymodbus_port[1]
+        .rsplit(':')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let on_lo = dir.path().join("lo.pcap");
+    let on_any = dir.path().join("any.pcap");
+    let filter = format!("tcp port {serve_tcp_port} or tcp port {pymodbus_tcp_port}");
+    let lo = tcpdump("lo", &on_lo, &filter);
+    let any = tcpdump("any", &on_any, &filter);
+
+    let traffic = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/mbap_traffic.py");
+    for port in [serve_tcp_port, pymodbus_tcp_port] {
+        let status = Process::new("timeout")
+            .args(["60", "python3", traffic, &port.to_string()])
+            .status()
+            .expect("python3 runs");
+        assert!(status.success(), "the traffic to {port}");
+        let status = Process::new("mbpoll")
+            .args([
+                "-m",
+                "tcp",
+                "-p",
+                &port.to_string(),
+                "-a",
+                "17",
+                "-r",
+                "1",
+                "-c",
+                "4",
+            ])
+            .args(["-1", "127.0.0.1"])
+            .stdout(Stdio::null())
+            .status()
+            .expect("mbpoll runs");
+        assert!(status.success());
+    }
+    for args in ["read-holding 17 400108 3", "read-coils 17 1 20", "info 17"] {
+        let _ = mbtool().args(&serve_port).args(args.split(' ')).output();
+    }
+    stop(lo);
+    stop(any);
+
+    let pcapng = dir.path().join("lo.pcapng");
+    let status = Process::new("editcap")
+        .args(["-F", "pcapng"])
+        .arg(&on_lo)
+        .arg(&pcapng)
+        .status()
+        .expect("editcap runs");
+    assert!(status.success());
+    for port in [serve_tcp_port, pymodbus_tcp_port] {
+        let from_pcap = agree(&on_lo, port);
+        let from_pcapng = agree(&pcapng, port);
+        assert_eq!(from_pcapng, from_pcap, "the same capture as pcapng");
+        agree(&on_any, port);
+    }
+}
