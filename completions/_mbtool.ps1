@@ -1023,7 +1023,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;sniff' {
-            [CompletionResult]::new('--input', '--input', [CompletionResultType]::ParameterName, 'Read a raw byte capture instead of the port (''-'' for standard input)')
+            [CompletionResult]::new('--input', '--input', [CompletionResultType]::ParameterName, 'Read a capture instead of the port (''-'' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line')
+            [CompletionResult]::new('--tcp-port', '--tcp-port', [CompletionResultType]::ParameterName, 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)')
             [CompletionResult]::new('--save', '--save', [CompletionResultType]::ParameterName, 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it')
             [CompletionResult]::new('--pcap', '--pcap', [CompletionResultType]::ParameterName, 'Also write the frames to a pcap file for Wireshark (link type 147, see above)')
             [CompletionResult]::new('--slave', '--slave', [CompletionResultType]::ParameterName, 'Show only the frames of this slave; repeatable')

@@ -316,4 +316,59 @@ fn every_pdu_tshark_finds_mbtool_finds_paired_alike() {
         assert_eq!(from_pcapng, from_pcap, "the same capture as pcapng");
         agree(&on_any, port);
     }
+    cut_off_capture_is_shown_then_refused(&on_lo, serve_tcp_port);
+}
+
+/// A capture cut off in the middle of a record (tcpdump killed) shows what came before,
+/// then says so in one line with exit status 2.
+fn cut_off_capture_is_shown_then_refused(whole: &Path, port: u16) {
+    let bytes = std::fs::read(whole).unwrap();
+    let cut = whole.with_extension("cut.pcap");
+    std::fs::write(&cut, &bytes[..bytes.len() - 7]).unwrap();
+    let output = mbtool()
+        .args(["sniff", "--input"])
+        .arg(&cut)
+        .args(["--tcp-port", &port.to_string()])
+        .output()
+        .unwrap();
+    let (stdout, stderr) = (
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr),
+    );
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(
+        stdout.contains("request") && stdout.contains("\nsummary: "),
+        "{stdout}"
+    );
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("ends in the middle of a record"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn a_file_that_is_no_capture_or_a_port_without_one_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("plant.pcap");
+    std::fs::write(&file, "these are not packets\n").unwrap();
+    for (args, says) in [
+        (
+            vec!["sniff", "--input", file.to_str().unwrap()],
+            "is neither a pcap nor a pcapng file",
+        ),
+        (
+            vec!["sniff", "--port", "/dev/null", "--tcp-port", "5020"],
+            "--tcp-port picks the Modbus connections of a capture",
+        ),
+    ] {
+        let output = mbtool().args(&args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.starts_with("mbtool: ") && stderr.contains(says),
+            "{stderr}"
+        );
+        assert_eq!(stderr.lines().count(), 1);
+    }
 }

@@ -65,6 +65,13 @@ pub enum CaptureError {
     Io(String),
 }
 
+/// The buffer records are read into, grown for a larger record up to [`MOST_RECORD`].
+const BUFFER: usize = 1 << 16;
+
+/// The largest record read: a loopback capture holds packets of 64 KiB and more (segments
+/// the kernel coalesced); a length past this is a damaged file, not a packet.
+const MOST_RECORD: usize = 16 << 20;
+
 /// An interface of a pcapng section: its link type, and the units and offset of its times.
 #[derive(Clone, Copy)]
 struct Interface {
@@ -93,7 +100,7 @@ pub fn read_packets<R: Read + Send>(
     input: R,
     mut each: impl FnMut(Packet) -> bool,
 ) -> Result<u64, CaptureError> {
-    let mut reader = match create_reader(1 << 20, input) {
+    let mut reader = match create_reader(BUFFER, input) {
         Ok(reader) => reader,
         Err(PcapError::Eof) => return Err(CaptureError::Empty),
         Err(PcapError::ReadError) => return Err(CaptureError::Io("read failed".into())),
@@ -160,13 +167,21 @@ pub fn read_packets<R: Read + Send>(
                 reader.consume(size);
             }
             Err(PcapError::Eof) => return Ok(count),
-            Err(PcapError::Incomplete(_)) => {
+            Err(PcapError::Incomplete(_) | PcapError::BufferTooSmall) => {
                 if reader.reader_exhausted() {
                     return Err(CaptureError::Truncated(count));
                 }
+                let before = reader.data().len();
                 reader
                     .refill()
                     .map_err(|_| CaptureError::Io("read failed".into()))?;
+                // Nothing more fits: a record larger than the buffer.
+                if reader.data().len() == before && !reader.reader_exhausted() {
+                    let size = (before * 2).max(BUFFER);
+                    if size > MOST_RECORD || !reader.grow(size) {
+                        return Err(CaptureError::Damaged(count));
+                    }
+                }
             }
             Err(PcapError::UnexpectedEof) => return Err(CaptureError::Truncated(count)),
             Err(PcapError::ReadError) => return Err(CaptureError::Io("read failed".into())),

@@ -14,7 +14,7 @@ use super::session::{locate, Counts, Filter, FrameRecord, Record, TcpPlace};
 use crate::codec::answer::check;
 use crate::codec::framing::{Broken, Event, Found, Framer};
 use crate::codec::{Direction, Envelope, Mode, Pdu, Reading, Request};
-use crate::describe::{describe_frame, describe_reading};
+use crate::describe::{describe_frame, describe_reading, Kind};
 
 /// The port Modbus TCP servers listen on, unless told otherwise.
 pub const MODBUS_PORT: u16 = 502;
@@ -359,6 +359,20 @@ impl TcpSession {
             (broken, _) => {
                 let mut report = describe_frame(&found.bytes, Some(self.mode), Some(direction));
                 report.valid = false;
+                // What the header of a cut frame says still stands.
+                if self.mode == Mode::Tcp {
+                    let bytes = &found.bytes;
+                    if let Some([hi, lo]) = bytes.get(..2) {
+                        report.transaction = Some(u16::from_be_bytes([*hi, *lo]));
+                    }
+                    report.slave = bytes.get(6).copied().unwrap_or(report.slave);
+                    report.function = bytes.get(7).copied().unwrap_or(report.function);
+                }
+                report.kind = match direction {
+                    Direction::Request => Kind::Request,
+                    Direction::Response if report.function & 0x80 != 0 => Kind::Exception,
+                    Direction::Response => Kind::Response,
+                };
                 if broken == Some(Broken::Incomplete) {
                     report.error =
                         Some("incomplete: bytes of the frame are missing from the capture".into());
