@@ -1040,6 +1040,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--stop-bits', '--stop-bits', [CompletionResultType]::ParameterName, 'Serial stop bits [default: 1 with parity, 2 without]')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
+            [CompletionResult]::new('--stats', '--stats', [CompletionResultType]::ParameterName, 'At the end, a table (or JSON lines of "type":"stats") per server and unit: requests, answers, exceptions by code, unanswered, and response time min, mean, p95 and max')
             [CompletionResult]::new('--low-latency', '--low-latency', [CompletionResultType]::ParameterName, 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')

@@ -2802,7 +2802,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__sniff)
-            opts="-p -m -b -o -h -V --input --tcp-port --save --pcap --slave --function --low-latency --port --mode --baud --parity --data-bits --stop-bits --output --json --help --version"
+            opts="-p -m -b -o -h -V --input --tcp-port --save --pcap --stats --slave --function --low-latency --port --mode --baud --parity --data-bits --stop-bits --output --json --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

@@ -987,6 +987,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --stop-bits 'Serial stop bits [default: 1 with parity, 2 without]'
             cand -o 'Output format [default: table]; for dump, the file to write'
             cand --output 'Output format [default: table]; for dump, the file to write'
+            cand --stats 'At the end, a table (or JSON lines of "type":"stats") per server and unit: requests, answers, exceptions by code, unanswered, and response time min, mean, p95 and max'
             cand --low-latency 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen'
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'

@@ -1195,6 +1195,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s o -l output -d '
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stats -d 'At the end, a table (or JSON lines of "type":"stats") per server and unit: requests, answers, exceptions by code, unanswered, and response time min, mean, p95 and max'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l low-latency -d 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s h -l help -d 'Print help (see more with \'--help\')'

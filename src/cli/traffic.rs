@@ -121,6 +121,11 @@ pub struct SniffArgs {
     #[arg(long, value_name = "FILE")]
     pub pcap: Option<std::path::PathBuf>,
 
+    /// At the end, a table (or JSON lines of "type":"stats") per server and unit: requests,
+    /// answers, exceptions by code, unanswered, and response time min, mean, p95 and max
+    #[arg(long)]
+    pub stats: bool,
+
     /// Show only the frames of this slave; repeatable
     #[arg(long = "slave", value_name = "ID")]
     pub slaves: Vec<u8>,

@@ -18,6 +18,7 @@ use mbtool_core::codec::Mode;
 use mbtool_core::sniff::capture;
 use mbtool_core::sniff::pcap::{self, PcapWriter};
 use mbtool_core::sniff::session::{Filter, Record, Session};
+use mbtool_core::sniff::stats::Stats;
 use mbtool_core::sniff::tcp::{TcpSession, MODBUS_PORT};
 use mbtool_core::sniff::timing;
 use mbtool_core::transport::serial::{self, LineSettings, Serial};
@@ -32,11 +33,16 @@ struct Sinks {
     epoch_us: u64,
     mode: Mode,
     live: bool,
+    /// `--stats`: the tallies, kept from every record shown.
+    stats: Option<Stats>,
 }
 
 impl Sinks {
     fn write(&mut self, records: &mut Vec<Record>) -> io::Result<()> {
         for record in records.drain(..) {
+            if let Some(stats) = self.stats.as_mut() {
+                stats.record(&record);
+            }
             if let (Some(pcap), Record::Frame(frame)) = (self.pcap.as_mut(), &record) {
                 pcap.frame(
                     self.epoch_us + frame.at,
@@ -122,6 +128,7 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         epoch_us: if args.input.is_some() { 0 } else { epoch_us },
         mode,
         live: args.input.is_none(),
+        stats: args.stats.then(Stats::default),
     };
     let mut records = Vec::new();
     let end = match (&args.input, input.as_mut()) {
@@ -210,6 +217,7 @@ fn replay_capture(
         epoch_us: 0,
         mode,
         live: false,
+        stats: args.stats.then(Stats::default),
     };
     let mut records = Vec::new();
     let mut written = Ok(());
@@ -226,6 +234,9 @@ fn replay_capture(
     sinks
         .writer
         .summary(&mut sinks.out, session.counts(), Some(&packets))?;
+    if let Some(stats) = &sinks.stats {
+        sinks.writer.stats(&mut sinks.out, stats)?;
+    }
     sinks.out.flush()?;
     if let Some(pcap) = sinks.pcap.as_mut() {
         pcap.flush()?;

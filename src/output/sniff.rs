@@ -1,5 +1,6 @@
 //! How `sniff` shows what passes: a line per frame for people, or JSON Lines.
 
+use std::collections::BTreeMap;
 use std::io::{self, Write};
 
 use serde::Serialize;
@@ -10,6 +11,7 @@ use mbtool_core::codec::function;
 use mbtool_core::codec::ExceptionCode;
 use mbtool_core::describe::{describe_pdu, spaced_hex, FrameReport, Kind, Values};
 use mbtool_core::sniff::session::{Counts, FrameRecord, Record, TcpPlace};
+use mbtool_core::sniff::stats::{Stats, Times};
 use mbtool_core::sniff::tcp::PacketCounts;
 
 const RED: &str = "\x1b[31m";
@@ -514,6 +516,99 @@ impl SniffWriter {
                     )?;
                 }
                 Ok(())
+            }
+            Format::Values | Format::Csv => Ok(()),
+        }
+    }
+}
+
+/// One station's line of `--stats` in JSON.
+#[derive(Serialize)]
+struct JsonStats {
+    #[serde(rename = "type")]
+    kind: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    server: Option<String>,
+    unit: u8,
+    requests: u64,
+    answers: u64,
+    exceptions: BTreeMap<String, u64>,
+    unanswered: u64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    response_time_us: Option<Times>,
+}
+
+impl SniffWriter {
+    /// `--stats`: a table, or a JSON line per server and unit.
+    pub fn stats(&mut self, out: &mut dyn Write, stats: &Stats) -> io::Result<()> {
+        let exceptions = |codes: &BTreeMap<u8, u64>| -> BTreeMap<String, u64> {
+            codes
+                .iter()
+                .map(|(code, n)| (format!("{code:02X}"), *n))
+                .collect()
+        };
+        match self.format {
+            Format::Json => {
+                for ((server, unit), tally) in &stats.stations {
+                    let line = JsonStats {
+                        kind: "stats",
+                        server: server.map(|s| s.to_string()),
+                        unit: *unit,
+                        requests: tally.requests,
+                        answers: tally.answers,
+                        exceptions: exceptions(&tally.exceptions),
+                        unanswered: tally.unanswered,
+                        response_time_us: tally.times(),
+                    };
+                    json_line(out, &mut self.line, &line)?;
+                }
+                Ok(())
+            }
+            Format::Table => {
+                let mut table = super::new_table(self.colour);
+                table.set_header([
+                    "server",
+                    "unit",
+                    "requests",
+                    "answers",
+                    "exceptions",
+                    "unanswered",
+                    "min",
+                    "mean",
+                    "p95",
+                    "max",
+                    "slowest",
+                ]);
+                for ((server, unit), tally) in &stats.stations {
+                    let codes: Vec<String> = exceptions(&tally.exceptions)
+                        .iter()
+                        .map(|(code, n)| format!("{code} x{n}"))
+                        .collect();
+                    let mut row = vec![
+                        server.map_or_else(|| "the line".to_string(), |s| s.to_string()),
+                        unit.to_string(),
+                        tally.requests.to_string(),
+                        tally.answers.to_string(),
+                        codes.join(", "),
+                        tally.unanswered.to_string(),
+                    ];
+                    match tally.times() {
+                        Some(t) => row.extend([
+                            duration(t.min),
+                            duration(t.mean),
+                            duration(t.p95),
+                            duration(t.max),
+                            format!(
+                                "{} {}",
+                                t.slowest_function,
+                                function::name(t.slowest_function)
+                            ),
+                        ]),
+                        None => row.extend(["-", "-", "-", "-", "-"].map(String::from)),
+                    }
+                    table.add_row(row);
+                }
+                writeln!(out, "{table}")
             }
             Format::Values | Format::Csv => Ok(()),
         }

@@ -317,6 +317,7 @@ fn every_pdu_tshark_finds_mbtool_finds_paired_alike() {
         agree(&on_any, port);
     }
     cut_off_capture_is_shown_then_refused(&on_lo, serve_tcp_port);
+    stats_hold_what_tshark_timed(&on_lo, serve_tcp_port);
 }
 
 /// A capture cut off in the middle of a record (tcpdump killed) shows what came before,
@@ -371,4 +372,51 @@ fn a_file_that_is_no_capture_or_a_port_without_one_is_refused() {
         );
         assert_eq!(stderr.lines().count(), 1);
     }
+}
+
+/// `--stats`: the valid requests and answers of unit 17 counted, the exception told by
+/// its code, and the response times spanning those tshark measured.
+fn stats_hold_what_tshark_timed(file: &Path, port: u16) {
+    let theirs: Vec<u64> = tshark(file, port)
+        .values()
+        .flatten()
+        .map(|(_, us)| *us)
+        .collect();
+    let output = mbtool()
+        .args(["sniff", "--input"])
+        .arg(file)
+        .args(["--tcp-port", &port.to_string(), "--stats", "--json"])
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let lines: Vec<serde_json::Value> = stdout
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    let frames = |kind: &str| {
+        lines
+            .iter()
+            .filter(|l| l["type"] == "frame" && l["valid"] == true)
+            .filter(|l| l["slave"] == 17 && l["kind"] == kind)
+            .count() as u64
+    };
+    let stats = lines
+        .iter()
+        .find(|l| l["type"] == "stats" && l["unit"] == 17)
+        .unwrap_or_else(|| panic!("{stdout}"));
+    assert_eq!(stats["server"], format!("127.0.0.1:{port}"));
+    assert_eq!(stats["requests"], frames("request"));
+    assert_eq!(stats["answers"], frames("response") + frames("exception"));
+    assert_eq!(stats["exceptions"]["02"], frames("exception"), "{stats}");
+    let time = |key: &str| stats["response_time_us"][key].as_u64().unwrap();
+    assert!(time("min") <= *theirs.iter().min().unwrap(), "{stats}");
+    assert!(time("max") >= *theirs.iter().max().unwrap(), "{stats}");
+    assert!(
+        time("min") <= time("mean") && time("mean") <= time("max"),
+        "{stats}"
+    );
+    assert!(
+        time("min") <= time("p95") && time("p95") <= time("max"),
+        "{stats}"
+    );
 }

@@ -7,5 +7,6 @@ mod pairing;
 pub mod pcap;
 pub mod reassembly;
 pub mod session;
+pub mod stats;
 pub mod tcp;
 pub mod timing;
