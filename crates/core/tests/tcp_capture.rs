@@ -193,6 +193,54 @@ fn every_link_gives_the_same_frames_paired() {
 }
 
 #[test]
+fn a_fin_acknowledged_is_no_byte_missing() {
+    let exchanges: Vec<_> = (1..=2).map(|t| exchange(t, 2)).collect();
+    let mut packets = conversation(Link::Ethernet, &exchanges);
+    let sent: u32 = exchanges.iter().map(|(r, _)| r.len() as u32).sum();
+    let answered: u32 = exchanges.iter().map(|(_, a)| a.len() as u32).sum();
+    let fin = |to_server: bool, sequence: u32, ack: u32| {
+        let (source, destination) = if to_server {
+            (CLIENT_PORT, 502)
+        } else {
+            (502, CLIENT_PORT)
+        };
+        let (a, b) = if to_server {
+            (CLIENT, SERVER)
+        } else {
+            (SERVER, CLIENT)
+        };
+        let mut bytes = Vec::new();
+        PacketBuilder::ethernet2([1; 6], [2; 6])
+            .ipv4(a, b, 64)
+            .tcp(source, destination, sequence, 1024)
+            .fin()
+            .ack(ack)
+            .write(&mut bytes, &[])
+            .unwrap();
+        bytes
+    };
+    packets.push(fin(true, 1000 + sent, 5000 + answered));
+    packets.push(fin(false, 5000 + answered, 1000 + sent + 1));
+    packets.push(packet(
+        Link::Ethernet,
+        true,
+        1000 + sent + 1,
+        5000 + answered + 1,
+        &[],
+    ));
+    let mut session = TcpSession::new(Mode::Tcp, vec![502], Filter::default());
+    let mut records = Vec::new();
+    read_packets(&pcap(1, &timed(packets))[..], |packet| {
+        session.packet(&packet, &mut records);
+        true
+    })
+    .unwrap();
+    session.finish(&mut records);
+    assert_eq!(session.packet_counts().missing_bytes, 0);
+    assert_eq!(frames(&records).len(), 4);
+}
+
+#[test]
 fn segments_out_of_order_and_repeated_are_read_once_in_order() {
     let exchanges: Vec<_> = (1..=3).map(|t| exchange(t, 2)).collect();
     let mut packets = conversation(Link::Ethernet, &exchanges);

@@ -42,6 +42,9 @@ pub struct Stream {
     pub repeated: u64,
     /// Bytes that never came.
     pub missing: u64,
+    /// Where the sender's FIN stands: the other side acknowledges it as one more
+    /// sequence number, which is no byte.
+    fin: Option<u64>,
 }
 
 impl Stream {
@@ -85,6 +88,13 @@ impl Stream {
         }
     }
 
+    /// The sender is done: its FIN has sequence number `sequence`.
+    pub fn fin(&mut self, sequence: u32) {
+        if let Some(next) = self.next {
+            self.fin = self.position(sequence, next);
+        }
+    }
+
     /// The other side acknowledged every byte before `acknowledgement`: bytes before it that
     /// never came were lost to the capture, not to the connection, and will not come.
     pub fn acknowledged(&mut self, acknowledgement: u32, out: &mut Vec<Piece>) {
@@ -94,6 +104,7 @@ impl Stream {
         let Some(until) = self.position(acknowledgement, next) else {
             return;
         };
+        let until = self.fin.map_or(until, |fin| until.min(fin));
         while self
             .waiting
             .first_key_value()

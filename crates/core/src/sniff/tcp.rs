@@ -183,6 +183,15 @@ impl TcpSession {
             &mut pieces,
         );
         side.frame(&mut pieces, &mut events);
+        if segment.fin {
+            let length = u32::try_from(segment.payload.len()).unwrap_or(0) + segment.cut;
+            side.stream.fin(
+                segment
+                    .sequence
+                    .wrapping_add(u32::from(segment.syn))
+                    .wrapping_add(length),
+            );
+        }
         // What this side acknowledges and the capture never had is a gap on the other.
         let mut acknowledged = Vec::new();
         if let Some(acknowledgement) = segment.acknowledgement {
