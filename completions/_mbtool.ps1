@@ -1024,8 +1024,9 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         }
         'mbtool;sniff' {
             [CompletionResult]::new('--input', '--input', [CompletionResultType]::ParameterName, 'Read a capture instead of the port (''-'' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line')
+            [CompletionResult]::new('--interface', '--interface', [CompletionResultType]::ParameterName, 'Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng')
             [CompletionResult]::new('--tcp-port', '--tcp-port', [CompletionResultType]::ParameterName, 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)')
-            [CompletionResult]::new('--save', '--save', [CompletionResultType]::ParameterName, 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it')
+            [CompletionResult]::new('--save', '--save', [CompletionResultType]::ParameterName, 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng')
             [CompletionResult]::new('--pcap', '--pcap', [CompletionResultType]::ParameterName, 'Also write the frames to a pcap file for Wireshark (link type 147, see above)')
             [CompletionResult]::new('--slave', '--slave', [CompletionResultType]::ParameterName, 'Show only the frames of this slave; repeatable')
             [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Show only the frames of this function code (3, 0x10); repeatable')

@@ -2802,13 +2802,17 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__sniff)
-            opts="-p -m -b -o -h -V --input --tcp-port --save --pcap --stats --slave --function --low-latency --port --mode --baud --parity --data-bits --stop-bits --output --json --help --version"
+            opts="-p -m -b -o -h -V --input --interface --tcp-port --save --pcap --stats --slave --function --low-latency --port --mode --baud --parity --data-bits --stop-bits --output --json --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
                 --input)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --interface)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

@@ -971,8 +971,9 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         }
         &'mbtool;sniff'= {
             cand --input 'Read a capture instead of the port (''-'' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line'
+            cand --interface 'Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng'
             cand --tcp-port 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)'
-            cand --save 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it'
+            cand --save 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng'
             cand --pcap 'Also write the frames to a pcap file for Wireshark (link type 147, see above)'
             cand --slave 'Show only the frames of this slave; repeatable'
             cand --function 'Show only the frames of this function code (3, 0x10); repeatable'

@@ -61,7 +61,9 @@ beside it (one line per read: '<us> <count>', or '<us> idle' when the line went 
 --input FILE reads them back when they are there, so that a replay finds the frames the live \
 session found.
 
-Modbus TCP: --input also reads pcap and pcapng files (tcpdump, dumpcap, tshark, Wireshark; \
+Modbus TCP: --interface NAME captures live through libpcap (root, or cap_net_raw and \
+cap_net_admin), --save FILE keeping the packets as pcapng; --input also reads pcap and \
+pcapng files (tcpdump, dumpcap, tshark, Wireshark; \
 known by their first bytes, whatever the name): Ethernet with VLAN tags, Linux cooked captures \
 (tcpdump -i any), raw IP and loopback. Each connection's two directions are put back in order \
 before framing: retransmitted bytes are read once, segments out of order put in order, and \
@@ -107,13 +109,18 @@ pub struct SniffArgs {
     #[arg(long, value_name = "FILE")]
     pub input: Option<std::path::PathBuf>,
 
+    /// Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs
+    /// capture privileges. With --save FILE the packets are kept as pcapng
+    #[arg(long, value_name = "NAME", conflicts_with = "input")]
+    pub interface: Option<String>,
+
     /// In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502];
     /// repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)
     #[arg(long = "tcp-port", value_name = "PORT", value_parser = clap::value_parser!(u16).range(1..))]
     pub tcp_ports: Vec<u16>,
 
     /// Keep every byte seen, exactly as received, to replay it later with --input; live,
-    /// their times go to FILE.timing beside it
+    /// their times go to FILE.timing beside it. With --interface, the packets, as pcapng
     #[arg(long, value_name = "FILE")]
     pub save: Option<std::path::PathBuf>,
 

@@ -92,6 +92,7 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
                 .into());
             }
         }
+        _ if args.interface.is_some() => return capture_live(settings, args),
         _ if !args.tcp_ports.is_empty() => {
             return Err(Error::usage(
                 "--tcp-port picks the Modbus connections of a capture: give --input FILE.pcap",
@@ -177,6 +178,62 @@ fn named_as_capture(path: &Path) -> bool {
         .any(|known| extension.eq_ignore_ascii_case(known))
 }
 
+/// The TCP session of a capture, and where its records go.
+fn tcp_session(settings: &Settings, args: &SniffArgs, live: bool) -> Result<(TcpSession, Sinks)> {
+    let mode = match settings.connection.mode {
+        None | Some(Mode::Tcp) => Mode::Tcp,
+        Some(Mode::Rtu) => Mode::Rtu,
+        Some(Mode::Ascii) => {
+            return Err(Error::usage(
+                "a capture carries MBAP frames (--mode tcp) or RTU frames through a gateway (--mode rtu)",
+            )
+            .into())
+        }
+    };
+    let filter = Filter {
+        slaves: args.slaves.clone(),
+        functions: args.functions.clone(),
+    };
+    let session = TcpSession::new(mode, modbus_ports(args), filter);
+    let sinks = Sinks {
+        writer: SniffWriter::new(settings.output.format, output::colour_wanted()),
+        out: output::stdout(),
+        pcap: pcap_file(args)?,
+        epoch_us: 0,
+        mode,
+        live,
+        stats: args.stats.then(Stats::default),
+    };
+    Ok((session, sinks))
+}
+
+/// The ports of the Modbus servers: `--tcp-port`, else 502.
+fn modbus_ports(args: &SniffArgs) -> Vec<u16> {
+    match args.tcp_ports.is_empty() {
+        true => vec![MODBUS_PORT],
+        false => args.tcp_ports.clone(),
+    }
+}
+
+/// The end of a TCP capture: what the connections hold, the summary and the stats.
+fn end_tcp(mut session: TcpSession, mut sinks: Sinks) -> Result<()> {
+    let mut records = Vec::new();
+    session.finish(&mut records);
+    sinks.write(&mut records)?;
+    let packets = session.packet_counts();
+    sinks
+        .writer
+        .summary(&mut sinks.out, session.counts(), Some(&packets))?;
+    if let Some(stats) = &sinks.stats {
+        sinks.writer.stats(&mut sinks.out, stats)?;
+    }
+    sinks.out.flush()?;
+    if let Some(pcap) = sinks.pcap.as_mut() {
+        pcap.flush()?;
+    }
+    Ok(())
+}
+
 /// A pcap or pcapng capture of Modbus TCP (or RTU over TCP): every packet through the
 /// TCP session, the records shown as they come.
 fn replay_capture(
@@ -191,34 +248,7 @@ fn replay_capture(
         )
         .into());
     }
-    let mode = match settings.connection.mode {
-        None | Some(Mode::Tcp) => Mode::Tcp,
-        Some(Mode::Rtu) => Mode::Rtu,
-        Some(Mode::Ascii) => {
-            return Err(Error::usage(
-                "a capture carries MBAP frames (--mode tcp) or RTU frames through a gateway (--mode rtu)",
-            )
-            .into())
-        }
-    };
-    let ports = match args.tcp_ports.is_empty() {
-        true => vec![MODBUS_PORT],
-        false => args.tcp_ports.clone(),
-    };
-    let filter = Filter {
-        slaves: args.slaves.clone(),
-        functions: args.functions.clone(),
-    };
-    let mut session = TcpSession::new(mode, ports, filter);
-    let mut sinks = Sinks {
-        writer: SniffWriter::new(settings.output.format, output::colour_wanted()),
-        out: output::stdout(),
-        pcap: pcap_file(args)?,
-        epoch_us: 0,
-        mode,
-        live: false,
-        stats: args.stats.then(Stats::default),
-    };
+    let (mut session, mut sinks) = tcp_session(settings, args, false)?;
     let mut records = Vec::new();
     let mut written = Ok(());
     let read = capture::read_packets(input, |packet| {
@@ -228,19 +258,7 @@ fn replay_capture(
         written.is_ok()
     });
     written?;
-    session.finish(&mut records);
-    sinks.write(&mut records)?;
-    let packets = session.packet_counts();
-    sinks
-        .writer
-        .summary(&mut sinks.out, session.counts(), Some(&packets))?;
-    if let Some(stats) = &sinks.stats {
-        sinks.writer.stats(&mut sinks.out, stats)?;
-    }
-    sinks.out.flush()?;
-    if let Some(pcap) = sinks.pcap.as_mut() {
-        pcap.flush()?;
-    }
+    end_tcp(session, sinks)?;
     match read {
         Ok(_) => Ok(0),
         Err(error) => Err(Error::usage(format!(
@@ -249,6 +267,63 @@ fn replay_capture(
         ))
         .into()),
     }
+}
+
+/// `--interface NAME`: Modbus TCP captured live until Ctrl-C or SIGTERM, each frame shown
+/// as it comes; `--save` keeps the packets as pcapng.
+#[cfg(feature = "live-capture")]
+fn capture_live(settings: &Settings, args: &SniffArgs) -> Result<u8> {
+    use mbtool_core::sniff::live::LiveCapture;
+    use mbtool_core::sniff::pcap::PcapNgWriter;
+    let interface = args.interface.as_deref().unwrap_or_default();
+    let (mut session, mut sinks) = tcp_session(settings, args, true)?;
+    let ports = modbus_ports(args);
+    let mut capture = LiveCapture::open(interface, &ports).map_err(|e| anyhow::anyhow!("{e}"))?;
+    let mut save = match &args.save {
+        Some(path) => Some(PcapNgWriter::new(
+            output::create_file(path, false)
+                .with_context(|| format!("cannot create {}", path.display()))?,
+            capture.link(),
+        )?),
+        None => None,
+    };
+    let stop = super::shared::stop_on_signal()?;
+    mbtool::note!(
+        "mbtool: capturing Modbus TCP on {interface} (ports {}); Ctrl-C ends with a summary",
+        ports
+            .iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
+    let mut records = Vec::new();
+    let mut saved = Ok(());
+    while !stop.load(Ordering::SeqCst) {
+        capture
+            .next(Duration::from_millis(100), |packet| {
+                if let Some(save) = save.as_mut() {
+                    saved = save.packet(packet.time_us, packet.data, packet.original_len);
+                }
+                session.packet(&packet, &mut records);
+                sinks.epoch_us = session.first_time();
+            })
+            .map_err(|e| anyhow::anyhow!("{interface}: {e}"))?;
+        saved.as_ref().map_err(|e| anyhow::anyhow!("{e}"))?;
+        sinks.write(&mut records)?;
+    }
+    if let Some(save) = save.as_mut() {
+        save.flush()?;
+    }
+    end_tcp(session, sinks)?;
+    Ok(0)
+}
+
+#[cfg(not(feature = "live-capture"))]
+fn capture_live(_: &Settings, _: &SniffArgs) -> Result<u8> {
+    Err(Error::usage(
+        "this mbtool was built without live capture (cargo feature live-capture, which needs libpcap): record with tcpdump and give --input FILE",
+    )
+    .into())
 }
 
 /// `--pcap FILE`: the frames found, for Wireshark.

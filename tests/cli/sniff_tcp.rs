@@ -420,3 +420,109 @@ fn stats_hold_what_tshark_timed(file: &Path, port: u16) {
         "{stats}"
     );
 }
+
+/// `--interface lo`: a poll running beside the capture is seen request by request, each
+/// answer paired, as it happens; Ctrl-C ends it at once with the summary, and `--save`
+/// kept the packets as a pcapng file that reads back the same. Without privileges, one
+/// line says what to do.
+#[test]
+fn live_on_lo_a_poll_is_seen_request_by_request() {
+    let root = Process::new("id")
+        .arg("-u")
+        .output()
+        .is_ok_and(|o| o.stdout == b"0\n");
+    if !peer_available("root, to capture on lo", root) {
+        return;
+    }
+    let (_serve, port, tcp) = serve_tcp(&[]);
+    let dir = tempfile::tempdir().unwrap();
+    let saved = dir.path().join("live.pcapng");
+    let mut sniff = Stopped(
+        crate::support::mbtool_process()
+            .args([
+                "sniff",
+                "--interface",
+                "lo",
+                "--tcp-port",
+                &tcp.to_string(),
+                "--json",
+                "--save",
+            ])
+            .arg(&saved)
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap(),
+    );
+    let mut said = BufReader::new(sniff.0.stderr.take().unwrap()).lines();
+    let first = said.next().unwrap().unwrap();
+    assert!(first.contains("capturing Modbus TCP on lo"), "{first}");
+    let stdout = sniff.0.stdout.take().unwrap();
+    let (seen, lines) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for line in BufReader::new(stdout).lines().map_while(Result::ok) {
+            let _ = seen.send(line);
+        }
+    });
+    let poll = mbtool()
+        .args(&port)
+        .args([
+            "read-holding",
+            "17",
+            "400108",
+            "3",
+            "--poll",
+            "50ms",
+            "--count",
+            "10",
+        ])
+        .output()
+        .unwrap();
+    assert!(poll.status.success());
+    // Each request and answer shown as it passes, before the capture ends.
+    let mut frames = Vec::new();
+    while frames.len() < 20 {
+        let line = lines
+            .recv_timeout(std::time::Duration::from_secs(5))
+            .expect("a frame shown");
+        frames.push(serde_json::from_str::<serde_json::Value>(&line).unwrap());
+    }
+    let stopped = std::time::Instant::now();
+    let _ = Process::new("kill")
+        .args(["-INT", &sniff.0.id().to_string()])
+        .status();
+    assert!(sniff.0.wait().unwrap().success());
+    assert!(stopped.elapsed() < std::time::Duration::from_secs(1));
+    for (i, pair) in frames.chunks(2).enumerate() {
+        let transaction = i as u64 + 1;
+        assert_eq!(pair[0]["kind"], "request", "{pair:?}");
+        assert_eq!(pair[1]["kind"], "response", "{pair:?}");
+        assert_eq!(pair[0]["transaction"], transaction);
+        assert_eq!(pair[1]["transaction"], transaction);
+        assert_eq!(pair[1]["request_packet"], pair[0]["packet"]);
+        assert_eq!(pair[1]["values"], serde_json::json!([555, 0, 100]));
+    }
+    let summary: Vec<String> = lines.try_iter().collect();
+    assert!(
+        summary.iter().any(|l| l.contains("\"type\":\"summary\"")),
+        "{summary:?}"
+    );
+    let (from_file, _) = mbtool_sniff(&saved, tcp);
+    assert_eq!(from_file.len(), 20);
+
+    let denied = Process::new("setpriv")
+        .args(["--reuid=65534", "--regid=65534", "--clear-groups"])
+        .arg(env!("CARGO_BIN_EXE_mbtool"))
+        .args(["sniff", "--interface", "lo"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&denied.stderr);
+    if denied.status.code() != Some(126) {
+        assert_eq!(denied.status.code(), Some(1), "{stderr}");
+        assert!(
+            stderr.contains("needs privileges") && stderr.contains("setcap"),
+            "{stderr}"
+        );
+        assert_eq!(stderr.lines().count(), 1);
+    }
+}

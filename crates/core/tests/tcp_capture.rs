@@ -454,3 +454,26 @@ proptest! {
         prop_assert_eq!(kinds(&whole).len(), 5);
     }
 }
+
+/// What `sniff --interface --save` writes reads back as the packets it was given.
+#[test]
+fn a_pcapng_written_reads_back_packet_for_packet() {
+    use mbtool_core::sniff::pcap::PcapNgWriter;
+    let exchanges: Vec<_> = (1..=3).map(|t| exchange(t, t as u8)).collect();
+    let packets = timed(conversation(Link::Ethernet, &exchanges));
+    let mut file = Vec::new();
+    let mut writer = PcapNgWriter::new(&mut file, 1).unwrap();
+    for (time, bytes, _) in &packets {
+        writer.packet(*time, bytes, bytes.len() as u32).unwrap();
+    }
+    writer.flush().unwrap();
+    let mut read = Vec::new();
+    read_packets(&file[..], |packet| {
+        read.push((packet.time_us, packet.data.to_vec(), packet.link));
+        true
+    })
+    .unwrap();
+    let given: Vec<_> = packets.iter().map(|(t, b, _)| (*t, b.clone(), 1)).collect();
+    assert_eq!(read, given);
+    assert_eq!(frames(&sniff(&file).0).len(), 6);
+}

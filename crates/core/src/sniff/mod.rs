@@ -3,6 +3,8 @@
 //! (`pcap`); a saved capture keeps its timing beside it (`timing`).
 
 pub mod capture;
+#[cfg(feature = "live-capture")]
+pub mod live;
 mod pairing;
 pub mod pcap;
 pub mod reassembly;

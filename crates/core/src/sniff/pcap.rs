@@ -60,3 +60,54 @@ impl<W: Write> PcapWriter<W> {
         self.out.flush()
     }
 }
+
+/// Writes packets as they were captured to a pcapng file: one interface, microsecond times.
+pub struct PcapNgWriter<W: Write> {
+    out: W,
+}
+
+impl<W: Write> PcapNgWriter<W> {
+    /// Writes the section header and the interface of link type `link`.
+    pub fn new(mut out: W, link: u32) -> io::Result<Self> {
+        // Section header: byte-order magic, version 1.0, section length unknown.
+        out.write_all(&0x0A0D_0D0Au32.to_le_bytes())?;
+        out.write_all(&28u32.to_le_bytes())?;
+        out.write_all(&0x1A2B_3C4Du32.to_le_bytes())?;
+        out.write_all(&1u16.to_le_bytes())?;
+        out.write_all(&0u16.to_le_bytes())?;
+        out.write_all(&(-1i64).to_le_bytes())?;
+        out.write_all(&28u32.to_le_bytes())?;
+        // Interface description: link type, snap length; times in microseconds by default.
+        out.write_all(&1u32.to_le_bytes())?;
+        out.write_all(&20u32.to_le_bytes())?;
+        out.write_all(&u16::try_from(link).unwrap_or(u16::MAX).to_le_bytes())?;
+        out.write_all(&0u16.to_le_bytes())?;
+        out.write_all(&65535u32.to_le_bytes())?;
+        out.write_all(&20u32.to_le_bytes())?;
+        Ok(Self { out })
+    }
+
+    /// One packet, captured at `time_us` microseconds since 1970, `original_len` long on
+    /// the wire.
+    pub fn packet(&mut self, time_us: u64, data: &[u8], original_len: u32) -> io::Result<()> {
+        let padded = data.len().div_ceil(4) * 4;
+        let total = u32::try_from(32 + padded).unwrap_or(u32::MAX);
+        let captured = u32::try_from(data.len()).unwrap_or(u32::MAX);
+        self.out.write_all(&6u32.to_le_bytes())?;
+        self.out.write_all(&total.to_le_bytes())?;
+        self.out.write_all(&0u32.to_le_bytes())?;
+        self.out
+            .write_all(&((time_us >> 32) as u32).to_le_bytes())?;
+        self.out.write_all(&(time_us as u32).to_le_bytes())?;
+        self.out.write_all(&captured.to_le_bytes())?;
+        self.out.write_all(&original_len.to_le_bytes())?;
+        self.out.write_all(data)?;
+        self.out.write_all(&[0; 3][..padded - data.len()])?;
+        self.out.write_all(&total.to_le_bytes())
+    }
+
+    /// Writes out what is buffered.
+    pub fn flush(&mut self) -> io::Result<()> {
+        self.out.flush()
+    }
+}
