@@ -477,3 +477,58 @@ fn a_pcapng_written_reads_back_packet_for_packet() {
     assert_eq!(read, given);
     assert_eq!(frames(&sniff(&file).0).len(), 6);
 }
+
+/// RTU frames through a transparent gateway (`--mode rtu --tcp-port`): framed by their
+/// layout and CRC, paired by unit and function, oldest first.
+#[test]
+fn rtu_over_tcp_is_framed_by_the_rtu_framer() {
+    let request = hex("11 03 00 6B 00 03 76 87");
+    let answer = hex("11 03 06 02 2B 00 00 00 64 C8 BA");
+    let packets = vec![
+        packet(Link::Ethernet, true, 1, 1, &request),
+        packet(Link::Ethernet, false, 1, 9, &answer),
+        // Both again, glued in one segment each way with a second request.
+        packet(
+            Link::Ethernet,
+            true,
+            9,
+            12,
+            &[request.clone(), request.clone()].concat(),
+        ),
+        packet(
+            Link::Ethernet,
+            false,
+            12,
+            25,
+            &[answer.clone(), answer.clone()].concat(),
+        ),
+    ];
+    let mut session = TcpSession::new(Mode::Rtu, vec![502], Filter::default());
+    let mut records = Vec::new();
+    read_packets(&pcap(1, &timed(packets))[..], |packet| {
+        session.packet(&packet, &mut records);
+        true
+    })
+    .unwrap();
+    session.finish(&mut records);
+    let found = frames(&records);
+    assert_eq!(found.len(), 6, "{found:?}");
+    assert!(found.iter().all(|(_, _, valid, _)| *valid));
+    // Each answer paired. The last frame of a glued pair is taken once what follows
+    // supports it (here the end of the capture), as on a serial line without timing.
+    let answers: Vec<_> = found
+        .iter()
+        .filter(|f| f.1 == Kind::Response)
+        .map(|f| f.3)
+        .collect();
+    assert_eq!(answers.len(), 3);
+    assert!(answers.iter().all(Option::is_some), "{answers:?}");
+    assert_eq!(answers[..2], [Some(1), Some(3)]);
+}
+
+fn hex(spaced: &str) -> Vec<u8> {
+    spaced
+        .split(' ')
+        .map(|b| u8::from_str_radix(b, 16).unwrap())
+        .collect()
+}
