@@ -14,15 +14,16 @@ enum Header {
     Not,
 }
 
-/// Protocol id 0, a length that holds a unit id and a function at least and at most a
-/// whole PDU, and a function code that exists (1-127, or an exception's 129-255).
-fn header(data: &[u8]) -> Header {
+/// Protocol id 0, and a length that holds a unit id and a function at least and at most a
+/// whole PDU. Seen from outside, also a function code that exists (1-127, or an
+/// exception's 129-255); a server still frames a function 00, to answer it exception 01.
+fn header(data: &[u8], outside: bool) -> Header {
     if let Some([hi, lo]) = data.get(2..4) {
         if [*hi, *lo] != [0, 0] {
             return Header::Not;
         }
     }
-    if matches!(data.get(7), Some(0 | 0x80)) {
+    if outside && matches!(data.get(7), Some(0 | 0x80)) {
         return Header::Not;
     }
     match tcp_frame_length(data) {
@@ -52,12 +53,12 @@ impl Framer {
             broken: None,
             direction: None,
         };
-        match header(data) {
+        match header(data, self.resync) {
             Header::Not if self.resync => Look::Noise,
             Header::Not => Look::Lost,
             Header::Reads(Some(len)) if len <= data.len() => {
                 // Out of step, a header that reads could be data: what follows must read too.
-                let followed = match header(&data[len..]) {
+                let followed = match header(&data[len..], true) {
                     _ if len == data.len() => true,
                     Header::Reads(_) => true,
                     Header::Not => false,
