@@ -532,3 +532,90 @@ fn hex(spaced: &str) -> Vec<u8> {
         .map(|b| u8::from_str_radix(b, 16).unwrap())
         .collect()
 }
+
+/// pcapng with several interfaces, each with its own link type and time units
+/// (`if_tsresol`: microseconds by default, nanoseconds, 2^-20 s): each packet is timed by
+/// its own interface's units.
+#[test]
+fn pcapng_interfaces_keep_their_own_time_units() {
+    fn block(kind: u32, body: &[u8]) -> Vec<u8> {
+        let total = u32::try_from(12 + body.len()).unwrap();
+        [
+            &kind.to_le_bytes()[..],
+            &total.to_le_bytes(),
+            body,
+            &total.to_le_bytes(),
+        ]
+        .concat()
+    }
+    fn interface(link: u16, tsresol: Option<u8>) -> Vec<u8> {
+        let mut body = [&link.to_le_bytes()[..], &[0, 0], &65535u32.to_le_bytes()].concat();
+        if let Some(resolution) = tsresol {
+            body.extend([9, 0, 1, 0, resolution, 0, 0, 0, 0, 0, 0, 0]);
+        }
+        block(1, &body)
+    }
+    fn enhanced(interface: u32, units: u64, data: &[u8]) -> Vec<u8> {
+        let len = u32::try_from(data.len()).unwrap();
+        let mut body = [
+            &interface.to_le_bytes()[..],
+            &((units >> 32) as u32).to_le_bytes(),
+            &(units as u32).to_le_bytes(),
+            &len.to_le_bytes(),
+            &len.to_le_bytes(),
+            data,
+        ]
+        .concat();
+        body.resize(body.len().div_ceil(4) * 4, 0);
+        block(6, &body)
+    }
+    let section = block(
+        0x0A0D_0D0A,
+        &[&0x1A2B_3C4Du32.to_le_bytes()[..], &[1, 0, 0, 0], &[0xFF; 8]].concat(),
+    );
+    let (request, answer) = exchange(1, 1);
+    let second = 1_700_000_000u64;
+    let cooked = |to_server, sequence, ack, payload: &[u8]| {
+        packet(Link::CookedV2, to_server, sequence, ack, payload)
+    };
+    let file = [
+        section,
+        interface(1, None),
+        interface(276, Some(9)),
+        interface(1, Some(0x94)),
+        enhanced(
+            0,
+            second * 1_000_000 + 250,
+            &packet(Link::Ethernet, true, 1, 1, &request),
+        ),
+        enhanced(
+            1,
+            second * 1_000_000_000 + 500_000,
+            &cooked(false, 1, 13, &answer),
+        ),
+        enhanced(2, (second + 1) << 20, &[0; 20]),
+    ]
+    .concat();
+    let mut times = Vec::new();
+    let read = read_packets(&file[..], |packet| {
+        times.push((packet.link, packet.time_us));
+        true
+    });
+    assert_eq!(read, Ok(3));
+    assert_eq!(
+        times,
+        [
+            (1, second * 1_000_000 + 250),
+            (276, second * 1_000_000 + 500),
+            (1, (second + 1) * 1_000_000)
+        ]
+    );
+    let (records, _) = sniff(&file);
+    assert_eq!(
+        frames(&records),
+        [
+            (1, Kind::Request, true, None),
+            (1, Kind::Response, true, Some(1))
+        ]
+    );
+}

@@ -142,7 +142,7 @@ pub fn read_packets<R: Read + Send>(
                     PcapBlockOwned::NG(Block::InterfaceDescription(description)) => {
                         interfaces.push(Interface {
                             link: description.linktype.0 as u32,
-                            resolution: description.ts_resolution().unwrap_or(1_000_000),
+                            resolution: resolution(description.if_tsresol),
                             offset: u64::try_from(description.ts_offset()).unwrap_or(0),
                         });
                     }
@@ -151,8 +151,9 @@ pub fn read_packets<R: Read + Send>(
                             let units = u128::from(block.ts_high) << 32 | u128::from(block.ts_low);
                             let micros =
                                 units * 1_000_000 / u128::from(interface.resolution.max(1));
-                            let time = u64::try_from(micros).unwrap_or(u64::MAX)
-                                + interface.offset * 1_000_000;
+                            let time = u64::try_from(micros)
+                                .unwrap_or(u64::MAX)
+                                .saturating_add(interface.offset.saturating_mul(1_000_000));
                             packet(interface.link, time, block.packet_data(), block.origlen);
                         }
                     }
@@ -189,6 +190,18 @@ pub fn read_packets<R: Read + Send>(
         }
     }
     Ok(count)
+}
+
+/// Time units per second of a pcapng interface's `if_tsresol`: 10^n, or 2^n with the top
+/// bit set (pcap-parser's own reading refuses every power of 2); microseconds when it
+/// makes no sense.
+fn resolution(tsresol: u8) -> u64 {
+    let exponent = u32::from(tsresol & 0x7F);
+    let units = match tsresol & 0x80 {
+        0 => 10u64.checked_pow(exponent),
+        _ => 2u64.checked_pow(exponent),
+    };
+    units.filter(|units| *units > 0).unwrap_or(1_000_000)
 }
 
 /// The TCP segment of a packet.

@@ -184,7 +184,9 @@ impl TcpSession {
         );
         side.frame(&mut pieces, &mut events);
         if segment.fin {
-            let length = u32::try_from(segment.payload.len()).unwrap_or(0) + segment.cut;
+            let length = u32::try_from(segment.payload.len())
+                .unwrap_or(0)
+                .wrapping_add(segment.cut);
             side.stream.fin(
                 segment
                     .sequence
