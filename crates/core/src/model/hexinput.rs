@@ -194,10 +194,22 @@ fn split_glued_mark(word: &[u8]) -> Vec<&[u8]> {
     } else {
         end
     };
-    [&word[..at], &word[at..end], &word[end..]]
-        .into_iter()
-        .filter(|piece| !piece.is_empty())
-        .collect()
+    // Modbus Poll's newer logs put the line counter after the mark: `Tx:000002-01`.
+    let after = &word[end..];
+    let digits = after.iter().take_while(|b| b.is_ascii_digit()).count();
+    let counter = match after.get(digits) {
+        Some(b'-') if (4..=8).contains(&digits) => digits + 1,
+        _ => 0,
+    };
+    [
+        &word[..at],
+        &word[at..end],
+        &after[..counter],
+        &after[counter..],
+    ]
+    .into_iter()
+    .filter(|piece| !piece.is_empty())
+    .collect()
 }
 
 /// The bytes one piece of a word spells in one spelling, or `None` when it is no hex.
@@ -478,6 +490,7 @@ mod tests {
         for (tool, text, want) in [
             // Modbus Poll, Communication Traffic window (and its saved log).
             ("Modbus Poll", "000000-Tx:11 03 00 6B 00 03 76 87", &request),
+            ("Modbus Poll, counter after", "Tx:000002-11 03 00 6B 00 03 76 87", &request),
             ("Modbus Poll", "000001-Rx:11 03 00 6B 00 03 76 87", &response),
             // QModMaster's bus monitor: mode, direction, time, then the bytes.
             (
