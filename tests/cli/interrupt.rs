@@ -153,3 +153,28 @@ fn ctrl_c_in_a_terminal_ends_a_scan_with_what_it_found() {
         "{screen:#?}"
     );
 }
+
+/// A range full of holes is halved down to them in many requests: a signal ends that too,
+/// between two requests, not once the range is done.
+#[test]
+fn a_dump_halving_a_range_down_to_its_holes_ends_on_a_signal() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("sparse.txt");
+    // Every other register exists: each run of 120 is halved down to single addresses.
+    let lines: String = (0..120)
+        .map(|i| format!("4{:05} = {i}\n", 2 * i + 1))
+        .collect();
+    std::fs::write(&data, lines).unwrap();
+    let (_server, port, _) =
+        crate::support::serve_tcp(&["--delay", "20ms", "--data", data.to_str().unwrap()]);
+    let file = dir.path().join("dump.txt");
+    let args = words(
+        &port,
+        &format!("dump 17 400001-400240 -o {}", file.display()),
+    );
+    let (output, took) = signalled(&args, Duration::from_secs(1), "INT");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(130), "{stderr}");
+    assert!(took < Duration::from_secs(1), "ended {took:?} after");
+    assert!(!file.exists());
+}

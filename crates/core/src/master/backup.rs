@@ -108,12 +108,16 @@ fn add_hole(holes: &mut Vec<Range>, table: Table, address: u16, count: u32) {
 /// Reads `count` addresses from `address`, split in halves where the device answers 02.
 fn read_splitting(
     master: &mut Master,
-    slave: u8,
-    table: Table,
-    address: u16,
-    count: u16,
+    (slave, table): (u8, Table),
+    (address, count): (u16, u16),
     dump: &mut Dump,
+    stop: &AtomicBool,
 ) -> Result<(), RunError> {
+    // Halving a run down to its holes can take many requests: a signal ends it too.
+    if stop.load(Ordering::SeqCst) {
+        dump.interrupted = true;
+        return Ok(());
+    }
     dump.requests += 1;
     match read_one(master, slave, table, address, count) {
         Ok(values) => append(&mut dump.entries, table, address, values),
@@ -122,8 +126,9 @@ fn read_splitting(
                 add_hole(&mut dump.holes, table, address, 1);
             } else {
                 let first = count / 2;
-                read_splitting(master, slave, table, address, first, dump)?;
-                read_splitting(master, slave, table, address + first, count - first, dump)?;
+                let place = (slave, table);
+                read_splitting(master, place, (address, first), dump, stop)?;
+                read_splitting(master, place, (address + first, count - first), dump, stop)?;
             }
         }
         Err(error) => return Err(error),
@@ -180,20 +185,13 @@ pub fn dump(
         let end = u32::from(range.address) + range.count;
         let mut at = u32::from(range.address);
         while at < end {
-            if stop.load(Ordering::SeqCst) {
-                dump.interrupted = true;
-                return Ok(dump);
-            }
             let quantity = (end - at).min(limit);
             // Both fit: addresses end at 65536 and a quantity at the protocol's limit.
-            read_splitting(
-                master,
-                slave,
-                range.table,
-                at as u16,
-                quantity as u16,
-                &mut dump,
-            )?;
+            let run = (at as u16, quantity as u16);
+            read_splitting(master, (slave, range.table), run, &mut dump, stop)?;
+            if dump.interrupted {
+                return Ok(dump);
+            }
             at += quantity;
         }
     }
