@@ -1,6 +1,7 @@
 //! `mbtool restore SLAVE FILE`: a data file written back to a device, and read back.
 
 use std::io::Write;
+use std::sync::atomic::Ordering;
 
 use anyhow::Result;
 
@@ -54,11 +55,26 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
         return Ok(0);
     }
     let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
+    let stop = super::shared::stop_on_signal()?;
     let master = &mut connection.master;
+    let mut sent = 0;
     let outcome = requests
         .iter()
-        .try_for_each(|request| master.answer(slave, request).map(|_| ()))
-        .and_then(|()| verify(master, slave, &entries));
+        .take_while(|_| !stop.load(Ordering::SeqCst))
+        .try_for_each(|request| {
+            sent += 1;
+            master.answer(slave, request).map(|_| ())
+        });
+    if outcome.is_ok() && sent < requests.len() {
+        // Stopped between two writes: the device holds part of the file, and says so.
+        mbtool::note!(
+            "mbtool: restore interrupted after {} of {}: slave {slave} holds part of {file}; run restore again to write it all",
+            plural(sent, "request"),
+            requests.len()
+        );
+        return Ok(super::shared::INTERRUPTED);
+    }
+    let outcome = outcome.and_then(|()| verify(master, slave, &entries));
     let differences =
         outcome.map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
     let written: usize = entries

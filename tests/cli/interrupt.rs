@@ -178,3 +178,27 @@ fn a_dump_halving_a_range_down_to_its_holes_ends_on_a_signal() {
     assert!(took < Duration::from_secs(1), "ended {took:?} after");
     assert!(!file.exists());
 }
+
+/// restore stopped by a signal between two writes says how far it got and that the device
+/// holds part of the file, and exits 130.
+#[test]
+fn an_interrupted_restore_says_the_device_holds_part_of_the_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("plant.txt");
+    std::fs::write(&data, "400001-400040 = 7\n").unwrap();
+    let (_server, port, _) = crate::support::serve_tcp(&["--delay", "50ms"]);
+    let args = words(
+        &port,
+        &format!("--max-per-request 1 restore 17 {}", data.display()),
+    );
+    let (output, took) = signalled(&args, Duration::from_millis(700), "INT");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(130), "{stderr}");
+    assert!(took < Duration::from_secs(1), "ended {took:?} after");
+    assert!(
+        stderr.contains("restore interrupted after")
+            && stderr.contains("of 40")
+            && stderr.contains("holds part of"),
+        "{stderr}"
+    );
+}
