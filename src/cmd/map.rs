@@ -47,6 +47,23 @@ pub fn plan(
             )));
         }
     }
+    // Entities of a Home Assistant file carry their own slave: those are asked, and the
+    // user is told, so that the SLAVE typed is not taken for the one that answered.
+    let mut own: Vec<u8> = points
+        .iter()
+        .filter_map(|p| p.slave)
+        .filter(|own| *own != slave)
+        .collect();
+    own.sort_unstable();
+    own.dedup();
+    if !own.is_empty() {
+        let list: Vec<String> = own.iter().map(ToString::to_string).collect();
+        mbtool::note!(
+            "mbtool: {} gives points their own slave ({}): those are asked, slave {slave} only for the others",
+            path.display(),
+            list.join(", ")
+        );
+    }
     Ok(MapPlan {
         slave,
         points,

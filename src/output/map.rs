@@ -30,6 +30,9 @@ struct JsonPoint<'a> {
     raw: &'a [u16],
     #[serde(skip_serializing_if = "str::is_empty")]
     description: &'a str,
+    /// The point's own slave, where the map gives it one other than the command's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    slave: Option<u8>,
 }
 
 pub struct MapWriter {
@@ -135,6 +138,7 @@ impl MapWriter {
                         unit: &point.unit,
                         raw: &value.raw,
                         description: &point.description,
+                        slave: point.slave.filter(|own| *own != slave),
                     })
                     .collect();
                 serde_json::to_writer(

@@ -568,6 +568,17 @@ fn a_home_assistant_hub_says_where_the_device_is() {
     );
     assert_eq!(code, 1, "{stderr}");
     assert!(stderr.contains("127.0.0.1:9"), "{stderr}");
+    // Entities carry their own slave: those are asked whatever SLAVE says, and the user is
+    // told, and JSON says which slave each point came from.
+    let (code, json, stderr) = run(&[], &["read", "5", "--map", &path, "voltage", "--json"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(
+        stderr.contains(
+            "gives points their own slave (17): those are asked, slave 5 only for the others"
+        ),
+        "{stderr}"
+    );
+    assert!(json.contains("\"slave\":17"), "{json}");
     // A place kept in Home Assistant's secrets is not in the file: --port is asked for.
     let secret = yaml.replace("host: 127.0.0.1", "host: !secret pump_host");
     let path = files(&dir, &[("secret.yaml", &secret)]).remove(0);
