@@ -79,18 +79,28 @@ pub fn read_range(
     }
     let points = range_points(table, address, quantity / width, None, kind, items.order);
     let asked: Vec<&Point> = points.iter().collect();
-    let read = read_points(
-        master,
-        &asked,
-        plan.slave,
-        items.max_per_request,
-        Refused::Around,
-    )?;
-    if read.values.is_empty() {
+    // The whole range was refused already: its halves are read, not it again.
+    let middle = asked.len() / 2;
+    let (mut values, mut missing) = (Vec::new(), Vec::new());
+    for (offset, half) in [(0, &asked[..middle]), (middle, &asked[middle..])] {
+        let read = read_points(
+            master,
+            half,
+            plan.slave,
+            items.max_per_request,
+            Refused::Around,
+        )?;
+        values.extend(read.values.into_iter().map(|mut value| {
+            value.point += offset;
+            value
+        }));
+        missing.extend(read.missing.into_iter().map(|index| index + offset));
+    }
+    if values.is_empty() {
         return Err(refused);
     }
     let mut parts: Vec<ReadResult> = Vec::new();
-    for value in &read.values {
+    for value in &values {
         let point = &points[value.point];
         let next = parts
             .last()
@@ -118,7 +128,7 @@ pub fn read_range(
             ReadData::Bits(bits) => bits.extend(value.raw.iter().map(|state| *state != 0)),
         }
     }
-    let mut missing: Vec<u16> = read.missing.iter().map(|i| points[*i].address).collect();
+    let mut missing: Vec<u16> = missing.iter().map(|i| points[*i].address).collect();
     missing.sort_unstable();
     Ok(RangeRead { parts, missing })
 }
