@@ -28,6 +28,11 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
         })
         .collect::<Result<Vec<_>, AddressError>>()
         .map_err(Error::from)?;
+    if let Some(path) = &settings.output.file {
+        // Found out before the device is read, which may take minutes.
+        can_write(path)
+            .map_err(|e| Error::usage(format!("cannot write {}: {e}", path.display())))?;
+    }
     let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
     let stop = super::shared::stop_on_signal()?;
     let dump = backup::dump(
@@ -93,6 +98,29 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
     Ok(0)
 }
 
+/// The file a dump is written into before it is renamed to `path`: hidden, beside it.
+fn partial_beside(path: &std::path::Path) -> std::path::PathBuf {
+    let name = path.file_name().map_or_else(
+        || std::ffi::OsString::from("dump"),
+        std::ffi::OsStr::to_os_string,
+    );
+    let mut partial_name = std::ffi::OsString::from(".");
+    partial_name.push(&name);
+    partial_name.push(format!(".{}.partial", std::process::id()));
+    path.with_file_name(partial_name)
+}
+
+/// Whether a dump can be written to `path`: its partial file can be made beside it (a
+/// device or a pipe is written as it is).
+fn can_write(path: &std::path::Path) -> std::io::Result<()> {
+    if path.metadata().is_ok_and(|m| !m.is_file()) {
+        return Ok(());
+    }
+    let partial = partial_beside(path);
+    std::fs::File::create(&partial)?;
+    std::fs::remove_file(&partial)
+}
+
 /// Writes the file at `path` whole or not at all: into a file beside it, renamed over it
 /// once written and synced, so that an interruption or a full disk never leaves half a
 /// dump (or an empty file) where a dump is expected, and an older dump there stays as it
@@ -102,14 +130,7 @@ fn write_whole(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
     if path.metadata().is_ok_and(|m| !m.is_file()) {
         return std::fs::write(path, bytes);
     }
-    let name = path.file_name().map_or_else(
-        || std::ffi::OsString::from("dump"),
-        std::ffi::OsStr::to_os_string,
-    );
-    let mut partial_name = std::ffi::OsString::from(".");
-    partial_name.push(&name);
-    partial_name.push(format!(".{}.partial", std::process::id()));
-    let partial = path.with_file_name(partial_name);
+    let partial = partial_beside(path);
     let written = (|| {
         let mut file = std::fs::File::create(&partial)?;
         file.write_all(bytes)?;

@@ -302,3 +302,21 @@ fn a_file_that_leaves_a_value_out_or_names_an_address_twice_is_refused_with_noth
     }
     assert_eq!(asked.load(std::sync::atomic::Ordering::SeqCst), 0);
 }
+
+/// A file dump cannot write is found out before the device is read (a dump may take
+/// minutes): one line, exit 2, and the port never opened.
+#[test]
+fn a_dump_to_a_folder_that_does_not_exist_is_refused_before_reading() {
+    let output = mbtool()
+        .args(["--port", "/dev/ttyNOPE0", "dump", "17", "400001-400010"])
+        .args(["-o", "/nonexistent-folder/pump.txt"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.starts_with("mbtool: cannot write /nonexistent-folder/pump.txt"),
+        "{stderr}"
+    );
+}
