@@ -41,7 +41,9 @@ fn equivalent(args: &[String]) -> Option<String> {
             })
     };
     let slave = value("-a")?;
-    let start: u32 = value("-r").map_or(Some(1), |r| r.parse().ok())?;
+    // mbpoll's -r counts from 1, or from 0 after -0.
+    let zero_based = args.iter().any(|word| word == "-0");
+    let start: u32 = value("-r").map_or(Some(1), |r| r.parse().ok())? + u32::from(zero_based);
     let count = value("-c").unwrap_or_else(|| "1".into());
     let table = value("-t").unwrap_or_else(|| "4".into());
     let (command, digit) = match table.split(':').next()? {
@@ -84,6 +86,10 @@ mod tests {
                 .is_some_and(|m| m.starts_with(
                     "-c is mbpoll's count: here it is the third argument, read 17 400001 2"
                 ))
+        );
+        assert_eq!(
+            equivalent(&words("mbtool -a 17 -0 -r 107 -c 3")).as_deref(),
+            Some("mbtool read-holding 17 400108 3")
         );
         assert_eq!(mbpoll_habit("-x", &words("mbtool -x")), None);
     }

@@ -46,7 +46,15 @@ impl Decoder {
             }
         };
         let direction = self.direction.or(frame.direction);
-        let report = describe_frame(&frame.bytes, self.mode, direction);
+        let mut report = describe_frame(&frame.bytes, self.mode, direction);
+        // A log's mark is the logger's point of view (Modbus Slave marks what it receives
+        // Rx): where the bytes read only the other way, they decide.
+        if let (None, Some(marked), false) = (self.direction, frame.direction, report.valid) {
+            let other = describe_frame(&frame.bytes, self.mode, Some(marked.opposite()));
+            if other.valid {
+                report = other;
+            }
+        }
         if !report.valid {
             // Frames glued together on one line are shown one by one, as sniff finds them.
             let modes = match self.mode {

@@ -618,3 +618,25 @@ fn a_frame_without_its_checksum_is_told_with_the_checksum_it_lacks() {
     let run = decode(&["11 03 00 6B 00 03 76 88"], b"");
     assert!(run.stdout.contains("CRC mismatch"), "{}", run.stdout);
 }
+
+/// A log's direction mark is its logger's point of view: Modbus Slave marks the requests
+/// it receives `Rx`. Where the bytes read only the other way, they decide; Modbus Poll's
+/// newer lines put the counter after the mark.
+#[test]
+fn a_mark_the_bytes_contradict_gives_way_to_them() {
+    let log = "000000-Rx:01 03 00 00 00 0A C5 CD\nTx:000002-01 03 00 00 00 0A C5 CD\nRx:000003-01 83 02 C0 F1\n";
+    let run = decode(&["--json"], log.as_bytes());
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let kinds: Vec<String> = json_lines(&run.stdout)
+        .iter()
+        .map(|frame| format!("{} {} {}", frame["kind"], frame["slave"], frame["valid"]))
+        .collect();
+    assert_eq!(
+        kinds,
+        [
+            "\"request\" 1 true",
+            "\"request\" 1 true",
+            "\"exception\" 1 true"
+        ]
+    );
+}

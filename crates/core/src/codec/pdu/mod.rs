@@ -247,6 +247,16 @@ pub enum Direction {
     Response,
 }
 
+impl Direction {
+    /// The other way.
+    pub fn opposite(self) -> Direction {
+        match self {
+            Direction::Request => Direction::Response,
+            Direction::Response => Direction::Request,
+        }
+    }
+}
+
 impl Pdu {
     /// The function code as on the wire: an exception's has 0x80 set.
     pub fn function(&self) -> u8 {
