@@ -640,3 +640,23 @@ fn a_mark_the_bytes_contradict_gives_way_to_them() {
         ]
     );
 }
+
+/// mbpoll's `-v` output and a pymodbus 2.x debug log, piped whole: their own lines are
+/// passed over, and the PDU pymodbus logs without unit or CRC is no frame.
+#[test]
+fn mbpoll_verbose_output_and_pymodbus_2_logs_pipe_into_decode() {
+    let log = "Set mode=rtu\nSet rtu parity=even\niCount=1\n[01][03][00][00][00][03][05][CB]\nWaiting for a confirmation...\n<01><03><06><02><2B><00><00><00><64><05><7A>\n[1]: \t555\n[2]: \t0\n[3]: \t100\nDEBUG:pymodbus.transaction:Running transaction 1\nDEBUG:pymodbus.framer.rtu_framer:Getting Frame - 0x3 0x6 0x2 0x2b 0x0 0x0 0x0 0x64\nDEBUG:pymodbus.transaction:SEND: 0x1 0x3 0x0 0x0 0x0 0x3 0x5 0xcb\n";
+    let run = decode(&["--json"], log.as_bytes());
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let frames = json_lines(&run.stdout);
+    let kinds: Vec<String> = frames
+        .iter()
+        .map(|f| format!("{} {}", f["kind"], f["valid"]))
+        .collect();
+    assert_eq!(
+        kinds,
+        ["\"request\" true", "\"response\" true", "\"request\" true"]
+    );
+    assert_eq!(frames[1]["values"], serde_json::json!([555, 0, 100]));
+    assert!(run.stderr.contains("9 lines passed over"), "{}", run.stderr);
+}

@@ -293,11 +293,16 @@ fn frame_of(line: &[u8]) -> Result<LineFrame, HexError> {
         }
         Err(error) => error,
     };
+    // pymodbus 2.x logs the PDU it took out of a frame (`Getting Frame - 0x3 0x6 ...`):
+    // no unit, no CRC, so no frame; the frame itself is on its `Processing:` line.
+    if contains_ignoring_case(line, b"getting frame") {
+        return Err(HexError::Message);
+    }
     let run = longest_run(line);
     let frame = run
         .as_ref()
         .is_some_and(|run| run.ascii || run.bytes.len() >= SHORTEST_FRAME);
-    if !frame && is_prose(line) {
+    if !frame && (is_prose(line) || is_chatter(line)) {
         return Err(HexError::Message);
     }
     // A byte mistyped among hex bytes (`8G`, `1O`) is a mistake to point at, not a word
@@ -318,13 +323,40 @@ fn frame_of(line: &[u8]) -> Result<LineFrame, HexError> {
 /// Whether a line without a frame is words, as the messages tools write among the frames
 /// of their logs: two words or more of three letters or more, one of them no hex.
 fn is_prose(line: &[u8]) -> bool {
+    // Python's logging glues its words with ':' and '.' (`DEBUG:pymodbus.transaction:`).
     let words: Vec<&[u8]> = line
-        .split(u8::is_ascii_whitespace)
+        .split(|b| b.is_ascii_whitespace() || b":.=[]".contains(b))
         .map(|word| word.trim_ascii_end().strip_suffix(b"...").unwrap_or(word))
         .map(|word| word.strip_suffix(b":").unwrap_or(word))
         .filter(|word| word.len() >= 3 && word.iter().all(u8::is_ascii_alphabetic))
         .collect();
     words.len() >= 2 && words.iter().any(|w| !w.iter().all(u8::is_ascii_hexdigit))
+}
+
+/// What mbpoll's `-v` prints beside its frames: settings (`iCount=1`, `Set mode=rtu`) and
+/// the values read (`[1]: 555`).
+fn is_chatter(line: &[u8]) -> bool {
+    let setting = |word: &[u8]| {
+        word.iter().position(|b| *b == b'=').is_some_and(|at| {
+            at >= 2
+                && word[..at]
+                    .iter()
+                    .all(|b| b.is_ascii_alphanumeric() || *b == b'_')
+        })
+    };
+    let value_line = line
+        .strip_prefix(b"[")
+        .and_then(|rest| rest.iter().position(|b| *b == b']').map(|at| (at, rest)))
+        .is_some_and(|(at, rest)| {
+            at > 0 && rest[..at].iter().all(u8::is_ascii_digit) && rest.get(at + 1) == Some(&b':')
+        });
+    value_line || line.split(u8::is_ascii_whitespace).any(setting)
+}
+
+/// Whether `line` holds `word`, whatever the case.
+fn contains_ignoring_case(line: &[u8], word: &[u8]) -> bool {
+    line.windows(word.len())
+        .any(|w| w.eq_ignore_ascii_case(word))
 }
 
 /// A word of one or two letters and digits, some hex and some not.
