@@ -93,6 +93,10 @@ pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
             }
         }) as Logger
     });
+    // A stand-in device holds nothing to save: Ctrl-C, SIGINT (even in the background of
+    // a script, where it is otherwise ignored), SIGTERM and SIGHUP end it at once.
+    ctrlc::set_handler(|| std::process::exit(0))
+        .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
     let seed = args.seed.unwrap_or_else(|| fastrand::u64(..));
     let server = Arc::new(Server::new(slave, faults, mode, seed, logger));
     let ids_text = ids.iter().map(u8::to_string).collect::<Vec<_>>().join(", ");

@@ -202,3 +202,18 @@ fn an_interrupted_restore_says_the_device_holds_part_of_the_file() {
         "{stderr}"
     );
 }
+
+/// serve in the background of a script, where SIGINT is ignored unless caught, ends on it
+/// at once, exit 0: a stand-in device holds nothing to save.
+#[test]
+fn serve_in_the_background_ends_on_sigint() {
+    let port = crate::support::free_port();
+    let args = vec![
+        "--port".to_string(),
+        format!("tcp://127.0.0.1:{port}"),
+        "serve".to_string(),
+    ];
+    let (output, took) = signalled(&args, Duration::from_millis(500), "INT");
+    assert_eq!(output.status.code(), Some(0));
+    assert!(took < Duration::from_secs(1), "ended {took:?} after");
+}
