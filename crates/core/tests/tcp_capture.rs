@@ -619,3 +619,98 @@ fn pcapng_interfaces_keep_their_own_time_units() {
         ]
     );
 }
+
+/// Found by an outside trial: a transaction lost both ways (request and answer), the
+/// others acknowledged as sent. The next request comes before its answer, paired, and
+/// nothing is called unanswered.
+#[test]
+fn a_transaction_lost_both_ways_leaves_the_next_one_paired() {
+    let exchanges: Vec<_> = (1..=5).map(|t| exchange(t, 3)).collect();
+    let mut packets = conversation(Link::Ethernet, &exchanges);
+    packets.drain(4..6);
+    let (records, _) = sniff(&pcap(1, &timed(packets)));
+    let found = frames(&records);
+    assert_eq!(
+        found,
+        [
+            (1, Kind::Request, true, None),
+            (1, Kind::Response, true, Some(1)),
+            (2, Kind::Request, true, None),
+            (2, Kind::Response, true, Some(3)),
+            (4, Kind::Request, true, None),
+            (4, Kind::Response, true, Some(5)),
+            (5, Kind::Request, true, None),
+            (5, Kind::Response, true, Some(7)),
+        ]
+    );
+    assert!(!records
+        .iter()
+        .any(|r| matches!(r, Record::Unanswered { .. })));
+}
+
+/// Every packet cut by a short snap length just after the function code: each frame is
+/// shown cut, none is turned into noise, and no request is called unanswered.
+#[test]
+fn every_packet_cut_short_shows_every_frame_cut() {
+    let exchanges: Vec<_> = (1..=4).map(|t| exchange(t, 10)).collect();
+    let packets: Vec<_> = timed(conversation(Link::Ethernet, &exchanges))
+        .into_iter()
+        .map(|(time, mut bytes, _)| {
+            let whole = bytes.len() as u32;
+            bytes.truncate(14 + 20 + 20 + 8);
+            (time, bytes, Some(whole))
+        })
+        .collect();
+    let (records, _) = sniff(&pcap(1, &packets));
+    let found = frames(&records);
+    assert_eq!(found.len(), 8, "{found:?}");
+    assert!(found.iter().all(|(_, _, valid, _)| !valid), "{found:?}");
+    let transactions: Vec<u16> = found.iter().map(|f| f.0).collect();
+    assert_eq!(transactions, [1, 1, 2, 2, 3, 3, 4, 4]);
+    assert!(!records
+        .iter()
+        .any(|r| matches!(r, Record::Unanswered { .. })));
+}
+
+/// A request whose tail came before its head: it is complete, and timed, in the packet of
+/// its head, and its answer's response time counts from there.
+#[test]
+fn a_request_completed_out_of_order_is_timed_from_its_last_packet() {
+    let (request, answer) = exchange(1, 1);
+    let mut syn = Vec::new();
+    PacketBuilder::ethernet2([1; 6], [2; 6])
+        .ipv4(CLIENT, SERVER, 64)
+        .tcp(CLIENT_PORT, 502, 0, 1024)
+        .syn()
+        .write(&mut syn, &[])
+        .unwrap();
+    let packets = vec![
+        (999_000, syn, None),
+        (
+            1_000_000,
+            packet(Link::Ethernet, true, 1 + 5, 1, &request[5..]),
+            None,
+        ),
+        (
+            1_002_000,
+            packet(Link::Ethernet, true, 1, 1, &request[..5]),
+            None,
+        ),
+        (
+            1_003_000,
+            packet(Link::Ethernet, false, 1, 1 + request.len() as u32, &answer),
+            None,
+        ),
+    ];
+    let (records, _) = sniff(&pcap(1, &packets));
+    let places: Vec<_> = records
+        .iter()
+        .filter_map(|r| match r {
+            Record::Frame(frame) => frame
+                .tcp
+                .map(|p| (p.packet, p.request_packet, p.response_time)),
+            _ => None,
+        })
+        .collect();
+    assert_eq!(places, [(3, None, None), (4, Some(3), Some(1000))]);
+}

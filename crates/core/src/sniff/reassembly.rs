@@ -13,6 +13,10 @@ const MOST_WAITING: usize = 256 * 1024;
 /// acknowledgements to tell a lost segment by.
 const MOST_SEGMENTS_WAITING: usize = 64;
 
+/// When and in which packet a segment was captured: microseconds since 1970, and the
+/// packet's number.
+pub type At = (u64, u64);
+
 /// What comes out of a stream, in order.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Piece {
@@ -20,8 +24,8 @@ pub enum Piece {
     Bytes {
         /// The bytes.
         data: Vec<u8>,
-        /// When their segment was captured, in microseconds since 1970.
-        time: u64,
+        /// When their segment was captured, in microseconds since 1970, and its packet.
+        at: At,
     },
     /// Bytes that never came.
     Gap(u64),
@@ -35,8 +39,8 @@ pub struct Stream {
     next: Option<u64>,
     /// The first sequence number seen, which positions count from.
     first: u32,
-    /// Segments ahead of `next`, by position: their bytes and their time.
-    waiting: BTreeMap<u64, (Vec<u8>, u64)>,
+    /// Segments ahead of `next`, by position: their bytes, and when they came.
+    waiting: BTreeMap<u64, (Vec<u8>, At)>,
     waiting_bytes: usize,
     /// Bytes seen again (retransmitted or duplicated), kept once.
     pub repeated: u64,
@@ -49,13 +53,13 @@ pub struct Stream {
 
 impl Stream {
     /// A segment whose first byte has sequence number `sequence` (after its SYN, when it
-    /// has one), captured at `time`; the `cut` bytes after `payload` were not captured.
+    /// has one), captured `at`; the `cut` bytes after `payload` were not captured.
     pub fn segment(
         &mut self,
         sequence: u32,
         syn: bool,
         (payload, cut): (&[u8], u32),
-        time: u64,
+        at: At,
         out: &mut Vec<Piece>,
     ) {
         let start = sequence.wrapping_add(u32::from(syn));
@@ -76,12 +80,12 @@ impl Stream {
             return;
         };
         let end = position + payload.len() as u64;
-        self.take(position, payload, time, out);
+        self.take(position, payload, at, out);
         if cut > 0 && self.next == Some(end) {
             out.push(Piece::Gap(u64::from(cut)));
             self.missing += u64::from(cut);
             self.next = Some(end + u64::from(cut));
-            self.release(out);
+            self.release(at, out);
         }
         while self.waiting_bytes > MOST_WAITING || self.waiting.len() > MOST_SEGMENTS_WAITING {
             self.skip_hole(out);
@@ -97,7 +101,7 @@ impl Stream {
 
     /// The other side acknowledged every byte before `acknowledgement`: bytes before it that
     /// never came were lost to the capture, not to the connection, and will not come.
-    pub fn acknowledged(&mut self, acknowledgement: u32, out: &mut Vec<Piece>) {
+    pub fn acknowledged(&mut self, acknowledgement: u32, now: At, out: &mut Vec<Piece>) {
         let Some(next) = self.next else {
             return;
         };
@@ -117,7 +121,7 @@ impl Stream {
             out.push(Piece::Gap(until - next));
             self.missing += until - next;
             self.next = Some(until);
-            self.release(out);
+            self.release(now, out);
         }
     }
 
@@ -140,7 +144,7 @@ impl Stream {
 
     /// Bytes at `position`: those in order go out, with what waited behind them; those
     /// ahead wait; those already out are counted as repeated.
-    fn take(&mut self, position: u64, payload: &[u8], time: u64, out: &mut Vec<Piece>) {
+    fn take(&mut self, position: u64, payload: &[u8], at: At, out: &mut Vec<Piece>) {
         let next = self.next.unwrap_or(0);
         let end = position + payload.len() as u64;
         if end <= next {
@@ -151,11 +155,11 @@ impl Stream {
             let kept = self
                 .waiting
                 .entry(position)
-                .or_insert_with(|| (Vec::new(), time));
+                .or_insert_with(|| (Vec::new(), at));
             if kept.0.len() < payload.len() {
                 self.waiting_bytes += payload.len() - kept.0.len();
                 self.repeated += kept.0.len() as u64;
-                *kept = (payload.to_vec(), time);
+                *kept = (payload.to_vec(), at);
             } else {
                 self.repeated += payload.len() as u64;
             }
@@ -165,37 +169,39 @@ impl Stream {
         self.repeated += skip as u64;
         out.push(Piece::Bytes {
             data: payload[skip..].to_vec(),
-            time,
+            at,
         });
         self.next = Some(end);
-        self.release(out);
+        self.release(at, out);
     }
 
-    /// What waited behind the bytes out so far, now that they reach it.
-    fn release(&mut self, out: &mut Vec<Piece>) {
+    /// What waited behind the bytes out so far, now that they reach it: it comes out
+    /// `now`, with the segment that let it.
+    fn release(&mut self, now: At, out: &mut Vec<Piece>) {
         while let Some(entry) = self.waiting.first_entry() {
             if *entry.key() > self.next.unwrap_or(0) {
                 break;
             }
-            let (at, (data, time)) = entry.remove_entry();
+            let (position, (data, _)) = entry.remove_entry();
             self.waiting_bytes -= data.len();
-            self.take(at, &data, time, out);
+            self.take(position, &data, now, out);
         }
     }
 
-    /// The first segment waiting is taken as following a hole: the gap, then it.
+    /// The first segment waiting is taken as following a hole: the gap, then it, as it
+    /// came (it was whole then; only the hole was not known to be one).
     fn skip_hole(&mut self, out: &mut Vec<Piece>) {
-        let Some((at, (data, time))) = self.waiting.pop_first() else {
+        let Some((position, (data, at))) = self.waiting.pop_first() else {
             return;
         };
         self.waiting_bytes -= data.len();
         let next = self.next.unwrap_or(0);
-        if at > next {
-            out.push(Piece::Gap(at - next));
-            self.missing += at - next;
-            self.next = Some(at);
+        if position > next {
+            out.push(Piece::Gap(position - next));
+            self.missing += position - next;
+            self.next = Some(position);
         }
-        self.take(at, &data, time, out);
+        self.take(position, &data, at, out);
     }
 }
 
@@ -217,22 +223,22 @@ mod tests {
     fn out_of_order_repeated_and_lost_segments() {
         let mut stream = Stream::default();
         let mut out = Vec::new();
-        stream.segment(u32::MAX - 1, true, (b"", 0), 0, &mut out);
+        stream.segment(u32::MAX - 1, true, (b"", 0), (0, 0), &mut out);
         // Across the wrap of the sequence numbers.
-        stream.segment(u32::MAX, false, (b"abc", 0), 1, &mut out);
-        stream.segment(5, false, (b"gh", 0), 3, &mut out);
-        stream.segment(2, false, (b"def", 0), 2, &mut out);
-        stream.segment(2, false, (b"def", 0), 4, &mut out);
-        stream.segment(1, false, (b"cde", 0), 4, &mut out);
+        stream.segment(u32::MAX, false, (b"abc", 0), (1, 0), &mut out);
+        stream.segment(5, false, (b"gh", 0), (3, 0), &mut out);
+        stream.segment(2, false, (b"def", 0), (2, 0), &mut out);
+        stream.segment(2, false, (b"def", 0), (4, 0), &mut out);
+        stream.segment(1, false, (b"cde", 0), (4, 0), &mut out);
         // Acknowledged by the other side: the bytes before 12 were lost to the capture.
-        stream.segment(12, false, (b"ij", 0), 5, &mut out);
-        stream.acknowledged(12, &mut out);
+        stream.segment(12, false, (b"ij", 0), (5, 0), &mut out);
+        stream.acknowledged(12, (5, 0), &mut out);
         assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcdefgh|ij");
-        stream.acknowledged(16, &mut out);
+        stream.acknowledged(16, (5, 0), &mut out);
         assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcdefgh|ij|");
         // A packet the snap length cut: its last 4 bytes are a gap at once.
-        stream.segment(16, false, (b"z", 4), 6, &mut out);
-        stream.segment(21, false, (b"w", 0), 7, &mut out);
+        stream.segment(16, false, (b"z", 4), (6, 0), &mut out);
+        stream.segment(21, false, (b"w", 0), (7, 0), &mut out);
         stream.finish(&mut out);
         assert_eq!(
             String::from_utf8(bytes_of(&out)).unwrap(),

@@ -9,7 +9,7 @@ use std::net::SocketAddr;
 use serde::Serialize;
 
 use super::capture::{segment, Packet};
-use super::reassembly::{Piece, Stream};
+use super::reassembly::{At, Piece, Stream};
 use super::session::{locate, Counts, Filter, FrameRecord, Record, TcpPlace};
 use crate::codec::answer::check;
 use crate::codec::framing::{Broken, Event, Found, Framer};
@@ -40,14 +40,26 @@ struct Side {
     framer: Framer,
 }
 
+/// What the framer found, with when and in which packet it was completed: the packet of
+/// the bytes that completed it (or `now` for what a gap or the end decided).
+type Completed = (Event, At);
+
 impl Side {
     /// Bytes, or their absence, given to the framer.
-    fn frame(&mut self, pieces: &mut Vec<Piece>, events: &mut Vec<Event>) {
+    fn frame(&mut self, pieces: &mut Vec<Piece>, now: At, found: &mut Vec<Completed>) {
+        let mut events = Vec::new();
         for piece in pieces.drain(..) {
-            match piece {
-                Piece::Bytes { data, time } => self.framer.push_at(&data, time, events),
-                Piece::Gap(missing) => self.framer.gap(missing, events),
-            }
+            let at = match piece {
+                Piece::Bytes { data, at } => {
+                    self.framer.push_at(&data, at.0, &mut events);
+                    at
+                }
+                Piece::Gap(missing) => {
+                    self.framer.gap(missing, &mut events);
+                    now
+                }
+            };
+            found.extend(events.drain(..).map(|event| (event, at)));
         }
     }
 
@@ -95,7 +107,7 @@ pub struct TcpSession {
     first_time: Option<u64>,
     last_time: u64,
     pieces: Vec<Piece>,
-    events: Vec<Event>,
+    found: Vec<Completed>,
 }
 
 impl TcpSession {
@@ -113,7 +125,7 @@ impl TcpSession {
             first_time: None,
             last_time: 0,
             pieces: Vec::new(),
-            events: Vec::new(),
+            found: Vec::new(),
         }
     }
 
@@ -173,16 +185,24 @@ impl TcpSession {
             true => (&mut connection.to_server, &mut connection.to_client),
             false => (&mut connection.to_client, &mut connection.to_server),
         };
+        let now = (packet.time_us, packet.number);
         let mut pieces = std::mem::take(&mut self.pieces);
-        let mut events = std::mem::take(&mut self.events);
+        // What this side acknowledges and the capture never had is a gap on the other:
+        // decided first, so that a request released by it comes before this answer.
+        let mut acknowledged = Vec::new();
+        if let Some(acknowledgement) = segment.acknowledgement {
+            other.stream.acknowledged(acknowledgement, now, &mut pieces);
+            other.frame(&mut pieces, now, &mut acknowledged);
+        }
+        let mut found = std::mem::take(&mut self.found);
         side.stream.segment(
             segment.sequence,
             segment.syn,
             (segment.payload, segment.cut),
-            packet.time_us,
+            now,
             &mut pieces,
         );
-        side.frame(&mut pieces, &mut events);
+        side.frame(&mut pieces, now, &mut found);
         if segment.fin {
             let length = u32::try_from(segment.payload.len())
                 .unwrap_or(0)
@@ -194,12 +214,6 @@ impl TcpSession {
                     .wrapping_add(length),
             );
         }
-        // What this side acknowledges and the capture never had is a gap on the other.
-        let mut acknowledged = Vec::new();
-        if let Some(acknowledgement) = segment.acknowledgement {
-            other.stream.acknowledged(acknowledgement, &mut pieces);
-            other.frame(&mut pieces, &mut acknowledged);
-        }
         self.pieces = pieces;
         let place = TcpPlace {
             client,
@@ -209,13 +223,13 @@ impl TcpSession {
             request_packet: None,
             response_time: None,
         };
-        self.read_events(&mut events, place, out);
         let other_place = TcpPlace {
             from_client: !from_client,
             ..place
         };
         self.read_events(&mut acknowledged, other_place, out);
-        self.events = events;
+        self.read_events(&mut found, place, out);
+        self.found = found;
         if segment.rst {
             self.close(key, out);
         } else if segment.fin {
@@ -249,10 +263,12 @@ impl TcpSession {
                 true => &mut connection.to_server,
                 false => &mut connection.to_client,
             };
-            let (mut pieces, mut events) = (Vec::new(), Vec::new());
+            let (mut pieces, mut found, mut ended) = (Vec::new(), Vec::new(), Vec::new());
+            let now = (self.last_time, self.packets.packets);
             side.stream.finish(&mut pieces);
-            side.frame(&mut pieces, &mut events);
-            side.framer.finish(&mut events);
+            side.frame(&mut pieces, now, &mut found);
+            side.framer.finish(&mut ended);
+            found.extend(ended.into_iter().map(|event| (event, now)));
             let place = TcpPlace {
                 client: key.0,
                 server: key.1,
@@ -261,7 +277,7 @@ impl TcpSession {
                 request_packet: None,
                 response_time: None,
             };
-            self.read_events(&mut events, place, out);
+            self.read_events(&mut found, place, out);
         }
         let Some(connection) = self.connections.remove(&key) else {
             return;
@@ -300,8 +316,8 @@ impl TcpSession {
         }
     }
 
-    fn read_events(&mut self, events: &mut Vec<Event>, place: TcpPlace, out: &mut Vec<Record>) {
-        for event in events.drain(..) {
+    fn read_events(&mut self, found: &mut Vec<Completed>, place: TcpPlace, out: &mut Vec<Record>) {
+        for (event, (time, packet)) in found.drain(..) {
             match event {
                 Event::Noise(noise) => {
                     self.counts.noise_bytes += noise.len;
@@ -316,7 +332,10 @@ impl TcpSession {
                         });
                     }
                 }
-                Event::Frame(found) => self.frame(found, place, out),
+                Event::Frame(frame) => {
+                    let place = TcpPlace { packet, ..place };
+                    self.frame(frame, time, place, out);
+                }
             }
         }
     }
@@ -327,13 +346,13 @@ impl TcpSession {
             .saturating_sub(self.first_time.unwrap_or(0))
     }
 
-    fn frame(&mut self, found: Found, mut place: TcpPlace, out: &mut Vec<Record>) {
+    /// A frame completed at `time` (microseconds since 1970) in the packet `place` names.
+    fn frame(&mut self, found: Found, time: u64, mut place: TcpPlace, out: &mut Vec<Record>) {
         let direction = match place.from_client {
             true => Direction::Request,
             false => Direction::Response,
         };
         let key = (place.client, place.server);
-        let time = found.end.unwrap_or(self.last_time);
         let report = match (found.broken, Envelope::open(self.mode, &found.bytes)) {
             (None, Ok(envelope)) => {
                 let decoded = Pdu::decode(&envelope.pdu, direction);
@@ -397,7 +416,7 @@ impl TcpSession {
         if self.filter.shows(report.slave, report.function) {
             out.push(Record::Frame(Box::new(FrameRecord {
                 number: self.numbered,
-                at: self.at(found.start),
+                at: self.at(Some(time)),
                 paired: place.request_packet.is_some(),
                 found,
                 report,

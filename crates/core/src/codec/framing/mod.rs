@@ -224,7 +224,7 @@ impl Framer {
 
     /// `missing` bytes of the stream never came (a lost segment, a packet cut short by the
     /// capture): what is buffered is decided now, a frame begun shown as cut off, and the
-    /// framer picks up again at the next frame that reads.
+    /// framer picks up again at the next frame.
     pub fn gap(&mut self, missing: u64, out: &mut Vec<Event>) {
         self.quiet = true;
         self.ended = true;
@@ -233,7 +233,9 @@ impl Framer {
         self.ended = false;
         self.clear();
         self.offset += missing;
-        self.in_step = false;
+        // A gap ends where a captured segment begins, which is where a sender starts a
+        // frame: a header there is taken; one that does not read sends the framer hunting.
+        self.in_step = true;
     }
 
     /// A master has sent a request to `slave` with `function`: the next frame should be
