@@ -84,9 +84,15 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
                 return replay_capture(settings, args, path, reader);
             }
             if !args.tcp_ports.is_empty() || named_as_capture(path) {
+                let why = match args.tcp_ports.is_empty() {
+                    true => {
+                        "; a raw serial capture is read as one when its name does not end .pcap"
+                    }
+                    false => "; a raw serial capture takes no --tcp-port",
+                };
                 return Err(Error::usage(format!(
                     "{} is neither a pcap nor a pcapng file: give a capture written by \
-                     tcpdump, dumpcap or Wireshark (a raw serial capture takes no --tcp-port)",
+                     tcpdump, dumpcap or Wireshark{why}",
                     path.display()
                 ))
                 .into());
