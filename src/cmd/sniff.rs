@@ -265,13 +265,17 @@ fn replay_capture(
     });
     written?;
     end_tcp(session, sinks)?;
+    let path = path.display();
     match read {
         Ok(_) => Ok(0),
-        Err(error) => Err(Error::usage(format!(
-            "{} {error}; what came before is shown",
-            path.display()
+        // Its first bytes are a capture's magic: the file ends inside its header.
+        Err(capture::CaptureError::NotACapture) => Err(Error::usage(format!(
+            "{path} ends inside its file header: the capture was cut off before its first packet"
         ))
         .into()),
+        Err(error) => {
+            Err(Error::usage(format!("{path} {error}; what came before is shown")).into())
+        }
     }
 }
 

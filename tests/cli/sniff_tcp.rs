@@ -359,10 +359,16 @@ fn a_file_that_is_no_capture_or_a_port_without_one_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("plant.pcap");
     std::fs::write(&file, "these are not packets\n").unwrap();
+    let cut = dir.path().join("cut.pcap");
+    std::fs::write(&cut, [0xD4, 0xC3, 0xB2, 0xA1, 2, 0, 4, 0, 0, 0]).unwrap();
     for (args, says) in [
         (
             vec!["sniff", "--input", file.to_str().unwrap()],
             "is neither a pcap nor a pcapng file",
+        ),
+        (
+            vec!["sniff", "--input", cut.to_str().unwrap()],
+            "ends inside its file header",
         ),
         (
             vec!["sniff", "--port", "/dev/null", "--tcp-port", "5020"],
