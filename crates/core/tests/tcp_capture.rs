@@ -714,3 +714,75 @@ fn a_request_completed_out_of_order_is_timed_from_its_last_packet() {
         .collect();
     assert_eq!(places, [(3, None, None), (4, Some(3), Some(1000))]);
 }
+
+/// A big-endian pcapng (as a big-endian machine writes it) whose interface has an
+/// `if_tsoffset`: its times are those of the same file in little-endian.
+#[test]
+fn a_big_endian_pcapng_with_a_time_offset_reads_as_the_little_endian_one() {
+    fn file(big: bool) -> Vec<u8> {
+        let u32s = |v: u32| {
+            if big {
+                v.to_be_bytes()
+            } else {
+                v.to_le_bytes()
+            }
+        };
+        let u16s = |v: u16| {
+            if big {
+                v.to_be_bytes()
+            } else {
+                v.to_le_bytes()
+            }
+        };
+        let block = |kind: u32, body: &[u8]| {
+            let total = u32::try_from(12 + body.len()).unwrap();
+            [&u32s(kind)[..], &u32s(total), body, &u32s(total)].concat()
+        };
+        let section = block(
+            0x0A0D_0D0A,
+            &[&u32s(0x1A2B_3C4D)[..], &u16s(1), &u16s(0), &[0xFF; 8]].concat(),
+        );
+        let offset = if big {
+            5i64.to_be_bytes()
+        } else {
+            5i64.to_le_bytes()
+        };
+        let interface = block(
+            1,
+            &[
+                &u16s(1)[..],
+                &[0, 0],
+                &u32s(65535),
+                &u16s(14),
+                &u16s(8),
+                &offset,
+                &[0; 4],
+            ]
+            .concat(),
+        );
+        let (request, _) = exchange(1, 1);
+        let data = packet(Link::Ethernet, true, 1, 1, &request);
+        let mut body = [
+            &u32s(0)[..],
+            &u32s(0),
+            &u32s(2_500_000),
+            &u32s(data.len() as u32),
+            &u32s(data.len() as u32),
+            &data,
+        ]
+        .concat();
+        body.resize(body.len().div_ceil(4) * 4, 0);
+        [section, interface, block(6, &body)].concat()
+    }
+    let times = |file: &[u8]| {
+        let mut times = Vec::new();
+        read_packets(file, |packet| {
+            times.push(packet.time_us);
+            true
+        })
+        .unwrap();
+        times
+    };
+    assert_eq!(times(&file(false)), [7_500_000]);
+    assert_eq!(times(&file(true)), [7_500_000]);
+}

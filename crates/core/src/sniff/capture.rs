@@ -143,7 +143,7 @@ pub fn read_packets<R: Read + Send>(
                         interfaces.push(Interface {
                             link: description.linktype.0 as u32,
                             resolution: resolution(description.if_tsresol),
-                            offset: u64::try_from(description.ts_offset()).unwrap_or(0),
+                            offset: ts_offset(&description),
                         });
                     }
                     PcapBlockOwned::NG(Block::EnhancedPacket(block)) => {
@@ -202,6 +202,25 @@ fn resolution(tsresol: u8) -> u64 {
         _ => 2u64.checked_pow(exponent),
     };
     units.filter(|units| *units > 0).unwrap_or(1_000_000)
+}
+
+/// Seconds added to an interface's times (`if_tsoffset`), in the byte order of its
+/// section: pcap-parser reads it little-endian whatever the file's order.
+fn ts_offset(description: &pcap_parser::InterfaceDescriptionBlock) -> u64 {
+    // A block type read little-endian is 1 only in a little-endian section.
+    let big = description.block_type != 1;
+    description
+        .options
+        .iter()
+        .find(|option| option.code == pcap_parser::pcapng::OptionCode::IfTsoffset)
+        .and_then(|option| <[u8; 8]>::try_from(option.value.get(..8)?).ok())
+        .map_or(0, |bytes| {
+            let seconds = match big {
+                true => i64::from_be_bytes(bytes),
+                false => i64::from_le_bytes(bytes),
+            };
+            u64::try_from(seconds).unwrap_or(0)
+        })
 }
 
 /// The TCP segment of a packet.
