@@ -579,6 +579,14 @@ fn a_home_assistant_hub_says_where_the_device_is() {
         "{stderr}"
     );
     assert!(json.contains("\"slave\":17"), "{json}");
+    // Two hubs in one file are two devices: none is taken for all, --port is asked for.
+    let two = format!(
+        "{yaml}  - name: boiler\n    type: tcp\n    host: 127.0.0.2\n    port: {tcp_port}\n    sensors:\n      - {{name: heat, address: 5, slave: 17}}\n"
+    );
+    let path_two = files(&dir, &[("two.yaml", &two)]).remove(0);
+    let (code, _, stderr) = run(&[], &["read", "17", "--map", &path_two]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("no --port"), "{stderr}");
     // A place kept in Home Assistant's secrets is not in the file: --port is asked for.
     let secret = yaml.replace("host: 127.0.0.1", "host: !secret pump_host");
     let path = files(&dir, &[("secret.yaml", &secret)]).remove(0);

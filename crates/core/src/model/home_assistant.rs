@@ -254,13 +254,20 @@ pub fn parse(file: &str, text: &str) -> Result<RegisterMap, MapError> {
     };
     let mut map = RegisterMap::default();
     let mut faults = Faults::default();
-    // The device is where the first hub with a place says; a place kept in Home
-    // Assistant's secrets (`host: !secret pump_host`) is not in the file.
+    // The device is where the hub says; a place kept in Home Assistant's secrets
+    // (`host: !secret pump_host`) is not in the file.
     let secret = text.lines().any(|line| {
         let line = line.trim_start();
         (line.starts_with("host:") || line.starts_with("port:")) && line.contains("!secret")
     });
-    map.connection = hubs.iter().find_map(Hub::connection).filter(|_| !secret);
+    // Several hubs that say different places are several devices, and a point does not
+    // say which it is on: none is taken, and --port says which is meant.
+    let mut places: Vec<MapConnection> = hubs.iter().filter_map(Hub::connection).collect();
+    places.dedup();
+    map.connection = match places.as_slice() {
+        [one] if !secret => Some(one.clone()),
+        _ => None,
+    };
     for hub in hubs {
         let lists = [
             (Platform::Sensor, hub.sensors),
