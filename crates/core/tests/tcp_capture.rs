@@ -120,14 +120,20 @@ fn pcap(link_type: u32, packets: &[(u64, Vec<u8>, Option<u32>)]) -> Vec<u8> {
 
 /// What sniff makes of a capture: its records, and how reading it ended.
 fn sniff(file: &[u8]) -> (Vec<Record>, Result<u64, CaptureError>) {
-    let mut session = TcpSession::new(Mode::Tcp, vec![502], Filter::default());
+    let (_, records, read) = session_of(Mode::Tcp, file);
+    (records, read)
+}
+
+/// A session of `mode` run over a capture on port 502, with what it found.
+fn session_of(mode: Mode, file: &[u8]) -> (TcpSession, Vec<Record>, Result<u64, CaptureError>) {
+    let mut session = TcpSession::new(mode, vec![502], Filter::default());
     let mut records = Vec::new();
     let read = read_packets(file, |packet| {
         session.packet(&packet, &mut records);
         true
     });
     session.finish(&mut records);
-    (records, read)
+    (session, records, read)
 }
 
 /// The frames found: (transaction, kind, valid, the request's packet for an answer).
@@ -228,14 +234,7 @@ fn a_fin_acknowledged_is_no_byte_missing() {
         5000 + answered + 1,
         &[],
     ));
-    let mut session = TcpSession::new(Mode::Tcp, vec![502], Filter::default());
-    let mut records = Vec::new();
-    read_packets(&pcap(1, &timed(packets))[..], |packet| {
-        session.packet(&packet, &mut records);
-        true
-    })
-    .unwrap();
-    session.finish(&mut records);
+    let (session, records, _) = session_of(Mode::Tcp, &pcap(1, &timed(packets)));
     assert_eq!(session.packet_counts().missing_bytes, 0);
     assert_eq!(frames(&records).len(), 4);
 }
@@ -503,14 +502,7 @@ fn rtu_over_tcp_is_framed_by_the_rtu_framer() {
             &[answer.clone(), answer.clone()].concat(),
         ),
     ];
-    let mut session = TcpSession::new(Mode::Rtu, vec![502], Filter::default());
-    let mut records = Vec::new();
-    read_packets(&pcap(1, &timed(packets))[..], |packet| {
-        session.packet(&packet, &mut records);
-        true
-    })
-    .unwrap();
-    session.finish(&mut records);
+    let (_, records, _) = session_of(Mode::Rtu, &pcap(1, &timed(packets)));
     let found = frames(&records);
     assert_eq!(found.len(), 6, "{found:?}");
     assert!(found.iter().all(|(_, _, valid, _)| *valid));

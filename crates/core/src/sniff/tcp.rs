@@ -358,18 +358,19 @@ impl TcpSession {
                 let decoded = Pdu::decode(&envelope.pdu, direction);
                 // A request that breaks its function's rules is still answered, with an
                 // exception: it waits for that answer all the same.
-                let pdu = match (&decoded, direction) {
-                    (Ok(pdu), _) => Some(pdu.clone()),
+                let broken_request = match (&decoded, direction) {
                     (Err(_), Direction::Request) => envelope.pdu.split_first().map(|(f, data)| {
                         Pdu::Request(Request::Other {
                             function: *f,
                             data: data.to_vec(),
                         })
                     }),
-                    (Err(_), Direction::Response) => None,
+                    _ => None,
                 };
-                let request = pdu
+                let request = decoded
                     .as_ref()
+                    .ok()
+                    .or(broken_request.as_ref())
                     .and_then(|pdu| self.pair(&envelope, pdu, key, time, &mut place, out));
                 match decoded {
                     Ok(pdu) => {
