@@ -119,8 +119,12 @@ impl Framer {
     ) -> Tell {
         if past_runs {
             let run = line_state_run(&self.buffer[at.min(self.buffer.len())..]);
+            // A frame may start with the run itself (slave 255, or 0 to broadcast), and the
+            // run's last byte may be the address of a broadcast.
             if run > 0 {
-                // The run's last byte may be the address of a broadcast.
+                if self.followed_well(at, depth, false, asked) == Tell::Yes {
+                    return Tell::Yes;
+                }
                 return match self.followed_well(at + run - 1, depth, false, asked) {
                     Tell::No => self.followed_well(at + run, depth, false, asked),
                     tell => tell,
