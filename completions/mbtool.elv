@@ -72,6 +72,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand encode 'Print the frame a request command would send'
             cand sniff 'Watch a bus without transmitting; frames decoded, paired'
             cand serve 'Stand in for a slave on a serial line or TCP'
+            cand gateway 'Bridge Modbus TCP clients to a serial line, shown live'
             cand generate 'Write the shell completions and man pages (for packagers and the project''s own tree)'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
@@ -1028,6 +1029,35 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
         }
+        &'mbtool;gateway'= {
+            cand --listen 'Where clients connect: tcp://ADDRESS[:PORT]; repeatable'
+            cand --unit-map 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...'
+            cand -p 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand --port 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim'
+            cand -m 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
+            cand --mode 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]'
+            cand -b 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one'
+            cand --baud 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one'
+            cand --parity 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one'
+            cand --data-bits 'Serial data bits [default: 8, 7 in ASCII mode]'
+            cand --stop-bits 'Serial stop bits [default: 1 with parity, 2 without]'
+            cand --timeout 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]'
+            cand --retries 'Retries after a timeout or a bad answer (never after an exception)'
+            cand --frame-gap 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none'
+            cand -o 'Output format [default: table]; for dump, the file to write'
+            cand --output 'Output format [default: table]; for dump, the file to write'
+            cand --log 'Also append every transaction, with its time, to FILE: CSV for a .csv name, JSON Lines for any other'
+            cand --broadcast-reply 'Answer a broadcast (unit 0) as a slave answers a write, for clients that wait for one'
+            cand -q 'No row per transaction (stderr still tells the line and the clients)'
+            cand --quiet 'No row per transaction (stderr still tells the line and the clients)'
+            cand --json 'The same as --output json'
+            cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand --verbose 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
         &'mbtool;generate'= {
             cand --dir 'The folder that receives completions/ and man/'
             cand -h 'Print help'
@@ -1057,6 +1087,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand encode 'Print the frame a request command would send'
             cand sniff 'Watch a bus without transmitting; frames decoded, paired'
             cand serve 'Stand in for a slave on a serial line or TCP'
+            cand gateway 'Bridge Modbus TCP clients to a serial line, shown live'
             cand generate 'Write the shell completions and man pages (for packagers and the project''s own tree)'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
@@ -1134,6 +1165,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         &'mbtool;help;sniff'= {
         }
         &'mbtool;help;serve'= {
+        }
+        &'mbtool;help;gateway'= {
         }
         &'mbtool;help;generate'= {
         }

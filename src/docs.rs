@@ -246,6 +246,23 @@ const EXAMPLES: &[(&str, &[Example])] = &[
         ],
     ),
     (
+        "gateway",
+        &[
+            ex(
+                "Let Modbus TCP clients reach the RTU devices on a USB adapter, every transaction shown",
+                "mbtool gateway --listen tcp://0.0.0.0:502 --port /dev/ttyUSB0 -b 19200",
+            ),
+            ex(
+                "Run as a service: no rows, the transactions logged to a file, retries on a noisy line",
+                "mbtool gateway --listen tcp://0.0.0.0:502 --port /dev/ttyUSB0 --retries 2 --quiet --log gateway.jsonl",
+            ),
+            ex(
+                "Watch what a SCADA asks of a Modbus TCP device: point the SCADA at port 1502",
+                "mbtool gateway --listen tcp://0.0.0.0:1502 --port tcp://192.168.1.10 -o json",
+            ),
+        ],
+    ),
+    (
         "decode",
         &[
             ex(

@@ -4,6 +4,7 @@
 use clap::{Args, Parser, Subcommand};
 
 mod device;
+mod gateway;
 mod options;
 mod requests;
 mod serve;
@@ -11,6 +12,7 @@ mod traffic;
 mod values;
 
 pub use device::*;
+pub use gateway::*;
 pub use options::*;
 pub use requests::*;
 pub use serve::*;
@@ -104,6 +106,10 @@ pub enum Command {
     #[command(long_about = SERVE_ABOUT)]
     Serve(ServeArgs),
 
+    /// Bridge Modbus TCP clients to a serial line, shown live
+    #[command(long_about = GATEWAY_ABOUT)]
+    Gateway(GatewayArgs),
+
     /// Write the shell completions and man pages (for packagers and the project's own tree)
     #[command(hide = true)]
     Generate(GenerateArgs),
@@ -132,6 +138,7 @@ const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
     ("dump", "output", "FILE", "The data file to write [default: standard output]"),
     ("watch", "map", "FILE", "Watch the points of a register map (CSV, or Home Assistant YAML)"),
     ("watch", "poll", "INTERVAL", "How often to read [default: 1s]"),
+    ("gateway", "log", "FILE", "Also append every transaction, with its time, to FILE: CSV for a .csv name, JSON Lines for any other"),
 ];
 
 /// A built command's argument `id` of `command` (also under `encode`), described as
@@ -172,6 +179,7 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
         ["decode"] => &[&["mode"], FORMAT, REGISTERS],
         ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
         ["sniff" | "serve"] => &[LINE, FORMAT],
+        ["gateway"] => &[LINE, MASTER, FORMAT, &["log"]],
         ["info"] => &[LINE, MASTER, FORMAT],
         // watch draws the screen: no -v trace, no output format.
         ["watch"] => &[

@@ -4,6 +4,7 @@ mod decode;
 mod diag;
 mod dump;
 mod encode;
+mod gateway;
 mod info;
 mod map;
 mod poll;
@@ -33,6 +34,7 @@ pub fn run(settings: &Settings, command: Command) -> Result<u8> {
         Command::Encode { request } => encode::run(settings, request),
         Command::Request(request) => request::run(settings, request),
         Command::Serve(args) => serve::run(settings, args),
+        Command::Gateway(args) => gateway::run(settings, args),
         Command::Sniff(args) => sniff::run(settings, args),
         Command::Generate(args) => {
             mbtool::docs::generate(&args.dir)?;

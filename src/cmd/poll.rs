@@ -18,17 +18,20 @@ use mbtool_core::master::run::RunError;
 use mbtool_core::master::Master;
 
 /// Now, as a row of a log shows it: RFC 3339 with milliseconds and the local offset.
-fn now() -> String {
+pub(super) fn now() -> String {
     chrono::Local::now().to_rfc3339_opts(chrono::SecondsFormat::Millis, false)
 }
 
 /// The rows of a poll appended to `--log FILE`: CSV for a `.csv` name, JSON Lines else.
-struct Log<W> {
-    rows: W,
-    file: std::io::BufWriter<output::Named<std::fs::File>>,
+pub(super) struct Log<W> {
+    pub(super) rows: W,
+    pub(super) file: std::io::BufWriter<output::Named<std::fs::File>>,
 }
 
-fn open_log<W: PollRows>(path: &std::path::Path, writer: impl Fn(Format) -> W) -> Result<Log<W>> {
+pub(super) fn open_log<W: PollRows>(
+    path: &std::path::Path,
+    writer: impl Fn(Format) -> W,
+) -> Result<Log<W>> {
     let csv = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("csv"));

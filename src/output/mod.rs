@@ -5,6 +5,7 @@ pub mod backup;
 pub mod decode;
 pub mod device;
 pub mod encode;
+pub mod gateway;
 pub mod map;
 pub mod read;
 pub mod scan;

@@ -594,10 +594,10 @@ impl SniffWriter {
                     ];
                     match tally.times() {
                         Some(t) => row.extend([
-                            duration(t.min),
-                            duration(t.mean),
-                            duration(t.p95),
-                            duration(t.max),
+                            duration(t.spread.min),
+                            duration(t.spread.mean),
+                            duration(t.spread.p95),
+                            duration(t.spread.max),
                             format!(
                                 "{} {}",
                                 t.slowest_function,

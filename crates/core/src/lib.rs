@@ -15,6 +15,8 @@
 
 pub mod codec;
 pub mod describe;
+pub mod gateway;
+pub mod listener;
 pub mod master;
 pub mod model;
 pub mod slave;

@@ -266,15 +266,22 @@ impl Master {
 
     /// One request, with its retries.
     pub fn transact(&mut self, slave: u8, request: &Request) -> Result<Reply, MasterError> {
-        let mut retries_left = self.options.retries;
+        self.transact_counted(slave, request).0
+    }
+
+    /// One request, with its retries, and how many times it was sent.
+    pub fn transact_counted(
+        &mut self,
+        slave: u8,
+        request: &Request,
+    ) -> (Result<Reply, MasterError>, u32) {
+        let mut tries = 0;
         loop {
+            tries += 1;
             match self.attempt(slave, request) {
                 Err(MasterError::Timeout { .. } | MasterError::BadFrame { .. })
-                    if retries_left > 0 =>
-                {
-                    retries_left -= 1;
-                }
-                result => return result,
+                    if tries <= self.options.retries => {}
+                result => return (result, tries),
             }
         }
     }

@@ -37,14 +37,14 @@ pub struct PollOptions {
 
 /// When the next attempt to connect may be made, how long to wait after it, and why the
 /// last one failed.
-struct Backoff {
-    next_attempt: Instant,
+pub(crate) struct Backoff {
+    pub(crate) next_attempt: Instant,
     wait: Duration,
-    last_error: String,
+    pub(crate) last_error: String,
 }
 
 impl Backoff {
-    fn new() -> Self {
+    pub(crate) fn new() -> Self {
         Self {
             next_attempt: Instant::now(),
             wait: FIRST_BACKOFF,
@@ -52,7 +52,7 @@ impl Backoff {
         }
     }
 
-    fn failed(&mut self, error: String) {
+    pub(crate) fn failed(&mut self, error: String) {
         self.next_attempt = Instant::now() + self.wait;
         self.wait = (self.wait * 2).min(MAX_BACKOFF);
         self.last_error = error;

@@ -10,4 +10,5 @@ pub mod home_assistant;
 pub mod map;
 pub mod map_file;
 pub mod number;
+pub mod spread;
 pub mod values;

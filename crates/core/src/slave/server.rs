@@ -2,14 +2,15 @@
 //! slave's data model and the faults it was told to make; every request is logged.
 
 use std::io;
-use std::net::{Shutdown, TcpListener, TcpStream};
-use std::sync::atomic::{AtomicU64, Ordering};
+use std::net::TcpListener;
 use std::sync::{Arc, Mutex};
-use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
+use std::time::{Duration, Instant};
 
 use crate::codec::adu::{opaque_request, wrap};
-use crate::codec::framing::{Event, Found, Framer, ASCII_CHARACTER_TIMEOUT_US};
+use crate::codec::framing::Found;
 use crate::codec::{Direction, ExceptionCode, Frame, FrameError, Mode, Pdu, Request};
+use crate::listener::clients::{accept_clients, lock, Accepted, ErrorSink};
+use crate::listener::{receive_frames, Link};
 use crate::slave::faults::Faults;
 use crate::slave::Slave;
 use crate::transport::tcp::Tcp;
@@ -44,24 +45,6 @@ pub struct LogEntry<'a> {
 
 /// Told of every request the server handles, from any thread.
 pub type Logger = Arc<dyn Fn(&LogEntry) + Send + Sync>;
-
-/// RTU over TCP has no line to time; a gateway passes each frame whole, so the pause that
-/// ends a frame is taken to be that of a line at 19200 baud (11 bits a character).
-const RTU_OVER_TCP_CHARACTER: Duration = Duration::from_micros(573);
-const RTU_OVER_TCP_SILENCE: Duration = Duration::from_micros(1750);
-
-/// A TCP client that sends nothing for this long is dropped.
-pub const CLIENT_IDLE: Duration = Duration::from_secs(60);
-/// Past this many clients, a new one takes the place of the one silent the longest, if
-/// that one is idle; a busy client is never closed, so a busy server serves any number.
-pub const MAX_CLIENTS: usize = 64;
-/// How often running out of file descriptors is told while it lasts.
-const RETELL_AFTER: Duration = Duration::from_secs(10);
-/// A client silent this long is idle: it may make room for a new one.
-pub const IDLE_FOR_ROOM: Duration = Duration::from_secs(10);
-/// A client that has not taken its answers within this time is dropped: it holds a
-/// thread and the answers that wait for it.
-pub const WRITE_DEADLINE: Duration = Duration::from_secs(5);
 
 /// A slave behind a transport: takes requests, answers them, makes the faults asked for.
 pub struct Server {
@@ -202,10 +185,7 @@ impl Server {
     }
 
     /// Answers the requests that come over `transport` until it fails or closes, or (a
-    /// TCP client) stays silent too long. Bytes are framed as every receiver of mbtool
-    /// frames them: on a serial line noise and other slaves' traffic are passed over and
-    /// silence ends a frame; over TCP the MBAP length frames, and what is not Modbus TCP
-    /// ends the connection.
+    /// TCP client) stays silent too long, framed as [`receive_frames`] frames them.
     pub fn serve_stream(
         &self,
         transport: &mut dyn Transport,
@@ -213,302 +193,29 @@ impl Server {
         link: &Link,
         rng: &mut fastrand::Rng,
     ) -> io::Result<()> {
-        let (character, silence) = match link {
-            Link::Serial { character, silence } => (*character, *silence),
-            Link::Tcp { .. } if self.mode != Mode::Tcp => {
-                (RTU_OVER_TCP_CHARACTER, RTU_OVER_TCP_SILENCE)
-            }
-            Link::Tcp { .. } => (Duration::ZERO, Duration::ZERO),
-        };
-        // Modbus TCP is framed by the MBAP length alone; RTU and ASCII by their bytes and
-        // the pauses between them, over TCP too.
-        let timed = self.mode != Mode::Tcp;
-        let mut framer = Framer::new(
-            self.mode,
-            character.as_secs_f64() * 1e6,
-            silence.as_micros() as u64,
-        );
-        // What ends a frame on this line: 3.5 characters in RTU, a second in ASCII.
-        let frame_end = match self.mode {
-            Mode::Ascii => Duration::from_micros(ASCII_CHARACTER_TIMEOUT_US),
-            _ => silence + character,
-        };
-        let started = Instant::now();
-        let mut chunk = Vec::with_capacity(512);
-        let mut events = Vec::new();
-        // Something waits for the silence after the last byte to be decided.
-        let mut undecided = false;
-        loop {
-            for event in events.drain(..) {
-                match event {
-                    Event::Frame(found) => {
-                        if let Some(answer) = self.answer(&found, peer, rng) {
-                            transport.send(&answer)?;
-                            framer.answered();
-                        }
-                    }
-                    Event::Noise(noise) if self.mode == Mode::Tcp => {
-                        return Err(io::Error::new(
-                            io::ErrorKind::InvalidData,
-                            format!(
-                                "{peer} sent what is not Modbus TCP ({}): connection closed",
-                                crate::describe::spaced_hex(
-                                    &noise.kept[..noise.kept.len().min(12)]
-                                )
-                            ),
-                        ));
-                    }
-                    // Noise on a serial line: the next frame may stand right after it.
-                    Event::Noise(_) => {}
-                }
-            }
-            let deadline = match link {
-                _ if undecided => Instant::now() + frame_end,
-                Link::Serial { .. } => Instant::now() + Duration::from_secs(3600),
-                Link::Tcp { idle, .. } => Instant::now() + *idle,
-            };
-            chunk.clear();
-            let received = transport.receive(&mut chunk, deadline)?;
-            let now = started.elapsed().as_micros() as u64;
-            match (received, link) {
-                (0, _) if undecided => {
-                    framer.idle(now, &mut events);
-                    undecided = false;
-                }
-                (0, Link::Serial { .. }) => {}
-                (0, Link::Tcp { idle, .. }) => {
-                    return Err(io::Error::new(
-                        io::ErrorKind::TimedOut,
-                        format!(
-                            "{peer} sent nothing for {} s: connection closed",
-                            idle.as_secs()
-                        ),
-                    ))
-                }
-                (_, link) => {
-                    if let Link::Tcp { activity, .. } = link {
-                        activity.store(now_ms(), Ordering::Relaxed);
-                    }
-                    if timed {
-                        framer.push_at(&chunk, now, &mut events);
-                        undecided = true;
-                    } else {
-                        framer.push(&chunk, &mut events);
-                    }
-                }
-            }
-        }
+        receive_frames(transport, self.mode, link, peer, |found| {
+            self.answer(found, peer, rng)
+        })
     }
 
     /// Accepts TCP clients, each served on its own thread so that none can hold up
-    /// another. When all places are taken, the client silent the longest gives way.
+    /// another.
     pub fn serve_tcp(
         self: Arc<Self>,
         listener: TcpListener,
-        on_error: Arc<dyn Fn(io::Error) + Send + Sync>,
+        on_error: ErrorSink,
     ) -> io::Result<()> {
-        let clients: Arc<Mutex<Vec<Client>>> = Arc::new(Mutex::new(Vec::new()));
-        // When running out of file descriptors was last told: not at every refused accept.
-        let mut told_out_of_descriptors: Option<Instant> = None;
-        let mut tell_out_of_descriptors = |connected: usize| {
-            if told_out_of_descriptors.is_none_or(|at| at.elapsed() >= RETELL_AFTER) {
-                told_out_of_descriptors = Some(Instant::now());
-                on_error(out_of_descriptors_error(connected));
-            }
-        };
-        for (number, stream) in listener.incoming().enumerate() {
-            let stream = match stream {
-                Ok(stream) => stream,
-                Err(error) if is_out_of_descriptors(&error) => {
-                    let mut clients = lock(&clients);
-                    if !close_idlest(&mut clients, &on_error, "no file descriptor was left") {
-                        let connected = clients.len();
-                        drop(clients);
-                        tell_out_of_descriptors(connected);
-                        // The waiting client stays in the listen queue; try again soon.
-                        std::thread::sleep(Duration::from_millis(20));
-                    }
-                    continue;
-                }
-                Err(error) => {
-                    on_error(error);
-                    continue;
-                }
-            };
-            let peer = stream
-                .peer_addr()
-                .map_or_else(|_| "?".to_string(), |a| a.to_string());
-            let activity = Arc::new(AtomicU64::new(now_ms()));
-            let registered = stream.try_clone().map(|handle| Client {
-                number,
-                handle,
-                activity: Arc::clone(&activity),
-            });
-            match registered {
-                Ok(client) => make_room_and_add(&clients, client, &on_error),
-                // Without a second handle the client cannot be closed to make room, but it
-                // is served all the same.
-                Err(error) if is_out_of_descriptors(&error) => {
-                    let connected = lock(&clients).len();
-                    tell_out_of_descriptors(connected);
-                }
-                Err(error) => {
-                    on_error(error);
-                    continue;
-                }
-            }
-            let server = Arc::clone(&self);
-            let (clients_left, on_error_there) = (Arc::clone(&clients), Arc::clone(&on_error));
-            let spawned = std::thread::Builder::new().spawn(move || {
-                let (clients, on_error) = (clients_left, on_error_there);
-                let mut rng = fastrand::Rng::with_seed(server.seed.wrapping_add(number as u64));
-                let link = Link::Tcp {
-                    idle: CLIENT_IDLE,
-                    activity,
-                };
-                // A client that does not read its answers is dropped, not waited for.
-                let served = stream
-                    .set_write_timeout(Some(WRITE_DEADLINE))
-                    .and_then(|()| Tcp::from_stream(stream, server.mode != Mode::Tcp))
-                    .and_then(|mut transport| {
-                        server.serve_stream(&mut transport, &peer, &link, &mut rng)
-                    });
-                if let Err(error) = served {
-                    let quiet = matches!(
-                        error.kind(),
-                        io::ErrorKind::ConnectionAborted
-                            | io::ErrorKind::ConnectionReset
-                            | io::ErrorKind::NotConnected
-                    );
-                    if !quiet {
-                        on_error(match error.kind() {
-                            io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut
-                                if error.get_ref().is_none() =>
-                            {
-                                io::Error::other(format!(
-                                    "{peer} did not read its answers for {} s: connection closed",
-                                    WRITE_DEADLINE.as_secs()
-                                ))
-                            }
-                            _ => error,
-                        });
-                    }
-                }
-                lock(&clients).retain(|c| c.number != number);
-            });
-            if let Err(error) = spawned {
-                // No thread for it: the client is closed rather than left unanswered.
-                let mut clients = lock(&clients);
-                if let Some(index) = clients.iter().position(|c| c.number == number) {
-                    let client = clients.swap_remove(index);
-                    let _ = client.handle.shutdown(Shutdown::Both);
-                }
-                on_error(io::Error::other(format!(
-                    "no thread for another client ({} connected): {error}",
-                    clients.len()
-                )));
-            }
-        }
-        Ok(())
+        accept_clients(
+            listener,
+            on_error,
+            Arc::new(move |client: Accepted| {
+                let mut rng =
+                    fastrand::Rng::with_seed(self.seed.wrapping_add(client.number as u64));
+                let mut transport = Tcp::from_stream(client.stream, self.mode != Mode::Tcp)?;
+                self.serve_stream(&mut transport, &client.peer, &client.link, &mut rng)
+            }),
+        )
     }
-}
-
-/// How a stream reaches the server.
-pub enum Link {
-    /// A serial line, or RTU/ASCII through a gateway: silence matters.
-    Serial {
-        /// One character's time on the line.
-        character: Duration,
-        /// The silence that ends a frame.
-        silence: Duration,
-    },
-    /// A TCP client, dropped after `idle` without a byte; `activity` is when it last
-    /// sent one, in milliseconds.
-    Tcp {
-        /// How long a silent client is kept.
-        idle: Duration,
-        /// When the client last sent a byte, in milliseconds since the Unix epoch.
-        activity: Arc<AtomicU64>,
-    },
-}
-
-/// A connected TCP client, as the accepting thread sees it.
-struct Client {
-    number: usize,
-    /// Another handle on the client's socket, to close it when it must give way.
-    handle: TcpStream,
-    activity: Arc<AtomicU64>,
-}
-
-fn lock<T>(mutex: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
-    match mutex.lock() {
-        Ok(guard) => guard,
-        Err(poisoned) => poisoned.into_inner(),
-    }
-}
-
-/// Adds a client; past [`MAX_CLIENTS`], the one silent the longest is closed first if it
-/// is idle.
-fn make_room_and_add(
-    clients: &Mutex<Vec<Client>>,
-    client: Client,
-    on_error: &Arc<dyn Fn(io::Error) + Send + Sync>,
-) {
-    let mut clients = lock(clients);
-    if clients.len() >= MAX_CLIENTS {
-        let why = format!("{} clients were connected", clients.len());
-        close_idlest(&mut clients, on_error, &why);
-    }
-    clients.push(client);
-}
-
-/// Closes the client silent the longest, if it has been silent for [`IDLE_FOR_ROOM`]; says
-/// so with `why`, and whether one was closed.
-fn close_idlest(
-    clients: &mut Vec<Client>,
-    on_error: &Arc<dyn Fn(io::Error) + Send + Sync>,
-    why: &str,
-) -> bool {
-    let now = now_ms();
-    let idle_ms = IDLE_FOR_ROOM.as_millis() as u64;
-    let idlest = (0..clients.len())
-        .min_by_key(|&i| clients[i].activity.load(Ordering::Relaxed))
-        .filter(|&i| now.saturating_sub(clients[i].activity.load(Ordering::Relaxed)) >= idle_ms);
-    let Some(index) = idlest else {
-        return false;
-    };
-    let idlest = clients.swap_remove(index);
-    let _ = idlest.handle.shutdown(Shutdown::Both);
-    let silent = now.saturating_sub(idlest.activity.load(Ordering::Relaxed)) / 1000;
-    on_error(io::Error::other(format!(
-        "{why}: {}, silent for {silent} s, was closed to make room",
-        idlest
-            .handle
-            .peer_addr()
-            .map_or_else(|_| "?".to_string(), |a| a.to_string())
-    )));
-    true
-}
-
-/// What the server says when the file descriptors run out with `connected` clients.
-fn out_of_descriptors_error(connected: usize) -> io::Error {
-    io::Error::other(format!(
-        "no file descriptor left for another client ({connected} connected): \
-         new clients wait until one leaves; 'ulimit -n' raises the limit"
-    ))
-}
-
-/// Whether accepting failed because the process or the system has no file descriptor left.
-fn is_out_of_descriptors(error: &io::Error) -> bool {
-    // EMFILE and ENFILE on Linux and the BSDs alike.
-    matches!(error.raw_os_error(), Some(23 | 24))
-}
-
-/// Milliseconds since 1970, for telling which client has been silent the longest.
-fn now_ms() -> u64 {
-    SystemTime::now()
-        .duration_since(UNIX_EPOCH)
-        .map_or(0, |d| d.as_millis() as u64)
 }
 
 /// The request a frame found on the line carries, if it is one. A frame whose checksum

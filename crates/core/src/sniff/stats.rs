@@ -8,6 +8,7 @@ use serde::Serialize;
 
 use super::session::Record;
 use crate::describe::Kind;
+use crate::model::spread::Spread;
 
 /// Who answered: a server's address in a TCP capture (`None` on a serial line), and the
 /// unit id or slave address.
@@ -33,14 +34,9 @@ pub struct Tally {
 /// How long answers took, in microseconds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct Times {
-    /// The quickest.
-    pub min: u64,
-    /// The mean, rounded up.
-    pub mean: u64,
-    /// 95 of 100 answers took this long or less.
-    pub p95: u64,
-    /// The slowest.
-    pub max: u64,
+    /// The quickest, mean, 95th percentile and slowest.
+    #[serde(flatten)]
+    pub spread: Spread,
     /// The function whose answers took longest on average.
     pub slowest_function: u8,
 }
@@ -48,24 +44,14 @@ pub struct Times {
 impl Tally {
     /// The response times, when any answer was paired.
     pub fn times(&self) -> Option<Times> {
-        let mut sorted = self.times.clone();
-        sorted.sort_unstable();
-        let (min, max) = (*sorted.first()?, *sorted.last()?);
-        let count = sorted.len() as u64;
-        let mean = sorted.iter().sum::<u64>().div_ceil(count.max(1));
-        // Nearest rank: the smallest time that 95 % of the answers do not exceed.
-        let rank = (count * 95).div_ceil(100).max(1);
-        let p95 = sorted[usize::try_from(rank - 1).unwrap_or(0)];
+        let spread = Spread::of(&mut self.times.clone())?;
         let slowest_function = self
             .functions
             .iter()
             .max_by(|(_, (n1, t1)), (_, (n2, t2))| (t1 * n2).cmp(&(t2 * n1)))
             .map_or(0, |(function, _)| *function);
         Some(Times {
-            min,
-            mean,
-            p95,
-            max,
+            spread,
             slowest_function,
         })
     }
@@ -125,8 +111,11 @@ mod tests {
             *entry = (entry.0 + 1, entry.1 + time);
         }
         let times = tally.times().unwrap();
-        assert_eq!((times.min, times.p95, times.max), (1, 95, 100));
-        assert_eq!(times.mean, 51);
+        assert_eq!(
+            (times.spread.min, times.spread.p95, times.spread.max),
+            (1, 95, 100)
+        );
+        assert_eq!(times.spread.mean, 51);
         assert_eq!(times.slowest_function, 16);
         assert_eq!(Tally::default().times(), None);
     }

@@ -1,0 +1,402 @@
+//! `mbtool gateway`: Modbus TCP clients bridged to one line (a serial port, a transparent
+//! serial server, or another Modbus TCP server). Requests wait their turn in a queue fair
+//! to every client (`queue`), one transaction at a time goes out on the line as the
+//! careful master sends it (`line`), and every transaction is reported as data.
+
+mod line;
+mod queue;
+
+use std::collections::{BTreeMap, HashMap};
+use std::io::{self, Write};
+use std::net::{Shutdown, TcpListener};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::mpsc;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use thiserror::Error;
+
+use crate::codec::{Mode, Pdu, Request};
+use crate::listener::clients::{accept_clients, lock, Accepted, ErrorSink};
+use crate::listener::receive_frames;
+use crate::model::spread::Spread;
+use crate::transport::tcp::Tcp;
+
+pub use line::{Connect, Line};
+use queue::{ClientId, FairQueue};
+
+/// Unit ids mapped to the slave ids they reach on the line (`--unit-map 1=17,2=18`).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct UnitMap(BTreeMap<u8, u8>);
+
+/// Why a unit map does not read.
+#[derive(Debug, Error, PartialEq, Eq)]
+#[error("{0}")]
+pub struct UnitMapError(String);
+
+impl UnitMap {
+    /// Reads `UNIT=SLAVE[,UNIT=SLAVE...]`, each unit id once.
+    pub fn parse(text: &str) -> Result<UnitMap, UnitMapError> {
+        let mut map = BTreeMap::new();
+        for pair in text.split(',').map(str::trim) {
+            let (unit, slave) = pair.split_once('=').ok_or_else(|| {
+                UnitMapError(format!("'{pair}' is not UNIT=SLAVE (as in 1=17,2=18)"))
+            })?;
+            let number = |text: &str, what: &str| {
+                crate::model::number::parse_int(text.trim())
+                    .ok()
+                    .and_then(|n| u8::try_from(n).ok())
+                    .ok_or_else(|| UnitMapError(format!("'{pair}': the {what} is 0-255")))
+            };
+            let (unit, slave) = (number(unit, "unit id")?, number(slave, "slave id")?);
+            if map.insert(unit, slave).is_some() {
+                return Err(UnitMapError(format!("unit {unit} is mapped twice")));
+            }
+        }
+        Ok(UnitMap(map))
+    }
+
+    /// The slave id that `unit` reaches.
+    pub fn slave_for(&self, unit: u8) -> u8 {
+        self.0.get(&unit).copied().unwrap_or(unit)
+    }
+}
+
+/// How the gateway answers what the line does not.
+#[derive(Clone, Debug, Default)]
+pub struct GatewayOptions {
+    /// Unit ids mapped to slave ids.
+    pub unit_map: UnitMap,
+    /// A broadcast's client gets an echo of its request, as some SCADAs wait for one.
+    pub broadcast_reply: bool,
+}
+
+/// What became of one transaction.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    /// The slave answered with data.
+    Answer,
+    /// The slave answered with an exception, or the request did not read (told without
+    /// touching the line).
+    Exception,
+    /// No answer after every try: the client got exception 0B.
+    Timeout,
+    /// Only bad answers (a CRC error, a cut frame, another slave) after every try: the
+    /// client got exception 0B. What was wrong with the last.
+    BadFrame(String),
+    /// The line could not be used: the client got exception 0A. Why.
+    LineDown(String),
+    /// Sent to every slave; nothing comes back.
+    Broadcast,
+}
+
+impl Outcome {
+    /// Its name in the monitor's rows.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Outcome::Answer => "answer",
+            Outcome::Exception => "exception",
+            Outcome::Timeout => "timeout",
+            Outcome::BadFrame(_) => "bad-frame",
+            Outcome::LineDown(_) => "line-down",
+            Outcome::Broadcast => "broadcast",
+        }
+    }
+}
+
+/// One transaction, as it completed.
+#[derive(Clone, Debug)]
+pub struct Transaction {
+    /// The client that asked.
+    pub client: Arc<str>,
+    /// The unit id it asked.
+    pub unit: u8,
+    /// The slave id asked on the line.
+    pub slave: u8,
+    /// The client's transaction id.
+    pub transaction: u16,
+    /// The request (its bytes as an opaque request when they do not read).
+    pub request: Request,
+    /// What the client was sent back: the slave's answer, or the gateway's exception.
+    pub answer: Option<Pdu>,
+    /// How long the request waited for its turn.
+    pub queued: Duration,
+    /// From its turn to its answer: the line's time, retries included.
+    pub response_time: Duration,
+    /// How many times it was sent on the line (0: it never was).
+    pub tries: u32,
+    /// What became of it.
+    pub outcome: Outcome,
+    /// Whether the client was still there to take the answer.
+    pub delivered: bool,
+}
+
+/// What the gateway tells as it works, from its threads.
+pub enum Event<'a> {
+    /// A transaction completed.
+    Transaction(&'a Transaction),
+    /// The line could not be used: why; it is tried again with a growing pause.
+    LineDown(&'a str),
+    /// The line is open again after being down.
+    LineUp,
+    /// A client was closed: why (a client that simply left is not told).
+    ClientClosed(&'a io::Error),
+}
+
+/// Told of every event, from any thread.
+pub type Report = Arc<dyn Fn(Event) + Send + Sync>;
+
+/// The count of a client's or a unit's transactions.
+#[derive(Clone, Debug, Default)]
+pub struct Tally {
+    /// Requests taken.
+    pub requests: u64,
+    /// Answers with data.
+    pub answers: u64,
+    /// Exceptions, from the slave or for a request that did not read.
+    pub exceptions: u64,
+    /// Requests no answer came to.
+    pub timeouts: u64,
+    /// Requests that got only bad answers.
+    pub bad_frames: u64,
+    /// Requests answered 0A while the line was down.
+    pub line_down: u64,
+    times: Times,
+}
+
+/// Response times in bounded memory: exact count, sum, quickest and slowest, and a fair
+/// sample of at most [`TIMES_KEPT`] for the 95th percentile, however long the gateway runs.
+#[derive(Clone, Debug, Default)]
+struct Times {
+    count: u64,
+    sum: u64,
+    min: u64,
+    max: u64,
+    sample: Vec<u64>,
+}
+
+/// The most response times a tally keeps for its percentile.
+const TIMES_KEPT: usize = 10_000;
+
+impl Times {
+    fn add(&mut self, us: u64) {
+        self.min = if self.count == 0 {
+            us
+        } else {
+            self.min.min(us)
+        };
+        self.max = self.max.max(us);
+        self.count += 1;
+        self.sum = self.sum.saturating_add(us);
+        if self.sample.len() < TIMES_KEPT {
+            self.sample.push(us);
+        } else {
+            // Reservoir sampling: every time so far is equally likely to be kept.
+            let slot = fastrand::u64(..self.count) as usize;
+            if let Some(kept) = self.sample.get_mut(slot) {
+                *kept = us;
+            }
+        }
+    }
+}
+
+impl Tally {
+    fn add(&mut self, transaction: &Transaction) {
+        self.requests += 1;
+        match transaction.outcome {
+            Outcome::Answer => self.answers += 1,
+            Outcome::Exception => self.exceptions += 1,
+            Outcome::Timeout => self.timeouts += 1,
+            Outcome::BadFrame(_) => self.bad_frames += 1,
+            Outcome::LineDown(_) => self.line_down += 1,
+            Outcome::Broadcast => {}
+        }
+        if matches!(transaction.outcome, Outcome::Answer | Outcome::Exception)
+            && transaction.tries > 0
+        {
+            self.times.add(transaction.response_time.as_micros() as u64);
+        }
+    }
+
+    /// The response times of the answers, when any came from the line.
+    pub fn times(&self) -> Option<Spread> {
+        let mut sample = self.times.sample.clone();
+        let p95 = Spread::of(&mut sample)?.p95;
+        Some(Spread {
+            min: self.times.min,
+            mean: self.times.sum.div_ceil(self.times.count.max(1)),
+            p95,
+            max: self.times.max,
+        })
+    }
+}
+
+/// What the gateway did, per client and per unit.
+#[derive(Clone, Debug, Default)]
+pub struct Summary {
+    /// By client address.
+    pub clients: BTreeMap<String, Tally>,
+    /// By unit id.
+    pub units: BTreeMap<u8, Tally>,
+    /// Clients closed for sending what is not Modbus TCP.
+    pub bad_clients: u64,
+}
+
+/// A request waiting for the line.
+struct Job {
+    client: Arc<str>,
+    /// The whole MBAP frame.
+    frame: Vec<u8>,
+    arrived: Instant,
+}
+
+/// Clients bridged to one line.
+pub struct Gateway {
+    options: GatewayOptions,
+    queue: FairQueue<Job>,
+    /// Where each connected client's answers go: its writing thread.
+    writers: Mutex<HashMap<ClientId, mpsc::Sender<Vec<u8>>>>,
+    summary: Mutex<Summary>,
+    report: Report,
+    /// The id of the next client, whichever listener it comes to.
+    next_client: AtomicUsize,
+}
+
+impl Gateway {
+    /// A gateway answering as `options` say, telling `report` what it does.
+    pub fn new(options: GatewayOptions, report: Report) -> Arc<Gateway> {
+        Arc::new(Gateway {
+            options,
+            queue: FairQueue::new(),
+            writers: Mutex::new(HashMap::new()),
+            summary: Mutex::new(Summary::default()),
+            report,
+            next_client: AtomicUsize::new(0),
+        })
+    }
+
+    /// What was done so far.
+    pub fn summary(&self) -> Summary {
+        lock(&self.summary).clone()
+    }
+
+    /// Takes the clients of `listener`, each on its own threads, for ever; several
+    /// listeners may feed one gateway.
+    pub fn accept(self: &Arc<Self>, listener: TcpListener, on_error: ErrorSink) -> io::Result<()> {
+        let gateway = Arc::clone(self);
+        accept_clients(
+            listener,
+            on_error,
+            Arc::new(move |client: Accepted| gateway.serve_client(client)),
+        )
+    }
+
+    /// Reads a client's requests into the queue until it leaves; its answers are written
+    /// by a thread of its own, so that a client slow to read holds up no one.
+    fn serve_client(&self, client: Accepted) -> io::Result<()> {
+        let id = self.next_client.fetch_add(1, Ordering::Relaxed);
+        let mut writing = client.stream.try_clone()?;
+        let (answers, to_write) = mpsc::channel::<Vec<u8>>();
+        std::thread::Builder::new().spawn(move || {
+            for answer in to_write {
+                if writing.write_all(&answer).is_err() {
+                    // Not read for the write deadline, or gone: the reading side ends too.
+                    let _ = writing.shutdown(Shutdown::Both);
+                    break;
+                }
+            }
+        })?;
+        lock(&self.writers).insert(id, answers);
+        let peer: Arc<str> = Arc::from(client.peer.as_str());
+        let received = Tcp::from_stream(client.stream, false).and_then(|mut transport| {
+            receive_frames(
+                &mut transport,
+                Mode::Tcp,
+                &client.link,
+                &client.peer,
+                |found| {
+                    self.queue.push(
+                        id,
+                        Job {
+                            client: Arc::clone(&peer),
+                            frame: found.bytes.clone(),
+                            arrived: Instant::now(),
+                        },
+                    );
+                    None
+                },
+            )
+        });
+        // Its waiting requests are dropped; one on the line is finished and its answer
+        // thrown away, so that the line stays in step.
+        lock(&self.writers).remove(&id);
+        self.queue.forget(id);
+        if let Err(error) = &received {
+            if error.kind() == io::ErrorKind::InvalidData {
+                lock(&self.summary).bad_clients += 1;
+            }
+        }
+        received
+    }
+
+    /// Carries out the queued requests on `line`, one at a time, for ever.
+    pub fn run(&self, line: &mut Line) {
+        loop {
+            let (client, job) = self.queue.pop();
+            let transaction = line.carry(&job, &self.options, &self.report);
+            let delivered = match (&transaction.answer, lock(&self.writers).get(&client)) {
+                (Some(answer), Some(writer)) => {
+                    let bytes = line::mbap(transaction.unit, transaction.transaction, answer);
+                    writer.send(bytes).is_ok()
+                }
+                (None, writer) => writer.is_some(),
+                (Some(_), None) => false,
+            };
+            let transaction = Transaction {
+                delivered,
+                ..transaction
+            };
+            {
+                let mut summary = lock(&self.summary);
+                summary
+                    .clients
+                    .entry(transaction.client.to_string())
+                    .or_default()
+                    .add(&transaction);
+                summary
+                    .units
+                    .entry(transaction.unit)
+                    .or_default()
+                    .add(&transaction);
+            }
+            (self.report)(Event::Transaction(&transaction));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_unit_map_reads_pairs_and_refuses_the_rest() {
+        let map = UnitMap::parse("1=17, 2=0x12").unwrap();
+        assert_eq!(
+            (map.slave_for(1), map.slave_for(2), map.slave_for(3)),
+            (17, 18, 3)
+        );
+        for bad in ["1", "1=300", "x=1", "1=2,1=3", ""] {
+            assert!(UnitMap::parse(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn times_keep_exact_bounds_and_a_bounded_sample() {
+        let mut times = Times::default();
+        for us in (1..=50_000).rev() {
+            times.add(us);
+        }
+        assert_eq!((times.min, times.max, times.count), (1, 50_000, 50_000));
+        assert_eq!(times.sample.len(), TIMES_KEPT);
+    }
+}

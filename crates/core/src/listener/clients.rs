@@ -1,0 +1,227 @@
+//! TCP clients accepted, each on its own thread so that none can hold up another. When
+//! all places are taken, the client silent the longest gives way; a busy client is never
+//! closed, and running out of file descriptors is told, not fatal.
+
+use std::io;
+use std::net::{Shutdown, TcpListener, TcpStream};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
+
+use super::Link;
+
+/// A TCP client that sends nothing for this long is dropped.
+pub const CLIENT_IDLE: Duration = Duration::from_secs(60);
+/// Past this many clients, a new one takes the place of the one silent the longest, if
+/// that one is idle; a busy client is never closed, so a busy server serves any number.
+pub const MAX_CLIENTS: usize = 64;
+/// How often running out of file descriptors is told while it lasts.
+const RETELL_AFTER: Duration = Duration::from_secs(10);
+/// A client silent this long is idle: it may make room for a new one.
+pub const IDLE_FOR_ROOM: Duration = Duration::from_secs(10);
+/// A client that has not taken its answers within this time is dropped: it holds a
+/// thread and the answers that wait for it.
+pub const WRITE_DEADLINE: Duration = Duration::from_secs(5);
+
+/// Told of what goes wrong with a client or the listener, from any thread.
+pub type ErrorSink = Arc<dyn Fn(io::Error) + Send + Sync>;
+
+/// A client just accepted, handed to the code that serves it on its own thread.
+pub struct Accepted {
+    /// Its socket, with the write deadline set.
+    pub stream: TcpStream,
+    /// Its address, as logs show it.
+    pub peer: String,
+    /// How many clients were accepted before it.
+    pub number: usize,
+    /// Its link: idle after [`CLIENT_IDLE`], its activity seen by the room-making.
+    pub link: Link,
+}
+
+/// Serves a client until it leaves; an error ends the connection and is told.
+pub type Serve = Arc<dyn Fn(Accepted) -> io::Result<()> + Send + Sync>;
+
+/// A connected TCP client, as the accepting thread sees it.
+struct Client {
+    number: usize,
+    /// Another handle on the client's socket, to close it when it must give way.
+    handle: TcpStream,
+    activity: Arc<AtomicU64>,
+}
+
+/// Accepts clients on `listener` for ever, each served by `serve` on its own thread.
+pub fn accept_clients(listener: TcpListener, on_error: ErrorSink, serve: Serve) -> io::Result<()> {
+    let clients: Arc<Mutex<Vec<Client>>> = Arc::new(Mutex::new(Vec::new()));
+    // When running out of file descriptors was last told: not at every refused accept.
+    let mut told_out_of_descriptors: Option<Instant> = None;
+    let mut tell_out_of_descriptors = |connected: usize| {
+        if told_out_of_descriptors.is_none_or(|at| at.elapsed() >= RETELL_AFTER) {
+            told_out_of_descriptors = Some(Instant::now());
+            on_error(out_of_descriptors_error(connected));
+        }
+    };
+    for (number, stream) in listener.incoming().enumerate() {
+        let stream = match stream {
+            Ok(stream) => stream,
+            Err(error) if is_out_of_descriptors(&error) => {
+                let mut clients = lock(&clients);
+                if !close_idlest(&mut clients, &on_error, "no file descriptor was left") {
+                    let connected = clients.len();
+                    drop(clients);
+                    tell_out_of_descriptors(connected);
+                    // The waiting client stays in the listen queue; try again soon.
+                    std::thread::sleep(Duration::from_millis(20));
+                }
+                continue;
+            }
+            Err(error) => {
+                on_error(error);
+                continue;
+            }
+        };
+        let peer = stream
+            .peer_addr()
+            .map_or_else(|_| "?".to_string(), |a| a.to_string());
+        let activity = Arc::new(AtomicU64::new(now_ms()));
+        let registered = stream.try_clone().map(|handle| Client {
+            number,
+            handle,
+            activity: Arc::clone(&activity),
+        });
+        match registered {
+            Ok(client) => make_room_and_add(&clients, client, &on_error),
+            // Without a second handle the client cannot be closed to make room, but it
+            // is served all the same.
+            Err(error) if is_out_of_descriptors(&error) => {
+                let connected = lock(&clients).len();
+                tell_out_of_descriptors(connected);
+            }
+            Err(error) => {
+                on_error(error);
+                continue;
+            }
+        }
+        let (clients_left, on_error_there, serve) = (
+            Arc::clone(&clients),
+            Arc::clone(&on_error),
+            Arc::clone(&serve),
+        );
+        let spawned = std::thread::Builder::new().spawn(move || {
+            let (clients, on_error) = (clients_left, on_error_there);
+            let link = Link::Tcp {
+                idle: CLIENT_IDLE,
+                activity,
+            };
+            // A client that does not read its answers is dropped, not waited for.
+            let served = stream
+                .set_write_timeout(Some(WRITE_DEADLINE))
+                .and_then(|()| {
+                    serve(Accepted {
+                        stream,
+                        peer: peer.clone(),
+                        number,
+                        link,
+                    })
+                });
+            if let Err(error) = served {
+                if let Some(error) = worth_telling(error, &peer) {
+                    on_error(error);
+                }
+            }
+            lock(&clients).retain(|c| c.number != number);
+        });
+        if let Err(error) = spawned {
+            // No thread for it: the client is closed rather than left unanswered.
+            let mut clients = lock(&clients);
+            if let Some(index) = clients.iter().position(|c| c.number == number) {
+                let client = clients.swap_remove(index);
+                let _ = client.handle.shutdown(Shutdown::Both);
+            }
+            on_error(io::Error::other(format!(
+                "no thread for another client ({} connected): {error}",
+                clients.len()
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// What ended a client's connection, as it is told: nothing for a client that simply left.
+fn worth_telling(error: io::Error, peer: &str) -> Option<io::Error> {
+    match error.kind() {
+        io::ErrorKind::ConnectionAborted
+        | io::ErrorKind::ConnectionReset
+        | io::ErrorKind::NotConnected
+        | io::ErrorKind::BrokenPipe => None,
+        io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut if error.get_ref().is_none() => {
+            Some(io::Error::other(format!(
+                "{peer} did not read its answers for {} s: connection closed",
+                WRITE_DEADLINE.as_secs()
+            )))
+        }
+        _ => Some(error),
+    }
+}
+
+pub(crate) fn lock<T>(mutex: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    match mutex.lock() {
+        Ok(guard) => guard,
+        Err(poisoned) => poisoned.into_inner(),
+    }
+}
+
+/// Adds a client; past [`MAX_CLIENTS`], the one silent the longest is closed first if it
+/// is idle.
+fn make_room_and_add(clients: &Mutex<Vec<Client>>, client: Client, on_error: &ErrorSink) {
+    let mut clients = lock(clients);
+    if clients.len() >= MAX_CLIENTS {
+        let why = format!("{} clients were connected", clients.len());
+        close_idlest(&mut clients, on_error, &why);
+    }
+    clients.push(client);
+}
+
+/// Closes the client silent the longest, if it has been silent for [`IDLE_FOR_ROOM`]; says
+/// so with `why`, and whether one was closed.
+fn close_idlest(clients: &mut Vec<Client>, on_error: &ErrorSink, why: &str) -> bool {
+    let now = now_ms();
+    let idle_ms = IDLE_FOR_ROOM.as_millis() as u64;
+    let idlest = (0..clients.len())
+        .min_by_key(|&i| clients[i].activity.load(Ordering::Relaxed))
+        .filter(|&i| now.saturating_sub(clients[i].activity.load(Ordering::Relaxed)) >= idle_ms);
+    let Some(index) = idlest else {
+        return false;
+    };
+    let idlest = clients.swap_remove(index);
+    let _ = idlest.handle.shutdown(Shutdown::Both);
+    let silent = now.saturating_sub(idlest.activity.load(Ordering::Relaxed)) / 1000;
+    on_error(io::Error::other(format!(
+        "{why}: {}, silent for {silent} s, was closed to make room",
+        idlest
+            .handle
+            .peer_addr()
+            .map_or_else(|_| "?".to_string(), |a| a.to_string())
+    )));
+    true
+}
+
+/// What the server says when the file descriptors run out with `connected` clients.
+fn out_of_descriptors_error(connected: usize) -> io::Error {
+    io::Error::other(format!(
+        "no file descriptor left for another client ({connected} connected): \
+         new clients wait until one leaves; 'ulimit -n' raises the limit"
+    ))
+}
+
+/// Whether accepting failed because the process or the system has no file descriptor left.
+fn is_out_of_descriptors(error: &io::Error) -> bool {
+    // EMFILE and ENFILE on Linux and the BSDs alike.
+    matches!(error.raw_os_error(), Some(23 | 24))
+}
+
+/// Milliseconds since 1970, for telling which client has been silent the longest.
+pub(crate) fn now_ms() -> u64 {
+    SystemTime::now()
+        .duration_since(UNIX_EPOCH)
+        .map_or(0, |d| d.as_millis() as u64)
+}

@@ -1,0 +1,173 @@
+//! `mbtool gateway`: Modbus TCP clients bridged to a line, every transaction shown.
+
+use std::io::{self, Write};
+use std::net::TcpListener;
+use std::sync::{mpsc, Arc, Mutex};
+
+use anyhow::{Context, Result};
+
+use mbtool::cli::GatewayArgs;
+use mbtool::connection::{self, Role};
+use mbtool::error::Error;
+use mbtool::output::gateway::GatewayWriter;
+use mbtool::output::{colour_wanted, Format, Named, PollRows};
+use mbtool::settings::Settings;
+use mbtool_core::gateway::{Event, Gateway, GatewayOptions, Line, Report};
+use mbtool_core::transport::Endpoint;
+
+use super::poll::{now, open_log, Log};
+
+/// The line: `--port`, required.
+fn upstream(settings: &Settings) -> Result<Endpoint, Error> {
+    if settings.connection.port.is_none() {
+        return Err(Error::usage(
+            "gateway needs --port: the serial line (/dev/ttyUSB0), rtu+tcp://HOST:PORT or tcp://HOST:PORT",
+        ));
+    }
+    connection::endpoint(&settings.connection)
+}
+
+/// Every `--listen`, bound before anything else is done.
+fn listeners(args: &GatewayArgs) -> Result<Vec<TcpListener>> {
+    let mut bound = Vec::new();
+    for text in &args.listen {
+        let endpoint = Endpoint::parse_listen(text)
+            .map_err(|e| Error::usage(format!("--listen {text}: {e}")))?;
+        let Endpoint::Tcp { host, port } = &endpoint else {
+            return Err(Error::usage(format!(
+                "--listen {text}: clients connect over Modbus TCP: give tcp://ADDRESS[:PORT]"
+            ))
+            .into());
+        };
+        let listener = TcpListener::bind((host.as_str(), *port))
+            .with_context(|| format!("cannot listen on {endpoint}"))?;
+        bound.push(listener);
+    }
+    Ok(bound)
+}
+
+/// Where each transaction's row goes: the screen (or the pipe) and the log.
+struct Monitor {
+    screen: Option<(GatewayWriter, Box<dyn Write + Send>)>,
+    log: Option<Log<GatewayWriter>>,
+    /// A write failed (the reader of stdout went away, the disk filled): told once, and
+    /// the bridging goes on.
+    told_failure: bool,
+}
+
+impl Monitor {
+    fn row(&mut self, transaction: &mbtool_core::gateway::Transaction) {
+        let time = now();
+        let mut written = Ok(());
+        if let Some((writer, out)) = self.screen.as_mut() {
+            written = writer
+                .row(out, transaction, &time)
+                .and_then(|()| out.flush());
+        }
+        if let Some(log) = self.log.as_mut() {
+            let logged = log.rows.row(&mut log.file, transaction, &time);
+            written = written.and(logged.and_then(|()| log.file.flush()));
+        }
+        if let Err(error) = written {
+            if !self.told_failure {
+                self.told_failure = true;
+                mbtool::note!("mbtool: the monitor cannot write ({error}); the gateway goes on");
+            }
+        }
+    }
+}
+
+pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
+    let endpoint = upstream(settings)?;
+    let mode = connection::mode(&settings.connection, Some(&endpoint), Role::Master)?;
+    let listeners = listeners(args)?;
+    let format = settings.output.format;
+    let log = settings
+        .poll
+        .log
+        .as_deref()
+        .map(|path| open_log(path, |format| GatewayWriter::new(format, false)))
+        .transpose()?;
+    let screen = (!args.quiet).then(|| {
+        let out = Named::new(io::stdout(), "standard output");
+        let writer = GatewayWriter::new(format, colour_wanted());
+        (
+            writer,
+            Box::new(io::BufWriter::new(out)) as Box<dyn Write + Send>,
+        )
+    });
+    let monitor = Mutex::new(Monitor {
+        screen,
+        log,
+        told_failure: false,
+    });
+    let report: Report = Arc::new(move |event| match event {
+        Event::Transaction(transaction) => {
+            let mut monitor = monitor.lock().unwrap_or_else(|p| p.into_inner());
+            monitor.row(transaction);
+        }
+        Event::LineDown(why) => {
+            mbtool::note!("mbtool: line down: {why}; clients get exception 0A until it is back");
+        }
+        Event::LineUp => mbtool::note!("mbtool: line up again"),
+        Event::ClientClosed(error) => mbtool::note!("mbtool: {error}"),
+    });
+    let options = GatewayOptions {
+        unit_map: args.unit_map.clone().unwrap_or_default(),
+        broadcast_reply: args.broadcast_reply,
+    };
+    let gateway = Gateway::new(options, Arc::clone(&report));
+    // Ctrl-C, SIGINT and SIGTERM end the gateway with its summary.
+    let (stop, stopped) = mpsc::channel();
+    ctrlc::set_handler(move || {
+        let _ = stop.send(());
+    })
+    .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
+    let connection = settings.connection.clone();
+    let (line_endpoint, verbose) = (endpoint.clone(), settings.output.verbose);
+    let mut line = Line::new(
+        Box::new(move || {
+            let mut master =
+                connection::master(&connection, &line_endpoint, mode).map_err(|e| e.to_string())?;
+            if verbose {
+                master.trace(super::shared::tracer(mode));
+            }
+            Ok(master)
+        }),
+        mode,
+    );
+    line.open(&report);
+    let mut addresses = Vec::new();
+    for listener in listeners {
+        addresses.push(listener.local_addr()?.to_string());
+        let gateway = Arc::clone(&gateway);
+        let on_error = Arc::clone(&report);
+        std::thread::Builder::new().spawn(move || {
+            let told = Arc::new(move |error: io::Error| on_error(Event::ClientClosed(&error)));
+            if let Err(error) = gateway.accept(listener, told) {
+                mbtool::note!("mbtool: stopped listening: {error}");
+            }
+        })?;
+    }
+    mbtool::note!(
+        "mbtool: gateway on {} to {endpoint} ({mode}); Ctrl-C ends",
+        addresses.join(", ")
+    );
+    let working = Arc::clone(&gateway);
+    std::thread::Builder::new().spawn(move || working.run(&mut line))?;
+    let _ = stopped.recv();
+    let summary = gateway.summary();
+    let writer = GatewayWriter::new(format, false);
+    let mut text = Vec::new();
+    writer.summary(&mut text, &summary)?;
+    if format == Format::Json && !args.quiet {
+        let mut out = io::stdout().lock();
+        let _ = out.write_all(&text).and_then(|()| out.flush());
+        let mut table = Vec::new();
+        GatewayWriter::new(Format::Table, false).summary(&mut table, &summary)?;
+        mbtool::note!("{}", String::from_utf8_lossy(&table).trim_end());
+    } else {
+        mbtool::note!("{}", String::from_utf8_lossy(&text).trim_end());
+    }
+    Ok(0)
+}

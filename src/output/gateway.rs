@@ -1,0 +1,306 @@
+//! How `gateway` shows its transactions: a line each for people, JSON Lines or CSV, and
+//! the summary per client and per unit at the end.
+
+use std::io::{self, Write};
+
+use serde::Serialize;
+
+use super::{csv_field, fields_summary, Format, PollRows};
+use mbtool_core::codec::{function, Pdu};
+use mbtool_core::describe::{describe_pdu, Fields, Kind};
+use mbtool_core::gateway::{Outcome, Summary, Tally, Transaction};
+use mbtool_core::model::spread::Spread;
+
+const RED: &str = "\x1b[31m";
+const YELLOW: &str = "\x1b[33m";
+const RESET: &str = "\x1b[0m";
+
+pub struct GatewayWriter {
+    format: Format,
+    colour: bool,
+    csv_header_written: bool,
+}
+
+/// What went back to the client, as JSON says it.
+#[derive(Serialize)]
+struct JsonAnswer {
+    kind: Kind,
+    #[serde(flatten)]
+    fields: Fields,
+}
+
+#[derive(Serialize)]
+struct JsonTransaction<'a> {
+    time: &'a str,
+    client: &'a str,
+    unit: u8,
+    slave: u8,
+    transaction: u16,
+    function: u8,
+    request: Fields,
+    answer: Option<JsonAnswer>,
+    queued_us: u64,
+    response_time_us: u64,
+    tries: u32,
+    outcome: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    why: Option<&'a str>,
+    /// Only when the client had left before its answer.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    client_gone: bool,
+}
+
+const CSV_HEADER: &str = "time,client,unit,slave,transaction,function,request,answer,queued_us,response_time_us,tries,outcome,why\n";
+
+/// What a transaction's answer says, in a few words: the values of a read at the
+/// addresses its request asked.
+fn answer_summary(request: &Fields, answer: Option<&Pdu>) -> String {
+    match answer {
+        None => "-".to_string(),
+        Some(Pdu::Exception(exception)) => format!("exception {}", exception.code),
+        Some(pdu) => {
+            let (_, mut fields) = describe_pdu(pdu);
+            if fields.values.is_some() && fields.address.is_none() && request.count.is_some() {
+                fields.address = request.address;
+                fields.reference.clone_from(&request.reference);
+            }
+            match fields_summary(&fields) {
+                shown if shown.is_empty() => "ok".to_string(),
+                shown => shown,
+            }
+        }
+    }
+}
+
+fn why(outcome: &Outcome) -> Option<&str> {
+    match outcome {
+        Outcome::BadFrame(why) | Outcome::LineDown(why) => Some(why),
+        _ => None,
+    }
+}
+
+impl GatewayWriter {
+    pub fn new(format: Format, colour: bool) -> Self {
+        Self {
+            format,
+            colour,
+            csv_header_written: false,
+        }
+    }
+
+    fn row_line(&self, t: &Transaction, time: &str) -> String {
+        let function = t.request.function();
+        let (_, request) = describe_pdu(&Pdu::Request(t.request.clone()));
+        let unit = if t.unit == t.slave {
+            t.unit.to_string()
+        } else {
+            format!("{}>{}", t.unit, t.slave)
+        };
+        let tries = match t.tries {
+            1 => "1 try".to_string(),
+            n => format!("{n} tries"),
+        };
+        let mut outcome = t.outcome.name().to_string();
+        if let Some(why) = why(&t.outcome) {
+            outcome = format!("{outcome}: {why}");
+        }
+        if !t.delivered && t.answer.is_some() {
+            outcome.push_str(" (client gone)");
+        }
+        let colour = match t.outcome {
+            _ if !self.colour => "",
+            Outcome::Answer | Outcome::Broadcast => "",
+            Outcome::Exception => YELLOW,
+            _ => RED,
+        };
+        let reset = if colour.is_empty() { "" } else { RESET };
+        // The time of day of an RFC 3339 time: the date is the same all day.
+        let clock = time.get(11..23).unwrap_or(time);
+        format!(
+            "{clock}  {:<21} {unit:>7}  {function:02} {:<26} {:<28} -> {:<32} {:>9}  {tries:<7} {colour}{outcome}{reset}\n",
+            t.client,
+            function::name(function),
+            fields_summary(&request),
+            answer_summary(&request, t.answer.as_ref()),
+            format!("{:.1} ms", t.response_time.as_secs_f64() * 1000.0),
+        )
+    }
+
+    fn json_row(t: &Transaction, time: &str) -> serde_json::Result<Vec<u8>> {
+        let (_, request) = describe_pdu(&Pdu::Request(t.request.clone()));
+        let answer = t.answer.as_ref().map(|pdu| {
+            let (kind, fields) = describe_pdu(pdu);
+            JsonAnswer { kind, fields }
+        });
+        let mut line = serde_json::to_vec(&JsonTransaction {
+            time,
+            client: &t.client,
+            unit: t.unit,
+            slave: t.slave,
+            transaction: t.transaction,
+            function: t.request.function(),
+            request,
+            answer,
+            queued_us: t.queued.as_micros() as u64,
+            response_time_us: t.response_time.as_micros() as u64,
+            tries: t.tries,
+            outcome: t.outcome.name(),
+            why: why(&t.outcome),
+            client_gone: !t.delivered && t.answer.is_some(),
+        })?;
+        line.push(b'\n');
+        Ok(line)
+    }
+
+    fn csv_row(t: &Transaction, time: &str) -> String {
+        let (_, request) = describe_pdu(&Pdu::Request(t.request.clone()));
+        let fields = [
+            time.to_string(),
+            t.client.to_string(),
+            t.unit.to_string(),
+            t.slave.to_string(),
+            t.transaction.to_string(),
+            t.request.function().to_string(),
+            fields_summary(&request),
+            answer_summary(&request, t.answer.as_ref()),
+            t.queued.as_micros().to_string(),
+            t.response_time.as_micros().to_string(),
+            t.tries.to_string(),
+            t.outcome.name().to_string(),
+            why(&t.outcome).unwrap_or_default().to_string(),
+        ];
+        let mut line = fields.map(|f| csv_field(&f)).join(",");
+        line.push('\n');
+        line
+    }
+
+    /// The summary per client and per unit: a table, or a JSON line each.
+    pub fn summary(&self, out: &mut dyn Write, summary: &Summary) -> io::Result<()> {
+        if self.format == Format::Json {
+            for (client, tally) in &summary.clients {
+                json_summary(out, "client", ("client", client.as_str().into()), tally)?;
+            }
+            for (unit, tally) in &summary.units {
+                json_summary(out, "unit", ("unit", (*unit).into()), tally)?;
+            }
+            return Ok(());
+        }
+        let mut table = super::new_table(false);
+        table.set_header(vec![
+            "",
+            "requests",
+            "answers",
+            "exceptions",
+            "timeouts",
+            "bad frames",
+            "line down",
+            "min",
+            "mean",
+            "p95",
+            "max",
+        ]);
+        let rows = summary
+            .clients
+            .iter()
+            .map(|(client, tally)| (format!("client {client}"), tally))
+            .chain(
+                summary
+                    .units
+                    .iter()
+                    .map(|(unit, tally)| (format!("unit {unit}"), tally)),
+            );
+        for (name, tally) in rows {
+            let mut row = vec![
+                name,
+                tally.requests.to_string(),
+                tally.answers.to_string(),
+                tally.exceptions.to_string(),
+                tally.timeouts.to_string(),
+                tally.bad_frames.to_string(),
+                tally.line_down.to_string(),
+            ];
+            let ms = |us: u64| format!("{:.1} ms", us as f64 / 1000.0);
+            match tally.times() {
+                Some(Spread {
+                    min,
+                    mean,
+                    p95,
+                    max,
+                }) => row.extend([min, mean, p95, max].map(ms)),
+                None => row.extend(["-", "-", "-", "-"].map(String::from)),
+            }
+            table.add_row(row);
+        }
+        writeln!(out, "{table}")?;
+        if summary.bad_clients > 0 {
+            writeln!(
+                out,
+                "{} closed for sending what is not Modbus TCP",
+                super::plural(summary.bad_clients as usize, "client")
+            )?;
+        }
+        Ok(())
+    }
+}
+
+/// One line of the summary in JSON.
+#[derive(Serialize)]
+struct JsonTally {
+    requests: u64,
+    answers: u64,
+    exceptions: u64,
+    timeouts: u64,
+    bad_frames: u64,
+    line_down: u64,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    response_time_us: Option<Spread>,
+}
+
+fn json_summary(
+    out: &mut dyn Write,
+    kind: &str,
+    (key, value): (&str, serde_json::Value),
+    tally: &Tally,
+) -> io::Result<()> {
+    let mut line = serde_json::json!({ "summary": kind, key: value });
+    let counts = serde_json::to_value(JsonTally {
+        requests: tally.requests,
+        answers: tally.answers,
+        exceptions: tally.exceptions,
+        timeouts: tally.timeouts,
+        bad_frames: tally.bad_frames,
+        line_down: tally.line_down,
+        response_time_us: tally.times(),
+    })?;
+    if let (Some(line), serde_json::Value::Object(counts)) = (line.as_object_mut(), counts) {
+        line.extend(counts);
+    }
+    writeln!(out, "{line}")
+}
+
+impl PollRows for GatewayWriter {
+    type Item = Transaction;
+
+    fn row(&mut self, out: &mut dyn Write, t: &Transaction, time: &str) -> io::Result<()> {
+        match self.format {
+            Format::Json => out.write_all(&Self::json_row(t, time)?),
+            Format::Csv => {
+                if !self.csv_header_written {
+                    self.csv_header_written = true;
+                    out.write_all(CSV_HEADER.as_bytes())?;
+                }
+                out.write_all(Self::csv_row(t, time).as_bytes())
+            }
+            Format::Table | Format::Values => out.write_all(self.row_line(t, time).as_bytes()),
+        }
+    }
+
+    /// The gateway has no failed polls: what goes wrong is a transaction's outcome.
+    fn failure(&mut self, _: &mut dyn Write, _: &str, _: &str) -> io::Result<()> {
+        Ok(())
+    }
+
+    fn continuing(&mut self) {
+        self.csv_header_written = true;
+    }
+}
