@@ -14,6 +14,7 @@ mod docs;
 mod encode;
 mod first_contact;
 mod full_disk;
+mod gateway;
 mod golden;
 mod interrupt;
 mod map;

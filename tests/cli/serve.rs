@@ -81,7 +81,7 @@ fn mbpoll(connection: &[&str], args: &str) -> Vec<String> {
 }
 
 /// Every table read and written by mbpoll; what it wrote read back by mbtool too.
-fn mbpoll_exercise(connection: &[&str], port: &[String]) {
+pub(crate) fn mbpoll_exercise(connection: &[&str], port: &[String]) {
     let read = |args: &str| mbpoll(connection, &format!("-a 17 -1 {args}"));
     assert_eq!(read("-t 4 -r 108 -c 3"), ["555", "0", "100"]);
     assert_eq!(read("-t 3 -r 9"), ["10"]);

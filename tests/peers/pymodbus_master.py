@@ -3,25 +3,66 @@
 slave 17 and prints one JSON object with what it read.
 
     pymodbus_master.py --framer ascii --serial /dev/pts/5
+    pymodbus_master.py --tcp 5020 --every-function
 """
 import argparse
 import json
 
 from pymodbus import FramerType
-from pymodbus.client import ModbusSerialClient
+from pymodbus.client import ModbusSerialClient, ModbusTcpClient
+
+
+def answer(response):
+    """What a response says, as JSON: its fields, or the exception code."""
+    if response.isError():
+        return {"exception": getattr(response, "exception_code", None)}
+    fields = {}
+    for name in ("registers", "status", "message", "identifier", "information"):
+        value = getattr(response, name, None)
+        if isinstance(value, bytes):
+            value = value.hex()
+        elif isinstance(value, dict):
+            value = {str(k): v.hex() if isinstance(v, bytes) else v for k, v in value.items()}
+        if value not in (None, [], b""):
+            fields[name] = value
+    bits = getattr(response, "bits", None)
+    if bits:
+        fields["bits"] = [int(b) for b in bits]
+    return fields
+
+
+def every_function(client, out, skip):
+    """The functions past reads and writes, each answer recorded as it comes."""
+    out["exception_status"] = answer(client.read_exception_status(device_id=17))
+    out["diagnostics_echo"] = answer(client.diag_query_data(b"\x12\x34", device_id=17))
+    out["server_id"] = answer(client.report_device_id(device_id=17))
+    out["mask_write"] = answer(client.mask_write_register(address=5, and_mask=0xF0F0, or_mask=0x0505, device_id=17))
+    out["after_mask"] = client.read_holding_registers(5, count=1, device_id=17).registers
+    out["read_write"] = answer(client.readwrite_registers(read_address=10, read_count=3, write_address=20, values=[4, 5], device_id=17))
+    out["device_identification"] = answer(client.read_device_information(read_code=1, object_id=0, device_id=17))
+    if "fifo" not in skip:
+        out["missing_function"] = answer(client.read_fifo_queue(address=1, device_id=17))
 
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--framer", choices=["rtu", "ascii"], required=True)
-    parser.add_argument("--serial", required=True)
-    args = parser.parse_args()
-    # A pseudo-terminal carries bytes: the line settings do not matter there.
-    client = ModbusSerialClient(
-        args.serial, framer=FramerType(args.framer), baudrate=19200, parity="N", timeout=2
+    parser.add_argument("--framer", choices=["rtu", "ascii"])
+    parser.add_argument("--serial")
+    parser.add_argument("--tcp", type=int, help="a Modbus TCP server on 127.0.0.1")
+    parser.add_argument("--every-function", action="store_true")
+    parser.add_argument(
+        "--skip", action="append", default=[], help="fifo: a slave that never answers it"
     )
+    args = parser.parse_args()
+    if args.tcp:
+        client = ModbusTcpClient("127.0.0.1", port=args.tcp, timeout=3)
+    else:
+        # A pseudo-terminal carries bytes: the line settings do not matter there.
+        client = ModbusSerialClient(
+            args.serial, framer=FramerType(args.framer), baudrate=19200, parity="N", timeout=2
+        )
     if not client.connect():
-        raise SystemExit("cannot open " + args.serial)
+        raise SystemExit("cannot connect")
     out = {}
     out["holding"] = client.read_holding_registers(107, count=3, device_id=17).registers
     out["input_register"] = client.read_input_registers(8, count=1, device_id=17).registers
@@ -35,8 +76,10 @@ def main():
         client.read_holding_registers(10, count=3, device_id=17).registers
     out["written_coils"] = [int(b) for b in client.read_coils(99, count=3, device_id=17).bits[:3]] + \
         [int(client.read_coils(172, count=1, device_id=17).bits[0])]
+    if args.every_function:
+        every_function(client, out, args.skip)
     client.close()
-    print(json.dumps(out))
+    print(json.dumps(out, sort_keys=True))
 
 
 if __name__ == "__main__":
