@@ -2,6 +2,7 @@
 //! the summary per client and per unit at the end.
 
 use std::io::{self, Write};
+use std::time::Duration;
 
 use serde::Serialize;
 
@@ -9,6 +10,7 @@ use super::{csv_field, fields_summary, Format, PollRows};
 use mbtool_core::codec::{function, Pdu};
 use mbtool_core::describe::{describe_pdu, Fields, Kind};
 use mbtool_core::gateway::{Outcome, Summary, Tally, Transaction};
+use mbtool_core::model::duration::show;
 use mbtool_core::model::spread::Spread;
 
 const RED: &str = "\x1b[31m";
@@ -122,7 +124,7 @@ impl GatewayWriter {
             function::name(function),
             fields_summary(&request),
             answer_summary(&request, t.answer.as_ref()),
-            format!("{:.1} ms", t.response_time.as_secs_f64() * 1000.0),
+            show(t.response_time),
         )
     }
 
@@ -219,7 +221,7 @@ impl GatewayWriter {
                 tally.bad_frames.to_string(),
                 tally.line_down.to_string(),
             ];
-            let ms = |us: u64| format!("{:.1} ms", us as f64 / 1000.0);
+            let ms = |us: u64| show(Duration::from_micros(us));
             match tally.times() {
                 Some(Spread {
                     min,

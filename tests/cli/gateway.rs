@@ -282,6 +282,25 @@ fn fifty_clients_at_once_each_get_their_own_answers_and_every_write_lands_once()
 }
 
 #[test]
+fn a_hundred_and_twenty_clients_connected_at_once_are_all_served() {
+    let Some(pair) = PtyPair::new() else { return };
+    let (_slave, gateway) = gateway_to_serve(&pair, &[], &["-q"]);
+    let mut clients: Vec<TcpStream> = (0..120).map(|_| gateway.client()).collect();
+    for (id, client) in clients.iter_mut().enumerate() {
+        client
+            .write_all(&mbap(id as u16, 17, &read_holding(107, 1)))
+            .unwrap();
+    }
+    for (id, client) in clients.iter_mut().enumerate() {
+        assert_eq!(
+            answer(client),
+            Some((id as u16, 17, vec![3, 2, 2, 0x2B])),
+            "client {id}"
+        );
+    }
+}
+
+#[test]
 fn a_client_that_pipelines_a_thousand_requests_does_not_starve_another() {
     let Some(pair) = PtyPair::new() else { return };
     let (_slave, gateway) = gateway_to_serve(&pair, &[], &["-q", "--frame-gap", "0"]);

@@ -17,7 +17,7 @@ use std::time::{Duration, Instant};
 use thiserror::Error;
 
 use crate::codec::{Mode, Pdu, Request};
-use crate::listener::clients::{accept_clients, lock, Accepted, ErrorSink};
+use crate::listener::clients::{accept_clients, lock, Accepted, ErrorSink, WRITE_DEADLINE};
 use crate::listener::receive_frames;
 use crate::model::spread::Spread;
 use crate::transport::tcp::Tcp;
@@ -297,11 +297,22 @@ impl Gateway {
         let id = self.next_client.fetch_add(1, Ordering::Relaxed);
         let mut writing = client.stream.try_clone()?;
         let (answers, to_write) = mpsc::channel::<Vec<u8>>();
+        let (report, peer) = (Arc::clone(&self.report), client.peer.clone());
         std::thread::Builder::new().spawn(move || {
             for answer in to_write {
-                if writing.write_all(&answer).is_err() {
+                if let Err(error) = writing.write_all(&answer) {
                     // Not read for the write deadline, or gone: the reading side ends too.
                     let _ = writing.shutdown(Shutdown::Both);
+                    if matches!(
+                        error.kind(),
+                        io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut
+                    ) {
+                        let stalled = io::Error::other(format!(
+                            "{peer} did not read its answers for {} s: connection closed",
+                            WRITE_DEADLINE.as_secs()
+                        ));
+                        report(Event::ClientClosed(&stalled));
+                    }
                     break;
                 }
             }
