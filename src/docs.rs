@@ -350,6 +350,34 @@ pub fn command() -> clap::Command {
     hide_untaken_options(crate::cli::with_argument_help(command))
 }
 
+/// The definition `args` are parsed with. A call for help gets all of [`command`]. Any
+/// other command line is parsed with the definition as derived, only the command it names
+/// given its argument help, and nothing built before clap builds the commands the parse
+/// goes through: building copies every global option into every command, and cost each
+/// run more than most commands' own work. The parse is the same either way; only help
+/// shows what the whole definition adds.
+pub fn parser(args: &[std::ffi::OsString]) -> clap::Command {
+    let help = args
+        .iter()
+        .skip(1)
+        .any(|arg| ["-h", "--help", "help"].iter().any(|word| arg == *word));
+    if help {
+        return command();
+    }
+    let command = Cli::command();
+    let named = args.iter().skip(1).find_map(|arg| {
+        let word = arg.to_str()?;
+        command
+            .get_subcommands()
+            .find(|sub| sub.get_name() == word || sub.get_all_aliases().any(|a| a == word))
+            .map(|sub| sub.get_name().to_string())
+    });
+    match named {
+        Some(name) => crate::cli::with_argument_help_of(command, &name),
+        None => command,
+    }
+}
+
 fn hide_untaken_options(command: clap::Command) -> clap::Command {
     each_command(command, &[], &|sub, path| {
         sub.mut_args(|arg| {

@@ -28,8 +28,9 @@ fn main() -> ExitCode {
 /// the commands; every other usage error, including an option the command does not take,
 /// becomes one `mbtool: ` line. Both end with exit status 2.
 fn parse() -> Result<(Settings, Command), ExitCode> {
-    let mut command = mbtool::docs::command();
-    let matches = command.try_get_matches_from_mut(std::env::args_os());
+    let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    let mut command = mbtool::docs::parser(&args);
+    let matches = command.try_get_matches_from_mut(args);
     let parsed = matches.and_then(|m| Ok((Cli::from_arg_matches(&m)?, m)));
     let (cli, matches) = parsed.map_err(|error| match error.kind() {
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {

@@ -18,8 +18,8 @@ command -v tshark >/dev/null || missing+=(tshark)
 command -v pkg-config >/dev/null || missing+=(pkg-config)
 pkg-config --exists libudev 2>/dev/null || missing+=(libudev-dev)
 pkg-config --exists libmodbus 2>/dev/null || missing+=(libmodbus-dev)
-# libpcap: sniff --interface (the live-capture feature, on by default).
-pkg-config --exists libpcap 2>/dev/null || missing+=(libpcap-dev)
+# libpcap at run time: sniff --interface loads it (tcpdump brings it too).
+ldconfig -p 2>/dev/null | grep -q 'libpcap\.so' || missing+=(libpcap0.8)
 if [ ${#missing[@]} -gt 0 ]; then
     echo "installing ${missing[*]}"
     sudo=""

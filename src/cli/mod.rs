@@ -144,24 +144,31 @@ const ARGUMENT_HELP: &[(&str, &str, &str, &str)] = &[
 /// A built command's argument `id` of `command` (also under `encode`), described as
 /// [`ARGUMENT_HELP`] says.
 pub fn with_argument_help(command: clap::Command) -> clap::Command {
-    fn describe(sub: clap::Command) -> clap::Command {
-        let name = sub.get_name().to_string();
-        sub.mut_args(|arg| {
-            let entry = ARGUMENT_HELP
-                .iter()
-                .find(|(command, id, ..)| *command == name && arg.get_id() == *id);
-            match entry {
-                Some((_, _, value_name, help)) => arg
-                    .value_name(*value_name)
-                    .help(*help)
-                    .help_heading(None::<&str>)
-                    // A file is named, not picked from the formats --output lists elsewhere.
-                    .hide_possible_values(*value_name == "FILE"),
-                None => arg,
-            }
-        })
-    }
     command.mut_subcommands(|sub| describe(sub).mut_subcommands(describe))
+}
+
+/// [`with_argument_help`] for the one command `name` (and the commands under it).
+pub fn with_argument_help_of(command: clap::Command, name: &str) -> clap::Command {
+    command.mut_subcommand(name, |sub| describe(sub).mut_subcommands(describe))
+}
+
+/// A command's arguments described as [`ARGUMENT_HELP`] says.
+fn describe(sub: clap::Command) -> clap::Command {
+    let name = sub.get_name().to_string();
+    sub.mut_args(|arg| {
+        let entry = ARGUMENT_HELP
+            .iter()
+            .find(|(command, id, ..)| *command == name && arg.get_id() == *id);
+        match entry {
+            Some((_, _, value_name, help)) => arg
+                .value_name(*value_name)
+                .help(*help)
+                .help_heading(None::<&str>)
+                // A file is named, not picked from the formats --output lists elsewhere.
+                .hide_possible_values(*value_name == "FILE"),
+            None => arg,
+        }
+    })
 }
 
 /// Whether the command at `path` (`["read-holding"]`, `["encode", "write-coil"]`) takes the

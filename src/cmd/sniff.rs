@@ -281,7 +281,6 @@ fn replay_capture(
 
 /// `--interface NAME`: Modbus TCP captured live until Ctrl-C or SIGTERM, each frame shown
 /// as it comes; `--save` keeps the packets as pcapng.
-#[cfg(feature = "live-capture")]
 fn capture_live(settings: &Settings, args: &SniffArgs) -> Result<u8> {
     use mbtool_core::sniff::live::LiveCapture;
     use mbtool_core::sniff::pcap::PcapNgWriter;
@@ -326,14 +325,6 @@ fn capture_live(settings: &Settings, args: &SniffArgs) -> Result<u8> {
     }
     end_tcp(session, sinks)?;
     Ok(0)
-}
-
-#[cfg(not(feature = "live-capture"))]
-fn capture_live(_: &Settings, _: &SniffArgs) -> Result<u8> {
-    Err(Error::usage(
-        "this mbtool was built without live capture (cargo feature live-capture, which needs libpcap): record with tcpdump and give --input FILE",
-    )
-    .into())
 }
 
 /// `--pcap FILE`: the frames found, for Wireshark.

@@ -3,7 +3,6 @@
 //! (`pcap`); a saved capture keeps its timing beside it (`timing`).
 
 pub mod capture;
-#[cfg(feature = "live-capture")]
 pub mod live;
 mod pairing;
 pub mod pcap;
