@@ -234,15 +234,22 @@ impl Framer {
     pub(super) fn unknown_lengths(&self, at: usize) -> (Vec<usize>, bool) {
         let data = &self.buffer[at..];
         let reach = data.len().min(MAX_RTU_ADU);
-        let inner_end = self.inner_frame_end(at, at + reach);
+        // One pass finds the lengths whose CRC holds; the frames inside, which cost a CRC
+        // at every position, are looked for only where they can change the answer.
+        let matches = crc_matches(data, MIN_RTU_FRAME, reach);
+        let could_grow = data.len() < MAX_RTU_ADU && !self.quiet && !self.ended;
+        let inner_end = if matches.is_empty() && !could_grow {
+            None
+        } else {
+            self.inner_frame_end(at, at + reach)
+        };
         let limit = inner_end.map_or(reach, |end| end - at - 1);
-        let lengths = crc_matches(data, MIN_RTU_FRAME, limit)
+        let lengths = matches
             .into_iter()
+            .filter(|len| *len <= limit)
             .filter(|len| len - 2 < MIN_RTU_FRAME || data[len - 2..*len] != [0, 0])
             .collect();
-        let more_could_come =
-            inner_end.is_none() && data.len() < MAX_RTU_ADU && !self.quiet && !self.ended;
-        (lengths, more_could_come)
+        (lengths, could_grow && inner_end.is_none())
     }
 
     /// Where the first whole frame of known layout that lies entirely after `at` and
