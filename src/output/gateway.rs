@@ -185,6 +185,11 @@ impl GatewayWriter {
             for (unit, tally) in &summary.units {
                 json_summary(out, "unit", ("unit", (*unit).into()), tally)?;
             }
+            if summary.bad_clients > 0 {
+                let line =
+                    serde_json::json!({ "summary": "bad_clients", "closed": summary.bad_clients });
+                writeln!(out, "{line}")?;
+            }
             return Ok(());
         }
         let mut table = super::new_table(false);

@@ -338,8 +338,12 @@ impl Gateway {
                 },
             )
         });
-        // Its waiting requests are dropped; one on the line is finished and its answer
-        // thrown away, so that the line stays in step.
+        // A client that closed its sending side (as `nc -N` does) still gets the answers
+        // to what it asked. One that went away has its waiting requests dropped; one on
+        // the line is finished and its answer thrown away, so that the line stays in step.
+        if matches!(&received, Err(e) if e.kind() == io::ErrorKind::ConnectionAborted) {
+            self.queue.wait_until_served(id);
+        }
         lock(&self.writers).remove(&id);
         self.queue.forget(id);
         if let Err(error) = &received {
@@ -363,6 +367,7 @@ impl Gateway {
                 (None, writer) => writer.is_some(),
                 (Some(_), None) => false,
             };
+            self.queue.finished();
             let transaction = Transaction {
                 delivered,
                 ..transaction

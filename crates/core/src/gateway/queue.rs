@@ -25,6 +25,8 @@ struct State<T> {
     waiting: HashMap<ClientId, VecDeque<T>>,
     /// The clients with requests waiting, the next to be served first.
     turn: VecDeque<ClientId>,
+    /// The client whose request is on the line.
+    in_flight: Option<ClientId>,
 }
 
 impl<T> FairQueue<T> {
@@ -33,6 +35,7 @@ impl<T> FairQueue<T> {
             state: Mutex::new(State {
                 waiting: HashMap::new(),
                 turn: VecDeque::new(),
+                in_flight: None,
             }),
             changed: Condvar::new(),
         }
@@ -60,15 +63,35 @@ impl<T> FairQueue<T> {
         self.changed.notify_all();
     }
 
-    /// The next request: the oldest of the client whose turn it is. Waits for one.
+    /// The next request: the oldest of the client whose turn it is. Waits for one. It is
+    /// in flight until [`FairQueue::finished`].
     pub(crate) fn pop(&self) -> (ClientId, T) {
         let mut state = lock(&self.state);
         loop {
             if let Some(taken) = state.take_next() {
+                state.in_flight = Some(taken.0);
                 drop(state);
                 self.changed.notify_all();
                 return taken;
             }
+            state = match self.changed.wait(state) {
+                Ok(state) => state,
+                Err(poisoned) => poisoned.into_inner(),
+            };
+        }
+    }
+
+    /// The request taken last has been answered.
+    pub(crate) fn finished(&self) {
+        lock(&self.state).in_flight = None;
+        self.changed.notify_all();
+    }
+
+    /// Waits until every request of `client` has been answered: a client that closed its
+    /// sending side still reads its answers.
+    pub(crate) fn wait_until_served(&self, client: ClientId) {
+        let mut state = lock(&self.state);
+        while state.waiting.contains_key(&client) || state.in_flight == Some(client) {
             state = match self.changed.wait(state) {
                 Ok(state) => state,
                 Err(poisoned) => poisoned.into_inner(),
@@ -128,6 +151,29 @@ mod tests {
         );
         // The pipelining client's rest stays in order.
         assert!((3..1000).all(|n| queue.pop() == (1, ("a", n))));
+    }
+
+    #[test]
+    fn a_client_is_served_once_its_requests_are_answered() {
+        let queue = std::sync::Arc::new(FairQueue::new());
+        queue.push(1, 10);
+        queue.push(1, 11);
+        let waiter = {
+            let queue = std::sync::Arc::clone(&queue);
+            std::thread::spawn(move || queue.wait_until_served(1))
+        };
+        for _ in 0..2 {
+            std::thread::sleep(std::time::Duration::from_millis(20));
+            assert!(!waiter.is_finished());
+            queue.pop();
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+        assert!(
+            !waiter.is_finished(),
+            "the last request is still on the line"
+        );
+        queue.finished();
+        waiter.join().unwrap();
     }
 
     #[test]
