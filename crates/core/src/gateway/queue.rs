@@ -202,7 +202,10 @@ mod tests {
         assert!(!pusher.is_finished(), "the push should wait for room");
         assert_eq!(queue.pop(), (1, 0));
         pusher.join().unwrap();
-        let last = (1..=MAX_WAITING_PER_CLIENT).map(|_| queue.pop().1).last();
-        assert_eq!(last, Some(MAX_WAITING_PER_CLIENT));
+        let mut last = 0;
+        for _ in 1..=MAX_WAITING_PER_CLIENT {
+            last = queue.pop().1;
+        }
+        assert_eq!(last, MAX_WAITING_PER_CLIENT);
     }
 }
