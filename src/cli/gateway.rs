@@ -27,8 +27,9 @@ is opened again every 0.1 s to 5 s, the wait growing
   01  a function code that is no request's (0, 128-255), without touching the line
   03  a known function whose fields break its layout, without touching the line
 
-Unit id 0 is a broadcast on a serial line: the slaves act and its client gets no answer, \
-or with --broadcast-reply the answer a slave gives to a write. --unit-map 1=17,2=18 sends \
+Unit id 0 is a broadcast on a serial line: a write goes to every slave and its client gets \
+no answer, or with --broadcast-reply the answer a slave gives to a write; a read to unit 0 \
+gets exception 01, as no slave may answer it. --unit-map 1=17,2=18 sends \
 unit 1 to slave 17; other unit ids go to the slave of the same number. A client that sends \
 what is not Modbus TCP (no MBAP header, a length of 0 or over 254, a protocol id not 0) is \
 closed and counted; one that leaves while its request is on the line does not put the line \
@@ -39,15 +40,15 @@ not read its answers for 5 s is dropped.
 Every transaction is a row as it completes: time, client, unit, slave, function, the \
 request and answer, response time, tries and outcome (answer, exception, timeout, \
 bad-frame, line-down, broadcast): a line on a terminal, JSON Lines or CSV with -o, \
---log FILE appended as --poll writes it, none with --quiet. Connections, clients closed and \
-the line going down and up are told on stderr. Ctrl-C or SIGTERM ends it with a summary per \
+--log FILE appended as --poll writes it, none with --quiet. Clients closed by the gateway \
+and the line going down and up are told on stderr. Ctrl-C or SIGTERM ends it with a summary per \
 client and per unit on stderr (and as JSON lines with -o json), exit status 0. It needs no \
 terminal, so it runs as a service.";
 
 #[derive(Clone, Debug, Args)]
 pub struct GatewayArgs {
     /// Where clients connect: tcp://ADDRESS[:PORT]; repeatable
-    #[arg(long, value_name = "ENDPOINT", required = true)]
+    #[arg(long, value_name = "ENDPOINT")]
     pub listen: Vec<String>,
 
     /// Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...

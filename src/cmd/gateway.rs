@@ -29,6 +29,12 @@ fn upstream(settings: &Settings) -> Result<Endpoint, Error> {
 
 /// Every `--listen`, bound before anything else is done.
 fn listeners(args: &GatewayArgs) -> Result<Vec<TcpListener>> {
+    if args.listen.is_empty() {
+        return Err(Error::usage(
+            "gateway needs --listen: where clients connect, tcp://0.0.0.0:502 (tcp://:1502 for this machine only)",
+        )
+        .into());
+    }
     let mut bound = Vec::new();
     for text in &args.listen {
         let endpoint = Endpoint::parse_listen(text)
@@ -80,7 +86,6 @@ impl Monitor {
 pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
     let endpoint = upstream(settings)?;
     let mode = connection::mode(&settings.connection, Some(&endpoint), Role::Master)?;
-    let listeners = listeners(args)?;
     let format = settings.output.format;
     let log = settings
         .poll
@@ -88,6 +93,8 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
         .as_deref()
         .map(|path| open_log(path, |format| GatewayWriter::new(format, false)))
         .transpose()?;
+    // Bound last of what can fail, so that a bad command line leaves no port taken.
+    let listeners = listeners(args)?;
     let screen = (!args.quiet).then(|| {
         let out = Named::new(io::stdout(), "standard output");
         let writer = GatewayWriter::new(format, colour_wanted());
@@ -136,7 +143,6 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
         }),
         mode,
     );
-    line.open(&report);
     let mut addresses = Vec::new();
     for listener in listeners {
         addresses.push(listener.local_addr()?.to_string());
@@ -153,6 +159,7 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
         "mbtool: gateway on {} to {endpoint} ({mode}); Ctrl-C ends",
         addresses.join(", ")
     );
+    line.open(&report);
     let working = Arc::clone(&gateway);
     std::thread::Builder::new().spawn(move || working.run(&mut line))?;
     let _ = stopped.recv();

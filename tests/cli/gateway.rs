@@ -650,6 +650,11 @@ fn a_broadcast_is_carried_out_and_answered_only_when_asked_to() {
         ask(&mut client, 2, 0, &write_register(3, 42)),
         (0, write_register(3, 42))
     );
+    // No slave may answer a read sent to all: refused, not sent.
+    assert_eq!(
+        ask(&mut client, 3, 0, &read_holding(3, 1)),
+        (0, vec![0x83, 1])
+    );
     assert_eq!(values_of(&gateway.master(), "read-holding 17 3"), ["42"]);
 }
 

@@ -104,6 +104,11 @@ impl Line {
             }
         };
         let broadcast = slave == 0 && self.broadcasts;
+        if broadcast && !broadcastable(&request) {
+            // A read sent to every slave has no answer to give: refused, not sent.
+            let answer = exception(&request, ExceptionCode::ILLEGAL_FUNCTION);
+            return done(request, Some(answer), 0, Outcome::Exception);
+        }
         let Some(master) = self.master_now(report) else {
             let why = self.backoff.last_error.clone();
             let answer = exception(&request, ExceptionCode::GATEWAY_PATH_UNAVAILABLE);
@@ -197,6 +202,21 @@ fn read_request(frame: &[u8]) -> Result<Request, (Request, ExceptionCode)> {
     }
 }
 
+/// Whether a request may go to every slave at once: writes and diagnostics, and functions
+/// whose layout mbtool does not know (the user's call); reads may not.
+fn broadcastable(request: &Request) -> bool {
+    matches!(
+        request,
+        Request::WriteSingleCoil { .. }
+            | Request::WriteSingleRegister { .. }
+            | Request::WriteMultipleCoils { .. }
+            | Request::WriteMultipleRegisters { .. }
+            | Request::MaskWriteRegister { .. }
+            | Request::Diagnostics { .. }
+            | Request::Other { .. }
+    )
+}
+
 /// Function codes 1-127 name requests; 0 and 128-255 (exceptions) do not.
 fn is_request_function(function: u8) -> bool {
     (1..0x80).contains(&function)
@@ -210,8 +230,8 @@ fn exception(request: &Request, code: ExceptionCode) -> Pdu {
 }
 
 /// What a broadcast's client is sent with `--broadcast-reply`: the answer a slave gives
-/// to a write (the echo of the request, or of its address and quantity), or else the
-/// request itself.
+/// to a write (the echo of the request, or of its address and quantity), or else (a
+/// diagnostic, a function of unknown layout) the request itself.
 fn echo(request: &Request) -> Pdu {
     match request.clone() {
         Request::WriteSingleCoil { address, value } => {

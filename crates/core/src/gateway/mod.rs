@@ -49,6 +49,11 @@ impl UnitMap {
                     .ok_or_else(|| UnitMapError(format!("'{pair}': the {what} is 0-255")))
             };
             let (unit, slave) = (number(unit, "unit id")?, number(slave, "slave id")?);
+            if !(1..=247).contains(&slave) {
+                return Err(UnitMapError(format!(
+                    "'{pair}': a slave on a line is 1-247 (0 would broadcast, 248-255 are reserved)"
+                )));
+            }
             if map.insert(unit, slave).is_some() {
                 return Err(UnitMapError(format!("unit {unit} is mapped twice")));
             }
@@ -401,7 +406,7 @@ mod tests {
             (map.slave_for(1), map.slave_for(2), map.slave_for(3)),
             (17, 18, 3)
         );
-        for bad in ["1", "1=300", "x=1", "1=2,1=3", ""] {
+        for bad in ["1", "1=300", "x=1", "1=2,1=3", "", "5=0", "1=248"] {
             assert!(UnitMap::parse(bad).is_err(), "{bad}");
         }
     }

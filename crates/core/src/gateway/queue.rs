@@ -56,7 +56,8 @@ impl<T> FairQueue<T> {
         }
         let queue = state.waiting.entry(client).or_default();
         queue.push_back(item);
-        if queue.len() == 1 {
+        // A client whose request is on the line takes its next turn when that one ends.
+        if queue.len() == 1 && state.in_flight != Some(client) {
             state.turn.push_back(client);
         }
         drop(state);
@@ -81,9 +82,16 @@ impl<T> FairQueue<T> {
         }
     }
 
-    /// The request taken last has been answered.
+    /// The request taken last has been answered: its client, if it has more waiting,
+    /// goes behind every client that asked meanwhile.
     pub(crate) fn finished(&self) {
-        lock(&self.state).in_flight = None;
+        let mut state = lock(&self.state);
+        if let Some(client) = state.in_flight.take() {
+            if state.waiting.contains_key(&client) {
+                state.turn.push_back(client);
+            }
+        }
+        drop(state);
         self.changed.notify_all();
     }
 
@@ -116,9 +124,6 @@ impl<T> State<T> {
         let item = queue.pop_front()?;
         if queue.is_empty() {
             self.waiting.remove(&client);
-        } else {
-            // Its next request waits for every other client's turn.
-            self.turn.push_back(client);
         }
         Some((client, item))
     }
@@ -137,7 +142,13 @@ mod tests {
         queue.push(2, ("b", 0));
         queue.push(3, ("c", 0));
         queue.push(2, ("b", 1));
-        let order: Vec<(ClientId, (&str, i32))> = (0..6).map(|_| queue.pop()).collect();
+        let order: Vec<(ClientId, (&str, i32))> = (0..6)
+            .map(|_| {
+                let taken = queue.pop();
+                queue.finished();
+                taken
+            })
+            .collect();
         assert_eq!(
             order,
             [
@@ -150,7 +161,26 @@ mod tests {
             ]
         );
         // The pipelining client's rest stays in order.
-        assert!((3..1000).all(|n| queue.pop() == (1, ("a", n))));
+        assert!((3..1000).all(|n| {
+            let taken = queue.pop();
+            queue.finished();
+            taken == (1, ("a", n))
+        }));
+    }
+
+    #[test]
+    fn a_client_that_asks_during_a_transaction_goes_before_the_next_of_its_client() {
+        let queue = FairQueue::new();
+        for n in 0..10 {
+            queue.push(1, n);
+        }
+        assert_eq!(queue.pop(), (1, 0));
+        // Client 2 asks while client 1's first request is on the line.
+        queue.push(2, 100);
+        queue.finished();
+        assert_eq!(queue.pop(), (2, 100));
+        queue.finished();
+        assert_eq!(queue.pop(), (1, 1));
     }
 
     #[test]
@@ -165,7 +195,9 @@ mod tests {
         for _ in 0..2 {
             std::thread::sleep(std::time::Duration::from_millis(20));
             assert!(!waiter.is_finished());
-            queue.pop();
+            if queue.pop() == (1, 10) {
+                queue.finished();
+            }
         }
         std::thread::sleep(std::time::Duration::from_millis(20));
         assert!(
@@ -184,6 +216,7 @@ mod tests {
         queue.push(2, 20);
         queue.forget(1);
         assert_eq!(queue.pop(), (2, 20));
+        queue.finished();
         queue.push(1, 12);
         assert_eq!(queue.pop(), (1, 12));
     }
@@ -201,10 +234,12 @@ mod tests {
         std::thread::sleep(std::time::Duration::from_millis(50));
         assert!(!pusher.is_finished(), "the push should wait for room");
         assert_eq!(queue.pop(), (1, 0));
+        queue.finished();
         pusher.join().unwrap();
         let mut last = 0;
         for _ in 1..=MAX_WAITING_PER_CLIENT {
             last = queue.pop().1;
+            queue.finished();
         }
         assert_eq!(last, MAX_WAITING_PER_CLIENT);
     }

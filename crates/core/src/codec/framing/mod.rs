@@ -252,7 +252,8 @@ impl Framer {
         self.awaiting = None;
     }
 
-    /// Forgets the bytes not yet framed and starts in step, as after silence.
+    /// Forgets the bytes not yet framed and starts in step, as after silence: a stream
+    /// that goes on, even after [`Framer::finish`] (a master's next transaction).
     pub fn clear(&mut self) {
         self.offset += self.buffer.len() as u64;
         self.buffer.clear();
@@ -260,6 +261,7 @@ impl Framer {
         self.noise = None;
         self.in_step = true;
         self.quiet = false;
+        self.ended = false;
         self.lost = false;
     }
 
@@ -588,6 +590,25 @@ mod tests {
         stream.extend_from_slice(&[0, 0, 0, 0]);
         stream.extend_from_slice(&REQUEST);
         assert_eq!(frames(&stream), [user, REQUEST.to_vec()]);
+    }
+
+    #[test]
+    fn a_frame_in_two_pieces_is_whole_after_a_finished_transaction() {
+        // A master finishes a transaction that got no answer, then awaits the next answer,
+        // which a USB adapter delivers in two reads.
+        let mut framer = framer(Mode::Rtu);
+        let mut out = Vec::new();
+        framer.await_answer(0x11, 0x03);
+        framer.push_at(&ANSWER[..4], 1_000, &mut out);
+        framer.finish(&mut out);
+        framer.await_answer(0x11, 0x03);
+        out.clear();
+        framer.push_at(&ANSWER[..5], 100_000, &mut out);
+        assert!(out.is_empty(), "{out:?}");
+        framer.push_at(&ANSWER[5..], 104_000, &mut out);
+        assert!(
+            matches!(out.as_slice(), [Event::Frame(f)] if f.bytes == ANSWER && f.broken.is_none())
+        );
     }
 
     #[test]
