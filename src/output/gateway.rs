@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use super::{csv_field, fields_summary, Format, PollRows};
 use mbtool_core::codec::{function, Pdu};
-use mbtool_core::describe::{describe_pdu, Fields, Kind};
+use mbtool_core::describe::{describe_pdu, Fields, Kind, Values};
 use mbtool_core::gateway::{Outcome, Summary, Tally, Transaction};
 use mbtool_core::model::duration::show;
 use mbtool_core::model::spread::Spread;
@@ -54,18 +54,31 @@ struct JsonTransaction<'a> {
 
 const CSV_HEADER: &str = "time,client,unit,slave,transaction,function,request,answer,queued_us,response_time_us,tries,outcome,why\n";
 
-/// What a transaction's answer says, in a few words: the values of a read at the
-/// addresses its request asked.
+/// The fields of an answer in the light of its request: a read's values at the addresses
+/// asked, and of coils and inputs only as many as asked (the last byte's padding is not a
+/// coil).
+fn answer_fields(request: &Fields, answer: &Pdu) -> (Kind, Fields) {
+    let (kind, mut fields) = describe_pdu(answer);
+    if let (Some(values), Some(count)) = (fields.values.as_mut(), request.count) {
+        if fields.address.is_none() {
+            if let Values::Bits(bits) = values {
+                bits.truncate(usize::from(count));
+            }
+            fields.count = Some(count);
+            fields.address = request.address;
+            fields.reference.clone_from(&request.reference);
+        }
+    }
+    (kind, fields)
+}
+
+/// What a transaction's answer says, in a few words.
 fn answer_summary(request: &Fields, answer: Option<&Pdu>) -> String {
     match answer {
         None => "-".to_string(),
         Some(Pdu::Exception(exception)) => format!("exception {}", exception.code),
         Some(pdu) => {
-            let (_, mut fields) = describe_pdu(pdu);
-            if fields.values.is_some() && fields.address.is_none() && request.count.is_some() {
-                fields.address = request.address;
-                fields.reference.clone_from(&request.reference);
-            }
+            let (_, fields) = answer_fields(request, pdu);
             match fields_summary(&fields) {
                 shown if shown.is_empty() => "ok".to_string(),
                 shown => shown,
@@ -131,7 +144,7 @@ impl GatewayWriter {
     fn json_row(t: &Transaction, time: &str) -> serde_json::Result<Vec<u8>> {
         let (_, request) = describe_pdu(&Pdu::Request(t.request.clone()));
         let answer = t.answer.as_ref().map(|pdu| {
-            let (kind, fields) = describe_pdu(pdu);
+            let (kind, fields) = answer_fields(&request, pdu);
             JsonAnswer { kind, fields }
         });
         let mut line = serde_json::to_vec(&JsonTransaction {
@@ -191,6 +204,9 @@ impl GatewayWriter {
                 writeln!(out, "{line}")?;
             }
             return Ok(());
+        }
+        if summary.clients.is_empty() {
+            return writeln!(out, "no transactions");
         }
         let mut table = super::new_table(false);
         table.set_header(vec![

@@ -529,6 +529,7 @@ fn each_transaction_is_one_json_row_saying_what_was_asked_and_answered() {
     assert!(first["response_time_us"].as_u64().unwrap() > 0);
     assert!(chrono::DateTime::parse_from_rfc3339(first["time"].as_str().unwrap()).is_ok());
     assert_eq!(rows[1]["request"]["values"], serde_json::json!([99]));
+    assert_eq!(first["answer"]["ref"], "400108");
     assert_eq!(rows[2]["outcome"], "exception");
     assert_eq!(rows[2]["answer"]["exception"], 2);
     for row in &rows[3..] {
