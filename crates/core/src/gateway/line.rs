@@ -4,8 +4,8 @@
 
 use std::time::Instant;
 
-use crate::codec::adu::{opaque_request, wrap};
-use crate::codec::{Direction, Exception, ExceptionCode, Frame, FrameError, Mode, Pdu};
+use crate::codec::adu::opaque_request;
+use crate::codec::{Direction, ExceptionCode, Frame, FrameError, Mode, Pdu};
 use crate::codec::{Request, Response};
 use crate::master::poll::Backoff;
 use crate::master::{Master, MasterError, Reply};
@@ -99,23 +99,24 @@ impl Line {
         let request = match read_request(&job.frame) {
             Ok(request) => request,
             Err((request, code)) => {
-                let answer = exception(&request, code);
+                let answer = Pdu::refusal(&request, code);
                 return done(request, Some(answer), 0, Outcome::Exception);
             }
         };
         let broadcast = slave == 0 && self.broadcasts;
         if broadcast && !broadcastable(&request) {
             // A read sent to every slave has no answer to give: refused, not sent.
-            let answer = exception(&request, ExceptionCode::ILLEGAL_FUNCTION);
+            let answer = Pdu::refusal(&request, ExceptionCode::ILLEGAL_FUNCTION);
             return done(request, Some(answer), 0, Outcome::Exception);
         }
         let Some(master) = self.master_now(report) else {
             let why = self.backoff.last_error.clone();
-            let answer = exception(&request, ExceptionCode::GATEWAY_PATH_UNAVAILABLE);
+            let answer = Pdu::refusal(&request, ExceptionCode::GATEWAY_PATH_UNAVAILABLE);
             return done(request, Some(answer), 0, Outcome::LineDown(why));
         };
         let (result, tries) = master.transact_counted(slave, &request);
-        let failed = |request: &Request| exception(request, ExceptionCode::GATEWAY_TARGET_FAILED);
+        let failed =
+            |request: &Request| Pdu::refusal(request, ExceptionCode::GATEWAY_TARGET_FAILED);
         match result {
             Ok(Reply::Response(response)) => done(
                 request,
@@ -148,13 +149,13 @@ impl Line {
             }
             Err(MasterError::Encode(_)) => {
                 // A request that read but cannot be sent again as read: the client's mistake.
-                let answer = exception(&request, ExceptionCode::ILLEGAL_DATA_VALUE);
+                let answer = Pdu::refusal(&request, ExceptionCode::ILLEGAL_DATA_VALUE);
                 done(request, Some(answer), 0, Outcome::Exception)
             }
             Err(MasterError::Io(error)) => {
                 let why = format!("the line failed: {error}");
                 self.down(why.clone(), report);
-                let answer = exception(&request, ExceptionCode::GATEWAY_PATH_UNAVAILABLE);
+                let answer = Pdu::refusal(&request, ExceptionCode::GATEWAY_PATH_UNAVAILABLE);
                 done(request, Some(answer), tries, Outcome::LineDown(why))
             }
         }
@@ -222,13 +223,6 @@ fn is_request_function(function: u8) -> bool {
     (1..0x80).contains(&function)
 }
 
-fn exception(request: &Request, code: ExceptionCode) -> Pdu {
-    Pdu::Exception(Exception {
-        function: request.function() & 0x7F,
-        code,
-    })
-}
-
 /// What a broadcast's client is sent with `--broadcast-reply`: the answer a slave gives
 /// to a write (the echo of the request, or of its address and quantity), or else (a
 /// diagnostic, a function of unknown layout) the request itself.
@@ -267,10 +261,12 @@ fn echo(request: &Request) -> Pdu {
 
 /// The MBAP frame that carries `pdu` to the client, with its unit and transaction id.
 pub(super) fn mbap(unit: u8, transaction: u16, pdu: &Pdu) -> Vec<u8> {
-    let mut bytes = Vec::with_capacity(64);
+    let frame = Frame {
+        mode: Mode::Tcp,
+        slave: unit,
+        transaction,
+        pdu: pdu.clone(),
+    };
     // A PDU the gateway holds always encodes: it was decoded from bytes or built here.
-    let _ = pdu.encode(&mut bytes);
-    let mut frame = Vec::with_capacity(bytes.len() + 7);
-    wrap(Mode::Tcp, unit, transaction, &bytes, &mut frame);
-    frame
+    frame.encode().unwrap_or_default()
 }

@@ -10,7 +10,7 @@ pub mod server;
 use std::collections::BTreeMap;
 
 use crate::codec::function;
-use crate::codec::{Exception, ExceptionCode, Pdu, PduError, Request, Response};
+use crate::codec::{ExceptionCode, Pdu, PduError, Request, Response};
 pub use identity::{parse_object, Identity, DEFAULT_VENDOR, MAX_OBJECT_LEN};
 pub use model::{DataModel, TableData};
 
@@ -147,24 +147,17 @@ impl Slave {
     fn answer(&mut self, slave: u8, request: &Request) -> Pdu {
         let counters = self.counters.get(&slave).copied().unwrap_or_default();
         let Some(model) = self.models.get_mut(&slave) else {
-            return exception(request, ExceptionCode::SERVER_DEVICE_FAILURE);
+            return Pdu::refusal(request, ExceptionCode::SERVER_DEVICE_FAILURE);
         };
         match respond(model, request, &self.identity, slave, counters) {
             Ok(response) => Pdu::Response(response),
-            Err(code) => exception(request, code),
+            Err(code) => Pdu::refusal(request, code),
         }
     }
 }
 
 /// The exception answering `request`; a request of function 80-FF (possible over TCP) is
 /// refused as its function 00-7F.
-fn exception(request: &Request, code: ExceptionCode) -> Pdu {
-    Pdu::Exception(Exception {
-        function: request.function() & !function::EXCEPTION_FLAG,
-        code,
-    })
-}
-
 const ILLEGAL_FUNCTION: ExceptionCode = ExceptionCode::ILLEGAL_FUNCTION;
 
 fn respond(

@@ -131,7 +131,7 @@ impl Server {
             if !known && self.mode != Mode::Tcp {
                 return None;
             }
-            let exception = |code| Some(super::exception(request, code));
+            let exception = |code| Some(Pdu::refusal(request, code));
             let answer = match self.faults.exception_for(request) {
                 _ if !known => exception(ExceptionCode::GATEWAY_TARGET_FAILED),
                 Some(code) if slave_id != 0 => exception(code),

@@ -258,6 +258,15 @@ impl Direction {
 }
 
 impl Pdu {
+    /// Exception `code` in answer to `request`: what a slave, or a gateway in its place,
+    /// sends back when it will not carry the request out.
+    pub fn refusal(request: &Request, code: ExceptionCode) -> Pdu {
+        Pdu::Exception(Exception {
+            function: request.function() & !EXCEPTION_FLAG,
+            code,
+        })
+    }
+
     /// The function code as on the wire: an exception's has 0x80 set.
     pub fn function(&self) -> u8 {
         match self {
