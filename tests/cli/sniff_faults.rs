@@ -3,8 +3,7 @@
 //! them mixed. Each holds at least 20,000 real frames; every one must come out, whole and
 //! valid, no frame may be invented, and a frame with flipped bits is never shown as valid.
 
-use std::collections::HashMap;
-use std::io::Write;
+use std::collections::HashSet;
 
 use crate::support::{mbtool, random_request, rtu};
 use mbtool_core::codec::checksum::crc_matches;
@@ -36,11 +35,20 @@ struct Capture {
     damaged: Vec<Vec<u8>>,
     /// What each stretch of the bytes is, to show where a failure happened.
     parts: Vec<(&'static str, usize)>,
+    /// Which stretches run straight into the next one on the wire; the others are followed
+    /// by silence.
+    glued: Vec<bool>,
 }
 
 impl Capture {
     fn add(&mut self, what: &'static str, bytes: &[u8]) {
+        self.add_glued(what, bytes, false);
+    }
+
+    /// Bytes the next stretch follows at once, with no silence between.
+    fn add_glued(&mut self, what: &'static str, bytes: &[u8], glued: bool) {
         self.parts.push((what, self.bytes.len()));
+        self.glued.push(glued);
         self.bytes.extend_from_slice(bytes);
     }
 
@@ -109,7 +117,9 @@ fn starts_with_a_frame(bytes: &[u8]) -> bool {
     !crc_matches(bytes, 4, bytes.len()).is_empty()
 }
 
-fn generate(faults: &[Fault], pairs: usize, seed: u64) -> Capture {
+/// `timed`: the capture is for a replay with its timing, where silence follows every frame
+/// and cut frame, so that the cases only silence tells apart are left in.
+fn generate(faults: &[Fault], pairs: usize, seed: u64, timed: bool) -> Capture {
     let mut rng = fastrand::Rng::with_seed(seed);
     let mut slave = Slave::new(&[1, 2, 17, 58, 247], DataModel::manual_examples());
     let mut capture = Capture {
@@ -117,6 +127,7 @@ fn generate(faults: &[Fault], pairs: usize, seed: u64) -> Capture {
         frames: Vec::new(),
         damaged: Vec::new(),
         parts: Vec::new(),
+        glued: Vec::new(),
     };
     let mut completing = None;
     for _ in 0..pairs {
@@ -130,8 +141,8 @@ fn generate(faults: &[Fault], pairs: usize, seed: u64) -> Capture {
             // A frame cut one byte short and followed at once by a frame that starts with
             // the missing byte reads as whole: only the silence of a live line between
             // them could tell. Keep them a byte apart.
-            if completing.take() == frame.first().copied() {
-                capture.add("noise", &[!frame[0]]);
+            if completing.take() == frame.first().copied() && !timed {
+                capture.add_glued("noise", &[!frame[0]], true);
             }
             capture.add("frame", &frame);
             let ends_in_00 = frame.last() == Some(&0);
@@ -139,17 +150,17 @@ fn generate(faults: &[Fault], pairs: usize, seed: u64) -> Capture {
             // A frame of unknown layout whose CRC ends in 00 reads valid one byte shorter
             // too, and a frame followed by a 00 one byte longer: followed by noise, the
             // one is byte for byte the other, and nothing can tell them apart.
-            if rng.u8(..10) != 0 || (user && ends_in_00) {
+            if rng.u8(..10) != 0 || (user && ends_in_00 && !timed) {
                 continue;
             }
             let fault = faults[rng.usize(..faults.len())];
             match fault {
                 Fault::NoiseBurst => {
                     let mut noise: Vec<u8> = (0..rng.usize(1..=20)).map(|_| rng.u8(..)).collect();
-                    if user && noise[0] == 0 {
+                    if user && noise[0] == 0 && !timed {
                         noise[0] = 0x55;
                     }
-                    capture.add("noise", &noise);
+                    capture.add_glued("noise", &noise, rng.bool());
                 }
                 Fault::BitFlip => {
                     // A frame sent again with one to three bits flipped.
@@ -179,7 +190,7 @@ fn generate(faults: &[Fault], pairs: usize, seed: u64) -> Capture {
                 }
                 Fault::ZeroOrFfRun => {
                     let byte = if rng.bool() { 0x00 } else { 0xFF };
-                    capture.add("run", &vec![byte; rng.usize(2..=300)]);
+                    capture.add_glued("run", &vec![byte; rng.usize(2..=300)], rng.bool());
                 }
                 Fault::UserFunctions => {}
             }
@@ -188,19 +199,23 @@ fn generate(faults: &[Fault], pairs: usize, seed: u64) -> Capture {
     capture
 }
 
-/// The frames sniff reports: (hex, valid).
-fn sniffed(capture: &[u8]) -> Vec<(String, bool)> {
+/// The frames sniff reports: (hex, valid). With `timing`, the capture is replayed with it
+/// as a `.timing` file beside it, as `sniff --save` keeps one.
+fn sniffed(capture: &[u8], timing: Option<&str>) -> Vec<(String, bool)> {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("capture.bin");
-    std::fs::File::create(&path)
-        .and_then(|mut f| f.write_all(capture))
-        .unwrap();
+    std::fs::write(&path, capture).unwrap();
+    if let Some(timing) = timing {
+        std::fs::write(dir.path().join("capture.bin.timing"), timing).unwrap();
+    }
     let output = mbtool()
-        .args(["sniff", "-b", "9600", "--json", "--input"])
+        .args([
+            "sniff", "-b", "19200", "--parity", "even", "--json", "--input",
+        ])
         .arg(&path)
         .output()
         .unwrap();
-    assert!(output.status.success());
+    assert!(output.status.success(), "{output:?}");
     String::from_utf8_lossy(&output.stdout)
         .lines()
         .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap())
@@ -214,51 +229,216 @@ fn sniffed(capture: &[u8]) -> Vec<(String, bool)> {
         .collect()
 }
 
-fn check(faults: &[Fault], seed: u64) {
-    let capture = generate(faults, 10_000, seed);
-    assert!(capture.frames.len() >= 20_000);
-    let reported = sniffed(&capture.bytes);
+/// What went wrong in a sniff of a capture: real frames not reported valid, in order;
+/// frames reported valid that were never sent; damaged frames reported valid.
+#[derive(Debug)]
+struct Tally {
+    lost: Vec<String>,
+    invented: Vec<String>,
+    damaged_shown_valid: Vec<String>,
+}
+
+fn tally(capture: &Capture, reported: &[(String, bool)]) -> Tally {
+    let sent: Vec<String> = capture.frames.iter().map(hex::encode_upper).collect();
+    let real: HashSet<&str> = sent.iter().map(String::as_str).collect();
+    let damaged: HashSet<String> = capture.damaged.iter().map(hex::encode_upper).collect();
     let valid: Vec<&String> = reported
         .iter()
         .filter(|(_, valid)| *valid)
         .map(|(hex, _)| hex)
         .collect();
-    let sent: Vec<String> = capture.frames.iter().map(hex::encode_upper).collect();
-    // The real frames, in order, and nothing else that reads as valid.
-    let mut expected: HashMap<&str, usize> = HashMap::new();
-    for frame in &sent {
-        *expected.entry(frame).or_default() += 1;
+    let mut tally = Tally {
+        lost: Vec::new(),
+        invented: Vec::new(),
+        damaged_shown_valid: Vec::new(),
+    };
+    for hex in &valid {
+        if !real.contains(hex.as_str()) {
+            tally.invented.push((*hex).clone());
+            if damaged.contains(*hex) {
+                tally.damaged_shown_valid.push((*hex).clone());
+            }
+        }
     }
-    let damaged: Vec<String> = capture.damaged.iter().map(hex::encode_upper).collect();
-    let invented: Vec<&&String> = valid
+    // The real frames in order: each is matched by the next valid report that is real.
+    let mut reports = valid
         .iter()
-        .filter(|hex| !expected.contains_key(hex.as_str()))
-        .collect();
-    if let Some(first) = invented.first() {
+        .filter(|hex| real.contains(hex.as_str()))
+        .peekable();
+    for frame in &sent {
+        match reports.peek() {
+            Some(hex) if **hex == frame => {
+                reports.next();
+            }
+            _ => tally.lost.push(frame.clone()),
+        }
+    }
+    tally
+}
+
+/// Fails, showing the bytes around the first, if anything was lost or invented.
+fn assert_clean(capture: &Capture, tally: &Tally, what: &str) {
+    if let Some(first) = tally.invented.first() {
         panic!(
-            "{} frames invented, the first: {first} in\n  {}",
-            invented.len(),
+            "{what}: {} frames invented ({} of them damaged frames), the first: {first} in\n  {}",
+            tally.invented.len(),
+            tally.damaged_shown_valid.len(),
             capture.around(first)
         );
     }
-    for hex in &valid {
-        assert!(
-            !damaged.contains(hex) || expected.contains_key(hex.as_str()),
-            "a damaged frame shown as valid: {hex}"
+    if let Some(first) = tally.lost.first() {
+        panic!(
+            "{what}: {} frames lost, the first: {first} in\n  {}",
+            tally.lost.len(),
+            capture.around(first)
         );
     }
-    let mut at = 0;
-    for (i, frame) in sent.iter().enumerate() {
-        match valid[at..].iter().position(|v| *v == frame) {
-            Some(0) => at += 1,
-            _ => panic!(
-                "frame {i} lost: {frame} (next reported: {:?}) in\n  {}",
-                valid.get(at),
-                capture.around(frame)
-            ),
+}
+
+fn check(faults: &[Fault], seed: u64) {
+    let capture = generate(faults, 10_000, seed, false);
+    assert!(capture.frames.len() >= 20_000);
+    let reported = sniffed(&capture.bytes, None);
+    assert_clean(&capture, &tally(&capture, &reported), "from bytes alone");
+}
+
+/// One character at 19200 baud, 8E1 (11 bits), and 3.5 of them: in microseconds.
+const CHARACTER_US: u64 = 573;
+const SILENCE_US: u64 = 2005;
+
+/// How the bytes of a capture reached the sniffer.
+#[derive(Clone, Copy)]
+enum Delivery {
+    /// A UART read as the characters arrive, one to four at a time, and the reads that
+    /// time out in the silences told as idle.
+    Uart,
+    /// A USB adapter with a 16 ms latency timer: at each tick, whatever came since the
+    /// last; the reads between ticks time out.
+    UsbLatencyTimer,
+}
+
+/// When each byte of the capture has arrived on a 19200-baud line: back to back within a
+/// stretch and into a stretch glued to it, and after the others at least t3.5 (up to 6
+/// ms) of silence.
+fn arrivals(capture: &Capture, rng: &mut fastrand::Rng) -> Vec<u64> {
+    let mut times = Vec::with_capacity(capture.bytes.len());
+    let mut time = 100_000;
+    for (i, (_, start)) in capture.parts.iter().enumerate() {
+        let end = capture
+            .parts
+            .get(i + 1)
+            .map_or(capture.bytes.len(), |p| p.1);
+        for _ in *start..end {
+            time += CHARACTER_US;
+            times.push(time);
+        }
+        if !capture.glued[i] {
+            time += SILENCE_US + rng.u64(100..4_000);
         }
     }
-    assert_eq!(valid.len(), sent.len());
+    times
+}
+
+/// The `.timing` file a live `sniff --save` of the capture would have written.
+fn timing(capture: &Capture, delivery: Delivery, seed: u64) -> String {
+    let mut rng = fastrand::Rng::with_seed(seed);
+    let arrived = arrivals(capture, &mut rng);
+    let mut lines = vec![mbtool_core::sniff::timing::HEADER.to_string()];
+    match delivery {
+        Delivery::Uart => {
+            let mut at = 0;
+            while at < arrived.len() {
+                // Up to four characters, never across a silence.
+                let mut count = 1;
+                while count < rng.usize(1..=4)
+                    && arrived.get(at + count) == Some(&(arrived[at + count - 1] + CHARACTER_US))
+                {
+                    count += 1;
+                }
+                let last = arrived[at + count - 1];
+                lines.push(format!("{} {count}", last + rng.u64(0..150)));
+                at += count;
+                let quiet = last + CHARACTER_US + SILENCE_US + 50;
+                if arrived.get(at).is_none_or(|next| quiet < *next) {
+                    lines.push(format!("{quiet} idle"));
+                }
+            }
+        }
+        Delivery::UsbLatencyTimer => {
+            const TICK: u64 = 16_000;
+            let mut at = 0;
+            let mut tick = arrived[0] / TICK + 1;
+            while at < arrived.len() {
+                let count = arrived[at..]
+                    .iter()
+                    .take_while(|time| **time <= tick * TICK)
+                    .count();
+                if count > 0 {
+                    lines.push(format!("{} {count}", tick * TICK + rng.u64(0..300)));
+                    lines.push(format!("{} idle", tick * TICK + TICK / 2));
+                    at += count;
+                }
+                tick += 1;
+            }
+        }
+    }
+    lines.join("\n") + "\n"
+}
+
+/// A capture of one fault model replayed with its timing: as a UART delivers it, nothing
+/// may be lost or invented; as a USB adapter with a 16 ms latency timer delivers it, no
+/// more than from the bytes alone.
+fn check_timed(fault: Fault, seed: u64) {
+    let capture = generate(&[fault], 10_000, seed, true);
+    let uart = sniffed(
+        &capture.bytes,
+        Some(&timing(&capture, Delivery::Uart, seed)),
+    );
+    assert_clean(&capture, &tally(&capture, &uart), "with a UART's timing");
+    let alone = tally(&capture, &sniffed(&capture.bytes, None));
+    let usb = tally(
+        &capture,
+        &sniffed(
+            &capture.bytes,
+            Some(&timing(&capture, Delivery::UsbLatencyTimer, seed)),
+        ),
+    );
+    assert!(
+        usb.lost.len() <= alone.lost.len() && usb.invented.len() <= alone.invented.len(),
+        "behind a USB adapter's latency timer: {} lost and {} invented, from bytes alone {} \
+         and {}; the first lost or invented in\n  {}",
+        usb.lost.len(),
+        usb.invented.len(),
+        alone.lost.len(),
+        alone.invented.len(),
+        capture.around(usb.lost.first().or(usb.invented.first()).map_or("", |s| s))
+    );
+    assert!(usb.damaged_shown_valid.is_empty(), "{usb:?}");
+}
+
+#[test]
+fn timed_noise_bursts() {
+    check_timed(Fault::NoiseBurst, 11);
+}
+
+#[test]
+fn timed_flipped_bits() {
+    check_timed(Fault::BitFlip, 12);
+}
+
+#[test]
+fn timed_truncated_frames() {
+    check_timed(Fault::Truncated, 13);
+}
+
+#[test]
+fn timed_user_defined_functions() {
+    check_timed(Fault::UserFunctions, 14);
+}
+
+#[test]
+fn timed_runs_of_00_and_ff() {
+    check_timed(Fault::ZeroOrFfRun, 15);
 }
 
 #[test]
@@ -295,7 +475,7 @@ fn every_fault_mixed() {
 fn ten_megabytes_of_random_bytes_make_no_frame() {
     let mut rng = fastrand::Rng::with_seed(7);
     let bytes: Vec<u8> = (0..10_000_000).map(|_| rng.u8(..)).collect();
-    let reported = sniffed(&bytes);
+    let reported = sniffed(&bytes, None);
     // The first position of a capture is in step with the bus and may pass on its CRC
     // alone; nothing after it may.
     assert!(

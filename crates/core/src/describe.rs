@@ -358,11 +358,12 @@ fn exception_fields(exception: Exception) -> Fields {
 
 /// The kind and fields of a typed PDU.
 pub fn describe_pdu(pdu: &Pdu) -> (Kind, Fields) {
-    match pdu {
-        Pdu::Request(request) => (Kind::Request, request_fields(request)),
-        Pdu::Response(response) => (Kind::Response, response_fields(response)),
-        Pdu::Exception(exception) => (Kind::Exception, exception_fields(*exception)),
-    }
+    let fields = match pdu {
+        Pdu::Request(request) => request_fields(request),
+        Pdu::Response(response) => response_fields(response),
+        Pdu::Exception(exception) => exception_fields(*exception),
+    };
+    (Kind::of(pdu), fields)
 }
 
 /// Describes a whole frame. `mode` and `direction` are detected when not given; a frame
@@ -511,6 +512,17 @@ pub fn describe_reading(mode: Mode, envelope: &Envelope, reading: Reading) -> Fr
         }
     }
     with_checksum(report, envelope.checksum)
+}
+
+impl Kind {
+    /// What a PDU is, as its description says.
+    pub fn of(pdu: &Pdu) -> Kind {
+        match pdu {
+            Pdu::Request(_) => Kind::Request,
+            Pdu::Response(_) => Kind::Response,
+            Pdu::Exception(_) => Kind::Exception,
+        }
+    }
 }
 
 fn kind_of(function: u8, direction: Direction) -> Kind {

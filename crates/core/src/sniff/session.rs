@@ -123,12 +123,17 @@ pub struct Counts {
 impl Counts {
     /// A frame, told by what it says.
     pub(super) fn frame(&mut self, report: &FrameReport) {
+        self.tell(report.slave, report.valid.then_some(report.kind));
+    }
+
+    /// A frame of `slave`: what it is, or `None` when it is not valid.
+    pub(super) fn tell(&mut self, slave: u8, kind: Option<Kind>) {
         self.frames += 1;
-        let slave = self.slaves.entry(report.slave).or_default();
-        if !report.valid {
+        let slave = self.slaves.entry(slave).or_default();
+        let Some(kind) = kind else {
             return;
-        }
-        match report.kind {
+        };
+        match kind {
             Kind::Request => {
                 self.requests += 1;
                 slave.requests += 1;
@@ -315,26 +320,29 @@ impl Session {
             _ => None,
         };
         self.last_end = found.end.or(self.last_end);
-        let (report, paired) = match found.broken {
+        let shown = match found.broken {
             Some(broken) => {
                 let mut report = describe_frame(&found.bytes, Some(self.mode), None);
                 report.valid = false;
                 if broken == Broken::Incomplete {
                     report.error = Some("incomplete: the frame was cut off before its end".into());
                 }
-                self.counts.crc_errors += u64::from(broken == Broken::Checksum);
+                // A frame cut short fails its checksum as much as one that broke.
+                self.counts.crc_errors += 1;
                 self.counts
                     .slaves
                     .entry(report.slave)
                     .or_default()
-                    .crc_errors += u64::from(broken == Broken::Checksum);
-                (report, false)
+                    .crc_errors += 1;
+                self.counts.frame(&report);
+                self.filter
+                    .shows(report.slave, report.function)
+                    .then_some((report, false))
             }
             None => self.valid_frame(&found, out),
         };
-        self.counts.frame(&report);
         self.numbered += 1;
-        if self.filter.shows(report.slave, report.function) {
+        if let Some((report, paired)) = shown {
             out.push(Record::Frame(Box::new(FrameRecord {
                 number: self.numbered,
                 at: self.at(found.start, found.offset),
@@ -347,9 +355,16 @@ impl Session {
         }
     }
 
-    fn valid_frame(&mut self, found: &Found, out: &mut Vec<Record>) -> (FrameReport, bool) {
+    /// Pairs and counts a frame whose checksum holds; describes it only when the filter
+    /// shows it (the description is most of the cost of a frame).
+    fn valid_frame(&mut self, found: &Found, out: &mut Vec<Record>) -> Option<(FrameReport, bool)> {
         let Ok(envelope) = Envelope::open(self.mode, &found.bytes) else {
-            return (describe_frame(&found.bytes, Some(self.mode), None), false);
+            let report = describe_frame(&found.bytes, Some(self.mode), None);
+            self.counts.frame(&report);
+            return self
+                .filter
+                .shows(report.slave, report.function)
+                .then_some((report, false));
         };
         // The PDU is read once: to pair it, and then to describe that reading.
         let reading = Reading::infer(&envelope.pdu);
@@ -359,8 +374,21 @@ impl Session {
         if let Some(unanswered) = unanswered {
             self.unanswered(unanswered, out);
         }
+        let kind = match &role {
+            Role::Request(_) | Role::Unsettled { .. } => Some(Kind::Request),
+            Role::Answer { pdu, .. } => Some(Kind::of(pdu)),
+            Role::Malformed(_) => None,
+        };
+        self.counts.tell(envelope.slave, kind);
+        let function = envelope.pdu.first().copied().unwrap_or_default();
+        if !self.filter.shows(envelope.slave, function) {
+            if matches!(role, Role::Malformed(_)) {
+                self.counts.malformed += 1;
+            }
+            return None;
+        }
         let describe = |reading| describe_reading(self.mode, &envelope, reading);
-        match role {
+        Some(match role {
             Role::Request(request) => (describe(Reading::One(Pdu::Request(request))), false),
             Role::Answer { pdu, to } => {
                 let answer_to_read = matches!(pdu, Pdu::Response(_));
@@ -377,7 +405,7 @@ impl Session {
                 self.counts.malformed += 1;
                 (describe(reading), false)
             }
-        }
+        })
     }
 }
 

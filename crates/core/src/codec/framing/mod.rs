@@ -19,16 +19,27 @@
 //!   and its own CRC is zero): those lengths are never taken over the frame itself.
 //!
 //! Silence (3.5 character times) counts where the times can be trusted: it supports the
-//! frame before it, and the frame after it starts in step. A frame cut short is kept until
-//! bytes show it is no frame, since a USB adapter can pause inside a frame.
+//! frame before it, and the frame after it starts in step. It also ends bytes that do not
+//! make a whole frame before it: they are a frame cut short (the answer awaited, or a
+//! request in step) or noise, and the frame after the silence starts clean; this is decided
+//! when the bytes after the silence come, so that a frame whose rest comes after a gap is
+//! still taken whole. A frame that did (its CRC holding across the gap) shows that the
+//! gaps lie: a USB adapter hands bytes over when its latency timer runs out, so a frame
+//! straddling a tick arrives in two reads a whole period apart, and a device may pause
+//! inside its frames. From then on the times are not taken for silence, and a frame cut
+//! short is kept until bytes show it is no frame, as without timing.
 //!
 //! ASCII: ':' starts a frame and CR LF ends it; up to a second may pass between characters.
 //! TCP: the MBAP length alone frames, however the bytes were segmented.
 
+use super::checksum::crc_holds;
 use super::function::EXCEPTION_FLAG;
+use super::limits::MAX_RTU_ADU;
 use super::{Direction, Mode};
+use memo::Verdicts;
 
 mod ascii;
+mod memo;
 mod resync;
 mod rtu;
 mod tcp;
@@ -70,7 +81,8 @@ pub struct Found {
 pub enum Broken {
     /// The frame has the length its bytes predict, but its checksum fails.
     Checksum,
-    /// An ASCII frame cut off by a new ':' (or by silence) before its CR LF.
+    /// A frame cut off before its end: an ASCII frame by a new ':' (or by silence) before
+    /// its CR LF, an RTU frame by silence before its length was reached.
     Incomplete,
 }
 
@@ -95,6 +107,9 @@ pub enum Event {
     /// A run of bytes that belong to no frame.
     Noise(Noise),
 }
+
+/// A time not known (the byte came without one).
+const UNTIMED: u64 = u64::MAX;
 
 /// One way the bytes at a position read as a frame whose CRC holds.
 #[derive(Clone, Copy, Debug)]
@@ -127,7 +142,15 @@ pub struct Framer {
     /// One character's time on the wire, in microseconds.
     char_us: f64,
     buffer: Vec<u8>,
-    times: Vec<Option<u64>>,
+    /// The arrival time of each byte of `buffer` ([`UNTIMED`] where not known); empty
+    /// while no byte has a time, so that a file framed without timing costs nothing here.
+    times: Vec<u64>,
+    /// The CRCs and PDUs checked lately.
+    verdicts: Verdicts,
+    /// A frame was taken whole across a gap its times showed as silence: the times of
+    /// this line do not tell its silences (a USB adapter's latency timer, a device that
+    /// pauses inside frames).
+    gaps_lie: bool,
     /// Position in the stream of `buffer[0]`.
     offset: u64,
     /// `buffer[0]` follows a frame, silence, or the start of the stream.
@@ -161,7 +184,9 @@ impl Framer {
             },
             char_us,
             buffer: Vec::with_capacity(1024),
-            times: Vec::with_capacity(1024),
+            times: Vec::new(),
+            verdicts: Verdicts::default(),
+            gaps_lie: false,
             offset: 0,
             in_step: true,
             quiet: false,
@@ -178,7 +203,9 @@ impl Framer {
     pub fn push(&mut self, bytes: &[u8], out: &mut Vec<Event>) {
         self.quiet = false;
         self.buffer.extend_from_slice(bytes);
-        self.times.resize(self.buffer.len(), None);
+        if !self.times.is_empty() {
+            self.times.resize(self.buffer.len(), UNTIMED);
+        }
         self.scan(out);
     }
 
@@ -190,10 +217,11 @@ impl Framer {
         };
         let first_time = time.saturating_sub((last as f64 * self.char_us) as u64);
         self.settle_before(first_time, out);
+        self.times.resize(self.buffer.len(), UNTIMED);
         for (i, byte) in bytes.iter().enumerate() {
             let back = ((last - i) as f64 * self.char_us) as u64;
             self.buffer.push(*byte);
-            self.times.push(Some(time.saturating_sub(back)));
+            self.times.push(time.saturating_sub(back));
         }
         self.scan(out);
     }
@@ -275,11 +303,55 @@ impl Framer {
         self.lost
     }
 
+    /// When byte `i` of the buffer arrived, when known.
+    fn time(&self, i: usize) -> Option<u64> {
+        self.times.get(i).copied().filter(|time| *time != UNTIMED)
+    }
+
+    /// Whether the RTU frame of `len` bytes at `at` ends in its CRC.
+    fn crc_holds_at(&self, at: usize, len: usize) -> bool {
+        self.verdicts
+            .get(self.offset + at as u64, memo::crc_question(len), || {
+                crc_holds(&self.buffer[at..at + len])
+            })
+    }
+
+    /// Whether the PDU of the RTU frame of `len` bytes at `at` reads in `direction` (see
+    /// [`resync::pdu_reads`]).
+    fn pdu_reads_at(
+        &self,
+        at: usize,
+        len: usize,
+        direction: Option<Direction>,
+        after_noise: bool,
+    ) -> bool {
+        let question = memo::reads_question(len, direction, after_noise);
+        self.verdicts.get(self.offset + at as u64, question, || {
+            resync::pdu_reads(&self.buffer[at..at + len], direction, after_noise)
+        })
+    }
+
+    /// Where the first silence inside the bytes from `at` ends (the index of the byte
+    /// after it), up to the longest frame's reach; the silence after the last byte is not
+    /// counted, since more bytes may still come to decide them.
+    fn silence_within(&self, at: usize) -> Option<usize> {
+        if self.times.is_empty() || self.gaps_lie {
+            return None;
+        }
+        let last = self.buffer.len().min(at + MAX_RTU_ADU);
+        (at..last.saturating_sub(1))
+            .find(|i| self.silence_after(*i))
+            .map(|i| i + 1)
+    }
+
     /// Whether the line has been silent since the last byte, by `now`.
     fn silent_since_last(&self, now: u64) -> bool {
-        match self.times.last() {
-            Some(Some(last)) => self.is_silence(*last, now),
-            _ => false,
+        if self.gaps_lie {
+            return false;
+        }
+        match self.buffer.len().checked_sub(1).and_then(|i| self.time(i)) {
+            Some(last) => self.is_silence(last, now),
+            None => false,
         }
     }
 
@@ -304,10 +376,10 @@ impl Framer {
         if i + 1 == self.buffer.len() {
             return self.quiet;
         }
-        match (
-            self.times.get(i).copied().flatten(),
-            self.times.get(i + 1).copied().flatten(),
-        ) {
+        if self.gaps_lie {
+            return false;
+        }
+        match (self.time(i), self.time(i + 1)) {
             (Some(a), Some(b)) => self.is_silence(a, b),
             _ => false,
         }
@@ -345,13 +417,20 @@ impl Framer {
                     let found = Found {
                         bytes: self.buffer[at..at + len].to_vec(),
                         offset: self.offset + at as u64,
-                        start: self.times[at],
-                        end: self.times[at + len - 1],
+                        start: self.time(at),
+                        end: self.time(at + len - 1),
                         broken,
                         direction,
                     };
                     if broken.is_none() {
                         self.turn(&found);
+                        // Whole across a silence: the times do not tell this line's
+                        // silences (the times are kept all the same, to be shown).
+                        if self.mode == Mode::Rtu
+                            && (at..at + len - 1).any(|i| self.silence_after(i))
+                        {
+                            self.gaps_lie = true;
+                        }
                     }
                     out.push(Event::Frame(found));
                     at += len;
@@ -372,7 +451,7 @@ impl Framer {
             }
         }
         self.buffer.drain(..at);
-        self.times.drain(..at);
+        self.times.drain(..at.min(self.times.len()));
         self.offset += at as u64;
         self.in_step = in_step;
         if self.ended {
@@ -406,11 +485,12 @@ impl Framer {
 
     /// Counts `count` bytes from `at` as noise, keeping the first of a run.
     fn add_noise(&mut self, at: usize, count: usize) {
+        let start = self.time(at);
         let noise = self.noise.get_or_insert_with(|| Noise {
             kept: Vec::new(),
             len: 0,
             offset: self.offset + at as u64,
-            start: self.times[at],
+            start,
         });
         let room = NOISE_KEPT.saturating_sub(noise.kept.len()).min(count);
         noise.kept.extend_from_slice(&self.buffer[at..at + room]);
@@ -609,6 +689,62 @@ mod tests {
         assert!(
             matches!(out.as_slice(), [Event::Frame(f)] if f.bytes == ANSWER && f.broken.is_none())
         );
+    }
+
+    /// Feeds `pieces` as reads at their times (microseconds), each read's bytes one
+    /// character apart before it; returns the frames, valid or not.
+    fn timed_frames(pieces: &[(&[u8], u64)]) -> Vec<(Vec<u8>, Option<Broken>)> {
+        let mut framer = framer(Mode::Rtu);
+        let mut out = Vec::new();
+        for (bytes, time) in pieces {
+            framer.push_at(bytes, *time, &mut out);
+        }
+        framer.finish(&mut out);
+        out.into_iter()
+            .filter_map(|event| match event {
+                Event::Frame(found) => Some((found.bytes, found.broken)),
+                Event::Noise(_) => None,
+            })
+            .collect()
+    }
+
+    #[test]
+    fn silence_ends_a_frame_cut_short_and_the_next_starts_clean() {
+        // The answer cut one byte short, then silence, then a request that starts with the
+        // missing byte: read together, the cut answer and that byte pass the CRC.
+        let cut = &ANSWER[..10];
+        let mut request = vec![ANSWER[10]];
+        request.extend_from_slice(&[0x03, 0x00, 0x01, 0x00, 0x01]);
+        let request = rtu(&request);
+        let out = timed_frames(&[(&REQUEST, 10_000), (cut, 20_000), (&request, 40_000)]);
+        assert_eq!(
+            out,
+            [
+                (REQUEST.to_vec(), None),
+                (cut.to_vec(), Some(Broken::Incomplete)),
+                (request, None)
+            ]
+        );
+    }
+
+    #[test]
+    fn a_frame_whose_rest_comes_after_a_gap_is_whole_and_then_gaps_are_not_silence() {
+        // A USB adapter's latency timer: the answer in two reads 16 ms apart.
+        let out = timed_frames(&[
+            (&REQUEST, 10_000),
+            (&ANSWER[..4], 16_000),
+            (&ANSWER[4..], 32_000),
+        ]);
+        assert_eq!(out, [(REQUEST.to_vec(), None), (ANSWER.to_vec(), None)]);
+        let mut framer = framer(Mode::Rtu);
+        let mut out = Vec::new();
+        framer.push_at(&ANSWER[..4], 16_000, &mut out);
+        framer.push_at(&ANSWER[4..], 32_000, &mut out);
+        assert!(framer.gaps_lie);
+        // From then on a request cut short by a gap is kept, as without timing.
+        framer.push_at(&REQUEST[..5], 48_000, &mut out);
+        framer.push_at(&REQUEST[5..], 64_000, &mut out);
+        assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes == REQUEST));
     }
 
     #[test]

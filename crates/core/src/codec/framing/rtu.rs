@@ -1,23 +1,26 @@
 //! RTU: a frame's length from its function code and byte count, its CRC, and what the
 //! bytes at a position could be when they make no frame yet.
 
-use crate::codec::checksum::{crc_holds, crc_matches};
+use smallvec::SmallVec;
+
+use crate::codec::checksum::crc_matches;
 use crate::codec::length::{rtu_frame_length, Length};
 use crate::codec::limits::MAX_RTU_ADU;
 use crate::codec::Direction;
 
+use super::resync::may_lack_layout;
 use super::resync::Tell;
-use super::resync::{may_lack_layout, pdu_reads};
-use super::{Broken, Candidate, Framer, Look, MIN_RTU_FRAME};
+use super::{Broken, Candidate, Framer, Look, MAX_SLAVE, MIN_RTU_FRAME};
 
 /// What the bytes at one position could be.
-#[derive(Default)]
+#[derive(Clone, Default)]
 pub(super) struct Candidates {
-    /// Lengths whose CRC holds, shortest first.
-    pub(super) valid: Vec<Candidate>,
+    /// Lengths whose CRC holds, shortest first. Inline: a position is looked at several
+    /// times for every frame, and rarely holds more than two readings.
+    pub(super) valid: SmallVec<[Candidate; 2]>,
     /// Directions in which more bytes could still make a frame here, with the length
     /// awaited when the layout tells it.
-    pub(super) pending: Vec<(Direction, Option<usize>)>,
+    pub(super) pending: SmallVec<[(Direction, Option<usize>); 2]>,
 }
 
 impl Candidates {
@@ -44,7 +47,20 @@ pub(super) fn frame_of(candidate: &Candidate) -> Look {
 
 impl Framer {
     pub(super) fn look_rtu(&self, at: usize, in_step: bool) -> Look {
-        let found = self.candidates(at);
+        let mut found = self.candidates(at);
+        // A reading across a silence is the times lying (a USB adapter's latency timer),
+        // unless a whole frame starts right after the silence: then the silence was real
+        // and the reading borrowed that frame's first bytes.
+        let silence = self.silence_within(at);
+        if let Some(end) = silence {
+            if found.valid.iter().any(|c| at + c.len > end) {
+                match self.frame_starts(end) {
+                    Tell::Yes => found.valid.retain(|c| at + c.len <= end),
+                    Tell::NotYet => return Look::NeedMore,
+                    Tell::No => {}
+                }
+            }
+        }
         // A frame cut short may still complete (a USB adapter pauses inside frames), unless
         // silence came and a whole frame of known layout after its start shows it never
         // will.
@@ -52,6 +68,17 @@ impl Framer {
             self.ended || (self.quiet && self.inner_frame_end(at, self.buffer.len()).is_some());
         let may_complete = !found.pending.is_empty() && !cut_off;
         if found.valid.is_empty() {
+            // Bytes that silence came inside and no frame crosses: unless their layout's
+            // length ends at that silence (a CRC error), they were cut short.
+            if let Some(end) = silence {
+                let data = &self.buffer[at..end];
+                let whole = [Direction::Request, Direction::Response].into_iter().any(|d| {
+                    matches!(rtu_frame_length(data, d), Length::Known(len) if len == data.len())
+                });
+                if !whole {
+                    return self.cut_short(at, end, in_step);
+                }
+            }
             if may_complete {
                 return Look::NeedMore;
             }
@@ -66,7 +93,7 @@ impl Framer {
                 let frame = &self.buffer[at..at + c.len];
                 c.known_layout
                     && self.answers_awaited(frame, c.direction)
-                    && pdu_reads(frame, Some(Direction::Response), false)
+                    && self.pdu_reads_at(at, c.len, Some(Direction::Response), false)
             });
             if let Some(answer) = awaited {
                 return frame_of(answer);
@@ -93,7 +120,7 @@ impl Framer {
         if waits && may_complete && !self.quiet {
             return Look::NeedMore;
         }
-        let mut acceptable: Vec<Candidate> = Vec::with_capacity(found.valid.len());
+        let mut acceptable: SmallVec<[Candidate; 4]> = SmallVec::new();
         for candidate in &found.valid {
             // In step with the bus, a frame of known layout on its turn stands on its CRC;
             // one against the turn needs what follows it too. While a request awaits its
@@ -110,7 +137,7 @@ impl Framer {
             let tell = if in_step && candidate.known_layout && on_turn {
                 // One whose PDU does not read is a master's mistake to be shown, or bytes
                 // that only happen to pass: what follows must be sound too.
-                if pdu_reads(frame, candidate.direction, false) {
+                if self.pdu_reads_at(at, candidate.len, candidate.direction, false) {
                     Tell::Yes
                 } else {
                     self.followed_well(at + candidate.len, 1, true, self.asked_by(at, candidate))
@@ -158,12 +185,10 @@ impl Framer {
                 self.asked_by(at, candidate),
             )
         };
-        let on_turn: Vec<Candidate> = several
+        let on_turn = several
             .iter()
-            .filter(|c| self.expect.is_some() && c.direction.is_some() && expected(c.direction))
-            .copied()
-            .collect();
-        if let Some(primary) = on_turn.first() {
+            .find(|c| self.expect.is_some() && c.direction.is_some() && expected(c.direction));
+        if let Some(primary) = on_turn {
             let primary_followed = followed(primary, false);
             if primary_followed == Tell::NotYet {
                 return Err(());
@@ -201,7 +226,7 @@ impl Framer {
             match rtu_frame_length(data, direction) {
                 Length::Known(len) if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len) => {
                     match data.get(..len) {
-                        Some(frame) if crc_holds(frame) => found.add(len, direction, true),
+                        Some(_) if self.crc_holds_at(at, len) => found.add(len, direction, true),
                         Some(_) => {}
                         None => found.pending.push((direction, Some(len))),
                     }
@@ -237,7 +262,9 @@ impl Framer {
         // One pass finds the lengths whose CRC holds; the frames inside, which cost a CRC
         // at every position, are looked for only where they can change the answer.
         let matches = crc_matches(data, MIN_RTU_FRAME, reach);
-        let could_grow = data.len() < MAX_RTU_ADU && !self.quiet && !self.ended;
+        // Silence alone does not end it: the bytes after the silence tell whether it was
+        // one (see `silence_within`), or the end of the input.
+        let could_grow = data.len() < MAX_RTU_ADU && !self.ended;
         let inner_end = if matches.is_empty() && !could_grow {
             None
         } else {
@@ -269,12 +296,68 @@ impl Framer {
         [Direction::Request, Direction::Response]
             .into_iter()
             .find_map(|direction| match rtu_frame_length(data, direction) {
-                Length::Known(len) if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len) => data
-                    .get(..len)
-                    .filter(|frame| crc_holds(frame) && pdu_reads(frame, Some(direction), true))
-                    .map(|_| len),
+                Length::Known(len)
+                    if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len)
+                        && len <= data.len()
+                        && self.crc_holds_at(at, len)
+                        && self.pdu_reads_at(at, len, Some(direction), true) =>
+                {
+                    Some(len)
+                }
                 _ => None,
             })
+    }
+
+    /// Whether a whole frame of known layout starts at `at`.
+    fn frame_starts(&self, at: usize) -> Tell {
+        if self.known_frame_len(at, self.buffer.len()).is_some() {
+            Tell::Yes
+        } else if !self.quiet && !self.ended && !self.candidates(at).pending.is_empty() {
+            Tell::NotYet
+        } else {
+            Tell::No
+        }
+    }
+
+    /// The bytes from `at` to `end`, where silence ended them before they made a frame: a
+    /// frame cut short where the bus expects a frame to start (in step: the answer awaited,
+    /// or a request while no answer is awaited) and no whole frame lies inside them; else
+    /// noise, a byte at a time, so that a frame inside them is still found.
+    pub(super) fn cut_short(&self, at: usize, end: usize, in_step: bool) -> Look {
+        let bytes = &self.buffer[at..end];
+        // Whether the bytes begin a frame of that direction that they are too short for.
+        let begins = |direction| match rtu_frame_length(bytes, direction) {
+            Length::Known(len) => len > bytes.len(),
+            Length::AtLeast(_) => true,
+            _ => false,
+        };
+        // A lone byte tells no function: a glitch, not a frame.
+        let direction = if bytes.len() < 2 || !in_step {
+            None
+        } else if self.answers_awaited(bytes, None) && begins(Direction::Response) {
+            Some(Direction::Response)
+        } else if self.awaiting.is_none()
+            && self.expect != Some(Direction::Response)
+            && bytes[0] <= MAX_SLAVE
+            && begins(Direction::Request)
+        {
+            Some(Direction::Request)
+        } else {
+            None
+        };
+        match direction {
+            Some(direction)
+                if self.inner_frame_end(at, end).is_none()
+                    && !self.holds_unknown_frame(at, end) =>
+            {
+                Look::Frame {
+                    len: end - at,
+                    broken: Some(Broken::Incomplete),
+                    direction: Some(direction),
+                }
+            }
+            _ => Look::Noise,
+        }
     }
 
     /// The bytes at `at` as a frame of known layout whose CRC fails, or else as noise. A
@@ -295,17 +378,18 @@ impl Framer {
 
     pub(super) fn broken(&self, at: usize, in_step: bool) -> (Tell, Option<(usize, Direction)>) {
         let data = &self.buffer[at..];
-        let mut lengths: Vec<(usize, Direction)> = [Direction::Request, Direction::Response]
-            .into_iter()
-            .filter_map(|direction| match rtu_frame_length(data, direction) {
-                Length::Known(len)
-                    if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len) && len <= data.len() =>
-                {
-                    Some((len, direction))
-                }
-                _ => None,
-            })
-            .collect();
+        let mut lengths: SmallVec<[(usize, Direction); 2]> =
+            [Direction::Request, Direction::Response]
+                .into_iter()
+                .filter_map(|direction| match rtu_frame_length(data, direction) {
+                    Length::Known(len)
+                        if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len) && len <= data.len() =>
+                    {
+                        Some((len, direction))
+                    }
+                    _ => None,
+                })
+                .collect();
         lengths.sort_unstable_by_key(|(len, _)| *len);
         for (len, direction) in lengths {
             let frame = &data[..len];

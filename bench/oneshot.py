@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""What one process costs: `mbtool read-holding` against mbpoll, each reading 3 registers
+once from the same `mbtool serve` over TCP on 127.0.0.1, 50 processes of each, taken in
+turn. CPU per process from getrusage of the children (user + system), wall time per
+process, and the ratios mbtool / mbpoll.
+
+    python3 bench/oneshot.py [RUNS]        (needs mbpoll)
+"""
+import os
+import resource
+import socket
+import statistics
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+MBTOOL = os.path.join(ROOT, "target", "release", "mbtool")
+RUNS = int(sys.argv[1]) if len(sys.argv) > 1 else 50
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def run(args):
+    """(CPU seconds, wall seconds) of one process."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.perf_counter()
+    subprocess.run(args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=True)
+    wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return cpu, wall
+
+
+def main():
+    subprocess.run(["cargo", "build", "--release", "--quiet"], cwd=ROOT, check=True)
+    port = free_port()
+    server = subprocess.Popen(
+        [MBTOOL, "--port", f"tcp://127.0.0.1:{port}", "serve", "--slave", "17", "-q"],
+        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        for _ in range(100):
+            try:
+                socket.create_connection(("127.0.0.1", port), timeout=0.1).close()
+                break
+            except OSError:
+                time.sleep(0.05)
+        commands = {
+            "mbtool": [MBTOOL, "--port", f"127.0.0.1:{port}", "read-holding", "17", "400108", "3"],
+            "mbpoll": ["mbpoll", "-m", "tcp", "-p", str(port), "-a", "17", "-r", "108", "-c", "3",
+                       "-1", "127.0.0.1"],
+        }
+        samples = {name: [] for name in commands}
+        for _ in range(RUNS):
+            for name, args in commands.items():
+                samples[name].append(run(args))
+        figures = {}
+        for name, runs in samples.items():
+            cpu = statistics.mean(c for c, _ in runs) * 1e3
+            wall = statistics.median(w for _, w in runs) * 1e3
+            figures[name] = (cpu, wall)
+            print(f"{name}: {cpu:.2f} ms CPU per process (mean of {RUNS}), "
+                  f"{wall:.2f} ms wall (median)")
+        (tool_cpu, tool_wall), (peer_cpu, peer_wall) = figures["mbtool"], figures["mbpoll"]
+        print(f"mbtool / mbpoll: CPU x{tool_cpu / peer_cpu:.2f}, wall x{tool_wall / peer_wall:.2f}")
+    finally:
+        server.terminate()
+        server.wait()
+
+
+if __name__ == "__main__":
+    main()
