@@ -351,11 +351,10 @@ pub fn command() -> clap::Command {
 }
 
 /// The definition `args` are parsed with. A call for help gets all of [`command`]. Any
-/// other command line is parsed with the definition as derived, only the command it names
-/// given its argument help, and nothing built before clap builds the commands the parse
-/// goes through: building copies every global option into every command, and cost each
-/// run more than most commands' own work. The parse is the same either way; only help
-/// shows what the whole definition adds.
+/// other command line is parsed with the top of the definition as derived and only the
+/// command it names, given its argument help: before a parse clap copies every global
+/// option into every command, which cost each run more than most commands' own work. The
+/// parse is the same either way; only help shows what the whole definition adds.
 pub fn parser(args: &[std::ffi::OsString]) -> clap::Command {
     let help = args
         .iter()
@@ -373,9 +372,26 @@ pub fn parser(args: &[std::ffi::OsString]) -> clap::Command {
             .map(|sub| sub.get_name().to_string())
     });
     match named {
-        Some(name) => crate::cli::with_argument_help_of(command, &name),
+        Some(name) => only_command(crate::cli::with_argument_help_of(command, &name), &name),
         None => command,
     }
+}
+
+/// The top of `command` with `name` its only command: before a parse clap copies every
+/// global option into every command, and no other command is parsed.
+fn only_command(command: clap::Command, name: &str) -> clap::Command {
+    let Some(named) = command.find_subcommand(name).cloned() else {
+        return command;
+    };
+    clap::Command::new("mbtool")
+        .version(env!("CARGO_PKG_VERSION"))
+        .propagate_version(command.is_propagate_version_set())
+        .subcommand_required(command.is_subcommand_required_set())
+        .arg_required_else_help(command.is_arg_required_else_help_set())
+        .max_term_width(crate::cli::HELP_WIDTH)
+        .args(command.get_arguments().cloned())
+        .groups(command.get_groups().cloned())
+        .subcommand(named)
 }
 
 fn hide_untaken_options(command: clap::Command) -> clap::Command {

@@ -35,6 +35,9 @@ A range such as 400108-400110 may stand for ADDRESS and COUNT.
 
 Numbers may be decimal, 0x hex or 0b binary.";
 
+/// The widest help is wrapped at, however wide the terminal.
+pub const HELP_WIDTH: usize = 100;
+
 /// The top of the command line: `mbtool [OPTIONS] <COMMAND> [ARGS]`.
 #[derive(Clone, Debug, Parser)]
 #[command(
@@ -43,7 +46,7 @@ Numbers may be decimal, 0x hex or 0b binary.";
     about = ABOUT,
     long_about = LONG_ABOUT,
     propagate_version = true,
-    max_term_width = 100
+    max_term_width = HELP_WIDTH
 )]
 pub struct Cli {
     #[command(flatten)]
