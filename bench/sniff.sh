@@ -2,7 +2,8 @@
 # Throughput of `mbtool sniff --input capture.bin` over a 100 MB capture: the real wizmodbus
 # recording (tests/captures, 9600 8N1, frames with turnaround noise bytes) repeated.
 # Three runs: JSON Lines, the table, and a filter that shows nothing (`--slave 250`: the
-# framing and pairing alone). Prints MB/s and frames/s.
+# framing and pairing alone). Prints MB/s and frames/s, and tshark's frames/s on the same
+# frames beside them.
 #
 #   bash bench/sniff.sh [MEGABYTES]
 set -euo pipefail
@@ -30,3 +31,23 @@ for options in "-o json" "-o table" "-o json --slave 250"; do
 s = $end - $start
 print(f'mbtool sniff $options > /dev/null: {$bytes/1e6:.0f} MB, {$frames:,} frames in {s:.2f} s = {$bytes/1e6/s:.1f} MB/s, {$frames/s:,.0f} frames/s')"
 done
+
+# Wireshark on the same frames, already framed: sniff writes them as a pcap (DLT_USER0,
+# Modbus RTU), and tshark dissects every one. Over the first tenth of the capture, since
+# tshark is far slower; the figure is per frame, so the two compare all the same.
+if command -v tshark > /dev/null; then
+    head -c $(( bytes / 10 / 804 * 804 )) "$work/capture.bin" > "$work/tenth.bin"
+    ./target/release/mbtool sniff -b 9600 --parity none --input "$work/tenth.bin" \
+        --pcap "$work/frames.pcap" -o json > /dev/null
+    tenth_frames=$(( $(stat -c %s "$work/tenth.bin") / 804 * 88 ))
+    start=$(date +%s.%N)
+    tshark -r "$work/frames.pcap" -n \
+        -o 'uat:user_dlts:"User 0 (DLT=147)","mbrtu","0","","0",""' \
+        -T fields -e modbus.func_code > /dev/null 2>&1
+    end=$(date +%s.%N)
+    python3 -c "
+s = $end - $start
+print(f'tshark -T fields on the same frames, pcap: {$tenth_frames:,} frames in {s:.2f} s = {$tenth_frames/s:,.0f} frames/s')"
+else
+    echo "tshark: not installed, no figure beside mbtool's"
+fi
