@@ -132,36 +132,71 @@ pub fn new_table(colour: bool) -> Table {
     table
 }
 
-/// Values in a line: the first `most`, then how many there are in all.
+/// Values as `a b c`, at most `most` of them, then how many there are in all.
 pub fn shown_values(values: &Values, most: usize) -> String {
-    let all: Vec<String> = match values {
-        Values::Registers(v) => v.iter().map(ToString::to_string).collect(),
-        Values::Bits(v) => v.iter().map(ToString::to_string).collect(),
-    };
-    let mut text = all.iter().take(most).cloned().collect::<Vec<_>>().join(" ");
-    if all.len() > most {
-        text.push_str(&format!(" ... ({} in all)", all.len()));
-    }
+    let mut text = String::new();
+    write_values(&mut text, values, most);
     text
+}
+
+/// [`shown_values`], written into `out`.
+pub fn write_values(out: &mut String, values: &Values, most: usize) {
+    use std::fmt::Write as _;
+    let len = values.len();
+    for i in 0..len.min(most) {
+        if i > 0 {
+            out.push(' ');
+        }
+        let _ = match values {
+            Values::Registers(v) => write!(out, "{}", v[i]),
+            Values::Bits(v) => write!(out, "{}", v[i]),
+        };
+    }
+    if len > most {
+        let _ = write!(out, " ... ({len} in all)");
+    }
 }
 
 /// What a PDU's fields say in a few words, for the one-line views of `sniff` and `serve`:
 /// `400108 x3`, `400002 = 10 258`, `3 values: 555 0 100`.
 pub fn fields_summary(fields: &Fields) -> String {
-    let place = fields
-        .reference
-        .clone()
-        .or_else(|| fields.address.map(|a| a.to_string()));
-    match (&fields.values, place, fields.count) {
-        (Some(values), Some(place), _) => format!("{place} = {}", shown_values(values, 8)),
-        (Some(values), None, _) => format!("{} values: {}", values.len(), shown_values(values, 8)),
-        (None, Some(place), Some(count)) => format!("{place} x{count}"),
-        (None, Some(place), None) => place,
-        (None, None, _) => fields
-            .text
-            .clone()
-            .or_else(|| fields.data.clone())
-            .unwrap_or_default(),
+    let mut text = String::new();
+    write_fields_summary(&mut text, fields);
+    text
+}
+
+/// [`fields_summary`], written into `out`.
+pub fn write_fields_summary(out: &mut String, fields: &Fields) {
+    use std::fmt::Write as _;
+    let place = |out: &mut String| match (&fields.reference, fields.address) {
+        (Some(reference), _) => {
+            out.push_str(reference);
+            true
+        }
+        (None, Some(address)) => {
+            let _ = write!(out, "{address}");
+            true
+        }
+        (None, None) => false,
+    };
+    match (&fields.values, fields.count) {
+        (Some(values), _) => {
+            if place(out) {
+                out.push_str(" = ");
+            } else {
+                let _ = write!(out, "{} values: ", values.len());
+            }
+            write_values(out, values, 8);
+        }
+        (None, count) => {
+            if place(out) {
+                if let Some(count) = count {
+                    let _ = write!(out, " x{count}");
+                }
+            } else if let Some(text) = fields.text.as_ref().or(fields.data.as_ref()) {
+                out.push_str(text);
+            }
+        }
     }
 }
 

@@ -6,10 +6,10 @@ use std::io::{self, Write};
 use serde::Serialize;
 
 use super::Format;
-use super::{csv_field, fields_summary, request_summary, shown_values};
+use super::{csv_field, request_summary, shown_values, write_fields_summary};
 use mbtool_core::codec::function;
 use mbtool_core::codec::ExceptionCode;
-use mbtool_core::describe::{describe_pdu, spaced_hex, FrameReport, Kind, Values};
+use mbtool_core::describe::{describe_pdu, push_spaced_hex, FrameReport, Kind, Values};
 use mbtool_core::sniff::session::{Counts, FrameRecord, Record, TcpPlace};
 use mbtool_core::sniff::stats::{Stats, Times};
 use mbtool_core::sniff::tcp::PacketCounts;
@@ -108,6 +108,9 @@ pub struct SniffWriter {
     /// One JSON line is put together here and written at once: serde writes token by
     /// token, and each write through the boxed output costs a dynamic call.
     line: Vec<u8>,
+    /// One line of the table or one field of JSON, put together here: no allocation per
+    /// frame.
+    text: String,
 }
 
 /// Serializes `value` as one line into `line`, then writes it.
@@ -118,53 +121,82 @@ fn json_line(out: &mut dyn Write, line: &mut Vec<u8>, value: &impl Serialize) ->
     out.write_all(line)
 }
 
+/// The kind column: an answer, or a frame that reads both ways as a request with a doubt.
+fn kind_column(report: &FrameReport) -> &'static str {
+    match (report.kind, report.ambiguous) {
+        (_, true) => "request?",
+        (Kind::Response, _) => "answer",
+        (kind, _) => kind.name(),
+    }
+}
+
+/// The checksum column of a serial frame.
+fn check_column(report: &FrameReport) -> &'static str {
+    use mbtool_core::codec::Checksum;
+    match (&report.checksum, &report.error) {
+        (_, Some(error)) if error.starts_with("incomplete") => "incomplete",
+        (Checksum::Lrc { found, expected }, _) if found == expected => "LRC ok",
+        (Checksum::Lrc { .. }, _) => "LRC BAD",
+        (Checksum::Crc { found, expected }, _) if found == expected => "CRC ok",
+        (Checksum::Crc { .. }, _) => "CRC BAD",
+        _ => "",
+    }
+}
+
 /// What a frame says, in a few words.
 fn frame_summary(report: &FrameReport) -> String {
+    let mut text = String::new();
+    write_frame_summary(&mut text, report);
+    text
+}
+
+/// [`frame_summary`], written into `out`.
+fn write_frame_summary(out: &mut String, report: &FrameReport) {
+    use std::fmt::Write as _;
     if let Some(error) = &report.error {
-        return error.clone();
+        out.push_str(error);
+        return;
     }
     let f = &report.fields;
     if let Some(code) = f.exception {
         // The kind column already says "exception".
-        return ExceptionCode(code).to_string();
+        let _ = write!(out, "{}", ExceptionCode(code));
+        return;
     }
-    let place = f
-        .reference
-        .clone()
-        .or_else(|| f.address.map(|a| a.to_string()));
-    match (report.kind, &f.values, place) {
-        (Kind::Response, Some(values), Some(place)) if f.count.is_some() => {
+    let table = mbtool_core::model::address::Table::of_function(report.function);
+    match (report.kind, &f.values, f.address, f.count) {
+        (Kind::Response, Some(values), Some(start), Some(_)) => {
             // A read answer located by its request: reference = value pairs.
-            let start = f.address.unwrap_or_default();
-            let table = mbtool_core::model::address::Table::of_function(report.function);
-            let shown: Vec<String> = match values {
-                Values::Registers(v) => v.iter().map(ToString::to_string).collect(),
-                Values::Bits(v) => v.iter().map(ToString::to_string).collect(),
-            };
-            let pairs: Vec<String> = shown
-                .into_iter()
-                .enumerate()
-                .take(6)
-                .map(
-                    |(i, value)| match (table, u16::try_from(u32::from(start) + i as u32)) {
-                        (Some(table), Ok(address)) => {
-                            format!(
-                                "{} = {value}",
-                                mbtool_core::model::address::reference(table, address)
-                            )
-                        }
-                        _ => format!("{place}+{i} = {value}"),
-                    },
-                )
-                .collect();
-            let more = values.len().saturating_sub(6);
-            let mut text = pairs.join(", ");
-            if more > 0 {
-                text.push_str(&format!(", ... ({} in all)", values.len()));
+            for i in 0..values.len().min(6) {
+                if i > 0 {
+                    out.push_str(", ");
+                }
+                match (table, u16::try_from(u32::from(start) + i as u32)) {
+                    (Some(table), Ok(address)) => {
+                        let _ = write!(
+                            out,
+                            "{}",
+                            mbtool_core::model::address::reference(table, address)
+                        );
+                    }
+                    _ => {
+                        let _ = match &f.reference {
+                            Some(reference) => write!(out, "{reference}+{i}"),
+                            None => write!(out, "{start}+{i}"),
+                        };
+                    }
+                }
+                out.push_str(" = ");
+                let _ = match values {
+                    Values::Registers(v) => write!(out, "{}", v[i]),
+                    Values::Bits(v) => write!(out, "{}", v[i]),
+                };
             }
-            text
+            if values.len() > 6 {
+                let _ = write!(out, ", ... ({} in all)", values.len());
+            }
         }
-        _ => fields_summary(f),
+        _ => write_fields_summary(out, f),
     }
 }
 
@@ -175,6 +207,7 @@ impl SniffWriter {
             colour,
             csv_header_written: false,
             line: Vec::with_capacity(512),
+            text: String::with_capacity(256),
         }
     }
 
@@ -190,7 +223,8 @@ impl SniffWriter {
         match (self.format, record) {
             (Format::Json, Record::Frame(frame)) => {
                 // Always hex, whatever the mode: a JSON reader gets the bytes as they were.
-                let bytes = spaced_hex(&frame.found.bytes);
+                self.text.clear();
+                push_spaced_hex(&mut self.text, &frame.found.bytes);
                 json_line(
                     out,
                     &mut self.line,
@@ -200,7 +234,7 @@ impl SniffWriter {
                         time: seconds(frame.at),
                         gap: frame.gap.map(seconds),
                         offset: frame.found.offset,
-                        bytes: &bytes,
+                        bytes: &self.text,
                         report: &frame.report,
                         paired: frame.paired,
                         tcp: frame.tcp.as_ref().map(JsonTcp::from),
@@ -216,17 +250,21 @@ impl SniffWriter {
                     at,
                     ..
                 },
-            ) => json_line(
-                out,
-                &mut self.line,
-                &JsonNoise {
-                    kind: "noise",
-                    time: seconds(*at),
-                    offset: *offset,
-                    count: *len,
-                    bytes: &spaced_hex(kept),
-                },
-            ),
+            ) => {
+                self.text.clear();
+                push_spaced_hex(&mut self.text, kept);
+                json_line(
+                    out,
+                    &mut self.line,
+                    &JsonNoise {
+                        kind: "noise",
+                        time: seconds(*at),
+                        offset: *offset,
+                        count: *len,
+                        bytes: &self.text,
+                    },
+                )
+            }
             (
                 Format::Json,
                 Record::Unanswered {
@@ -332,80 +370,93 @@ impl SniffWriter {
         )
     }
 
+    /// The time column: seconds when the time is known, else `@offset`, 12 wide.
     fn when(time: Option<u64>, offset: u64) -> String {
-        match time {
-            Some(us) => format!("{:>12.6}", seconds(us)),
-            None => format!("{:>12}", format!("@{offset}")),
+        let mut text = String::new();
+        Self::write_when(&mut text, time, offset);
+        text
+    }
+
+    fn write_when(out: &mut String, time: Option<u64>, offset: u64) {
+        use std::fmt::Write as _;
+        let _ = match time {
+            Some(us) => write!(out, "{:>12.6}", seconds(us)),
+            None => {
+                let digits = offset.checked_ilog10().unwrap_or(0) as usize + 1;
+                let _ = write!(out, "{:1$}", "", 11usize.saturating_sub(digits));
+                write!(out, "@{offset}")
+            }
+        };
+    }
+
+    /// A serial frame's line, put together in `self.text`: the number, time, gap, slave,
+    /// function, kind, what it says and its checksum.
+    fn serial_frame_line(&mut self, frame: &FrameRecord) {
+        use std::fmt::Write as _;
+        let r = &frame.report;
+        let text = &mut self.text;
+        text.clear();
+        let colour = if !r.valid {
+            Some(RED)
+        } else if r.kind == Kind::Exception {
+            Some(YELLOW)
+        } else {
+            None
+        };
+        if let (true, Some(colour)) = (self.colour, colour) {
+            text.push_str(colour);
         }
+        let _ = write!(text, "#{:<6}", frame.number);
+        Self::write_when(text, frame.found.start, frame.found.offset);
+        let gap = frame
+            .gap
+            .map(|g| {
+                format!(
+                    "+{}",
+                    mbtool_core::model::duration::show(std::time::Duration::from_micros(g))
+                )
+            })
+            .unwrap_or_default();
+        let _ = write!(
+            text,
+            " {gap:>12}  slave {:<3} {:>2} {:<30} {:<9} ",
+            r.slave,
+            r.function & 0x7F,
+            function::name(r.function),
+            kind_column(r),
+        );
+        write_frame_summary(text, r);
+        let _ = write!(text, "  [{}]", check_column(r));
+        if let (true, Some(_)) = (self.colour, colour) {
+            text.push_str(RESET);
+        }
+        text.push('\n');
     }
 
     fn line(&mut self, out: &mut dyn Write, record: &Record) -> io::Result<()> {
         match record {
             Record::Frame(frame) => {
+                let Some(place) = &frame.tcp else {
+                    self.serial_frame_line(frame);
+                    return out.write_all(self.text.as_bytes());
+                };
                 let r = &frame.report;
-                let gap = frame
-                    .gap
-                    .map(|g| {
-                        format!(
-                            "+{}",
-                            mbtool_core::model::duration::show(std::time::Duration::from_micros(g))
-                        )
-                    })
-                    .unwrap_or_default();
-                let kind = match (r.kind, r.ambiguous) {
-                    (_, true) => "request?",
-                    (Kind::Response, _) => "answer",
-                    (kind, _) => kind.name(),
-                };
-                let check = match (&r.checksum, r.valid, &r.error) {
-                    (_, _, Some(e)) if e.starts_with("incomplete") => "incomplete".to_string(),
-                    (mbtool_core::codec::Checksum::Lrc { found, expected }, ..) => {
-                        if found == expected {
-                            "LRC ok"
-                        } else {
-                            "LRC BAD"
-                        }
-                        .to_string()
-                    }
-                    (mbtool_core::codec::Checksum::Crc { found, expected }, ..) => {
-                        if found == expected {
-                            "CRC ok"
-                        } else {
-                            "CRC BAD"
-                        }
-                        .to_string()
-                    }
-                    _ => String::new(),
-                };
-                let mut text = match &frame.tcp {
-                    Some(place) => format!(
-                        "#{:<6}{} {}  tid {:<5} unit {:<3} {:>2} {:<30} {:<9} {}{}",
-                        frame.number,
-                        Self::when(Some(frame.at), frame.found.offset),
-                        connection(place),
-                        r.transaction.unwrap_or_default(),
-                        r.slave,
-                        r.function & 0x7F,
-                        function::name(r.function),
-                        kind,
-                        frame_summary(r),
-                        place
-                            .response_time
-                            .map(|us| format!("  [{}]", duration(us)))
-                            .unwrap_or_default(),
-                    ),
-                    None => format!(
-                        "#{:<6}{} {:>12}  slave {:<3} {:>2} {:<30} {:<9} {}  [{check}]",
-                        frame.number,
-                        Self::when(frame.found.start, frame.found.offset),
-                        gap,
-                        r.slave,
-                        r.function & 0x7F,
-                        function::name(r.function),
-                        kind,
-                        frame_summary(r),
-                    ),
-                };
+                let mut text = format!(
+                    "#{:<6}{} {}  tid {:<5} unit {:<3} {:>2} {:<30} {:<9} {}{}",
+                    frame.number,
+                    Self::when(Some(frame.at), frame.found.offset),
+                    connection(place),
+                    r.transaction.unwrap_or_default(),
+                    r.slave,
+                    r.function & 0x7F,
+                    function::name(r.function),
+                    kind_column(r),
+                    frame_summary(r),
+                    place
+                        .response_time
+                        .map(|us| format!("  [{}]", duration(us)))
+                        .unwrap_or_default(),
+                );
                 if !r.valid {
                     text = self.paint(RED, text);
                 } else if r.kind == Kind::Exception {
@@ -420,16 +471,16 @@ impl SniffWriter {
                 time,
                 ..
             } => {
-                let shown = spaced_hex(&kept[..kept.len().min(16)]);
-                let more = if *len > 16 { " ..." } else { "" };
-                writeln!(
-                    out,
-                    "       {} {:>12}  noise: {} byte{}: {shown}{more}",
-                    Self::when(*time, *offset),
-                    "",
-                    len,
-                    if *len == 1 { "" } else { "s" }
-                )
+                use std::fmt::Write as _;
+                let text = &mut self.text;
+                text.clear();
+                text.push_str("       ");
+                Self::write_when(text, *time, *offset);
+                let plural = if *len == 1 { "" } else { "s" };
+                let _ = write!(text, " {:>12}  noise: {len} byte{plural}: ", "");
+                push_spaced_hex(text, &kept[..kept.len().min(16)]);
+                text.push_str(if *len > 16 { " ...\n" } else { "\n" });
+                out.write_all(text.as_bytes())
             }
             Record::Unanswered {
                 slave,

@@ -194,8 +194,15 @@ pub struct FrameReport {
 
 /// Formats bytes as spaced upper-case hex, the way mbtool prints every frame.
 pub fn spaced_hex(bytes: &[u8]) -> String {
-    const HEX: &[u8; 16] = b"0123456789ABCDEF";
     let mut out = String::with_capacity(bytes.len() * 3);
+    push_spaced_hex(&mut out, bytes);
+    out
+}
+
+/// [`spaced_hex`], appended to `out`.
+pub fn push_spaced_hex(out: &mut String, bytes: &[u8]) {
+    const HEX: &[u8; 16] = b"0123456789ABCDEF";
+    out.reserve(bytes.len() * 3);
     for (i, byte) in bytes.iter().enumerate() {
         if i > 0 {
             out.push(' ');
@@ -203,7 +210,6 @@ pub fn spaced_hex(bytes: &[u8]) -> String {
         out.push(char::from(HEX[usize::from(byte >> 4)]));
         out.push(char::from(HEX[usize::from(byte & 0x0F)]));
     }
-    out
 }
 
 fn with_reference(function: u8, address: u16) -> (Option<u16>, Option<String>) {
