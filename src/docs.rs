@@ -350,11 +350,12 @@ pub fn command() -> clap::Command {
     hide_untaken_options(crate::cli::with_argument_help(command))
 }
 
-/// The definition `args` are parsed with. A call for help gets all of [`command`]. Any
-/// other command line is parsed with the top of the definition as derived and only the
-/// command it names, given its argument help: before a parse clap copies every global
-/// option into every command, which cost each run more than most commands' own work. The
-/// parse is the same either way; only help shows what the whole definition adds.
+/// The definition `args` are parsed with first. A call for help gets all of [`command`].
+/// Any other command line is parsed with the top of the definition as derived and only the
+/// command it seems to name, given its argument help: before a parse clap copies every
+/// global option into every command, which cost each run more than most commands' own
+/// work. A command line this refuses is parsed again with [`whole_parser`], so the parse
+/// and its errors are the same either way; only help shows what [`command`] adds.
 pub fn parser(args: &[std::ffi::OsString]) -> clap::Command {
     let help = args
         .iter()
@@ -364,17 +365,32 @@ pub fn parser(args: &[std::ffi::OsString]) -> clap::Command {
         return command();
     }
     let command = Cli::command();
-    let named = args.iter().skip(1).find_map(|arg| {
+    match named_command(&command, args) {
+        Some(name) => only_command(crate::cli::with_argument_help_of(command, &name), &name),
+        None => command,
+    }
+}
+
+/// Every command as derived, the one `args` seem to name given its argument help: for a
+/// command line [`parser`] refused, since the word taken for the command may be an
+/// option's value (`-o info dump ...`), and an error is told with every command known.
+pub fn whole_parser(args: &[std::ffi::OsString]) -> clap::Command {
+    let command = Cli::command();
+    match named_command(&command, args) {
+        Some(name) => crate::cli::with_argument_help_of(command, &name),
+        None => command,
+    }
+}
+
+/// The first word of `args` that is the name or alias of a command.
+fn named_command(command: &clap::Command, args: &[std::ffi::OsString]) -> Option<String> {
+    args.iter().skip(1).find_map(|arg| {
         let word = arg.to_str()?;
         command
             .get_subcommands()
             .find(|sub| sub.get_name() == word || sub.get_all_aliases().any(|a| a == word))
             .map(|sub| sub.get_name().to_string())
-    });
-    match named {
-        Some(name) => only_command(crate::cli::with_argument_help_of(command, &name), &name),
-        None => command,
-    }
+    })
 }
 
 /// The top of `command` with `name` its only command: before a parse clap copies every

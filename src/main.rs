@@ -29,9 +29,16 @@ fn main() -> ExitCode {
 /// becomes one `mbtool: ` line. Both end with exit status 2.
 fn parse() -> Result<(Settings, Command), ExitCode> {
     let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    let parse_with = |command: &mut clap::Command| {
+        let matches = command.try_get_matches_from_mut(args.iter());
+        matches.and_then(|m| Ok((Cli::from_arg_matches(&m)?, m)))
+    };
     let mut command = mbtool::docs::parser(&args);
-    let matches = command.try_get_matches_from_mut(args);
-    let parsed = matches.and_then(|m| Ok((Cli::from_arg_matches(&m)?, m)));
+    let mut parsed = parse_with(&mut command);
+    if parsed.as_ref().is_err_and(|error| !shown(error)) {
+        command = mbtool::docs::whole_parser(&args);
+        parsed = parse_with(&mut command);
+    }
     let (cli, matches) = parsed.map_err(|error| match error.kind() {
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
             let _ = error.print();
@@ -53,6 +60,14 @@ fn parse() -> Result<(Settings, Command), ExitCode> {
             Err(ExitCode::from(2))
         }
     }
+}
+
+/// Help or the version, which clap shows itself: no error to parse again for.
+fn shown(error: &clap::Error) -> bool {
+    matches!(
+        error.kind(),
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
+    )
 }
 
 /// A usage error on one line: what is wrong, clap's tips and the values allowed, and where

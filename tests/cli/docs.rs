@@ -227,3 +227,21 @@ fn a_command_line_is_parsed_without_building_every_command() {
         .filter(|sub| sub.get_name() != "help")
         .all(|sub| sub.get_arguments().any(|arg| arg.is_global_set())));
 }
+
+#[test]
+fn an_option_value_that_is_a_command_name_is_no_command() {
+    // `-o info`: a file named as a command; the command is `dump`.
+    let dir = tempfile::tempdir().unwrap();
+    let output = crate::support::mbtool()
+        .current_dir(dir.path())
+        .args(["-o", "info", "--port", "sim", "dump", "17", "400108-400110"])
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+    assert!(dir.path().join("info").exists());
+    // `encode` without its command lists the commands there are, not one.
+    let output = crate::support::mbtool().arg("encode").output().unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("read-holding"), "{stderr}");
+}

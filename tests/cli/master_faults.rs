@@ -11,6 +11,8 @@ use mbtool_core::codec::{Direction, Mode};
 enum Act {
     /// Wait, then write these bytes.
     Answer(Duration, Vec<u8>),
+    /// Write these pieces, the pause before each: a slow slave, or a USB adapter.
+    Pieces(Duration, Vec<Vec<u8>>),
     /// Say nothing.
     Silence,
 }
@@ -45,9 +47,18 @@ fn against_within(timeout: &str, acts: Vec<Act>, args: &[&str]) -> Outcome {
                 break;
             };
             requests.push(bytes);
-            if let Act::Answer(delay, answer) = act {
-                thread::sleep(delay);
-                write_all(&mut port, &answer);
+            match act {
+                Act::Answer(delay, answer) => {
+                    thread::sleep(delay);
+                    write_all(&mut port, &answer);
+                }
+                Act::Pieces(pause, pieces) => {
+                    for piece in pieces {
+                        thread::sleep(pause);
+                        write_all(&mut port, &piece);
+                    }
+                }
+                Act::Silence => {}
             }
         }
         // Anything more the master sends is counted too (retries that should not happen).
@@ -174,6 +185,33 @@ fn an_answer_there_at_once_is_read_at_once_whatever_its_last_byte() {
         assert!(
             took < Duration::from_secs(1),
             "{args:?} {answer:02X?} took {took:?}"
+        );
+    }
+}
+
+#[test]
+fn an_answer_that_comes_in_pieces_with_pauses_is_read_whole_at_once() {
+    // A slow slave a byte at a time, 5 ms apart (longer than 3.5 characters at 19200),
+    // and a USB adapter's pieces 20 ms apart: the gaps are not the answer's end.
+    let bytes = answer().chunks(1).map(<[u8]>::to_vec).collect();
+    let halves = vec![answer()[..4].to_vec(), answer()[4..].to_vec()];
+    for (pause, pieces) in [(5, bytes), (20, halves)] {
+        let started = std::time::Instant::now();
+        let args = [&["-b", "19200"], READ].concat();
+        let outcome = against_within(
+            "5s",
+            vec![Act::Pieces(Duration::from_millis(pause), pieces)],
+            &args,
+        );
+        assert_eq!(outcome.code, 0, "{pause} ms: {}", outcome.stderr);
+        assert_eq!(
+            outcome.stdout.split_whitespace().collect::<Vec<_>>(),
+            ["555", "0", "100"]
+        );
+        assert!(
+            started.elapsed() < Duration::from_secs(2),
+            "{:?}",
+            started.elapsed()
         );
     }
 }

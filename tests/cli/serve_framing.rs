@@ -139,6 +139,33 @@ fn noise_glued_to_the_front_of_a_request_costs_nothing() {
 }
 
 #[test]
+fn requests_in_pieces_with_pauses_are_answered_and_so_is_every_one_after() {
+    // A request written a byte at a time 5 ms apart, one in halves 20 ms apart (a USB
+    // adapter), then requests with noise glued in front: each is answered, at once.
+    let (_server, pty) = serve_on_pty(&[]);
+    let mut line = pty.master.try_clone_native().unwrap();
+    thread::sleep(Duration::from_millis(300));
+    let request = crate::support::WORKED_FRAMES[4].clone();
+    let bytes: Vec<Vec<u8>> = request.chunks(1).map(<[u8]>::to_vec).collect();
+    let halves = vec![request[..3].to_vec(), request[3..].to_vec()];
+    let glued = vec![[&[0x13, 0x37][..], &request].concat()];
+    for (pause, pieces) in [(5, bytes), (20, halves), (0, glued.clone()), (0, glued)] {
+        for piece in pieces {
+            write_all(&mut line, &piece);
+            thread::sleep(Duration::from_millis(pause));
+        }
+        let answer = read_frame(
+            &mut line,
+            Mode::Rtu,
+            Direction::Response,
+            Duration::from_secs(1),
+        );
+        assert!(answer.is_some(), "no answer after pieces {pause} ms apart");
+        thread::sleep(Duration::from_millis(20));
+    }
+}
+
+#[test]
 fn an_ascii_request_with_half_a_second_between_characters_is_answered() {
     let (_server, pty) = serve_on_pty(&["--mode", "ascii"]);
     let mut line = pty.master.try_clone_native().unwrap();

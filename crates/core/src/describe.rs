@@ -443,7 +443,7 @@ fn describe_as(bytes: &[u8], mode: Mode, direction: Option<Direction>) -> FrameR
             Ok(pdu) => Reading::One(pdu),
             Err(error) => {
                 let mut report = opened(mode, &envelope);
-                report.kind = kind_of(report.function, direction);
+                report.kind = Kind::travelling(direction, report.function);
                 report.valid = false;
                 report.error = Some(error.to_string());
                 return with_checksum(report, envelope.checksum);
@@ -521,6 +521,15 @@ pub fn describe_reading(mode: Mode, envelope: &Envelope, reading: Reading) -> Fr
 }
 
 impl Kind {
+    /// What a frame with `function` travelling in `direction` is.
+    pub fn travelling(direction: Direction, function: u8) -> Kind {
+        match direction {
+            Direction::Request => Kind::Request,
+            Direction::Response if function & EXCEPTION_FLAG != 0 => Kind::Exception,
+            Direction::Response => Kind::Response,
+        }
+    }
+
     /// What a PDU is, as its description says.
     pub fn of(pdu: &Pdu) -> Kind {
         match pdu {
@@ -528,14 +537,6 @@ impl Kind {
             Pdu::Response(_) => Kind::Response,
             Pdu::Exception(_) => Kind::Exception,
         }
-    }
-}
-
-fn kind_of(function: u8, direction: Direction) -> Kind {
-    match direction {
-        Direction::Request => Kind::Request,
-        Direction::Response if function & EXCEPTION_FLAG != 0 => Kind::Exception,
-        Direction::Response => Kind::Response,
     }
 }
 

@@ -196,9 +196,11 @@ pub struct Session {
 impl Session {
     /// `char_us`: one character's time on the wire; `silence_us`: the gap that ends a frame.
     pub fn new(mode: Mode, char_us: f64, silence_us: u64, filter: Filter) -> Self {
+        let mut framer = Framer::new(mode, char_us, silence_us);
+        framer.end_cut_frames();
         Self {
             mode,
-            framer: Framer::new(mode, char_us, silence_us),
+            framer,
             pairer: Pairer::default(),
             filter,
             counts: Counts::default(),
@@ -322,8 +324,13 @@ impl Session {
         self.last_end = found.end.or(self.last_end);
         let shown = match found.broken {
             Some(broken) => {
-                let mut report = describe_frame(&found.bytes, Some(self.mode), None);
+                // Read the way the framer found it travelling (a cut answer is an answer).
+                let mut report = describe_frame(&found.bytes, Some(self.mode), found.direction);
                 report.valid = false;
+                // Too short to read, it is still what the framer found it to be.
+                if let Some(direction) = found.direction {
+                    report.kind = Kind::travelling(direction, report.function);
+                }
                 if broken == Broken::Incomplete {
                     report.error = Some("incomplete: the frame was cut off before its end".into());
                 }

@@ -399,11 +399,7 @@ impl TcpSession {
                     report.slave = bytes.get(6).copied().unwrap_or(report.slave);
                     report.function = bytes.get(7).copied().unwrap_or(report.function);
                 }
-                report.kind = match direction {
-                    Direction::Request => Kind::Request,
-                    Direction::Response if report.function & 0x80 != 0 => Kind::Exception,
-                    Direction::Response => Kind::Response,
-                };
+                report.kind = Kind::travelling(direction, report.function);
                 if broken == Some(Broken::Incomplete) {
                     report.error =
                         Some("incomplete: bytes of the frame are missing from the capture".into());

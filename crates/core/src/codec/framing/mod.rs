@@ -19,8 +19,8 @@
 //!   and its own CRC is zero): those lengths are never taken over the frame itself.
 //!
 //! Silence (3.5 character times) counts where the times can be trusted: it supports the
-//! frame before it, and the frame after it starts in step. It also ends bytes that do not
-//! make a whole frame before it: they are a frame cut short (the answer awaited, or a
+//! frame before it, and the frame after it starts in step. For a sniffer it also ends
+//! bytes that do not make a whole frame before it: they are a frame cut short (the answer awaited, or a
 //! request in step) or noise, and the frame after the silence starts clean; this is decided
 //! when the bytes after the silence come, so that a frame whose rest comes after a gap is
 //! still taken whole. A frame that did (its CRC holding across the gap) shows that the
@@ -151,6 +151,8 @@ pub struct Framer {
     /// this line do not tell its silences (a USB adapter's latency timer, a device that
     /// pauses inside frames).
     gaps_lie: bool,
+    /// Silence ends a frame cut short: a sniffer's rule (see [`Framer::end_cut_frames`]).
+    ends_cut_frames: bool,
     /// Position in the stream of `buffer[0]`.
     offset: u64,
     /// `buffer[0]` follows a frame, silence, or the start of the stream.
@@ -187,6 +189,7 @@ impl Framer {
             times: Vec::new(),
             verdicts: Verdicts::default(),
             gaps_lie: false,
+            ends_cut_frames: false,
             offset: 0,
             in_step: true,
             quiet: false,
@@ -197,6 +200,14 @@ impl Framer {
             lost: false,
             resync: false,
         }
+    }
+
+    /// Lets silence end bytes that do not make a whole frame before it (RTU, with timing):
+    /// the rule of a sniffer, which must show every frame of both sides in its place. A
+    /// master or a slave keeps bytes until they show they are no frame: a slow device may
+    /// pause inside its frame, and the answer awaited is worth the wait.
+    pub fn end_cut_frames(&mut self) {
+        self.ends_cut_frames = true;
     }
 
     /// Bytes without timing (a file, a TCP segment).
@@ -335,7 +346,7 @@ impl Framer {
     /// after it), up to the longest frame's reach; the silence after the last byte is not
     /// counted, since more bytes may still come to decide them.
     fn silence_within(&self, at: usize) -> Option<usize> {
-        if self.times.is_empty() || self.gaps_lie {
+        if !self.ends_cut_frames || self.times.is_empty() || self.gaps_lie {
             return None;
         }
         let last = self.buffer.len().min(at + MAX_RTU_ADU);
@@ -426,7 +437,8 @@ impl Framer {
                         self.turn(&found);
                         // Whole across a silence: the times do not tell this line's
                         // silences (the times are kept all the same, to be shown).
-                        if self.mode == Mode::Rtu
+                        if self.ends_cut_frames
+                            && self.mode == Mode::Rtu
                             && (at..at + len - 1).any(|i| self.silence_after(i))
                         {
                             self.gaps_lie = true;
@@ -695,6 +707,7 @@ mod tests {
     /// character apart before it; returns the frames, valid or not.
     fn timed_frames(pieces: &[(&[u8], u64)]) -> Vec<(Vec<u8>, Option<Broken>)> {
         let mut framer = framer(Mode::Rtu);
+        framer.end_cut_frames();
         let mut out = Vec::new();
         for (bytes, time) in pieces {
             framer.push_at(bytes, *time, &mut out);
@@ -737,6 +750,7 @@ mod tests {
         ]);
         assert_eq!(out, [(REQUEST.to_vec(), None), (ANSWER.to_vec(), None)]);
         let mut framer = framer(Mode::Rtu);
+        framer.end_cut_frames();
         let mut out = Vec::new();
         framer.push_at(&ANSWER[..4], 16_000, &mut out);
         framer.push_at(&ANSWER[4..], 32_000, &mut out);
@@ -745,6 +759,34 @@ mod tests {
         framer.push_at(&REQUEST[..5], 48_000, &mut out);
         framer.push_at(&REQUEST[5..], 64_000, &mut out);
         assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes == REQUEST));
+    }
+
+    #[test]
+    fn a_device_that_pauses_inside_its_answer_has_it_taken_whole() {
+        // The first byte after the pause comes alone: too soon to tell.
+        let out = timed_frames(&[
+            (&REQUEST, 10_000),
+            (&ANSWER[..3], 20_000),
+            (&ANSWER[3..4], 30_000),
+            (&ANSWER[4..], 34_000),
+        ]);
+        assert_eq!(out, [(REQUEST.to_vec(), None), (ANSWER.to_vec(), None)]);
+    }
+
+    #[test]
+    fn a_frame_cut_short_before_a_user_defined_one_that_completes_its_crc_is_cut() {
+        // A request cut one byte short, silence, then a frame of function 70 from the
+        // slave whose address is the missing byte: read together, the cut request passes.
+        let whole = rtu(&[0x01, 0x07]);
+        let user = rtu(&[whole[3], 0x46, 0x10, 0x20, 0x30]);
+        let out = timed_frames(&[(&whole[..3], 10_000), (&user, 20_000)]);
+        assert_eq!(
+            out,
+            [
+                (whole[..3].to_vec(), Some(Broken::Incomplete)),
+                (user, None)
+            ]
+        );
     }
 
     #[test]

@@ -68,15 +68,11 @@ impl Framer {
             self.ended || (self.quiet && self.inner_frame_end(at, self.buffer.len()).is_some());
         let may_complete = !found.pending.is_empty() && !cut_off;
         if found.valid.is_empty() {
-            // Bytes that silence came inside and no frame crosses: unless their layout's
-            // length ends at that silence (a CRC error), they were cut short.
             if let Some(end) = silence {
-                let data = &self.buffer[at..end];
-                let whole = [Direction::Request, Direction::Response].into_iter().any(|d| {
-                    matches!(rtu_frame_length(data, d), Length::Known(len) if len == data.len())
-                });
-                if !whole {
-                    return self.cut_short(at, end, in_step);
+                match self.ended_by_silence(at, end, may_complete) {
+                    Tell::Yes => return self.cut_short(at, end, in_step),
+                    Tell::NotYet => return Look::NeedMore,
+                    Tell::No => {}
                 }
             }
             if may_complete {
@@ -308,14 +304,59 @@ impl Framer {
             })
     }
 
-    /// Whether a whole frame of known layout starts at `at`.
+    /// Whether a whole frame starts at `at`: of known layout, CRC and PDU sound, or one
+    /// whose CRC holds.
     fn frame_starts(&self, at: usize) -> Tell {
         if self.known_frame_len(at, self.buffer.len()).is_some() {
+            return Tell::Yes;
+        }
+        let found = self.candidates(at);
+        if !found.valid.is_empty() {
             Tell::Yes
-        } else if !self.quiet && !self.ended && !self.candidates(at).pending.is_empty() {
+        } else if !self.quiet && !self.ended && !found.pending.is_empty() {
             Tell::NotYet
         } else {
             Tell::No
+        }
+    }
+
+    /// Whether the bytes from `at`, which make no frame, were ended by the silence before
+    /// `end`. Not when their layout's length ends right there (a CRC error, told as such),
+    /// nor when a frame of known layout starts among them and runs whole across the
+    /// silence (the gap was an adapter's, not the line's). Not yet while their length, or
+    /// such a frame, may still come, unless a whole frame starts right after the silence.
+    fn ended_by_silence(&self, at: usize, end: usize, may_complete: bool) -> Tell {
+        let data = &self.buffer[at..end];
+        // The answer awaited is read as an answer only.
+        let directions: &[Direction] = if self.answers_awaited(data, None) {
+            &[Direction::Response]
+        } else {
+            &[Direction::Request, Direction::Response]
+        };
+        if directions
+            .iter()
+            .any(|d| matches!(rtu_frame_length(data, *d), Length::Known(len) if len == data.len()))
+        {
+            return Tell::No;
+        }
+        let open = !self.quiet && !self.ended;
+        let mut crossing_may_come = false;
+        for inner in at + 1..end {
+            let found = self.candidates(inner);
+            if found
+                .valid
+                .iter()
+                .any(|c| c.known_layout && inner + c.len > end)
+            {
+                return Tell::No;
+            }
+            crossing_may_come |= open && !found.pending.is_empty();
+        }
+        match self.frame_starts(end) {
+            Tell::Yes => Tell::Yes,
+            Tell::NotYet => Tell::NotYet,
+            Tell::No if open && (may_complete || crossing_may_come) => Tell::NotYet,
+            Tell::No => Tell::Yes,
         }
     }
 
