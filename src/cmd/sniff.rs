@@ -141,12 +141,16 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
     let end = match (&args.input, input.as_mut()) {
         (Some(path), Some(input)) => {
             match replay_timing(path)? {
+                // The capture ended at its last read or idle, not at its last frame.
                 Some(events) => {
                     replay_timed(input, &events, &mut session, &mut sinks, &mut save)?;
+                    events.iter().map(timing::Event::time).max()
                 }
-                None => replay(input, &mut session, &mut sinks, &mut save)?,
+                None => {
+                    replay(input, &mut session, &mut sinks, &mut save)?;
+                    None
+                }
             }
-            None
         }
         _ => Some(live(
             settings,
@@ -404,36 +408,48 @@ fn replay_timing(path: &Path) -> Result<Option<Vec<timing::Event>>> {
     }
     let text = std::fs::read_to_string(&beside)
         .with_context(|| format!("cannot read {}", beside.display()))?;
-    let mut events = Vec::new();
+    let mut events: Vec<timing::Event> = Vec::new();
     for (number, line) in text.lines().enumerate() {
-        match timing::parse(line) {
-            Ok(Some(event)) => events.push(event),
-            Ok(None) => {}
-            Err(message) => {
-                return Err(Error::usage(format!(
-                    "{}:{}: {message}; move the file away to replay without timing",
-                    beside.display(),
-                    number + 1
-                ))
-                .into())
-            }
+        let fault = match timing::parse(line) {
+            Ok(Some(event)) => match events.last() {
+                Some(before) if event.time() < before.time() => Some(format!(
+                    "{} us comes before the line above it ({} us): the times must not go back",
+                    event.time(),
+                    before.time()
+                )),
+                _ => {
+                    events.push(event);
+                    None
+                }
+            },
+            Ok(None) => None,
+            Err(message) => Some(message),
+        };
+        if let Some(message) = fault {
+            return Err(Error::usage(format!(
+                "{}:{}: {message}; move the file away to replay without timing",
+                beside.display(),
+                number + 1
+            ))
+            .into());
         }
     }
     Ok(Some(events))
 }
 
-/// A capture without timing: framed by content alone.
+/// A capture without timing: framed by content alone. Returns how many bytes it read.
 fn replay(
     input: &mut dyn Read,
     session: &mut Session,
     sinks: &mut Sinks,
     save: &mut Option<Save>,
-) -> Result<()> {
+) -> Result<u64> {
     let mut records = Vec::new();
     let mut chunk = vec![0u8; 1 << 16];
+    let mut read = 0;
     loop {
         let n = match input.read(&mut chunk) {
-            Ok(0) => return Ok(()),
+            Ok(0) => return Ok(read),
             Ok(n) => n,
             Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
             Err(e) => return Err(e.into()),
@@ -441,6 +457,7 @@ fn replay(
         if let Some(save) = save.as_mut() {
             save.bytes(&chunk[..n], None)?;
         }
+        read += n as u64;
         session.push(&chunk[..n], &mut records);
         sinks.write(&mut records)?;
     }
@@ -478,7 +495,20 @@ fn replay_timed(
         sinks.write(&mut records)?;
     }
     // Bytes the timing does not cover (a capture appended to later) come untimed.
-    replay(input, session, sinks, save)
+    let untimed = replay(input, session, sinks, save)?;
+    if untimed > 0 {
+        mbtool::note!(
+            "mbtool: the .timing file covers the capture's first {} bytes; the last {untimed} are framed without timing",
+            events
+                .iter()
+                .map(|event| match event {
+                    timing::Event::Bytes { count, .. } => *count as u64,
+                    timing::Event::Idle { .. } => 0,
+                })
+                .sum::<u64>()
+        );
+    }
+    Ok(())
 }
 
 /// Reads the port until Ctrl-C; returns the time the capture ended, in microseconds.

@@ -639,3 +639,60 @@ fn two_hundred_mebibytes_of_00_take_under_50_mb() {
     assert_eq!(summary["noise_bytes"], 200u64 << 20);
     assert_eq!(summary["frames"], 0);
 }
+
+#[test]
+fn a_timed_replay_says_how_long_the_last_request_waited_in_vain() {
+    // A request read at 10 ms, and the line quiet until 60 ms, where the capture ends.
+    let dir = tempfile::tempdir().unwrap();
+    let capture = dir.path().join("capture.bin");
+    std::fs::write(&capture, &WORKED[4]).unwrap();
+    std::fs::write(
+        dir.path().join("capture.bin.timing"),
+        format!("10000 {}\n60000 idle\n", WORKED[4].len()),
+    )
+    .unwrap();
+    let output = mbtool()
+        .args(["sniff", "-b", "19200", "--json", "--input"])
+        .arg(&capture)
+        .output()
+        .unwrap();
+    let lines = json_lines(&output.stdout);
+    let unanswered = lines
+        .iter()
+        .find(|l| l["type"] == "unanswered")
+        .expect("the request is unanswered");
+    let waited = unanswered["waited"].as_f64().unwrap();
+    assert!((0.049..0.051).contains(&waited), "{unanswered}");
+}
+
+#[test]
+fn a_timing_file_that_goes_back_or_falls_short_is_told() {
+    let dir = tempfile::tempdir().unwrap();
+    let capture = dir.path().join("capture.bin");
+    std::fs::write(&capture, [&WORKED[4][..], &WORKED[5][..]].concat()).unwrap();
+    let timing = dir.path().join("capture.bin.timing");
+    let sniff = || {
+        mbtool()
+            .args(["sniff", "-b", "19200", "--json", "--input"])
+            .arg(&capture)
+            .output()
+            .unwrap()
+    };
+    // Edited by hand: a time before the one above it is refused, with its line.
+    std::fs::write(&timing, "9000 8\n1000 11\n").unwrap();
+    let output = sniff();
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("capture.bin.timing:2:"), "{stderr}");
+    // Covering only the request: the answer is framed without timing, and that is said.
+    std::fs::write(&timing, "9000 8\n").unwrap();
+    let output = sniff();
+    assert!(output.status.success());
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("first 8 bytes; the last 11"), "{stderr}");
+    let frames = json_lines(&output.stdout)
+        .into_iter()
+        .filter(|l| l["type"] == "frame")
+        .count();
+    assert_eq!(frames, 2);
+}

@@ -38,6 +38,15 @@ pub enum Event {
     },
 }
 
+impl Event {
+    /// When it happened, in microseconds.
+    pub fn time(&self) -> u64 {
+        match *self {
+            Event::Bytes { time, .. } | Event::Idle { time } => time,
+        }
+    }
+}
+
 impl fmt::Display for Event {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
