@@ -473,8 +473,15 @@ impl Framer {
 
     /// A frame was taken: the bus's turn passes, and a request awaits its answer.
     fn turn(&mut self, found: &Found) {
-        // A frame that reads both ways passes the turn all the same.
-        match found.direction.or(self.expect) {
+        // A frame that reads both ways passes the turn all the same, and is the answer
+        // only if it answers the request awaited: else a request after one unanswered.
+        let direction = found.direction.or(match self.expect {
+            Some(Direction::Response) if !self.answers_awaited(&found.bytes, None) => {
+                Some(Direction::Request)
+            }
+            expect => expect,
+        });
+        match direction {
             // A broadcast is not answered: another request comes next.
             Some(Direction::Request) if found.bytes.first() == Some(&0) => {
                 self.expect = Some(Direction::Request);
@@ -787,6 +794,19 @@ mod tests {
                 (user, None)
             ]
         );
+    }
+
+    #[test]
+    fn a_request_that_reads_both_ways_after_an_unanswered_one_awaits_its_own_answer() {
+        // 02 04 03 8C 00 0E is a read of input registers, and as long as an answer of 3
+        // bytes: after a request nobody answered, it is the next request, not that answer.
+        let unanswered = rtu(&[0x3A, 0x04, 0x1B, 0x69, 0x00, 0x0E]);
+        let request = rtu(&[0x02, 0x04, 0x03, 0x8C, 0x00, 0x0E]);
+        let mut body = vec![0x02, 0x04, 28];
+        body.extend((0..28u8).map(|i| i.wrapping_mul(37)));
+        let answer = rtu(&body);
+        let stream = [&unanswered[..], &request, &answer, &[0xA1, 0xB2, 0xC3]].concat();
+        assert_eq!(frames(&stream), [unanswered, request, answer]);
     }
 
     #[test]
