@@ -696,3 +696,49 @@ fn a_timing_file_that_goes_back_or_falls_short_is_told() {
         .count();
     assert_eq!(frames, 2);
 }
+
+#[test]
+fn with_timing_a_user_defined_answer_runs_to_the_silence_after_it() {
+    // Generated traffic at 9600 8E1 (a window of a long mix, as a UART delivered it): the
+    // answer of function 106 comes 3.5 ms after its request and its first six bytes pass
+    // their CRC; with the timing it is taken whole, to the silence after it.
+    let bytes = hex::decode(concat!(
+        "1E72BAB11B0C7F3515C26EE5C74B767255154FCFE756E50F111708D60009000A000102A9F8DA3611",
+        "171245CDCC26D03C4C7BEF9EE7C02B8A43AF13401318896A70538530005FA4896A60C6A236540083",
+        "9DB17DDADCF87C890206DCF8DA9AE8930206DCF8DA9AE8930104543000052036",
+    ))
+    .unwrap();
+    let timing: String = [
+        "31170345 2; 31171466 1; 31172667 1; 31176084 3; 31177192 1; 31178424 1",
+        "31185669 3; 31188054 2; 31192572 4; 31194842 2; 31197126 2; 31199502 2",
+        "31204604 idle; 31209412 2; 31213946 4; 31218524 4; 31221920 3; 31223083 1",
+        "31224191 1; 31231467 3; 31233730 2; 31236047 2; 31238260 2; 31241681 3",
+        "31246283 4; 31247462 1; 31249765 2; 31253241 3; 31254299 1; 31259449 idle",
+        "31262023 2; 31265486 3; 31267846 2; 31270137 2; 31277094 3; 31281625 4",
+        "31285125 3; 31288482 3; 31293196 4; 31298264 idle; 31302269 1; 31304673 2",
+        "31309203 4; 31310382 1; 31314585 1; 31317981 3; 31321357 3; 31322562 1",
+        "31327683 idle; 31330589 2; 31334012 3; 31335131 1; 31337384 2; 31363669 idle",
+    ]
+    .iter()
+    .flat_map(|row| row.split("; "))
+    .map(|line| format!("{line}\n"))
+    .collect();
+    let dir = tempfile::tempdir().unwrap();
+    let capture = dir.path().join("capture.bin");
+    std::fs::write(&capture, bytes).unwrap();
+    std::fs::write(dir.path().join("capture.bin.timing"), timing).unwrap();
+    let output = mbtool()
+        .args([
+            "sniff", "-b", "9600", "--parity", "even", "--json", "--input",
+        ])
+        .arg(&capture)
+        .output()
+        .unwrap();
+    let answer = "89 6A 60 C6 A2 36 54 00 83 9D B1 7D DA DC F8 7C 89";
+    let frames: Vec<String> = json_lines(&output.stdout)
+        .iter()
+        .filter(|l| l["type"] == "frame" && l["valid"] == true)
+        .map(|l| l["bytes"].as_str().unwrap().to_string())
+        .collect();
+    assert!(frames.iter().any(|f| f == answer), "{frames:#?}");
+}

@@ -342,11 +342,17 @@ impl Framer {
         })
     }
 
+    /// Whether the times of the bytes tell the line's silences, for a sniffer's rules: it
+    /// has times, and no frame has come whole across a gap.
+    fn times_tell_silence(&self) -> bool {
+        self.ends_cut_frames && !self.times.is_empty() && !self.gaps_lie
+    }
+
     /// Where the first silence inside the bytes from `at` ends (the index of the byte
     /// after it), up to the longest frame's reach; the silence after the last byte is not
     /// counted, since more bytes may still come to decide them.
     fn silence_within(&self, at: usize) -> Option<usize> {
-        if !self.ends_cut_frames || self.times.is_empty() || self.gaps_lie {
+        if !self.times_tell_silence() {
             return None;
         }
         let last = self.buffer.len().min(at + MAX_RTU_ADU);

@@ -80,7 +80,12 @@ impl Framer {
                 Tell::No => {}
             }
         }
-        if self.silence_after(end - 1) || self.answers_awaited(frame, candidate.direction) {
+        // The conversation supports the answer awaited; but where the times tell silences,
+        // one whose length only its CRC tells must end where the silence does, since the
+        // bytes that go on without a gap are still its own.
+        let by_conversation = self.answers_awaited(frame, candidate.direction)
+            && (candidate.known_layout || !self.times_tell_silence());
+        if self.silence_after(end - 1) || by_conversation {
             return Tell::Yes;
         }
         if end == self.buffer.len() {
