@@ -224,7 +224,7 @@ fn tcp_answers(stream: &mut TcpStream, count: usize) -> Vec<Vec<u8>> {
         framer.push(&chunk[..n], &mut events);
         for event in events.drain(..) {
             match event {
-                Event::Frame(found) => answers.push(found.bytes),
+                Event::Frame(found) => answers.push(found.bytes.to_vec()),
                 Event::Noise(noise) => panic!("not Modbus TCP: {:02X?}", noise.kept),
             }
         }

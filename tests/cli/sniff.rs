@@ -240,7 +240,7 @@ fn a_hundred_thousand_pairs_with_noise_lose_and_invent_nothing() {
     let found: Vec<Vec<u8>> = records
         .iter()
         .filter_map(|r| match r {
-            Record::Frame(f) => Some(f.found.bytes.clone()),
+            Record::Frame(f) => Some(f.found.bytes.to_vec()),
             _ => None,
         })
         .collect();

@@ -155,7 +155,7 @@ pub fn read_frame(
         for event in events.drain(..) {
             if let Event::Frame(found) = event {
                 if let Ok(frame) = Frame::decode(mode, &found.bytes, direction) {
-                    return Some((frame, found.bytes));
+                    return Some((frame, found.bytes.to_vec()));
                 }
             }
         }

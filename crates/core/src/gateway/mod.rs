@@ -335,7 +335,7 @@ impl Gateway {
                         id,
                         Job {
                             client: Arc::clone(&peer),
-                            frame: found.bytes.clone(),
+                            frame: found.bytes.to_vec(),
                             arrived: Instant::now(),
                         },
                     );

@@ -58,11 +58,15 @@ const MIN_RTU_FRAME: usize = 4;
 /// The highest slave address on a serial line; 248-255 are reserved.
 const MAX_SLAVE: u8 = 247;
 
+/// The bytes of a frame found.
+pub type FrameBytes = smallvec::SmallVec<[u8; 32]>;
+
 /// A frame as found in the stream.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Found {
     /// The whole frame as received: envelope, PDU and checksum (CR LF included in ASCII).
-    pub bytes: Vec<u8>,
+    /// Inline up to 32 bytes, as most frames are: no allocation per frame.
+    pub bytes: FrameBytes,
     /// Position of the first byte in the whole stream.
     pub offset: u64,
     /// Arrival time of the first and of the last byte, in microseconds, when known.
@@ -432,7 +436,7 @@ impl Framer {
                 } => {
                     self.flush_noise(out);
                     let found = Found {
-                        bytes: self.buffer[at..at + len].to_vec(),
+                        bytes: FrameBytes::from_slice(&self.buffer[at..at + len]),
                         offset: self.offset + at as u64,
                         start: self.time(at),
                         end: self.time(at + len - 1),
@@ -542,7 +546,7 @@ pub fn split_glued(mode: Mode, bytes: &[u8]) -> Option<Vec<Vec<u8>>> {
     let frames: Vec<Vec<u8>> = events
         .into_iter()
         .map(|event| match event {
-            Event::Frame(found) if found.broken.is_none() => Some(found.bytes),
+            Event::Frame(found) if found.broken.is_none() => Some(found.bytes.into_vec()),
             _ => None,
         })
         .collect::<Option<_>>()?;
@@ -605,7 +609,7 @@ mod tests {
         events(Mode::Rtu, stream)
             .into_iter()
             .filter_map(|e| match e {
-                Event::Frame(f) if f.broken.is_none() => Some(f.bytes),
+                Event::Frame(f) if f.broken.is_none() => Some(f.bytes.to_vec()),
                 _ => None,
             })
             .collect()
@@ -646,9 +650,11 @@ mod tests {
         stream.extend_from_slice(&ANSWER);
         let out = events(Mode::Rtu, &stream);
         assert!(
-            matches!(&out[0], Event::Frame(f) if f.broken == Some(Broken::Checksum) && f.bytes == bad)
+            matches!(&out[0], Event::Frame(f) if f.broken == Some(Broken::Checksum) && f.bytes[..] == bad[..])
         );
-        assert!(matches!(&out[1], Event::Frame(f) if f.broken.is_none() && f.bytes == ANSWER));
+        assert!(
+            matches!(&out[1], Event::Frame(f) if f.broken.is_none() && f.bytes[..] == ANSWER[..])
+        );
     }
 
     #[test]
@@ -670,7 +676,7 @@ mod tests {
         assert!(!out.iter().any(|e| matches!(e, Event::Frame(_))));
         assert!(!framer.idle(10_500, &mut out), "not silent yet");
         assert!(framer.idle(13_000, &mut out));
-        assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes == REQUEST));
+        assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes[..] == REQUEST[..]));
     }
 
     #[test]
@@ -712,7 +718,7 @@ mod tests {
         assert!(out.is_empty(), "{out:?}");
         framer.push_at(&ANSWER[5..], 104_000, &mut out);
         assert!(
-            matches!(out.as_slice(), [Event::Frame(f)] if f.bytes == ANSWER && f.broken.is_none())
+            matches!(out.as_slice(), [Event::Frame(f)] if f.bytes[..] == ANSWER[..] && f.broken.is_none())
         );
     }
 
@@ -728,7 +734,7 @@ mod tests {
         framer.finish(&mut out);
         out.into_iter()
             .filter_map(|event| match event {
-                Event::Frame(found) => Some((found.bytes, found.broken)),
+                Event::Frame(found) => Some((found.bytes.to_vec(), found.broken)),
                 Event::Noise(_) => None,
             })
             .collect()
@@ -771,7 +777,7 @@ mod tests {
         // From then on a request cut short by a gap is kept, as without timing.
         framer.push_at(&REQUEST[..5], 48_000, &mut out);
         framer.push_at(&REQUEST[5..], 64_000, &mut out);
-        assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes == REQUEST));
+        assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes[..] == REQUEST[..]));
     }
 
     #[test]
@@ -857,7 +863,7 @@ mod tests {
         assert!(matches!(&out[0], Event::Noise(n) if n.kept == b"xx"));
         assert!(matches!(&out[1], Event::Frame(f) if f.broken.is_none()));
         assert!(
-            matches!(&out[2], Event::Frame(f) if f.broken == Some(Broken::Incomplete) && f.bytes == b":1103006B")
+            matches!(&out[2], Event::Frame(f) if f.broken == Some(Broken::Incomplete) && f.bytes[..] == b":1103006B"[..])
         );
         assert!(matches!(&out[3], Event::Frame(f) if f.broken.is_none()));
 
