@@ -147,14 +147,20 @@ pub fn write_values(out: &mut String, values: &Values, most: usize) {
         if i > 0 {
             out.push(' ');
         }
-        let _ = match values {
-            Values::Registers(v) => write!(out, "{}", v[i]),
-            Values::Bits(v) => write!(out, "{}", v[i]),
-        };
+        write_value(out, values, i);
     }
     if len > most {
         let _ = write!(out, " ... ({len} in all)");
     }
+}
+
+/// Value `i` of `values`, written into `out`.
+pub fn write_value(out: &mut String, values: &Values, i: usize) {
+    use std::fmt::Write as _;
+    let _ = match values {
+        Values::Registers(v) => write!(out, "{}", v[i]),
+        Values::Bits(v) => write!(out, "{}", v[i]),
+    };
 }
 
 /// What a PDU's fields say in a few words, for the one-line views of `sniff` and `serve`:

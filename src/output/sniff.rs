@@ -6,10 +6,10 @@ use std::io::{self, Write};
 use serde::Serialize;
 
 use super::Format;
-use super::{csv_field, request_summary, shown_values, write_fields_summary};
+use super::{csv_field, request_summary, shown_values, write_fields_summary, write_value};
 use mbtool_core::codec::function;
 use mbtool_core::codec::ExceptionCode;
-use mbtool_core::describe::{describe_pdu, push_spaced_hex, FrameReport, Kind, Values};
+use mbtool_core::describe::{describe_pdu, push_spaced_hex, FrameReport, Kind};
 use mbtool_core::sniff::session::{Counts, FrameRecord, Record, TcpPlace};
 use mbtool_core::sniff::stats::{Stats, Times};
 use mbtool_core::sniff::tcp::PacketCounts;
@@ -187,10 +187,7 @@ fn write_frame_summary(out: &mut String, report: &FrameReport) {
                     }
                 }
                 out.push_str(" = ");
-                let _ = match values {
-                    Values::Registers(v) => write!(out, "{}", v[i]),
-                    Values::Bits(v) => write!(out, "{}", v[i]),
-                };
+                write_value(out, values, i);
             }
             if values.len() > 6 {
                 let _ = write!(out, ", ... ({} in all)", values.len());

@@ -387,11 +387,9 @@ impl Session {
             Role::Malformed(_) => None,
         };
         self.counts.tell(envelope.slave, kind);
+        self.counts.malformed += u64::from(kind.is_none());
         let function = envelope.pdu.first().copied().unwrap_or_default();
         if !self.filter.shows(envelope.slave, function) {
-            if matches!(role, Role::Malformed(_)) {
-                self.counts.malformed += 1;
-            }
             return None;
         }
         let describe = |reading| describe_reading(self.mode, &envelope, reading);
@@ -408,10 +406,7 @@ impl Session {
             Role::Unsettled { request, response } => {
                 (describe(Reading::Both { request, response }), false)
             }
-            Role::Malformed(reading) => {
-                self.counts.malformed += 1;
-                (describe(reading), false)
-            }
+            Role::Malformed(reading) => (describe(reading), false),
         })
     }
 }

@@ -1,6 +1,6 @@
-//! The framer's memory of questions already answered. The rules look at the same frame
-//! from several positions (as what follows the bytes before it, then as itself), and its
-//! CRC or PDU need not be checked again each time.
+//! The framer's memory of the CRCs it checked. The rules look at the same frame from
+//! several positions (as what follows the bytes before it, then as itself), and its CRC
+//! need not be computed again each time.
 
 use std::cell::Cell;
 
@@ -8,58 +8,38 @@ use std::cell::Cell;
 /// it is taken, so a handful of the latest are enough.
 const SLOTS: usize = 16;
 
-/// A yes-or-no verdict on the bytes at a position of the stream, by what was asked.
+/// Whether the CRC of the frame of `len` bytes at `position` in the stream holds.
 #[derive(Clone, Copy, Default)]
 struct Verdict {
     /// Position in the stream, plus one (0: empty).
     position: u64,
-    question: u32,
-    answer: bool,
+    len: usize,
+    holds: bool,
 }
 
-/// Verdicts on bytes of the stream. Positions are never reused (bytes forgotten move the
-/// stream's offset on), so a verdict on a position holds for good.
+/// CRC verdicts on frames of the stream. Positions are never reused (bytes forgotten move
+/// the stream's offset on), so a verdict on a position holds for good.
 #[derive(Default)]
-pub(super) struct Verdicts {
+pub(super) struct CrcVerdicts {
     slots: [Cell<Verdict>; SLOTS],
 }
 
-impl Verdicts {
-    /// The answer to `question` about the bytes at `position`, worked out by `work` only
+impl CrcVerdicts {
+    /// Whether the CRC of the `len` bytes at `position` holds, worked out by `check` only
     /// the first time it is asked.
-    pub(super) fn get(&self, position: u64, question: u32, work: impl FnOnce() -> bool) -> bool {
+    pub(super) fn get(&self, position: u64, len: usize, check: impl FnOnce() -> bool) -> bool {
         let position = position + 1;
-        let slot = &self.slots[(position as usize ^ question as usize) % SLOTS];
+        let slot = &self.slots[(position as usize ^ len) % SLOTS];
         let known = slot.get();
-        if known.position == position && known.question == question {
-            return known.answer;
+        if known.position == position && known.len == len {
+            return known.holds;
         }
-        let answer = work();
+        let holds = check();
         slot.set(Verdict {
             position,
-            question,
-            answer,
+            len,
+            holds,
         });
-        answer
+        holds
     }
-}
-
-/// The question "does the CRC of the `len` bytes here hold?".
-pub(super) fn crc_question(len: usize) -> u32 {
-    len as u32
-}
-
-/// The question "does the PDU of the `len`-byte frame here read in `direction`?", with the
-/// stricter reading after noise.
-pub(super) fn reads_question(
-    len: usize,
-    direction: Option<crate::codec::Direction>,
-    after_noise: bool,
-) -> u32 {
-    let direction = match direction {
-        None => 1,
-        Some(crate::codec::Direction::Request) => 2,
-        Some(crate::codec::Direction::Response) => 3,
-    };
-    (1 << 20) | (u32::from(after_noise) << 18) | (direction << 16) | len as u32
 }

@@ -20,10 +20,10 @@
 //!
 //! Silence (3.5 character times) counts where the times can be trusted: it supports the
 //! frame before it, and the frame after it starts in step. For a sniffer it also ends
-//! bytes that do not make a whole frame before it: they are a frame cut short (the answer awaited, or a
-//! request in step) or noise, and the frame after the silence starts clean; this is decided
-//! when the bytes after the silence come, so that a frame whose rest comes after a gap is
-//! still taken whole. A frame that did (its CRC holding across the gap) shows that the
+//! bytes that do not make a whole frame before it: they are a frame cut short (the answer
+//! awaited, or a request in step) or noise, and the frame after the silence starts clean;
+//! this is decided when the bytes after the silence come, so that a frame whose rest comes
+//! after a gap is still taken whole. A frame that did (its CRC holding across the gap) shows that the
 //! gaps lie: a USB adapter hands bytes over when its latency timer runs out, so a frame
 //! straddling a tick arrives in two reads a whole period apart, and a device may pause
 //! inside its frames. From then on the times are not taken for silence, and a frame cut
@@ -36,7 +36,7 @@ use super::checksum::crc_holds;
 use super::function::EXCEPTION_FLAG;
 use super::limits::MAX_RTU_ADU;
 use super::{Direction, Mode};
-use memo::Verdicts;
+use memo::CrcVerdicts;
 
 mod ascii;
 mod memo;
@@ -149,8 +149,8 @@ pub struct Framer {
     /// The arrival time of each byte of `buffer` ([`UNTIMED`] where not known); empty
     /// while no byte has a time, so that a file framed without timing costs nothing here.
     times: Vec<u64>,
-    /// The CRCs and PDUs checked lately.
-    verdicts: Verdicts,
+    /// The CRCs checked lately.
+    crc_verdicts: CrcVerdicts,
     /// A frame was taken whole across a gap its times showed as silence: the times of
     /// this line do not tell its silences (a USB adapter's latency timer, a device that
     /// pauses inside frames).
@@ -191,7 +191,7 @@ impl Framer {
             char_us,
             buffer: Vec::with_capacity(1024),
             times: Vec::new(),
-            verdicts: Verdicts::default(),
+            crc_verdicts: CrcVerdicts::default(),
             gaps_lie: false,
             ends_cut_frames: false,
             offset: 0,
@@ -325,24 +325,8 @@ impl Framer {
 
     /// Whether the RTU frame of `len` bytes at `at` ends in its CRC.
     fn crc_holds_at(&self, at: usize, len: usize) -> bool {
-        self.verdicts
-            .get(self.offset + at as u64, memo::crc_question(len), || {
-                crc_holds(&self.buffer[at..at + len])
-            })
-    }
-
-    /// Whether the PDU of the RTU frame of `len` bytes at `at` reads in `direction` (see
-    /// [`resync::pdu_reads`]).
-    fn pdu_reads_at(
-        &self,
-        at: usize,
-        len: usize,
-        direction: Option<Direction>,
-        after_noise: bool,
-    ) -> bool {
-        let question = memo::reads_question(len, direction, after_noise);
-        self.verdicts.get(self.offset + at as u64, question, || {
-            resync::pdu_reads(&self.buffer[at..at + len], direction, after_noise)
+        self.crc_verdicts.get(self.offset + at as u64, len, || {
+            crc_holds(&self.buffer[at..at + len])
         })
     }
 

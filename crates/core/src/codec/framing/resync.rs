@@ -39,9 +39,7 @@ impl Framer {
         if !in_step && frame.first().is_some_and(|slave| *slave > MAX_SLAVE) {
             return Tell::No;
         }
-        if candidate.known_layout
-            && !self.pdu_reads_at(at, candidate.len, candidate.direction, !in_step)
-        {
+        if candidate.known_layout && !pdu_reads(frame, candidate.direction, !in_step) {
             return Tell::No;
         }
         let tell = self.followed_or_answered(at, candidate, depth, in_step);

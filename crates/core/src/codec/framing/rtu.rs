@@ -8,12 +8,12 @@ use crate::codec::length::{rtu_frame_length, Length};
 use crate::codec::limits::MAX_RTU_ADU;
 use crate::codec::Direction;
 
-use super::resync::may_lack_layout;
 use super::resync::Tell;
+use super::resync::{may_lack_layout, pdu_reads};
 use super::{Broken, Candidate, Framer, Look, MAX_SLAVE, MIN_RTU_FRAME};
 
 /// What the bytes at one position could be.
-#[derive(Clone, Default)]
+#[derive(Default)]
 pub(super) struct Candidates {
     /// Lengths whose CRC holds, shortest first. Inline: a position is looked at several
     /// times for every frame, and rarely holds more than two readings.
@@ -89,7 +89,7 @@ impl Framer {
                 let frame = &self.buffer[at..at + c.len];
                 c.known_layout
                     && self.answers_awaited(frame, c.direction)
-                    && self.pdu_reads_at(at, c.len, Some(Direction::Response), false)
+                    && pdu_reads(frame, Some(Direction::Response), false)
             });
             if let Some(answer) = awaited {
                 return frame_of(answer);
@@ -133,7 +133,7 @@ impl Framer {
             let tell = if in_step && candidate.known_layout && on_turn {
                 // One whose PDU does not read is a master's mistake to be shown, or bytes
                 // that only happen to pass: what follows must be sound too.
-                if self.pdu_reads_at(at, candidate.len, candidate.direction, false) {
+                if pdu_reads(frame, candidate.direction, false) {
                     Tell::Yes
                 } else {
                     self.followed_well(at + candidate.len, 1, true, self.asked_by(at, candidate))
@@ -258,9 +258,10 @@ impl Framer {
         // One pass finds the lengths whose CRC holds; the frames inside, which cost a CRC
         // at every position, are looked for only where they can change the answer.
         let matches = crc_matches(data, MIN_RTU_FRAME, reach);
-        // Silence alone does not end it: the bytes after the silence tell whether it was
-        // one (see `silence_within`), or the end of the input.
-        let could_grow = data.len() < MAX_RTU_ADU && !self.ended;
+        // A master or a slave decides at the silence after it; for a sniffer silence alone
+        // does not end it, the bytes after the silence tell (see `silence_within`).
+        let could_grow =
+            data.len() < MAX_RTU_ADU && !self.ended && (self.ends_cut_frames || !self.quiet);
         let inner_end = if matches.is_empty() && !could_grow {
             None
         } else {
@@ -296,7 +297,7 @@ impl Framer {
                     if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len)
                         && len <= data.len()
                         && self.crc_holds_at(at, len)
-                        && self.pdu_reads_at(at, len, Some(direction), true) =>
+                        && pdu_reads(&data[..len], Some(direction), true) =>
                 {
                     Some(len)
                 }
