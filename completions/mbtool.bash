@@ -290,7 +290,7 @@ _mbtool() {
 
     case "${cmd}" in
         mbtool)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway generate help"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -342,6 +342,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -438,7 +450,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__diag)
-            opts="-p -m -b -o -v -h -V --clear --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --count --help --version"
+            opts="-p -m -b -o -v -h -V --clear --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --count --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -490,6 +502,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -512,7 +536,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__dump)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --verbose --max-per-request --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --verbose --max-per-request --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -564,6 +588,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -1412,7 +1448,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__gateway)
-            opts="-q -p -m -b -o -v -h -V --listen --unit-map --broadcast-reply --quiet --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --log --help --version"
+            opts="-q -p -m -b -o -v -h -V --listen --unit-map --broadcast-reply --quiet --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --log --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1472,6 +1508,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -2016,7 +2064,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__info)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2068,6 +2116,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -2086,7 +2146,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__raw)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --type --order --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --type --order --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2138,6 +2198,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -2168,7 +2240,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read)
-            opts="-p -m -b -o -v -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version"
+            opts="-p -m -b -o -v -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2226,6 +2298,18 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
                 --output)
                     COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
                     return 0
@@ -2274,7 +2358,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__coils)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2326,6 +2410,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -2364,7 +2460,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__holding)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2416,6 +2512,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -2466,7 +2574,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__input__subcmd__registers)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2518,6 +2626,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -2568,7 +2688,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__inputs)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2620,6 +2740,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -2658,7 +2790,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__restore)
-            opts="-p -m -b -v -h -V --dry-run --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --verbose --max-per-request --help --version"
+            opts="-p -m -b -v -h -V --dry-run --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --verbose --max-per-request --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2712,6 +2844,18 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
                 --max-per-request)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -2724,7 +2868,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__scan)
-            opts="-p -m -b -o -v -h -V --ids --probe --listen --all --port --mode --baud --parity --data-bits --stop-bits --timeout --frame-gap --output --json --verbose --help --version"
+            opts="-p -m -b -o -v -h -V --ids --probe --listen --all --port --mode --baud --parity --data-bits --stop-bits --timeout --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2786,6 +2930,18 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
                 --output)
                     COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
                     return 0
@@ -2802,7 +2958,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__serve)
-            opts="-q -p -m -b -o -h -V --slave --data --read-only --delay --drop --corrupt --exception --garbage --seed --quiet --vendor --product-code --identity --port --mode --baud --parity --data-bits --stop-bits --output --json --help --version"
+            opts="-q -p -m -b -o -h -V --slave --data --read-only --delay --drop --corrupt --exception --garbage --seed --quiet --vendor --product-code --identity --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2888,6 +3044,18 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
                 --output)
                     COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
                     return 0
@@ -2904,7 +3072,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__sniff)
-            opts="-p -m -b -o -h -V --input --interface --tcp-port --save --pcap --stats --slave --function --low-latency --port --mode --baud --parity --data-bits --stop-bits --output --json --help --version"
+            opts="-p -m -b -o -h -V --input --interface --tcp-port --save --pcap --stats --slave --function --low-latency --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2974,6 +3142,18 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
                 --output)
                     COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
                     return 0
@@ -2990,7 +3170,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__watch)
-            opts="-p -m -b -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --pdu-addresses --address-base --type --order --max-per-request --poll --help --version"
+            opts="-p -m -b -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --pdu-addresses --address-base --type --order --max-per-request --poll --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3048,6 +3228,18 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
                 --address-base)
                     COMPREPLY=($(compgen -W "0 1" -- "${cur}"))
                     return 0
@@ -3080,7 +3272,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__write)
-            opts="-p -m -b -o -v -t -h -V --map --function --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --help --version"
+            opts="-p -m -b -o -v -t -h -V --map --function --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3142,6 +3334,18 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
                 --output)
                     COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
                     return 0
@@ -3178,7 +3382,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__write__subcmd__coil)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --address-base --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3230,6 +3434,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -3252,7 +3468,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__write__subcmd__coils)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --address-base --max-per-request --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3304,6 +3520,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -3330,7 +3558,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__write__subcmd__register)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --address-base --type --order --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3382,6 +3610,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -3416,7 +3656,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__write__subcmd__registers)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3468,6 +3708,18 @@ _mbtool() {
                     ;;
                 --frame-gap)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
                     return 0
                     ;;
                 --output)

@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_mbtool_global_optspecs
-    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= timeout= retries= frame-gap= o/output= json v/verbose pdu-addresses address-base= t/type= order= max-per-request= poll= count= log= h/help V/version
+    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= timeout= retries= frame-gap= rs485 rs485-delay-before= rs485-delay-after= rts-level= rts-toggle o/output= json v/verbose pdu-addresses address-base= t/type= order= max-per-request= poll= count= log= h/help V/version
 end
 
 function __fish_mbtool_needs_command
@@ -37,6 +37,10 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -l stop-bits -d 'Serial stop
 complete -c mbtool -n "__fish_mbtool_needs_command" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_needs_command" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -62,6 +66,8 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -l max-per-request -d 'Split
 complete -c mbtool -n "__fish_mbtool_needs_command" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_needs_command" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_needs_command" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_needs_command" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -107,6 +113,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l stop-bits -
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -117,6 +127,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l max-per-req
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -135,6 +147,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l stop-bits 
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -145,6 +161,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l max-per-re
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -163,6 +181,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l s
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -173,6 +195,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l m
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -191,6 +215,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l stop-bits
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -216,6 +244,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l max-per-r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -234,6 +264,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -259,6 +293,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -277,6 +313,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l s
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -302,6 +342,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l m
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -320,6 +362,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l stop-b
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -345,6 +391,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l max-pe
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -364,6 +412,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l stop-bits -d 'Ser
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -389,6 +441,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l max-per-request -
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -407,12 +461,18 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l stop-bits -
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -431,6 +491,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l stop-bits 
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -438,6 +502,8 @@ csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -456,6 +522,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l stop-bi
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -477,6 +547,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l order -
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -495,6 +567,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l stop-b
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -517,6 +593,8 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -540,6 +618,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l stop-bits -d 'Se
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -562,6 +644,8 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -580,6 +664,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l stop-bits -d 'Seri
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -599,6 +687,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l order -d 'Byte ord
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -619,11 +709,17 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l data-bits -d 'Ser
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l all -d 'Try every setting of the sweep, not only up to the first where a slave answers'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -642,6 +738,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l stop-bits -d 'Se
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
@@ -661,6 +761,8 @@ BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l poll -d 'How often to read [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s V -l version -d 'Print version'
@@ -677,10 +779,16 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l stop-bits -d 'Ser
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -698,12 +806,18 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l stop-bits -d 'Ser
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l count -d 'How many round trips of return query data to time [default: 5]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l clear -d 'After reading them, clear the device\'s counters (08/0A)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s h -l help -d 'Print help (see more with \'--help\')'
@@ -721,11 +835,17 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l stop-bits -d 'Ser
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s o -l output -d 'The data file to write [default: standard output]' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s V -l version -d 'Print version'
@@ -742,8 +862,14 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l stop-bits -d '
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l dry-run -d 'Print the frames that would be sent, and send nothing'
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s V -l version -d 'Print version'
@@ -1193,12 +1319,18 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stats -d 'At the end, a table (or JSON lines of "type":"stats") per server and unit: requests, answers, exceptions by code, unanswered, and response time min, mean, p95 and max'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l low-latency -d 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s V -l version -d 'Print version'
@@ -1223,12 +1355,18 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l garbage -d 'Send a few noise bytes (00, FE) before each answer, as a bus being handed over does'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s q -l quiet -d 'No log line per request'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 'Print version'
@@ -1247,6 +1385,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l stop-bits -d '
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
@@ -1254,6 +1396,8 @@ csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l log -d 'Also append every transaction, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l broadcast-reply -d 'Answer a broadcast (unit 0) as a slave answers a write, for clients that wait for one'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s q -l quiet -d 'No row per transaction (stderr still tells the line and the clients)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s h -l help -d 'Print help (see more with \'--help\')'

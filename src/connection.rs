@@ -7,6 +7,7 @@ use crate::settings::Connection as Options;
 use mbtool_core::codec::Mode;
 use mbtool_core::master::{Master, MasterOptions};
 use mbtool_core::model::map::MapConnection;
+use mbtool_core::transport::rs485::DirectionControl;
 use mbtool_core::transport::serial::{LineSettings, Parity, Serial};
 use mbtool_core::transport::tcp::Tcp;
 use mbtool_core::transport::{Endpoint, Transport};
@@ -80,7 +81,35 @@ pub fn line_at(options: &Options, mode: Mode, baud: u32, parity: Parity) -> Line
         stop_bits: options
             .stop_bits
             .unwrap_or(if parity == Parity::None { 2 } else { 1 }),
+        direction: options.direction,
     }
+}
+
+/// `--rs485` or `--rts-toggle` typed for a port that has no RTS to drive. From the
+/// environment they are left to the serial commands of the same shell.
+pub fn direction_needs_serial(options: &Options, endpoint: &Endpoint) -> Result<()> {
+    match endpoint {
+        Endpoint::Serial(_) => Ok(()),
+        _ if !options.direction_typed => Ok(()),
+        _ => Err(Error::usage(format!(
+            "--rs485 and --rts-toggle drive the RTS line of a serial port: {endpoint} has none (a gateway switches its own transceiver)"
+        ))),
+    }
+}
+
+/// Opens the serial port at `path` with `line`; a port that cannot switch its RS-485
+/// transceiver as asked says what to try instead.
+pub fn open_serial(path: &str, line: &LineSettings) -> Result<Serial> {
+    Serial::open(path, line).map_err(|e| {
+        if e.kind() != io::ErrorKind::Unsupported {
+            return Error::Io(with_ports_here(path, e));
+        }
+        let hint = match line.direction {
+            DirectionControl::Kernel(_) => "try --rts-toggle",
+            _ => "try --rs485, or an adapter that switches its transceiver itself",
+        };
+        Error::Io(io::Error::new(e.kind(), format!("{e}: {hint}")))
+    })
 }
 
 /// Opens the transport of `endpoint`, a serial line with the options' settings.
@@ -95,11 +124,10 @@ pub fn open_at(
     mode: Mode,
     line: &LineSettings,
 ) -> Result<Box<dyn Transport>> {
+    direction_needs_serial(options, endpoint)?;
     let timeout = options.timeout;
     let opened: io::Result<Box<dyn Transport>> = match endpoint {
-        Endpoint::Serial(path) => {
-            Serial::open(path, line).map(|s| Box::new(s) as Box<dyn Transport>)
-        }
+        Endpoint::Serial(path) => return Ok(Box::new(open_serial(path, line)?)),
         Endpoint::Tcp { host, port } => {
             Tcp::connect(host, *port, timeout, false).map(|t| Box::new(t) as Box<dyn Transport>)
         }
@@ -110,12 +138,11 @@ pub fn open_at(
             mode,
         ))),
     };
-    opened.map_err(|e| match endpoint {
-        Endpoint::Serial(path) => Error::Io(with_ports_here(path, e)),
-        _ => Error::Io(io::Error::new(
+    opened.map_err(|e| {
+        Error::Io(io::Error::new(
             e.kind(),
             format!("cannot connect to {endpoint}: {e}"),
-        )),
+        ))
     })
 }
 

@@ -11,7 +11,8 @@ const OPTIONS: &[(&str, &str, &str)] = &[
     ("-l", "poll rate", "here it is --poll 1s"),
     ("-P", "parity", "here it is --parity even|odd|none"),
     ("-0", "0-based references", "here a bare number (not 5 or 6 digits) is a 0-based protocol address unless --address-base 1 is given, and --pdu-addresses takes every number so"),
-    ("-R", "RTS for RS-485", "here it is not supported yet: use an adapter that switches its driver itself"),
+    ("-R", "RS-485 mode", "here it is --rts-toggle (mbtool moves RTS) or --rs485 (the kernel's RS-485 mode), with --rts-level high or low"),
+    ("-F", "RS-485 mode", "here it is --rts-toggle (mbtool moves RTS) or --rs485 (the kernel's RS-485 mode), with --rts-level high or low"),
 ];
 
 /// The mbpoll habit behind an unknown option `typed`, as a one-line message; with the

@@ -14,6 +14,7 @@ use crate::output::{colour_wanted, Format, Style};
 use mbtool_core::codec::Mode;
 use mbtool_core::model::address::Numbering;
 use mbtool_core::model::values::{ByteOrder, ValueType};
+use mbtool_core::transport::rs485::{DirectionControl, RtsTiming};
 use mbtool_core::transport::serial::Parity;
 
 /// Everything the options say, resolved.
@@ -49,6 +50,11 @@ pub struct Connection {
     pub timeout_given: bool,
     pub retries: u32,
     pub frame_gap: Option<Duration>,
+    /// Who switches an RS-485 transceiver: `--rs485`, `--rts-toggle` and their timing.
+    pub direction: DirectionControl,
+    /// Whether `--rs485` or `--rts-toggle` was typed, not only set in the environment: a
+    /// port that is no serial line refuses it then, and ignores the variable.
+    pub direction_typed: bool,
 }
 
 impl Connection {
@@ -107,16 +113,14 @@ pub fn resolve(
         return Err(message);
     }
     let c = &cli.connection;
+    let leaf = leaf(matches);
     let given = |id: &str| {
-        let mut leaf = matches;
-        while let Some((_, sub)) = leaf.subcommand() {
-            leaf = sub;
-        }
         !matches!(
             leaf.value_source(id),
             None | Some(clap::parser::ValueSource::DefaultValue)
         )
     };
+    let (direction, direction_typed) = direction(cli, leaf)?;
     // scan asks many ids that are not there: its timeout is short.
     let default_timeout = match cli.command {
         Command::Scan(_) => Duration::from_millis(100),
@@ -141,6 +145,8 @@ pub fn resolve(
             timeout_given: c.timeout.is_some(),
             retries: c.retries,
             frame_gap: c.frame_gap,
+            direction,
+            direction_typed,
         },
         output: Output {
             style: Style {
@@ -174,6 +180,56 @@ pub fn resolve(
     })
 }
 
+/// The matches of the command itself, where its global options are found.
+fn leaf(matches: &clap::ArgMatches) -> &clap::ArgMatches {
+    let mut leaf = matches;
+    while let Some((_, sub)) = leaf.subcommand() {
+        leaf = sub;
+    }
+    leaf
+}
+
+/// `--rs485` or `--rts-toggle` with their timing, and whether one of them was typed. What
+/// is typed wins over the environment; the timing options typed alone are refused, as
+/// they would do nothing.
+fn direction(cli: &Cli, leaf: &clap::ArgMatches) -> Result<(DirectionControl, bool), String> {
+    let c = &cli.connection;
+    let typed = |id: &str| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine);
+    let (kernel, toggle) = match (c.rs485 && c.rts_toggle, typed("rs485"), typed("rts_toggle")) {
+        (false, ..) => (c.rs485, c.rts_toggle),
+        (true, true, true) => {
+            return Err("--rs485 and --rts-toggle: give one (--rs485 for the kernel's RS-485 mode, --rts-toggle where the driver has none)".into())
+        }
+        (true, true, false) => (true, false),
+        (true, false, true) => (false, true),
+        (true, false, false) => {
+            return Err("MBTOOL_RS485 and MBTOOL_RTS_TOGGLE are both set: unset one".into())
+        }
+    };
+    let timing = RtsTiming {
+        before: Duration::from_millis(c.rs485_delay_before.unwrap_or(0)),
+        after: Duration::from_millis(c.rs485_delay_after.unwrap_or(0)),
+        sending: c.rts_level.unwrap_or_default(),
+    };
+    let direction = match (kernel, toggle) {
+        (true, _) => DirectionControl::Kernel(timing),
+        (false, true) => DirectionControl::Toggle(timing),
+        (false, false) => {
+            let option = ["rs485_delay_before", "rs485_delay_after", "rts_level"]
+                .into_iter()
+                .find(|id| typed(id));
+            if let Some(id) = option {
+                let name = id.replace('_', "-");
+                return Err(format!(
+                    "--{name} times the RS-485 direction: give --rs485 or --rts-toggle with it"
+                ));
+            }
+            DirectionControl::Automatic
+        }
+    };
+    Ok((direction, typed("rs485") || typed("rts_toggle")))
+}
+
 fn format_of(format: OutputFormat) -> Format {
     match format {
         OutputFormat::Table => Format::Table,
@@ -203,10 +259,7 @@ fn output_problem(cli: &Cli) -> Option<String> {
 /// message. A list from the environment (MBTOOL_BAUD=9600,19200, set for scans) gives
 /// the other commands its first value.
 fn sweep_outside_scan(cli: &Cli, matches: &clap::ArgMatches) -> Option<String> {
-    let mut leaf = matches;
-    while let Some((_, sub)) = leaf.subcommand() {
-        leaf = sub;
-    }
+    let leaf = leaf(matches);
     let typed = |id: &str| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine);
     let several = match (cli.connection.baud.len(), cli.connection.parity.len()) {
         _ if matches!(cli.command, Command::Scan(_)) => return None,

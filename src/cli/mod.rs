@@ -178,7 +178,21 @@ fn describe(sub: clap::Command) -> clap::Command {
 /// global option `id`. The options a command does not take are hidden from its help and
 /// refused when typed on its command line; a value from the environment is never refused.
 pub fn takes_option(path: &[&str], id: &str) -> bool {
-    const LINE: &[&str] = &["port", "mode", "baud", "parity", "data_bits", "stop_bits"];
+    const LINE: &[&str] = &[
+        "port",
+        "mode",
+        "baud",
+        "parity",
+        "data_bits",
+        "stop_bits",
+        // sniff never sends: it takes them, so that one line's options serve every
+        // command, and leaves RTS alone.
+        "rs485",
+        "rs485_delay_before",
+        "rs485_delay_after",
+        "rts_level",
+        "rts_toggle",
+    ];
     const MASTER: &[&str] = &["timeout", "retries", "frame_gap", "verbose"];
     const FORMAT: &[&str] = &["output", "json"];
     const ADDRESSES: &[&str] = &["pdu_addresses", "address_base"];

@@ -7,6 +7,7 @@ use mbtool_core::codec::Mode;
 use mbtool_core::model::address::AddressBase;
 use mbtool_core::model::choice::Choice;
 use mbtool_core::model::values::{ByteOrder, ValueType};
+use mbtool_core::transport::rs485::RtsLevel;
 use mbtool_core::transport::serial::Parity;
 
 use super::values::{choice, positive_duration, whole};
@@ -75,6 +76,29 @@ pub struct ConnectionArgs {
     /// baud]; 0 for gateways and devices that need none
     #[arg(long, global = true, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]
     pub frame_gap: Option<std::time::Duration>,
+
+    /// RS-485 direction by the kernel's RS-485 mode (Linux): the UART driver raises RTS
+    /// while sending, for transceivers that need the host to switch them
+    #[arg(long, global = true, env = "MBTOOL_RS485", hide_env_values = true, value_parser = clap::builder::BoolishValueParser::new())]
+    pub rs485: bool,
+
+    /// Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle
+    #[arg(long, global = true, env = "MBTOOL_RS485_DELAY_BEFORE", hide_env_values = true, value_name = "MS", value_parser = whole::<u64>(0, 100))]
+    pub rs485_delay_before: Option<u64>,
+
+    /// Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle
+    #[arg(long, global = true, env = "MBTOOL_RS485_DELAY_AFTER", hide_env_values = true, value_name = "MS", value_parser = whole::<u64>(0, 100))]
+    pub rs485_delay_after: Option<u64>,
+
+    /// The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted)
+    /// [default: high]
+    #[arg(long, global = true, env = "MBTOOL_RTS_LEVEL", hide_env_values = true, value_name = "LEVEL", value_parser = choice::<RtsLevel>())]
+    pub rts_level: Option<RtsLevel>,
+
+    /// RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped
+    /// once its last byte has left (tcdrain), for drivers without RS-485 mode
+    #[arg(long, global = true, env = "MBTOOL_RTS_TOGGLE", hide_env_values = true, value_parser = clap::builder::BoolishValueParser::new())]
+    pub rts_toggle: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

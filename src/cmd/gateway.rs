@@ -86,6 +86,14 @@ impl Monitor {
 pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
     let endpoint = upstream(settings)?;
     let mode = connection::mode(&settings.connection, Some(&endpoint), Role::Master)?;
+    connection::direction_needs_serial(&settings.connection, &endpoint)?;
+    // A port that cannot switch its RS-485 transceiver would be told as a line down
+    // for ever: it is refused before clients are let in.
+    if let (Endpoint::Serial(path), false) =
+        (&endpoint, settings.connection.direction.is_automatic())
+    {
+        connection::open_serial(path, &connection::line_settings(&settings.connection, mode))?;
+    }
     let format = settings.output.format;
     let log = settings
         .poll

@@ -7,7 +7,7 @@ use std::sync::Arc;
 use anyhow::{Context, Result};
 
 use mbtool::cli::ServeArgs;
-use mbtool::connection::{line_settings, mode, Role};
+use mbtool::connection::{self, direction_needs_serial, line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::output::serve::write_entry;
 use mbtool::output::Format;
@@ -17,7 +17,6 @@ use mbtool_core::model::address::parse_reference_span;
 use mbtool_core::slave::faults::Faults;
 use mbtool_core::slave::server::{Logger, Server};
 use mbtool_core::slave::{datafile, DataModel, Slave};
-use mbtool_core::transport::serial::Serial;
 use mbtool_core::transport::Endpoint;
 
 /// The port to serve on; `tcp://:PORT` listens on 127.0.0.1.
@@ -66,6 +65,7 @@ fn data_model(args: &ServeArgs) -> Result<DataModel> {
 pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
     let endpoint = endpoint(settings)?;
     let mode = mode(&settings.connection, Some(&endpoint), Role::Serve)?;
+    direction_needs_serial(&settings.connection, &endpoint)?;
     let ids = if args.slaves.is_empty() {
         vec![mbtool_core::slave::EXAMPLE_SLAVE]
     } else {
@@ -104,7 +104,7 @@ pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
     match &endpoint {
         Endpoint::Serial(path) => {
             let line = line_settings(&settings.connection, mode);
-            let mut transport = Serial::open(path, &line).map_err(Error::Io)?;
+            let mut transport = connection::open_serial(path, &line)?;
             mbtool::note!(
                 "mbtool: serving slave {ids_text} on {path} ({mode}, {} baud); Ctrl-C ends",
                 line.baud

@@ -10,7 +10,7 @@ use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 use anyhow::{Context, Result};
 
 use mbtool::cli::SniffArgs;
-use mbtool::connection::{line_settings, mode, Role};
+use mbtool::connection::{self, line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::output::{self, sniff::SniffWriter, Named};
 use mbtool::settings::Settings;
@@ -21,7 +21,8 @@ use mbtool_core::sniff::session::{Filter, Record, Session};
 use mbtool_core::sniff::stats::Stats;
 use mbtool_core::sniff::tcp::{TcpSession, MODBUS_PORT};
 use mbtool_core::sniff::timing;
-use mbtool_core::transport::serial::{self, LineSettings, Serial};
+use mbtool_core::transport::rs485::DirectionControl;
+use mbtool_core::transport::serial::{self, LineSettings};
 use mbtool_core::transport::{Endpoint, Transport};
 
 /// Where the records go: the screen (or a pipe), and the pcap file.
@@ -541,8 +542,13 @@ fn live(
             mbtool::note!("mbtool: {message}");
         }
     }
-    // Opened like any serial port, but nothing is ever written to it.
-    let mut port = Serial::open(&path, &line).map_err(Error::Io)?;
+    // Opened like any serial port, but nothing is ever written to it, and RTS is left
+    // as it is: --rs485 and --rts-toggle are for the commands that send.
+    let line = LineSettings {
+        direction: DirectionControl::Automatic,
+        ..line
+    };
+    let mut port = connection::open_serial(&path, &line)?;
     let stop = Arc::new(AtomicBool::new(false));
     let stopper = Arc::clone(&stop);
     ctrlc::set_handler(move || stopper.store(true, Ordering::SeqCst))

@@ -466,6 +466,7 @@ fn mbpoll_habits_get_mbtools_spelling() {
         ),
         ("--port sim read-holding 17 1 -l 1000", "-l is mbpoll's poll rate: here it is --poll 1s"),
         ("--port sim read-holding 17 1 -P none", "-P is mbpoll's parity: here it is --parity"),
+        ("--port /dev/ttyS0 read-holding 17 1 -R", "-R is mbpoll's RS-485 mode: here it is --rts-toggle"),
     ] {
         let output = crate::support::mbtool()
             .args(line.split(' '))

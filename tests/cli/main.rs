@@ -25,6 +25,7 @@ mod master_tcp;
 mod master_tokio;
 mod poll;
 mod readme;
+mod rs485;
 mod scan;
 mod serve;
 mod serve_framing;

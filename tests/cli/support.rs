@@ -60,7 +60,7 @@ pub static WORKED_FRAMES: std::sync::LazyLock<Vec<Vec<u8>>> = std::sync::LazyLoc
 });
 
 /// The environment variables that would give mbtool connection settings.
-const SETTINGS_FROM_ENVIRONMENT: [&str; 8] = [
+const SETTINGS_FROM_ENVIRONMENT: [&str; 13] = [
     "MBTOOL_PORT",
     "MBTOOL_MODE",
     "MBTOOL_BAUD",
@@ -69,6 +69,11 @@ const SETTINGS_FROM_ENVIRONMENT: [&str; 8] = [
     "MBTOOL_STOP_BITS",
     "MBTOOL_TIMEOUT",
     "MBTOOL_RETRIES",
+    "MBTOOL_RS485",
+    "MBTOOL_RS485_DELAY_BEFORE",
+    "MBTOOL_RS485_DELAY_AFTER",
+    "MBTOOL_RTS_LEVEL",
+    "MBTOOL_RTS_TOGGLE",
 ];
 
 /// mbtool with no connection settings from the environment.

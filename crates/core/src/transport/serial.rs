@@ -6,6 +6,7 @@ use std::time::{Duration, Instant};
 
 use serialport::{ClearBuffer, SerialPort};
 
+use super::rs485::{DirectionControl, KernelMode, RtsTiming};
 use super::{time_left, Transport};
 
 /// Line settings, as the connection options give them.
@@ -19,6 +20,8 @@ pub struct LineSettings {
     pub data_bits: u8,
     /// 1 or 2.
     pub stop_bits: u8,
+    /// Who switches an RS-485 transceiver between sending and listening.
+    pub direction: DirectionControl,
 }
 
 /// The parity bit of each character.
@@ -74,13 +77,20 @@ impl LineSettings {
 
 /// A serial port as a transport.
 pub struct Serial {
+    /// Declared first, so that the kernel's RS-485 settings are put back while the port is
+    /// still open.
+    _kernel_mode: Option<KernelMode>,
     port: Box<dyn SerialPort>,
+    /// RTS moved around each frame sent, when the transport toggles it itself.
+    toggle: Option<RtsTiming>,
 }
 
 impl Serial {
-    /// Opens the device at `path` with `settings`.
+    /// Opens the device at `path` with `settings`. A port that cannot switch its
+    /// transceiver the way `settings.direction` asks is `Unsupported`, and nothing has
+    /// been sent.
     pub fn open(path: &str, settings: &LineSettings) -> io::Result<Serial> {
-        let port = serialport::new(path, settings.baud)
+        let builder = serialport::new(path, settings.baud)
             .data_bits(match settings.data_bits {
                 7 => serialport::DataBits::Seven,
                 _ => serialport::DataBits::Eight,
@@ -95,10 +105,42 @@ impl Serial {
                 _ => serialport::StopBits::One,
             })
             .flow_control(serialport::FlowControl::None)
-            .timeout(Duration::from_millis(100))
-            .open()
-            .map_err(|e| io::Error::other(format!("cannot open {path}: {e}")))?;
-        Ok(Serial { port })
+            .timeout(Duration::from_millis(100));
+        let cannot_open =
+            |e: serialport::Error| io::Error::other(format!("cannot open {path}: {e}"));
+        #[cfg(unix)]
+        let (mut port, fd): (Box<dyn SerialPort>, Option<i32>) = {
+            use std::os::fd::AsRawFd;
+            let native = builder.open_native().map_err(cannot_open)?;
+            let fd = native.as_raw_fd();
+            (Box::new(native), Some(fd))
+        };
+        #[cfg(not(unix))]
+        let (mut port, fd) = (builder.open().map_err(cannot_open)?, None);
+        let (mut kernel_mode, mut toggle) = (None, None);
+        match settings.direction {
+            DirectionControl::Automatic => {}
+            DirectionControl::Kernel(timing) => {
+                kernel_mode = Some(KernelMode::set(fd, path, &timing)?);
+            }
+            DirectionControl::Toggle(timing) => {
+                // Listening from the start, which also shows that the driver moves RTS.
+                // The refusal of a driver without modem lines (ENOTTY) says nothing more.
+                port.write_request_to_send(!timing.sending.asserted())
+                    .map_err(|_| {
+                        io::Error::new(
+                            io::ErrorKind::Unsupported,
+                            format!("{path} cannot drive RTS"),
+                        )
+                    })?;
+                toggle = Some(timing);
+            }
+        }
+        Ok(Serial {
+            _kernel_mode: kernel_mode,
+            port,
+            toggle,
+        })
     }
 }
 
@@ -108,8 +150,23 @@ impl Transport for Serial {
     }
 
     fn send(&mut self, frame: &[u8]) -> io::Result<()> {
-        self.port.write_all(frame)?;
-        self.port.flush()
+        let Some(timing) = self.toggle else {
+            self.port.write_all(frame)?;
+            return self.port.flush();
+        };
+        self.port
+            .write_request_to_send(timing.sending.asserted())
+            .map_err(io::Error::from)?;
+        std::thread::sleep(timing.before);
+        // flush() waits until the last byte has left the UART (tcdrain); RTS goes back to
+        // listening whatever became of the write, so the answer is heard.
+        let sent = self.port.write_all(frame).and_then(|()| self.port.flush());
+        std::thread::sleep(timing.after);
+        let listening = self
+            .port
+            .write_request_to_send(!timing.sending.asserted())
+            .map_err(io::Error::from);
+        sent.and(listening)
     }
 
     fn receive(&mut self, buf: &mut Vec<u8>, deadline: Instant) -> io::Result<usize> {
@@ -183,6 +240,7 @@ mod tests {
             parity: Parity::Even,
             data_bits: 8,
             stop_bits: 1,
+            direction: DirectionControl::Automatic,
         };
         // 11 bits at 9600 baud: 1.1458 ms a character, 4.010 ms for 3.5.
         assert_eq!(line.frame_gap().as_micros(), 4010);
