@@ -81,6 +81,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('sniff', 'sniff', [CompletionResultType]::ParameterValue, 'Watch a bus without transmitting; frames decoded, paired')
             [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Stand in for a slave on a serial line or TCP')
             [CompletionResult]::new('gateway', 'gateway', [CompletionResultType]::ParameterValue, 'Bridge Modbus TCP clients to a serial line, shown live')
+            [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'The serial ports here, and which adapter each one is')
             [CompletionResult]::new('generate', 'generate', [CompletionResultType]::ParameterValue, 'Write the shell completions and man pages (for packagers and the project''s own tree)')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
@@ -1234,6 +1235,17 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
+        'mbtool;ports' {
+            [CompletionResult]::new('--root', '--root', [CompletionResultType]::ParameterName, 'Read sys, dev and proc under DIR instead of / (a copy taken from another machine)')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
         'mbtool;generate' {
             [CompletionResult]::new('--dir', '--dir', [CompletionResultType]::ParameterName, 'The folder that receives completions/ and man/')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
@@ -1265,6 +1277,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('sniff', 'sniff', [CompletionResultType]::ParameterValue, 'Watch a bus without transmitting; frames decoded, paired')
             [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Stand in for a slave on a serial line or TCP')
             [CompletionResult]::new('gateway', 'gateway', [CompletionResultType]::ParameterValue, 'Bridge Modbus TCP clients to a serial line, shown live')
+            [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'The serial ports here, and which adapter each one is')
             [CompletionResult]::new('generate', 'generate', [CompletionResultType]::ParameterValue, 'Write the shell completions and man pages (for packagers and the project''s own tree)')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
@@ -1377,6 +1390,9 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;help;gateway' {
+            break
+        }
+        'mbtool;help;ports' {
             break
         }
         'mbtool;help;generate' {

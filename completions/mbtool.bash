@@ -40,6 +40,9 @@ _mbtool() {
             mbtool,info)
                 cmd="mbtool__subcmd__info"
                 ;;
+            mbtool,ports)
+                cmd="mbtool__subcmd__ports"
+                ;;
             mbtool,raw)
                 cmd="mbtool__subcmd__raw"
                 ;;
@@ -202,6 +205,9 @@ _mbtool() {
             mbtool__subcmd__help,info)
                 cmd="mbtool__subcmd__help__subcmd__info"
                 ;;
+            mbtool__subcmd__help,ports)
+                cmd="mbtool__subcmd__help__subcmd__ports"
+                ;;
             mbtool__subcmd__help,raw)
                 cmd="mbtool__subcmd__help__subcmd__raw"
                 ;;
@@ -290,7 +296,7 @@ _mbtool() {
 
     case "${cmd}" in
         mbtool)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway generate help"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway ports generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1560,7 +1566,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__help)
-            opts="read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway generate help"
+            opts="read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway ports generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1826,6 +1832,20 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__help__subcmd__info)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__help__subcmd__ports)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -2128,6 +2148,32 @@ _mbtool() {
                     ;;
                 --rts-level)
                     COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__ports)
+            opts="-o -h -V --root --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --root)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --output)

@@ -78,6 +78,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand sniff 'Watch a bus without transmitting; frames decoded, paired'
             cand serve 'Stand in for a slave on a serial line or TCP'
             cand gateway 'Bridge Modbus TCP clients to a serial line, shown live'
+            cand ports 'The serial ports here, and which adapter each one is'
             cand generate 'Write the shell completions and man pages (for packagers and the project''s own tree)'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
@@ -1178,6 +1179,16 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
         }
+        &'mbtool;ports'= {
+            cand --root 'Read sys, dev and proc under DIR instead of / (a copy taken from another machine)'
+            cand -o 'Output format [default: table]; for dump, the file to write'
+            cand --output 'Output format [default: table]; for dump, the file to write'
+            cand --json 'The same as --output json'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
         &'mbtool;generate'= {
             cand --dir 'The folder that receives completions/ and man/'
             cand -h 'Print help'
@@ -1208,6 +1219,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand sniff 'Watch a bus without transmitting; frames decoded, paired'
             cand serve 'Stand in for a slave on a serial line or TCP'
             cand gateway 'Bridge Modbus TCP clients to a serial line, shown live'
+            cand ports 'The serial ports here, and which adapter each one is'
             cand generate 'Write the shell completions and man pages (for packagers and the project''s own tree)'
             cand help 'Print this message or the help of the given subcommand(s)'
         }
@@ -1287,6 +1299,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         &'mbtool;help;serve'= {
         }
         &'mbtool;help;gateway'= {
+        }
+        &'mbtool;help;ports'= {
         }
         &'mbtool;help;generate'= {
         }

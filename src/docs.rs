@@ -260,6 +260,20 @@ const EXAMPLES: &[(&str, &[Example])] = &[
                 "Watch what a SCADA asks of a Modbus TCP device: point the SCADA at port 1502",
                 "mbtool gateway --listen tcp://0.0.0.0:1502 --port tcp://192.168.1.10 -o json",
             ),
+            ex(
+                "On an industrial PC whose RS-485 transceiver the host switches: the kernel's RS-485 mode",
+                "mbtool gateway --listen tcp://0.0.0.0:502 --port /dev/ttyS1 --rs485 --rs485-delay-after 1",
+            ),
+        ],
+    ),
+    (
+        "ports",
+        &[
+            ex("Which port is which adapter", "mbtool ports"),
+            ex(
+                "Each port as a JSON line, for a script to pick an adapter by serial number",
+                "mbtool ports --json",
+            ),
         ],
     ),
     (

@@ -113,9 +113,33 @@ pub enum Command {
     #[command(long_about = GATEWAY_ABOUT)]
     Gateway(GatewayArgs),
 
+    /// The serial ports here, and which adapter each one is
+    #[command(long_about = PORTS_ABOUT)]
+    Ports(PortsArgs),
+
     /// Write the shell completions and man pages (for packagers and the project's own tree)
     #[command(hide = true)]
     Generate(GenerateArgs),
+}
+
+const PORTS_ABOUT: &str = "\
+The serial ports on this machine, one row each: the device to give to --port, its stable \
+name under /dev/serial/by-id (the same after replugging, or in another USB socket), the USB \
+vendor and product ids, manufacturer, product and serial number of the adapter, the kernel \
+driver, and the processes that have it open. On Linux this is read from /sys, /dev and \
+/proc; another user's process is seen only by root, or by the lock file it left \
+(/var/lock/LCK..ttyUSB0). On Windows and macOS the columns are what the system's port list \
+tells.
+
+No port is not an error: an empty table, exit status 0. -o values lists the devices alone, \
+for a script's loop; --json gives one object per port with the keys device, by_id, vid, \
+pid, manufacturer, product, serial, driver and busy.";
+
+#[derive(Clone, Debug, Args)]
+pub struct PortsArgs {
+    /// Read sys, dev and proc under DIR instead of / (a copy taken from another machine)
+    #[arg(long, value_name = "DIR", default_value = "/")]
+    pub root: std::path::PathBuf,
 }
 
 #[derive(Clone, Debug, Args)]
@@ -195,12 +219,14 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
     ];
     const MASTER: &[&str] = &["timeout", "retries", "frame_gap", "verbose"];
     const FORMAT: &[&str] = &["output", "json"];
+    const FORMAT_ONLY: &[&[&str]] = &[FORMAT];
     const ADDRESSES: &[&str] = &["pdu_addresses", "address_base"];
     const SPLIT: &[&str] = &["max_per_request"];
     const REGISTERS: &[&str] = &["value_type", "order"];
     const POLL: &[&str] = &["poll", "poll_count", "log"];
     let groups: &[&[&str]] = match path {
         ["decode"] => &[&["mode"], FORMAT, REGISTERS],
+        ["ports"] => FORMAT_ONLY,
         ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
         ["sniff" | "serve"] => &[LINE, FORMAT],
         ["gateway"] => &[LINE, MASTER, FORMAT, &["log"]],

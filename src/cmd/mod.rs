@@ -8,6 +8,7 @@ mod gateway;
 mod info;
 mod map;
 mod poll;
+mod ports;
 mod request;
 mod restore;
 mod scan;
@@ -36,6 +37,7 @@ pub fn run(settings: &Settings, command: Command) -> Result<u8> {
         Command::Serve(args) => serve::run(settings, args),
         Command::Gateway(args) => gateway::run(settings, args),
         Command::Sniff(args) => sniff::run(settings, args),
+        Command::Ports(args) => ports::run(settings, args),
         Command::Generate(args) => {
             mbtool::docs::generate(&args.dir)?;
             Ok(0)

@@ -7,6 +7,7 @@ pub mod device;
 pub mod encode;
 pub mod gateway;
 pub mod map;
+pub mod ports;
 pub mod read;
 pub mod scan;
 pub mod serve;

@@ -24,6 +24,7 @@ mod master_sim;
 mod master_tcp;
 mod master_tokio;
 mod poll;
+mod ports;
 mod readme;
 mod rs485;
 mod scan;

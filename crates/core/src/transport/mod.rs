@@ -2,6 +2,7 @@
 //! line, a TCP socket, a pseudo-terminal in a test, or the built-in simulated slave.
 
 pub mod endpoint;
+pub mod ports;
 pub mod rs485;
 pub mod serial;
 pub mod sim;

@@ -207,13 +207,10 @@ pub fn is_pseudo_terminal(path: &str) -> bool {
 
 /// The serial ports of this machine, by their device names, as the system lists them.
 pub fn ports_here() -> Vec<String> {
-    let mut ports: Vec<String> = serialport::available_ports()
-        .unwrap_or_default()
+    super::ports::list(std::path::Path::new("/"))
         .into_iter()
-        .map(|port| port.port_name)
-        .collect();
-    ports.sort();
-    ports
+        .map(|port| port.device)
+        .collect()
 }
 
 /// `--low-latency`: the FTDI latency timer of the USB serial adapter behind `path` to 1 ms,
