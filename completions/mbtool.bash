@@ -296,7 +296,7 @@ _mbtool() {
 
     case "${cmd}" in
         mbtool)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway ports generate help"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway ports generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -400,6 +400,38 @@ _mbtool() {
                     ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --secondary-data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --switch-on)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --switch-when)
+                    COMPREPLY=($(compgen -W "any all" -- "${cur}"))
                     return 0
                     ;;
                 *)
@@ -542,7 +574,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__dump)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --verbose --max-per-request --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --verbose --max-per-request --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -618,6 +650,38 @@ _mbtool() {
                     ;;
                 --max-per-request)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --secondary-data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --switch-on)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --switch-when)
+                    COMPREPLY=($(compgen -W "any all" -- "${cur}"))
                     return 0
                     ;;
                 *)
@@ -2286,7 +2350,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read)
-            opts="-p -m -b -o -v -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version"
+            opts="-p -m -b -o -v -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2396,6 +2460,38 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --secondary-port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --secondary-data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --switch-on)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --switch-when)
+                    COMPREPLY=($(compgen -W "any all" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -2404,7 +2500,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__coils)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2496,6 +2592,38 @@ _mbtool() {
                     ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --secondary-data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --switch-on)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --switch-when)
+                    COMPREPLY=($(compgen -W "any all" -- "${cur}"))
                     return 0
                     ;;
                 *)
@@ -2506,7 +2634,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__holding)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2610,6 +2738,38 @@ _mbtool() {
                     ;;
                 --log)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --secondary-data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --switch-on)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --switch-when)
+                    COMPREPLY=($(compgen -W "any all" -- "${cur}"))
                     return 0
                     ;;
                 *)
@@ -2620,7 +2780,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__input__subcmd__registers)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2726,6 +2886,38 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --secondary-port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --secondary-data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --switch-on)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --switch-when)
+                    COMPREPLY=($(compgen -W "any all" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -2734,7 +2926,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__inputs)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2828,6 +3020,38 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --secondary-port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --secondary-data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --switch-on)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --switch-when)
+                    COMPREPLY=($(compgen -W "any all" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -2836,7 +3060,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__restore)
-            opts="-p -m -b -v -h -V --dry-run --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --verbose --max-per-request --help --version"
+            opts="-p -m -b -v -h -V --dry-run --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --verbose --max-per-request --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2904,6 +3128,38 @@ _mbtool() {
                     ;;
                 --max-per-request)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --secondary-data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --switch-on)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --switch-when)
+                    COMPREPLY=($(compgen -W "any all" -- "${cur}"))
                     return 0
                     ;;
                 *)
@@ -3216,7 +3472,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__watch)
-            opts="-p -m -b -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --pdu-addresses --address-base --type --order --max-per-request --poll --help --version"
+            opts="-p -m -b -t -h -V --map --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --pdu-addresses --address-base --type --order --max-per-request --poll --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3308,6 +3564,38 @@ _mbtool() {
                     ;;
                 --poll)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --secondary-data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --secondary-mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --switch-on)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --switch-when)
+                    COMPREPLY=($(compgen -W "any all" -- "${cur}"))
                     return 0
                     ;;
                 *)

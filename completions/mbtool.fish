@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_mbtool_global_optspecs
-    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= timeout= retries= frame-gap= rs485 rs485-delay-before= rs485-delay-after= rts-level= rts-toggle o/output= json v/verbose pdu-addresses address-base= t/type= order= max-per-request= poll= count= log= h/help V/version
+    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= timeout= retries= frame-gap= rs485 rs485-delay-before= rs485-delay-after= rts-level= rts-toggle o/output= json v/verbose pdu-addresses address-base= t/type= order= max-per-request= poll= count= log= secondary-port= secondary-baud= secondary-parity= secondary-data-bits= secondary-stop-bits= secondary-mode= switch-on= switch-when= h/help V/version
 end
 
 function __fish_mbtool_needs_command
@@ -66,6 +66,19 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -l max-per-request -d 'Split
 complete -c mbtool -n "__fish_mbtool_needs_command" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_needs_command" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l json -d 'The same as --output json'
@@ -128,6 +141,19 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l max-per-req
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l json -d 'The same as --output json'
@@ -162,6 +188,19 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l max-per-re
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l json -d 'The same as --output json'
@@ -196,6 +235,19 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l m
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l json -d 'The same as --output json'
@@ -245,6 +297,19 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l max-per-r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l json -d 'The same as --output json'
@@ -294,6 +359,19 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l json -d 'The same as --output json'
@@ -343,6 +421,19 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l m
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l json -d 'The same as --output json'
@@ -392,6 +483,19 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l max-pe
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l json -d 'The same as --output json'
@@ -442,6 +546,19 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l max-per-request -
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l count -d 'With --poll: stop after N reads' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l json -d 'The same as --output json'
@@ -762,6 +879,19 @@ BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l poll -d 'How often to read [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -845,6 +975,19 @@ json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
@@ -868,6 +1011,19 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rs485-delay-af
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l secondary-data-bits -d 'Serial data bits of the secondary path [default: --data-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l secondary-stop-bits -d 'Serial stop bits of the secondary path [default: --stop-bits]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l secondary-mode -d 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
+all\t'switch when every condition has held since the last good answer'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l dry-run -d 'Print the frames that would be sent, and send nothing'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'

@@ -5,6 +5,7 @@ use std::io;
 use crate::error::{Error, Result};
 use crate::settings::Connection as Options;
 use mbtool_core::codec::Mode;
+use mbtool_core::master::failover::{Failover, PathName, Switch, SwitchRule};
 use mbtool_core::master::{Master, MasterOptions};
 use mbtool_core::model::map::MapConnection;
 use mbtool_core::transport::rs485::DirectionControl;
@@ -184,8 +185,23 @@ pub fn tried(options: &Options, endpoint: &Endpoint, mode: Mode) -> (String, &'s
     }
 }
 
-/// A master on `endpoint`, framing in `mode`, as the options resolved them.
+/// A master on `endpoint`, framing in `mode`, as the options resolved them; with a
+/// `--secondary-port`, one that changes paths as `--switch-on` says.
 pub fn master(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
+    match secondary_target(options)? {
+        None => single_master(options, endpoint, mode),
+        Some((secondary, target)) => {
+            let paths = [
+                (options.clone(), endpoint.clone(), mode),
+                (secondary.clone(), target.endpoint, target.mode),
+            ];
+            redundant_master(paths, options.switch.clone())
+        }
+    }
+}
+
+/// A master on one path.
+fn single_master(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
     let answer = Answer {
         timeout: options.timeout,
         retries: options.retries,
@@ -197,6 +213,51 @@ pub fn master(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<Mast
         &line_settings(options, mode),
         answer,
     )
+}
+
+/// The secondary path's settings and where they point, checked as `--port` is.
+fn secondary_target(options: &Options) -> Result<Option<(&Options, Target)>> {
+    let Some(secondary) = options.secondary.as_deref() else {
+        return Ok(None);
+    };
+    let port = secondary.port.as_deref().unwrap_or_default();
+    let endpoint =
+        Endpoint::parse(port).map_err(|e| Error::usage(format!("--secondary-port {port}: {e}")))?;
+    let mode = mode(secondary, Some(&endpoint), Role::Master)
+        .map_err(|e| Error::usage(format!("--secondary-port {port}: {e}")))?;
+    direction_needs_serial(secondary, &endpoint)?;
+    Ok(Some((secondary, Target { endpoint, mode })))
+}
+
+/// A master on the first of the two `paths` that opens (the primary unless it cannot be
+/// opened), changing to the other as `rule` says.
+fn redundant_master(paths: [(Options, Endpoint, Mode); 2], rule: SwitchRule) -> Result<Master> {
+    let open = move |path: PathName| {
+        let (options, endpoint, mode) = match path {
+            PathName::Primary => &paths[0],
+            PathName::Secondary => &paths[1],
+        };
+        single_master(options, endpoint, *mode).map_err(|e| e.to_string())
+    };
+    let (master, on, switches) = match open(PathName::Primary) {
+        Ok(master) => (master, PathName::Primary, Vec::new()),
+        Err(primary) => match open(PathName::Secondary) {
+            Ok(master) => {
+                let why = format!("the primary cannot be opened ({primary})");
+                let switch = Switch {
+                    to: PathName::Secondary,
+                    why,
+                };
+                (master, PathName::Secondary, vec![switch])
+            }
+            Err(secondary) => {
+                return Err(Error::Io(io::Error::other(format!(
+                    "neither path opens: {primary}; {secondary}"
+                ))))
+            }
+        },
+    };
+    Ok(master.with_failover(Failover::new(rule, on, Box::new(open), switches)))
 }
 
 /// How long a master waits for an answer, and how often it asks again.
@@ -254,10 +315,11 @@ pub struct Target {
     pub mode: Mode,
 }
 
-/// The target of the options.
+/// The target of the options; a secondary path is checked too, before anything is sent.
 pub fn target(options: &Options) -> Result<Target> {
     let endpoint = endpoint(options)?;
     let mode = mode(options, Some(&endpoint), Role::Master)?;
+    secondary_target(options)?;
     Ok(Target { endpoint, mode })
 }
 

@@ -186,6 +186,10 @@ const EXAMPLES: &[(&str, &[Example])] = &[
                 "Watch two floats stored low word first",
                 "mbtool --port tcp://10.0.0.5 watch 1 400001 2 --type f32 --order CDAB",
             ),
+            ex(
+                "Through a gateway, the device's own serial line standing by for when the gateway fails",
+                "mbtool --port tcp://10.0.0.5 watch 17 400108 3 --secondary-port /dev/ttyUSB0 --switch-on timeout:3,exception:0B,disconnect",
+            ),
         ],
     ),
     (

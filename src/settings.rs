@@ -12,10 +12,12 @@ use clap::ValueEnum;
 use crate::cli::{takes_option, Cli, Command, OutputFormat};
 use crate::output::{colour_wanted, Format, Style};
 use mbtool_core::codec::Mode;
+use mbtool_core::master::failover::SwitchRule;
 use mbtool_core::model::address::Numbering;
 use mbtool_core::model::values::{ByteOrder, ValueType};
 use mbtool_core::transport::rs485::{DirectionControl, RtsTiming};
 use mbtool_core::transport::serial::Parity;
+use mbtool_core::transport::Endpoint;
 
 /// Everything the options say, resolved.
 #[derive(Clone, Debug)]
@@ -55,6 +57,10 @@ pub struct Connection {
     /// Whether `--rs485` or `--rts-toggle` was typed, not only set in the environment: a
     /// port that is no serial line refuses it then, and ignores the variable.
     pub direction_typed: bool,
+    /// `--secondary-port` with its line settings: the other path to the same device.
+    pub secondary: Option<Box<Connection>>,
+    /// When to change between the paths.
+    pub switch: SwitchRule,
 }
 
 impl Connection {
@@ -131,7 +137,7 @@ pub fn resolve(
         (Some(name), false) => OutputFormat::from_str(name, true).map_or(Format::Table, format_of),
         (None, false) => Format::Table,
     };
-    Ok(Settings {
+    let mut settings = Settings {
         connection: Connection {
             port: c.port.clone(),
             mode: c.mode.map(Mode::from),
@@ -147,6 +153,8 @@ pub fn resolve(
             frame_gap: c.frame_gap,
             direction,
             direction_typed,
+            secondary: None,
+            switch: SwitchRule::default(),
         },
         output: Output {
             style: Style {
@@ -177,7 +185,57 @@ pub fn resolve(
             count: cli.poll.count,
             log: cli.poll.log.clone(),
         },
-    })
+    };
+    redundancy(cli, leaf, &mut settings.connection)?;
+    Ok(settings)
+}
+
+/// `--secondary-port` and its settings, each the primary's where not given, and the rule
+/// for changing paths. The other options typed without a secondary port are refused, as
+/// they would do nothing.
+fn redundancy(cli: &Cli, leaf: &clap::ArgMatches, primary: &mut Connection) -> Result<(), String> {
+    let r = &cli.redundancy;
+    let Some(port) = r.secondary_port.clone() else {
+        let typed = leaf.ids().find(|id| {
+            let id = id.as_str();
+            (id.starts_with("secondary_") || id.starts_with("switch_"))
+                && leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine)
+        });
+        return match typed {
+            Some(id) => Err(format!(
+                "--{} needs --secondary-port: the other path to the device",
+                id.as_str().replace('_', "-")
+            )),
+            None => Ok(()),
+        };
+    };
+    // A framing given for a serial primary is no framing for a tcp:// secondary.
+    let tcp = matches!(Endpoint::parse(&port), Ok(Endpoint::Tcp { .. }));
+    let mode = match r.secondary_mode {
+        Some(mode) => Some(Mode::from(mode)),
+        None if tcp => None,
+        None => primary.mode,
+    };
+    let secondary = Connection {
+        port: Some(port),
+        mode,
+        bauds: vec![r.secondary_baud.unwrap_or_else(|| primary.baud())],
+        parities: vec![r.secondary_parity.unwrap_or_else(|| primary.parity())],
+        data_bits: r.secondary_data_bits.or(primary.data_bits),
+        stop_bits: r.secondary_stop_bits.or(primary.stop_bits),
+        secondary: None,
+        ..primary.clone()
+    };
+    primary.secondary = Some(Box::new(secondary));
+    let defaults = SwitchRule::default();
+    primary.switch = SwitchRule {
+        conditions: match r.switch_on.is_empty() {
+            true => defaults.conditions,
+            false => r.switch_on.clone(),
+        },
+        when: r.switch_when.unwrap_or_default(),
+    };
+    Ok(())
 }
 
 /// The matches of the command itself, where its global options are found.

@@ -57,6 +57,8 @@ pub struct Cli {
     pub data: DataArgs,
     #[command(flatten)]
     pub poll: PollArgs,
+    #[command(flatten)]
+    pub redundancy: RedundancyArgs,
     #[command(subcommand)]
     pub command: Command,
 }
@@ -224,6 +226,16 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
     const SPLIT: &[&str] = &["max_per_request"];
     const REGISTERS: &[&str] = &["value_type", "order"];
     const POLL: &[&str] = &["poll", "poll_count", "log"];
+    const REDUNDANCY: &[&str] = &[
+        "secondary_port",
+        "secondary_baud",
+        "secondary_parity",
+        "secondary_data_bits",
+        "secondary_stop_bits",
+        "secondary_mode",
+        "switch_on",
+        "switch_when",
+    ];
     let groups: &[&[&str]] = match path {
         ["decode"] => &[&["mode"], FORMAT, REGISTERS],
         ["ports"] => FORMAT_ONLY,
@@ -238,23 +250,26 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
             ADDRESSES,
             SPLIT,
             REGISTERS,
+            REDUNDANCY,
         ],
         // dump's --output is the file it writes.
-        ["dump"] => &[LINE, MASTER, SPLIT, &["output"]],
-        ["restore"] => &[LINE, MASTER, SPLIT],
+        ["dump"] => &[LINE, MASTER, SPLIT, &["output"], REDUNDANCY],
+        ["restore"] => &[LINE, MASTER, SPLIT, REDUNDANCY],
         // A scan has no retries: each id that answers is asked once more instead.
         ["scan"] => &[LINE, &["timeout", "frame_gap", "verbose"], FORMAT],
         ["diag"] => &[LINE, MASTER, FORMAT, &["poll_count"]],
         // What the request command takes, less what only matters on the wire.
         ["encode", request] => {
-            let wire = [LINE, MASTER, POLL].concat();
+            let wire = [LINE, MASTER, POLL, REDUNDANCY].concat();
             return ["port", "mode"].contains(&id)
                 || (takes_option(&[request], id) && !wire.contains(&id));
         }
-        ["read-coils" | "read-inputs"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, POLL],
-        ["read-holding" | "read-input-registers" | "read"] => {
-            &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS, POLL]
+        ["read-coils" | "read-inputs"] => {
+            &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, POLL, REDUNDANCY]
         }
+        ["read-holding" | "read-input-registers" | "read"] => &[
+            LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS, POLL, REDUNDANCY,
+        ],
         ["write-coil"] => &[LINE, MASTER, FORMAT, ADDRESSES],
         ["write-coils"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT],
         ["write-register"] => &[LINE, MASTER, FORMAT, ADDRESSES, REGISTERS],

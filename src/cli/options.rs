@@ -4,6 +4,7 @@
 use clap::{Args, ValueEnum};
 
 use mbtool_core::codec::Mode;
+use mbtool_core::master::failover::{SwitchCondition, SwitchWhen};
 use mbtool_core::model::address::AddressBase;
 use mbtool_core::model::choice::Choice;
 use mbtool_core::model::values::{ByteOrder, ValueType};
@@ -99,6 +100,61 @@ pub struct ConnectionArgs {
     /// once its last byte has left (tcdrain), for drivers without RS-485 mode
     #[arg(long, global = true, env = "MBTOOL_RTS_TOGGLE", hide_env_values = true, value_parser = clap::builder::BoolishValueParser::new())]
     pub rts_toggle: bool,
+}
+
+/// A second path to the device and when to change to it.
+#[derive(Clone, Debug, Args)]
+#[command(next_help_heading = "Redundancy")]
+pub struct RedundancyArgs {
+    /// A second path to the same device (any --port), used when the --switch-on
+    /// conditions hold on the one in use; its line settings are the primary's unless
+    /// given below
+    #[arg(
+        long,
+        global = true,
+        env = "MBTOOL_SECONDARY_PORT",
+        hide_env_values = true,
+        value_name = "PORT"
+    )]
+    pub secondary_port: Option<String>,
+
+    /// Serial speed of the secondary path [default: --baud]
+    #[arg(long, global = true, env = "MBTOOL_SECONDARY_BAUD", hide_env_values = true, value_name = "BAUD", value_parser = whole::<u32>(50, 12_000_000))]
+    pub secondary_baud: Option<u32>,
+
+    /// Serial parity of the secondary path [default: --parity]
+    #[arg(long, global = true, env = "MBTOOL_SECONDARY_PARITY", hide_env_values = true, value_name = "PARITY", value_parser = choice::<Parity>())]
+    pub secondary_parity: Option<Parity>,
+
+    /// Serial data bits of the secondary path [default: --data-bits]
+    #[arg(long, global = true, env = "MBTOOL_SECONDARY_DATA_BITS", hide_env_values = true, value_name = "BITS", value_parser = whole::<u8>(7, 8))]
+    pub secondary_data_bits: Option<u8>,
+
+    /// Serial stop bits of the secondary path [default: --stop-bits]
+    #[arg(long, global = true, env = "MBTOOL_SECONDARY_STOP_BITS", hide_env_values = true, value_name = "BITS", value_parser = whole::<u8>(1, 2))]
+    pub secondary_stop_bits: Option<u8>,
+
+    /// Framing of the secondary path [default: --mode, tcp for tcp:// ports]
+    #[arg(
+        long,
+        global = true,
+        env = "MBTOOL_SECONDARY_MODE",
+        hide_env_values = true,
+        value_name = "MODE",
+        value_enum
+    )]
+    pub secondary_mode: Option<ModeArg>,
+
+    /// When to change paths, counted since the path's last good answer:
+    /// timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default:
+    /// timeout:3,disconnect]
+    #[arg(long, global = true, env = "MBTOOL_SWITCH_ON", hide_env_values = true, value_name = "CONDITIONS", value_delimiter = ',', value_parser = SwitchCondition::parse)]
+    pub switch_on: Vec<SwitchCondition>,
+
+    /// Whether any of the --switch-on conditions changes paths, or only all of them
+    /// together [default: any]
+    #[arg(long, global = true, env = "MBTOOL_SWITCH_WHEN", hide_env_values = true, value_name = "WHEN", value_parser = choice::<SwitchWhen>())]
+    pub switch_when: Option<SwitchWhen>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

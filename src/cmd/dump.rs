@@ -41,8 +41,9 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
         &ranges,
         settings.data.max_per_request,
         &stop,
-    )
-    .map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
+    );
+    super::shared::tell_switches(settings, &mut connection.master);
+    let dump = dump.map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
     if dump.interrupted {
         let values: usize = dump.entries.iter().map(|e| e.values.len()).sum();
         mbtool::note!(

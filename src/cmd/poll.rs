@@ -112,6 +112,15 @@ pub fn run<W: PollRows>(
                 last_status = 1;
                 Some(why)
             }
+            Tick::Switched(switch) => {
+                let (to, why) = (switch.to.name(), switch.why.as_str());
+                mbtool::note!("mbtool: {}", super::shared::switch_text(settings, &switch));
+                screen.switched(&mut out, &time, to, why)?;
+                if let Some(log) = log.as_mut() {
+                    log.rows.switched(&mut log.file, &time, to, why)?;
+                }
+                None
+            }
         };
         if let Some(error) = failure {
             // Where the format has no rows for it, the error goes to stderr.

@@ -51,8 +51,9 @@ pub fn run(settings: &Settings, request: &RequestCommand) -> Result<u8> {
         (RequestCommand::Raw(_), _) => raw(settings, master, &plan, mode, &mut out),
         (_, Some((table, address))) => reads(settings, master, &plan, table, address, &mut out),
         (_, None) => writes(settings, master, &plan, &mut out),
-    }
-    .map_err(|error| match error.downcast::<Error>() {
+    };
+    super::shared::tell_switches(settings, master);
+    let code = code.map_err(|error| match error.downcast::<Error>() {
         Ok(error) => connection.explain(&settings.connection, error).into(),
         Err(error) => error,
     })?;

@@ -63,7 +63,9 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
         .take_while(|_| !stop.load(Ordering::SeqCst))
         .try_for_each(|request| {
             sent += 1;
-            master.answer(slave, request).map(|_| ())
+            let answered = master.answer(slave, request).map(|_| ());
+            super::shared::tell_switches(settings, master);
+            answered
         });
     if outcome.is_ok() && sent < requests.len() {
         // Stopped between two writes: the device holds part of the file, and says so.
@@ -75,6 +77,7 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
         return Ok(super::shared::INTERRUPTED);
     }
     let outcome = outcome.and_then(|()| verify(master, slave, &entries));
+    super::shared::tell_switches(settings, master);
     let differences =
         outcome.map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
     let written: usize = entries

@@ -13,8 +13,9 @@ use mbtool::error::Error;
 use mbtool::output::encode::frame_text;
 use mbtool::settings::Settings;
 use mbtool_core::codec::Mode;
+use mbtool_core::master::failover::{PathName, Switch};
 use mbtool_core::master::plan::{parse_slave, plan, Plan, PlanOptions};
-use mbtool_core::master::Traffic;
+use mbtool_core::master::{Master, Traffic};
 use mbtool_core::transport::Endpoint;
 
 /// The framing: --mode, else TCP for a tcp:// port, else RTU. Unlike a connection, encode
@@ -79,6 +80,32 @@ pub fn connect_to(settings: &Settings, slave: &str) -> Result<(Connection, u8)> 
         connection.master.trace(tracer(connection.mode));
     }
     Ok((connection, slave))
+}
+
+/// The port of a path, as given.
+pub fn path_name(settings: &Settings, path: PathName) -> &str {
+    let connection = match (path, settings.connection.secondary.as_deref()) {
+        (PathName::Secondary, Some(secondary)) => secondary,
+        _ => &settings.connection,
+    };
+    connection.port.as_deref().unwrap_or_default()
+}
+
+/// `switched to the secondary path (tcp://10.0.0.5): 3 timeouts`.
+pub fn switch_text(settings: &Settings, switch: &Switch) -> String {
+    format!(
+        "switched to the {} path ({}): {}",
+        switch.to.name(),
+        path_name(settings, switch.to),
+        switch.why
+    )
+}
+
+/// The changes of path the master has made, each a line on stderr.
+pub fn tell_switches(settings: &Settings, master: &mut Master) {
+    for switch in master.take_switches() {
+        mbtool::note!("mbtool: {}", switch_text(settings, &switch));
+    }
 }
 
 /// The exit status of a command ended by Ctrl-C or SIGTERM, as a shell reports one killed

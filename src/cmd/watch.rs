@@ -102,6 +102,8 @@ enum Update {
     Values(Vec<(usize, Value)>, Duration),
     Failed(RunError),
     Disconnected(String),
+    /// The master changed paths: the new title.
+    Switched(String),
 }
 
 pub fn run(settings: &Settings, args: &ReadByReferenceArgs) -> Result<u8> {
@@ -193,6 +195,7 @@ fn screen(
                     state.stats.disconnected += 1;
                     state.failed(why);
                 }
+                Update::Switched(title) => state.switched(title),
             }
         }
         terminal.draw(|frame| state.render(frame))?;
@@ -276,6 +279,12 @@ fn poll_thread(
                 ),
                 Tick::Failed(error) => Update::Failed(error),
                 Tick::Disconnected(why) => Update::Disconnected(why),
+                Tick::Switched(switch) => Update::Switched(format!(
+                    " slave {slave} on {} ({} path: {}) ",
+                    super::shared::path_name(settings, switch.to),
+                    switch.to.name(),
+                    switch.why
+                )),
             };
             updates
                 .send(update)

@@ -326,4 +326,8 @@ impl PollRows for GatewayWriter {
     fn continuing(&mut self) {
         self.csv_header_written = true;
     }
+
+    fn format(&self) -> Format {
+        self.format
+    }
 }

@@ -73,6 +73,10 @@ impl super::PollRows for MapRows<'_> {
     fn continuing(&mut self) {
         self.writer.csv_header_written = true;
     }
+
+    fn format(&self) -> Format {
+        self.writer.format
+    }
 }
 
 /// What a point read as: its registers in hex, or a coil's or input's 0 or 1.

@@ -240,6 +240,33 @@ pub trait PollRows {
     fn failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()>;
     /// The rows go on a file that has its CSV header already.
     fn continuing(&mut self);
+    /// The format the rows are written in.
+    fn format(&self) -> Format;
+    /// The master changed to its other path `to` because of `why`: in JSON a row of its
+    /// own, `{"time":..,"switched":"secondary","why":"3 timeouts"}`; in CSV a row with
+    /// the change in the error column.
+    fn switched(&mut self, out: &mut dyn Write, time: &str, to: &str, why: &str) -> io::Result<()> {
+        match self.format() {
+            Format::Json => {
+                let row = JsonSwitch {
+                    time,
+                    switched: to,
+                    why,
+                };
+                serde_json::to_writer(&mut *out, &row)?;
+                writeln!(out)
+            }
+            _ => self.failure(out, time, &format!("switched to the {to} path: {why}")),
+        }
+    }
+}
+
+/// A change of path, as a JSON row.
+#[derive(serde::Serialize)]
+struct JsonSwitch<'a> {
+    time: &'a str,
+    switched: &'a str,
+    why: &'a str,
 }
 
 /// A poll that gave no result, as a JSON row.

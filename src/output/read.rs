@@ -66,6 +66,10 @@ impl super::PollRows for ReadWriter {
     fn continuing(&mut self) {
         self.csv_header_written = true;
     }
+
+    fn format(&self) -> Format {
+        self.style.format
+    }
 }
 
 pub struct ReadWriter {

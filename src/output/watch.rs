@@ -105,6 +105,12 @@ impl WatchState {
         self.last_error = Some(error);
     }
 
+    /// The master changed paths: the title says which one is read now, and why.
+    pub fn switched(&mut self, title: String) {
+        self.stats.switches += 1;
+        self.title = title;
+    }
+
     /// `r`: minimum, maximum and trends start again.
     pub fn reset(&mut self) {
         for view in &mut self.points {

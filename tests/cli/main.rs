@@ -26,6 +26,7 @@ mod master_tokio;
 mod poll;
 mod ports;
 mod readme;
+mod redundancy;
 mod rs485;
 mod scan;
 mod serve;

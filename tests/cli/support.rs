@@ -60,7 +60,7 @@ pub static WORKED_FRAMES: std::sync::LazyLock<Vec<Vec<u8>>> = std::sync::LazyLoc
 });
 
 /// The environment variables that would give mbtool connection settings.
-const SETTINGS_FROM_ENVIRONMENT: [&str; 13] = [
+const SETTINGS_FROM_ENVIRONMENT: [&str; 21] = [
     "MBTOOL_PORT",
     "MBTOOL_MODE",
     "MBTOOL_BAUD",
@@ -74,6 +74,14 @@ const SETTINGS_FROM_ENVIRONMENT: [&str; 13] = [
     "MBTOOL_RS485_DELAY_AFTER",
     "MBTOOL_RTS_LEVEL",
     "MBTOOL_RTS_TOGGLE",
+    "MBTOOL_SECONDARY_PORT",
+    "MBTOOL_SECONDARY_BAUD",
+    "MBTOOL_SECONDARY_PARITY",
+    "MBTOOL_SECONDARY_DATA_BITS",
+    "MBTOOL_SECONDARY_STOP_BITS",
+    "MBTOOL_SECONDARY_MODE",
+    "MBTOOL_SWITCH_ON",
+    "MBTOOL_SWITCH_WHEN",
 ];
 
 /// mbtool with no connection settings from the environment.

@@ -13,6 +13,7 @@ use crate::transport::Transport;
 
 pub mod backup;
 pub mod device;
+pub mod failover;
 pub mod map;
 pub mod plan;
 pub mod poll;
@@ -146,6 +147,8 @@ pub struct Master {
     /// The last transaction ended on a whole answer, so nothing stale can be waiting
     /// on a TCP connection but whole frames with other transaction ids.
     in_step: bool,
+    /// A second path to the device, and when to change to it.
+    failover: Option<Box<failover::Failover>>,
 }
 
 /// What the bytes received so far came to.
@@ -175,6 +178,7 @@ impl Master {
             framer,
             started: Instant::now(),
             in_step: false,
+            failover: None,
         }
     }
 
@@ -275,6 +279,18 @@ impl Master {
         slave: u8,
         request: &Request,
     ) -> (Result<Reply, MasterError>, u32) {
+        let (outcome, tries) = self.transact_here(slave, request);
+        // On a change of path the request is asked again there, as a retry would be.
+        if self.weigh(&outcome) {
+            let (again, more) = self.transact_here(slave, request);
+            self.weigh(&again);
+            return (again, tries + more);
+        }
+        (outcome, tries)
+    }
+
+    /// One request, with its retries, on the path in use.
+    fn transact_here(&mut self, slave: u8, request: &Request) -> (Result<Reply, MasterError>, u32) {
         let mut tries = 0;
         loop {
             tries += 1;

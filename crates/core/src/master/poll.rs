@@ -6,6 +6,7 @@
 
 use std::time::{Duration, Instant};
 
+use super::failover::Switch;
 use super::run::{PollStats, RunError};
 use super::{Master, MasterError};
 
@@ -24,6 +25,9 @@ pub enum Tick<T> {
     Failed(RunError),
     /// No connection: why an attempt to connect failed, or that the next is awaited.
     Disconnected(String),
+    /// The master changed to its other path (before the outcome of the read that made it
+    /// change, which was asked again there).
+    Switched(Switch),
 }
 
 /// How long to poll.
@@ -101,6 +105,10 @@ pub fn poll<T, E: std::fmt::Display>(
         if let Some(current) = master.as_mut() {
             let began = Instant::now();
             let outcome = read(current);
+            for switch in current.take_switches() {
+                stats.switches += 1;
+                tick(Tick::Switched(switch))?;
+            }
             stats.record(outcome.as_ref().map(|_| ()), began.elapsed());
             match outcome {
                 Ok(result) => tick(Tick::Read(result))?,

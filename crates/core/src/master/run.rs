@@ -229,6 +229,8 @@ pub struct PollStats {
     /// Polls without a connection to read from (a failed attempt to connect, or the
     /// wait before the next one).
     pub disconnected: u64,
+    /// Changes from one path to the other.
+    pub switches: u64,
     fastest: Option<Duration>,
     slowest: Duration,
     total: Duration,
@@ -272,6 +274,12 @@ impl PollStats {
         }
         if self.disconnected > 0 {
             line.push_str(&format!(", {} polls while disconnected", self.disconnected));
+        }
+        if self.switches > 0 {
+            line.push_str(&format!(
+                ", {}",
+                count(self.switches, "change of path", "changes of path")
+            ));
         }
         if let Some(fastest) = self.fastest {
             let mean = self.total / u32::try_from(self.answers.max(1)).unwrap_or(u32::MAX);
