@@ -84,6 +84,13 @@ impl Poller {
     }
 }
 
+/// The first row that tells a change of path.
+fn switch_row(rows: &[Value]) -> &Value {
+    rows.iter()
+        .find(|row| row.get("switched").is_some())
+        .unwrap_or_else(|| panic!("no switch row among {rows:#?}"))
+}
+
 fn value_of(row: &Value) -> Option<u64> {
     row["values"][0]["value"].as_u64()
 }
@@ -104,10 +111,7 @@ fn a_poll_changes_to_the_secondary_and_back_and_the_rows_keep_coming() {
     poller.until(Duration::from_secs(5), |row| value_of(row) == Some(555));
     drop(primary);
     let rows = poller.until(Duration::from_secs(5), |row| value_of(row) == Some(777));
-    let switch = rows
-        .iter()
-        .find(|row| row.get("switched").is_some())
-        .expect("a switch row before the secondary's values");
+    let switch = switch_row(&rows);
     assert_eq!(switch["switched"], "secondary");
     assert!(
         switch["why"].as_str().unwrap().starts_with("disconnected"),
@@ -122,10 +126,7 @@ fn a_poll_changes_to_the_secondary_and_back_and_the_rows_keep_coming() {
     poller.until(Duration::from_secs(3), |row| value_of(row) == Some(777));
     drop(secondary);
     let rows = poller.until(Duration::from_secs(5), |row| value_of(row) == Some(555));
-    let back = rows
-        .iter()
-        .find(|row| row.get("switched").is_some())
-        .expect("a switch row before the primary's values");
+    let back = switch_row(&rows);
     assert_eq!(back["switched"], "primary");
     drop(poller.child);
     // The log holds the same rows, the switches among them.
@@ -218,10 +219,7 @@ fn any_switches_on_the_first_condition_and_all_waits_for_every_one() {
         ],
         12,
     );
-    let switch = rows
-        .iter()
-        .find(|r| r.get("switched").is_some())
-        .unwrap_or_else(|| panic!("{rows:#?}"));
+    let switch = switch_row(&rows);
     let why = switch["why"].as_str().unwrap();
     assert!(why.contains("timeouts and exception 0B"), "{why}");
     assert_eq!(value_of(rows.last().unwrap()), Some(777));
@@ -248,15 +246,7 @@ fn redundancy_options_are_checked_before_anything_is_sent() {
         ),
     ];
     for (args, message) in cases {
-        let output = mbtool()
-            .args(["read-holding", "17", "400108"])
-            .args(args)
-            .output()
-            .unwrap();
-        assert_eq!(output.status.code(), Some(2), "{args:?}");
-        let stderr = String::from_utf8_lossy(&output.stderr);
-        assert!(stderr.starts_with(message), "{args:?}: {stderr}");
-        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert_refused(&[&["read-holding", "17", "400108"], args].concat(), message);
     }
     // A primary that cannot be opened gives way to the secondary at once.
     let output = mbtool()

@@ -358,15 +358,7 @@ fn direction_options_are_checked_before_anything_is_opened() {
         ),
     ];
     for (args, message) in cases {
-        let output = mbtool()
-            .args(["read-holding", "17", "400108"])
-            .args(args)
-            .output()
-            .unwrap();
-        assert_eq!(output.status.code(), Some(2), "{args:?}");
-        let stderr = String::from_utf8_lossy(&output.stderr);
-        assert!(stderr.starts_with(message), "{args:?}: {stderr}");
-        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert_refused(&[&["read-holding", "17", "400108"], args].concat(), message);
     }
     // From the environment, the option is for the serial commands of the same shell: a
     // TCP device is read as if it were not set.

@@ -99,6 +99,16 @@ pub fn mbtool_process() -> std::process::Command {
     cmd
 }
 
+/// Checks that mbtool refuses the command line `args` as bad usage (exit status 2), in one
+/// line on stderr that starts with `message`.
+pub fn assert_refused(args: &[&str], message: &str) {
+    let output = mbtool().args(args).output().expect("mbtool runs");
+    assert_eq!(output.status.code(), Some(2), "{args:?}");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.starts_with(message), "{args:?}: {stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+}
+
 /// Whether an outside peer is here. On a developer's machine a missing peer skips the test
 /// with a reason; with `CI` set it fails, because CI must run every test.
 pub fn peer_available(name: &str, found: bool) -> bool {
