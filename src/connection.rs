@@ -188,6 +188,16 @@ pub fn tried(options: &Options, endpoint: &Endpoint, mode: Mode) -> (String, &'s
 /// A master on `endpoint`, framing in `mode`, as the options resolved them; with a
 /// `--secondary-port`, one that changes paths as `--switch-on` says.
 pub fn master(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
+    master_on(options, endpoint, mode, None)
+}
+
+/// [`master`], starting on the path `first` where there are two (the primary if `None`).
+pub fn master_on(
+    options: &Options,
+    endpoint: &Endpoint,
+    mode: Mode,
+    first: Option<PathName>,
+) -> Result<Master> {
     match secondary_target(options)? {
         None => single_master(options, endpoint, mode),
         Some((secondary, target)) => {
@@ -195,7 +205,8 @@ pub fn master(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<Mast
                 (options.clone(), endpoint.clone(), mode),
                 (secondary.clone(), target.endpoint, target.mode),
             ];
-            redundant_master(paths, options.switch.clone())
+            let first = first.unwrap_or(PathName::Primary);
+            redundant_master(paths, options.switch.clone(), first)
         }
     }
 }
@@ -229,9 +240,13 @@ fn secondary_target(options: &Options) -> Result<Option<(&Options, Target)>> {
     Ok(Some((secondary, Target { endpoint, mode })))
 }
 
-/// A master on the first of the two `paths` that opens (the primary unless it cannot be
-/// opened), changing to the other as `rule` says.
-fn redundant_master(paths: [(Options, Endpoint, Mode); 2], rule: SwitchRule) -> Result<Master> {
+/// A master on the path `first` of the two `paths`, or on the other where it cannot be
+/// opened, changing between them as `rule` says.
+fn redundant_master(
+    paths: [(Options, Endpoint, Mode); 2],
+    rule: SwitchRule,
+    first: PathName,
+) -> Result<Master> {
     let open = move |path: PathName| {
         let (options, endpoint, mode) = match path {
             PathName::Primary => &paths[0],
@@ -239,20 +254,19 @@ fn redundant_master(paths: [(Options, Endpoint, Mode); 2], rule: SwitchRule) -> 
         };
         single_master(options, endpoint, *mode).map_err(|e| e.to_string())
     };
-    let (master, on, switches) = match open(PathName::Primary) {
-        Ok(master) => (master, PathName::Primary, Vec::new()),
-        Err(primary) => match open(PathName::Secondary) {
+    let (master, on, switches) = match open(first) {
+        Ok(master) => (master, first, Vec::new()),
+        Err(failed) => match open(first.other()) {
             Ok(master) => {
-                let why = format!("the primary cannot be opened ({primary})");
                 let switch = Switch {
-                    to: PathName::Secondary,
-                    why,
+                    to: first.other(),
+                    why: format!("the {} path cannot be opened ({failed})", first.name()),
                 };
-                (master, PathName::Secondary, vec![switch])
+                (master, first.other(), vec![switch])
             }
-            Err(secondary) => {
+            Err(other) => {
                 return Err(Error::Io(io::Error::other(format!(
-                    "neither path opens: {primary}; {secondary}"
+                    "neither path opens: {failed}; {other}"
                 ))))
             }
         },

@@ -72,8 +72,9 @@ pub fn run<W: PollRows>(
         let _ = stop.send(());
     })
     .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
-    let connect = || -> Result<Master, Error> {
-        let mut master = connection::master(&settings.connection, &target.endpoint, target.mode)?;
+    let connect = |path| -> Result<Master, Error> {
+        let mut master =
+            connection::master_on(&settings.connection, &target.endpoint, target.mode, path)?;
         if settings.output.verbose {
             master.trace(super::shared::tracer(target.mode));
         }

@@ -228,8 +228,8 @@ fn poll_thread(
     updates: &mpsc::Sender<Update>,
 ) {
     let refs: Vec<&Point> = points.iter().collect();
-    let connect = || -> Result<Master, Error> {
-        connection::master(&settings.connection, &target.endpoint, target.mode)
+    let connect = |path| -> Result<Master, Error> {
+        connection::master_on(&settings.connection, &target.endpoint, target.mode, path)
     };
     let read = |master: &mut Master| {
         let began = Instant::now();

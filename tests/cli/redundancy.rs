@@ -258,7 +258,7 @@ fn redundancy_options_are_checked_before_anything_is_sent() {
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(
         stderr.starts_with(
-            "mbtool: switched to the secondary path (sim): the primary cannot be opened"
+            "mbtool: switched to the secondary path (sim): the primary path cannot be opened"
         ),
         "{stderr}"
     );
@@ -290,4 +290,33 @@ fn a_dump_goes_on_through_the_secondary() {
     );
     let saved = std::fs::read_to_string(&file).unwrap();
     assert!(saved.contains("400108 = 777"), "{saved}");
+}
+
+#[test]
+fn with_both_paths_down_the_poll_waits_and_tells_which_one_came_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let (primary_port, secondary_port) = (free_port(), free_port());
+    let secondary = device(secondary_port, 777, &[], dir.path());
+    let poller = Poller::start(&[
+        format!("--port=tcp://127.0.0.1:{primary_port}"),
+        format!("--secondary-port=tcp://127.0.0.1:{secondary_port}"),
+        "--timeout=300ms".into(),
+    ]);
+    // The primary is not there: the poll starts on the secondary, and says so.
+    let rows = poller.until(Duration::from_secs(5), |row| value_of(row) == Some(777));
+    let first = switch_row(&rows);
+    assert_eq!(first["switched"], "secondary");
+    assert!(
+        first["why"]
+            .as_str()
+            .unwrap()
+            .starts_with("the primary path cannot be opened"),
+        "{first}"
+    );
+    drop(secondary);
+    poller.until(Duration::from_secs(5), |row| row.get("error").is_some());
+    let _primary = device(primary_port, 555, &[], dir.path());
+    let rows = poller.until(Duration::from_secs(10), |row| value_of(row) == Some(555));
+    let back = switch_row(&rows);
+    assert_eq!(back["switched"], "primary", "{rows:#?}");
 }

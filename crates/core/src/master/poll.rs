@@ -6,7 +6,7 @@
 
 use std::time::{Duration, Instant};
 
-use super::failover::Switch;
+use super::failover::{PathName, Switch};
 use super::run::{PollStats, RunError};
 use super::{Master, MasterError};
 
@@ -63,11 +63,13 @@ impl Backoff {
     }
 }
 
-/// Polls until `count` polls or until `wait` says stop. `connect` opens the master;
+/// Polls until `count` polls or until `wait` says stop. `connect` opens the master,
+/// given the path last in use when it has two (so that a connection opened again
+/// starts where the poll was, and a change is told only when it is one);
 /// `read` makes one read; `tick` is told each poll's outcome; `wait` sleeps up to the time
 /// given and returns true when polling should stop (Ctrl-C).
 pub fn poll<T, E: std::fmt::Display>(
-    mut connect: impl FnMut() -> Result<Master, E>,
+    mut connect: impl FnMut(Option<PathName>) -> Result<Master, E>,
     mut read: impl FnMut(&mut Master) -> Result<T, RunError>,
     options: PollOptions,
     mut wait: impl FnMut(Duration) -> bool,
@@ -78,9 +80,10 @@ pub fn poll<T, E: std::fmt::Display>(
     let mut backoff = Backoff::new();
     let start = Instant::now();
     let mut polls = 0u64;
+    let mut last_path = None;
     loop {
         if master.is_none() && Instant::now() >= backoff.next_attempt {
-            match connect() {
+            match connect(last_path) {
                 Ok(opened) => {
                     master = Some(opened);
                     backoff = Backoff::new();
@@ -109,6 +112,7 @@ pub fn poll<T, E: std::fmt::Display>(
                 stats.switches += 1;
                 tick(Tick::Switched(switch))?;
             }
+            last_path = current.path();
             stats.record(outcome.as_ref().map(|_| ()), began.elapsed());
             match outcome {
                 Ok(result) => tick(Tick::Read(result))?,
@@ -153,7 +157,7 @@ mod tests {
         let mut waits = Vec::new();
         let mut ticks = 0;
         let stats = poll(
-            || Err::<Master, _>("refused"),
+            |_| Err::<Master, _>("refused"),
             |_: &mut Master| Ok(()),
             PollOptions {
                 interval: Duration::ZERO,
