@@ -221,3 +221,29 @@ fn watch_reads_around_a_hole_and_shows_the_whole_status() {
     terminal.wait_for(Duration::from_secs(10), |_| terminal.done());
     assert_eq!(terminal.status(), Some(0));
 }
+
+#[test]
+fn watch_says_in_its_title_which_path_it_reads() {
+    let (_device, secondary, _) = serve_tcp(&["--data", PUMP]);
+    // Nothing listens on the primary: watch reads through the secondary, and says so.
+    let args = format!(
+        "--port tcp://127.0.0.1:1 --secondary-port {} watch 17 --map {MAP} --poll 100ms",
+        secondary[1]
+    );
+    let Some(terminal) = Terminal::run(&args, 120, 30) else {
+        return;
+    };
+    let screen = terminal.wait_for(Duration::from_secs(20), |s| s[0].contains("secondary"));
+    assert!(
+        screen[0].contains(&format!(
+            "slave 17 on {} (secondary path: the primary path cannot be opened",
+            secondary[1]
+        )),
+        "{screen:#?}"
+    );
+    assert!(
+        screen.iter().any(|line| line.contains("1 change of path")),
+        "{screen:#?}"
+    );
+    terminal.keys(&["q"]);
+}
