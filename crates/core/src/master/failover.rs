@@ -70,6 +70,17 @@ impl SwitchCondition {
             ("bad-frame" | "bad-frames", value) => Ok(SwitchCondition::BadFrames(count(value)?)),
             ("exception", Some(code)) => {
                 let digits = code.trim_start_matches("0x").trim_start_matches("0X");
+                // `11` reads as eleven to some and as 0x11 to others: only a reading that
+                // both agree on, or one written with a hex digit or 0x, is taken.
+                let decimal = digits
+                    .parse::<u32>()
+                    .ok()
+                    .filter(|_| digits.len() == code.len());
+                if let Some(n) = decimal.filter(|n| *n >= 10) {
+                    return Err(format!(
+                        "exception:{code} is ambiguous: give the code in hex as the manuals write it ({n:02X} for {n}, or 0x{code})"
+                    ));
+                }
                 match u8::from_str_radix(digits, 16) {
                     Ok(code @ 1..=0x7F) => Ok(SwitchCondition::Exception(ExceptionCode(code))),
                     _ => Err(format!(
