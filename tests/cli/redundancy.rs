@@ -320,3 +320,46 @@ fn with_both_paths_down_the_poll_waits_and_tells_which_one_came_back() {
     let back = switch_row(&rows);
     assert_eq!(back["switched"], "primary", "{rows:#?}");
 }
+
+#[test]
+fn a_device_that_closes_idle_connections_is_no_failure_of_its_path() {
+    // Each answer, then the connection closed, as a gateway closes idle ones.
+    let closing = scripted_tcp_device(|_, _| Act::AnswerThenClose(vec![0x03, 0x02, 0x02, 0x2B]));
+    let dir = tempfile::tempdir().unwrap();
+    let secondary_port = free_port();
+    let _secondary = device(secondary_port, 777, &[], dir.path());
+    for secondary in [
+        vec![],
+        vec![format!("--secondary-port=tcp://127.0.0.1:{secondary_port}")],
+    ] {
+        let output = mbtool()
+            .args([
+                "read-holding",
+                "17",
+                "400108",
+                "-o",
+                "json",
+                "--poll",
+                "20ms",
+                "--count",
+                "4",
+            ])
+            .arg(format!("--port=tcp://127.0.0.1:{closing}"))
+            .args(["--timeout", "5s"])
+            .args(&secondary)
+            .timeout(Duration::from_secs(20))
+            .output()
+            .unwrap();
+        let rows: Vec<Value> = String::from_utf8(output.stdout)
+            .unwrap()
+            .lines()
+            .map(|line| serde_json::from_str(line).unwrap())
+            .collect();
+        assert_eq!(rows.len(), 4, "{secondary:?}: {rows:#?}");
+        assert!(
+            rows.iter().all(|row| value_of(row) == Some(555)),
+            "{rows:#?}"
+        );
+        assert_eq!(output.status.code(), Some(0));
+    }
+}

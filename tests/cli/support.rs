@@ -544,6 +544,9 @@ pub enum Act {
     Silent,
     /// Closes the connection.
     Close,
+    /// Answers with this PDU, then closes the connection, as a device does that closes
+    /// connections idle for longer than its poll.
+    AnswerThenClose(Vec<u8>),
 }
 
 /// A Modbus TCP device on 127.0.0.1 played by `act`, which is given each request's unit id
@@ -563,8 +566,9 @@ pub fn scripted_tcp_device(act: impl Fn(u8, &[u8]) -> Act + Send + 'static) -> u
                 if stream.read_exact(&mut pdu).is_err() {
                     break;
                 }
-                let answer = match act(header[6], &pdu) {
-                    Act::Answer(answer) => answer,
+                let (answer, close) = match act(header[6], &pdu) {
+                    Act::Answer(answer) => (answer, false),
+                    Act::AnswerThenClose(answer) => (answer, true),
                     Act::Silent => continue,
                     Act::Close => break,
                 };
@@ -572,7 +576,7 @@ pub fn scripted_tcp_device(act: impl Fn(u8, &[u8]) -> Act + Send + 'static) -> u
                 frame.extend_from_slice(&((answer.len() + 1) as u16).to_be_bytes());
                 frame.push(header[6]);
                 frame.extend_from_slice(&answer);
-                if stream.write_all(&frame).is_err() {
+                if stream.write_all(&frame).is_err() || close {
                     break;
                 }
             }

@@ -1,7 +1,7 @@
 //! A TCP connection carrying MBAP frames, or RTU frames through a transparent gateway.
 
 use std::io::{self, Read, Write};
-use std::net::{TcpStream, ToSocketAddrs};
+use std::net::{SocketAddr, TcpStream, ToSocketAddrs};
 use std::time::{Duration, Instant};
 
 use super::{time_left, Transport};
@@ -16,6 +16,9 @@ pub struct Tcp {
     serial_behind: bool,
     /// Whom the connection is with, for messages.
     peer: String,
+    /// Where a connection this end made goes, and how long connecting may take: a
+    /// connection the other end closed while it was idle is made again.
+    reconnect: Option<(SocketAddr, Duration)>,
 }
 
 impl Tcp {
@@ -27,9 +30,14 @@ impl Tcp {
         serial_behind: bool,
     ) -> io::Result<Tcp> {
         let mut last_error = None;
+        let timeout = timeout.max(Duration::from_millis(1));
         for address in (host, port).to_socket_addrs()? {
-            match TcpStream::connect_timeout(&address, timeout.max(Duration::from_millis(1))) {
-                Ok(stream) => return Tcp::from_stream(stream, serial_behind),
+            match TcpStream::connect_timeout(&address, timeout) {
+                Ok(stream) => {
+                    let mut tcp = Tcp::from_stream(stream, serial_behind)?;
+                    tcp.reconnect = Some((address, timeout));
+                    return Ok(tcp);
+                }
                 Err(error) => last_error = Some(error),
             }
         }
@@ -50,7 +58,37 @@ impl Tcp {
             peer,
             read_timeout_ms: 0,
             serial_behind,
+            reconnect: None,
         })
+    }
+
+    /// Whether the other end has closed the connection: devices and gateways close one
+    /// that has been idle for a while (often 60 s), which is no failure of the path.
+    fn closed_while_idle(&mut self) -> io::Result<bool> {
+        self.stream.set_nonblocking(true)?;
+        let peeked = self.stream.peek(&mut [0u8; 1]);
+        self.stream.set_nonblocking(false)?;
+        Ok(match peeked {
+            Ok(0) => true,
+            Ok(_) => false,
+            Err(e) => !matches!(
+                e.kind(),
+                io::ErrorKind::WouldBlock | io::ErrorKind::Interrupted
+            ),
+        })
+    }
+
+    /// Connects again where this end connected before; a connection accepted by a server
+    /// is only told closed.
+    fn connect_again(&mut self) -> io::Result<()> {
+        let Some((address, timeout)) = self.reconnect else {
+            return Err(closed(&self.peer));
+        };
+        let stream = TcpStream::connect_timeout(&address, timeout)?;
+        stream.set_nodelay(true)?;
+        self.stream = stream;
+        self.read_timeout_ms = 0;
+        Ok(())
     }
 }
 
@@ -68,10 +106,24 @@ impl Transport for Tcp {
             }
         };
         self.stream.set_nonblocking(false)?;
-        result
+        match result {
+            // Closed while idle: nothing was lost, and a new connection has nothing stale.
+            Err(e)
+                if matches!(
+                    e.kind(),
+                    io::ErrorKind::ConnectionAborted | io::ErrorKind::ConnectionReset
+                ) && self.reconnect.is_some() =>
+            {
+                self.connect_again()
+            }
+            result => result,
+        }
     }
 
     fn send(&mut self, frame: &[u8]) -> io::Result<()> {
+        if self.reconnect.is_some() && self.closed_while_idle()? {
+            self.connect_again()?;
+        }
         self.stream.write_all(frame)
     }
 
