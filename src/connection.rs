@@ -89,9 +89,18 @@ pub fn line_at(options: &Options, mode: Mode, baud: u32, parity: Parity) -> Line
 /// `--rs485` or `--rts-toggle` typed for a port that has no RTS to drive. From the
 /// environment they are left to the serial commands of the same shell.
 pub fn direction_needs_serial(options: &Options, endpoint: &Endpoint) -> Result<()> {
+    // With two paths, the options are for the one that is a serial line.
+    let secondary_serial = options
+        .secondary
+        .as_deref()
+        .and_then(|secondary| secondary.port.as_deref())
+        .is_some_and(|port| matches!(Endpoint::parse(port), Ok(Endpoint::Serial(_))));
     match endpoint {
         Endpoint::Serial(_) => Ok(()),
-        _ if !options.direction_typed => Ok(()),
+        _ if !options.direction_typed || secondary_serial => Ok(()),
+        Endpoint::Sim => Err(Error::usage(
+            "--rs485 and --rts-toggle drive the RTS line of a serial port: sim has none",
+        )),
         _ => Err(Error::usage(format!(
             "--rs485 and --rts-toggle drive the RTS line of a serial port: {endpoint} has none (a gateway switches its own transceiver)"
         ))),
@@ -187,16 +196,29 @@ pub fn tried(options: &Options, endpoint: &Endpoint, mode: Mode) -> (String, &'s
 
 /// A master on `endpoint`, framing in `mode`, as the options resolved them; with a
 /// `--secondary-port`, one that changes paths as `--switch-on` says.
+/// A command that ends at a failure (a dump, a single read) has a failed request asked
+/// again on its path until the rule decides.
 pub fn master(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
-    master_on(options, endpoint, mode, None)
+    open_master(options, endpoint, mode, None, true)
 }
 
-/// [`master`], starting on the path `first` where there are two (the primary if `None`).
+/// [`master`] for a poll, which counts a failure and asks again at its next interval,
+/// starting on the path `first` where there are two (the primary if `None`).
 pub fn master_on(
     options: &Options,
     endpoint: &Endpoint,
     mode: Mode,
     first: Option<PathName>,
+) -> Result<Master> {
+    open_master(options, endpoint, mode, first, false)
+}
+
+fn open_master(
+    options: &Options,
+    endpoint: &Endpoint,
+    mode: Mode,
+    first: Option<PathName>,
+    persistent: bool,
 ) -> Result<Master> {
     match secondary_target(options)? {
         None => single_master(options, endpoint, mode),
@@ -206,7 +228,8 @@ pub fn master_on(
                 (secondary.clone(), target.endpoint, target.mode),
             ];
             let first = first.unwrap_or(PathName::Primary);
-            redundant_master(paths, options.switch.clone(), first)
+            let master = redundant_master(paths, options.switch.clone(), first)?;
+            Ok(master.persistent(persistent))
         }
     }
 }
@@ -224,6 +247,16 @@ fn single_master(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<M
         &line_settings(options, mode),
         answer,
     )
+}
+
+/// Why the secondary path cannot be opened now, if it cannot: for a long command to say
+/// at its start that the path it may need is not there (a typo, an unplugged adapter),
+/// rather than when it is needed.
+pub fn secondary_unavailable(options: &Options) -> Option<String> {
+    let (secondary, target) = secondary_target(options).ok()??;
+    single_master(secondary, &target.endpoint, target.mode)
+        .err()
+        .map(|error| error.to_string())
 }
 
 /// The secondary path's settings and where they point, checked as `--port` is.
@@ -363,8 +396,24 @@ impl Connection {
     /// `error`, a timeout told with where and how the master asked and what usually
     /// causes one there.
     pub fn explain(&self, options: &Options, error: Error) -> Error {
-        let (tried, advice) = tried(options, &self.endpoint, self.mode);
+        let (tried, advice) = tried_on(options, &self.endpoint, self.mode, self.master.path());
         error.tried(tried, advice)
+    }
+}
+
+/// [`tried`] on the path `path` of the options, where there are two: the secondary's
+/// port and line when the master is there.
+pub fn tried_on(
+    options: &Options,
+    endpoint: &Endpoint,
+    mode: Mode,
+    path: Option<PathName>,
+) -> (String, &'static str) {
+    match (path, secondary_target(options)) {
+        (Some(PathName::Secondary), Ok(Some((secondary, target)))) => {
+            tried(secondary, &target.endpoint, target.mode)
+        }
+        _ => tried(options, endpoint, mode),
     }
 }
 

@@ -12,7 +12,7 @@ use clap::ValueEnum;
 use crate::cli::{takes_option, Cli, Command, OutputFormat};
 use crate::output::{colour_wanted, Format, Style};
 use mbtool_core::codec::Mode;
-use mbtool_core::master::failover::SwitchRule;
+use mbtool_core::master::failover::{SwitchCondition, SwitchRule};
 use mbtool_core::model::address::Numbering;
 use mbtool_core::model::values::{ByteOrder, ValueType};
 use mbtool_core::transport::rs485::{DirectionControl, RtsTiming};
@@ -186,7 +186,10 @@ pub fn resolve(
             log: cli.poll.log.clone(),
         },
     };
-    redundancy(cli, leaf, &mut settings.connection)?;
+    // A command that does not take a second path ignores one set in the environment.
+    if takes_option(&command_path(matches), "secondary_port") {
+        redundancy(cli, leaf, &mut settings.connection)?;
+    }
     Ok(settings)
 }
 
@@ -195,7 +198,7 @@ pub fn resolve(
 /// they would do nothing.
 fn redundancy(cli: &Cli, leaf: &clap::ArgMatches, primary: &mut Connection) -> Result<(), String> {
     let r = &cli.redundancy;
-    let Some(port) = r.secondary_port.clone() else {
+    let Some(port) = r.secondary_port.clone().filter(|port| !port.is_empty()) else {
         let typed = leaf.ids().find(|id| {
             let id = id.as_str();
             (id.starts_with("secondary_") || id.starts_with("switch_"))
@@ -209,6 +212,21 @@ fn redundancy(cli: &Cli, leaf: &clap::ArgMatches, primary: &mut Connection) -> R
             None => Ok(()),
         };
     };
+    if primary.port.as_deref() == Some(port.as_str()) {
+        return Err(format!(
+            "--secondary-port {port} is the --port: give the other path to the device"
+        ));
+    }
+    let mut kinds: Vec<std::mem::Discriminant<_>> = Vec::new();
+    for condition in &r.switch_on {
+        let kind = std::mem::discriminant(condition);
+        if kinds.contains(&kind) && !matches!(condition, SwitchCondition::Exception(_)) {
+            return Err(
+                "--switch-on: give each condition once (timeout:3, not timeout:3,timeout:5)".into(),
+            );
+        }
+        kinds.push(kind);
+    }
     // A framing given for a serial primary is no framing for a tcp:// secondary.
     let tcp = matches!(Endpoint::parse(&port), Ok(Endpoint::Tcp { .. }));
     let mode = match r.secondary_mode {
@@ -224,6 +242,8 @@ fn redundancy(cli: &Cli, leaf: &clap::ArgMatches, primary: &mut Connection) -> R
         data_bits: r.secondary_data_bits.or(primary.data_bits),
         stop_bits: r.secondary_stop_bits.or(primary.stop_bits),
         secondary: None,
+        // Checked once against both paths, with the primary's options.
+        direction_typed: false,
         ..primary.clone()
     };
     primary.secondary = Some(Box::new(secondary));
@@ -236,6 +256,17 @@ fn redundancy(cli: &Cli, leaf: &clap::ArgMatches, primary: &mut Connection) -> R
         when: r.switch_when.unwrap_or_default(),
     };
     Ok(())
+}
+
+/// The names of the command given: `["read-holding"]`, `["encode", "write-coil"]`.
+fn command_path(matches: &clap::ArgMatches) -> Vec<&str> {
+    let mut path = Vec::new();
+    let mut leaf = matches;
+    while let Some((name, sub)) = leaf.subcommand() {
+        path.push(name);
+        leaf = sub;
+    }
+    path
 }
 
 /// The matches of the command itself, where its global options are found.
@@ -331,12 +362,8 @@ fn sweep_outside_scan(cli: &Cli, matches: &clap::ArgMatches) -> Option<String> {
 /// The first global option typed on the command line that the command given does not
 /// take, as a one-line message: `decode does not take --baud (see 'mbtool decode --help')`.
 fn untaken_option(command: &clap::Command, matches: &clap::ArgMatches) -> Option<String> {
-    let mut path = Vec::new();
-    let mut leaf = matches;
-    while let Some((name, sub)) = leaf.subcommand() {
-        path.push(name);
-        leaf = sub;
-    }
+    let path = command_path(matches);
+    let leaf = leaf(matches);
     let typed = command.get_arguments().find(|arg| {
         let id = arg.get_id().as_str();
         arg.is_global_set()

@@ -11,7 +11,7 @@ use mbtool_core::model::values::{ByteOrder, ValueType};
 use mbtool_core::transport::rs485::RtsLevel;
 use mbtool_core::transport::serial::Parity;
 
-use super::values::{choice, positive_duration, whole};
+use super::values::{choice, positive_duration, switch, whole};
 
 #[derive(Clone, Debug, Args)]
 #[command(next_help_heading = "Connection")]
@@ -80,15 +80,15 @@ pub struct ConnectionArgs {
 
     /// RS-485 direction by the kernel's RS-485 mode (Linux): the UART driver raises RTS
     /// while sending, for transceivers that need the host to switch them
-    #[arg(long, global = true, env = "MBTOOL_RS485", hide_env_values = true, value_parser = clap::builder::BoolishValueParser::new())]
+    #[arg(long, global = true, env = "MBTOOL_RS485", hide_env_values = true, value_parser = switch)]
     pub rs485: bool,
 
     /// Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle
-    #[arg(long, global = true, env = "MBTOOL_RS485_DELAY_BEFORE", hide_env_values = true, value_name = "MS", value_parser = whole::<u64>(0, 100))]
+    #[arg(long, global = true, env = "MBTOOL_RS485_DELAY_BEFORE", hide_env_values = true, value_name = "MS", allow_negative_numbers = true, value_parser = whole::<u64>(0, 100))]
     pub rs485_delay_before: Option<u64>,
 
     /// Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle
-    #[arg(long, global = true, env = "MBTOOL_RS485_DELAY_AFTER", hide_env_values = true, value_name = "MS", value_parser = whole::<u64>(0, 100))]
+    #[arg(long, global = true, env = "MBTOOL_RS485_DELAY_AFTER", hide_env_values = true, value_name = "MS", allow_negative_numbers = true, value_parser = whole::<u64>(0, 100))]
     pub rs485_delay_after: Option<u64>,
 
     /// The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted)
@@ -98,7 +98,7 @@ pub struct ConnectionArgs {
 
     /// RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped
     /// once its last byte has left (tcdrain), for drivers without RS-485 mode
-    #[arg(long, global = true, env = "MBTOOL_RTS_TOGGLE", hide_env_values = true, value_parser = clap::builder::BoolishValueParser::new())]
+    #[arg(long, global = true, env = "MBTOOL_RTS_TOGGLE", hide_env_values = true, value_parser = switch)]
     pub rts_toggle: bool,
 }
 

@@ -42,3 +42,13 @@ pub(super) fn choice<T: Choice + Clone + Send + Sync>(
     }))
     .try_map(|name| T::from_name(&name).ok_or("not one of the possible values"))
 }
+
+/// A switch set from the environment: `MBTOOL_RS485=1`. Empty, `0`, `false`, `no` or
+/// `off` leave it off, as a script that clears the variable means.
+pub(super) fn switch(text: &str) -> Result<bool, String> {
+    match text.trim().to_ascii_lowercase().as_str() {
+        "" | "0" | "false" | "no" | "off" => Ok(false),
+        "1" | "true" | "yes" | "on" => Ok(true),
+        _ => Err("give 1 to turn it on, 0 (or nothing) to leave it off".into()),
+    }
+}

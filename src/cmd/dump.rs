@@ -72,7 +72,12 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
         };
         return Err(Error::from(refused).into());
     }
-    let (place, _) = connection::tried(&settings.connection, &connection.endpoint, connection.mode);
+    let (place, _) = connection::tried_on(
+        &settings.connection,
+        &connection.endpoint,
+        connection.mode,
+        connection.master.path(),
+    );
     let text = format!(
         "# mbtool dump of slave {slave} {place}, {}\n{}",
         output::backup::utc_now(),

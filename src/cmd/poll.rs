@@ -80,6 +80,7 @@ pub fn run<W: PollRows>(
         }
         Ok(master)
     };
+    super::shared::warn_if_secondary_unavailable(settings);
     let mut out = output::stdout();
     let mut last_status = 0;
     let options = PollOptions {
@@ -92,7 +93,7 @@ pub fn run<W: PollRows>(
             Err(mpsc::RecvTimeoutError::Timeout)
         )
     };
-    let (tried, advice) = connection::tried(&settings.connection, &target.endpoint, target.mode);
+    let mut path = None;
     let stats = poll(connect, read, options, wait, |tick| {
         let time = now();
         let failure = match tick {
@@ -105,7 +106,9 @@ pub fn run<W: PollRows>(
                 None
             }
             Tick::Failed(error) => {
-                let error = Error::from(error).tried(tried.clone(), advice);
+                let c = &settings.connection;
+                let (tried, advice) = connection::tried_on(c, &target.endpoint, target.mode, path);
+                let error = Error::from(error).tried(tried, advice);
                 last_status = error.exit_code();
                 Some(error.to_string())
             }
@@ -114,6 +117,7 @@ pub fn run<W: PollRows>(
                 Some(why)
             }
             Tick::Switched(switch) => {
+                path = Some(switch.to);
                 let (to, why) = (switch.to.name(), switch.why.as_str());
                 mbtool::note!("mbtool: {}", super::shared::switch_text(settings, &switch));
                 screen.switched(&mut out, &time, to, why)?;

@@ -5,11 +5,20 @@ use std::io::Write;
 use anyhow::Result;
 
 use mbtool::cli::PortsArgs;
+use mbtool::error::Error;
 use mbtool::output::ports::write_ports;
 use mbtool::settings::Settings;
 use mbtool_core::transport::ports;
 
 pub fn run(settings: &Settings, args: &PortsArgs) -> Result<u8> {
+    // A copy that is not there would read as a machine without ports.
+    if args.root != std::path::Path::new("/") && !args.root.join("sys").is_dir() {
+        return Err(Error::usage(format!(
+            "--root {}: no sys folder there; give the folder that holds the copied sys, dev and proc",
+            args.root.display()
+        ))
+        .into());
+    }
     let found = ports::list(&args.root);
     let mut out = mbtool::output::stdout();
     write_ports(

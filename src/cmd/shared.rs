@@ -76,6 +76,9 @@ pub fn connect_to(settings: &Settings, slave: &str) -> Result<(Connection, u8)> 
     let target = connection::target(&settings.connection)?;
     let slave = parse_slave(slave, false, target.is_tcp()).map_err(Error::from)?;
     let mut connection = target.connect(&settings.connection)?;
+    if connection.master.path() == Some(PathName::Primary) {
+        warn_if_secondary_unavailable(settings);
+    }
     if settings.output.verbose {
         connection.master.trace(tracer(connection.mode));
     }
@@ -105,6 +108,15 @@ pub fn switch_text(settings: &Settings, switch: &Switch) -> String {
 pub fn tell_switches(settings: &Settings, master: &mut Master) {
     for switch in master.take_switches() {
         mbtool::note!("mbtool: {}", switch_text(settings, &switch));
+    }
+}
+
+/// A line on stderr when the secondary path cannot be opened now.
+pub fn warn_if_secondary_unavailable(settings: &Settings) {
+    if let Some(why) = connection::secondary_unavailable(&settings.connection) {
+        mbtool::note!(
+            "mbtool: warning: the secondary path cannot be opened now ({why}); the primary is used, and the secondary tried again when a change is due"
+        );
     }
 }
 

@@ -138,6 +138,15 @@ fn fake_machine(root: &Path) {
     link(root, "proc/4242/fd/3", "/dev/ttyUSB1");
     write(root, "proc/4343/comm", "cu\n");
     write(root, "var/lock/LCK..ttyS0", "      4343\n");
+    // A lock left by a process that is gone, and a FIFO where the CH340's serial number
+    // would be (a copied tree can hold anything): neither is read as data.
+    write(root, "run/lock/LCK..ttyUSB0", "99999\n");
+    let fifo = root.join(format!("{usb}/1-2/serial"));
+    let made = std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap();
+    assert!(made.success());
 }
 
 #[test]
@@ -199,6 +208,7 @@ fn ports_lists_each_adapter_with_its_ids_driver_and_holder() {
 #[test]
 fn ports_of_an_empty_machine_is_an_empty_table() {
     let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir(dir.path().join("sys")).unwrap();
     for format in ["csv", "json", "values"] {
         let output = mbtool()
             .args(["ports", "-o", format, "--root"])
@@ -213,6 +223,19 @@ fn ports_of_an_empty_machine_is_an_empty_table() {
         };
         assert_eq!(String::from_utf8(output.stdout).unwrap(), expected);
     }
+}
+
+#[test]
+fn ports_of_a_root_that_is_no_copy_is_refused() {
+    let output = mbtool()
+        .args(["ports", "--root", "/nonexistent"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&output.stderr),
+        "mbtool: --root /nonexistent: no sys folder there; give the folder that holds the copied sys, dev and proc\n"
+    );
 }
 
 #[test]

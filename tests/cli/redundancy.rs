@@ -276,7 +276,7 @@ fn a_dump_goes_on_through_the_secondary() {
         .args(["dump", "17", "400108"])
         .arg(format!("--port=tcp://127.0.0.1:{primary_port}"))
         .arg(format!("--secondary-port=tcp://127.0.0.1:{secondary_port}"))
-        .args(["--timeout", "100ms", "--switch-on", "timeout:1", "-o"])
+        .args(["--timeout", "100ms", "-o"])
         .arg(&file)
         .output()
         .unwrap();
@@ -284,12 +284,40 @@ fn a_dump_goes_on_through_the_secondary() {
     assert_eq!(output.status.code(), Some(0), "{stderr}");
     assert!(
         stderr.contains(&format!(
-            "mbtool: switched to the secondary path (tcp://127.0.0.1:{secondary_port}): 1 timeout"
+            "mbtool: switched to the secondary path (tcp://127.0.0.1:{secondary_port}): 3 timeouts"
         )),
         "{stderr}"
     );
     let saved = std::fs::read_to_string(&file).unwrap();
     assert!(saved.contains("400108 = 777"), "{saved}");
+    // A single read, which ends at a failure too, asks until the rule decides.
+    let output = mbtool()
+        .args(["read-holding", "17", "400108", "-o", "values"])
+        .arg(format!("--port=tcp://127.0.0.1:{primary_port}"))
+        .arg(format!("--secondary-port=tcp://127.0.0.1:{secondary_port}"))
+        .args(["--timeout", "100ms", "--switch-on", "timeout:2"])
+        .output()
+        .unwrap();
+    assert_eq!(String::from_utf8_lossy(&output.stdout), "777\n");
+    // With all of the conditions needed and one of them never holding, it gives up as
+    // a single path would, after asking as often as the rule counts.
+    let started = Instant::now();
+    let output = mbtool()
+        .args(["read-holding", "17", "400108", "-o", "values"])
+        .arg(format!("--port=tcp://127.0.0.1:{primary_port}"))
+        .arg(format!("--secondary-port=tcp://127.0.0.1:{secondary_port}"))
+        .args([
+            "--timeout",
+            "100ms",
+            "--switch-on",
+            "timeout:2,exception:0B",
+            "--switch-when",
+            "all",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(3));
+    assert!(started.elapsed() < Duration::from_secs(2));
 }
 
 #[test]

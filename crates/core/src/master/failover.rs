@@ -174,6 +174,21 @@ pub struct Failover {
     open: OpenPath,
     seen: Seen,
     switches: Vec<Switch>,
+    /// Ask a failed request again on the same path until the rule decides, for a command
+    /// that cannot go on past a failure (a dump, a single read), where a poll would
+    /// simply count it and ask at its next interval.
+    persistent: bool,
+}
+
+/// What a transaction's outcome did to the paths.
+#[derive(Debug, PartialEq, Eq)]
+pub(super) enum Weighed {
+    /// Nothing to weigh (a good answer, or no second path).
+    Nothing,
+    /// A failure counted toward the rule, which does not hold yet.
+    Counted,
+    /// The master is on the other path now.
+    Switched,
 }
 
 impl Failover {
@@ -186,12 +201,28 @@ impl Failover {
             open,
             seen: Seen::default(),
             switches,
+            persistent: false,
         }
     }
 
-    /// Counts a transaction's outcome on the path in use; why to switch, when the rule
-    /// now holds.
-    fn observe(&mut self, outcome: &Result<Reply, MasterError>) -> Option<String> {
+    /// Whether the request that failed `asked` times on this path is asked again there.
+    pub(super) fn asks_again(&self, asked: u32) -> bool {
+        let patience = self
+            .rule
+            .conditions
+            .iter()
+            .filter_map(|condition| match condition {
+                SwitchCondition::Timeouts(n) | SwitchCondition::BadFrames(n) => Some(*n),
+                _ => None,
+            })
+            .max()
+            .unwrap_or(1);
+        self.persistent && asked < patience
+    }
+
+    /// Counts a transaction's outcome on the path in use: `None` for a good answer, else
+    /// why to switch when the rule now holds (`Some(None)` while it does not).
+    fn observe(&mut self, outcome: &Result<Reply, MasterError>) -> Option<Option<String>> {
         let seen = &mut self.seen;
         match outcome {
             Ok(Reply::Exception(exception)) => {
@@ -228,7 +259,7 @@ impl Failover {
             SwitchWhen::Any => !held.is_empty(),
             SwitchWhen::All => held.len() == self.rule.conditions.len(),
         };
-        enough.then(|| held.join(" and "))
+        Some(enough.then(|| held.join(" and ")))
     }
 }
 
@@ -268,6 +299,15 @@ impl Master {
         self
     }
 
+    /// This master, asking a failed request again on its path until the rule decides
+    /// (see [`Failover::persistent`]), when `persistent` and there are two paths.
+    pub fn persistent(mut self, persistent: bool) -> Master {
+        if let Some(failover) = self.failover.as_mut() {
+            failover.persistent = persistent;
+        }
+        self
+    }
+
     /// The path in use, when there are two.
     pub fn path(&self) -> Option<PathName> {
         self.failover.as_ref().map(|failover| failover.on)
@@ -281,34 +321,47 @@ impl Master {
             .unwrap_or_default()
     }
 
-    /// Weighs a transaction's outcome; when the rule holds, changes to the other path and
-    /// says so. A path that cannot be opened is no change: the one in use stays, and its
-    /// count goes on.
-    pub(super) fn weigh(&mut self, outcome: &Result<Reply, MasterError>) -> bool {
+    /// Weighs a transaction's outcome; when the rule holds and `may_switch`, changes to
+    /// the other path and says so. A path that cannot be opened is no change: the one in
+    /// use stays, and its count goes on.
+    pub(super) fn weigh(
+        &mut self,
+        outcome: &Result<Reply, MasterError>,
+        may_switch: bool,
+    ) -> Weighed {
         let Some(mut failover) = self.failover.take() else {
-            return false;
+            return Weighed::Nothing;
         };
-        let Some(why) = failover.observe(outcome) else {
-            self.failover = Some(failover);
-            return false;
-        };
-        let to = failover.on.other();
-        let switched = match (failover.open)(to) {
-            Ok(mut other) => {
-                // The trace goes on across the change; the transaction ids too, so that a
-                // capture of both sides never sees one reused.
-                other.tracer = self.tracer.take();
-                other.transaction = self.transaction;
-                failover.on = to;
-                failover.seen = Seen::default();
-                failover.switches.push(Switch { to, why });
-                *self = other;
-                true
+        let weighed = match failover.observe(outcome) {
+            None => Weighed::Nothing,
+            Some(Some(why)) if may_switch => {
+                let to = failover.on.other();
+                match (failover.open)(to) {
+                    Ok(mut other) => {
+                        // The trace goes on across the change; the transaction ids too,
+                        // so that a capture of both sides never sees one reused.
+                        other.tracer = self.tracer.take();
+                        other.transaction = self.transaction;
+                        failover.on = to;
+                        failover.seen = Seen::default();
+                        failover.switches.push(Switch { to, why });
+                        *self = other;
+                        Weighed::Switched
+                    }
+                    Err(_) => Weighed::Counted,
+                }
             }
-            Err(_) => false,
+            Some(_) => Weighed::Counted,
         };
         self.failover = Some(failover);
-        switched
+        weighed
+    }
+
+    /// Whether a request that failed `asked` times is asked again on the same path.
+    pub(super) fn asks_again(&self, asked: u32) -> bool {
+        self.failover
+            .as_ref()
+            .is_some_and(|failover| failover.asks_again(asked))
     }
 }
 

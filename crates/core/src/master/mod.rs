@@ -279,14 +279,25 @@ impl Master {
         slave: u8,
         request: &Request,
     ) -> (Result<Reply, MasterError>, u32) {
-        let (outcome, tries) = self.transact_here(slave, request);
-        // On a change of path the request is asked again there, as a retry would be.
-        if self.weigh(&outcome) {
-            let (again, more) = self.transact_here(slave, request);
-            self.weigh(&again);
-            return (again, tries + more);
+        let (mut outcome, mut tries) = self.transact_here(slave, request);
+        let mut asked = 1;
+        loop {
+            match self.weigh(&outcome, true) {
+                // Asked again on the other path, as a retry would be; counted there, but
+                // no change back within one request.
+                failover::Weighed::Switched => {
+                    let (again, more) = self.transact_here(slave, request);
+                    self.weigh(&again, false);
+                    return (again, tries + more);
+                }
+                failover::Weighed::Counted if self.asks_again(asked) => {
+                    asked += 1;
+                    let (again, more) = self.transact_here(slave, request);
+                    (outcome, tries) = (again, tries + more);
+                }
+                _ => return (outcome, tries),
+            }
         }
-        (outcome, tries)
     }
 
     /// One request, with its retries, on the path in use.

@@ -181,10 +181,12 @@ fn holders(root: &Path) -> Vec<(Holder, String)> {
                 continue;
             };
             let device = format!("/dev/{tty}");
-            if !found
+            // A lock left by a process that is gone holds nothing.
+            let alive = root.join(format!("proc/{pid}")).is_dir();
+            let known = found
                 .iter()
-                .any(|(holder, held)| holder.pid == pid && *held == device)
-            {
+                .any(|(holder, held)| holder.pid == pid && *held == device);
+            if alive && !known {
                 let command = read_text(&root.join(format!("proc/{pid}/comm")));
                 found.push((Holder { pid, command }, device));
             }
@@ -200,12 +202,27 @@ fn link_name(path: &Path) -> Option<String> {
     Some(target.file_name()?.to_string_lossy().into_owned())
 }
 
-/// A sysfs attribute's text, trimmed; `None` when it is absent or empty.
+/// A sysfs attribute's text, trimmed, control characters as spaces; `None` when it is
+/// absent, empty or no regular file. Read up to a page, which is all sysfs gives: a copied
+/// tree with a huge file or a FIFO in it costs no more than that.
 #[cfg(target_os = "linux")]
 fn read_text(path: &Path) -> Option<String> {
-    let text = std::fs::read_to_string(path).ok()?;
-    let text = text.trim();
-    (!text.is_empty()).then(|| text.to_string())
+    use std::io::Read;
+    if !std::fs::metadata(path).ok()?.is_file() {
+        return None;
+    }
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .ok()?
+        .take(4096)
+        .read_to_end(&mut bytes)
+        .ok()?;
+    let text: String = String::from_utf8_lossy(&bytes)
+        .trim()
+        .chars()
+        .map(|c| if c.is_control() { ' ' } else { c })
+        .collect();
+    (!text.is_empty()).then_some(text)
 }
 
 #[cfg(target_os = "linux")]

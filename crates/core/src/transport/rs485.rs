@@ -141,7 +141,28 @@ impl KernelMode {
         if unsafe { libc::ioctl(fd, libc::TIOCSRS485, &mut wanted as *mut SerialRs485) } < 0 {
             return Err(unsupported(io::Error::last_os_error()));
         }
-        Ok(KernelMode { fd, before })
+        // The driver writes back what it does: a mode it left off, or RTS kept at the
+        // other level (hardware wired one way), would send with the transceiver wrong.
+        let mode = KernelMode { fd, before };
+        let level = if wanted.flags & SER_RS485_RTS_ON_SEND != 0 {
+            RtsLevel::High
+        } else {
+            RtsLevel::Low
+        };
+        if wanted.flags & SER_RS485_ENABLED == 0 {
+            return Err(unsupported(io::ErrorKind::Unsupported.into()));
+        }
+        if level != timing.sending {
+            return Err(io::Error::new(
+                io::ErrorKind::Unsupported,
+                format!(
+                    "{path} keeps RTS {} while sending in RS-485 mode, not {}",
+                    level.name(),
+                    timing.sending.name()
+                ),
+            ));
+        }
+        Ok(mode)
     }
 }
 
