@@ -391,3 +391,68 @@ fn a_device_that_closes_idle_connections_is_no_failure_of_its_path() {
         assert_eq!(output.status.code(), Some(0));
     }
 }
+
+#[test]
+fn each_path_is_told_by_its_own_port_and_line() {
+    let silent = Pty::new();
+    // No answer on the secondary: the timeout names the secondary and its line.
+    let output = mbtool()
+        .args(["read-holding", "17", "400108", "--timeout", "100ms"])
+        .args([
+            "--port",
+            "tcp://127.0.0.1:1",
+            "--secondary-port",
+            &silent.path,
+        ])
+        .args(["--secondary-baud", "9600", "--secondary-parity", "odd"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(3));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains(&format!(
+            "no answer from slave 17 within 100.00 ms on {} (RTU, 9600 baud, odd parity",
+            silent.path
+        )),
+        "{stderr}"
+    );
+    // --rs485 is for the path that is a serial line, the other being TCP.
+    let output = mbtool()
+        .args(["read-holding", "17", "400108", "--rs485"])
+        .args([
+            "--port",
+            "tcp://127.0.0.1:1",
+            "--secondary-port",
+            &silent.path,
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains(&format!("{} does not support RS-485 mode", silent.path)),
+        "{stderr}"
+    );
+    // A secondary that is not there is told when the poll starts, not when it is needed.
+    let (_device, port, _) = serve_tcp(&[]);
+    let output = mbtool()
+        .args(&port)
+        .args([
+            "read-holding",
+            "17",
+            "400108",
+            "--poll",
+            "10ms",
+            "--count",
+            "2",
+        ])
+        .args(["--secondary-port", "tcp://127.0.0.1:1", "-o", "values"])
+        .output()
+        .unwrap();
+    assert_eq!(String::from_utf8_lossy(&output.stdout), "555\n555\n");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.starts_with("mbtool: warning: the secondary path cannot be opened now"),
+        "{stderr}"
+    );
+}
