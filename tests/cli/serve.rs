@@ -252,6 +252,15 @@ fn injected_faults_give_what_the_master_promises() {
     std::thread::sleep(Duration::from_millis(300));
     let (code, out) = run_against(&port, "read-holding 17 400108 --timeout 300ms");
     assert_eq!(code, 4, "{out}");
+    // A corrupted answer is whole at once: it is told then, not at the timeout.
+    let started = std::time::Instant::now();
+    let (code, out) = run_against(&port, "read-holding 17 400108 --timeout 5s");
+    assert_eq!(code, 4, "{out}");
+    assert!(
+        started.elapsed() < Duration::from_secs(1),
+        "{:?}",
+        started.elapsed()
+    );
 }
 
 #[test]

@@ -423,6 +423,7 @@ impl Master {
         // Bytes have come that the framer may only decide on silence (a frame found after
         // noise, a function without a layout): the silence is waited for, not the timeout.
         let mut undecided = false;
+        let mut held_after_silence = false;
         let frame_end = match self.options.mode {
             Mode::Rtu => self.options.silence + self.options.character,
             _ => Duration::ZERO,
@@ -436,10 +437,16 @@ impl Master {
                 break Err(None);
             }
             // After a frame that is wrong, wait a little for the right one (behind noise,
-            // say) before giving up.
-            let give_up = match heard.problem {
-                Some(_) => deadline.min(Instant::now() + SETTLE),
-                None => deadline,
+            // say) before giving up; after bytes that the silence did not make a frame of
+            // (a corrupted answer), a little for the rest of them: a line does not pause
+            // inside a frame for longer than a USB adapter's latency timer.
+            let give_up = match (&heard.problem, held_after_silence) {
+                (Some(_), _) => deadline.min(Instant::now() + SETTLE),
+                (None, true) => {
+                    let last = self.last_traffic.unwrap_or_else(Instant::now);
+                    deadline.min(last + SETTLE)
+                }
+                (None, false) => deadline,
             };
             let silence_at = Instant::now() + frame_end;
             let wait_until = if undecided {
@@ -453,6 +460,7 @@ impl Master {
                     undecided = false;
                     let now = self.started.elapsed().as_micros() as u64;
                     self.framer.idle(now, &mut events);
+                    held_after_silence = true;
                 }
                 Ok(0) => {
                     // No more is awaited: what is held is decided now.
