@@ -300,7 +300,8 @@ impl Master {
     }
 
     /// This master, asking a failed request again on its path until the rule decides
-    /// (see [`Failover::persistent`]), when `persistent` and there are two paths.
+    /// (for a command that ends at a failure, where a poll would ask again at its next
+    /// interval), when `persistent` and there are two paths.
     pub fn persistent(mut self, persistent: bool) -> Master {
         if let Some(failover) = self.failover.as_mut() {
             failover.persistent = persistent;
