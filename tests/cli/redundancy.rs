@@ -26,6 +26,17 @@ fn device(port: u16, value: u16, faults: &[&str], dir: &std::path::Path) -> Stop
     server
 }
 
+/// The read every test polls, its rows as JSON, then `--poll`'s interval.
+const POLLED: [&str; 6] = ["read-holding", "17", "400108", "-o", "json", "--poll"];
+
+/// The JSON rows a poll printed.
+fn rows_of(stdout: &[u8]) -> Vec<Value> {
+    String::from_utf8_lossy(stdout)
+        .lines()
+        .map(|line| serde_json::from_str(line).expect("a JSON row"))
+        .collect()
+}
+
 /// A poll running in the background, its JSON rows read as they come.
 struct Poller {
     child: Stopped,
@@ -35,15 +46,8 @@ struct Poller {
 impl Poller {
     fn start(args: &[String]) -> Poller {
         let mut child = mbtool_process()
-            .args([
-                "read-holding",
-                "17",
-                "400108",
-                "-o",
-                "json",
-                "--poll",
-                "100ms",
-            ])
+            .args(POLLED)
+            .arg("100ms")
             .args(args)
             .stdout(Stdio::piped())
             .stderr(Stdio::null())
@@ -149,15 +153,8 @@ fn poll_with(faults: &[&str], switch: &[&str], count: u32) -> Vec<Value> {
     let _primary = device(primary_port, 555, faults, dir.path());
     let _secondary = device(secondary_port, 777, &[], dir.path());
     let output = mbtool()
-        .args([
-            "read-holding",
-            "17",
-            "400108",
-            "-o",
-            "json",
-            "--poll",
-            "10ms",
-        ])
+        .args(POLLED)
+        .arg("10ms")
         .arg(format!("--count={count}"))
         .arg(format!("--port=tcp://127.0.0.1:{primary_port}"))
         .arg(format!("--secondary-port=tcp://127.0.0.1:{secondary_port}"))
@@ -165,11 +162,7 @@ fn poll_with(faults: &[&str], switch: &[&str], count: u32) -> Vec<Value> {
         .args(switch)
         .output()
         .unwrap();
-    String::from_utf8(output.stdout)
-        .unwrap()
-        .lines()
-        .map(|line| serde_json::from_str(line).unwrap())
-        .collect()
+    rows_of(&output.stdout)
 }
 
 #[test]
@@ -361,28 +354,15 @@ fn a_device_that_closes_idle_connections_is_no_failure_of_its_path() {
         vec![format!("--secondary-port=tcp://127.0.0.1:{secondary_port}")],
     ] {
         let output = mbtool()
-            .args([
-                "read-holding",
-                "17",
-                "400108",
-                "-o",
-                "json",
-                "--poll",
-                "20ms",
-                "--count",
-                "4",
-            ])
+            .args(POLLED)
+            .args(["20ms", "--count", "4"])
             .arg(format!("--port=tcp://127.0.0.1:{closing}"))
             .args(["--timeout", "5s"])
             .args(&secondary)
             .timeout(Duration::from_secs(20))
             .output()
             .unwrap();
-        let rows: Vec<Value> = String::from_utf8(output.stdout)
-            .unwrap()
-            .lines()
-            .map(|line| serde_json::from_str(line).unwrap())
-            .collect();
+        let rows = rows_of(&output.stdout);
         assert_eq!(rows.len(), 4, "{secondary:?}: {rows:#?}");
         assert!(
             rows.iter().all(|row| value_of(row) == Some(555)),
