@@ -274,22 +274,27 @@ fn secondary_target(options: &Options) -> Result<Option<(&Options, Target)>> {
 }
 
 /// A master on the path `first` of the two `paths`, or on the other where it cannot be
-/// opened, changing between them as `rule` says.
+/// opened, changing between them as `rule` says. A port that cannot switch its RS-485
+/// transceiver as asked is a setting to correct, told as without a second path, not a
+/// path that is down.
 fn redundant_master(
     paths: [(Options, Endpoint, Mode); 2],
     rule: SwitchRule,
     first: PathName,
 ) -> Result<Master> {
-    let open = move |path: PathName| {
+    let open_path = move |path: PathName| {
         let (options, endpoint, mode) = match path {
             PathName::Primary => &paths[0],
             PathName::Secondary => &paths[1],
         };
-        single_master(options, endpoint, *mode).map_err(|e| e.to_string())
+        single_master(options, endpoint, *mode)
     };
-    let (master, on, switches) = match open(first) {
+    let setting =
+        |error: &Error| matches!(error, Error::Io(e) if e.kind() == io::ErrorKind::Unsupported);
+    let (master, on, switches) = match open_path(first) {
         Ok(master) => (master, first, Vec::new()),
-        Err(failed) => match open(first.other()) {
+        Err(failed) if setting(&failed) => return Err(failed),
+        Err(failed) => match open_path(first.other()) {
             Ok(master) => {
                 let switch = Switch {
                     to: first.other(),
@@ -297,6 +302,7 @@ fn redundant_master(
                 };
                 (master, first.other(), vec![switch])
             }
+            Err(other) if setting(&other) => return Err(other),
             Err(other) => {
                 return Err(Error::Io(io::Error::other(format!(
                     "neither path opens: {failed}; {other}"
@@ -304,6 +310,7 @@ fn redundant_master(
             }
         },
     };
+    let open = move |path| open_path(path).map_err(|e| e.to_string());
     Ok(master.with_failover(Failover::new(rule, on, Box::new(open), switches)))
 }
 

@@ -115,7 +115,7 @@ pub fn tell_switches(settings: &Settings, master: &mut Master) {
 pub fn warn_if_secondary_unavailable(settings: &Settings) {
     if let Some(why) = connection::secondary_unavailable(&settings.connection) {
         mbtool::note!(
-            "mbtool: warning: the secondary path cannot be opened now ({why}); the primary is used, and the secondary tried again when a change is due"
+            "mbtool: warning: the secondary path cannot be opened now ({why}); it is tried again when a change is due"
         );
     }
 }

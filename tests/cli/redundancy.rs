@@ -413,8 +413,24 @@ fn each_path_is_told_by_its_own_port_and_line() {
         stderr.contains(&format!("{} does not support RS-485 mode", silent.path)),
         "{stderr}"
     );
-    // A secondary that is not there is told when the poll starts, not when it is needed.
+    // A serial primary that refuses the RS-485 mode is a setting to correct, not a path
+    // that is down: told as without a second path, nothing read through the other.
     let (_device, port, _) = serve_tcp(&[]);
+    let output = mbtool()
+        .args(["read-holding", "17", "400108", "--port", &silent.path])
+        .args(["--secondary-port", &port[1]])
+        .env("MBTOOL_RS485", "1")
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(1));
+    assert_eq!(
+        String::from_utf8_lossy(&output.stderr),
+        format!(
+            "mbtool: {} does not support RS-485 mode: try --rts-toggle\n",
+            silent.path
+        )
+    );
+    // A secondary that is not there is told when the poll starts, not when it is needed.
     let output = mbtool()
         .args(&port)
         .args([

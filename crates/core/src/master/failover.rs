@@ -205,18 +205,19 @@ impl Failover {
         }
     }
 
-    /// Whether the request that failed `asked` times on this path is asked again there.
+    /// Whether the request that failed `asked` times on this path is asked again there:
+    /// as often as the rule could need, its largest count for any, every count and one
+    /// for each other condition for all.
     pub(super) fn asks_again(&self, asked: u32) -> bool {
-        let patience = self
-            .rule
-            .conditions
-            .iter()
-            .filter_map(|condition| match condition {
-                SwitchCondition::Timeouts(n) | SwitchCondition::BadFrames(n) => Some(*n),
-                _ => None,
-            })
-            .max()
-            .unwrap_or(1);
+        let needs = |condition: &SwitchCondition| match condition {
+            SwitchCondition::Timeouts(n) | SwitchCondition::BadFrames(n) => *n,
+            _ => 1,
+        };
+        let conditions = self.rule.conditions.iter();
+        let patience = match self.rule.when {
+            SwitchWhen::Any => conditions.map(needs).max().unwrap_or(1),
+            SwitchWhen::All => conditions.map(needs).sum(),
+        };
         self.persistent && asked < patience
     }
 
