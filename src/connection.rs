@@ -299,6 +299,7 @@ fn redundant_master(
                 let switch = Switch {
                     to: first.other(),
                     why: format!("the {} path cannot be opened ({failed})", first.name()),
+                    left: None,
                 };
                 (master, first.other(), vec![switch])
             }

@@ -13,6 +13,7 @@ use mbtool::connection::{self, Target};
 use mbtool::error::Error;
 use mbtool::output::watch::WatchState;
 use mbtool::settings::Settings;
+use mbtool_core::master::failover::Left;
 use mbtool_core::master::map::{read_points, Refused};
 use mbtool_core::master::plan::{plan, Operation};
 use mbtool_core::master::poll::{poll, PollOptions, Tick};
@@ -102,8 +103,9 @@ enum Update {
     Values(Vec<(usize, Value)>, Duration),
     Failed(RunError),
     Disconnected(String),
-    /// The master changed paths: the new title.
-    Switched(String),
+    /// The master changed paths: the new title, and how the request ended on the path
+    /// left.
+    Switched(String, Option<Left>),
 }
 
 pub fn run(settings: &Settings, args: &ReadByReferenceArgs) -> Result<u8> {
@@ -195,7 +197,7 @@ fn screen(
                     state.stats.disconnected += 1;
                     state.failed(why);
                 }
-                Update::Switched(title) => state.switched(title),
+                Update::Switched(title, left) => state.switched(title, left),
             }
         }
         terminal.draw(|frame| state.render(frame))?;
@@ -279,12 +281,15 @@ fn poll_thread(
                 ),
                 Tick::Failed(error) => Update::Failed(error),
                 Tick::Disconnected(why) => Update::Disconnected(why),
-                Tick::Switched(switch) => Update::Switched(format!(
-                    " slave {slave} on {} ({} path: {}) ",
-                    super::shared::path_name(settings, switch.to),
-                    switch.to.name(),
-                    switch.why
-                )),
+                Tick::Switched(switch) => Update::Switched(
+                    format!(
+                        " slave {slave} on {} ({} path: {}) ",
+                        super::shared::path_name(settings, switch.to),
+                        switch.to.name(),
+                        switch.why
+                    ),
+                    switch.left,
+                ),
             };
             updates
                 .send(update)

@@ -10,6 +10,7 @@ use ratatui::text::Line;
 use ratatui::widgets::{Block, Cell, Paragraph, Row, Table, Wrap};
 use ratatui::Frame;
 
+use mbtool_core::master::failover::Left;
 use mbtool_core::master::run::PollStats;
 use mbtool_core::model::map::Point;
 use mbtool_core::model::values::Value;
@@ -105,9 +106,13 @@ impl WatchState {
         self.last_error = Some(error);
     }
 
-    /// The master changed paths: the title says which one is read now, and why.
-    pub fn switched(&mut self, title: String) {
+    /// The master changed paths: the title says which one is read now, and why; how
+    /// the request that made the change ended on the path left is counted.
+    pub fn switched(&mut self, title: String, left: Option<Left>) {
         self.stats.switches += 1;
+        if let Some(left) = left {
+            self.stats.record_left(left);
+        }
         self.title = title;
     }
 

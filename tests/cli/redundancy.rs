@@ -452,3 +452,25 @@ fn each_path_is_told_by_its_own_port_and_line() {
         "{stderr}"
     );
 }
+
+#[test]
+fn the_summary_counts_the_failure_that_made_the_change() {
+    let dir = tempfile::tempdir().unwrap();
+    let (primary_port, secondary_port) = (free_port(), free_port());
+    let _primary = device(primary_port, 555, &["--drop", "1"], dir.path());
+    let _secondary = device(secondary_port, 777, &[], dir.path());
+    let output = mbtool()
+        .args(POLLED)
+        .args(["10ms", "--count", "3", "--timeout", "100ms"])
+        .arg(format!("--port=tcp://127.0.0.1:{primary_port}"))
+        .arg(format!("--secondary-port=tcp://127.0.0.1:{secondary_port}"))
+        .args(["--switch-on", "timeout:2"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    // The rows say 2 timeouts before the change; so does the tally.
+    assert!(
+        stderr.contains("mbtool: 3 requests, 2 answers, 2 timeouts, 0 bad frames, 0 exceptions, 1 change of path;"),
+        "{stderr}"
+    );
+}

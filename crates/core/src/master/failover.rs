@@ -152,6 +152,34 @@ pub struct Switch {
     pub to: PathName,
     /// What held on the one left: `3 timeouts`, `exception 0B`, `disconnected`.
     pub why: String,
+    /// How the request that made the change ended on the path left, before it was asked
+    /// again on this one: for a poll's tally. `None` for a path that could not be opened.
+    pub left: Option<Left>,
+}
+
+/// How a request ended on the path that was left.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Left {
+    /// No answer in time.
+    Timeout,
+    /// Only bad answers.
+    BadFrame,
+    /// An exception the rule counts.
+    Exception,
+    /// The connection or port lost.
+    Disconnected,
+}
+
+impl Left {
+    fn of(outcome: &Result<Reply, MasterError>) -> Option<Left> {
+        match outcome {
+            Err(MasterError::Timeout { .. }) => Some(Left::Timeout),
+            Err(MasterError::BadFrame { .. }) => Some(Left::BadFrame),
+            Err(MasterError::Io(_)) => Some(Left::Disconnected),
+            Ok(Reply::Exception(_)) => Some(Left::Exception),
+            _ => None,
+        }
+    }
 }
 
 /// Opens the master of a path, or says why it cannot.
@@ -346,7 +374,11 @@ impl Master {
                         other.transaction = self.transaction;
                         failover.on = to;
                         failover.seen = Seen::default();
-                        failover.switches.push(Switch { to, why });
+                        failover.switches.push(Switch {
+                            to,
+                            why,
+                            left: Left::of(outcome),
+                        });
                         *self = other;
                         Weighed::Switched
                     }

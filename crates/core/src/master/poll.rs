@@ -110,6 +110,9 @@ pub fn poll<T, E: std::fmt::Display>(
             let outcome = read(current);
             for switch in current.take_switches() {
                 stats.switches += 1;
+                if let Some(left) = switch.left {
+                    stats.record_left(left);
+                }
                 tick(Tick::Switched(switch))?;
             }
             last_path = current.path();

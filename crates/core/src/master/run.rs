@@ -5,6 +5,7 @@ use std::time::Duration;
 
 use thiserror::Error;
 
+use super::failover::Left;
 use super::plan::{Plan, RegisterBits};
 use super::{Master, MasterError, Reply};
 use crate::codec::function;
@@ -251,6 +252,17 @@ impl PollStats {
             Err(RunError::Master(MasterError::Timeout { .. })) => self.timeouts += 1,
             Err(RunError::Master(MasterError::BadFrame { .. })) => self.bad_frames += 1,
             Err(_) => self.other_errors += 1,
+        }
+    }
+
+    /// Counts how a request ended on the path it left, before it was asked again on the
+    /// other: a failure as the poll's rows tell it, though the poll got its answer.
+    pub fn record_left(&mut self, left: Left) {
+        match left {
+            Left::Timeout => self.timeouts += 1,
+            Left::BadFrame => self.bad_frames += 1,
+            Left::Exception => self.exceptions += 1,
+            Left::Disconnected => self.other_errors += 1,
         }
     }
 
