@@ -269,7 +269,6 @@ fn secondary_target(options: &Options) -> Result<Option<(&Options, Target)>> {
         Endpoint::parse(port).map_err(|e| Error::usage(format!("--secondary-port {port}: {e}")))?;
     let mode = mode(secondary, Some(&endpoint), Role::Master)
         .map_err(|e| Error::usage(format!("--secondary-port {port}: {e}")))?;
-    direction_needs_serial(secondary, &endpoint)?;
     Ok(Some((secondary, Target { endpoint, mode })))
 }
 

@@ -221,7 +221,6 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
     ];
     const MASTER: &[&str] = &["timeout", "retries", "frame_gap", "verbose"];
     const FORMAT: &[&str] = &["output", "json"];
-    const FORMAT_ONLY: &[&[&str]] = &[FORMAT];
     const ADDRESSES: &[&str] = &["pdu_addresses", "address_base"];
     const SPLIT: &[&str] = &["max_per_request"];
     const REGISTERS: &[&str] = &["value_type", "order"];
@@ -238,7 +237,7 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
     ];
     let groups: &[&[&str]] = match path {
         ["decode"] => &[&["mode"], FORMAT, REGISTERS],
-        ["ports"] => FORMAT_ONLY,
+        ["ports"] => &[FORMAT],
         ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
         ["sniff" | "serve"] => &[LINE, FORMAT],
         ["gateway"] => &[LINE, MASTER, FORMAT, &["log"]],

@@ -41,28 +41,43 @@ pub struct Holder {
 /// numbers in order (`ttyS2` before `ttyS10`). A tree that cannot be read has no ports.
 #[cfg(target_os = "linux")]
 pub fn list(root: &Path) -> Vec<PortInfo> {
-    let classes = root.join("sys/class/tty");
-    let Ok(entries) = std::fs::read_dir(&classes) else {
-        return Vec::new();
-    };
+    let mut ports = described(root);
     let by_id = stable_names(root);
     let holders = holders(root);
+    for port in &mut ports {
+        let name = port.device.trim_start_matches("/dev/");
+        port.by_id = by_id
+            .iter()
+            .find(|(_, target)| target == name)
+            .map(|(link, _)| format!("/dev/serial/by-id/{link}"));
+        port.busy = holders
+            .iter()
+            .filter(|(_, device)| *device == port.device)
+            .map(|(holder, _)| holder.clone())
+            .collect();
+    }
+    ports
+}
+
+/// The device names of the serial ports under `root`, as [`list`] orders them, without
+/// the look through every process that finds who holds them.
+#[cfg(target_os = "linux")]
+pub fn devices(root: &Path) -> Vec<String> {
+    described(root)
+        .into_iter()
+        .map(|port| port.device)
+        .collect()
+}
+
+/// Every serial port sysfs describes under `root`, sorted.
+#[cfg(target_os = "linux")]
+fn described(root: &Path) -> Vec<PortInfo> {
+    let Ok(entries) = std::fs::read_dir(root.join("sys/class/tty")) else {
+        return Vec::new();
+    };
     let mut ports: Vec<PortInfo> = entries
         .flatten()
-        .filter_map(|entry| {
-            let name = entry.file_name().to_string_lossy().into_owned();
-            let mut port = describe(&entry.path(), &name)?;
-            port.by_id = by_id
-                .iter()
-                .find(|(_, target)| *target == name)
-                .map(|(link, _)| format!("/dev/serial/by-id/{link}"));
-            port.busy = holders
-                .iter()
-                .filter(|(_, device)| *device == port.device)
-                .map(|(holder, _)| holder.clone())
-                .collect();
-            Some(port)
-        })
+        .filter_map(|entry| describe(&entry.path(), &entry.file_name().to_string_lossy()))
         .collect();
     ports.sort_by(|a, b| natural_key(&a.device).cmp(&natural_key(&b.device)));
     ports
@@ -141,12 +156,12 @@ fn holders(root: &Path) -> Vec<(Holder, String)> {
         else {
             continue;
         };
-        let Ok(fds) = std::fs::read_dir(process.path().join("fd")) else {
-            continue;
-        };
         if pid == own {
             continue;
         }
+        let Ok(fds) = std::fs::read_dir(process.path().join("fd")) else {
+            continue;
+        };
         let mut devices: Vec<String> = fds
             .flatten()
             .filter_map(|fd| std::fs::read_link(fd.path()).ok())
@@ -228,6 +243,12 @@ fn read_text(path: &Path) -> Option<String> {
 #[cfg(target_os = "linux")]
 fn read_hex(path: &Path) -> Option<u16> {
     u16::from_str_radix(&read_text(path)?, 16).ok()
+}
+
+/// The device names of the serial ports, as [`list`] orders them.
+#[cfg(not(target_os = "linux"))]
+pub fn devices(root: &Path) -> Vec<String> {
+    list(root).into_iter().map(|port| port.device).collect()
 }
 
 /// What serialport reports, where there is no sysfs to read.

@@ -73,9 +73,6 @@ impl Choice for RtsLevel {
     }
 }
 
-/// The longest delay the kernel's RS-485 mode takes before or after sending.
-pub const MAX_KERNEL_DELAY: Duration = Duration::from_millis(100);
-
 /// The kernel's RS-485 mode on an open port, with its settings as they were before, to be
 /// put back.
 #[cfg(target_os = "linux")]

@@ -207,10 +207,7 @@ pub fn is_pseudo_terminal(path: &str) -> bool {
 
 /// The serial ports of this machine, by their device names, as the system lists them.
 pub fn ports_here() -> Vec<String> {
-    super::ports::list(std::path::Path::new("/"))
-        .into_iter()
-        .map(|port| port.device)
-        .collect()
+    super::ports::devices(std::path::Path::new("/"))
 }
 
 /// `--low-latency`: the FTDI latency timer of the USB serial adapter behind `path` to 1 ms,
