@@ -408,7 +408,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read' {
-            [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Read the points of a register map (CSV, or Home Assistant YAML), by name')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
@@ -442,6 +441,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Read the points of a register map (CSV, or Home Assistant YAML), by name')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -587,8 +587,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;write' {
-            [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out')
-            [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Force the function: 5 or 15 for coils, 6 or 16 for registers')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
@@ -611,6 +609,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
             [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
             [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
+            [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out')
+            [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Force the function: 5 or 15 for coils, 6 or 16 for registers')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -656,9 +656,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;scan' {
-            [CompletionResult]::new('--ids', '--ids', [CompletionResultType]::ParameterName, 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200')
-            [CompletionResult]::new('--probe', '--probe', [CompletionResultType]::ParameterName, 'What each id is asked: read (03, one register at address 0) or id (17)')
-            [CompletionResult]::new('--listen', '--listen', [CompletionResultType]::ParameterName, 'Listen this long at each setting before sending anything: slaves heard answering another master are found without adding traffic')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
@@ -675,12 +672,15 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--all', '--all', [CompletionResultType]::ParameterName, 'Try every setting of the sweep, not only up to the first where a slave answers')
+            [CompletionResult]::new('--ids', '--ids', [CompletionResultType]::ParameterName, 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200')
+            [CompletionResult]::new('--probe', '--probe', [CompletionResultType]::ParameterName, 'What each id is asked: read (03, one register at address 0) or id (17)')
+            [CompletionResult]::new('--listen', '--listen', [CompletionResultType]::ParameterName, 'Listen this long at each setting before sending anything: slaves heard answering another master are found without adding traffic')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--all', '--all', [CompletionResultType]::ParameterName, 'Try every setting of the sweep, not only up to the first where a slave answers')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
@@ -688,7 +688,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;watch' {
-            [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Watch the points of a register map (CSV, or Home Assistant YAML)')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
@@ -718,6 +717,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Watch the points of a register map (CSV, or Home Assistant YAML)')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
@@ -775,12 +775,12 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--count', '--count', [CompletionResultType]::ParameterName, 'How many round trips of return query data to time [default: 5]')
-            [CompletionResult]::new('--clear', '--clear', [CompletionResultType]::ParameterName, 'After reading them, clear the device''s counters (08/0A)')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--clear', '--clear', [CompletionResultType]::ParameterName, 'After reading them, clear the device''s counters (08/0A)')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
@@ -849,11 +849,11 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
-            [CompletionResult]::new('--dry-run', '--dry-run', [CompletionResultType]::ParameterName, 'Print the frames that would be sent, and send nothing')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--dry-run', '--dry-run', [CompletionResultType]::ParameterName, 'Print the frames that would be sent, and send nothing')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
@@ -861,7 +861,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;decode' {
-            [CompletionResult]::new('--direction', '--direction', [CompletionResultType]::ParameterName, 'Read every frame as a request or as a response instead of inferring it')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
@@ -869,6 +868,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
             [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
             [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
+            [CompletionResult]::new('--direction', '--direction', [CompletionResultType]::ParameterName, 'Read every frame as a request or as a response instead of inferring it')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
@@ -912,225 +912,86 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;read-coils' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-inputs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-discrete-inputs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-holding' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
-            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-holding-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
-            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-input-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
-            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-input-regs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
-            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read' {
             [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Read the points of a register map (CSV, or Home Assistant YAML), by name')
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
-            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;write-coil' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;write-coils' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;write-register' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;write-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
-            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
@@ -1138,38 +999,15 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         'mbtool;encode;write' {
             [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out')
             [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Force the function: 5 or 15 for coils, 6 or 16 for registers')
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
-            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
-            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;raw' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
-            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
-            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
-            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
@@ -1226,13 +1064,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;sniff' {
-            [CompletionResult]::new('--input', '--input', [CompletionResultType]::ParameterName, 'Read a capture instead of the port (''-'' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line')
-            [CompletionResult]::new('--interface', '--interface', [CompletionResultType]::ParameterName, 'Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng')
-            [CompletionResult]::new('--tcp-port', '--tcp-port', [CompletionResultType]::ParameterName, 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)')
-            [CompletionResult]::new('--save', '--save', [CompletionResultType]::ParameterName, 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng')
-            [CompletionResult]::new('--pcap', '--pcap', [CompletionResultType]::ParameterName, 'Also write the frames to a pcap file for Wireshark (link type 147, see above)')
-            [CompletionResult]::new('--slave', '--slave', [CompletionResultType]::ParameterName, 'Show only the frames of this slave; repeatable')
-            [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Show only the frames of this function code (3, 0x10); repeatable')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
@@ -1247,11 +1078,18 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--stats', '--stats', [CompletionResultType]::ParameterName, 'At the end, a table (or JSON lines of "type":"stats") per server and unit: requests, answers, exceptions by code, unanswered, and response time min, mean, p95 and max')
-            [CompletionResult]::new('--low-latency', '--low-latency', [CompletionResultType]::ParameterName, 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen')
+            [CompletionResult]::new('--input', '--input', [CompletionResultType]::ParameterName, 'Read a capture instead of the port (''-'' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line')
+            [CompletionResult]::new('--interface', '--interface', [CompletionResultType]::ParameterName, 'Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng')
+            [CompletionResult]::new('--tcp-port', '--tcp-port', [CompletionResultType]::ParameterName, 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)')
+            [CompletionResult]::new('--save', '--save', [CompletionResultType]::ParameterName, 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng')
+            [CompletionResult]::new('--pcap', '--pcap', [CompletionResultType]::ParameterName, 'Also write the frames to a pcap file for Wireshark (link type 147, see above)')
+            [CompletionResult]::new('--slave', '--slave', [CompletionResultType]::ParameterName, 'Show only the frames of this slave; repeatable')
+            [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Show only the frames of this function code (3, 0x10); repeatable')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('--stats', '--stats', [CompletionResultType]::ParameterName, 'At the end, a table (or JSON lines of "type":"stats") per server and unit: requests, answers, exceptions by code, unanswered, and response time min, mean, p95 and max')
+            [CompletionResult]::new('--low-latency', '--low-latency', [CompletionResultType]::ParameterName, 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
@@ -1259,6 +1097,20 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;serve' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
+            [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
+            [CompletionResult]::new('--parity', '--parity', [CompletionResultType]::ParameterName, 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one')
+            [CompletionResult]::new('--data-bits', '--data-bits', [CompletionResultType]::ParameterName, 'Serial data bits [default: 8, 7 in ASCII mode]')
+            [CompletionResult]::new('--stop-bits', '--stop-bits', [CompletionResultType]::ParameterName, 'Serial stop bits [default: 1 with parity, 2 without]')
+            [CompletionResult]::new('--rs485-delay-before', '--rs485-delay-before', [CompletionResultType]::ParameterName, 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rs485-delay-after', '--rs485-delay-after', [CompletionResultType]::ParameterName, 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--slave', '--slave', [CompletionResultType]::ParameterName, 'Answer as this slave id; repeat for several [default: 17]')
             [CompletionResult]::new('--data', '--data', [CompletionResultType]::ParameterName, 'Initial data and the addresses that exist (see above for the format)')
             [CompletionResult]::new('--read-only', '--read-only', [CompletionResultType]::ParameterName, 'Addresses that may not be written (exception 02): a reference or a range; repeatable')
@@ -1270,26 +1122,12 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--vendor', '--vendor', [CompletionResultType]::ParameterName, 'Device identification: vendor name')
             [CompletionResult]::new('--product-code', '--product-code', [CompletionResultType]::ParameterName, 'Device identification: product code')
             [CompletionResult]::new('--identity', '--identity', [CompletionResultType]::ParameterName, 'Device identification: any object, by name or id (VendorUrl=https://example.com, ProductName=Pump, 0x80=serial 4711); repeatable')
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
-            [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
-            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
-            [CompletionResult]::new('--parity', '--parity', [CompletionResultType]::ParameterName, 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one')
-            [CompletionResult]::new('--data-bits', '--data-bits', [CompletionResultType]::ParameterName, 'Serial data bits [default: 8, 7 in ASCII mode]')
-            [CompletionResult]::new('--stop-bits', '--stop-bits', [CompletionResultType]::ParameterName, 'Serial stop bits [default: 1 with parity, 2 without]')
-            [CompletionResult]::new('--rs485-delay-before', '--rs485-delay-before', [CompletionResultType]::ParameterName, 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle')
-            [CompletionResult]::new('--rs485-delay-after', '--rs485-delay-after', [CompletionResultType]::ParameterName, 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle')
-            [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
-            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
-            [CompletionResult]::new('--garbage', '--garbage', [CompletionResultType]::ParameterName, 'Send a few noise bytes (00, FE) before each answer, as a bus being handed over does')
-            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'No log line per request')
-            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'No log line per request')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('--garbage', '--garbage', [CompletionResultType]::ParameterName, 'Send a few noise bytes (00, FE) before each answer, as a bus being handed over does')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'No log line per request')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'No log line per request')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
@@ -1297,8 +1135,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;gateway' {
-            [CompletionResult]::new('--listen', '--listen', [CompletionResultType]::ParameterName, 'Where clients connect: tcp://ADDRESS[:PORT]; repeatable')
-            [CompletionResult]::new('--unit-map', '--unit-map', [CompletionResultType]::ParameterName, 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
@@ -1317,14 +1153,16 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Also append every transaction, with its time, to FILE: CSV for a .csv name, JSON Lines for any other')
-            [CompletionResult]::new('--broadcast-reply', '--broadcast-reply', [CompletionResultType]::ParameterName, 'Answer a broadcast (unit 0) as a slave answers a write, for clients that wait for one')
-            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'No row per transaction (stderr still tells the line and the clients)')
-            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'No row per transaction (stderr still tells the line and the clients)')
+            [CompletionResult]::new('--listen', '--listen', [CompletionResultType]::ParameterName, 'Where clients connect: tcp://ADDRESS[:PORT]; repeatable')
+            [CompletionResult]::new('--unit-map', '--unit-map', [CompletionResultType]::ParameterName, 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--broadcast-reply', '--broadcast-reply', [CompletionResultType]::ParameterName, 'Answer a broadcast (unit 0) as a slave answers a write, for clients that wait for one')
+            [CompletionResult]::new('-q', '-q', [CompletionResultType]::ParameterName, 'No row per transaction (stderr still tells the line and the clients)')
+            [CompletionResult]::new('--quiet', '--quiet', [CompletionResultType]::ParameterName, 'No row per transaction (stderr still tells the line and the clients)')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
@@ -1332,9 +1170,9 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;ports' {
-            [CompletionResult]::new('--root', '--root', [CompletionResultType]::ParameterName, 'Read sys, dev and proc under DIR instead of / (a copy taken from another machine)')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
+            [CompletionResult]::new('--root', '--root', [CompletionResultType]::ParameterName, 'Read sys, dev and proc under DIR instead of / (a copy taken from another machine)')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
@@ -1433,50 +1271,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;help;encode' {
-            [CompletionResult]::new('read-coils', 'read-coils', [CompletionResultType]::ParameterValue, 'Read coils (function 01)')
-            [CompletionResult]::new('read-inputs', 'read-inputs', [CompletionResultType]::ParameterValue, 'Read discrete inputs (function 02)')
-            [CompletionResult]::new('read-holding', 'read-holding', [CompletionResultType]::ParameterValue, 'Read holding registers (function 03)')
-            [CompletionResult]::new('read-input-registers', 'read-input-registers', [CompletionResultType]::ParameterValue, 'Read input registers (function 04)')
-            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by reference: its first digit picks the table')
-            [CompletionResult]::new('write-coil', 'write-coil', [CompletionResultType]::ParameterValue, 'Write one coil (function 05)')
-            [CompletionResult]::new('write-coils', 'write-coils', [CompletionResultType]::ParameterValue, 'Write coils (function 15)')
-            [CompletionResult]::new('write-register', 'write-register', [CompletionResultType]::ParameterValue, 'Write one holding register (function 06)')
-            [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
-            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
-            [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
-            break
-        }
-        'mbtool;help;encode;read-coils' {
-            break
-        }
-        'mbtool;help;encode;read-inputs' {
-            break
-        }
-        'mbtool;help;encode;read-holding' {
-            break
-        }
-        'mbtool;help;encode;read-input-registers' {
-            break
-        }
-        'mbtool;help;encode;read' {
-            break
-        }
-        'mbtool;help;encode;write-coil' {
-            break
-        }
-        'mbtool;help;encode;write-coils' {
-            break
-        }
-        'mbtool;help;encode;write-register' {
-            break
-        }
-        'mbtool;help;encode;write-registers' {
-            break
-        }
-        'mbtool;help;encode;write' {
-            break
-        }
-        'mbtool;help;encode;raw' {
             break
         }
         'mbtool;help;sniff' {

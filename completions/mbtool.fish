@@ -503,7 +503,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s v -l v
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l map -d 'Read the points of a register map (CSV, or Home Assistant YAML), by name' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
@@ -559,6 +558,7 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l map -d 'Read the points of a register map (CSV, or Home Assistant YAML), by name' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l json -d 'The same as --output json'
@@ -718,11 +718,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s v -l v
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l map -d 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers' -r -f -a "5\t''
-6\t''
-15\t''
-16\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
@@ -762,6 +757,11 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l map -d 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers' -r -f -a "5\t''
+6\t''
+15\t''
+16\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l json -d 'The same as --output json'
@@ -811,10 +811,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l json -d 'The same 
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l ids -d 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l probe -d 'What each id is asked: read (03, one register at address 0) or id (17)' -r -f -a "read\t'Read one holding register at protocol address 0 (function 03)'
-id\t'Report server id (function 17)'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l listen -d 'Listen this long at each setting before sending anything: slaves heard answering another master are found without adding traffic' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
@@ -835,14 +831,17 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s o -l output -d 'O
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l all -d 'Try every setting of the sweep, not only up to the first where a slave answers'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l ids -d 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l probe -d 'What each id is asked: read (03, one register at address 0) or id (17)' -r -f -a "read\t'Read one holding register at protocol address 0 (function 03)'
+id\t'Report server id (function 17)'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l listen -d 'Listen this long at each setting before sending anything: slaves heard answering another master are found without adding traffic' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l all -d 'Try every setting of the sweep, not only up to the first where a slave answers'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l map -d 'Watch the points of a register map (CSV, or Home Assistant YAML)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
@@ -892,6 +891,7 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l map -d 'Watch the points of a register map (CSV, or Home Assistant YAML)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
@@ -946,11 +946,11 @@ json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l count -d 'How many round trips of return query data to time [default: 5]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l clear -d 'After reading them, clear the device\'s counters (08/0A)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l clear -d 'After reading them, clear the device\'s counters (08/0A)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
@@ -1024,14 +1024,12 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l dry-run -d 'Print the frames that would be sent, and send nothing'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l dry-run -d 'Print the frames that would be sent, and send nothing'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l direction -d 'Read every frame as a request or as a response instead of inferring it' -r -f -a "request\t''
-response\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1054,6 +1052,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l order -d 'Byte 
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l direction -d 'Read every frame as a request or as a response instead of inferring it' -r -f -a "request\t''
+response\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s V -l version -d 'Print version'
@@ -1102,350 +1102,39 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_see
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "raw" -d 'Send any PDU and decode the answer'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l map -d 'Read the points of a register map (CSV, or Home Assistant YAML), by name' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l map -d 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers' -r -f -a "5\t''
 6\t''
 15\t''
 16\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-coils" -d 'Read coils (function 01)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
@@ -1459,13 +1148,6 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "raw" -d 'Send any PDU and decode the answer'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a capture instead of the port (\'-\' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l interface -d 'Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l tcp-port -d 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pcap -d 'Also write the frames to a pcap file for Wireshark (link type 147, see above)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l slave -d 'Show only the frames of this slave; repeatable' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l function -d 'Show only the frames of this function code (3, 0x10); repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
@@ -1484,24 +1166,20 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s o -l output -d '
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stats -d 'At the end, a table (or JSON lines of "type":"stats") per server and unit: requests, answers, exceptions by code, unanswered, and response time min, mean, p95 and max'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l low-latency -d 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a capture instead of the port (\'-\' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l interface -d 'Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l tcp-port -d 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pcap -d 'Also write the frames to a pcap file for Wireshark (link type 147, see above)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l slave -d 'Show only the frames of this slave; repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l function -d 'Show only the frames of this function code (3, 0x10); repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stats -d 'At the end, a table (or JSON lines of "type":"stats") per server and unit: requests, answers, exceptions by code, unanswered, and response time min, mean, p95 and max'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l low-latency -d 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l slave -d 'Answer as this slave id; repeat for several [default: 17]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data -d 'Initial data and the addresses that exist (see above for the format)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l read-only -d 'Addresses that may not be written (exception 02): a reference or a range; repeatable' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l delay -d 'Wait this long before each answer' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l drop -d 'Leave this share of requests unanswered: 0 to 1, or 5%' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l corrupt -d 'Corrupt this share of answers (a bad checksum; over TCP a wrong function): 0 to 1, or 5%' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l exception -d 'Answer exception CODE to every request, or to those touching RANGE (CODE@RANGE, as in 2@400100-400120); repeatable' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l seed -d 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l vendor -d 'Device identification: vendor name' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l product-code -d 'Device identification: product code' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l identity -d 'Device identification: any object, by name or id (VendorUrl=https://example.com, ProductName=Pump, 0x80=serial 4711); repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
@@ -1520,15 +1198,24 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s o -l output -d '
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l garbage -d 'Send a few noise bytes (00, FE) before each answer, as a bus being handed over does'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s q -l quiet -d 'No log line per request'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l slave -d 'Answer as this slave id; repeat for several [default: 17]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data -d 'Initial data and the addresses that exist (see above for the format)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l read-only -d 'Addresses that may not be written (exception 02): a reference or a range; repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l delay -d 'Wait this long before each answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l drop -d 'Leave this share of requests unanswered: 0 to 1, or 5%' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l corrupt -d 'Corrupt this share of answers (a bad checksum; over TCP a wrong function): 0 to 1, or 5%' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l exception -d 'Answer exception CODE to every request, or to those touching RANGE (CODE@RANGE, as in 2@400100-400120); repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l seed -d 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l vendor -d 'Device identification: vendor name' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l product-code -d 'Device identification: product code' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l identity -d 'Device identification: any object, by name or id (VendorUrl=https://example.com, ProductName=Pump, 0x80=serial 4711); repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l garbage -d 'Send a few noise bytes (00, FE) before each answer, as a bus being handed over does'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s q -l quiet -d 'No log line per request'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l listen -d 'Where clients connect: tcp://ADDRESS[:PORT]; repeatable' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l unit-map -d 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
@@ -1551,19 +1238,21 @@ json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l log -d 'Also append every transaction, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l broadcast-reply -d 'Answer a broadcast (unit 0) as a slave answers a write, for clients that wait for one'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s q -l quiet -d 'No row per transaction (stderr still tells the line and the clients)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l listen -d 'Where clients connect: tcp://ADDRESS[:PORT]; repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l unit-map -d 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l broadcast-reply -d 'Answer a broadcast (unit 0) as a slave answers a write, for clients that wait for one'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s q -l quiet -d 'No row per transaction (stderr still tells the line and the clients)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -l root -d 'Read sys, dev and proc under DIR instead of / (a copy taken from another machine)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -l root -d 'Read sys, dev and proc under DIR instead of / (a copy taken from another machine)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -s V -l version -d 'Print version'
@@ -1595,14 +1284,3 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway ports generate help" -f -a "ports" -d 'The serial ports here, and which adapter each one is'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway ports generate help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway ports generate help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-coils" -d 'Read coils (function 01)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-holding" -d 'Read holding registers (function 03)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read-input-registers" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "read" -d 'Read by reference: its first digit picks the table'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-coil" -d 'Write one coil (function 05)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-coils" -d 'Write coils (function 15)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-register" -d 'Write one holding register (function 06)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and __fish_seen_subcommand_from encode" -f -a "raw" -d 'Send any PDU and decode the answer'

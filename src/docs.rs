@@ -369,11 +369,13 @@ pub fn command() -> clap::Command {
 }
 
 /// The definition `args` are parsed with first. A call for help gets all of [`command`].
-/// Any other command line is parsed with the top of the definition as derived and only the
-/// command it seems to name, given its argument help: before a parse clap copies every
-/// global option into every command, which cost each run more than most commands' own
-/// work. A command line this refuses is parsed again with [`whole_parser`], so the parse
-/// and its errors are the same either way; only help shows what [`command`] adds.
+/// Any other command line is parsed with the top of the definition and only the command it
+/// seems to name, or no command at all when it names none (`mbtool --version`). Every
+/// command's arguments are derived only when it is built (clap's `defer`), and before a
+/// parse clap copies every global option into every command: both cost each run more than
+/// most commands' own work. A command line this refuses is parsed again with
+/// [`whole_parser`], so the parse and its errors are the same either way; only help and
+/// errors show what [`command`] adds.
 pub fn parser(args: &[std::ffi::OsString]) -> clap::Command {
     let help = args
         .iter()
@@ -383,17 +385,17 @@ pub fn parser(args: &[std::ffi::OsString]) -> clap::Command {
         return command();
     }
     let command = Cli::command();
-    match named_command(&command, args) {
-        Some(name) => only_command(crate::cli::with_argument_help_of(command, &name), &name),
-        None => command,
-    }
+    let name = named_command(&command, args);
+    only_command(command, name.as_deref())
 }
 
-/// Every command as derived, the one `args` seem to name given its argument help: for a
+/// Every command, built, the one `args` seem to name given its argument help: for a
 /// command line [`parser`] refused, since the word taken for the command may be an
 /// option's value (`-o info dump ...`), and an error is told with every command known.
 pub fn whole_parser(args: &[std::ffi::OsString]) -> clap::Command {
-    let command = Cli::command();
+    let mut command = Cli::command();
+    // Arguments are there to describe only once the deferred commands are built.
+    command.build();
     match named_command(&command, args) {
         Some(name) => crate::cli::with_argument_help_of(command, &name),
         None => command,
@@ -411,21 +413,21 @@ fn named_command(command: &clap::Command, args: &[std::ffi::OsString]) -> Option
     })
 }
 
-/// The top of `command` with `name` its only command: before a parse clap copies every
-/// global option into every command, and no other command is parsed.
-fn only_command(command: clap::Command, name: &str) -> clap::Command {
-    let Some(named) = command.find_subcommand(name).cloned() else {
-        return command;
-    };
-    clap::Command::new("mbtool")
+/// The top of `command` with `name` its only command, or none: before a parse clap copies
+/// every global option into every command, and no other command is parsed.
+fn only_command(command: clap::Command, name: Option<&str>) -> clap::Command {
+    let top = clap::Command::new("mbtool")
         .version(env!("CARGO_PKG_VERSION"))
         .propagate_version(command.is_propagate_version_set())
         .subcommand_required(command.is_subcommand_required_set())
         .arg_required_else_help(command.is_arg_required_else_help_set())
         .max_term_width(crate::cli::HELP_WIDTH)
         .args(command.get_arguments().cloned())
-        .groups(command.get_groups().cloned())
-        .subcommand(named)
+        .groups(command.get_groups().cloned());
+    match name.and_then(|name| command.find_subcommand(name)) {
+        Some(named) => top.subcommand(named.clone()),
+        None => top,
+    }
 }
 
 fn hide_untaken_options(command: clap::Command) -> clap::Command {

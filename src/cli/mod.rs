@@ -38,6 +38,10 @@ Numbers may be decimal, 0x hex or 0b binary.";
 /// The widest help is wrapped at, however wide the terminal.
 pub const HELP_WIDTH: usize = 100;
 
+/// The help's place of the first of the options every command shares, after any command's
+/// own (numbered from 0).
+const COMMON_OPTIONS_FIRST_ORDER: usize = 1000;
+
 /// The top of the command line: `mbtool [OPTIONS] <COMMAND> [ARGS]`.
 #[derive(Clone, Debug, Parser)]
 #[command(
@@ -46,7 +50,11 @@ pub const HELP_WIDTH: usize = 100;
     about = ABOUT,
     long_about = LONG_ABOUT,
     propagate_version = true,
-    max_term_width = HELP_WIDTH
+    max_term_width = HELP_WIDTH,
+    // The options of every command come after a command's own in its help: a command's
+    // own arguments are added late (see `docs::parser`), after the common ones are copied
+    // in, and number from 0.
+    next_display_order = COMMON_OPTIONS_FIRST_ORDER
 )]
 pub struct Cli {
     #[command(flatten)]
@@ -64,6 +72,7 @@ pub struct Cli {
 }
 
 #[derive(Clone, Debug, Subcommand)]
+#[command(defer = true)]
 pub enum Command {
     #[command(flatten)]
     Request(RequestCommand),
@@ -189,12 +198,16 @@ fn describe(sub: clap::Command) -> clap::Command {
             .iter()
             .find(|(command, id, ..)| *command == name && arg.get_id() == *id);
         match entry {
-            Some((_, _, value_name, help)) => arg
-                .value_name(*value_name)
-                .help(*help)
-                .help_heading(None::<&str>)
-                // A file is named, not picked from the formats --output lists elsewhere.
-                .hide_possible_values(*value_name == "FILE"),
+            Some((_, _, value_name, help)) => {
+                let order = arg.get_display_order() % COMMON_OPTIONS_FIRST_ORDER;
+                arg.value_name(*value_name)
+                    .help(*help)
+                    .help_heading(None::<&str>)
+                    // Among the command's own options, where the common ones start at 1000.
+                    .display_order(order)
+                    // A file is named, not picked from the formats --output lists elsewhere.
+                    .hide_possible_values(*value_name == "FILE")
+            }
             None => arg,
         }
     })

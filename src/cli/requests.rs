@@ -5,8 +5,10 @@ use clap::{Args, Subcommand};
 use mbtool_core::master::plan::{How, Operation};
 use mbtool_core::model::address::Table;
 
-/// The commands that send requests; `encode` takes the same ones.
+// The commands that send requests; `encode` takes the same ones. A plain comment: a doc
+// comment would become the about of `encode`, which builds these commands late.
 #[derive(Clone, Debug, Subcommand)]
+#[command(defer = true)]
 pub enum RequestCommand {
     /// Read coils (function 01)
     ReadCoils(ReadArgs),

@@ -191,34 +191,54 @@ fn every_command_says_which_options_it_takes() {
     }
 }
 
-/// A command line is parsed without building every command's definition first: building
-/// copies every global option into every command, which cost each run more than its work.
+/// A command line is parsed without building every command's definition first: deriving
+/// every command's arguments, and copying every global option into every command, cost
+/// each run more than its work.
 #[test]
 fn a_command_line_is_parsed_without_building_every_command() {
+    use clap::CommandFactory;
     let args = |line: &str| -> Vec<std::ffi::OsString> {
         line.split_whitespace().map(Into::into).collect()
     };
-    // A command line is parsed with the command it names alone, with its argument help.
+    // The definition as derived names every command, and derives none's arguments.
+    let derived = mbtool::cli::Cli::command();
+    assert!(derived.get_subcommands().count() > 20);
+    assert!(derived
+        .get_subcommands()
+        .all(|sub| sub.get_arguments().next().is_none()));
+    // A command line is parsed with the command it names alone, still not derived: the
+    // parse derives what it goes through.
     let parser = mbtool::docs::parser(&args("mbtool --port sim read-coils 17 1"));
     let names: Vec<&str> = parser.get_subcommands().map(|sub| sub.get_name()).collect();
     assert_eq!(names, ["read-coils"]);
-    // Nothing is built before the parse: building copies every global option into the
-    // command, and a parse builds only what it goes through.
     let named = parser.find_subcommand("read-coils").unwrap();
-    assert!(named.get_arguments().all(|arg| !arg.is_global_set()));
-    let address = named
-        .get_arguments()
-        .find(|a| a.get_id() == "address")
+    assert!(named.get_arguments().next().is_none());
+    let matches = parser
+        .try_get_matches_from(args("mbtool --port sim read-coils 17 1 --timeout 1s"))
+        .unwrap();
+    let (_, leaf) = matches.subcommand().unwrap();
+    assert_eq!(
+        leaf.get_one::<String>("address").map(String::as_str),
+        Some("1")
+    );
+    // An alias names its command too; no command (`--version`) builds none.
+    let parser = mbtool::docs::parser(&args("mbtool -p sim read-holding-registers 17 1"));
+    let names: Vec<&str> = parser.get_subcommands().map(|sub| sub.get_name()).collect();
+    assert_eq!(names, ["read-holding"]);
+    let parser = mbtool::docs::parser(&args("mbtool --version"));
+    assert_eq!(parser.get_subcommands().count(), 0);
+    // A refused command line is told with every command, the one named described.
+    let whole = mbtool::docs::whole_parser(&args("mbtool read-coils"));
+    assert!(whole.get_subcommands().count() > 20);
+    let address = whole
+        .find_subcommand("read-coils")
+        .and_then(|sub| sub.get_arguments().find(|a| a.get_id() == "address"))
         .unwrap();
     assert!(address
         .get_help()
         .unwrap()
         .to_string()
         .starts_with("First coil"));
-    // An alias names its command too.
-    let parser = mbtool::docs::parser(&args("mbtool -p sim read-holding-registers 17 1"));
-    let names: Vec<&str> = parser.get_subcommands().map(|sub| sub.get_name()).collect();
-    assert_eq!(names, ["read-holding"]);
     // Help shows the whole definition, every command built.
     let help = mbtool::docs::parser(&args("mbtool read-coils --help"));
     assert!(help.get_subcommands().count() > 20);
