@@ -21,8 +21,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
 
     $completions = @(switch ($command) {
         'mbtool' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -54,6 +54,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -95,8 +99,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-coils' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -125,6 +129,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -138,8 +146,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-inputs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -168,6 +176,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -181,8 +193,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-discrete-inputs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -211,6 +223,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -224,8 +240,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-holding' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -257,6 +273,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -270,8 +290,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-holding-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -303,6 +323,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -316,8 +340,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-input-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -349,6 +373,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -362,8 +390,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read-input-regs' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -395,6 +423,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -408,8 +440,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;read' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -441,6 +473,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Read the points of a register map (CSV, or Home Assistant YAML), by name')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
@@ -455,8 +491,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;write-coil' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -473,6 +509,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -486,8 +526,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;write-coils' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -505,6 +545,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame''s address field as it is on the wire')
             [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -518,8 +562,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;write-register' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -539,6 +583,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
             [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
             [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -552,8 +600,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;write-registers' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -574,6 +622,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
             [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
             [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -587,8 +639,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;write' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -609,6 +661,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
             [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
             [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out')
             [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Force the function: 5 or 15 for coils, 6 or 16 for registers')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
@@ -624,8 +680,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;raw' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -644,6 +700,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
             [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for showing values read and for converting values to write')
             [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits: A is the most significant byte')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -656,8 +716,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;scan' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -672,6 +732,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--ids', '--ids', [CompletionResultType]::ParameterName, 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200')
             [CompletionResult]::new('--probe', '--probe', [CompletionResultType]::ParameterName, 'What each id is asked: read (03, one register at address 0) or id (17)')
             [CompletionResult]::new('--listen', '--listen', [CompletionResultType]::ParameterName, 'Listen this long at each setting before sending anything: slaves heard answering another master are found without adding traffic')
@@ -688,8 +752,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;watch' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -717,6 +781,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Watch the points of a register map (CSV, or Home Assistant YAML)')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
@@ -728,8 +796,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;info' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -745,6 +813,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -757,8 +829,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;diag' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -775,6 +847,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--count', '--count', [CompletionResultType]::ParameterName, 'How many round trips of return query data to time [default: 5]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
@@ -788,8 +864,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;dump' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -814,6 +890,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
@@ -825,8 +905,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;restore' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -849,6 +929,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--secondary-mode', '--secondary-mode', [CompletionResultType]::ParameterName, 'Framing of the secondary path [default: --mode, tcp for tcp:// ports]')
             [CompletionResult]::new('--switch-on', '--switch-on', [CompletionResultType]::ParameterName, 'When to change paths, counted since the path''s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]')
             [CompletionResult]::new('--switch-when', '--switch-when', [CompletionResultType]::ParameterName, 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
@@ -877,8 +961,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
@@ -1064,8 +1148,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;sniff' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -1097,8 +1181,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;serve' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -1111,6 +1195,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--slave', '--slave', [CompletionResultType]::ParameterName, 'Answer as this slave id; repeat for several [default: 17]')
             [CompletionResult]::new('--data', '--data', [CompletionResultType]::ParameterName, 'Initial data and the addresses that exist (see above for the format)')
             [CompletionResult]::new('--read-only', '--read-only', [CompletionResultType]::ParameterName, 'Addresses that may not be written (exception 02): a reference or a range; repeatable')
@@ -1119,6 +1207,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--corrupt', '--corrupt', [CompletionResultType]::ParameterName, 'Corrupt this share of answers (a bad checksum; over TCP a wrong function): 0 to 1, or 5%')
             [CompletionResult]::new('--exception', '--exception', [CompletionResultType]::ParameterName, 'Answer exception CODE to every request, or to those touching RANGE (CODE@RANGE, as in 2@400100-400120); repeatable')
             [CompletionResult]::new('--seed', '--seed', [CompletionResultType]::ParameterName, 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run')
+            [CompletionResult]::new('--role', '--role', [CompletionResultType]::ParameterName, 'Over tls://: what clients of role NAME may do, RULES being read and write, each alone or with a range (operator=read,write:400001-400100); repeatable. A request its role does not allow gets exception 01')
+            [CompletionResult]::new('--default-role', '--default-role', [CompletionResultType]::ParameterName, 'Over tls://: the role of a client whose certificate carries none [default: such a client is refused, when --role is given]')
             [CompletionResult]::new('--vendor', '--vendor', [CompletionResultType]::ParameterName, 'Device identification: vendor name')
             [CompletionResult]::new('--product-code', '--product-code', [CompletionResultType]::ParameterName, 'Device identification: product code')
             [CompletionResult]::new('--identity', '--identity', [CompletionResultType]::ParameterName, 'Device identification: any object, by name or id (VendorUrl=https://example.com, ProductName=Pump, 0x80=serial 4711); repeatable')
@@ -1135,8 +1225,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;gateway' {
-            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
-            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]')
             [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one')
@@ -1153,6 +1243,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]; for dump, the file to write')
             [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Also append every transaction, with its time, to FILE: CSV for a .csv name, JSON Lines for any other')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
             [CompletionResult]::new('--listen', '--listen', [CompletionResultType]::ParameterName, 'Where clients connect: tcp://ADDRESS[:PORT]; repeatable')
             [CompletionResult]::new('--unit-map', '--unit-map', [CompletionResultType]::ParameterName, 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')

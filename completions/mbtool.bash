@@ -263,7 +263,7 @@ _mbtool() {
 
     case "${cmd}" in
         mbtool)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway ports generate help"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --cert --key --ca --tls-server-name --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway ports generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -401,6 +401,22 @@ _mbtool() {
                     COMPREPLY=($(compgen -W "any all" -- "${cur}"))
                     return 0
                     ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -455,7 +471,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__diag)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --count --clear --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --count --cert --key --ca --tls-server-name --clear --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -533,6 +549,22 @@ _mbtool() {
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -541,7 +573,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__dump)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --verbose --max-per-request --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --verbose --max-per-request --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --cert --key --ca --tls-server-name --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -649,6 +681,22 @@ _mbtool() {
                     ;;
                 --switch-when)
                     COMPREPLY=($(compgen -W "any all" -- "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -1065,7 +1113,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__gateway)
-            opts="-p -m -b -o -v -q -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --log --listen --unit-map --broadcast-reply --quiet --help --version"
+            opts="-p -m -b -o -v -q -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --log --cert --key --ca --tls-server-name --listen --unit-map --broadcast-reply --quiet --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1140,6 +1188,22 @@ _mbtool() {
                     return 0
                     ;;
                 --log)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -1541,7 +1605,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__info)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --cert --key --ca --tls-server-name --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1613,6 +1677,22 @@ _mbtool() {
                     ;;
                 -o)
                     COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -1649,7 +1729,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__raw)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --type --order --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --type --order --cert --key --ca --tls-server-name --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1735,6 +1815,22 @@ _mbtool() {
                     COMPREPLY=($(compgen -W "ABCD CDAB BADC DCBA" -- "${cur}"))
                     return 0
                     ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1743,7 +1839,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --map --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --cert --key --ca --tls-server-name --map --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1879,6 +1975,22 @@ _mbtool() {
                     ;;
                 --switch-when)
                     COMPREPLY=($(compgen -W "any all" -- "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --map)
@@ -1893,7 +2005,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__coils)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --cert --key --ca --tls-server-name --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2017,6 +2129,22 @@ _mbtool() {
                     ;;
                 --switch-when)
                     COMPREPLY=($(compgen -W "any all" -- "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -2027,7 +2155,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__holding)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --cert --key --ca --tls-server-name --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2163,6 +2291,22 @@ _mbtool() {
                     ;;
                 --switch-when)
                     COMPREPLY=($(compgen -W "any all" -- "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 *)
@@ -2173,7 +2317,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__input__subcmd__registers)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --cert --key --ca --tls-server-name --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2311,6 +2455,22 @@ _mbtool() {
                     COMPREPLY=($(compgen -W "any all" -- "${cur}"))
                     return 0
                     ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -2319,7 +2479,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__inputs)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --cert --key --ca --tls-server-name --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2445,6 +2605,22 @@ _mbtool() {
                     COMPREPLY=($(compgen -W "any all" -- "${cur}"))
                     return 0
                     ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -2453,7 +2629,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__restore)
-            opts="-p -m -b -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --verbose --max-per-request --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --dry-run --help --version"
+            opts="-p -m -b -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --verbose --max-per-request --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --cert --key --ca --tls-server-name --dry-run --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2555,6 +2731,22 @@ _mbtool() {
                     COMPREPLY=($(compgen -W "any all" -- "${cur}"))
                     return 0
                     ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -2563,7 +2755,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__scan)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --ids --probe --listen --all --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --cert --key --ca --tls-server-name --ids --probe --listen --all --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2631,6 +2823,22 @@ _mbtool() {
                     ;;
                 -o)
                     COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --ids)
@@ -2653,7 +2861,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__serve)
-            opts="-p -m -b -o -q -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --slave --data --read-only --delay --drop --corrupt --exception --garbage --seed --quiet --vendor --product-code --identity --help --version"
+            opts="-p -m -b -o -q -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --cert --key --ca --tls-server-name --slave --data --read-only --delay --drop --corrupt --exception --garbage --seed --quiet --role --default-role --vendor --product-code --identity --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2713,6 +2921,22 @@ _mbtool() {
                     ;;
                 -o)
                     COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --slave)
@@ -2744,6 +2968,14 @@ _mbtool() {
                     return 0
                     ;;
                 --seed)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --role)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --default-role)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -2865,7 +3097,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__watch)
-            opts="-p -m -b -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --pdu-addresses --address-base --type --order --max-per-request --poll --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --map --help --version"
+            opts="-p -m -b -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --pdu-addresses --address-base --type --order --max-per-request --poll --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --cert --key --ca --tls-server-name --map --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2987,6 +3219,22 @@ _mbtool() {
                     COMPREPLY=($(compgen -W "any all" -- "${cur}"))
                     return 0
                     ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --map)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
@@ -2999,7 +3247,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__write)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --map --function --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --cert --key --ca --tls-server-name --map --function --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3090,6 +3338,22 @@ _mbtool() {
                     return 0
                     ;;
                 --max-per-request)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -3109,7 +3373,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__write__subcmd__coil)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --cert --key --ca --tls-server-name --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3187,6 +3451,22 @@ _mbtool() {
                     COMPREPLY=($(compgen -W "0 1" -- "${cur}"))
                     return 0
                     ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -3195,7 +3475,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__write__subcmd__coils)
-            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --help --version"
+            opts="-p -m -b -o -v -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --max-per-request --cert --key --ca --tls-server-name --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3274,6 +3554,22 @@ _mbtool() {
                     return 0
                     ;;
                 --max-per-request)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
@@ -3285,7 +3581,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__write__subcmd__register)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --cert --key --ca --tls-server-name --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3375,6 +3671,22 @@ _mbtool() {
                     COMPREPLY=($(compgen -W "ABCD CDAB BADC DCBA" -- "${cur}"))
                     return 0
                     ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -3383,7 +3695,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__write__subcmd__registers)
-            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --help --version"
+            opts="-p -m -b -o -v -t -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --pdu-addresses --address-base --type --order --max-per-request --cert --key --ca --tls-server-name --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3474,6 +3786,22 @@ _mbtool() {
                     return 0
                     ;;
                 --max-per-request)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_mbtool_global_optspecs
-    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= timeout= retries= frame-gap= rs485 rs485-delay-before= rs485-delay-after= rts-level= rts-toggle o/output= json v/verbose pdu-addresses address-base= t/type= order= max-per-request= poll= count= log= secondary-port= secondary-baud= secondary-parity= secondary-data-bits= secondary-stop-bits= secondary-mode= switch-on= switch-when= h/help V/version
+    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= timeout= retries= frame-gap= rs485 rs485-delay-before= rs485-delay-after= rts-level= rts-toggle o/output= json v/verbose pdu-addresses address-base= t/type= order= max-per-request= poll= count= log= secondary-port= secondary-baud= secondary-parity= secondary-data-bits= secondary-stop-bits= secondary-mode= switch-on= switch-when= cert= key= ca= tls-server-name= h/help V/version
 end
 
 function __fish_mbtool_needs_command
@@ -24,7 +24,7 @@ function __fish_mbtool_using_subcommand
     contains -- $cmd[1] $argv
 end
 
-complete -c mbtool -n "__fish_mbtool_needs_command" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -79,6 +79,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_needs_command" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_needs_command" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_needs_command" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_needs_command" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_needs_command" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l json -d 'The same as --output json'
@@ -114,7 +118,7 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "gateway" -d 'Bridge M
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "ports" -d 'The serial ports here, and which adapter each one is'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -154,6 +158,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l json -d 'The same as --output json'
@@ -161,7 +169,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s v -l verbos
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -201,6 +209,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l json -d 'The same as --output json'
@@ -208,7 +220,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s v -l verbo
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -248,6 +260,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l json -d 'The same as --output json'
@@ -255,7 +271,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s v
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -310,6 +326,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l json -d 'The same as --output json'
@@ -317,7 +337,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s v -l verb
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -372,6 +392,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l json -d 'The same as --output json'
@@ -379,7 +403,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -434,6 +458,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l json -d 'The same as --output json'
@@ -441,7 +469,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s v
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -496,6 +524,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l json -d 'The same as --output json'
@@ -503,7 +535,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s v -l v
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -558,6 +590,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l map -d 'Read the points of a register map (CSV, or Home Assistant YAML), by name' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
@@ -566,7 +602,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s v -l verbose -d '
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -589,6 +625,10 @@ values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l json -d 'The same as --output json'
@@ -596,7 +636,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s v -l verbos
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -620,6 +660,10 @@ csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l json -d 'The same as --output json'
@@ -627,7 +671,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s v -l verbo
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -665,6 +709,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l order -
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l json -d 'The same as --output json'
@@ -672,7 +720,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s v -l ve
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -711,6 +759,10 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l json -d 'The same as --output json'
@@ -718,7 +770,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s v -l v
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -757,6 +809,10 @@ CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l map -d 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers' -r -f -a "5\t''
 6\t''
@@ -769,7 +825,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s v -l verbose -d 
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -805,13 +861,17 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l order -d 'Byte ord
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -831,6 +891,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s o -l output -d 'O
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l ids -d 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l probe -d 'What each id is asked: read (03, one register at address 0) or id (17)' -r -f -a "read\t'Read one holding register at protocol address 0 (function 03)'
 id\t'Report server id (function 17)'"
@@ -842,7 +906,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s v -l verbose -d '
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l all -d 'Try every setting of the sweep, not only up to the first where a slave answers'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -891,13 +955,17 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l map -d 'Watch the points of a register map (CSV, or Home Assistant YAML)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -918,13 +986,17 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s o -l output -d 'O
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -946,6 +1018,10 @@ json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l count -d 'How many round trips of return query data to time [default: 5]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l json -d 'The same as --output json'
@@ -953,7 +1029,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s v -l verbose -d '
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l clear -d 'After reading them, clear the device\'s counters (08/0A)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -988,12 +1064,16 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1024,6 +1104,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
@@ -1057,7 +1141,7 @@ response\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1148,7 +1232,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "raw" -d 'Send any PDU and decode the answer'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1180,7 +1264,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stats -d 'At the
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l low-latency -d 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1198,6 +1282,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s o -l output -d '
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l slave -d 'Answer as this slave id; repeat for several [default: 17]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data -d 'Initial data and the addresses that exist (see above for the format)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l read-only -d 'Addresses that may not be written (exception 02): a reference or a range; repeatable' -r
@@ -1206,6 +1294,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l drop -d 'Leave t
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l corrupt -d 'Corrupt this share of answers (a bad checksum; over TCP a wrong function): 0 to 1, or 5%' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l exception -d 'Answer exception CODE to every request, or to those touching RANGE (CODE@RANGE, as in 2@400100-400120); repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l seed -d 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l role -d 'Over tls://: what clients of role NAME may do, RULES being read and write, each alone or with a range (operator=read,write:400001-400100); repeatable. A request its role does not allow gets exception 01' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l default-role -d 'Over tls://: the role of a client whose certificate carries none [default: such a client is refused, when --role is given]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l vendor -d 'Device identification: vendor name' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l product-code -d 'Device identification: product code' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l identity -d 'Device identification: any object, by name or id (VendorUrl=https://example.com, ProductName=Pump, 0x80=serial 4711); repeatable' -r
@@ -1216,7 +1306,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l garbage -d 'Send
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s q -l quiet -d 'No log line per request'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
@@ -1238,6 +1328,10 @@ json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l log -d 'Also append every transaction, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l listen -d 'Where clients connect: tcp://ADDRESS[:PORT]; repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l unit-map -d 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'

@@ -11,6 +11,7 @@ use mbtool_core::model::map::MapConnection;
 use mbtool_core::transport::rs485::DirectionControl;
 use mbtool_core::transport::serial::{LineSettings, Parity, Serial};
 use mbtool_core::transport::tcp::Tcp;
+use mbtool_core::transport::tls::{ClientTls, Session, Tls};
 use mbtool_core::transport::{Endpoint, Transport};
 
 /// After a broadcast, the slaves need time to act before the next request (the Modbus
@@ -21,7 +22,7 @@ const BROADCAST_TURNAROUND: std::time::Duration = std::time::Duration::from_mill
 pub fn endpoint(options: &Options) -> Result<Endpoint> {
     let port = options.port.as_deref().ok_or_else(|| {
         Error::usage(
-            "no --port: give a serial device (/dev/ttyUSB0), tcp://HOST[:PORT], rtu+tcp://HOST:PORT, or sim to try the built-in slave",
+            "no --port: give a serial device (/dev/ttyUSB0), tcp://HOST[:PORT], tls://HOST[:PORT], rtu+tcp://HOST:PORT, or sim to try the built-in slave",
         )
     })?;
     Ok(Endpoint::parse(port)?)
@@ -41,7 +42,7 @@ pub enum Role {
 /// The framing on the wire: TCP for tcp://, otherwise --mode (RTU by default). `endpoint`
 /// is `None` where the command has no port to go by.
 pub fn mode(options: &Options, endpoint: Option<&Endpoint>, role: Role) -> Result<Mode> {
-    let tcp_port = matches!(endpoint, Some(Endpoint::Tcp { .. }));
+    let tcp_port = matches!(endpoint, Some(Endpoint::Tcp { .. } | Endpoint::Tls { .. }));
     match (tcp_port, options.mode, role) {
         (_, Some(mode), Role::Encode) => Ok(mode),
         (_, Some(Mode::Tcp), Role::Sniff) => Err(Error::usage(
@@ -141,6 +142,16 @@ pub fn open_at(
         Endpoint::Tcp { host, port } => {
             Tcp::connect(host, *port, timeout, false).map(|t| Box::new(t) as Box<dyn Transport>)
         }
+        Endpoint::Tls { host, port } => {
+            // The files are read and checked before anything is sent.
+            let tls = ClientTls::new(&options.tls).map_err(|e| Error::Io(e.into()))?;
+            Tls::connect(host, *port, timeout, &tls).map(|stream| {
+                if let (true, Some(session)) = (options.tell_session, stream.session()) {
+                    tell_session(session);
+                }
+                Box::new(stream) as Box<dyn Transport>
+            })
+        }
         Endpoint::RtuOverTcp { host, port } => {
             Tcp::connect(host, *port, timeout, true).map(|t| Box::new(t) as Box<dyn Transport>)
         }
@@ -154,6 +165,21 @@ pub fn open_at(
             format!("cannot connect to {endpoint}: {e}"),
         ))
     })
+}
+
+/// `-v` on a TLS connection: what was agreed, whom it is with, and the role sent.
+fn tell_session(session: &Session) {
+    let role = session
+        .role_sent
+        .as_deref()
+        .map_or_else(|| "none".to_string(), |role| format!("'{role}'"));
+    crate::note!(
+        "mbtool: {}, {}; device certificate {} (valid until {}); role sent: {role}",
+        session.version,
+        session.cipher_suite,
+        session.subject,
+        session.not_after
+    );
 }
 
 /// Where and how a master asked, for a timeout's message, and what usually causes one there.
@@ -186,7 +212,7 @@ pub fn tried(options: &Options, endpoint: &Endpoint, mode: Mode) -> (String, &'s
             "from the built-in slave (sim)".into(),
             "it answers as slave 17 only",
         ),
-        Endpoint::Tcp { .. } => (
+        Endpoint::Tcp { .. } | Endpoint::Tls { .. } => (
             format!("from {endpoint}"),
             "check the unit id (a gateway passes it on as the slave id) and that the device \
              behind it answers",

@@ -17,6 +17,7 @@ use mbtool_core::model::address::Numbering;
 use mbtool_core::model::values::{ByteOrder, ValueType};
 use mbtool_core::transport::rs485::{DirectionControl, RtsTiming};
 use mbtool_core::transport::serial::Parity;
+use mbtool_core::transport::tls::TlsFiles;
 use mbtool_core::transport::Endpoint;
 
 /// Everything the options say, resolved.
@@ -61,6 +62,11 @@ pub struct Connection {
     pub secondary: Option<Box<Connection>>,
     /// When to change between the paths.
     pub switch: SwitchRule,
+    /// The certificates for a tls:// port.
+    pub tls: TlsFiles,
+    /// Whether `-v` asks for a TLS connection's version, cipher suite and certificates
+    /// to be told.
+    pub tell_session: bool,
 }
 
 impl Connection {
@@ -155,6 +161,13 @@ pub fn resolve(
             direction_typed,
             secondary: None,
             switch: SwitchRule::default(),
+            tls: TlsFiles {
+                cert: cli.tls.cert.clone(),
+                key: cli.tls.key.clone(),
+                ca: cli.tls.ca.clone(),
+                server_name: cli.tls.tls_server_name.clone(),
+            },
+            tell_session: cli.output.verbose,
         },
         output: Output {
             style: Style {
@@ -228,7 +241,10 @@ fn redundancy(cli: &Cli, leaf: &clap::ArgMatches, primary: &mut Connection) -> R
         kinds.push(kind);
     }
     // A framing given for a serial primary is no framing for a tcp:// secondary.
-    let tcp = matches!(Endpoint::parse(&port), Ok(Endpoint::Tcp { .. }));
+    let tcp = matches!(
+        Endpoint::parse(&port),
+        Ok(Endpoint::Tcp { .. } | Endpoint::Tls { .. })
+    );
     let mode = match r.secondary_mode {
         Some(mode) => Some(Mode::from(mode)),
         None if tcp => None,

@@ -67,6 +67,8 @@ pub struct Cli {
     pub poll: PollArgs,
     #[command(flatten)]
     pub redundancy: RedundancyArgs,
+    #[command(flatten)]
+    pub tls: TlsArgs,
     #[command(subcommand)]
     pub command: Command,
 }
@@ -238,6 +240,7 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
     const SPLIT: &[&str] = &["max_per_request"];
     const REGISTERS: &[&str] = &["value_type", "order"];
     const POLL: &[&str] = &["poll", "poll_count", "log"];
+    const TLS: &[&str] = &["cert", "key", "ca", "tls_server_name"];
     const REDUNDANCY: &[&str] = &[
         "secondary_port",
         "secondary_baud",
@@ -252,9 +255,10 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
         ["decode"] => &[&["mode"], FORMAT, REGISTERS],
         ["ports"] => &[FORMAT],
         ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
-        ["sniff" | "serve"] => &[LINE, FORMAT],
-        ["gateway"] => &[LINE, MASTER, FORMAT, &["log"]],
-        ["info"] => &[LINE, MASTER, FORMAT],
+        ["sniff"] => &[LINE, FORMAT],
+        ["serve"] => &[LINE, FORMAT, TLS],
+        ["gateway"] => &[LINE, MASTER, FORMAT, &["log"], TLS],
+        ["info"] => &[LINE, MASTER, FORMAT, TLS],
         // watch draws the screen: no -v trace, no output format.
         ["watch"] => &[
             LINE,
@@ -263,31 +267,32 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
             SPLIT,
             REGISTERS,
             REDUNDANCY,
+            TLS,
         ],
         // dump's --output is the file it writes.
-        ["dump"] => &[LINE, MASTER, SPLIT, &["output"], REDUNDANCY],
-        ["restore"] => &[LINE, MASTER, SPLIT, REDUNDANCY],
+        ["dump"] => &[LINE, MASTER, SPLIT, &["output"], REDUNDANCY, TLS],
+        ["restore"] => &[LINE, MASTER, SPLIT, REDUNDANCY, TLS],
         // A scan has no retries: each id that answers is asked once more instead.
-        ["scan"] => &[LINE, &["timeout", "frame_gap", "verbose"], FORMAT],
-        ["diag"] => &[LINE, MASTER, FORMAT, &["poll_count"]],
+        ["scan"] => &[LINE, &["timeout", "frame_gap", "verbose"], FORMAT, TLS],
+        ["diag"] => &[LINE, MASTER, FORMAT, &["poll_count"], TLS],
         // What the request command takes, less what only matters on the wire.
         ["encode", request] => {
-            let wire = [LINE, MASTER, POLL, REDUNDANCY].concat();
+            let wire = [LINE, MASTER, POLL, REDUNDANCY, TLS].concat();
             return ["port", "mode"].contains(&id)
                 || (takes_option(&[request], id) && !wire.contains(&id));
         }
-        ["read-coils" | "read-inputs"] => {
-            &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, POLL, REDUNDANCY]
-        }
-        ["read-holding" | "read-input-registers" | "read"] => &[
-            LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS, POLL, REDUNDANCY,
+        ["read-coils" | "read-inputs"] => &[
+            LINE, MASTER, FORMAT, ADDRESSES, SPLIT, POLL, REDUNDANCY, TLS,
         ],
-        ["write-coil"] => &[LINE, MASTER, FORMAT, ADDRESSES],
-        ["write-coils"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT],
-        ["write-register"] => &[LINE, MASTER, FORMAT, ADDRESSES, REGISTERS],
-        ["write-registers" | "write"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS],
+        ["read-holding" | "read-input-registers" | "read"] => &[
+            LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS, POLL, REDUNDANCY, TLS,
+        ],
+        ["write-coil"] => &[LINE, MASTER, FORMAT, ADDRESSES, TLS],
+        ["write-coils"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, TLS],
+        ["write-register"] => &[LINE, MASTER, FORMAT, ADDRESSES, REGISTERS, TLS],
+        ["write-registers" | "write"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS, TLS],
         // raw decodes the answer: --type shows its registers.
-        ["raw"] => &[LINE, MASTER, FORMAT, REGISTERS],
+        ["raw"] => &[LINE, MASTER, FORMAT, REGISTERS, TLS],
         _ => &[],
     };
     groups.iter().any(|group| group.contains(&id))

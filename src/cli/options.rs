@@ -17,7 +17,8 @@ use super::values::{choice, positive_duration, switch, whole};
 #[command(next_help_heading = "Connection")]
 pub struct ConnectionArgs {
     /// Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare
-    /// 192.168.1.10 or HOST:PORT is Modbus TCP too), rtu+tcp://HOST:PORT, or sim
+    /// 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP
+    /// Security, port 802), rtu+tcp://HOST:PORT, or sim
     #[arg(
         short,
         long,
@@ -100,6 +101,53 @@ pub struct ConnectionArgs {
     /// once its last byte has left (tcdrain), for drivers without RS-485 mode
     #[arg(long, global = true, env = "MBTOOL_RTS_TOGGLE", hide_env_values = true, value_parser = switch)]
     pub rts_toggle: bool,
+}
+
+/// The certificates of Modbus/TCP Security (tls:// ports).
+#[derive(Clone, Debug, Args)]
+#[command(next_help_heading = "Modbus/TCP Security (tls://)")]
+pub struct TlsArgs {
+    /// This end's certificate (PEM), for tls:// ports; a client's carries its role
+    #[arg(
+        long,
+        global = true,
+        env = "MBTOOL_CERT",
+        hide_env_values = true,
+        value_name = "FILE"
+    )]
+    pub cert: Option<std::path::PathBuf>,
+
+    /// The private key of --cert (PEM: PKCS#8, RSA or EC)
+    #[arg(
+        long,
+        global = true,
+        env = "MBTOOL_KEY",
+        hide_env_values = true,
+        value_name = "FILE"
+    )]
+    pub key: Option<std::path::PathBuf>,
+
+    /// The CA certificates (PEM) that sign the other end's certificate: the device's for a
+    /// master, the clients' for serve and gateway
+    #[arg(
+        long,
+        global = true,
+        env = "MBTOOL_CA",
+        hide_env_values = true,
+        value_name = "FILE"
+    )]
+    pub ca: Option<std::path::PathBuf>,
+
+    /// The name the device's certificate must hold [default: the host of --port], for a
+    /// device addressed by IP whose certificate names something else
+    #[arg(
+        long,
+        global = true,
+        env = "MBTOOL_TLS_SERVER_NAME",
+        hide_env_values = true,
+        value_name = "NAME"
+    )]
+    pub tls_server_name: Option<String>,
 }
 
 /// A second path to the device and when to change to it.

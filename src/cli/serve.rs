@@ -41,7 +41,16 @@ It tells who it is as a device does: device identification (43/14; --vendor, \
 need) and report server id (17). Its diagnostic counters (08) count what it saw on the \
 line, CRC errors included, and 08/0A clears them.
 
-Every request is logged on stderr, one line each (JSON Lines with --json).";
+Every request is logged on stderr, one line each (JSON Lines with --json).
+
+Modbus/TCP Security: --port tls://127.0.0.1:8802 with --cert and --key (this server's) and \
+--ca (the CAs that sign the clients' certificates) serves Modbus TCP inside TLS 1.2 or 1.3. \
+A client must present a certificate signed by --ca. Its role is read from the certificate \
+(extension 1.3.6.1.4.1.50316.802.1) and shown in the log; with --role, what each role may do \
+is checked, and a client whose certificate carries no role gets --default-role or is \
+refused. read covers functions 01-04 (and 07, 08 queries and counters, 0B, 0C, 11, 14, 18, \
+2B when alone); write covers 05, 06, 0F, 10, 16, 17 (and 08 restart or clear, 15 when \
+alone).";
 
 #[derive(Clone, Debug, Args)]
 pub struct ServeArgs {
@@ -85,6 +94,17 @@ pub struct ServeArgs {
     /// No log line per request
     #[arg(short, long)]
     pub quiet: bool,
+
+    /// Over tls://: what clients of role NAME may do, RULES being read and write, each
+    /// alone or with a range (operator=read,write:400001-400100); repeatable. A request
+    /// its role does not allow gets exception 01
+    #[arg(long = "role", value_name = "NAME=RULES")]
+    pub roles: Vec<String>,
+
+    /// Over tls://: the role of a client whose certificate carries none [default: such a
+    /// client is refused, when --role is given]
+    #[arg(long, value_name = "NAME")]
+    pub default_role: Option<String>,
 
     /// Device identification: vendor name
     #[arg(long, default_value = mbtool_core::slave::DEFAULT_VENDOR)]

@@ -15,8 +15,10 @@ use mbtool::settings::Settings;
 use mbtool_core::listener::Link;
 use mbtool_core::model::address::parse_reference_span;
 use mbtool_core::slave::faults::Faults;
-use mbtool_core::slave::server::{Logger, Server};
+use mbtool_core::slave::roles::Roles;
+use mbtool_core::slave::server::{Client, Logger, Security, Server};
 use mbtool_core::slave::{datafile, DataModel, Slave};
+use mbtool_core::transport::tls::TlsServer;
 use mbtool_core::transport::Endpoint;
 
 /// The port to serve on; `tcp://:PORT` listens on 127.0.0.1.
@@ -62,10 +64,36 @@ fn data_model(args: &ServeArgs) -> Result<DataModel> {
     Ok(model)
 }
 
+/// Modbus/TCP Security for a tls:// port: the certificates read and the roles parsed
+/// before anything listens; the roles are refused for any other port.
+fn security(
+    settings: &Settings,
+    args: &ServeArgs,
+    endpoint: &Endpoint,
+) -> Result<Option<Security>> {
+    if !matches!(endpoint, Endpoint::Tls { .. }) {
+        if !args.roles.is_empty() || args.default_role.is_some() {
+            return Err(Error::usage(
+                "--role and --default-role are for clients known by their certificates: serve on a tls:// port",
+            )
+            .into());
+        }
+        return Ok(None);
+    }
+    let roles = Roles::new(&args.roles, args.default_role.as_deref())
+        .map_err(|e| Error::usage(e.to_string()))?;
+    let tls = TlsServer::new(&settings.connection.tls).map_err(|e| Error::Io(e.into()))?;
+    if let Some(out_of_date) = &tls.out_of_date {
+        mbtool::note!("mbtool: warning: {out_of_date}");
+    }
+    Ok(Some(Security { tls, roles }))
+}
+
 pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
     let endpoint = endpoint(settings)?;
     let mode = mode(&settings.connection, Some(&endpoint), Role::Serve)?;
     direction_needs_serial(&settings.connection, &endpoint)?;
+    let security = security(settings, args, &endpoint)?;
     let ids = if args.slaves.is_empty() {
         vec![mbtool_core::slave::EXAMPLE_SLAVE]
     } else {
@@ -99,7 +127,7 @@ pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
     ctrlc::set_handler(|| std::process::exit(0))
         .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
     let seed = args.seed.unwrap_or_else(|| fastrand::u64(..));
-    let server = Arc::new(Server::new(slave, faults, mode, seed, logger));
+    let server = Server::new(slave, faults, mode, seed, logger);
     let ids_text = ids.iter().map(u8::to_string).collect::<Vec<_>>().join(", ");
     match &endpoint {
         Endpoint::Serial(path) => {
@@ -115,16 +143,27 @@ pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
                 silence: line.frame_gap(),
             };
             server
-                .serve_stream(&mut transport, path, &link, &mut rng)
+                .serve_stream(&mut transport, Client::at(path), &link, &mut rng)
                 .with_context(|| format!("serving on {path}"))?;
             Ok(0)
         }
-        Endpoint::Tcp { host, port } | Endpoint::RtuOverTcp { host, port } => {
+        Endpoint::Tcp { host, port }
+        | Endpoint::RtuOverTcp { host, port }
+        | Endpoint::Tls { host, port } => {
             let listener = TcpListener::bind((host.as_str(), *port))
                 .with_context(|| format!("cannot listen on {endpoint}"))?;
             let address = listener.local_addr()?;
-            mbtool::note!("mbtool: serving slave {ids_text} on {address} ({mode}); Ctrl-C ends");
-            server.serve_tcp(listener, Arc::new(|error| mbtool::note!("mbtool: {error}")))?;
+            let over = match security {
+                Some(_) => "Modbus TCP over TLS".to_string(),
+                None => mode.to_string(),
+            };
+            let server = match security {
+                Some(security) => server.secured(security),
+                None => server,
+            };
+            mbtool::note!("mbtool: serving slave {ids_text} on {address} ({over}); Ctrl-C ends");
+            Arc::new(server)
+                .serve_tcp(listener, Arc::new(|error| mbtool::note!("mbtool: {error}")))?;
             Ok(0)
         }
         Endpoint::Sim => Ok(0),

@@ -13,6 +13,8 @@ use mbtool_core::slave::server::{LogEntry, Outcome};
 struct JsonEntry<'a> {
     time: f64,
     peer: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    role: Option<&'a str>,
     slave: u8,
     function: u8,
     #[serde(flatten)]
@@ -53,6 +55,7 @@ pub fn write_entry(out: &mut dyn Write, json: bool, entry: &LogEntry) -> io::Res
             &JsonEntry {
                 time: entry.elapsed.as_secs_f64(),
                 peer: entry.peer,
+                role: entry.role,
                 slave: entry.slave,
                 function,
                 request,
@@ -71,9 +74,13 @@ pub fn write_entry(out: &mut dyn Write, json: bool, entry: &LogEntry) -> io::Res
         (other, _) => other.to_string(),
     };
     let fault = fault.map(|f| format!(" [{f}]")).unwrap_or_default();
+    let role = entry
+        .role
+        .map(|role| format!(" ({role})"))
+        .unwrap_or_default();
     writeln!(
         out,
-        "[{:>12.6}] {} slave {}: {} {} {} -> {result}{fault}",
+        "[{:>12.6}] {}{role} slave {}: {} {} {} -> {result}{fault}",
         entry.elapsed.as_secs_f64(),
         entry.peer,
         entry.slave,
@@ -97,6 +104,7 @@ mod tests {
         let entry = LogEntry {
             elapsed: Duration::from_millis(1500),
             peer: "127.0.0.1:5020",
+            role: None,
             slave: 17,
             request: &request,
             outcome,

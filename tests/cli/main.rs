@@ -34,4 +34,5 @@ mod serve_framing;
 mod sniff;
 mod sniff_faults;
 mod sniff_tcp;
+mod tls;
 mod watch;

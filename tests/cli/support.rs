@@ -60,7 +60,7 @@ pub static WORKED_FRAMES: std::sync::LazyLock<Vec<Vec<u8>>> = std::sync::LazyLoc
 });
 
 /// The environment variables that would give mbtool connection settings.
-const SETTINGS_FROM_ENVIRONMENT: [&str; 21] = [
+const SETTINGS_FROM_ENVIRONMENT: [&str; 25] = [
     "MBTOOL_PORT",
     "MBTOOL_MODE",
     "MBTOOL_BAUD",
@@ -82,6 +82,10 @@ const SETTINGS_FROM_ENVIRONMENT: [&str; 21] = [
     "MBTOOL_SECONDARY_MODE",
     "MBTOOL_SWITCH_ON",
     "MBTOOL_SWITCH_WHEN",
+    "MBTOOL_CERT",
+    "MBTOOL_KEY",
+    "MBTOOL_CA",
+    "MBTOOL_TLS_SERVER_NAME",
 ];
 
 /// mbtool with no connection settings from the environment.

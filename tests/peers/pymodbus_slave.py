@@ -3,8 +3,10 @@
 
     pymodbus_slave.py --framer rtu --serial /dev/pts/5
     pymodbus_slave.py --framer socket --tcp 5020 --identity VendorName=ACME ...
+    pymodbus_slave.py --framer tls --tcp 8802 --tls server.pem,server.key,ca.pem
 """
 import argparse
+import ssl
 
 from pymodbus import FramerType
 from pymodbus.datastore import (
@@ -14,16 +16,21 @@ from pymodbus.datastore import (
     ModbusServerContext,
 )
 from pymodbus.pdu.device import ModbusDeviceIdentification
-from pymodbus.server import StartSerialServer, StartTcpServer
+from pymodbus.server import StartSerialServer, StartTcpServer, StartTlsServer
 
 SIZE = 5000
 
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--framer", choices=["rtu", "ascii", "socket"], required=True)
+    parser.add_argument("--framer", choices=["rtu", "ascii", "socket", "tls"], required=True)
     parser.add_argument("--serial")
     parser.add_argument("--tcp", type=int)
+    parser.add_argument(
+        "--tls",
+        metavar="CERT,KEY,CA",
+        help="Modbus/TCP Security: this certificate and key, clients' certificates signed by CA",
+    )
     parser.add_argument("--identity", action="append", default=[], metavar="NAME=VALUE")
     parser.add_argument(
         "--holding",
@@ -47,7 +54,20 @@ def main():
     device = ModbusDeviceContext(di=block(), co=block(), ir=block(), hr=holding)
     context = ModbusServerContext(devices={17: device}, single=False)
     framer = FramerType(args.framer)
-    if args.tcp:
+    if args.tcp and args.tls:
+        cert, key, ca = args.tls.split(",")
+        sslctx = ssl.SSLContext(ssl.PROTOCOL_TLS_SERVER)
+        sslctx.load_cert_chain(cert, key)
+        sslctx.load_verify_locations(ca)
+        sslctx.verify_mode = ssl.CERT_REQUIRED
+        StartTlsServer(
+            context,
+            framer=framer,
+            identity=identity,
+            address=("127.0.0.1", args.tcp),
+            sslctx=sslctx,
+        )
+    elif args.tcp:
         StartTcpServer(
             context, framer=framer, identity=identity, address=("127.0.0.1", args.tcp)
         )

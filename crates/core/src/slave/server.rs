@@ -12,9 +12,45 @@ use crate::codec::{Direction, ExceptionCode, Frame, FrameError, Mode, Pdu, Reque
 use crate::listener::clients::{accept_clients, lock, Accepted, ErrorSink};
 use crate::listener::{receive_frames, Link};
 use crate::slave::faults::Faults;
+use crate::slave::roles::{Role, Roles};
 use crate::slave::Slave;
 use crate::transport::tcp::Tcp;
+use crate::transport::tls::{RoleClaim, TlsServer};
 use crate::transport::Transport;
+
+/// How long a client that connects over TLS has for its handshake.
+const HANDSHAKE_TIMEOUT: Duration = Duration::from_secs(10);
+
+/// Modbus/TCP Security for a server: its TLS end, and what each client role may do.
+#[derive(Clone, Debug)]
+pub struct Security {
+    /// The certificate, key and client CAs.
+    pub tls: TlsServer,
+    /// The roles given; without any, every client may do anything.
+    pub roles: Roles,
+}
+
+/// Who sent a request, as the server knows them.
+#[derive(Clone, Copy, Debug)]
+pub struct Client<'a> {
+    /// The TCP client's address, or the serial port.
+    pub peer: &'a str,
+    /// The role its certificate claims (over TLS).
+    pub role: Option<&'a str>,
+    /// What it may do, where roles are checked.
+    pub rights: Option<&'a Role>,
+}
+
+impl<'a> Client<'a> {
+    /// A client known by where it is alone: a serial line, plain TCP, the sim port.
+    pub fn at(peer: &'a str) -> Client<'a> {
+        Client {
+            peer,
+            role: None,
+            rights: None,
+        }
+    }
+}
 
 /// What became of one request.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -35,6 +71,8 @@ pub struct LogEntry<'a> {
     pub elapsed: Duration,
     /// Who sent the request: the TCP client's address, or the serial port.
     pub peer: &'a str,
+    /// The role its certificate claims, over TLS.
+    pub role: Option<&'a str>,
     /// The slave id the request was addressed to.
     pub slave: u8,
     /// The request.
@@ -54,6 +92,7 @@ pub struct Server {
     seed: u64,
     started: Instant,
     logger: Option<Logger>,
+    security: Option<Security>,
 }
 
 impl Server {
@@ -72,12 +111,24 @@ impl Server {
             seed,
             started: Instant::now(),
             logger,
+            security: None,
         }
+    }
+
+    /// The server with TCP clients accepted over TLS only, their roles checked.
+    pub fn secured(mut self, security: Security) -> Self {
+        self.security = Some(security);
+        self
     }
 
     /// The answer to a frame found on the wire, as bytes to send (`None`: stay silent):
     /// the one answer path of `serve` and of the sim port.
-    pub fn answer(&self, found: &Found, peer: &str, rng: &mut fastrand::Rng) -> Option<Vec<u8>> {
+    pub fn answer(
+        &self,
+        found: &Found,
+        client: Client,
+        rng: &mut fastrand::Rng,
+    ) -> Option<Vec<u8>> {
         // Over TCP everything a server receives is a request, however it reads.
         let answer_on_the_line =
             self.mode != Mode::Tcp && found.direction == Some(Direction::Response);
@@ -85,7 +136,7 @@ impl Server {
         if found.broken.is_some() || answer_on_the_line {
             return None;
         }
-        self.answer_request(&found.bytes, peer, rng)
+        self.answer_request(&found.bytes, client, rng)
     }
 
     /// The answer to bytes that are one whole frame, as a transport that delimits frames
@@ -98,16 +149,21 @@ impl Server {
         rng: &mut fastrand::Rng,
     ) -> Option<Vec<u8>> {
         lock(&self.slave).saw_frame(true);
-        self.answer_request(bytes, peer, rng)
+        self.answer_request(bytes, Client::at(peer), rng)
     }
 
     /// The answer to the bytes of a whole frame, counted already as seen on the line.
-    fn answer_request(&self, bytes: &[u8], peer: &str, rng: &mut fastrand::Rng) -> Option<Vec<u8>> {
+    fn answer_request(
+        &self,
+        bytes: &[u8],
+        client: Client,
+        rng: &mut fastrand::Rng,
+    ) -> Option<Vec<u8>> {
         let frame = request_in(self.mode, bytes)?;
         let Pdu::Request(request) = &frame.pdu else {
             return None;
         };
-        self.respond(&frame, request, peer, rng)
+        self.respond(&frame, request, client, rng)
     }
 
     /// The answer to one request frame, as bytes to send (`None`: stay silent).
@@ -115,7 +171,7 @@ impl Server {
         &self,
         frame: &Frame,
         request: &Request,
-        peer: &str,
+        client: Client,
         rng: &mut fastrand::Rng,
     ) -> Option<Vec<u8>> {
         let mut slave_id = frame.slave;
@@ -132,8 +188,11 @@ impl Server {
                 return None;
             }
             let exception = |code| Some(Pdu::refusal(request, code));
+            // A request the client's role does not allow is an illegal function to it.
+            let allowed = client.rights.is_none_or(|rights| rights.allows(request));
             let answer = match self.faults.exception_for(request) {
                 _ if !known => exception(ExceptionCode::GATEWAY_TARGET_FAILED),
+                _ if !allowed => exception(ExceptionCode::ILLEGAL_FUNCTION),
                 Some(code) if slave_id != 0 => exception(code),
                 _ => slave.handle(slave_id, request),
             };
@@ -150,7 +209,8 @@ impl Server {
         if let Some(logger) = &self.logger {
             logger(&LogEntry {
                 elapsed: self.started.elapsed(),
-                peer,
+                peer: client.peer,
+                role: client.role,
                 slave: frame.slave,
                 request,
                 outcome: &outcome,
@@ -189,17 +249,17 @@ impl Server {
     pub fn serve_stream(
         &self,
         transport: &mut dyn Transport,
-        peer: &str,
+        client: Client,
         link: &Link,
         rng: &mut fastrand::Rng,
     ) -> io::Result<()> {
-        receive_frames(transport, self.mode, link, peer, |found| {
-            self.answer(found, peer, rng)
+        receive_frames(transport, self.mode, link, client.peer, |found| {
+            self.answer(found, client, rng)
         })
     }
 
     /// Accepts TCP clients, each served on its own thread so that none can hold up
-    /// another.
+    /// another; over TLS, each after its handshake and with the rights of its role.
     pub fn serve_tcp(
         self: Arc<Self>,
         listener: TcpListener,
@@ -211,8 +271,32 @@ impl Server {
             Arc::new(move |client: Accepted| {
                 let mut rng =
                     fastrand::Rng::with_seed(self.seed.wrapping_add(client.number as u64));
-                let mut transport = Tcp::from_stream(client.stream, self.mode != Mode::Tcp)?;
-                self.serve_stream(&mut transport, &client.peer, &client.link, &mut rng)
+                let Some(security) = &self.security else {
+                    let mut transport = Tcp::from_stream(client.stream, self.mode != Mode::Tcp)?;
+                    let who = Client::at(&client.peer);
+                    return self.serve_stream(&mut transport, who, &client.link, &mut rng);
+                };
+                let mut accepted = security.tls.accept(client.stream, HANDSHAKE_TIMEOUT)?;
+                let refused = |why: String| {
+                    io::Error::new(
+                        io::ErrorKind::PermissionDenied,
+                        format!("{} ({}) refused: {why}", client.peer, accepted.subject),
+                    )
+                };
+                let claimed = match &accepted.role {
+                    RoleClaim::Named(role) => Some(role.as_str()),
+                    RoleClaim::Absent => None,
+                    RoleClaim::Unreadable => {
+                        return Err(refused("its role extension is no UTF8String".into()))
+                    }
+                };
+                let rights = security.roles.for_client(claimed).map_err(refused)?;
+                let who = Client {
+                    peer: &client.peer,
+                    role: rights.map(|role| role.name.as_str()).or(claimed),
+                    rights,
+                };
+                self.serve_stream(&mut accepted.stream, who, &client.link, &mut rng)
             }),
         )
     }

@@ -1,5 +1,5 @@
-//! The `--port` argument: a serial device, `tcp://HOST[:PORT]`, `rtu+tcp://HOST:PORT`, or
-//! `sim`.
+//! The `--port` argument: a serial device, `tcp://HOST[:PORT]`, `tls://HOST[:PORT]`,
+//! `rtu+tcp://HOST:PORT`, or `sim`.
 
 use std::fmt;
 
@@ -12,6 +12,13 @@ pub enum Endpoint {
     Serial(String),
     /// Modbus TCP (MBAP framing).
     Tcp {
+        /// Host name or IP address.
+        host: String,
+        /// TCP port.
+        port: u16,
+    },
+    /// Modbus/TCP Security: Modbus TCP inside TLS.
+    Tls {
         /// Host name or IP address.
         host: String,
         /// TCP port.
@@ -33,6 +40,7 @@ impl fmt::Display for Endpoint {
         match self {
             Endpoint::Serial(path) => f.write_str(path),
             Endpoint::Tcp { host, port } => write!(f, "tcp://{host}:{port}"),
+            Endpoint::Tls { host, port } => write!(f, "tls://{host}:{port}"),
             Endpoint::RtuOverTcp { host, port } => write!(f, "rtu+tcp://{host}:{port}"),
             Endpoint::Sim => f.write_str("sim"),
         }
@@ -85,7 +93,7 @@ pub enum EndpointError {
         host: String,
     },
     /// A `scheme://` that mbtool does not know.
-    #[error("'{0}': the port is a serial device, tcp://HOST[:PORT], rtu+tcp://HOST:PORT or sim")]
+    #[error("'{0}': the port is a serial device, tcp://HOST[:PORT], tls://HOST[:PORT], rtu+tcp://HOST:PORT or sim")]
     UnknownScheme(String),
     /// An empty `--port`.
     #[error("--port is empty: give a serial device, tcp://HOST[:PORT] or sim")]
@@ -164,6 +172,11 @@ impl Endpoint {
         if let Some(rest) = text.strip_prefix("tcp://") {
             let (host, port) = host_port(rest, Some(MODBUS_TCP_PORT), "tcp://", listening)?;
             return Ok(Endpoint::Tcp { host, port });
+        }
+        if let Some(rest) = text.strip_prefix("tls://") {
+            let (host, port) =
+                host_port(rest, Some(super::tls::MODBUS_TLS_PORT), "tls://", listening)?;
+            return Ok(Endpoint::Tls { host, port });
         }
         if let Some(rest) = text.strip_prefix("rtu+tcp://") {
             let (host, port) = host_port(rest, None, "rtu+tcp://", listening)?;
@@ -264,6 +277,20 @@ mod tests {
             Ok(Endpoint::Tcp {
                 host: "127.0.0.1".into(),
                 port: 5020
+            })
+        );
+        assert_eq!(
+            Endpoint::parse("tls://plc1"),
+            Ok(Endpoint::Tls {
+                host: "plc1".into(),
+                port: 802
+            })
+        );
+        assert_eq!(
+            Endpoint::parse_listen("tls://:8802"),
+            Ok(Endpoint::Tls {
+                host: "127.0.0.1".into(),
+                port: 8802
             })
         );
         assert!(Endpoint::parse("udp://x").is_err());

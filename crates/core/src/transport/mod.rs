@@ -7,6 +7,7 @@ pub mod rs485;
 pub mod serial;
 pub mod sim;
 pub mod tcp;
+pub mod tls;
 
 use std::io;
 use std::time::Instant;

@@ -4,6 +4,7 @@ use std::io::{self, Read, Write};
 use std::net::{SocketAddr, TcpStream, ToSocketAddrs};
 use std::time::{Duration, Instant};
 
+use super::tls::looks_like_tls;
 use super::{time_left, Transport};
 
 /// A TCP connection as a transport.
@@ -19,6 +20,9 @@ pub struct Tcp {
     /// Where a connection this end made goes, and how long connecting may take: a
     /// connection the other end closed while it was idle is made again.
     reconnect: Option<(SocketAddr, Duration)>,
+    /// Whether anything has come over this connection: a TLS port tells itself by its
+    /// first bytes, where a later answer could begin with the same by chance.
+    heard: bool,
 }
 
 impl Tcp {
@@ -59,6 +63,7 @@ impl Tcp {
             read_timeout_ms: 0,
             serial_behind,
             reconnect: None,
+            heard: false,
         })
     }
 
@@ -88,6 +93,7 @@ impl Tcp {
         stream.set_nodelay(true)?;
         self.stream = stream;
         self.read_timeout_ms = 0;
+        self.heard = false;
         Ok(())
     }
 }
@@ -142,8 +148,27 @@ impl Transport for Tcp {
                 self.read_timeout_ms = left_ms;
             }
             match self.stream.read(&mut chunk) {
+                Ok(0) if !self.heard && !self.serial_behind => {
+                    return Err(io::Error::new(
+                        io::ErrorKind::ConnectionAborted,
+                        format!(
+                            "{} closed the connection without answering (a Modbus/TCP Security port does this to plain Modbus TCP: if it is one, use tls://)",
+                            self.peer
+                        ),
+                    ))
+                }
                 Ok(0) => return Err(closed(&self.peer)),
+                Ok(n) if !self.heard && !self.serial_behind && looks_like_tls(&chunk[..n]) => {
+                    return Err(io::Error::new(
+                        io::ErrorKind::InvalidData,
+                        format!(
+                            "{} speaks TLS: this looks like a Modbus/TCP Security port: use tls://",
+                            self.peer
+                        ),
+                    ));
+                }
                 Ok(n) => {
+                    self.heard = true;
                     buf.extend_from_slice(&chunk[..n]);
                     return Ok(n);
                 }

@@ -1,0 +1,180 @@
+//! The certificates and keys of a TLS end, read from PEM files written by someone else:
+//! refused with what is wrong rather than half read, and a certificate's role, subject
+//! and expiry read for the messages.
+
+use std::io::Read;
+use std::path::Path;
+
+use rustls::pki_types::pem::PemObject;
+use rustls::pki_types::{CertificateDer, PrivateKeyDer, UnixTime};
+use rustls::RootCertStore;
+
+use super::{RoleClaim, TlsError, ROLE_OID};
+
+/// No PEM file of certificates or a key comes near this: a bigger one is refused unread.
+const PEM_LIMIT: u64 = 1 << 20;
+
+/// A PEM file read whole, refused unread when no PEM file could be that large.
+fn read_pem(path: &Path) -> Result<Vec<u8>, TlsError> {
+    let unreadable = |why: String| TlsError::Unreadable {
+        path: path.to_path_buf(),
+        why,
+    };
+    let file = std::fs::File::open(path).map_err(|e| unreadable(e.to_string()))?;
+    let mut bytes = Vec::new();
+    file.take(PEM_LIMIT + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| unreadable(e.to_string()))?;
+    if bytes.len() as u64 > PEM_LIMIT {
+        return Err(unreadable(format!(
+            "larger than {} KiB, which no PEM file of certificates is",
+            PEM_LIMIT / 1024
+        )));
+    }
+    Ok(bytes)
+}
+
+pub(super) fn certificates(path: &Path) -> Result<Vec<CertificateDer<'static>>, TlsError> {
+    let pem = read_pem(path)?;
+    let chain = CertificateDer::pem_slice_iter(&pem)
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| TlsError::Malformed {
+            path: path.to_path_buf(),
+            why: format!("not a readable PEM file ({e})"),
+        })?;
+    let Some(first) = chain.first() else {
+        return Err(TlsError::NoPem {
+            path: path.to_path_buf(),
+            what: "certificate",
+            marker: "CERTIFICATE-----'",
+        });
+    };
+    if x509_parser::parse_x509_certificate(first).is_err() {
+        return Err(TlsError::Malformed {
+            path: path.to_path_buf(),
+            why: "its first certificate is no X.509 certificate".into(),
+        });
+    }
+    Ok(chain)
+}
+
+pub(super) fn private_key(path: &Path) -> Result<PrivateKeyDer<'static>, TlsError> {
+    let pem = read_pem(path)?;
+    PrivateKeyDer::from_pem_slice(&pem).map_err(|e| match e {
+        rustls::pki_types::pem::Error::NoItemsFound => TlsError::NoPem {
+            path: path.to_path_buf(),
+            what: "private key",
+            marker: "PRIVATE KEY-----', 'RSA PRIVATE KEY' or 'EC PRIVATE KEY",
+        },
+        e => TlsError::Malformed {
+            path: path.to_path_buf(),
+            why: format!("not a readable PEM key ({e})"),
+        },
+    })
+}
+
+pub(super) fn root_store(path: &Path) -> Result<RootCertStore, TlsError> {
+    let mut roots = RootCertStore::empty();
+    for certificate in certificates(path)? {
+        roots.add(certificate).map_err(|e| TlsError::Malformed {
+            path: path.to_path_buf(),
+            why: format!("a CA certificate rustls cannot use ({e})"),
+        })?;
+    }
+    Ok(roots)
+}
+
+pub(super) fn key_error(error: rustls::Error, cert: &Path, key: &Path) -> TlsError {
+    match error {
+        rustls::Error::InconsistentKeys(_) => TlsError::KeyMismatch {
+            cert: cert.to_path_buf(),
+            key: key.to_path_buf(),
+        },
+        other => TlsError::Malformed {
+            path: key.to_path_buf(),
+            why: format!("the key cannot be used ({other})"),
+        },
+    }
+}
+
+/// Refuses this end's own certificate before any connection when it is out of date.
+pub(super) fn check_validity(path: &Path, der: &CertificateDer<'_>) -> Result<(), TlsError> {
+    let Ok((_, certificate)) = x509_parser::parse_x509_certificate(der) else {
+        return Ok(());
+    };
+    let validity = certificate.validity();
+    let now = i64::try_from(UnixTime::now().as_secs()).unwrap_or(i64::MAX);
+    let when = if now > validity.not_after.timestamp() {
+        format!("expired on {}", validity.not_after)
+    } else if now < validity.not_before.timestamp() {
+        format!("is not valid until {}", validity.not_before)
+    } else {
+        return Ok(());
+    };
+    Err(TlsError::OwnCertificate {
+        path: path.to_path_buf(),
+        when,
+    })
+}
+
+/// The role a certificate claims in the [`ROLE_OID`] extension.
+pub fn certificate_role(der: &[u8]) -> RoleClaim {
+    let Ok((_, certificate)) = x509_parser::parse_x509_certificate(der) else {
+        return RoleClaim::Absent;
+    };
+    let extension = certificate
+        .extensions()
+        .iter()
+        .find(|extension| extension.oid.to_id_string() == ROLE_OID);
+    match extension {
+        None => RoleClaim::Absent,
+        Some(extension) => utf8_string(extension.value).map_or(RoleClaim::Unreadable, |role| {
+            RoleClaim::Named(role.to_string())
+        }),
+    }
+}
+
+/// The text of a DER UTF8String that is all of `der`.
+fn utf8_string(der: &[u8]) -> Option<&str> {
+    let (&tag, rest) = der.split_first()?;
+    let (&first, rest) = rest.split_first()?;
+    let (length, body) = match first {
+        n if n < 0x80 => (usize::from(n), rest),
+        0x81 => (usize::from(*rest.first()?), rest.get(1..)?),
+        0x82 => (
+            usize::from(u16::from_be_bytes([*rest.first()?, *rest.get(1)?])),
+            rest.get(2..)?,
+        ),
+        _ => return None,
+    };
+    (tag == 0x0C && body.len() == length)
+        .then(|| std::str::from_utf8(body).ok())
+        .flatten()
+}
+
+pub(super) fn subject_of(der: &[u8]) -> String {
+    x509_parser::parse_x509_certificate(der)
+        .map(|(_, certificate)| certificate.subject().to_string())
+        .unwrap_or_default()
+}
+
+pub(super) fn not_after_of(der: &[u8]) -> String {
+    x509_parser::parse_x509_certificate(der)
+        .map(|(_, certificate)| certificate.validity().not_after.to_string())
+        .unwrap_or_default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_role_is_a_der_utf8_string() {
+        assert_eq!(utf8_string(b"\x0c\x08operator"), Some("operator"));
+        assert_eq!(utf8_string(b"\x0c\x09operator"), None);
+        assert_eq!(utf8_string(b"\x13\x08operator"), None);
+        assert_eq!(utf8_string(b""), None);
+        let long = [&[0x0c, 0x81, 200][..], &[b'a'; 200]].concat();
+        assert_eq!(utf8_string(&long).map(str::len), Some(200));
+    }
+}

@@ -1,0 +1,152 @@
+//! A failed TLS handshake, or a connection refused after it, told as what to do: by the
+//! master that made it, or in the log of the server that refused it.
+
+use std::io;
+
+use rustls::{AlertDescription, CertificateError};
+
+use super::{ClientTls, MODBUS_TLS_PORT};
+
+/// The rustls error inside an I/O error, if it is one.
+fn rustls_error(error: &io::Error) -> Option<&rustls::Error> {
+    error.get_ref()?.downcast_ref::<rustls::Error>()
+}
+
+/// A failed handshake of a master, told as what to do.
+pub(super) fn client_side(
+    error: io::Error,
+    peer: &str,
+    port: u16,
+    name: &str,
+    tls: &ClientTls,
+) -> io::Error {
+    let ca = tls.ca.display();
+    let message = match rustls_error(&error) {
+        Some(rustls::Error::InvalidCertificate(certificate)) => match certificate {
+            CertificateError::Expired | CertificateError::ExpiredContext { .. } => format!(
+                "the device's certificate has expired{}: renew it on the device (or check the clocks here and there)",
+                expired_since(certificate)
+            ),
+            CertificateError::NotValidYet | CertificateError::NotValidYetContext { .. } => {
+                "the device's certificate is not valid yet: check the clocks of the device and of this computer".into()
+            }
+            CertificateError::UnknownIssuer | CertificateError::BadSignature => format!(
+                "the device's certificate is not signed by a CA of {ca}: give the CA that signed it with --ca"
+            ),
+            CertificateError::NotValidForName | CertificateError::NotValidForNameContext { .. } => format!(
+                "the device's certificate is not for '{name}'{}: connect by a name it holds, or give it with --tls-server-name",
+                presented_names(certificate)
+            ),
+            other => format!("the device's certificate was refused: {other:?}"),
+        },
+        Some(rustls::Error::AlertReceived(alert)) => match alert {
+            AlertDescription::CertificateRequired => {
+                "the device wants a client certificate: give --cert and --key".into()
+            }
+            AlertDescription::HandshakeFailure if tls.cert.is_none() => {
+                "the device refused the handshake, most likely for want of a client certificate: give --cert and --key".into()
+            }
+            AlertDescription::BadCertificate
+            | AlertDescription::UnknownCA
+            | AlertDescription::CertificateUnknown
+            | AlertDescription::UnsupportedCertificate
+            | AlertDescription::AccessDenied => format!(
+                "the device refused this end's certificate{} ({alert:?}): it must be signed by a CA the device trusts",
+                tls.cert.as_ref().map_or_else(String::new, |c| format!(" {}", c.display()))
+            ),
+            AlertDescription::CertificateExpired => format!(
+                "the device says this end's certificate{} has expired: renew it",
+                tls.cert.as_ref().map_or_else(String::new, |c| format!(" {}", c.display()))
+            ),
+            other => format!("the device ended the handshake: {other:?}"),
+        },
+        Some(rustls::Error::InvalidMessage(_) | rustls::Error::InappropriateMessage { .. }) => {
+            "the answer is not TLS: this looks like a plain Modbus TCP port: use tcp://".into()
+        }
+        Some(other) => format!("TLS handshake failed: {other}"),
+        None if error.kind() == io::ErrorKind::UnexpectedEof
+            || error.kind() == io::ErrorKind::ConnectionReset =>
+        {
+            let hint = if port == MODBUS_TLS_PORT {
+                "is TLS turned on on the device?"
+            } else {
+                "a plain Modbus TCP port closes on a TLS greeting: if it is one, use tcp://"
+            };
+            format!("the device closed the connection during the TLS handshake: {hint}")
+        }
+        None => return error,
+    };
+    io::Error::new(
+        io::ErrorKind::ConnectionRefused,
+        format!("{peer}: {message}"),
+    )
+}
+
+/// A failed handshake of a server, told in its log.
+pub(super) fn server_side(error: io::Error, peer: &str) -> io::Error {
+    let message = match rustls_error(&error) {
+        Some(rustls::Error::NoCertificatesPresented) => {
+            "refused: it sent no client certificate".to_string()
+        }
+        Some(rustls::Error::InvalidCertificate(certificate)) => match certificate {
+            CertificateError::UnknownIssuer | CertificateError::BadSignature => {
+                "refused: its certificate is not signed by a CA of --ca".into()
+            }
+            CertificateError::Expired | CertificateError::ExpiredContext { .. } => {
+                "refused: its certificate has expired".into()
+            }
+            CertificateError::NotValidYet | CertificateError::NotValidYetContext { .. } => {
+                "refused: its certificate is not valid yet".into()
+            }
+            other => format!("refused: its certificate: {other:?}"),
+        },
+        Some(rustls::Error::InvalidMessage(_) | rustls::Error::InappropriateMessage { .. }) => {
+            "refused: it did not speak TLS (a plain Modbus TCP client? it should use tls://)".into()
+        }
+        Some(rustls::Error::AlertReceived(alert)) => {
+            format!("ended the handshake: {alert:?} (does it trust this server's certificate?)")
+        }
+        Some(other) => format!("TLS handshake failed: {other}"),
+        None if error.kind() == io::ErrorKind::TimedOut => {
+            "refused: no TLS handshake in time".into()
+        }
+        None => format!("TLS handshake failed: {error}"),
+    };
+    io::Error::new(io::ErrorKind::PermissionDenied, format!("{peer} {message}"))
+}
+
+fn expired_since(error: &CertificateError) -> String {
+    match error {
+        CertificateError::ExpiredContext { not_after, .. } => {
+            format!(" (on {})", asn1_date(not_after.as_secs()))
+        }
+        _ => String::new(),
+    }
+}
+
+fn presented_names(error: &CertificateError) -> String {
+    match error {
+        CertificateError::NotValidForNameContext { presented, .. } if !presented.is_empty() => {
+            // rustls shows them as `DnsName("plc.example")`: the name alone reads better.
+            let names: Vec<&str> = presented
+                .iter()
+                .map(|shown| {
+                    shown
+                        .split_once('(')
+                        .and_then(|(_, inner)| inner.strip_suffix(')'))
+                        .map_or(shown.as_str(), |inner| inner.trim_matches('"'))
+                })
+                .collect();
+            format!(" but for {}", names.join(", "))
+        }
+        _ => String::new(),
+    }
+}
+
+/// A time as certificates show it.
+fn asn1_date(unix_seconds: u64) -> String {
+    i64::try_from(unix_seconds)
+        .ok()
+        .and_then(|seconds| x509_parser::time::ASN1Time::from_timestamp(seconds).ok())
+        .map_or_else(|| unix_seconds.to_string(), |time| time.to_string())
+}
