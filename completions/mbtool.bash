@@ -1113,7 +1113,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__gateway)
-            opts="-p -m -b -o -v -q -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --log --cert --key --ca --tls-server-name --listen --unit-map --broadcast-reply --quiet --help --version"
+            opts="-p -m -b -o -v -q -h -V --port --mode --baud --parity --data-bits --stop-bits --timeout --retries --frame-gap --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --output --json --verbose --log --cert --key --ca --tls-server-name --listen --unit-map --broadcast-reply --quiet --role --default-role --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1212,6 +1212,14 @@ _mbtool() {
                     return 0
                     ;;
                 --unit-map)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --role)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --default-role)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

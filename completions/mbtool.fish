@@ -1332,8 +1332,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l cert -d 'This 
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l listen -d 'Where clients connect: tcp://ADDRESS[:PORT]; repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l listen -d 'Where clients connect: tcp://ADDRESS[:PORT], or tls://ADDRESS[:PORT] for Modbus/TCP Security; repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l unit-map -d 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l role -d 'Over tls://: what clients of role NAME may do, RULES being read and write, each alone or with a range (operator=read,write:400001-400100); repeatable. A request its role does not allow gets exception 01' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l default-role -d 'Over tls://: the role of a client whose certificate carries none [default: such a client is refused, when --role is given]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l json -d 'The same as --output json'

@@ -43,11 +43,18 @@ bad-frame, line-down, broadcast): a line on a terminal, JSON Lines or CSV with -
 --log FILE appended as --poll writes it, none with --quiet. Clients closed by the gateway \
 and the line going down and up are told on stderr. Ctrl-C or SIGTERM ends it with a summary per \
 client and per unit on stderr (and as JSON lines with -o json), exit status 0. It needs no \
-terminal, so it runs as a service.";
+terminal, so it runs as a service.
+
+--listen tls://ADDRESS[:PORT] (port 802 when left out) takes clients over Modbus/TCP \
+Security, as serve does: --cert and --key are the gateway's, --ca signs its clients' \
+certificates, --role and --default-role decide what each role may do (exception 01 \
+otherwise, without touching the line), and each row shows the client's role. The line \
+itself is not tls://.";
 
 #[derive(Clone, Debug, Args)]
 pub struct GatewayArgs {
-    /// Where clients connect: tcp://ADDRESS[:PORT]; repeatable
+    /// Where clients connect: tcp://ADDRESS[:PORT], or tls://ADDRESS[:PORT] for
+    /// Modbus/TCP Security; repeatable
     #[arg(long, value_name = "ENDPOINT")]
     pub listen: Vec<String>,
 
@@ -62,4 +69,7 @@ pub struct GatewayArgs {
     /// No row per transaction (stderr still tells the line and the clients)
     #[arg(short, long)]
     pub quiet: bool,
+
+    #[command(flatten)]
+    pub roles: super::RoleArgs,
 }

@@ -103,7 +103,7 @@ pub struct ConnectionArgs {
     pub rts_toggle: bool,
 }
 
-/// The certificates of Modbus/TCP Security (tls:// ports).
+// The certificates of Modbus/TCP Security (tls:// ports).
 #[derive(Clone, Debug, Args)]
 #[command(next_help_heading = "Modbus/TCP Security (tls://)")]
 pub struct TlsArgs {

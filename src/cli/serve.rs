@@ -52,6 +52,22 @@ refused. read covers functions 01-04 (and 07, 08 queries and counters, 0B, 0C, 1
 2B when alone); write covers 05, 06, 0F, 10, 16, 17 (and 08 restart or clear, 15 when \
 alone).";
 
+// What the clients of a tls:// server may do, by the role their certificates carry. A
+// plain comment: a doc comment would become the about of the commands that take these.
+#[derive(Clone, Debug, Args)]
+pub struct RoleArgs {
+    /// Over tls://: what clients of role NAME may do, RULES being read and write, each
+    /// alone or with a range (operator=read,write:400001-400100); repeatable. A request
+    /// its role does not allow gets exception 01
+    #[arg(long = "role", value_name = "NAME=RULES")]
+    pub roles: Vec<String>,
+
+    /// Over tls://: the role of a client whose certificate carries none [default: such a
+    /// client is refused, when --role is given]
+    #[arg(long, value_name = "NAME")]
+    pub default_role: Option<String>,
+}
+
 #[derive(Clone, Debug, Args)]
 pub struct ServeArgs {
     /// Answer as this slave id; repeat for several [default: 17]
@@ -95,16 +111,8 @@ pub struct ServeArgs {
     #[arg(short, long)]
     pub quiet: bool,
 
-    /// Over tls://: what clients of role NAME may do, RULES being read and write, each
-    /// alone or with a range (operator=read,write:400001-400100); repeatable. A request
-    /// its role does not allow gets exception 01
-    #[arg(long = "role", value_name = "NAME=RULES")]
-    pub roles: Vec<String>,
-
-    /// Over tls://: the role of a client whose certificate carries none [default: such a
-    /// client is refused, when --role is given]
-    #[arg(long, value_name = "NAME")]
-    pub default_role: Option<String>,
+    #[command(flatten)]
+    pub roles: RoleArgs,
 
     /// Device identification: vendor name
     #[arg(long, default_value = mbtool_core::slave::DEFAULT_VENDOR)]

@@ -12,7 +12,7 @@ use mbtool::error::Error;
 use mbtool::output::gateway::GatewayWriter;
 use mbtool::output::{colour_wanted, Format, Named, PollRows};
 use mbtool::settings::Settings;
-use mbtool_core::gateway::{Event, Gateway, GatewayOptions, Line, Report};
+use mbtool_core::gateway::{Event, Gateway, GatewayOptions, Line, Listening, Report};
 use mbtool_core::transport::Endpoint;
 
 use super::poll::{now, open_log, Log};
@@ -24,30 +24,57 @@ fn upstream(settings: &Settings) -> Result<Endpoint, Error> {
             "gateway needs --port: the serial line (/dev/ttyUSB0), rtu+tcp://HOST:PORT or tcp://HOST:PORT",
         ));
     }
-    connection::endpoint(&settings.connection)
+    let endpoint = connection::endpoint(&settings.connection)?;
+    if matches!(endpoint, Endpoint::Tls { .. }) {
+        // --cert, --key and --ca are the listener's: a line that is itself behind TLS
+        // would need a second set.
+        return Err(Error::usage(
+            "gateway --port: the line is a serial device, rtu+tcp:// or tcp://; tls:// is for --listen",
+        ));
+    }
+    Ok(endpoint)
 }
 
-/// Every `--listen`, bound before anything else is done.
-fn listeners(args: &GatewayArgs) -> Result<Vec<TcpListener>> {
+/// Every `--listen`, bound before anything else is done, with how its clients connect.
+fn listeners(settings: &Settings, args: &GatewayArgs) -> Result<Vec<(TcpListener, Listening)>> {
     if args.listen.is_empty() {
         return Err(Error::usage(
             "gateway needs --listen: where clients connect, tcp://0.0.0.0:502 (tcp://:1502 for this machine only)",
         )
         .into());
     }
-    let mut bound = Vec::new();
+    let mut endpoints = Vec::new();
     for text in &args.listen {
         let endpoint = Endpoint::parse_listen(text)
             .map_err(|e| Error::usage(format!("--listen {text}: {e}")))?;
-        let Endpoint::Tcp { host, port } = &endpoint else {
+        if !matches!(endpoint, Endpoint::Tcp { .. } | Endpoint::Tls { .. }) {
             return Err(Error::usage(format!(
-                "--listen {text}: clients connect over Modbus TCP: give tcp://ADDRESS[:PORT]"
+                "--listen {text}: clients connect over Modbus TCP: give tcp://ADDRESS[:PORT] or tls://ADDRESS[:PORT]"
             ))
             .into());
+        }
+        endpoints.push(endpoint);
+    }
+    // The roles are for a tls:// listener; one is enough to take them.
+    let secure = endpoints
+        .iter()
+        .find(|endpoint| matches!(endpoint, Endpoint::Tls { .. }));
+    let security = match secure {
+        Some(endpoint) => super::shared::security(settings, &args.roles, endpoint)?.map(Arc::new),
+        None => super::shared::security(settings, &args.roles, &endpoints[0])?.map(Arc::new),
+    };
+    let mut bound = Vec::new();
+    for endpoint in endpoints {
+        let (Endpoint::Tcp { host, port } | Endpoint::Tls { host, port }) = &endpoint else {
+            continue;
         };
         let listener = TcpListener::bind((host.as_str(), *port))
             .with_context(|| format!("cannot listen on {endpoint}"))?;
-        bound.push(listener);
+        let listening = match (&endpoint, &security) {
+            (Endpoint::Tls { .. }, Some(security)) => Listening::Secure(Arc::clone(security)),
+            _ => Listening::Plain,
+        };
+        bound.push((listener, listening));
     }
     Ok(bound)
 }
@@ -102,7 +129,7 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
         .map(|path| open_log(path, |format| GatewayWriter::new(format, false)))
         .transpose()?;
     // Bound last of what can fail, so that a bad command line leaves no port taken.
-    let listeners = listeners(args)?;
+    let listeners = listeners(settings, args)?;
     let screen = (!args.quiet).then(|| {
         let out = Named::new(io::stdout(), "standard output");
         let writer = GatewayWriter::new(format, colour_wanted());
@@ -152,13 +179,17 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
         mode,
     );
     let mut addresses = Vec::new();
-    for listener in listeners {
-        addresses.push(listener.local_addr()?.to_string());
+    for (listener, listening) in listeners {
+        let address = listener.local_addr()?;
+        addresses.push(match listening {
+            Listening::Secure(_) => format!("tls://{address} (Modbus/TCP Security)"),
+            Listening::Plain => address.to_string(),
+        });
         let gateway = Arc::clone(&gateway);
         let on_error = Arc::clone(&report);
         std::thread::Builder::new().spawn(move || {
             let told = Arc::new(move |error: io::Error| on_error(Event::ClientClosed(&error)));
-            if let Err(error) = gateway.accept(listener, told) {
+            if let Err(error) = gateway.accept(listener, listening, told) {
                 mbtool::note!("mbtool: stopped listening: {error}");
             }
         })?;

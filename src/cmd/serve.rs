@@ -15,10 +15,8 @@ use mbtool::settings::Settings;
 use mbtool_core::listener::Link;
 use mbtool_core::model::address::parse_reference_span;
 use mbtool_core::slave::faults::Faults;
-use mbtool_core::slave::roles::Roles;
-use mbtool_core::slave::server::{Client, Logger, Security, Server};
+use mbtool_core::slave::server::{Client, Logger, Server};
 use mbtool_core::slave::{datafile, DataModel, Slave};
-use mbtool_core::transport::tls::TlsServer;
 use mbtool_core::transport::Endpoint;
 
 /// The port to serve on; `tcp://:PORT` listens on 127.0.0.1.
@@ -64,36 +62,11 @@ fn data_model(args: &ServeArgs) -> Result<DataModel> {
     Ok(model)
 }
 
-/// Modbus/TCP Security for a tls:// port: the certificates read and the roles parsed
-/// before anything listens; the roles are refused for any other port.
-fn security(
-    settings: &Settings,
-    args: &ServeArgs,
-    endpoint: &Endpoint,
-) -> Result<Option<Security>> {
-    if !matches!(endpoint, Endpoint::Tls { .. }) {
-        if !args.roles.is_empty() || args.default_role.is_some() {
-            return Err(Error::usage(
-                "--role and --default-role are for clients known by their certificates: serve on a tls:// port",
-            )
-            .into());
-        }
-        return Ok(None);
-    }
-    let roles = Roles::new(&args.roles, args.default_role.as_deref())
-        .map_err(|e| Error::usage(e.to_string()))?;
-    let tls = TlsServer::new(&settings.connection.tls).map_err(|e| Error::Io(e.into()))?;
-    if let Some(out_of_date) = &tls.out_of_date {
-        mbtool::note!("mbtool: warning: {out_of_date}");
-    }
-    Ok(Some(Security { tls, roles }))
-}
-
 pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
     let endpoint = endpoint(settings)?;
     let mode = mode(&settings.connection, Some(&endpoint), Role::Serve)?;
     direction_needs_serial(&settings.connection, &endpoint)?;
-    let security = security(settings, args, &endpoint)?;
+    let security = super::shared::security(settings, &args.roles, &endpoint)?;
     let ids = if args.slaves.is_empty() {
         vec![mbtool_core::slave::EXAMPLE_SLAVE]
     } else {

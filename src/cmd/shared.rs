@@ -1,5 +1,6 @@
 //! What the commands that send requests share: the framing and planning of a request from
-//! the settings, the `-v` tracer, and what is said of a write done another way.
+//! the settings, the `-v` tracer, and what is said of a write done another way; and what
+//! the servers (serve, gateway) share: their Modbus/TCP Security.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
@@ -7,15 +8,18 @@ use std::time::Instant;
 
 use anyhow::Result;
 
-use mbtool::cli::RequestCommand;
+use mbtool::cli::{RequestCommand, RoleArgs};
 use mbtool::connection::{self, Connection, Role};
 use mbtool::error::Error;
 use mbtool::output::encode::frame_text;
 use mbtool::settings::Settings;
 use mbtool_core::codec::Mode;
+use mbtool_core::listener::roles::Roles;
+use mbtool_core::listener::Security;
 use mbtool_core::master::failover::{PathName, Switch};
 use mbtool_core::master::plan::{parse_slave, plan, Plan, PlanOptions};
 use mbtool_core::master::{Master, Traffic};
+use mbtool_core::transport::tls::TlsServer;
 use mbtool_core::transport::Endpoint;
 
 /// The framing: --mode, else TCP for a tcp:// port, else RTU. Unlike a connection, encode
@@ -133,4 +137,29 @@ pub fn stop_on_signal() -> Result<Arc<AtomicBool>> {
     ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
         .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
     Ok(stop)
+}
+
+/// Modbus/TCP Security for a server on `endpoint` (serve's port, a gateway's --listen):
+/// the certificates read and the roles parsed before anything listens. The roles are
+/// refused for a port that is not tls://.
+pub fn security(
+    settings: &Settings,
+    roles: &RoleArgs,
+    endpoint: &Endpoint,
+) -> Result<Option<Security>, Error> {
+    if !matches!(endpoint, Endpoint::Tls { .. }) {
+        if !roles.roles.is_empty() || roles.default_role.is_some() {
+            return Err(Error::usage(
+                "--role and --default-role are for clients known by their certificates: listen on a tls:// port",
+            ));
+        }
+        return Ok(None);
+    }
+    let rules = Roles::new(&roles.roles, roles.default_role.as_deref())
+        .map_err(|e| Error::usage(e.to_string()))?;
+    let tls = TlsServer::new(&settings.connection.tls).map_err(|e| Error::Io(e.into()))?;
+    if let Some(out_of_date) = &tls.out_of_date {
+        mbtool::note!("mbtool: warning: {out_of_date}");
+    }
+    Ok(Some(Security { tls, roles: rules }))
 }

@@ -617,3 +617,68 @@ fn pymodbus_tls_client_reads_and_writes_serve_as_over_plain_tcp() {
         "{logged}"
     );
 }
+
+#[test]
+fn gateway_takes_tls_clients_with_their_roles() {
+    let pki = Pki::new();
+    let port = free_port();
+    let rows = pki.dir.path().join("gateway.jsonl");
+    let gateway = Stopped(
+        mbtool_process()
+            .args(["--port", "sim", "-o", "json"])
+            .args(pki.client("server"))
+            .args(["gateway", "--listen", &format!("tls://127.0.0.1:{port}")])
+            .args([
+                "--role",
+                "operator=read,write:400001-400010",
+                "--role",
+                "viewer=read",
+            ])
+            .stdout(std::fs::File::create(&rows).unwrap())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    assert!(wait_for_listener(port, Duration::from_secs(10)));
+    let url = format!("tls://localhost:{port}");
+    let (viewer, operator) = (pki.client("viewer"), pki.client("operator"));
+    let (code, out, err) = client(&url, &viewer, "read-holding 17 400108 3 -o values");
+    assert_eq!(
+        (code, out.split_whitespace().collect::<Vec<_>>()),
+        (0, vec!["555", "0", "100"]),
+        "{err}"
+    );
+    assert_eq!(client(&url, &viewer, "write-register 17 400001 3").0, 11);
+    assert_eq!(client(&url, &operator, "write-register 17 400011 3").0, 11);
+    assert_eq!(client(&url, &operator, "write-register 17 400001 3").0, 0);
+    let (_, out, _) = client(&url, &viewer, "read-holding 17 400001 -o values");
+    assert_eq!(out.trim(), "3");
+    // Without a client certificate: refused before anything reaches the line.
+    let ca_only = vec!["--ca".to_string(), pki.path("ca.pem")];
+    assert_eq!(client(&url, &ca_only, "read-holding 17 400001").0, 1);
+    drop(gateway);
+    let rows: Vec<serde_json::Value> = std::fs::read_to_string(&rows)
+        .unwrap()
+        .lines()
+        .filter_map(|line| serde_json::from_str(line).ok())
+        .filter(|row: &serde_json::Value| row.get("client").is_some())
+        .collect();
+    assert_eq!(rows.len(), 5, "{rows:#?}");
+    let refused: Vec<_> = rows
+        .iter()
+        .filter(|row| row["outcome"] == "exception")
+        .collect();
+    assert_eq!(refused.len(), 2, "{rows:#?}");
+    for row in refused {
+        // Answered by the gateway itself: the line was not asked.
+        assert_eq!(row["tries"], 0, "{row}");
+    }
+    assert!(
+        rows[1]["client"].as_str().unwrap().ends_with("(viewer)"),
+        "{rows:#?}"
+    );
+    assert!(
+        rows[3]["client"].as_str().unwrap().ends_with("(operator)"),
+        "{rows:#?}"
+    );
+}

@@ -103,6 +103,15 @@ impl Line {
                 return done(request, Some(answer), 0, Outcome::Exception);
             }
         };
+        if job
+            .rights
+            .as_ref()
+            .is_some_and(|rights| !rights.allows(&request))
+        {
+            // Not for this client's role: an illegal function to it, the line untouched.
+            let answer = Pdu::refusal(&request, ExceptionCode::ILLEGAL_FUNCTION);
+            return done(request, Some(answer), 0, Outcome::Exception);
+        }
         let broadcast = slave == 0 && self.broadcasts;
         if broadcast && !broadcastable(&request) {
             // A read sent to every slave has no answer to give: refused, not sent.

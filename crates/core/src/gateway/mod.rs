@@ -19,8 +19,12 @@ use thiserror::Error;
 use crate::codec::{Mode, Pdu, Request};
 use crate::listener::clients::{accept_clients, lock, Accepted, ErrorSink, WRITE_DEADLINE};
 use crate::listener::receive_frames;
+use crate::listener::roles::Role;
+use crate::listener::Security;
 use crate::model::spread::Spread;
 use crate::transport::tcp::Tcp;
+use crate::transport::tls::TlsWriter;
+use crate::transport::Transport;
 
 pub use line::{Connect, Line};
 use queue::{ClientId, FairQueue};
@@ -74,6 +78,17 @@ pub struct GatewayOptions {
     pub unit_map: UnitMap,
     /// A broadcast's client gets an echo of its request, as some SCADAs wait for one.
     pub broadcast_reply: bool,
+}
+
+/// How a listener's clients connect: plain Modbus TCP, or inside TLS with their roles
+/// checked.
+#[derive(Clone, Debug, Default)]
+pub enum Listening {
+    /// Modbus TCP.
+    #[default]
+    Plain,
+    /// Modbus/TCP Security.
+    Secure(Arc<Security>),
 }
 
 /// What became of one transaction.
@@ -250,9 +265,34 @@ pub struct Summary {
 /// A request waiting for the line.
 struct Job {
     client: Arc<str>,
+    /// What the client may do, where its TLS role is checked.
+    rights: Option<Arc<Role>>,
     /// The whole MBAP frame.
     frame: Vec<u8>,
     arrived: Instant,
+}
+
+/// Where a client's answers are written, by a thread of its own.
+enum Writing {
+    Plain(std::net::TcpStream),
+    Secure(TlsWriter),
+}
+
+impl Writing {
+    fn write_all(&mut self, answer: &[u8]) -> io::Result<()> {
+        match self {
+            Writing::Plain(stream) => stream.write_all(answer),
+            Writing::Secure(writer) => writer.write_all(answer),
+        }
+    }
+
+    /// Closes the connection, which ends the reading side's wait too.
+    fn shutdown(&self) {
+        let _ = match self {
+            Writing::Plain(stream) => stream.shutdown(Shutdown::Both),
+            Writing::Secure(writer) => writer.shutdown(),
+        };
+    }
 }
 
 /// Clients bridged to one line.
@@ -287,27 +327,46 @@ impl Gateway {
 
     /// Takes the clients of `listener`, each on its own threads, for ever; several
     /// listeners may feed one gateway.
-    pub fn accept(self: &Arc<Self>, listener: TcpListener, on_error: ErrorSink) -> io::Result<()> {
+    pub fn accept(
+        self: &Arc<Self>,
+        listener: TcpListener,
+        listening: Listening,
+        on_error: ErrorSink,
+    ) -> io::Result<()> {
         let gateway = Arc::clone(self);
         accept_clients(
             listener,
             on_error,
-            Arc::new(move |client: Accepted| gateway.serve_client(client)),
+            Arc::new(move |client: Accepted| gateway.serve_client(client, &listening)),
         )
     }
 
     /// Reads a client's requests into the queue until it leaves; its answers are written
     /// by a thread of its own, so that a client slow to read holds up no one.
-    fn serve_client(&self, client: Accepted) -> io::Result<()> {
+    fn serve_client(&self, client: Accepted, listening: &Listening) -> io::Result<()> {
         let id = self.next_client.fetch_add(1, Ordering::Relaxed);
-        let mut writing = client.stream.try_clone()?;
+        let (mut transport, mut writing, role, rights): (Box<dyn Transport>, Writing, _, _) =
+            match listening {
+                Listening::Plain => (
+                    Box::new(Tcp::from_stream(client.stream.try_clone()?, false)?),
+                    Writing::Plain(client.stream),
+                    None,
+                    None,
+                ),
+                Listening::Secure(security) => {
+                    let admitted = security.admit(client.stream, &client.peer)?;
+                    let writing = Writing::Secure(admitted.stream.writer()?);
+                    let rights = admitted.rights.map(Arc::new);
+                    (Box::new(admitted.stream), writing, admitted.role, rights)
+                }
+            };
         let (answers, to_write) = mpsc::channel::<Vec<u8>>();
         let (report, peer) = (Arc::clone(&self.report), client.peer.clone());
         std::thread::Builder::new().spawn(move || {
             for answer in to_write {
                 if let Err(error) = writing.write_all(&answer) {
                     // Not read for the write deadline, or gone: the reading side ends too.
-                    let _ = writing.shutdown(Shutdown::Both);
+                    writing.shutdown();
                     if matches!(
                         error.kind(),
                         io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut
@@ -323,26 +382,29 @@ impl Gateway {
             }
         })?;
         lock(&self.writers).insert(id, answers);
-        let peer: Arc<str> = Arc::from(client.peer.as_str());
-        let received = Tcp::from_stream(client.stream, false).and_then(|mut transport| {
-            receive_frames(
-                &mut transport,
-                Mode::Tcp,
-                &client.link,
-                &client.peer,
-                |found| {
-                    self.queue.push(
-                        id,
-                        Job {
-                            client: Arc::clone(&peer),
-                            frame: found.bytes.to_vec(),
-                            arrived: Instant::now(),
-                        },
-                    );
-                    None
-                },
-            )
-        });
+        // A client over TLS is shown with its role.
+        let peer: Arc<str> = match &role {
+            Some(role) => Arc::from(format!("{} ({role})", client.peer)),
+            None => Arc::from(client.peer.as_str()),
+        };
+        let received = receive_frames(
+            transport.as_mut(),
+            Mode::Tcp,
+            &client.link,
+            &client.peer,
+            |found| {
+                self.queue.push(
+                    id,
+                    Job {
+                        client: Arc::clone(&peer),
+                        rights: rights.clone(),
+                        frame: found.bytes.to_vec(),
+                        arrived: Instant::now(),
+                    },
+                );
+                None
+            },
+        );
         // A client that closed its sending side (as `nc -N` does) still gets the answers
         // to what it asked. One that went away has its waiting requests dropped; one on
         // the line is finished and its answer thrown away, so that the line stays in step.

@@ -9,6 +9,7 @@ use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 
 use super::Link;
+pub(crate) use crate::transport::lock;
 
 /// A TCP client that sends nothing for this long is dropped.
 pub const CLIENT_IDLE: Duration = Duration::from_secs(60);
@@ -160,13 +161,6 @@ fn worth_telling(error: io::Error, peer: &str) -> Option<io::Error> {
             )))
         }
         _ => Some(error),
-    }
-}
-
-pub(crate) fn lock<T>(mutex: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
-    match mutex.lock() {
-        Ok(guard) => guard,
-        Err(poisoned) => poisoned.into_inner(),
     }
 }
 

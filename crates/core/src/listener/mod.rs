@@ -3,6 +3,7 @@
 //! by the codec's framer, as every receiver of mbtool finds them.
 
 pub mod clients;
+pub mod roles;
 
 use std::io;
 use std::sync::atomic::{AtomicU64, Ordering};
@@ -12,7 +13,63 @@ use std::time::{Duration, Instant};
 use crate::codec::framing::Event;
 use crate::codec::framing::{Found, Framer, ASCII_CHARACTER_TIMEOUT_US};
 use crate::codec::Mode;
+use crate::transport::tls::{RoleClaim, Tls, TlsServer};
 use crate::transport::Transport;
+use roles::{Role, Roles};
+
+/// How long a client that connects over TLS has for its handshake.
+const HANDSHAKE_TIMEOUT: Duration = Duration::from_secs(10);
+
+/// Modbus/TCP Security for a server: its TLS end, and what each client role may do.
+#[derive(Clone, Debug)]
+pub struct Security {
+    /// The certificate, key and client CAs.
+    pub tls: TlsServer,
+    /// The roles given; without any, every client may do anything.
+    pub roles: Roles,
+}
+
+/// A client let in over TLS.
+pub struct Admitted {
+    /// Its connection, handshake done.
+    pub stream: Tls,
+    /// The role it has: the one its certificate claims, or the default one.
+    pub role: Option<String>,
+    /// What it may do, where roles are checked.
+    pub rights: Option<Role>,
+}
+
+impl Security {
+    /// Makes the handshake with a client just accepted and finds its role; a client
+    /// without a certificate signed by the CAs, or without a role the roles allow, is
+    /// refused (`PermissionDenied`, saying why).
+    pub fn admit(&self, stream: std::net::TcpStream, peer: &str) -> io::Result<Admitted> {
+        let accepted = self.tls.accept(stream, HANDSHAKE_TIMEOUT)?;
+        let refused = |why: String| {
+            io::Error::new(
+                io::ErrorKind::PermissionDenied,
+                format!("{peer} ({}) refused: {why}", accepted.subject),
+            )
+        };
+        let claimed = match &accepted.role {
+            RoleClaim::Named(role) => Some(role.clone()),
+            RoleClaim::Absent => None,
+            RoleClaim::Unreadable => {
+                return Err(refused("its role extension is no UTF8String".into()))
+            }
+        };
+        let rights = self
+            .roles
+            .for_client(claimed.as_deref())
+            .map_err(refused)?
+            .cloned();
+        Ok(Admitted {
+            role: rights.as_ref().map(|role| role.name.clone()).or(claimed),
+            rights,
+            stream: accepted.stream,
+        })
+    }
+}
 
 /// RTU over TCP has no line to time; a gateway passes each frame whole, so the pause that
 /// ends a frame is taken to be that of a line at 19200 baud (11 bits a character).

@@ -5,7 +5,6 @@ pub mod datafile;
 pub mod faults;
 mod identity;
 mod model;
-pub mod roles;
 pub mod server;
 
 use std::collections::BTreeMap;

@@ -10,25 +10,12 @@ use crate::codec::adu::{opaque_request, wrap};
 use crate::codec::framing::Found;
 use crate::codec::{Direction, ExceptionCode, Frame, FrameError, Mode, Pdu, Request};
 use crate::listener::clients::{accept_clients, lock, Accepted, ErrorSink};
-use crate::listener::{receive_frames, Link};
+use crate::listener::roles::Role;
+use crate::listener::{receive_frames, Link, Security};
 use crate::slave::faults::Faults;
-use crate::slave::roles::{Role, Roles};
 use crate::slave::Slave;
 use crate::transport::tcp::Tcp;
-use crate::transport::tls::{RoleClaim, TlsServer};
 use crate::transport::Transport;
-
-/// How long a client that connects over TLS has for its handshake.
-const HANDSHAKE_TIMEOUT: Duration = Duration::from_secs(10);
-
-/// Modbus/TCP Security for a server: its TLS end, and what each client role may do.
-#[derive(Clone, Debug)]
-pub struct Security {
-    /// The certificate, key and client CAs.
-    pub tls: TlsServer,
-    /// The roles given; without any, every client may do anything.
-    pub roles: Roles,
-}
 
 /// Who sent a request, as the server knows them.
 #[derive(Clone, Copy, Debug)]
@@ -276,27 +263,13 @@ impl Server {
                     let who = Client::at(&client.peer);
                     return self.serve_stream(&mut transport, who, &client.link, &mut rng);
                 };
-                let mut accepted = security.tls.accept(client.stream, HANDSHAKE_TIMEOUT)?;
-                let refused = |why: String| {
-                    io::Error::new(
-                        io::ErrorKind::PermissionDenied,
-                        format!("{} ({}) refused: {why}", client.peer, accepted.subject),
-                    )
-                };
-                let claimed = match &accepted.role {
-                    RoleClaim::Named(role) => Some(role.as_str()),
-                    RoleClaim::Absent => None,
-                    RoleClaim::Unreadable => {
-                        return Err(refused("its role extension is no UTF8String".into()))
-                    }
-                };
-                let rights = security.roles.for_client(claimed).map_err(refused)?;
+                let mut admitted = security.admit(client.stream, &client.peer)?;
                 let who = Client {
                     peer: &client.peer,
-                    role: rights.map(|role| role.name.as_str()).or(claimed),
-                    rights,
+                    role: admitted.role.as_deref(),
+                    rights: admitted.rights.as_ref(),
                 };
-                self.serve_stream(&mut accepted.stream, who, &client.link, &mut rng)
+                self.serve_stream(&mut admitted.stream, who, &client.link, &mut rng)
             }),
         )
     }

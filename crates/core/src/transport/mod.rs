@@ -37,3 +37,63 @@ pub(crate) fn time_left(deadline: Instant) -> Option<std::time::Duration> {
         .checked_duration_since(Instant::now())
         .filter(|left| !left.is_zero())
 }
+
+/// The value behind `mutex`, even if a thread panicked while it held it: what it guards
+/// (a connection's TLS state, a server's data) stays usable.
+pub(crate) fn lock<T>(mutex: &std::sync::Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    match mutex.lock() {
+        Ok(guard) => guard,
+        Err(poisoned) => poisoned.into_inner(),
+    }
+}
+
+/// A socket read whose wait is bounded by a read timeout: TCP and TLS alike.
+pub(crate) trait TimedRead {
+    /// The socket whose read timeout bounds the wait.
+    fn socket(&self) -> &std::net::TcpStream;
+    /// The read timeout last set, in whole milliseconds: setting it is a system call,
+    /// and most transactions wait with the same one.
+    fn timeout_ms(&mut self) -> &mut u64;
+    /// Reads what the socket has, as the transport reads it; 0 bytes is an error there.
+    fn read_some(&mut self, chunk: &mut [u8]) -> io::Result<usize>;
+}
+
+/// [`Transport::receive`] over a [`TimedRead`]: appends to `buf` what arrives before
+/// `deadline`, 0 when the deadline passed first.
+pub(crate) fn receive_timed(
+    reader: &mut impl TimedRead,
+    buf: &mut Vec<u8>,
+    deadline: Instant,
+) -> io::Result<usize> {
+    let mut chunk = [0u8; 512];
+    loop {
+        let Some(left) = time_left(deadline) else {
+            return Ok(0);
+        };
+        // Rounded up to whole milliseconds, so that it is rarely changed; never 0, which
+        // would mean no timeout at all.
+        let left_ms = (left.as_micros().div_ceil(1000) as u64).max(1);
+        if left_ms != *reader.timeout_ms() {
+            reader
+                .socket()
+                .set_read_timeout(Some(std::time::Duration::from_millis(left_ms)))?;
+            *reader.timeout_ms() = left_ms;
+        }
+        match reader.read_some(&mut chunk) {
+            Ok(n) => {
+                buf.extend_from_slice(&chunk[..n]);
+                return Ok(n);
+            }
+            Err(e)
+                if matches!(
+                    e.kind(),
+                    io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut
+                ) =>
+            {
+                return Ok(0)
+            }
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        }
+    }
+}

@@ -5,7 +5,7 @@ use std::net::{SocketAddr, TcpStream, ToSocketAddrs};
 use std::time::{Duration, Instant};
 
 use super::tls::looks_like_tls;
-use super::{time_left, Transport};
+use super::{receive_timed, TimedRead, Transport};
 
 /// A TCP connection as a transport.
 pub struct Tcp {
@@ -134,60 +134,49 @@ impl Transport for Tcp {
     }
 
     fn receive(&mut self, buf: &mut Vec<u8>, deadline: Instant) -> io::Result<usize> {
-        let mut chunk = [0u8; 512];
-        loop {
-            let Some(left) = time_left(deadline) else {
-                return Ok(0);
-            };
-            // Rounded up to whole milliseconds, so that it is rarely changed; never 0,
-            // which would mean no timeout at all.
-            let left_ms = (left.as_micros().div_ceil(1000) as u64).max(1);
-            if left_ms != self.read_timeout_ms {
-                self.stream
-                    .set_read_timeout(Some(Duration::from_millis(left_ms)))?;
-                self.read_timeout_ms = left_ms;
-            }
-            match self.stream.read(&mut chunk) {
-                Ok(0) if !self.heard && !self.serial_behind => {
-                    return Err(io::Error::new(
-                        io::ErrorKind::ConnectionAborted,
-                        format!(
-                            "{} closed the connection without answering (a Modbus/TCP Security port does this to plain Modbus TCP: if it is one, use tls://)",
-                            self.peer
-                        ),
-                    ))
-                }
-                Ok(0) => return Err(closed(&self.peer)),
-                Ok(n) if !self.heard && !self.serial_behind && looks_like_tls(&chunk[..n]) => {
-                    return Err(io::Error::new(
-                        io::ErrorKind::InvalidData,
-                        format!(
-                            "{} speaks TLS: this looks like a Modbus/TCP Security port: use tls://",
-                            self.peer
-                        ),
-                    ));
-                }
-                Ok(n) => {
-                    self.heard = true;
-                    buf.extend_from_slice(&chunk[..n]);
-                    return Ok(n);
-                }
-                Err(e)
-                    if matches!(
-                        e.kind(),
-                        io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut
-                    ) =>
-                {
-                    return Ok(0)
-                }
-                Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
-                Err(e) => return Err(e),
-            }
-        }
+        receive_timed(self, buf, deadline)
     }
 
     fn is_serial_line(&self) -> bool {
         self.serial_behind
+    }
+}
+
+impl TimedRead for Tcp {
+    fn socket(&self) -> &TcpStream {
+        &self.stream
+    }
+
+    fn timeout_ms(&mut self) -> &mut u64 {
+        &mut self.read_timeout_ms
+    }
+
+    fn read_some(&mut self, chunk: &mut [u8]) -> io::Result<usize> {
+        let n = self.stream.read(chunk)?;
+        let first = !self.heard && !self.serial_behind;
+        if n == 0 && first {
+            return Err(io::Error::new(
+                io::ErrorKind::ConnectionAborted,
+                format!(
+                    "{} closed the connection without answering (a Modbus/TCP Security port does this to plain Modbus TCP: if it is one, use tls://)",
+                    self.peer
+                ),
+            ));
+        }
+        if n == 0 {
+            return Err(closed(&self.peer));
+        }
+        if first && looks_like_tls(&chunk[..n]) {
+            return Err(io::Error::new(
+                io::ErrorKind::InvalidData,
+                format!(
+                    "{} speaks TLS: this looks like a Modbus/TCP Security port: use tls://",
+                    self.peer
+                ),
+            ));
+        }
+        self.heard = true;
+        Ok(n)
     }
 }
 

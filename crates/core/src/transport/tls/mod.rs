@@ -9,14 +9,14 @@ use std::fmt;
 use std::io::{self, Read, Write};
 use std::net::{TcpStream, ToSocketAddrs};
 use std::path::PathBuf;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use rustls::pki_types::{CertificateDer, ServerName};
 use rustls::{ClientConfig, ClientConnection, Connection, ServerConfig, ServerConnection};
 use thiserror::Error;
 
-use super::{time_left, Transport};
+use super::{lock, receive_timed, time_left, TimedRead, Transport};
 
 mod files;
 mod refusals;
@@ -248,6 +248,8 @@ impl TlsServer {
 
     /// Makes the handshake with a client that has just connected, within `timeout`.
     pub fn accept(&self, stream: TcpStream, timeout: Duration) -> io::Result<AcceptedTls> {
+        // Frames are small and each waits for an answer: send at once.
+        stream.set_nodelay(true)?;
         let peer = peer_of(&stream);
         let connection = ServerConnection::new(Arc::clone(&self.config))
             .map_err(|e| io::Error::other(e.to_string()))?;
@@ -283,10 +285,12 @@ pub struct Session {
     pub role_sent: Option<String>,
 }
 
-/// A TLS connection carrying Modbus TCP frames, either end.
+/// A TLS connection carrying Modbus TCP frames, either end. A server that reads and
+/// writes a client from two threads takes a [`TlsWriter`] of it ([`Tls::writer`]): the TLS
+/// state is shared, and no thread holds it while it waits for the socket.
 pub struct Tls {
     socket: TcpStream,
-    connection: Connection,
+    connection: Arc<Mutex<Connection>>,
     peer: String,
     /// The read timeout last set, in whole milliseconds (as [`super::tcp::Tcp`] keeps it).
     read_timeout_ms: u64,
@@ -296,6 +300,12 @@ pub struct Tls {
     master: Option<Master>,
     /// Whether anything has come since the handshake.
     heard: bool,
+}
+
+/// The sending side of a [`Tls`], for another thread.
+pub struct TlsWriter {
+    socket: TcpStream,
+    connection: Arc<Mutex<Connection>>,
 }
 
 /// What a master's connection was made with, for its messages.
@@ -309,7 +319,7 @@ impl Tls {
     fn new(socket: TcpStream, connection: Connection, peer: String) -> Tls {
         Tls {
             socket,
-            connection,
+            connection: Arc::new(Mutex::new(connection)),
             peer,
             read_timeout_ms: 0,
             session: None,
@@ -370,21 +380,22 @@ impl Tls {
             let connection = ClientConnection::new(Arc::clone(&tls.config), server_name.clone())
                 .map_err(|e| io::Error::other(e.to_string()))?;
             let mut stream = Tls::new(socket, connection.into(), address.to_string());
-            stream
-                .handshake(Instant::now() + timeout, Some(timeout))
-                .map_err(|e| client_side(e, &stream.peer, port, &name, tls))?;
-            let (subject, not_after) = stream
-                .peer_certificate()
-                .map(|der| (subject_of(&der), not_after_of(&der)))
-                .unwrap_or_default();
             stream.master = Some(Master {
                 tls: tls.clone(),
                 name: name.clone(),
                 port,
             });
+            stream
+                .handshake(Instant::now() + timeout, Some(timeout))
+                .map_err(|e| stream.explained(e))?;
+            let (subject, not_after) = stream
+                .peer_certificate()
+                .map(|der| (subject_of(&der), not_after_of(&der)))
+                .unwrap_or_default();
+            let (version, cipher_suite) = stream.agreed();
             stream.session = Some(Session {
-                version: stream.version(),
-                cipher_suite: stream.cipher_suite(),
+                version,
+                cipher_suite,
                 subject,
                 not_after,
                 role_sent: tls.role.clone(),
@@ -401,16 +412,27 @@ impl Tls {
         self.session.as_ref()
     }
 
+    /// Where another thread sends on this connection.
+    pub fn writer(&self) -> io::Result<TlsWriter> {
+        Ok(TlsWriter {
+            socket: self.socket.try_clone()?,
+            connection: Arc::clone(&self.connection),
+        })
+    }
+
     /// Reads and writes until the handshake is done or `deadline` passes.
     fn handshake(&mut self, deadline: Instant, timeout: Option<Duration>) -> io::Result<()> {
-        while self.connection.is_handshaking() {
+        // A server's clients have a write deadline: it outlives the handshake's.
+        let write_timeout = self.socket.write_timeout()?;
+        let mut connection = lock(&self.connection);
+        while connection.is_handshaking() {
             let Some(left) = time_left(deadline) else {
                 return Err(handshake_timeout(timeout));
             };
             self.socket.set_read_timeout(Some(left))?;
             self.socket.set_write_timeout(Some(left))?;
-            match self.connection.complete_io(&mut self.socket) {
-                Ok((0, 0)) if self.connection.is_handshaking() => {
+            match connection.complete_io(&mut self.socket) {
+                Ok((0, 0)) if connection.is_handshaking() => {
                     return Err(io::Error::new(
                         io::ErrorKind::UnexpectedEof,
                         "closed during the handshake",
@@ -427,51 +449,44 @@ impl Tls {
                 }
                 Err(e) => {
                     // The alert that tells the other end why, if it can still be sent.
-                    let _ = self.connection.write_tls(&mut self.socket);
+                    let _ = connection.write_tls(&mut self.socket);
                     return Err(e);
                 }
             }
         }
-        self.socket.set_write_timeout(None)?;
+        self.socket.set_write_timeout(write_timeout)?;
         self.read_timeout_ms = 0;
         Ok(())
     }
 
     fn peer_certificate(&self) -> Option<CertificateDer<'static>> {
-        self.connection
+        lock(&self.connection)
             .peer_certificates()
             .and_then(|chain| chain.first())
             .map(|der| der.clone().into_owned())
     }
 
-    fn version(&self) -> String {
-        match self.connection.protocol_version() {
+    /// The version and the cipher suite agreed.
+    fn agreed(&self) -> (String, String) {
+        let connection = lock(&self.connection);
+        let version = match connection.protocol_version() {
             Some(rustls::ProtocolVersion::TLSv1_3) => "TLS 1.3".into(),
             Some(rustls::ProtocolVersion::TLSv1_2) => "TLS 1.2".into(),
             Some(other) => format!("{other:?}"),
             None => "?".into(),
-        }
-    }
-
-    fn cipher_suite(&self) -> String {
-        self.connection
+        };
+        let suite = connection
             .negotiated_cipher_suite()
-            .map_or_else(|| "?".into(), |suite| format!("{:?}", suite.suite()))
-    }
-
-    /// Sends what the connection has queued.
-    fn flush_tls(&mut self) -> io::Result<()> {
-        while self.connection.wants_write() {
-            self.connection.write_tls(&mut self.socket)?;
-        }
-        Ok(())
+            .map_or_else(|| "?".into(), |suite| format!("{:?}", suite.suite()));
+        (version, suite)
     }
 
     /// Reads plaintext, reading records from the socket as needed; the socket's read
-    /// timeout bounds the wait.
+    /// timeout bounds the wait, which holds no lock.
     fn read_plain(&mut self, out: &mut [u8]) -> io::Result<usize> {
+        let mut records = [0u8; 4096];
         loop {
-            match self.connection.reader().read(out) {
+            match lock(&self.connection).reader().read(out) {
                 Ok(0) => return Err(self.closed()),
                 Ok(n) => {
                     self.heard = true;
@@ -481,15 +496,54 @@ impl Tls {
                 Err(e) if e.kind() == io::ErrorKind::UnexpectedEof => return Err(self.closed()),
                 Err(e) => return Err(e),
             }
-            let read = self.connection.read_tls(&mut self.socket)?;
+            let read = self.socket.read(&mut records)?;
             if read == 0 {
                 return Err(self.closed());
             }
-            if let Err(error) = self.connection.process_new_packets() {
-                let _ = self.flush_tls();
-                return Err(self.explained(io::Error::new(io::ErrorKind::InvalidData, error)));
+            let mut connection = lock(&self.connection);
+            let mut arrived = &records[..read];
+            while !arrived.is_empty() {
+                connection.read_tls(&mut arrived)?;
+                if let Err(error) = connection.process_new_packets() {
+                    let _ = flush(&mut connection, &mut self.socket);
+                    drop(connection);
+                    return Err(self.explained(io::Error::new(io::ErrorKind::InvalidData, error)));
+                }
             }
         }
+    }
+}
+
+/// Sends what `connection` has queued.
+fn flush(connection: &mut Connection, socket: &mut TcpStream) -> io::Result<()> {
+    while connection.wants_write() {
+        connection.write_tls(socket)?;
+    }
+    Ok(())
+}
+
+/// Encrypts `frame` and sends it.
+fn send(shared: &Mutex<Connection>, socket: &mut TcpStream, frame: &[u8]) -> io::Result<()> {
+    let mut connection = lock(shared);
+    connection.writer().write_all(frame)?;
+    flush(&mut connection, socket)
+}
+
+impl Write for TlsWriter {
+    fn write(&mut self, frame: &[u8]) -> io::Result<usize> {
+        send(&self.connection, &mut self.socket, frame)?;
+        Ok(frame.len())
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        Ok(())
+    }
+}
+
+impl TlsWriter {
+    /// Closes the connection both ways, ending the reading thread's wait too.
+    pub fn shutdown(&self) -> io::Result<()> {
+        self.socket.shutdown(std::net::Shutdown::Both)
     }
 }
 
@@ -510,39 +564,11 @@ impl Transport for Tls {
     }
 
     fn send(&mut self, frame: &[u8]) -> io::Result<()> {
-        self.connection.writer().write_all(frame)?;
-        self.flush_tls()
+        send(&self.connection, &mut self.socket, frame)
     }
 
     fn receive(&mut self, buf: &mut Vec<u8>, deadline: Instant) -> io::Result<usize> {
-        let mut chunk = [0u8; 512];
-        loop {
-            let Some(left) = time_left(deadline) else {
-                return Ok(0);
-            };
-            let left_ms = (left.as_micros().div_ceil(1000) as u64).max(1);
-            if left_ms != self.read_timeout_ms {
-                self.socket
-                    .set_read_timeout(Some(Duration::from_millis(left_ms)))?;
-                self.read_timeout_ms = left_ms;
-            }
-            match self.read_plain(&mut chunk) {
-                Ok(n) => {
-                    buf.extend_from_slice(&chunk[..n]);
-                    return Ok(n);
-                }
-                Err(e)
-                    if matches!(
-                        e.kind(),
-                        io::ErrorKind::WouldBlock | io::ErrorKind::TimedOut
-                    ) =>
-                {
-                    return Ok(0)
-                }
-                Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
-                Err(e) => return Err(e),
-            }
-        }
+        receive_timed(self, buf, deadline)
     }
 
     fn is_serial_line(&self) -> bool {
@@ -550,13 +576,28 @@ impl Transport for Tls {
     }
 }
 
+impl TimedRead for Tls {
+    fn socket(&self) -> &TcpStream {
+        &self.socket
+    }
+
+    fn timeout_ms(&mut self) -> &mut u64 {
+        &mut self.read_timeout_ms
+    }
+
+    fn read_some(&mut self, chunk: &mut [u8]) -> io::Result<usize> {
+        self.read_plain(chunk)
+    }
+}
+
 impl Drop for Tls {
     fn drop(&mut self) {
         // The polite end of a TLS connection; the other end may have gone already.
-        if !self.connection.is_handshaking() {
-            self.connection.send_close_notify();
+        let mut connection = lock(&self.connection);
+        if !connection.is_handshaking() {
+            connection.send_close_notify();
             let _ = self.socket.set_nonblocking(true);
-            let _ = self.flush_tls();
+            let _ = flush(&mut connection, &mut self.socket);
         }
     }
 }
