@@ -144,7 +144,7 @@ pub fn open_at(
         }
         Endpoint::Tls { host, port } => {
             // The files are read and checked before anything is sent.
-            let tls = ClientTls::new(&options.tls).map_err(|e| Error::Io(e.into()))?;
+            let tls = ClientTls::new(&options.tls)?;
             Tls::connect(host, *port, timeout, &tls).map(|stream| {
                 if let (true, Some(session)) = (options.tell_session, stream.session()) {
                     tell_session(session);

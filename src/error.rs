@@ -10,6 +10,7 @@ use mbtool_core::model::address::AddressError;
 use mbtool_core::model::map::MapError;
 use mbtool_core::slave::datafile::DataFileError;
 use mbtool_core::transport::endpoint::EndpointError;
+use mbtool_core::transport::tls::TlsError;
 
 #[derive(Debug, Error)]
 pub enum Error {
@@ -57,6 +58,17 @@ impl From<MapError> for Error {
 }
 
 /// A data file that cannot be read is an I/O failure; one with faults in it is bad input.
+impl From<TlsError> for Error {
+    fn from(error: TlsError) -> Self {
+        match error {
+            // The command line lacks an option: it is told as usage.
+            TlsError::Missing(_) => Error::usage(error.to_string()),
+            // A file that cannot be used, a handshake that failed: the connection fails.
+            _ => Error::Io(error.into()),
+        }
+    }
+}
+
 impl From<DataFileError> for Error {
     fn from(error: DataFileError) -> Self {
         match error {

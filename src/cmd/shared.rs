@@ -157,7 +157,7 @@ pub fn security(
     }
     let rules = Roles::new(&roles.roles, roles.default_role.as_deref())
         .map_err(|e| Error::usage(e.to_string()))?;
-    let tls = TlsServer::new(&settings.connection.tls).map_err(|e| Error::Io(e.into()))?;
+    let tls = TlsServer::new(&settings.connection.tls)?;
     if let Some(out_of_date) = &tls.out_of_date {
         mbtool::note!("mbtool: warning: {out_of_date}");
     }

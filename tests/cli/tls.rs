@@ -466,6 +466,11 @@ fn every_failure_is_one_line_saying_what_to_do() {
             files(&pki.path("viewer.pem"), &garbage),
             "holds no private key",
         ),
+    ] {
+        expect(&url(quiet), &args, message);
+    }
+    // An option missing for tls:// is a usage error.
+    for (args, message) in [
         (
             vec![
                 "--cert".into(),
@@ -477,7 +482,12 @@ fn every_failure_is_one_line_saying_what_to_do() {
         ),
         (vec![], "tls:// needs --ca FILE"),
     ] {
-        expect(&url(quiet), &args, message);
+        let (code, _, err) = client(&url(quiet), &args, "read-holding 17 400108");
+        assert_eq!(code, 2, "{err}");
+        assert!(
+            err.starts_with("mbtool: ") && err.contains(message),
+            "{err}"
+        );
     }
     assert!(
         connections
