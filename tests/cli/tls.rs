@@ -692,3 +692,40 @@ fn gateway_takes_tls_clients_with_their_roles() {
         "{rows:#?}"
     );
 }
+
+#[test]
+fn a_device_that_closes_idle_connections_is_connected_again() {
+    let pki = Pki::new();
+    let port = free_port();
+    let script = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/peers/tls_closing_slave.py"
+    );
+    let _device = Stopped(
+        std::process::Command::new("python3")
+            .arg(script)
+            .args([
+                pki.path("server.pem"),
+                pki.path("server.key"),
+                pki.path("ca.pem"),
+            ])
+            .arg(port.to_string())
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    assert!(wait_for_listener(port, Duration::from_secs(10)));
+    let (code, out, err) = client(
+        &format!("tls://localhost:{port}"),
+        &pki.client("operator"),
+        "read-holding 17 400001 --poll 100ms --count 4 -o values",
+    );
+    // wait_for_listener's own connection took no answer: every poll is one, none fails.
+    assert_eq!(code, 0, "{out}{err}");
+    assert_eq!(
+        out.split_whitespace().collect::<Vec<_>>(),
+        ["0", "1", "2", "3"],
+        "{err}"
+    );
+}

@@ -312,7 +312,9 @@ pub struct TlsWriter {
 struct Master {
     tls: ClientTls,
     name: String,
+    host: String,
     port: u16,
+    timeout: Duration,
 }
 
 impl Tls {
@@ -383,7 +385,9 @@ impl Tls {
             stream.master = Some(Master {
                 tls: tls.clone(),
                 name: name.clone(),
+                host: host.to_string(),
                 port,
+                timeout,
             });
             stream
                 .handshake(Instant::now() + timeout, Some(timeout))
@@ -560,10 +564,31 @@ impl Transport for Tls {
             }
         };
         self.socket.set_nonblocking(false)?;
-        result
+        match (result, &self.master) {
+            // Closed while idle, as devices close a connection after a minute: nothing
+            // was lost, and a new connection has nothing stale.
+            (Err(e), Some(master))
+                if matches!(
+                    e.kind(),
+                    io::ErrorKind::ConnectionAborted
+                        | io::ErrorKind::ConnectionReset
+                        | io::ErrorKind::UnexpectedEof
+                ) =>
+            {
+                let again = Tls::connect(&master.host, master.port, master.timeout, &master.tls)?;
+                *self = again;
+                Ok(())
+            }
+            (result, _) => result,
+        }
     }
 
     fn send(&mut self, frame: &[u8]) -> io::Result<()> {
+        // A connection this end made may have been closed while it was idle (its close
+        // told, or not): it is made again rather than failing the request.
+        if self.master.is_some() {
+            self.discard_input()?;
+        }
         send(&self.connection, &mut self.socket, frame)
     }
 
