@@ -25,7 +25,32 @@ pub fn endpoint(options: &Options) -> Result<Endpoint> {
             "no --port: give a serial device (/dev/ttyUSB0), tcp://HOST[:PORT], tls://HOST[:PORT], rtu+tcp://HOST:PORT, or sim to try the built-in slave",
         )
     })?;
-    Ok(Endpoint::parse(port)?)
+    let endpoint = Endpoint::parse(port)?;
+    tls_fits(options, &endpoint)?;
+    Ok(endpoint)
+}
+
+/// The certificate options against the port: for tls://, read and checked now, so that a
+/// poll or a watch does not start on files that cannot work; typed for another port (and
+/// no tls:// second path), refused, since they would do nothing.
+pub fn tls_fits(options: &Options, endpoint: &Endpoint) -> Result<()> {
+    let secondary_tls = options
+        .secondary
+        .as_deref()
+        .and_then(|secondary| secondary.port.as_deref())
+        .is_some_and(|port| matches!(Endpoint::parse(port), Ok(Endpoint::Tls { .. })));
+    match endpoint {
+        Endpoint::Tls { .. } => ClientTls::new(&options.tls).map(drop).map_err(Error::from),
+        _ if secondary_tls || !options.tls_typed => Ok(()),
+        _ => Err(tls_options_unused(endpoint)),
+    }
+}
+
+/// The certificate options typed for a port that is not tls://.
+pub fn tls_options_unused(endpoint: &Endpoint) -> Error {
+    Error::usage(format!(
+        "--cert, --key, --ca and --tls-server-name are for tls:// ports: {endpoint} is not one"
+    ))
 }
 
 /// What a command does with `--port`. The framing rules are the same for every command;

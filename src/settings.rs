@@ -64,6 +64,9 @@ pub struct Connection {
     pub switch: SwitchRule,
     /// The certificates for a tls:// port.
     pub tls: TlsFiles,
+    /// Whether one of them was typed, not only set in the environment: a port that is
+    /// not tls:// refuses it then, and ignores the variable.
+    pub tls_typed: bool,
     /// Whether `-v` asks for a TLS connection's version, cipher suite and certificates
     /// to be told.
     pub tell_session: bool,
@@ -167,6 +170,9 @@ pub fn resolve(
                 ca: cli.tls.ca.clone(),
                 server_name: cli.tls.tls_server_name.clone(),
             },
+            tls_typed: ["cert", "key", "ca", "tls_server_name"]
+                .iter()
+                .any(|id| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine)),
             tell_session: cli.output.verbose,
         },
         output: Output {

@@ -24,7 +24,9 @@ fn upstream(settings: &Settings) -> Result<Endpoint, Error> {
             "gateway needs --port: the serial line (/dev/ttyUSB0), rtu+tcp://HOST:PORT or tcp://HOST:PORT",
         ));
     }
-    let endpoint = connection::endpoint(&settings.connection)?;
+    // Parsed alone: the certificate options are the listener's.
+    let port = settings.connection.port.as_deref().unwrap_or_default();
+    let endpoint = Endpoint::parse(port)?;
     if matches!(endpoint, Endpoint::Tls { .. }) {
         // --cert, --key and --ca are the listener's: a line that is itself behind TLS
         // would need a second set.

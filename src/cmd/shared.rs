@@ -148,6 +148,9 @@ pub fn security(
     endpoint: &Endpoint,
 ) -> Result<Option<Security>, Error> {
     if !matches!(endpoint, Endpoint::Tls { .. }) {
+        if settings.connection.tls_typed {
+            return Err(connection::tls_options_unused(endpoint));
+        }
         if !roles.roles.is_empty() || roles.default_role.is_some() {
             return Err(Error::usage(
                 "--role and --default-role are for clients known by their certificates: listen on a tls:// port",

@@ -35,6 +35,8 @@ struct JsonAnswer {
 struct JsonTransaction<'a> {
     time: &'a str,
     client: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    role: Option<&'a str>,
     unit: u8,
     slave: u8,
     transaction: u16,
@@ -52,7 +54,7 @@ struct JsonTransaction<'a> {
     client_gone: bool,
 }
 
-const CSV_HEADER: &str = "time,client,unit,slave,transaction,function,request,answer,queued_us,response_time_us,tries,outcome,why\n";
+const CSV_HEADER: &str = "time,client,unit,slave,transaction,function,request,answer,queued_us,response_time_us,tries,outcome,why,role\n";
 
 /// The fields of an answer in the light of its request: a read's values at the addresses
 /// asked, and of coils and inputs only as many as asked (the last byte's padding is not a
@@ -122,6 +124,10 @@ impl GatewayWriter {
         if !t.delivered && t.answer.is_some() {
             outcome.push_str(" (client gone)");
         }
+        // A TLS client's role, last: the columns stay in line.
+        if let Some(role) = &t.role {
+            outcome.push_str(&format!("  [role {role}]"));
+        }
         let colour = match t.outcome {
             _ if !self.colour => "",
             Outcome::Answer | Outcome::Broadcast => "",
@@ -150,6 +156,7 @@ impl GatewayWriter {
         let mut line = serde_json::to_vec(&JsonTransaction {
             time,
             client: &t.client,
+            role: t.role.as_deref(),
             unit: t.unit,
             slave: t.slave,
             transaction: t.transaction,
@@ -183,6 +190,7 @@ impl GatewayWriter {
             t.tries.to_string(),
             t.outcome.name().to_string(),
             why(&t.outcome).unwrap_or_default().to_string(),
+            t.role.as_deref().unwrap_or_default().to_string(),
         ];
         let mut line = fields.map(|f| csv_field(&f)).join(",");
         line.push('\n');

@@ -683,14 +683,185 @@ fn gateway_takes_tls_clients_with_their_roles() {
         // Answered by the gateway itself: the line was not asked.
         assert_eq!(row["tries"], 0, "{row}");
     }
+    assert_eq!(rows[1]["role"], "viewer", "{rows:#?}");
+    assert_eq!(rows[3]["role"], "operator", "{rows:#?}");
+    // The client is its address alone, as for plain clients.
     assert!(
-        rows[1]["client"].as_str().unwrap().ends_with("(viewer)"),
+        rows[3]["client"]
+            .as_str()
+            .unwrap()
+            .starts_with("127.0.0.1:"),
         "{rows:#?}"
     );
-    assert!(
-        rows[3]["client"].as_str().unwrap().ends_with("(operator)"),
-        "{rows:#?}"
+}
+
+/// The closing device of tests/peers (Python's ssl, that is OpenSSL), speaking `version`
+/// (`1.3`, or `1.2` alone), on a free port.
+fn openssl_device(pki: &Pki, version: &str) -> (Stopped, u16) {
+    let port = free_port();
+    let script = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/peers/tls_closing_slave.py"
     );
+    let device = Stopped(
+        std::process::Command::new("python3")
+            .arg(script)
+            .args([
+                pki.path("server.pem"),
+                pki.path("server.key"),
+                pki.path("ca.pem"),
+            ])
+            .args([port.to_string(), version.to_string()])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    assert!(wait_for_listener(port, Duration::from_secs(10)));
+    (device, port)
+}
+
+#[test]
+fn an_openssl_device_that_refuses_is_told_the_same_way_every_time() {
+    let pki = Pki::new();
+    for version in ["1.3", "1.2"] {
+        let (_device, port) = openssl_device(&pki, version);
+        let url = format!("tls://localhost:{port}");
+        let ca_only = vec!["--ca".to_string(), pki.path("ca.pem")];
+        for _ in 0..3 {
+            let (code, _, err) = client(&url, &ca_only, "read-holding 17 400001");
+            assert_eq!(code, 1, "{err}");
+            assert!(
+                err.contains("give --cert and --key"),
+                "TLS {version}: {err}"
+            );
+            assert!(!err.contains("tcp://"), "TLS {version}: {err}");
+            let (code, _, err) = client(
+                &url,
+                &pki.client("stranger-client"),
+                "read-holding 17 400001",
+            );
+            assert_eq!(code, 1, "{err}");
+            assert!(
+                err.contains("refused this end's certificate"),
+                "TLS {version}: {err}"
+            );
+        }
+    }
+}
+
+#[test]
+fn files_that_are_not_what_they_should_be_say_how_to_mend_them() {
+    let pki = Pki::new();
+    let dir = pki.dir.path();
+    let der = dir.join("operator.der");
+    let status = std::process::Command::new("openssl")
+        .args([
+            "x509",
+            "-in",
+            &pki.path("operator.pem"),
+            "-outform",
+            "der",
+            "-out",
+        ])
+        .arg(&der)
+        .status();
+    let pem = std::fs::read_to_string(pki.path("ca.pem")).unwrap();
+    std::fs::write(dir.join("cut.pem"), &pem[..pem.len() / 2]).unwrap();
+    std::fs::write(
+        dir.join("encrypted.key"),
+        "-----BEGIN ENCRYPTED PRIVATE KEY-----\nMIIBvTBXBgkqhkiG9w0BBQ0wSjApBgkqhkiG9w0BBQwwHAQI\n-----END ENCRYPTED PRIVATE KEY-----\n",
+    )
+    .unwrap();
+    let with = |cert: String, key: String, ca: String| {
+        vec![
+            "--cert".into(),
+            cert,
+            "--key".into(),
+            key,
+            "--ca".into(),
+            ca,
+        ]
+    };
+    let mut cases = vec![
+        (
+            with(
+                pki.path("operator.pem"),
+                pki.path("encrypted.key"),
+                pki.path("ca.pem"),
+            ),
+            "the key is encrypted: give it decrypted",
+        ),
+        (
+            with(
+                pki.path("operator.pem"),
+                pki.path("operator.key"),
+                pki.path("cut.pem"),
+            ),
+            "the file is cut short",
+        ),
+        (
+            with(
+                pki.path("operator.pem"),
+                pki.path("operator.key"),
+                dir.display().to_string(),
+            ),
+            "it is a folder",
+        ),
+    ];
+    if status.is_ok_and(|s| s.success()) {
+        cases.push((
+            with(
+                der.display().to_string(),
+                pki.path("operator.key"),
+                pki.path("ca.pem"),
+            ),
+            "it is DER, not PEM: convert it with 'openssl x509 -inform der",
+        ));
+    }
+    for (args, message) in cases {
+        let (code, _, err) = client("tls://127.0.0.1:9", &args, "read-holding 17 400001");
+        assert_eq!(code, 1, "{err}");
+        assert!(err.contains(message), "{message}: {err}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+}
+
+#[test]
+fn certificate_options_for_a_port_that_is_not_tls_are_refused() {
+    let pki = Pki::new();
+    crate::support::assert_refused(
+        &[
+            "--port",
+            "sim",
+            "--ca",
+            &pki.path("ca.pem"),
+            "read-holding",
+            "17",
+            "400108",
+        ],
+        "mbtool: --cert, --key, --ca and --tls-server-name are for tls:// ports: sim is not one",
+    );
+    // From the environment they are left to the tls:// commands of the same shell.
+    let output = mbtool()
+        .env("MBTOOL_CA", pki.path("ca.pem"))
+        .args([
+            "--port",
+            "sim",
+            "read-holding",
+            "17",
+            "400108",
+            "-o",
+            "values",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(String::from_utf8_lossy(&output.stdout).trim(), "555");
+    // A scan of a TLS port on tcp:// stops at once and says so.
+    let (_server, port, _) = serve_tls(&pki, "server", &[]);
+    let (code, _, err) = client(&format!("tcp://127.0.0.1:{port}"), &[], "scan --ids 1-3");
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("use tls://"), "{err}");
 }
 
 #[test]

@@ -2,7 +2,9 @@
 """A Modbus/TCP Security device that closes each connection after one answer, as devices
 close idle connections: answers any request with one holding register counting up.
 
-    tls_closing_slave.py CERT KEY CA PORT
+    tls_closing_slave.py CERT KEY CA PORT [1.2]
+
+Built on Python's ssl (OpenSSL), as many devices' TLS is; with 1.2, it speaks TLS 1.2 only.
 """
 import socket
 import ssl
@@ -12,6 +14,8 @@ import sys
 def main():
     cert, key, ca, port = sys.argv[1:5]
     context = ssl.SSLContext(ssl.PROTOCOL_TLS_SERVER)
+    if sys.argv[5:] == ["1.2"]:
+        context.maximum_version = ssl.TLSVersion.TLSv1_2
     context.load_cert_chain(cert, key)
     context.load_verify_locations(ca)
     context.verify_mode = ssl.CERT_REQUIRED

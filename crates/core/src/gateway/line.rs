@@ -85,6 +85,7 @@ impl Line {
         let slave = options.unit_map.slave_for(unit);
         let done = |request: Request, answer: Option<Pdu>, tries, outcome| Transaction {
             client: job.client.clone(),
+            role: job.role.clone(),
             unit,
             slave,
             transaction,

@@ -129,6 +129,8 @@ impl Outcome {
 pub struct Transaction {
     /// The client that asked.
     pub client: Arc<str>,
+    /// Its role, when it came over TLS with one.
+    pub role: Option<Arc<str>>,
     /// The unit id it asked.
     pub unit: u8,
     /// The slave id asked on the line.
@@ -265,6 +267,7 @@ pub struct Summary {
 /// A request waiting for the line.
 struct Job {
     client: Arc<str>,
+    role: Option<Arc<str>>,
     /// What the client may do, where its TLS role is checked.
     rights: Option<Arc<Role>>,
     /// The whole MBAP frame.
@@ -382,11 +385,8 @@ impl Gateway {
             }
         })?;
         lock(&self.writers).insert(id, answers);
-        // A client over TLS is shown with its role.
-        let peer: Arc<str> = match &role {
-            Some(role) => Arc::from(format!("{} ({role})", client.peer)),
-            None => Arc::from(client.peer.as_str()),
-        };
+        let peer: Arc<str> = Arc::from(client.peer.as_str());
+        let role: Option<Arc<str>> = role.map(Arc::from);
         let received = receive_frames(
             transport.as_mut(),
             Mode::Tcp,
@@ -397,6 +397,7 @@ impl Gateway {
                     id,
                     Job {
                         client: Arc::clone(&peer),
+                        role: role.clone(),
                         rights: rights.clone(),
                         frame: found.bytes.to_vec(),
                         arrived: Instant::now(),

@@ -258,6 +258,10 @@ where
             report.requests += 1;
             let mut late = Vec::new();
             let outcome = match ask(&mut master, *slave, &request, &mut late) {
+                // What is not Modbus at all (a TLS port on tcp://) ends the scan, told.
+                Err(MasterError::Io(e)) if e.kind() == std::io::ErrorKind::InvalidData => {
+                    return Err(MasterError::Io(e).into())
+                }
                 Err(MasterError::Io(_)) => {
                     report.reconnected.push(*slave);
                     match open(setting) {

@@ -65,7 +65,10 @@ pub enum EndpointError {
         rest: String,
     },
     /// No host before the port.
-    #[error("{scheme}{rest}: give a host, as in {scheme}127.0.0.1:502")]
+    #[error(
+        "{scheme}{rest}: give a host, as in {scheme}127.0.0.1:{}",
+        example_port(scheme)
+    )]
     NoHost {
         /// The scheme as typed (`tcp://`, `rtu+tcp://`).
         scheme: &'static str,
@@ -98,6 +101,14 @@ pub enum EndpointError {
     /// An empty `--port`.
     #[error("--port is empty: give a serial device, tcp://HOST[:PORT] or sim")]
     Empty,
+}
+
+/// The port an example of `scheme` shows: its standard one.
+fn example_port(scheme: &str) -> u16 {
+    match scheme {
+        "tls://" => super::tls::MODBUS_TLS_PORT,
+        _ => MODBUS_TCP_PORT,
+    }
 }
 
 fn host_port(

@@ -20,6 +20,9 @@ fn read_pem(path: &Path) -> Result<Vec<u8>, TlsError> {
         path: path.to_path_buf(),
         why,
     };
+    if path.is_dir() {
+        return Err(unreadable("it is a folder: give the PEM file in it".into()));
+    }
     let file = std::fs::File::open(path).map_err(|e| unreadable(e.to_string()))?;
     let mut bytes = Vec::new();
     file.take(PEM_LIMIT + 1)
@@ -34,20 +37,70 @@ fn read_pem(path: &Path) -> Result<Vec<u8>, TlsError> {
     Ok(bytes)
 }
 
+/// What a file holds in place of the certificate or key asked for, as what to do.
+#[derive(Clone, Copy)]
+enum Holds {
+    Certificate,
+    Key,
+}
+
+impl Holds {
+    fn missing(self, path: &Path, pem: &[u8]) -> TlsError {
+        let (what, markers, convert) = match self {
+            Holds::Certificate => (
+                "certificate",
+                "'-----BEGIN CERTIFICATE-----'",
+                "openssl x509 -inform der",
+            ),
+            Holds::Key => (
+                "private key",
+                "'-----BEGIN PRIVATE KEY-----' (or RSA or EC PRIVATE KEY)",
+                "openssl pkey -inform der",
+            ),
+        };
+        let text = String::from_utf8_lossy(pem);
+        let shown = path.display();
+        let why = if pem.first() == Some(&0x30) && !text.contains("-----BEGIN") {
+            format!("it is DER, not PEM: convert it with '{convert} -in {shown} -out {shown}.pem'")
+        } else if text.contains("ENCRYPTED PRIVATE KEY") || text.contains("Proc-Type: 4,ENCRYPTED")
+        {
+            format!("the key is encrypted: give it decrypted ('openssl pkey -in {shown} -out plain.key')")
+        } else {
+            format!("no PEM block {markers}")
+        };
+        TlsError::NoPem {
+            path: path.to_path_buf(),
+            what,
+            why,
+        }
+    }
+
+    fn damaged(self, path: &Path, error: &rustls::pki_types::pem::Error) -> TlsError {
+        use rustls::pki_types::pem::Error as Pem;
+        let why = match error {
+            Pem::MissingSectionEnd { .. } => "a PEM block has no END line: the file is cut short",
+            Pem::IllegalSectionStart { .. } => "a PEM block's BEGIN line is damaged",
+            Pem::Base64Decode(_) => "the base64 inside a PEM block is damaged",
+            _ => "it is no PEM file",
+        };
+        let what = match self {
+            Holds::Certificate => "certificate",
+            Holds::Key => "key",
+        };
+        TlsError::Malformed {
+            path: path.to_path_buf(),
+            why: format!("{why}: give the whole {what} file"),
+        }
+    }
+}
+
 pub(super) fn certificates(path: &Path) -> Result<Vec<CertificateDer<'static>>, TlsError> {
     let pem = read_pem(path)?;
     let chain = CertificateDer::pem_slice_iter(&pem)
         .collect::<Result<Vec<_>, _>>()
-        .map_err(|e| TlsError::Malformed {
-            path: path.to_path_buf(),
-            why: format!("not a readable PEM file ({e})"),
-        })?;
+        .map_err(|e| Holds::Certificate.damaged(path, &e))?;
     let Some(first) = chain.first() else {
-        return Err(TlsError::NoPem {
-            path: path.to_path_buf(),
-            what: "certificate",
-            marker: "CERTIFICATE-----'",
-        });
+        return Err(Holds::Certificate.missing(path, &pem));
     };
     if x509_parser::parse_x509_certificate(first).is_err() {
         return Err(TlsError::Malformed {
@@ -61,15 +114,8 @@ pub(super) fn certificates(path: &Path) -> Result<Vec<CertificateDer<'static>>, 
 pub(super) fn private_key(path: &Path) -> Result<PrivateKeyDer<'static>, TlsError> {
     let pem = read_pem(path)?;
     PrivateKeyDer::from_pem_slice(&pem).map_err(|e| match e {
-        rustls::pki_types::pem::Error::NoItemsFound => TlsError::NoPem {
-            path: path.to_path_buf(),
-            what: "private key",
-            marker: "PRIVATE KEY-----', 'RSA PRIVATE KEY' or 'EC PRIVATE KEY",
-        },
-        e => TlsError::Malformed {
-            path: path.to_path_buf(),
-            why: format!("not a readable PEM key ({e})"),
-        },
+        rustls::pki_types::pem::Error::NoItemsFound => Holds::Key.missing(path, &pem),
+        e => Holds::Key.damaged(path, &e),
     })
 }
 
@@ -89,6 +135,15 @@ pub(super) fn key_error(error: rustls::Error, cert: &Path, key: &Path) -> TlsErr
         rustls::Error::InconsistentKeys(_) => TlsError::KeyMismatch {
             cert: cert.to_path_buf(),
             key: key.to_path_buf(),
+        },
+        rustls::Error::InvalidCertificate(why) => TlsError::Malformed {
+            path: cert.to_path_buf(),
+            why: match format!("{why:?}") {
+                version if version.contains("UnsupportedCertVersion") => {
+                    "an X.509 version 1 certificate: version 3 is needed (openssl makes one with -extfile)".into()
+                }
+                other => format!("the certificate cannot be used ({other})"),
+            },
         },
         other => TlsError::Malformed {
             path: key.to_path_buf(),

@@ -59,14 +59,14 @@ pub enum TlsError {
         why: String,
     },
     /// A file without the PEM block it should hold.
-    #[error("{path} holds no {what} (a PEM block '-----BEGIN {marker}')")]
+    #[error("{path} holds no {what}: {why}")]
     NoPem {
         /// The file.
         path: PathBuf,
         /// What it should hold.
         what: &'static str,
-        /// The PEM label of that.
-        marker: &'static str,
+        /// What it holds instead, and what to do.
+        why: String,
     },
     /// A certificate or key that does not parse.
     #[error("{path}: {why}")]
@@ -429,6 +429,16 @@ impl Tls {
         // A server's clients have a write deadline: it outlives the handshake's.
         let write_timeout = self.socket.write_timeout()?;
         let mut connection = lock(&self.connection);
+        // Whether the other end has answered in TLS: a close after that is a refusal, a
+        // close before it is no TLS at all.
+        let mut answered = false;
+        let ended = |answered: bool| {
+            let (kind, what) = match answered {
+                true => (io::ErrorKind::ConnectionAborted, "ended the handshake"),
+                false => (io::ErrorKind::UnexpectedEof, "closed during the handshake"),
+            };
+            io::Error::new(kind, what)
+        };
         while connection.is_handshaking() {
             let Some(left) = time_left(deadline) else {
                 return Err(handshake_timeout(timeout));
@@ -436,13 +446,16 @@ impl Tls {
             self.socket.set_read_timeout(Some(left))?;
             self.socket.set_write_timeout(Some(left))?;
             match connection.complete_io(&mut self.socket) {
-                Ok((0, 0)) if connection.is_handshaking() => {
-                    return Err(io::Error::new(
-                        io::ErrorKind::UnexpectedEof,
-                        "closed during the handshake",
-                    ))
+                Ok((0, 0)) if connection.is_handshaking() => return Err(ended(answered)),
+                Ok((read, _)) => answered |= read > 0,
+                Err(e)
+                    if matches!(
+                        e.kind(),
+                        io::ErrorKind::ConnectionReset | io::ErrorKind::BrokenPipe
+                    ) =>
+                {
+                    return Err(ended(answered))
                 }
-                Ok(_) => {}
                 Err(e)
                     if matches!(
                         e.kind(),
@@ -500,10 +513,12 @@ impl Tls {
                 Err(e) if e.kind() == io::ErrorKind::UnexpectedEof => return Err(self.closed()),
                 Err(e) => return Err(e),
             }
-            let read = self.socket.read(&mut records)?;
-            if read == 0 {
-                return Err(self.closed());
-            }
+            let read = match self.socket.read(&mut records) {
+                Ok(0) => return Err(self.closed()),
+                Ok(read) => read,
+                Err(e) if is_gone(&e) => return Err(self.closed()),
+                Err(e) => return Err(e),
+            };
             let mut connection = lock(&self.connection);
             let mut arrived = &records[..read];
             while !arrived.is_empty() {
@@ -566,15 +581,9 @@ impl Transport for Tls {
         self.socket.set_nonblocking(false)?;
         match (result, &self.master) {
             // Closed while idle, as devices close a connection after a minute: nothing
-            // was lost, and a new connection has nothing stale.
-            (Err(e), Some(master))
-                if matches!(
-                    e.kind(),
-                    io::ErrorKind::ConnectionAborted
-                        | io::ErrorKind::ConnectionReset
-                        | io::ErrorKind::UnexpectedEof
-                ) =>
-            {
+            // was lost, and a new connection has nothing stale. A connection closed
+            // before it carried anything was refused, and is told so.
+            (Err(e), Some(master)) if self.heard && is_gone(&e) => {
                 let again = Tls::connect(&master.host, master.port, master.timeout, &master.tls)?;
                 *self = again;
                 Ok(())
@@ -589,7 +598,10 @@ impl Transport for Tls {
         if self.master.is_some() {
             self.discard_input()?;
         }
-        send(&self.connection, &mut self.socket, frame)
+        send(&self.connection, &mut self.socket, frame).map_err(|e| match is_gone(&e) {
+            true => self.closed(),
+            false => e,
+        })
     }
 
     fn receive(&mut self, buf: &mut Vec<u8>, deadline: Instant) -> io::Result<usize> {
@@ -641,6 +653,17 @@ fn closed(peer: &str) -> io::Error {
     io::Error::new(
         io::ErrorKind::ConnectionAborted,
         format!("{peer} closed the connection"),
+    )
+}
+
+/// Whether the other end has closed or reset the connection.
+fn is_gone(error: &io::Error) -> bool {
+    matches!(
+        error.kind(),
+        io::ErrorKind::ConnectionAborted
+            | io::ErrorKind::ConnectionReset
+            | io::ErrorKind::BrokenPipe
+            | io::ErrorKind::UnexpectedEof
     )
 }
 

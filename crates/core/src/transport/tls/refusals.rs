@@ -7,6 +7,9 @@ use rustls::{AlertDescription, CertificateError};
 
 use super::{ClientTls, MODBUS_TLS_PORT};
 
+/// What a device that speaks an older TLS is told.
+const NO_COMMON_VERSION: &str = "the device speaks neither TLS 1.2 nor 1.3, which Modbus/TCP Security requires and mbtool speaks: update the device's firmware";
+
 /// The rustls error inside an I/O error, if it is one.
 fn rustls_error(error: &io::Error) -> Option<&rustls::Error> {
     error.get_ref()?.downcast_ref::<rustls::Error>()
@@ -33,10 +36,16 @@ pub(super) fn client_side(
             CertificateError::UnknownIssuer | CertificateError::BadSignature => format!(
                 "the device's certificate is not signed by a CA of {ca}: give the CA that signed it with --ca"
             ),
-            CertificateError::NotValidForName | CertificateError::NotValidForNameContext { .. } => format!(
-                "the device's certificate is not for '{name}'{}: connect by a name it holds, or give it with --tls-server-name",
-                presented_names(certificate)
-            ),
+            CertificateError::NotValidForName | CertificateError::NotValidForNameContext { .. } => {
+                let fix = match tls.server_name {
+                    Some(_) => "give --tls-server-name one of the names it holds",
+                    None => "connect by a name it holds, or give it with --tls-server-name",
+                };
+                format!(
+                    "the device's certificate is not for '{name}'{}: {fix}",
+                    presented_names(certificate)
+                )
+            }
             other => format!("the device's certificate was refused: {other:?}"),
         },
         Some(rustls::Error::AlertReceived(alert)) => match alert {
@@ -58,15 +67,16 @@ pub(super) fn client_side(
                 "the device says this end's certificate{} has expired: renew it",
                 tls.cert.as_ref().map_or_else(String::new, |c| format!(" {}", c.display()))
             ),
+            AlertDescription::ProtocolVersion => NO_COMMON_VERSION.into(),
             other => format!("the device ended the handshake: {other:?}"),
         },
+        Some(rustls::Error::PeerIncompatible(why)) => format!("{NO_COMMON_VERSION} ({why:?})"),
         Some(rustls::Error::InvalidMessage(_) | rustls::Error::InappropriateMessage { .. }) => {
             "the answer is not TLS: this looks like a plain Modbus TCP port: use tcp://".into()
         }
         Some(other) => format!("TLS handshake failed: {other}"),
-        None if error.kind() == io::ErrorKind::UnexpectedEof
-            || error.kind() == io::ErrorKind::ConnectionReset =>
-        {
+        // Closed before it said anything in TLS.
+        None if error.kind() == io::ErrorKind::UnexpectedEof => {
             let hint = if port == MODBUS_TLS_PORT {
                 "is TLS turned on on the device?"
             } else {
@@ -74,6 +84,14 @@ pub(super) fn client_side(
             };
             format!("the device closed the connection during the TLS handshake: {hint}")
         }
+        // Closed after it had answered in TLS, without an alert to say why.
+        None if error.kind() == io::ErrorKind::ConnectionAborted => match &tls.cert {
+            None => "the device ended the TLS handshake without saying why: most likely it wants a client certificate: give --cert and --key".into(),
+            Some(cert) => format!(
+                "the device ended the TLS handshake without saying why: it may not accept the certificate {} (signed by a CA it trusts? in date?)",
+                cert.display()
+            ),
+        },
         None => return error,
     };
     io::Error::new(
