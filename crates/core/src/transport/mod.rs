@@ -14,6 +14,12 @@ use std::time::Instant;
 
 pub use endpoint::Endpoint;
 
+/// How long a connection goes unused before a master checks, as it sends, whether the
+/// other end has closed it: devices close idle connections (some gateways after every
+/// answer, which reaches here within a millisecond), and a master asking back to back
+/// saves the check's system calls.
+pub(crate) const IDLE_CHECK_AFTER: std::time::Duration = std::time::Duration::from_millis(5);
+
 /// A byte pipe to a slave (or, for a slave, to its master).
 pub trait Transport: Send {
     /// Throws away bytes that arrived unasked, such as a late answer to an earlier request.

@@ -5,7 +5,7 @@ use std::net::{SocketAddr, TcpStream, ToSocketAddrs};
 use std::time::{Duration, Instant};
 
 use super::tls::looks_like_tls;
-use super::{receive_timed, TimedRead, Transport};
+use super::{receive_timed, TimedRead, Transport, IDLE_CHECK_AFTER};
 
 /// A TCP connection as a transport.
 pub struct Tcp {
@@ -23,6 +23,8 @@ pub struct Tcp {
     /// Whether anything has come over this connection: a TLS port tells itself by its
     /// first bytes, where a later answer could begin with the same by chance.
     heard: bool,
+    /// When the connection last carried a frame either way.
+    last_used: Instant,
 }
 
 impl Tcp {
@@ -64,6 +66,7 @@ impl Tcp {
             serial_behind,
             reconnect: None,
             heard: false,
+            last_used: Instant::now(),
         })
     }
 
@@ -127,9 +130,11 @@ impl Transport for Tcp {
     }
 
     fn send(&mut self, frame: &[u8]) -> io::Result<()> {
-        if self.reconnect.is_some() && self.closed_while_idle()? {
+        let idle = self.last_used.elapsed() >= IDLE_CHECK_AFTER;
+        if idle && self.reconnect.is_some() && self.closed_while_idle()? {
             self.connect_again()?;
         }
+        self.last_used = Instant::now();
         self.stream.write_all(frame)
     }
 
@@ -176,6 +181,7 @@ impl TimedRead for Tcp {
             ));
         }
         self.heard = true;
+        self.last_used = Instant::now();
         Ok(n)
     }
 }

@@ -16,7 +16,7 @@ use rustls::pki_types::{CertificateDer, ServerName};
 use rustls::{ClientConfig, ClientConnection, Connection, ServerConfig, ServerConnection};
 use thiserror::Error;
 
-use super::{lock, receive_timed, time_left, TimedRead, Transport};
+use super::{lock, receive_timed, time_left, TimedRead, Transport, IDLE_CHECK_AFTER};
 
 mod files;
 mod refusals;
@@ -300,6 +300,8 @@ pub struct Tls {
     master: Option<Master>,
     /// Whether anything has come since the handshake.
     heard: bool,
+    /// When the connection last carried a frame either way.
+    last_used: Instant,
 }
 
 /// The sending side of a [`Tls`], for another thread.
@@ -327,6 +329,7 @@ impl Tls {
             session: None,
             master: None,
             heard: false,
+            last_used: Instant::now(),
         }
     }
 
@@ -507,6 +510,7 @@ impl Tls {
                 Ok(0) => return Err(self.closed()),
                 Ok(n) => {
                     self.heard = true;
+                    self.last_used = Instant::now();
                     return Ok(n);
                 }
                 Err(e) if e.kind() == io::ErrorKind::WouldBlock => {}
@@ -595,9 +599,10 @@ impl Transport for Tls {
     fn send(&mut self, frame: &[u8]) -> io::Result<()> {
         // A connection this end made may have been closed while it was idle (its close
         // told, or not): it is made again rather than failing the request.
-        if self.master.is_some() {
+        if self.master.is_some() && self.last_used.elapsed() >= IDLE_CHECK_AFTER {
             self.discard_input()?;
         }
+        self.last_used = Instant::now();
         send(&self.connection, &mut self.socket, frame).map_err(|e| match is_gone(&e) {
             true => self.closed(),
             false => e,
