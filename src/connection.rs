@@ -39,6 +39,9 @@ pub fn tls_fits(options: &Options, endpoint: &Endpoint) -> Result<()> {
         .as_deref()
         .and_then(|secondary| secondary.port.as_deref())
         .is_some_and(|port| matches!(Endpoint::parse(port), Ok(Endpoint::Tls { .. })));
+    if secondary_tls {
+        ClientTls::new(&options.tls)?;
+    }
     match endpoint {
         Endpoint::Tls { .. } => ClientTls::new(&options.tls).map(drop).map_err(Error::from),
         _ if secondary_tls || !options.tls_typed => Ok(()),
@@ -74,12 +77,14 @@ pub fn mode(options: &Options, endpoint: Option<&Endpoint>, role: Role) -> Resul
             "sniff watches serial lines: --mode rtu or ascii",
         )),
         (true, None | Some(Mode::Tcp), _) => Ok(Mode::Tcp),
-        (true, Some(_), Role::Serve) => Err(Error::usage(
-            "tcp:// serves Modbus TCP: for RTU frames over TCP use rtu+tcp://",
-        )),
-        (true, Some(_), _) => Err(Error::usage(
-            "tcp:// carries Modbus TCP frames: for RTU through a gateway use rtu+tcp://HOST:PORT",
-        )),
+        (true, Some(_), Role::Serve) => Err(Error::usage(format!(
+            "{} serves Modbus TCP: for RTU frames over TCP use rtu+tcp://",
+            scheme(endpoint)
+        ))),
+        (true, Some(_), _) => Err(Error::usage(format!(
+            "{} carries Modbus TCP frames: for RTU through a gateway use rtu+tcp://HOST:PORT",
+            scheme(endpoint)
+        ))),
         (false, Some(Mode::Tcp), Role::Serve) => {
             Err(Error::usage("--mode tcp needs a tcp:// port"))
         }
@@ -88,6 +93,14 @@ pub fn mode(options: &Options, endpoint: Option<&Endpoint>, role: Role) -> Resul
         }
         (false, Some(mode), _) => Ok(mode),
         (false, None, _) => Ok(Mode::Rtu),
+    }
+}
+
+/// `tls://` or `tcp://`, as the port names it, for messages about its framing.
+fn scheme(endpoint: Option<&Endpoint>) -> &'static str {
+    match endpoint {
+        Some(Endpoint::Tls { .. }) => "tls://",
+        _ => "tcp://",
     }
 }
 

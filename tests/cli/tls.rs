@@ -55,6 +55,9 @@ impl Pki {
             always,
         );
         pki.leaf(&ca, "plc", "plc.example", &["plc.example"], None, always);
+        // A role that would forge a line in a log.
+        let forged = Some("op\u{1b}[31m\nfake line");
+        pki.leaf(&ca, "forger", "forger", &[], forged, always);
         pki
     }
 
@@ -899,4 +902,35 @@ fn a_device_that_closes_idle_connections_is_connected_again() {
         ["0", "1", "2", "3"],
         "{err}"
     );
+}
+
+#[test]
+fn a_role_with_control_characters_forges_no_log_line() {
+    let pki = Pki::new();
+    let (_server, port, log) = serve_tls(&pki, "server", &["--role", "viewer=read"]);
+    let url = format!("tls://localhost:{port}");
+    let (code, _, err) = client(&url, &pki.client("forger"), "read-holding 17 400108");
+    assert_eq!(code, 1, "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    std::thread::sleep(Duration::from_millis(200));
+    let logged = std::fs::read_to_string(&log).unwrap();
+    assert!(
+        logged.contains(
+            "(CN=forger) refused: its role extension is no UTF8String of printable characters"
+        ),
+        "{logged}"
+    );
+    assert!(
+        !logged.lines().any(|line| line.starts_with("fake line")),
+        "{logged}"
+    );
+    assert!(!logged.contains('\u{1b}'), "{logged}");
+    // A framing of its own is refused with the port's scheme named.
+    let (code, _, err) = client(
+        &url,
+        &pki.client("viewer"),
+        "read-holding 17 400108 --mode rtu",
+    );
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("tls:// carries Modbus TCP frames"), "{err}");
 }

@@ -55,7 +55,9 @@ impl Security {
             RoleClaim::Named(role) => Some(role.clone()),
             RoleClaim::Absent => None,
             RoleClaim::Unreadable => {
-                return Err(refused("its role extension is no UTF8String".into()))
+                return Err(refused(
+                    "its role extension is no UTF8String of printable characters".into(),
+                ))
             }
         };
         let rights = self

@@ -57,7 +57,7 @@ pub struct Role {
 
 /// Why a `--role` text is no role.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
-#[error("--role {text}: {why}")]
+#[error("{text}: {why}")]
 pub struct RoleError {
     text: String,
     why: String,
@@ -68,7 +68,7 @@ impl Role {
     /// reference range (`write:400001-400100`), separated by commas.
     pub fn parse(text: &str) -> Result<Role, RoleError> {
         let fail = |why: String| RoleError {
-            text: text.to_string(),
+            text: format!("--role {text}"),
             why,
         };
         let (name, rules) = text.split_once('=').ok_or_else(|| {
@@ -199,7 +199,7 @@ impl Roles {
         for (i, role) in roles.iter().enumerate() {
             if roles[..i].iter().any(|earlier| earlier.name == role.name) {
                 return Err(RoleError {
-                    text: texts[i].clone(),
+                    text: format!("--role {}", texts[i]),
                     why: format!(
                         "role '{}' is given twice: give it once, all its rules together",
                         role.name
@@ -210,7 +210,7 @@ impl Roles {
         if let Some(default) = default {
             if !roles.iter().any(|role| role.name == default) {
                 return Err(RoleError {
-                    text: format!("(--default-role {default})"),
+                    text: format!("--default-role {default}"),
                     why: format!("'{default}' is none of the roles given with --role"),
                 });
             }

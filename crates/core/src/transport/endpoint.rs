@@ -39,10 +39,24 @@ impl fmt::Display for Endpoint {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Endpoint::Serial(path) => f.write_str(path),
-            Endpoint::Tcp { host, port } => write!(f, "tcp://{host}:{port}"),
-            Endpoint::Tls { host, port } => write!(f, "tls://{host}:{port}"),
-            Endpoint::RtuOverTcp { host, port } => write!(f, "rtu+tcp://{host}:{port}"),
+            Endpoint::Tcp { host, port } => write!(f, "tcp://{}:{port}", Bracketed(host)),
+            Endpoint::Tls { host, port } => write!(f, "tls://{}:{port}", Bracketed(host)),
+            Endpoint::RtuOverTcp { host, port } => {
+                write!(f, "rtu+tcp://{}:{port}", Bracketed(host))
+            }
             Endpoint::Sim => f.write_str("sim"),
+        }
+    }
+}
+
+/// A host as it stands before `:PORT`: an IPv6 address in brackets.
+struct Bracketed<'a>(&'a str);
+
+impl fmt::Display for Bracketed<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.0.contains(':') {
+            true => write!(f, "[{}]", self.0),
+            false => f.write_str(self.0),
         }
     }
 }

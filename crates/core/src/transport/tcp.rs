@@ -172,12 +172,16 @@ impl TimedRead for Tcp {
             return Err(closed(&self.peer));
         }
         if first && looks_like_tls(&chunk[..n]) {
+            // A device this end connected to, or a client of a server.
+            let what = match self.reconnect {
+                Some(_) => "this looks like a Modbus/TCP Security port: use tls://",
+                None => {
+                    "a Modbus/TCP Security client: it should use tcp://, or be served on tls://"
+                }
+            };
             return Err(io::Error::new(
                 io::ErrorKind::InvalidData,
-                format!(
-                    "{} speaks TLS: this looks like a Modbus/TCP Security port: use tls://",
-                    self.peer
-                ),
+                format!("{} speaks TLS: {what}", self.peer),
             ));
         }
         self.heard = true;

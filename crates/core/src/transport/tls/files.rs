@@ -124,7 +124,10 @@ pub(super) fn root_store(path: &Path) -> Result<RootCertStore, TlsError> {
     for certificate in certificates(path)? {
         roots.add(certificate).map_err(|e| TlsError::Malformed {
             path: path.to_path_buf(),
-            why: format!("a CA certificate rustls cannot use ({e})"),
+            why: format!(
+                "a CA certificate in it cannot be used ({}): give the CA file whole",
+                super::refusals::plainly(&e)
+            ),
         })?;
     }
     Ok(roots)
@@ -142,7 +145,10 @@ pub(super) fn key_error(error: rustls::Error, cert: &Path, key: &Path) -> TlsErr
                 version if version.contains("UnsupportedCertVersion") => {
                     "an X.509 version 1 certificate: version 3 is needed (openssl makes one with -extfile)".into()
                 }
-                other => format!("the certificate cannot be used ({other})"),
+                other => format!(
+                    "the certificate cannot be used: {}",
+                    super::refusals::plainly(&other)
+                ),
             },
         },
         other => TlsError::Malformed {
@@ -183,9 +189,11 @@ pub fn certificate_role(der: &[u8]) -> RoleClaim {
         .find(|extension| extension.oid.to_id_string() == ROLE_OID);
     match extension {
         None => RoleClaim::Absent,
-        Some(extension) => utf8_string(extension.value).map_or(RoleClaim::Unreadable, |role| {
-            RoleClaim::Named(role.to_string())
-        }),
+        // A role with control characters would forge lines in a server's log.
+        Some(extension) => match utf8_string(extension.value) {
+            Some(role) if !role.chars().any(char::is_control) => RoleClaim::Named(role.into()),
+            _ => RoleClaim::Unreadable,
+        },
     }
 }
 
@@ -207,9 +215,21 @@ fn utf8_string(der: &[u8]) -> Option<&str> {
         .flatten()
 }
 
+/// A certificate's subject as messages show it: its control characters escaped, so that
+/// a certificate cannot forge lines in a log.
 pub(super) fn subject_of(der: &[u8]) -> String {
     x509_parser::parse_x509_certificate(der)
-        .map(|(_, certificate)| certificate.subject().to_string())
+        .map(|(_, certificate)| {
+            certificate
+                .subject()
+                .to_string()
+                .chars()
+                .flat_map(|c| match c.is_control() {
+                    true => c.escape_default().collect::<Vec<_>>(),
+                    false => vec![c],
+                })
+                .collect()
+        })
         .unwrap_or_default()
 }
 

@@ -27,6 +27,9 @@ use files::{
 };
 use refusals::{client_side, server_side};
 
+/// The least time a master gives a device for the TLS handshake.
+const HANDSHAKE_LEAST: Duration = Duration::from_secs(3);
+
 /// The port of Modbus/TCP Security.
 pub const MODBUS_TLS_PORT: u16 = 802;
 
@@ -201,7 +204,7 @@ pub enum RoleClaim {
     Named(String),
     /// No role extension.
     Absent,
-    /// An extension that is no UTF8String.
+    /// An extension that is no UTF8String, or holds control characters.
     Unreadable,
 }
 
@@ -336,7 +339,7 @@ impl Tls {
     /// A failure of the connection, told as what to do.
     fn explained(&self, error: io::Error) -> io::Error {
         match &self.master {
-            Some(master) => client_side(error, &self.peer, master.port, &master.name, &master.tls),
+            Some(master) => client_side(error, master.port, &master.name, &master.tls),
             None => server_side(error, &self.peer),
         }
     }
@@ -392,8 +395,11 @@ impl Tls {
                 port,
                 timeout,
             });
+            // Embedded devices take hundreds of milliseconds over a handshake: it gets
+            // at least HANDSHAKE_LEAST, whatever the answer timeout (a scan's is 100 ms).
+            let budget = timeout.max(HANDSHAKE_LEAST);
             stream
-                .handshake(Instant::now() + timeout, Some(timeout))
+                .handshake(Instant::now() + budget, Some(budget))
                 .map_err(|e| stream.explained(e))?;
             let (subject, not_after) = stream
                 .peer_certificate()
@@ -676,7 +682,7 @@ fn handshake_timeout(timeout: Option<Duration>) -> io::Error {
     let within = timeout.map_or_else(String::new, |t| format!(" within {} ms", t.as_millis()));
     io::Error::new(
         io::ErrorKind::TimedOut,
-        format!("no TLS handshake{within}: is it a Modbus/TCP Security port (802)?"),
+        format!("no TLS handshake{within}: is it a Modbus/TCP Security port (802)? a slow device may need a longer --timeout"),
     )
 }
 

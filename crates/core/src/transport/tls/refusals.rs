@@ -16,13 +16,7 @@ fn rustls_error(error: &io::Error) -> Option<&rustls::Error> {
 }
 
 /// A failed handshake of a master, told as what to do.
-pub(super) fn client_side(
-    error: io::Error,
-    peer: &str,
-    port: u16,
-    name: &str,
-    tls: &ClientTls,
-) -> io::Error {
+pub(super) fn client_side(error: io::Error, port: u16, name: &str, tls: &ClientTls) -> io::Error {
     let ca = tls.ca.display();
     let message = match rustls_error(&error) {
         Some(rustls::Error::InvalidCertificate(certificate)) => match certificate {
@@ -46,7 +40,10 @@ pub(super) fn client_side(
                     presented_names(certificate)
                 )
             }
-            other => format!("the device's certificate was refused: {other:?}"),
+            CertificateError::InvalidPurpose | CertificateError::InvalidPurposeContext { .. } => {
+                "the device's certificate is not one for a server (its extended key usage lacks serverAuth): the device needs a server certificate".into()
+            }
+            other => format!("the device's certificate was refused: {}", plainly(other)),
         },
         Some(rustls::Error::AlertReceived(alert)) => match alert {
             AlertDescription::CertificateRequired => {
@@ -54,6 +51,9 @@ pub(super) fn client_side(
             }
             AlertDescription::HandshakeFailure if tls.cert.is_none() => {
                 "the device refused the handshake, most likely for want of a client certificate: give --cert and --key".into()
+            }
+            AlertDescription::HandshakeFailure | AlertDescription::InsufficientSecurity => {
+                "the device refused the handshake: it shares no TLS 1.2 or 1.3 cipher suite with mbtool, or does not accept this end's certificate".into()
             }
             AlertDescription::BadCertificate
             | AlertDescription::UnknownCA
@@ -68,13 +68,13 @@ pub(super) fn client_side(
                 tls.cert.as_ref().map_or_else(String::new, |c| format!(" {}", c.display()))
             ),
             AlertDescription::ProtocolVersion => NO_COMMON_VERSION.into(),
-            other => format!("the device ended the handshake: {other:?}"),
+            other => format!("the device ended the handshake with the alert {other:?}"),
         },
         Some(rustls::Error::PeerIncompatible(why)) => format!("{NO_COMMON_VERSION} ({why:?})"),
         Some(rustls::Error::InvalidMessage(_) | rustls::Error::InappropriateMessage { .. }) => {
             "the answer is not TLS: this looks like a plain Modbus TCP port: use tcp://".into()
         }
-        Some(other) => format!("TLS handshake failed: {other}"),
+        Some(other) => format!("TLS handshake failed: {}", plainly(other)),
         // Closed before it said anything in TLS.
         None if error.kind() == io::ErrorKind::UnexpectedEof => {
             let hint = if port == MODBUS_TLS_PORT {
@@ -94,10 +94,8 @@ pub(super) fn client_side(
         },
         None => return error,
     };
-    io::Error::new(
-        io::ErrorKind::ConnectionRefused,
-        format!("{peer}: {message}"),
-    )
+    // The endpoint is named by whoever tells this.
+    io::Error::new(io::ErrorKind::ConnectionRefused, message)
 }
 
 /// A failed handshake of a server, told in its log.
@@ -116,14 +114,17 @@ pub(super) fn server_side(error: io::Error, peer: &str) -> io::Error {
             CertificateError::NotValidYet | CertificateError::NotValidYetContext { .. } => {
                 "refused: its certificate is not valid yet".into()
             }
-            other => format!("refused: its certificate: {other:?}"),
+            CertificateError::InvalidPurpose | CertificateError::InvalidPurposeContext { .. } => {
+                "refused: its certificate is not one for a client (no clientAuth)".into()
+            }
+            other => format!("refused: its certificate: {}", plainly(other)),
         },
         Some(rustls::Error::InvalidMessage(_) | rustls::Error::InappropriateMessage { .. }) => {
             "refused: it did not speak TLS (a plain Modbus TCP client? it should use tls://)".into()
         }
-        Some(rustls::Error::AlertReceived(alert)) => {
-            format!("ended the handshake: {alert:?} (does it trust this server's certificate?)")
-        }
+        Some(rustls::Error::AlertReceived(alert)) => format!(
+            "ended the handshake with the alert {alert:?}: it may not trust this server's certificate, or speak only an older TLS"
+        ),
         Some(other) => format!("TLS handshake failed: {other}"),
         None if error.kind() == io::ErrorKind::TimedOut => {
             "refused: no TLS handshake in time".into()
@@ -167,4 +168,17 @@ fn asn1_date(unix_seconds: u64) -> String {
         .ok()
         .and_then(|seconds| x509_parser::time::ASN1Time::from_timestamp(seconds).ok())
         .map_or_else(|| unix_seconds.to_string(), |time| time.to_string())
+}
+
+/// What rustls says of an error, in words where it names its own types: a critical
+/// extension it cannot check (a role extension marked critical), a damaged encoding.
+pub(super) fn plainly(error: &dyn std::fmt::Debug) -> String {
+    let shown = format!("{error:?}");
+    if shown.contains("UnsupportedCriticalExtension") {
+        "it has a critical extension that cannot be checked (a role extension must not be marked critical)".into()
+    } else if shown.contains("BadEncoding") {
+        "it is damaged (its encoding does not read)".into()
+    } else {
+        shown
+    }
 }
