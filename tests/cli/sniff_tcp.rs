@@ -419,7 +419,10 @@ fn stats_hold_what_tshark_timed(file: &Path, port: u16) {
     assert_eq!(stats["server"], format!("127.0.0.1:{port}"));
     assert_eq!(stats["requests"], frames("request"));
     assert_eq!(stats["answers"], frames("response") + frames("exception"));
-    assert_eq!(stats["exceptions"]["02"], frames("exception"), "{stats}");
+    // A code none of the capture's answers carries is left out; tcpdump may drop the one
+    // exception answer on a busy machine.
+    let exceptions = stats["exceptions"]["02"].as_u64().unwrap_or(0);
+    assert_eq!(exceptions, frames("exception"), "{stats}");
     let time = |key: &str| stats["response_time_us"][key].as_u64().unwrap();
     assert!(time("min") <= *theirs.iter().min().unwrap(), "{stats}");
     assert!(time("max") >= *theirs.iter().max().unwrap(), "{stats}");
