@@ -870,26 +870,7 @@ fn certificate_options_for_a_port_that_is_not_tls_are_refused() {
 #[test]
 fn a_device_that_closes_idle_connections_is_connected_again() {
     let pki = Pki::new();
-    let port = free_port();
-    let script = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/tests/peers/tls_closing_slave.py"
-    );
-    let _device = Stopped(
-        std::process::Command::new("python3")
-            .arg(script)
-            .args([
-                pki.path("server.pem"),
-                pki.path("server.key"),
-                pki.path("ca.pem"),
-            ])
-            .arg(port.to_string())
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .spawn()
-            .unwrap(),
-    );
-    assert!(wait_for_listener(port, Duration::from_secs(10)));
+    let (_device, port) = openssl_device(&pki, "1.3");
     let (code, out, err) = client(
         &format!("tls://localhost:{port}"),
         &pki.client("operator"),
