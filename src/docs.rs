@@ -369,7 +369,7 @@ pub fn command() -> clap::Command {
 }
 
 /// The definition `args` are parsed with first. A call for help gets all of [`command`].
-/// Any other command line is parsed with the top of the definition and only the command it
+/// Any other command line is parsed with the common options and only the command it
 /// seems to name, or no command at all when it names none (`mbtool --version`). Every
 /// command's arguments are derived only when it is built (clap's `defer`), and before a
 /// parse clap copies every global option into every command: both cost each run more than
@@ -384,9 +384,28 @@ pub fn parser(args: &[std::ffi::OsString]) -> clap::Command {
     if help {
         return command();
     }
-    let command = Cli::command();
-    let name = named_command(&command, args);
-    only_command(command, name.as_deref())
+    // The commands as derived: names, aliases and help, their arguments deferred.
+    let commands = <crate::cli::Command as clap::Subcommand>::augment_subcommands(
+        clap::Command::new("mbtool"),
+    );
+    let named =
+        named_command(&commands, args).and_then(|name| commands.find_subcommand(&name).cloned());
+    let top = <crate::cli::Common as clap::Args>::augment_args(top_of_parse());
+    match named {
+        Some(named) => top.subcommand(named),
+        None => top,
+    }
+}
+
+/// The top of the command line as [`Cli`] derives it, less its commands and options: the
+/// settings a parse goes by (a test holds them equal).
+pub fn top_of_parse() -> clap::Command {
+    clap::Command::new("mbtool")
+        .version(env!("CARGO_PKG_VERSION"))
+        .propagate_version(true)
+        .subcommand_required(true)
+        .arg_required_else_help(true)
+        .max_term_width(crate::cli::HELP_WIDTH)
 }
 
 /// Every command, built, the one `args` seem to name given its argument help: for a
@@ -411,23 +430,6 @@ fn named_command(command: &clap::Command, args: &[std::ffi::OsString]) -> Option
             .find(|sub| sub.get_name() == word || sub.get_all_aliases().any(|a| a == word))
             .map(|sub| sub.get_name().to_string())
     })
-}
-
-/// The top of `command` with `name` its only command, or none: before a parse clap copies
-/// every global option into every command, and no other command is parsed.
-fn only_command(command: clap::Command, name: Option<&str>) -> clap::Command {
-    let top = clap::Command::new("mbtool")
-        .version(env!("CARGO_PKG_VERSION"))
-        .propagate_version(command.is_propagate_version_set())
-        .subcommand_required(command.is_subcommand_required_set())
-        .arg_required_else_help(command.is_arg_required_else_help_set())
-        .max_term_width(crate::cli::HELP_WIDTH)
-        .args(command.get_arguments().cloned())
-        .groups(command.get_groups().cloned());
-    match name.and_then(|name| command.find_subcommand(name)) {
-        Some(named) => top.subcommand(named.clone()),
-        None => top,
-    }
 }
 
 fn hide_untaken_options(command: clap::Command) -> clap::Command {

@@ -127,7 +127,7 @@ pub fn resolve(
     {
         return Err(message);
     }
-    let c = &cli.connection;
+    let c = &cli.common.connection;
     let leaf = leaf(matches);
     let given = |id: &str| {
         !matches!(
@@ -141,7 +141,7 @@ pub fn resolve(
         Command::Scan(_) => Duration::from_millis(100),
         _ => Duration::from_secs(1),
     };
-    let format = match (&cli.output.output, cli.output.json) {
+    let format = match (&cli.common.output.output, cli.common.output.json) {
         (_, true) => Format::Json,
         (Some(name), false) => OutputFormat::from_str(name, true).map_or(Format::Table, format_of),
         (None, false) => Format::Table,
@@ -165,44 +165,44 @@ pub fn resolve(
             secondary: None,
             switch: SwitchRule::default(),
             tls: TlsFiles {
-                cert: cli.tls.cert.clone(),
-                key: cli.tls.key.clone(),
-                ca: cli.tls.ca.clone(),
-                server_name: cli.tls.tls_server_name.clone(),
+                cert: cli.common.tls.cert.clone(),
+                key: cli.common.tls.key.clone(),
+                ca: cli.common.tls.ca.clone(),
+                server_name: cli.common.tls.tls_server_name.clone(),
             },
             tls_typed: ["cert", "key", "ca", "tls_server_name"]
                 .iter()
                 .any(|id| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine)),
-            tell_session: cli.output.verbose,
+            tell_session: cli.common.output.verbose,
         },
         output: Output {
             style: Style {
                 format,
-                value_type: cli.data.value_type,
-                order: cli.data.order,
-                address_base: cli.data.address_base.into(),
+                value_type: cli.common.data.value_type,
+                order: cli.common.data.order,
+                address_base: cli.common.data.address_base.into(),
                 colour: colour_wanted(),
             },
             format,
-            verbose: cli.output.verbose,
+            verbose: cli.common.output.verbose,
             file: match cli.command {
-                Command::Dump(_) => cli.output.output.as_ref().map(PathBuf::from),
+                Command::Dump(_) => cli.common.output.output.as_ref().map(PathBuf::from),
                 _ => None,
             },
         },
         data: Data {
             numbering: Numbering {
-                references: !cli.data.pdu_addresses,
-                base: cli.data.address_base.into(),
+                references: !cli.common.data.pdu_addresses,
+                base: cli.common.data.address_base.into(),
             },
-            value_type: cli.data.value_type,
-            order: cli.data.order,
-            max_per_request: cli.data.max_per_request,
+            value_type: cli.common.data.value_type,
+            order: cli.common.data.order,
+            max_per_request: cli.common.data.max_per_request,
         },
         poll: Poll {
-            interval: cli.poll.poll,
-            count: cli.poll.count,
-            log: cli.poll.log.clone(),
+            interval: cli.common.poll.poll,
+            count: cli.common.poll.count,
+            log: cli.common.poll.log.clone(),
         },
     };
     // A command that does not take a second path ignores one set in the environment.
@@ -216,7 +216,7 @@ pub fn resolve(
 /// for changing paths. The other options typed without a secondary port are refused, as
 /// they would do nothing.
 fn redundancy(cli: &Cli, leaf: &clap::ArgMatches, primary: &mut Connection) -> Result<(), String> {
-    let r = &cli.redundancy;
+    let r = &cli.common.redundancy;
     let Some(port) = r.secondary_port.clone().filter(|port| !port.is_empty()) else {
         let typed = leaf.ids().find(|id| {
             let id = id.as_str();
@@ -304,7 +304,7 @@ fn leaf(matches: &clap::ArgMatches) -> &clap::ArgMatches {
 /// is typed wins over the environment; the timing options typed alone are refused, as
 /// they would do nothing.
 fn direction(cli: &Cli, leaf: &clap::ArgMatches) -> Result<(DirectionControl, bool), String> {
-    let c = &cli.connection;
+    let c = &cli.common.connection;
     let typed = |id: &str| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine);
     let (kernel, toggle) = match (c.rs485 && c.rts_toggle, typed("rs485"), typed("rts_toggle")) {
         (false, ..) => (c.rs485, c.rts_toggle),
@@ -353,7 +353,7 @@ fn format_of(format: OutputFormat) -> Format {
 /// An `--output` that names no format, where a format is what it takes; for dump, a
 /// format's name, which would name a file by mistake.
 fn output_problem(cli: &Cli) -> Option<String> {
-    let name = cli.output.output.as_deref()?;
+    let name = cli.common.output.output.as_deref()?;
     let is_format = OutputFormat::from_str(name, true).is_ok();
     match (&cli.command, is_format) {
         (Command::Dump(_), true) => Some(format!(
@@ -372,7 +372,10 @@ fn output_problem(cli: &Cli) -> Option<String> {
 fn sweep_outside_scan(cli: &Cli, matches: &clap::ArgMatches) -> Option<String> {
     let leaf = leaf(matches);
     let typed = |id: &str| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine);
-    let several = match (cli.connection.baud.len(), cli.connection.parity.len()) {
+    let several = match (
+        cli.common.connection.baud.len(),
+        cli.common.connection.parity.len(),
+    ) {
         _ if matches!(cli.command, Command::Scan(_)) => return None,
         (2.., _) if typed("baud") => "baud rates",
         (_, 2..) if typed("parity") => "parities",

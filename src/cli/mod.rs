@@ -58,6 +58,18 @@ const COMMON_OPTIONS_FIRST_ORDER: usize = 1000;
 )]
 pub struct Cli {
     #[command(flatten)]
+    pub common: Common,
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+// The options every command shares (each takes those `takes_option` says), given before
+// the command or after it. A plain comment: a doc comment would become the about of the
+// top of the command line. A command line is parsed with these and the one command it
+// names (`docs::parser`).
+#[derive(Clone, Debug, Args)]
+pub struct Common {
+    #[command(flatten)]
     pub connection: ConnectionArgs,
     #[command(flatten)]
     pub output: OutputArgs,
@@ -69,8 +81,6 @@ pub struct Cli {
     pub redundancy: RedundancyArgs,
     #[command(flatten)]
     pub tls: TlsArgs,
-    #[command(subcommand)]
-    pub command: Command,
 }
 
 #[derive(Clone, Debug, Subcommand)]

@@ -214,12 +214,35 @@ fn a_command_line_is_parsed_without_building_every_command() {
     let named = parser.find_subcommand("read-coils").unwrap();
     assert!(named.get_arguments().next().is_none());
     let matches = parser
+        .clone()
         .try_get_matches_from(args("mbtool --port sim read-coils 17 1 --timeout 1s"))
         .unwrap();
     let (_, leaf) = matches.subcommand().unwrap();
     assert_eq!(
         leaf.get_one::<String>("address").map(String::as_str),
         Some("1")
+    );
+    // The parser's top is the derived top: the same options and the same settings.
+    let ids = |command: &clap::Command| -> Vec<String> {
+        command
+            .get_arguments()
+            .map(|arg| arg.get_id().to_string())
+            .collect()
+    };
+    assert_eq!(ids(&parser), ids(&derived));
+    let top = mbtool::docs::top_of_parse();
+    assert_eq!(top.get_version(), derived.get_version());
+    assert_eq!(
+        top.is_propagate_version_set(),
+        derived.is_propagate_version_set()
+    );
+    assert_eq!(
+        top.is_subcommand_required_set(),
+        derived.is_subcommand_required_set()
+    );
+    assert_eq!(
+        top.is_arg_required_else_help_set(),
+        derived.is_arg_required_else_help_set()
     );
     // An alias names its command too; no command (`--version`) builds none.
     let parser = mbtool::docs::parser(&args("mbtool -p sim read-holding-registers 17 1"));
