@@ -39,14 +39,12 @@ pub fn tls_fits(options: &Options, endpoint: &Endpoint) -> Result<()> {
         .as_deref()
         .and_then(|secondary| secondary.port.as_deref())
         .is_some_and(|port| matches!(Endpoint::parse(port), Ok(Endpoint::Tls { .. })));
-    if secondary_tls {
+    if secondary_tls || matches!(endpoint, Endpoint::Tls { .. }) {
         ClientTls::new(&options.tls)?;
+    } else if options.tls_typed {
+        return Err(tls_options_unused(endpoint));
     }
-    match endpoint {
-        Endpoint::Tls { .. } => ClientTls::new(&options.tls).map(drop).map_err(Error::from),
-        _ if secondary_tls || !options.tls_typed => Ok(()),
-        _ => Err(tls_options_unused(endpoint)),
-    }
+    Ok(())
 }
 
 /// The certificate options typed for a port that is not tls://.

@@ -82,10 +82,9 @@ pub struct GatewayOptions {
 
 /// How a listener's clients connect: plain Modbus TCP, or inside TLS with their roles
 /// checked.
-#[derive(Clone, Debug, Default)]
+#[derive(Clone, Debug)]
 pub enum Listening {
     /// Modbus TCP.
-    #[default]
     Plain,
     /// Modbus/TCP Security.
     Secure(Arc<Security>),

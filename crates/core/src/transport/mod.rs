@@ -37,6 +37,27 @@ pub trait Transport: Send {
     fn is_serial_line(&self) -> bool;
 }
 
+/// A TCP connection to the first address of `host` that answers within `timeout`, and
+/// that address.
+pub(crate) fn connect_first(
+    host: &str,
+    port: u16,
+    timeout: std::time::Duration,
+) -> io::Result<(std::net::TcpStream, std::net::SocketAddr)> {
+    use std::net::ToSocketAddrs;
+    let timeout = timeout.max(std::time::Duration::from_millis(1));
+    let mut last_error = None;
+    for address in (host, port).to_socket_addrs()? {
+        match std::net::TcpStream::connect_timeout(&address, timeout) {
+            Ok(stream) => return Ok((stream, address)),
+            Err(error) => last_error = Some(error),
+        }
+    }
+    Err(last_error.unwrap_or_else(|| {
+        io::Error::new(io::ErrorKind::NotFound, format!("{host} has no address"))
+    }))
+}
+
 /// The time left until `deadline`, or `None` when it has passed.
 pub(crate) fn time_left(deadline: Instant) -> Option<std::time::Duration> {
     deadline

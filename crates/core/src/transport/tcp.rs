@@ -1,11 +1,11 @@
 //! A TCP connection carrying MBAP frames, or RTU frames through a transparent gateway.
 
 use std::io::{self, Read, Write};
-use std::net::{SocketAddr, TcpStream, ToSocketAddrs};
+use std::net::{SocketAddr, TcpStream};
 use std::time::{Duration, Instant};
 
 use super::tls::looks_like_tls;
-use super::{receive_timed, TimedRead, Transport, IDLE_CHECK_AFTER};
+use super::{connect_first, receive_timed, TimedRead, Transport, IDLE_CHECK_AFTER};
 
 /// A TCP connection as a transport.
 pub struct Tcp {
@@ -35,21 +35,10 @@ impl Tcp {
         timeout: Duration,
         serial_behind: bool,
     ) -> io::Result<Tcp> {
-        let mut last_error = None;
-        let timeout = timeout.max(Duration::from_millis(1));
-        for address in (host, port).to_socket_addrs()? {
-            match TcpStream::connect_timeout(&address, timeout) {
-                Ok(stream) => {
-                    let mut tcp = Tcp::from_stream(stream, serial_behind)?;
-                    tcp.reconnect = Some((address, timeout));
-                    return Ok(tcp);
-                }
-                Err(error) => last_error = Some(error),
-            }
-        }
-        Err(last_error.unwrap_or_else(|| {
-            io::Error::new(io::ErrorKind::NotFound, format!("{host} has no address"))
-        }))
+        let (stream, address) = connect_first(host, port, timeout)?;
+        let mut tcp = Tcp::from_stream(stream, serial_behind)?;
+        tcp.reconnect = Some((address, timeout.max(Duration::from_millis(1))));
+        Ok(tcp)
     }
 
     /// A connected stream, as `connect` makes it or a server accepts it.

@@ -7,7 +7,7 @@
 
 use std::fmt;
 use std::io::{self, Read, Write};
-use std::net::{TcpStream, ToSocketAddrs};
+use std::net::TcpStream;
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -16,7 +16,9 @@ use rustls::pki_types::{CertificateDer, ServerName};
 use rustls::{ClientConfig, ClientConnection, Connection, ServerConfig, ServerConnection};
 use thiserror::Error;
 
-use super::{lock, receive_timed, time_left, TimedRead, Transport, IDLE_CHECK_AFTER};
+use super::{
+    connect_first, lock, receive_timed, time_left, TimedRead, Transport, IDLE_CHECK_AFTER,
+};
 
 mod files;
 mod refusals;
@@ -121,7 +123,7 @@ impl From<TlsError> for io::Error {
 pub struct ClientTls {
     config: Arc<ClientConfig>,
     server_name: Option<String>,
-    /// The role this end's certificate carries, and its subject, for `-v`.
+    /// The role this end's certificate carries, for `-v`.
     role: Option<String>,
     ca: PathBuf,
     cert: Option<PathBuf>,
@@ -375,49 +377,37 @@ impl Tls {
             )
         })?;
         let timeout = timeout.max(Duration::from_millis(1));
-        let mut last_error = None;
-        for address in (host, port).to_socket_addrs()? {
-            let socket = match TcpStream::connect_timeout(&address, timeout) {
-                Ok(socket) => socket,
-                Err(error) => {
-                    last_error = Some(error);
-                    continue;
-                }
-            };
-            socket.set_nodelay(true)?;
-            let connection = ClientConnection::new(Arc::clone(&tls.config), server_name.clone())
-                .map_err(|e| io::Error::other(e.to_string()))?;
-            let mut stream = Tls::new(socket, connection.into(), address.to_string());
-            stream.master = Some(Master {
-                tls: tls.clone(),
-                name: name.clone(),
-                host: host.to_string(),
-                port,
-                timeout,
-            });
-            // Embedded devices take hundreds of milliseconds over a handshake: it gets
-            // at least HANDSHAKE_LEAST, whatever the answer timeout (a scan's is 100 ms).
-            let budget = timeout.max(HANDSHAKE_LEAST);
-            stream
-                .handshake(Instant::now() + budget, Some(budget))
-                .map_err(|e| stream.explained(e))?;
-            let (subject, not_after) = stream
-                .peer_certificate()
-                .map(|der| (subject_of(&der), not_after_of(&der)))
-                .unwrap_or_default();
-            let (version, cipher_suite) = stream.agreed();
-            stream.session = Some(Session {
-                version,
-                cipher_suite,
-                subject,
-                not_after,
-                role_sent: tls.role.clone(),
-            });
-            return Ok(stream);
-        }
-        Err(last_error.unwrap_or_else(|| {
-            io::Error::new(io::ErrorKind::NotFound, format!("{host} has no address"))
-        }))
+        let (socket, address) = connect_first(host, port, timeout)?;
+        socket.set_nodelay(true)?;
+        let connection = ClientConnection::new(Arc::clone(&tls.config), server_name)
+            .map_err(|e| io::Error::other(e.to_string()))?;
+        let mut stream = Tls::new(socket, connection.into(), address.to_string());
+        stream.master = Some(Master {
+            tls: tls.clone(),
+            name,
+            host: host.to_string(),
+            port,
+            timeout,
+        });
+        // Embedded devices take hundreds of milliseconds over a handshake: it gets at
+        // least HANDSHAKE_LEAST, whatever the answer timeout (a scan's is 100 ms).
+        let budget = timeout.max(HANDSHAKE_LEAST);
+        stream
+            .handshake(Instant::now() + budget, Some(budget))
+            .map_err(|e| stream.explained(e))?;
+        let (subject, not_after) = stream
+            .peer_certificate()
+            .map(|der| (subject_of(&der), not_after_of(&der)))
+            .unwrap_or_default();
+        let (version, cipher_suite) = stream.agreed();
+        stream.session = Some(Session {
+            version,
+            cipher_suite,
+            subject,
+            not_after,
+            role_sent: tls.role.clone(),
+        });
+        Ok(stream)
     }
 
     /// What `-v` tells of this connection (a connection this end made).
