@@ -22,25 +22,6 @@ fn seconds(us: u64) -> f64 {
     us as f64 / 1e6
 }
 
-#[derive(Serialize)]
-struct JsonFrame<'a> {
-    #[serde(rename = "type")]
-    kind: &'static str,
-    number: u64,
-    time: f64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    gap: Option<f64>,
-    offset: u64,
-    /// The frame as it passed: spaced hex (RTU), or its characters (ASCII).
-    bytes: &'a str,
-    #[serde(flatten)]
-    report: &'a FrameReport,
-    #[serde(skip_serializing_if = "std::ops::Not::not")]
-    paired: bool,
-    #[serde(flatten, skip_serializing_if = "Option::is_none")]
-    tcp: Option<JsonTcp>,
-}
-
 /// Where a frame of a TCP capture was, as JSON says it.
 #[derive(Serialize)]
 struct JsonTcp {
@@ -63,16 +44,6 @@ impl From<&TcpPlace> for JsonTcp {
             response_time_us: place.response_time,
         }
     }
-}
-
-#[derive(Serialize)]
-struct JsonNoise<'a> {
-    #[serde(rename = "type")]
-    kind: &'static str,
-    time: f64,
-    offset: u64,
-    count: u64,
-    bytes: &'a str,
 }
 
 #[derive(Serialize)]
@@ -113,12 +84,155 @@ pub struct SniffWriter {
     text: String,
 }
 
+/// A JSON object written a field at a time into a line. A sniffer writes millions of
+/// frames, and serde's flattening (a map serializer, its keys escaped one by one) cost more
+/// than everything else a frame needs: the keys here are written as they are, and only
+/// the values go through serde_json.
+struct JsonObject<'a> {
+    line: &'a mut Vec<u8>,
+    empty: bool,
+}
+
+impl<'a> JsonObject<'a> {
+    fn open(line: &'a mut Vec<u8>) -> Self {
+        line.push(b'{');
+        Self { line, empty: true }
+    }
+
+    /// `key` must need no escaping: the keys are mbtool's own.
+    fn key(&mut self, key: &str) {
+        if !self.empty {
+            self.line.push(b',');
+        }
+        self.empty = false;
+        self.line.push(b'"');
+        self.line.extend_from_slice(key.as_bytes());
+        self.line.extend_from_slice(b"\":");
+    }
+
+    fn field(&mut self, key: &str, value: &(impl Serialize + ?Sized)) -> io::Result<()> {
+        self.key(key);
+        Ok(serde_json::to_writer(&mut *self.line, value)?)
+    }
+
+    fn field_if(&mut self, key: &str, value: Option<&impl Serialize>) -> io::Result<()> {
+        match value {
+            Some(value) => self.field(key, value),
+            None => Ok(()),
+        }
+    }
+
+    /// Bytes as spaced upper-case hex, which needs no escaping.
+    fn hex(&mut self, key: &str, bytes: &[u8]) {
+        const HEX: &[u8; 16] = b"0123456789ABCDEF";
+        self.key(key);
+        self.line.push(b'"');
+        for (i, byte) in bytes.iter().enumerate() {
+            if i > 0 {
+                self.line.push(b' ');
+            }
+            self.line.push(HEX[usize::from(byte >> 4)]);
+            self.line.push(HEX[usize::from(byte & 0x0F)]);
+        }
+        self.line.push(b'"');
+    }
+
+    /// The fields of `value`, which serializes as an object, as fields of this one: what
+    /// `#[serde(flatten)]` does, without its cost.
+    fn flatten(&mut self, value: &impl Serialize) -> io::Result<()> {
+        let start = self.line.len();
+        serde_json::to_writer(&mut *self.line, value)?;
+        if self.line.len() - start <= 2 {
+            // `{}`: nothing to add.
+            self.line.truncate(start);
+            return Ok(());
+        }
+        self.line.pop();
+        if self.empty {
+            self.line.remove(start);
+        } else {
+            self.line[start] = b',';
+        }
+        self.empty = false;
+        Ok(())
+    }
+
+    fn close(self) {
+        self.line.push(b'}');
+    }
+}
+
+/// A frame as one JSON object: the record's place and bytes, then the report's fields in
+/// the order `FrameReport` serializes them (a unit test holds the two equal), then the
+/// pairing and the TCP place.
+fn frame_json(line: &mut Vec<u8>, frame: &FrameRecord) -> io::Result<()> {
+    let report = &frame.report;
+    let mut object = JsonObject::open(line);
+    object.field("type", "frame")?;
+    object.field("number", &frame.number)?;
+    object.field("time", &seconds(frame.at))?;
+    object.field_if("gap", frame.gap.map(seconds).as_ref())?;
+    object.field("offset", &frame.found.offset)?;
+    // Always hex, whatever the mode: a JSON reader gets the bytes as they were.
+    object.hex("bytes", &frame.found.bytes);
+    report_fields(&mut object, report)?;
+    if frame.paired {
+        object.field("paired", &true)?;
+    }
+    if let Some(place) = &frame.tcp {
+        object.flatten(&JsonTcp::from(place))?;
+    }
+    object.close();
+    Ok(())
+}
+
+/// The fields of a `FrameReport`, as its `Serialize` gives them.
+fn report_fields(object: &mut JsonObject, report: &FrameReport) -> io::Result<()> {
+    object.field("mode", report.mode)?;
+    object.field("kind", &report.kind)?;
+    object.field("slave", &report.slave)?;
+    object.field("function", &report.function)?;
+    object.field("valid", &report.valid)?;
+    object.field_if("transaction", report.transaction.as_ref())?;
+    object.field("function_name", report.function_name)?;
+    object.flatten(&report.fields)?;
+    object.field_if("error", report.error.as_ref())?;
+    if report.ambiguous {
+        object.field("ambiguous", &true)?;
+    }
+    object.field_if("alternative", report.alternative.as_ref())
+}
+
 /// Serializes `value` as one line into `line`, then writes it.
 fn json_line(out: &mut dyn Write, line: &mut Vec<u8>, value: &impl Serialize) -> io::Result<()> {
     line.clear();
     serde_json::to_writer(&mut *line, value)?;
     line.push(b'\n');
     out.write_all(line)
+}
+
+/// Blanks to align columns with: pushed as one slice, where the formatter's own widths
+/// (`{:<30}`) push a character at a time, which cost a sniffer more than the rest of a line.
+const SPACES: &str = "                                        ";
+
+#[derive(Clone, Copy)]
+enum Align {
+    Left,
+    Right,
+}
+
+/// Appends `value` to `text` in a column `width` characters wide (wider values are not
+/// cut), as `{:<width$}` or `{:>width$}` would.
+fn aligned(text: &mut String, width: usize, align: Align, value: impl std::fmt::Display) {
+    use std::fmt::Write as _;
+    let start = text.len();
+    let _ = write!(text, "{value}");
+    let shown = text[start..].chars().count();
+    let pad = &SPACES[..width.saturating_sub(shown).min(SPACES.len())];
+    match align {
+        Align::Left => text.push_str(pad),
+        Align::Right => text.insert_str(start, pad),
+    }
 }
 
 /// The kind column: an answer, or a frame that reads both ways as a request with a doubt.
@@ -219,24 +333,10 @@ impl SniffWriter {
     pub fn record(&mut self, out: &mut dyn Write, record: &Record) -> io::Result<()> {
         match (self.format, record) {
             (Format::Json, Record::Frame(frame)) => {
-                // Always hex, whatever the mode: a JSON reader gets the bytes as they were.
-                self.text.clear();
-                push_spaced_hex(&mut self.text, &frame.found.bytes);
-                json_line(
-                    out,
-                    &mut self.line,
-                    &JsonFrame {
-                        kind: "frame",
-                        number: frame.number,
-                        time: seconds(frame.at),
-                        gap: frame.gap.map(seconds),
-                        offset: frame.found.offset,
-                        bytes: &self.text,
-                        report: &frame.report,
-                        paired: frame.paired,
-                        tcp: frame.tcp.as_ref().map(JsonTcp::from),
-                    },
-                )
+                self.line.clear();
+                frame_json(&mut self.line, frame)?;
+                self.line.push(b'\n');
+                out.write_all(&self.line)
             }
             (
                 Format::Json,
@@ -248,19 +348,16 @@ impl SniffWriter {
                     ..
                 },
             ) => {
-                self.text.clear();
-                push_spaced_hex(&mut self.text, kept);
-                json_line(
-                    out,
-                    &mut self.line,
-                    &JsonNoise {
-                        kind: "noise",
-                        time: seconds(*at),
-                        offset: *offset,
-                        count: *len,
-                        bytes: &self.text,
-                    },
-                )
+                self.line.clear();
+                let mut object = JsonObject::open(&mut self.line);
+                object.field("type", "noise")?;
+                object.field("time", &seconds(*at))?;
+                object.field("offset", offset)?;
+                object.field("count", len)?;
+                object.hex("bytes", kept);
+                object.close();
+                self.line.push(b'\n');
+                out.write_all(&self.line)
             }
             (
                 Format::Json,
@@ -375,15 +472,10 @@ impl SniffWriter {
     }
 
     fn write_when(out: &mut String, time: Option<u64>, offset: u64) {
-        use std::fmt::Write as _;
-        let _ = match time {
-            Some(us) => write!(out, "{:>12.6}", seconds(us)),
-            None => {
-                let digits = offset.checked_ilog10().unwrap_or(0) as usize + 1;
-                let _ = write!(out, "{:1$}", "", 11usize.saturating_sub(digits));
-                write!(out, "@{offset}")
-            }
-        };
+        match time {
+            Some(us) => aligned(out, 12, Align::Right, format_args!("{:.6}", seconds(us))),
+            None => aligned(out, 12, Align::Right, format_args!("@{offset}")),
+        }
     }
 
     /// A serial frame's line, put together in `self.text`: the number, time, gap, slave,
@@ -403,25 +495,31 @@ impl SniffWriter {
         if let (true, Some(colour)) = (self.colour, colour) {
             text.push_str(colour);
         }
-        let _ = write!(text, "#{:<6}", frame.number);
+        text.push('#');
+        aligned(text, 6, Align::Left, frame.number);
         Self::write_when(text, frame.found.start, frame.found.offset);
-        let gap = frame
-            .gap
-            .map(|g| {
-                format!(
+        text.push(' ');
+        match frame.gap {
+            Some(gap) => aligned(
+                text,
+                12,
+                Align::Right,
+                format_args!(
                     "+{}",
-                    mbtool_core::model::duration::show(std::time::Duration::from_micros(g))
-                )
-            })
-            .unwrap_or_default();
-        let _ = write!(
-            text,
-            " {gap:>12}  slave {:<3} {:>2} {:<30} {:<9} ",
-            r.slave,
-            r.function & 0x7F,
-            function::name(r.function),
-            kind_column(r),
-        );
+                    mbtool_core::model::duration::show(std::time::Duration::from_micros(gap))
+                ),
+            ),
+            None => text.push_str(&SPACES[..12]),
+        }
+        text.push_str("  slave ");
+        aligned(text, 3, Align::Left, r.slave);
+        text.push(' ');
+        aligned(text, 2, Align::Right, r.function & 0x7F);
+        text.push(' ');
+        aligned(text, 30, Align::Left, function::name(r.function));
+        text.push(' ');
+        aligned(text, 9, Align::Left, kind_column(r));
+        text.push(' ');
         write_frame_summary(text, r);
         let _ = write!(text, "  [{}]", check_column(r));
         if let (true, Some(_)) = (self.colour, colour) {
@@ -474,7 +572,8 @@ impl SniffWriter {
                 text.push_str("       ");
                 Self::write_when(text, *time, *offset);
                 let plural = if *len == 1 { "" } else { "s" };
-                let _ = write!(text, " {:>12}  noise: {len} byte{plural}: ", "");
+                text.push_str(&SPACES[..13]);
+                let _ = write!(text, "  noise: {len} byte{plural}: ");
                 push_spaced_hex(text, &kept[..kept.len().min(16)]);
                 text.push_str(if *len > 16 { " ...\n" } else { "\n" });
                 out.write_all(text.as_bytes())
@@ -698,6 +797,41 @@ mod tests {
             .lines()
             .map(|line| serde_json::from_str(line).unwrap())
             .collect()
+    }
+
+    /// The JSON of a frame's report is written field by field for speed; it must stay what
+    /// `FrameReport`'s own `Serialize` gives (as `decode -o json` writes it), to the byte.
+    #[test]
+    fn a_report_as_a_sniffed_frame_is_its_serialize_to_the_byte() {
+        use mbtool_core::codec::checksum::crc16;
+        use mbtool_core::codec::Direction;
+        use mbtool_core::describe::describe_frame;
+        let mut rng = fastrand::Rng::with_seed(23);
+        let functions = [
+            1, 2, 3, 4, 5, 6, 7, 8, 11, 12, 15, 16, 17, 20, 21, 22, 23, 24, 43, 65,
+        ];
+        for round in 0..5000 {
+            let mut frame = vec![rng.u8(0..=247), functions[rng.usize(..functions.len())]];
+            if rng.u8(..) < 40 {
+                frame[1] |= 0x80;
+            }
+            frame.extend((0..rng.usize(0..24)).map(|_| rng.u8(..)));
+            frame.extend_from_slice(&crc16(&frame).to_le_bytes());
+            if round % 7 == 0 {
+                frame[2] ^= 0x10;
+            }
+            let direction = [None, Some(Direction::Request), Some(Direction::Response)][round % 3];
+            let report = describe_frame(&frame, Some(Mode::Rtu), direction);
+            let mut line = Vec::new();
+            let mut object = JsonObject::open(&mut line);
+            report_fields(&mut object, &report).unwrap();
+            object.close();
+            assert_eq!(
+                String::from_utf8(line).unwrap(),
+                serde_json::to_string(&report).unwrap(),
+                "{frame:02X?}"
+            );
+        }
     }
 
     #[test]

@@ -127,10 +127,17 @@ impl Framer {
             // A frame may start with the run itself (slave 255, or 0 to broadcast), and the
             // run's last byte may be the address of a broadcast.
             if run > 0 {
-                if self.followed_well(at, depth, false, asked) == Tell::Yes {
+                let at_run = self.followed_well(at, depth, false, asked);
+                if at_run == Tell::Yes {
                     return Tell::Yes;
                 }
-                return match self.followed_well(at + run - 1, depth, false, asked) {
+                // A run of one: its last byte is its first, already asked about.
+                let at_last = if run == 1 {
+                    at_run
+                } else {
+                    self.followed_well(at + run - 1, depth, false, asked)
+                };
+                return match at_last {
                     Tell::No => self.followed_well(at + run, depth, false, asked),
                     tell => tell,
                 };
