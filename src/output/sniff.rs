@@ -122,18 +122,11 @@ impl<'a> JsonObject<'a> {
         }
     }
 
-    /// Bytes as spaced upper-case hex, which needs no escaping.
-    fn hex(&mut self, key: &str, bytes: &[u8]) {
-        const HEX: &[u8; 16] = b"0123456789ABCDEF";
+    /// Spaced hex (`push_spaced_hex`), which needs no escaping.
+    fn hex(&mut self, key: &str, hex: &str) {
         self.key(key);
         self.line.push(b'"');
-        for (i, byte) in bytes.iter().enumerate() {
-            if i > 0 {
-                self.line.push(b' ');
-            }
-            self.line.push(HEX[usize::from(byte >> 4)]);
-            self.line.push(HEX[usize::from(byte & 0x0F)]);
-        }
+        self.line.extend_from_slice(hex.as_bytes());
         self.line.push(b'"');
     }
 
@@ -165,7 +158,8 @@ impl<'a> JsonObject<'a> {
 /// A frame as one JSON object: the record's place and bytes, then the report's fields in
 /// the order `FrameReport` serializes them (a unit test holds the two equal), then the
 /// pairing and the TCP place.
-fn frame_json(line: &mut Vec<u8>, frame: &FrameRecord) -> io::Result<()> {
+/// `hex`: the frame's bytes as spaced hex.
+fn frame_json(line: &mut Vec<u8>, frame: &FrameRecord, hex: &str) -> io::Result<()> {
     let report = &frame.report;
     let mut object = JsonObject::open(line);
     object.field("type", "frame")?;
@@ -174,7 +168,7 @@ fn frame_json(line: &mut Vec<u8>, frame: &FrameRecord) -> io::Result<()> {
     object.field_if("gap", frame.gap.map(seconds).as_ref())?;
     object.field("offset", &frame.found.offset)?;
     // Always hex, whatever the mode: a JSON reader gets the bytes as they were.
-    object.hex("bytes", &frame.found.bytes);
+    object.hex("bytes", hex);
     report_fields(&mut object, report)?;
     if frame.paired {
         object.field("paired", &true)?;
@@ -334,7 +328,9 @@ impl SniffWriter {
         match (self.format, record) {
             (Format::Json, Record::Frame(frame)) => {
                 self.line.clear();
-                frame_json(&mut self.line, frame)?;
+                self.text.clear();
+                push_spaced_hex(&mut self.text, &frame.found.bytes);
+                frame_json(&mut self.line, frame, &self.text)?;
                 self.line.push(b'\n');
                 out.write_all(&self.line)
             }
@@ -349,12 +345,14 @@ impl SniffWriter {
                 },
             ) => {
                 self.line.clear();
+                self.text.clear();
+                push_spaced_hex(&mut self.text, kept);
                 let mut object = JsonObject::open(&mut self.line);
                 object.field("type", "noise")?;
                 object.field("time", &seconds(*at))?;
                 object.field("offset", offset)?;
                 object.field("count", len)?;
-                object.hex("bytes", kept);
+                object.hex("bytes", &self.text);
                 object.close();
                 self.line.push(b'\n');
                 out.write_all(&self.line)
