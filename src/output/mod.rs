@@ -6,6 +6,7 @@ pub mod decode;
 pub mod device;
 pub mod encode;
 pub mod gateway;
+pub mod json;
 pub mod map;
 pub mod ports;
 pub mod read;

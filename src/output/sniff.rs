@@ -5,6 +5,7 @@ use std::io::{self, Write};
 
 use serde::Serialize;
 
+use super::json::JsonObject;
 use super::Format;
 use super::{csv_field, request_summary, shown_values, write_fields_summary, write_value};
 use mbtool_core::codec::function;
@@ -82,77 +83,6 @@ pub struct SniffWriter {
     /// One line of the table or one field of JSON, put together here: no allocation per
     /// frame.
     text: String,
-}
-
-/// A JSON object written a field at a time into a line. A sniffer writes millions of
-/// frames, and serde's flattening (a map serializer, its keys escaped one by one) cost more
-/// than everything else a frame needs: the keys here are written as they are, and only
-/// the values go through serde_json.
-struct JsonObject<'a> {
-    line: &'a mut Vec<u8>,
-    empty: bool,
-}
-
-impl<'a> JsonObject<'a> {
-    fn open(line: &'a mut Vec<u8>) -> Self {
-        line.push(b'{');
-        Self { line, empty: true }
-    }
-
-    /// `key` must need no escaping: the keys are mbtool's own.
-    fn key(&mut self, key: &str) {
-        if !self.empty {
-            self.line.push(b',');
-        }
-        self.empty = false;
-        self.line.push(b'"');
-        self.line.extend_from_slice(key.as_bytes());
-        self.line.extend_from_slice(b"\":");
-    }
-
-    fn field(&mut self, key: &str, value: &(impl Serialize + ?Sized)) -> io::Result<()> {
-        self.key(key);
-        Ok(serde_json::to_writer(&mut *self.line, value)?)
-    }
-
-    fn field_if(&mut self, key: &str, value: Option<&impl Serialize>) -> io::Result<()> {
-        match value {
-            Some(value) => self.field(key, value),
-            None => Ok(()),
-        }
-    }
-
-    /// Spaced hex (`push_spaced_hex`), which needs no escaping.
-    fn hex(&mut self, key: &str, hex: &str) {
-        self.key(key);
-        self.line.push(b'"');
-        self.line.extend_from_slice(hex.as_bytes());
-        self.line.push(b'"');
-    }
-
-    /// The fields of `value`, which serializes as an object, as fields of this one: what
-    /// `#[serde(flatten)]` does, without its cost.
-    fn flatten(&mut self, value: &impl Serialize) -> io::Result<()> {
-        let start = self.line.len();
-        serde_json::to_writer(&mut *self.line, value)?;
-        if self.line.len() - start <= 2 {
-            // `{}`: nothing to add.
-            self.line.truncate(start);
-            return Ok(());
-        }
-        self.line.pop();
-        if self.empty {
-            self.line.remove(start);
-        } else {
-            self.line[start] = b',';
-        }
-        self.empty = false;
-        Ok(())
-    }
-
-    fn close(self) {
-        self.line.push(b'}');
-    }
 }
 
 /// A frame as one JSON object: the record's place and bytes, then the report's fields in

@@ -1,0 +1,114 @@
+//! JSON Lines written a field at a time. A sniffer writes millions of frames, and serde's
+//! flattening (a map serializer, its keys escaped one by one) cost more than everything
+//! else a frame needs: here the keys are written as they are, and only the values go
+//! through serde_json.
+
+use std::io;
+
+use serde::Serialize;
+
+/// A JSON object written a field at a time into a line.
+pub struct JsonObject<'a> {
+    line: &'a mut Vec<u8>,
+    empty: bool,
+}
+
+impl<'a> JsonObject<'a> {
+    pub fn open(line: &'a mut Vec<u8>) -> Self {
+        line.push(b'{');
+        Self { line, empty: true }
+    }
+
+    /// `key` must need no escaping: the keys are mbtool's own.
+    fn key(&mut self, key: &str) {
+        if !self.empty {
+            self.line.push(b',');
+        }
+        self.empty = false;
+        self.line.push(b'"');
+        self.line.extend_from_slice(key.as_bytes());
+        self.line.extend_from_slice(b"\":");
+    }
+
+    pub fn field(&mut self, key: &str, value: &(impl Serialize + ?Sized)) -> io::Result<()> {
+        self.key(key);
+        Ok(serde_json::to_writer(&mut *self.line, value)?)
+    }
+
+    pub fn field_if(&mut self, key: &str, value: Option<&impl Serialize>) -> io::Result<()> {
+        match value {
+            Some(value) => self.field(key, value),
+            None => Ok(()),
+        }
+    }
+
+    /// Spaced hex (`push_spaced_hex`), which needs no escaping.
+    pub fn hex(&mut self, key: &str, hex: &str) {
+        self.key(key);
+        self.line.push(b'"');
+        self.line.extend_from_slice(hex.as_bytes());
+        self.line.push(b'"');
+    }
+
+    /// The fields of `value`, which serializes as an object, as fields of this one: what
+    /// `#[serde(flatten)]` does, without its cost.
+    pub fn flatten(&mut self, value: &impl Serialize) -> io::Result<()> {
+        let start = self.line.len();
+        serde_json::to_writer(&mut *self.line, value)?;
+        if self.line.len() - start <= 2 {
+            // `{}`: nothing to add.
+            self.line.truncate(start);
+            return Ok(());
+        }
+        self.line.pop();
+        if self.empty {
+            self.line.remove(start);
+        } else {
+            self.line[start] = b',';
+        }
+        self.empty = false;
+        Ok(())
+    }
+
+    pub fn close(self) {
+        self.line.push(b'}');
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn written(fill: impl FnOnce(&mut JsonObject) -> io::Result<()>) -> String {
+        let mut line = Vec::new();
+        let mut object = JsonObject::open(&mut line);
+        fill(&mut object).unwrap();
+        object.close();
+        String::from_utf8(line).unwrap()
+    }
+
+    #[test]
+    fn flattened_objects_join_the_fields_around_them() {
+        let inner = serde_json::json!({"b": 2, "c": "x\"y"});
+        let empty = serde_json::json!({});
+        assert_eq!(
+            written(|o| {
+                o.flatten(&inner)?;
+                o.field("d", &[1, 2])?;
+                o.flatten(&empty)?;
+                o.field_if("e", None::<&u8>)?;
+                o.hex("f", "01 02");
+                o.field("g", "a\nb")
+            }),
+            r#"{"b":2,"c":"x\"y","d":[1,2],"f":"01 02","g":"a\nb"}"#
+        );
+        assert_eq!(written(|o| o.flatten(&empty)), "{}");
+        assert_eq!(
+            written(|o| {
+                o.field("a", &1)?;
+                o.flatten(&inner)
+            }),
+            r#"{"a":1,"b":2,"c":"x\"y"}"#
+        );
+    }
+}
