@@ -743,7 +743,12 @@ mod tests {
             if rng.u8(..) < 40 {
                 frame[1] |= 0x80;
             }
-            frame.extend((0..rng.usize(0..24)).map(|_| rng.u8(..)));
+            // Half of them with a byte count that fits, so that answers carry values.
+            let len = rng.usize(0..24);
+            if round % 2 == 0 {
+                frame.push(len as u8);
+            }
+            frame.extend((0..len).map(|_| rng.u8(..)));
             frame.extend_from_slice(&crc16(&frame).to_le_bytes());
             if round % 7 == 0 {
                 frame[2] ^= 0x10;
