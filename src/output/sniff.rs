@@ -568,9 +568,15 @@ impl SniffWriter {
                         n(p.missing_bytes, "byte"),
                     )?;
                 }
+                // Frames whose CRC holds but whose PDU reads neither way are counted
+                // too, so that the kinds add up to the frames with the CRC errors.
+                let malformed = match counts.malformed {
+                    0 => String::new(),
+                    count => format!(", {count} malformed"),
+                };
                 writeln!(
                     out,
-                    "summary: {} ({}, {}, {}), {} unanswered, {}, {}",
+                    "summary: {} ({}, {}, {}{malformed}), {} unanswered, {}, {}",
                     n(counts.frames, "frame"),
                     n(counts.requests, "request"),
                     n(counts.answers, "answer"),
@@ -765,6 +771,28 @@ mod tests {
                 "{frame:02X?}"
             );
         }
+    }
+
+    #[test]
+    fn the_table_summary_counts_a_malformed_frame() {
+        use mbtool_core::codec::checksum::crc16;
+        // Read holding registers with an odd byte count, or a request for 515 registers:
+        // neither way does it read.
+        let mut frame = vec![0x11, 0x03, 0x03, 0x01, 0x02, 0x03];
+        frame.extend_from_slice(&crc16(&frame).to_le_bytes());
+        let mut session = Session::new(Mode::Rtu, 1145.8, 4010, Filter::default());
+        let mut records = Vec::new();
+        session.push(&frame, &mut records);
+        session.finish(None, &mut records);
+        let mut out = Vec::new();
+        SniffWriter::new(Format::Table, false)
+            .summary(&mut out, session.counts(), None)
+            .unwrap();
+        let out = String::from_utf8(out).unwrap();
+        assert!(
+            out.starts_with("summary: 1 frame (0 requests, 0 answers, 0 exceptions, 1 malformed),"),
+            "{out}"
+        );
     }
 
     #[test]
