@@ -23,11 +23,13 @@
 //! bytes that do not make a whole frame before it: they are a frame cut short (the answer
 //! awaited, or a request in step) or noise, and the frame after the silence starts clean;
 //! this is decided when the bytes after the silence come, so that a frame whose rest comes
-//! after a gap is still taken whole. A frame that did (its CRC holding across the gap) shows that the
-//! gaps lie: a USB adapter hands bytes over when its latency timer runs out, so a frame
-//! straddling a tick arrives in two reads a whole period apart, and a device may pause
-//! inside its frames. From then on the times are not taken for silence, and a frame cut
-//! short is kept until bytes show it is no frame, as without timing.
+//! after a gap is still taken whole, and a frame followed by such bytes waits for them too.
+//! A frame that did (its CRC holding across the gap: one of known layout, or the answer
+//! awaited when no frame starts right after the gap) shows that the gaps lie: a USB
+//! adapter hands bytes over when its latency timer runs out, so a frame straddling a tick
+//! arrives in two reads a whole period apart, and a device may pause inside its frames.
+//! From then on the times are not taken for silence (nor is the quiet they told), and a
+//! frame cut short is kept until bytes show it is no frame, as without timing.
 //!
 //! ASCII: ':' starts a frame and CR LF ends it; up to a second may pass between characters.
 //! TCP: the MBAP length alone frames, however the bytes were segmented.
@@ -349,6 +351,18 @@ impl Framer {
             .map(|i| i + 1)
     }
 
+    /// Whether the last bytes, which make no frame yet, may still grow into one. A master or
+    /// a slave decides at the silence after them; for a sniffer silence alone does not end
+    /// them, the bytes after the silence tell (see `silence_within`).
+    fn last_bytes_may_grow(&self) -> bool {
+        !self.ended && (self.ends_cut_frames || !self.quiet)
+    }
+
+    /// Whether silence follows any byte of `at..end` but the last: a frame there crosses it.
+    fn silence_inside(&self, at: usize, end: usize) -> bool {
+        (at..end - 1).any(|i| self.silence_after(i))
+    }
+
     /// Whether the line has been silent since the last byte, by `now`.
     fn silent_since_last(&self, now: u64) -> bool {
         if self.gaps_lie {
@@ -433,9 +447,11 @@ impl Framer {
                         // silences (the times are kept all the same, to be shown).
                         if self.ends_cut_frames
                             && self.mode == Mode::Rtu
-                            && (at..at + len - 1).any(|i| self.silence_after(i))
+                            && self.silence_inside(at, at + len)
                         {
                             self.gaps_lie = true;
+                            // The quiet the times told was a lie too, unless the input ended.
+                            self.quiet = self.ended;
                         }
                     }
                     out.push(Event::Frame(found));
@@ -762,6 +778,53 @@ mod tests {
         framer.push_at(&REQUEST[..5], 48_000, &mut out);
         framer.push_at(&REQUEST[5..], 64_000, &mut out);
         assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes[..] == REQUEST[..]));
+    }
+
+    #[test]
+    fn an_answer_without_a_known_layout_across_a_usb_tick_is_taken_whole() {
+        // Function 72, request and answer, then noise and a request, in the reads of a USB
+        // adapter's 16 ms latency timer at 19200 baud: the answer crosses a tick before any
+        // frame of known layout has shown that the gaps lie.
+        let mut stream = Vec::new();
+        crate::model::hexinput::parse_hex(
+            b"110fa6a300040125229e110fa6a3000484324494f7486d132cded6237b2eb3bcf748d91e3f72\
+              1fcb197121b0d654af4d11174ef80012d0ed00060c34c36030beaa31e220251e8461ef",
+            &mut stream,
+        )
+        .unwrap();
+        let answer = &stream[32..44];
+        let out = timed_frames(&[
+            (&stream[..18], 16_000),
+            (&stream[18..34], 32_000),
+            (&stream[34..52], 48_000),
+            (&stream[52..], 64_000),
+        ]);
+        assert!(out.contains(&(answer.to_vec(), None)), "{out:?}");
+    }
+
+    #[test]
+    fn a_frame_whose_answer_a_usb_tick_cuts_waits_for_the_rest() {
+        // After noise, a request whose answer's first bytes end a read, the adapter's read
+        // timing out (told as quiet) before the tick brings the rest.
+        let mut framer = framer(Mode::Rtu);
+        framer.end_cut_frames();
+        let mut out = Vec::new();
+        framer.push_at(
+            &[&[0x7F, 0xFE][..], &REQUEST, &ANSWER[..2]].concat(),
+            16_000,
+            &mut out,
+        );
+        framer.idle(24_000, &mut out);
+        framer.push_at(&ANSWER[2..], 32_000, &mut out);
+        framer.finish(&mut out);
+        let frames: Vec<&[u8]> = out
+            .iter()
+            .filter_map(|event| match event {
+                Event::Frame(found) if found.broken.is_none() => Some(&found.bytes[..]),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(frames, [&REQUEST[..], &ANSWER[..]]);
     }
 
     #[test]

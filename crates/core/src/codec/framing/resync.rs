@@ -80,9 +80,13 @@ impl Framer {
         }
         // The conversation supports the answer awaited; but where the times tell silences,
         // one whose length only its CRC tells must end where the silence does, since the
-        // bytes that go on without a gap are still its own.
+        // bytes that go on without a gap are still its own. Unless it runs across a gap
+        // after which no frame starts (`look_rtu` has dropped it otherwise): then the gaps
+        // are an adapter's latency timer, and the bytes after it tell nothing either.
         let by_conversation = self.answers_awaited(frame, candidate.direction)
-            && (candidate.known_layout || !self.times_tell_silence());
+            && (candidate.known_layout
+                || !self.times_tell_silence()
+                || self.silence_inside(at, end));
         if self.silence_after(end - 1) || by_conversation {
             return Tell::Yes;
         }
@@ -168,7 +172,9 @@ impl Framer {
                 }
             }
         }
-        if !next.pending.is_empty() && !self.ended && !self.quiet {
+        // Bytes cut by silence may be a frame's first read from a USB adapter: the frame
+        // before them waits for the bytes after it, as they do.
+        if !next.pending.is_empty() && self.last_bytes_may_grow() {
             return Tell::NotYet;
         }
         Tell::No

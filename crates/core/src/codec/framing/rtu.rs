@@ -258,10 +258,7 @@ impl Framer {
         // One pass finds the lengths whose CRC holds; the frames inside, which cost a CRC
         // at every position, are looked for only where they can change the answer.
         let matches = crc_matches(data, MIN_RTU_FRAME, reach);
-        // A master or a slave decides at the silence after it; for a sniffer silence alone
-        // does not end it, the bytes after the silence tell (see `silence_within`).
-        let could_grow =
-            data.len() < MAX_RTU_ADU && !self.ended && (self.ends_cut_frames || !self.quiet);
+        let could_grow = data.len() < MAX_RTU_ADU && self.last_bytes_may_grow();
         let inner_end = if matches.is_empty() && !could_grow {
             None
         } else {
