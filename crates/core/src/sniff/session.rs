@@ -7,7 +7,7 @@ use std::net::SocketAddr;
 use serde::Serialize;
 
 use super::pairing::{Pairer, Role, Unanswered};
-use crate::codec::framing::{Broken, Event, Found, Framer, Noise};
+use crate::codec::framing::{Broken, Event, Found, Framer, Noise, NoiseBytes};
 use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
 use crate::describe::{describe_frame, describe_reading, FrameReport, Kind, Values};
 use crate::model::address::{reference, Table};
@@ -22,7 +22,7 @@ pub enum Record {
     /// A run of bytes that belong to no frame.
     Noise {
         /// The first bytes of the run (`codec::framing::NOISE_KEPT`).
-        kept: Vec<u8>,
+        kept: NoiseBytes,
         /// How many bytes the run holds.
         len: u64,
         /// Where the run starts, in bytes from the start of the capture.
