@@ -243,7 +243,9 @@ impl DecodeWriter {
                 }
             }
             Values::Bits(bits) => {
-                // A row per byte as it stands in the frame: first bit on the left.
+                // A row per byte as it stands in the frame: first bit on the left. The last
+                // byte's bits past the values are padding (or, the request not seen, not
+                // known to be values), so its byte is not made up from the values.
                 header.extend(["byte".to_string(), "bits (first to last)".to_string()]);
                 table.set_header(header);
                 for (i, chunk) in bits.chunks(8).enumerate() {
@@ -253,7 +255,10 @@ impl DecodeWriter {
                         .fold(0u8, |byte, (bit, on)| byte | (*on & 1) << bit);
                     let shown: Vec<String> = chunk.iter().map(ToString::to_string).collect();
                     let mut row = place(i * 8);
-                    row.push(format!("{byte:02X}"));
+                    row.push(match chunk.len() {
+                        8 => format!("{byte:02X}"),
+                        _ => String::new(),
+                    });
                     row.push(shown.join(" "));
                     table.add_row(row);
                 }
@@ -284,6 +289,16 @@ fn field_rows(f: &Fields) -> Vec<(&'static str, String)> {
     }
     if let Some(count) = f.count {
         rows.push(("count", count.to_string()));
+    }
+    if let (Some(values), Some(most)) = (&f.values, f.max_count) {
+        rows.push((
+            "count",
+            format!(
+                "{} to {most}: the request decides (the bits after the first {} may be padding)",
+                values.len(),
+                values.len()
+            ),
+        ));
     }
     if let Some(values) = f.values.as_ref().filter(|v| v.len() == 1) {
         rows.push(match values {

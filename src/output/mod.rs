@@ -191,6 +191,12 @@ pub fn write_fields_summary(out: &mut String, fields: &Fields) {
         (Some(values), _) => {
             if place(out) {
                 out.push_str(" = ");
+            } else if let Some(most) = fields.max_count {
+                let sure = values.len();
+                let _ = write!(
+                    out,
+                    "{sure} to {most} values (the request not seen), the first {sure}: "
+                );
             } else {
                 let _ = write!(out, "{} values: ", values.len());
             }

@@ -322,6 +322,43 @@ fn a_corrupt_frame_is_a_crc_error_not_noise() {
 }
 
 #[test]
+fn a_bit_answer_without_its_request_shows_only_the_bits_sure_to_be_values() {
+    // 10 coils asked, 2 bytes answered: the last byte's high bits are set where the
+    // padding should be 0, as some devices send. Without the request only 9 bits are sure.
+    let request = rtu(&[0x11, 0x01, 0x00, 0x13, 0x00, 0x0A]);
+    let answer = rtu(&[0x11, 0x01, 0x02, 0xCD, 0xF1]);
+    let sniff = |capture: Vec<u8>, format: &str| {
+        let output = mbtool()
+            .args(["sniff", "-o", format, "--input", "-"])
+            .write_stdin(capture)
+            .output()
+            .unwrap();
+        assert!(output.status.success(), "{output:?}");
+        String::from_utf8(output.stdout).unwrap()
+    };
+    let alone = json_lines(sniff(answer.clone(), "json").as_bytes());
+    assert_eq!(
+        alone[0]["values"],
+        serde_json::json!([1, 0, 1, 1, 0, 0, 1, 1, 1])
+    );
+    assert_eq!(alone[0]["max_count"], 16);
+    assert!(alone[0].get("count").is_none());
+    let table = sniff(answer.clone(), "table");
+    assert!(
+        table.contains("9 to 16 values (the request not seen), the first 9: 1 0 1 1 0 0 1 1"),
+        "{table}"
+    );
+    // With its request, the quantity asked: 10 values, the padding left out.
+    let paired = json_lines(sniff([request, answer].concat(), "json").as_bytes());
+    assert_eq!(paired[1]["count"], 10);
+    assert_eq!(
+        paired[1]["values"],
+        serde_json::json!([1, 0, 1, 1, 0, 0, 1, 1, 1, 0])
+    );
+    assert!(paired[1].get("max_count").is_none());
+}
+
+#[test]
 fn filters_show_one_slave_or_function() {
     let other = rtu(&[0x05, 0x04, 0x00, 0x00, 0x00, 0x01]);
     let capture = [WORKED[4].clone(), WORKED[5].clone(), other].concat();

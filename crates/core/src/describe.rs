@@ -88,10 +88,16 @@ pub struct Fields {
     /// function names a table.
     #[serde(rename = "ref", skip_serializing_if = "Option::is_none")]
     pub reference: Option<String>,
-    /// How many coils or registers are asked, written or carried; for a bit answer, every bit
-    /// of its bytes, since the quantity asked is unknown.
+    /// How many coils or registers are asked, written or carried; unknown (absent) for a
+    /// bit answer whose request was not seen.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub count: Option<u16>,
+    /// A bit answer whose request was not seen: the most values its bytes can hold. The
+    /// high bits of its last byte are values or padding, as the quantity asked decides, so
+    /// `values` holds only the bits sure to be values: those of every byte but the last,
+    /// and the first of the last.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_count: Option<u16>,
     /// The values written or read.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub values: Option<Values>,
@@ -306,10 +312,11 @@ fn response_fields(response: &Response) -> Fields {
     let mut f = Fields::default();
     match response {
         Response::ReadCoils { packed } | Response::ReadDiscreteInputs { packed } => {
-            // Without the request the count is unknown: every bit of every byte is shown.
-            let all = bits::unpack(packed, packed.len() * 8);
-            f.count = u16::try_from(all.len()).ok();
-            f.values = Some(Values::bits(&all));
+            // Without the request the count is unknown: only the bits sure to be values are
+            // shown, since a padding bit taken for a coil would be a value invented.
+            let sure = packed.len().saturating_sub(1) * 8 + usize::from(!packed.is_empty());
+            f.max_count = u16::try_from(packed.len() * 8).ok();
+            f.values = Some(Values::bits(&bits::unpack(packed, sure)));
         }
         Response::ReadHoldingRegisters { values }
         | Response::ReadInputRegisters { values }

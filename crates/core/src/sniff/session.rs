@@ -7,6 +7,7 @@ use std::net::SocketAddr;
 use serde::Serialize;
 
 use super::pairing::{Pairer, Role, Unanswered};
+use crate::codec::bits::unpack;
 use crate::codec::framing::{Broken, Event, Found, Framer, Noise, NoiseBytes};
 use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
 use crate::describe::{describe_frame, describe_reading, FrameReport, Kind, Values};
@@ -399,7 +400,7 @@ impl Session {
                 let answer_to_read = matches!(pdu, Pdu::Response(_));
                 let mut report = describe(Reading::One(pdu));
                 if let (Some(request), true) = (&to, answer_to_read) {
-                    locate(&mut report, request);
+                    locate(&mut report, request, &envelope.pdu);
                 }
                 (report, to.is_some())
             }
@@ -411,9 +412,9 @@ impl Session {
     }
 }
 
-/// Gives a read answer the addresses of the request it answers, and cuts bit answers to
-/// the quantity asked.
-pub(super) fn locate(report: &mut FrameReport, request: &Request) {
+/// Gives a read answer (`pdu`, as on the wire) the addresses of the request it answers,
+/// and the bits of a bit answer to the quantity asked.
+pub(super) fn locate(report: &mut FrameReport, request: &Request, pdu: &[u8]) {
     let (address, quantity) = match request {
         Request::ReadCoils { address, quantity }
         | Request::ReadDiscreteInputs { address, quantity }
@@ -431,6 +432,12 @@ pub(super) fn locate(report: &mut FrameReport, request: &Request) {
     report.fields.reference = Some(reference(table, address));
     report.fields.count = Some(quantity);
     if let Some(Values::Bits(bits)) = &mut report.fields.values {
-        bits.truncate(usize::from(quantity));
+        // Function, byte count, then the bits packed.
+        let packed = pdu.get(2..).unwrap_or_default();
+        *bits = unpack(packed, usize::from(quantity))
+            .into_iter()
+            .map(u8::from)
+            .collect();
+        report.fields.max_count = None;
     }
 }

@@ -377,7 +377,7 @@ impl TcpSession {
                         let answer_to_read = matches!(pdu, Pdu::Response(_));
                         let mut report = describe_reading(self.mode, &envelope, Reading::One(pdu));
                         if let (Some(request), true) = (&request, answer_to_read) {
-                            locate(&mut report, request);
+                            locate(&mut report, request, &envelope.pdu);
                         }
                         report
                     }
