@@ -203,12 +203,50 @@ pub fn write_fields_summary(out: &mut String, fields: &Fields) {
             write_values(out, values, 8);
         }
         (None, count) => {
+            let data = fields.text.as_ref().or(fields.data.as_ref());
             if place(out) {
                 if let Some(count) = count {
                     let _ = write!(out, " x{count}");
                 }
-            } else if let Some(text) = fields.text.as_ref().or(fields.data.as_ref()) {
-                out.push_str(text);
+                if let (Some(and), Some(or)) = (fields.and_mask, fields.or_mask) {
+                    let _ = write!(out, " AND {and:04X} OR {or:04X}");
+                }
+            } else if let Some(sub_function) = fields.sub_function {
+                let _ = write!(out, "sub-function {sub_function}");
+                if let Some(data) = data {
+                    let _ = write!(out, ": {data}");
+                }
+            } else if fields.read_code.is_some() {
+                write_identification(out, fields);
+            } else if let Some(status) = fields.status {
+                let _ = write!(out, "status {status:02X}");
+            } else if let Some(data) = data {
+                out.push_str(data);
+            }
+        }
+    }
+}
+
+/// Function 43/14 in a few words: what a request asks for, the objects an answer gives.
+fn write_identification(out: &mut String, fields: &Fields) {
+    use std::fmt::Write as _;
+    match &fields.objects {
+        None => {
+            let _ = match (fields.read_code, fields.object_id) {
+                (Some(4), Some(id)) => write!(out, "object {id:02X}"),
+                (Some(code), Some(id)) => write!(out, "read code {code} from object {id:02X}"),
+                _ => Ok(()),
+            };
+        }
+        Some(objects) => {
+            for (i, object) in objects.iter().enumerate() {
+                if i > 0 {
+                    out.push_str(", ");
+                }
+                let _ = write!(out, "{} = \"{}\"", object.name, object.value);
+            }
+            if let (Some(true), Some(next)) = (fields.more_follows, fields.next_object_id) {
+                let _ = write!(out, "; more from object {next:02X}");
             }
         }
     }

@@ -145,18 +145,39 @@ enum Align {
     Right,
 }
 
-/// Appends `value` to `text` in a column `width` characters wide (wider values are not
-/// cut), as `{:<width$}` or `{:>width$}` would.
-fn aligned(text: &mut String, width: usize, align: Align, value: impl std::fmt::Display) {
+/// Appends `value` to `text` as a column of the line that began at byte `line`, the column
+/// ending `stop` characters into the line, as `{:<width$}` or `{:>width$}` would. The
+/// columns are ASCII. A value wider than its column pushes the line on only as far as the
+/// next column's blanks allow: the stops stay put, so that a frame number past 999999 or
+/// the longest function name does not shift every column after it.
+fn column(
+    text: &mut String,
+    line: usize,
+    stop: usize,
+    align: Align,
+    value: impl std::fmt::Display,
+) {
     use std::fmt::Write as _;
     let start = text.len();
     let _ = write!(text, "{value}");
-    let shown = text[start..].chars().count();
-    let pad = &SPACES[..width.saturating_sub(shown).min(SPACES.len())];
     match align {
-        Align::Left => text.push_str(pad),
-        Align::Right => text.insert_str(start, pad),
+        Align::Left => pad_to(text, line, stop),
+        Align::Right => {
+            let pad = stop.saturating_sub(text.len() - line);
+            // A value pushed up to the one before it keeps a blank between them.
+            let pad = match pad {
+                0 if start > line && !text[..start].ends_with(' ') => 1,
+                pad => pad.min(SPACES.len()),
+            };
+            text.insert_str(start, &SPACES[..pad]);
+        }
     }
+}
+
+/// Blanks up to `stop` characters into the line that began at byte `line`.
+fn pad_to(text: &mut String, line: usize, stop: usize) {
+    let at = text.len() - line;
+    text.push_str(&SPACES[..stop.saturating_sub(at).min(SPACES.len())]);
 }
 
 /// The kind column: an answer, or a frame that reads both ways as a request with a doubt.
@@ -395,14 +416,21 @@ impl SniffWriter {
     /// The time column: seconds when the time is known, else `@offset`, 12 wide.
     fn when(time: Option<u64>, offset: u64) -> String {
         let mut text = String::new();
-        Self::write_when(&mut text, time, offset);
+        Self::write_when(&mut text, 0, 12, time, offset);
         text
     }
 
-    fn write_when(out: &mut String, time: Option<u64>, offset: u64) {
+    /// The time column, ending `stop` characters into the line that began at byte `line`.
+    fn write_when(out: &mut String, line: usize, stop: usize, time: Option<u64>, offset: u64) {
         match time {
-            Some(us) => aligned(out, 12, Align::Right, format_args!("{:.6}", seconds(us))),
-            None => aligned(out, 12, Align::Right, format_args!("@{offset}")),
+            Some(us) => column(
+                out,
+                line,
+                stop,
+                Align::Right,
+                format_args!("{:.6}", seconds(us)),
+            ),
+            None => column(out, line, stop, Align::Right, format_args!("@{offset}")),
         }
     }
 
@@ -423,30 +451,33 @@ impl SniffWriter {
         if let (true, Some(colour)) = (self.colour, colour) {
             text.push_str(colour);
         }
+        // The stops of the columns: number, time, gap, slave, function code, name, kind.
+        let line = text.len();
         text.push('#');
-        aligned(text, 6, Align::Left, frame.number);
-        Self::write_when(text, frame.found.start, frame.found.offset);
+        column(text, line, 7, Align::Left, frame.number);
+        Self::write_when(text, line, 19, frame.found.start, frame.found.offset);
         text.push(' ');
         match frame.gap {
-            Some(gap) => aligned(
+            Some(gap) => column(
                 text,
-                12,
+                line,
+                32,
                 Align::Right,
                 format_args!(
                     "+{}",
                     mbtool_core::model::duration::show(std::time::Duration::from_micros(gap))
                 ),
             ),
-            None => text.push_str(&SPACES[..12]),
+            None => pad_to(text, line, 32),
         }
         text.push_str("  slave ");
-        aligned(text, 3, Align::Left, r.slave);
+        column(text, line, 43, Align::Left, r.slave);
         text.push(' ');
-        aligned(text, 2, Align::Right, r.function & 0x7F);
+        column(text, line, 46, Align::Right, r.function & 0x7F);
         text.push(' ');
-        aligned(text, 30, Align::Left, function::name(r.function));
+        column(text, line, 77, Align::Left, function::name(r.function));
         text.push(' ');
-        aligned(text, 9, Align::Left, kind_column(r));
+        column(text, line, 87, Align::Left, kind_column(r));
         text.push(' ');
         write_frame_summary(text, r);
         let _ = write!(text, "  [{}]", check_column(r));
@@ -498,9 +529,9 @@ impl SniffWriter {
                 let text = &mut self.text;
                 text.clear();
                 text.push_str("       ");
-                Self::write_when(text, *time, *offset);
+                Self::write_when(text, 0, 19, *time, *offset);
                 let plural = if *len == 1 { "" } else { "s" };
-                text.push_str(&SPACES[..13]);
+                pad_to(text, 0, 32);
                 let _ = write!(text, "  noise: {len} byte{plural}: ");
                 push_spaced_hex(text, &kept[..kept.len().min(16)]);
                 text.push_str(if *len > 16 { " ...\n" } else { "\n" });
@@ -815,5 +846,82 @@ mod tests {
         assert_eq!(lines[2]["kind"], "response");
         assert_eq!(lines[3]["frames"], 2);
         assert_eq!(lines[3]["noise_bytes"], 1);
+    }
+
+    /// Sniff's table for a stream of bytes without timing, without its summary.
+    fn table_of(stream: &[u8]) -> Vec<String> {
+        let mut session = Session::new(Mode::Rtu, 1145.8, 4010, Filter::default());
+        let mut records = Vec::new();
+        session.push(stream, &mut records);
+        session.finish(None, &mut records);
+        let mut writer = SniffWriter::new(Format::Table, false);
+        let mut out = Vec::new();
+        for record in &records {
+            writer.record(&mut out, record).unwrap();
+        }
+        String::from_utf8(out)
+            .unwrap()
+            .lines()
+            .map(String::from)
+            .collect()
+    }
+
+    fn rtu(body: &[u8]) -> Vec<u8> {
+        let crc = mbtool_core::codec::checksum::crc16(body);
+        [body, &crc.to_le_bytes()[..]].concat()
+    }
+
+    #[test]
+    fn wide_values_leave_the_columns_after_them_in_place() {
+        let stream = [
+            rtu(&[0x11, 0x03, 0x00, 0x6B, 0x00, 0x03]),
+            rtu(&[0x11, 0x2B, 0x0E, 0x01, 0x00]),
+            rtu(&[0xF7, 0x64, 0x01, 0x02, 0x03]),
+        ]
+        .concat();
+        let lines = table_of(&stream);
+        let frames: Vec<&String> = lines.iter().filter(|l| l.starts_with('#')).collect();
+        assert_eq!(frames.len(), 3, "{lines:?}");
+        // What the frame says starts at the same place whatever the code and name before it
+        // (a code of 100, the longest name).
+        for line in &frames {
+            assert!(
+                line[..88].ends_with(' ') && !line[88..].starts_with(' '),
+                "{line}"
+            );
+        }
+        let mut line = String::from("#");
+        column(&mut line, 0, 7, Align::Left, 1_234_567);
+        column(&mut line, 0, 19, Align::Right, "@5");
+        line.push('|');
+        assert_eq!(line, "#1234567         @5|");
+        let mut line = String::from("#");
+        column(&mut line, 0, 7, Align::Left, 1_234_567);
+        column(&mut line, 0, 19, Align::Right, "100000.000000");
+        assert_eq!(
+            line, "#1234567 100000.000000",
+            "a blank is kept between columns"
+        );
+    }
+
+    #[test]
+    fn mask_writes_and_device_identification_say_what_they_carry() {
+        let stream = [
+            rtu(&[0x11, 0x16, 0x00, 0x04, 0x00, 0xF2, 0x00, 0x25]),
+            rtu(&[0x11, 0x16, 0x00, 0x04, 0x00, 0xF2, 0x00, 0x25]),
+            rtu(&[0x11, 0x2B, 0x0E, 0x01, 0x00]),
+            rtu(&[
+                0x11, 0x2B, 0x0E, 0x01, 0x01, 0xFF, 0x02, 0x02, 0x00, 0x03, 0x41, 0x42, 0x43, 0x01,
+                0x02, 0x58, 0x31,
+            ]),
+        ]
+        .concat();
+        let lines = table_of(&stream);
+        assert!(lines[0].contains("400005 AND 00F2 OR 0025"), "{lines:?}");
+        assert!(lines[2].contains("read code 1 from object 00"), "{lines:?}");
+        assert!(
+            lines[3].contains(r#"VendorName = "ABC", ProductCode = "X1"; more from object 02"#),
+            "{lines:?}"
+        );
     }
 }
