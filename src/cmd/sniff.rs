@@ -407,18 +407,40 @@ fn replay_timing(path: &Path) -> Result<Option<Vec<timing::Event>>> {
     if path.as_os_str() == "-" || !beside.exists() {
         return Ok(None);
     }
-    let text = std::fs::read_to_string(&beside)
-        .with_context(|| format!("cannot read {}", beside.display()))?;
+    let bytes =
+        std::fs::read(&beside).with_context(|| format!("cannot read {}", beside.display()))?;
+    let text = String::from_utf8(bytes).map_err(|_| {
+        Error::usage(format!(
+            "{} is not text, so no .timing file: move it away to replay without timing",
+            beside.display()
+        ))
+    })?;
+    // The reads may not add up to more than the capture holds: a count that does is a
+    // file written by someone else, and must not make the replay allocate it.
+    let capture = std::fs::metadata(path)
+        .with_context(|| format!("cannot read {}", path.display()))?
+        .len();
+    let mut covered = 0u64;
     let mut events: Vec<timing::Event> = Vec::new();
     for (number, line) in text.lines().enumerate() {
         let fault = match timing::parse(line) {
-            Ok(Some(event)) => match events.last() {
-                Some(before) if event.time() < before.time() => Some(format!(
+            Ok(Some(event)) => match (events.last(), event) {
+                (Some(before), _) if event.time() < before.time() => Some(format!(
                     "{} us comes before the line above it ({} us): the times must not go back",
                     event.time(),
                     before.time()
                 )),
-                _ => {
+                (_, timing::Event::Bytes { count, .. })
+                    if covered.saturating_add(count as u64) > capture =>
+                {
+                    Some(format!(
+                        "the reads come to more than the capture's {capture} bytes"
+                    ))
+                }
+                (_, event) => {
+                    if let timing::Event::Bytes { count, .. } = event {
+                        covered += count as u64;
+                    }
                     events.push(event);
                     None
                 }

@@ -721,6 +721,23 @@ fn a_timing_file_that_goes_back_or_falls_short_is_told() {
     assert_eq!(output.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(stderr.contains("capture.bin.timing:2:"), "{stderr}");
+    // Reads that come to more than the capture (a count of 2^64 - 1, of 4 GB): refused
+    // before anything is framed or allocated, and nothing is shown.
+    for count in ["18446744073709551615", "4294967296", "12"] {
+        std::fs::write(&timing, format!("9000 8\n9500 {count}\n")).unwrap();
+        let output = sniff();
+        assert_eq!(output.status.code(), Some(2), "{output:?}");
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert!(
+            stderr.starts_with("mbtool: ")
+                && stderr.contains("capture.bin.timing:2: the reads come to more"),
+            "{stderr}"
+        );
+        assert!(output.stdout.is_empty());
+    }
+    // Not text at all: a usage error too, with what to do.
+    std::fs::write(&timing, [0xFF, 0xFE, b'\n']).unwrap();
+    assert_eq!(sniff().status.code(), Some(2));
     // Covering only the request: the answer is framed without timing, and that is said.
     std::fs::write(&timing, "9000 8\n").unwrap();
     let output = sniff();
