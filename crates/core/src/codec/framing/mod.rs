@@ -832,6 +832,30 @@ mod tests {
     }
 
     #[test]
+    fn noise_before_a_frame_that_a_usb_tick_splits_is_noise_not_a_broken_frame() {
+        // Six bytes of noise, then a request whose last four bytes come a tick later: read
+        // as function 15, noise and the request's first four bytes make a broken frame
+        // that the gap seems to end; the request runs whole across that gap.
+        let stream = [
+            &[0x81, 0x0F, 0xD4, 0x5A, 0xE2, 0xCC][..],
+            &rtu(&[0x01, 0x03, 0x00, 0x00, 0x00, 0x02]),
+        ]
+        .concat();
+        let out = timed_frames(&[(&stream[..10], 10_000), (&stream[10..], 26_000)]);
+        assert_eq!(out, [(stream[6..].to_vec(), None)]);
+    }
+
+    #[test]
+    fn a_user_defined_frame_after_a_glitch_byte_across_a_usb_tick_is_whole() {
+        // A glitch byte and the first byte of a function 102 frame end a read: they begin a
+        // function 3 frame that the gap seems to cut short.
+        let user = rtu(&[0x03, 0x66, 0x58, 0x59, 0xD8, 0x32, 0x44, 0xE3, 0x25, 0x01]);
+        let stream = [&[0xD3][..], &user].concat();
+        let out = timed_frames(&[(&stream[..2], 10_192), (&stream[2..], 26_192)]);
+        assert_eq!(out, [(user, None)]);
+    }
+
+    #[test]
     fn a_device_that_pauses_inside_its_answer_has_it_taken_whole() {
         // The first byte after the pause comes alone: too soon to tell.
         let out = timed_frames(&[

@@ -248,7 +248,7 @@ impl Framer {
                 }
             }
         }
-        if more_could_come && !self.quiet && !self.ended {
+        if more_could_come && self.last_bytes_may_grow() {
             Tell::NotYet
         } else {
             Tell::No

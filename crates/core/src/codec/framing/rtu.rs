@@ -350,6 +350,11 @@ impl Framer {
             }
             crossing_may_come |= open && !found.pending.is_empty();
         }
+        // Nor when a frame without a known layout starts among them, runs across the
+        // silence and is followed well.
+        if self.overlapped(at, end) == Tell::Yes {
+            return Tell::No;
+        }
         match self.frame_starts(end) {
             Tell::Yes => Tell::Yes,
             Tell::NotYet => Tell::NotYet,
@@ -439,13 +444,19 @@ impl Framer {
             if !plausible {
                 continue;
             }
-            // What follows first: it is cheaper to tell than what lies inside.
+            // What follows first: it is cheaper to tell than what lies inside. Nor may a
+            // frame start inside it and run whole past its end: then the silence after it
+            // was an adapter's, and its bytes are noise and that frame's start.
             match self.followed_well(at + len, 0, false, None) {
                 Tell::Yes
                     if self.inner_frame_end(at, at + len).is_none()
                         && !self.holds_unknown_frame(at, at + len) =>
                 {
-                    return (Tell::Yes, Some((len, direction)))
+                    match self.overlapped(at, at + len) {
+                        Tell::No => return (Tell::Yes, Some((len, direction))),
+                        Tell::NotYet => return (Tell::NotYet, None),
+                        Tell::Yes => {}
+                    }
                 }
                 Tell::NotYet => return (Tell::NotYet, None),
                 _ => {}
