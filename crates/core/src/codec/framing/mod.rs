@@ -856,6 +856,22 @@ mod tests {
     }
 
     #[test]
+    fn a_long_answer_in_a_usb_adapters_reads_is_whole_from_its_first_two_bytes() {
+        // A capture that starts with an answer of 89 bytes (function 23), its first two
+        // bytes alone in the first read; each read seems to end at a silence.
+        let mut body = vec![0x11, 0x17, 84];
+        body.extend((0..84u8).map(|i| i.wrapping_mul(97).wrapping_add(13)));
+        let answer = rtu(&body);
+        let reads: Vec<(&[u8], u64)> = [0, 2, 22, 42, 62, 82]
+            .iter()
+            .zip([2, 22, 42, 62, 82, answer.len()])
+            .zip([10_000, 26_000, 42_000, 58_000, 74_000, 90_000])
+            .map(|((from, to), time)| (&answer[*from..to], time))
+            .collect();
+        assert_eq!(timed_frames(&reads), [(answer.clone(), None)]);
+    }
+
+    #[test]
     fn a_device_that_pauses_inside_its_answer_has_it_taken_whole() {
         // The first byte after the pause comes alone: too soon to tell.
         let out = timed_frames(&[

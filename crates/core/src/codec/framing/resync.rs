@@ -193,7 +193,7 @@ impl Framer {
                 Tell::No => {}
             }
         }
-        if reach > self.buffer.len() && !self.quiet && !self.ended {
+        if reach > self.buffer.len() && self.last_bytes_may_grow() {
             return Tell::NotYet;
         }
         Tell::No
@@ -208,15 +208,15 @@ impl Framer {
                 let next = self.candidates(at);
                 if !next.valid.is_empty() {
                     Tell::Yes
-                } else if !next.pending.is_empty() && !self.ended && !self.quiet {
+                } else if !next.pending.is_empty() && self.last_bytes_may_grow() {
                     Tell::NotYet
                 } else {
                     Tell::No
                 }
             }
             Some(_) => Tell::No,
-            None if self.ended || self.quiet => Tell::No,
-            None => Tell::NotYet,
+            None if self.last_bytes_may_grow() => Tell::NotYet,
+            None => Tell::No,
         }
     }
 
@@ -266,7 +266,7 @@ impl Framer {
         {
             return Tell::Yes;
         }
-        if reach > self.buffer.len() && !self.quiet && !self.ended {
+        if reach > self.buffer.len() && self.last_bytes_may_grow() {
             return Tell::NotYet;
         }
         Tell::No

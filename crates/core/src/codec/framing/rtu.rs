@@ -302,16 +302,21 @@ impl Framer {
             })
     }
 
-    /// Whether a whole frame starts at `at`: of known layout, CRC and PDU sound, or one
-    /// whose CRC holds.
+    /// Whether a whole frame starts at `at`, right after a silence: of known layout, CRC and
+    /// PDU sound, or one whose CRC holds and that what follows supports. A CRC alone passes
+    /// by chance too often to outweigh a frame that runs across the silence.
     fn frame_starts(&self, at: usize) -> Tell {
         if self.known_frame_len(at, self.buffer.len()).is_some() {
             return Tell::Yes;
         }
         let found = self.candidates(at);
-        if !found.valid.is_empty() {
-            Tell::Yes
-        } else if !self.quiet && !self.ended && !found.pending.is_empty() {
+        for candidate in &found.valid {
+            match self.supported(at, candidate, 0, true) {
+                Tell::No => {}
+                tell => return tell,
+            }
+        }
+        if self.last_bytes_may_grow() && !found.pending.is_empty() {
             Tell::NotYet
         } else {
             Tell::No
@@ -337,7 +342,7 @@ impl Framer {
         {
             return Tell::No;
         }
-        let open = !self.quiet && !self.ended;
+        let open = self.last_bytes_may_grow();
         let mut crossing_may_come = false;
         for inner in at + 1..end {
             let found = self.candidates(inner);
