@@ -872,6 +872,25 @@ mod tests {
     }
 
     #[test]
+    fn a_request_against_the_turn_then_a_cut_answer_is_supported_by_a_frame_further_on() {
+        // A request nobody answers; after a gap, another slave's request, its answer cut
+        // short, and a request again, in one read: the second request stands on the frame
+        // further on, as it would after noise.
+        let other = rtu(&[0x03, 0x0C]);
+        let cut = [
+            0x03, 0x0C, 0x25, 0x00, 0x00, 0x1A, 0x02, 0x2B, 0x0E, 0x03, 0x80,
+        ];
+        let read = [&other[..], &cut, &REQUEST].concat();
+        let out = timed_frames(&[(&REQUEST, 10_000), (&read, 40_000)]);
+        let valid: Vec<Vec<u8>> = out
+            .into_iter()
+            .filter(|(_, broken)| broken.is_none())
+            .map(|(bytes, _)| bytes)
+            .collect();
+        assert_eq!(valid, [REQUEST.to_vec(), other, REQUEST.to_vec()]);
+    }
+
+    #[test]
     fn a_device_that_pauses_inside_its_answer_has_it_taken_whole() {
         // The first byte after the pause comes alone: too soon to tell.
         let out = timed_frames(&[

@@ -94,12 +94,15 @@ impl Framer {
             return if self.ended { Tell::Yes } else { Tell::NotYet };
         }
         // A frame without a known layout must be followed right after it, or past a run of
-        // 00 or FF only in step; one of known layout may be followed past such a run, and,
-        // after noise, by a frame further on.
+        // 00 or FF only in step; one of known layout may be followed past such a run, and
+        // by a frame further on (past a cut answer, say): in step, if its PDU reads as
+        // strictly as one found after noise must.
         let past_runs = candidate.known_layout || in_step;
         let asked = self.asked_by(at, candidate);
+        let further_on =
+            candidate.known_layout && (!in_step || pdu_reads(frame, candidate.direction, true));
         match self.followed_well(end, depth, past_runs, asked) {
-            Tell::No if candidate.known_layout && !in_step => match self.overlapped(at, end) {
+            Tell::No if further_on => match self.overlapped(at, end) {
                 Tell::No => self.frame_further_on(end),
                 Tell::Yes => Tell::No,
                 Tell::NotYet => Tell::NotYet,
