@@ -891,6 +891,18 @@ mod tests {
     }
 
     #[test]
+    fn an_answer_ending_in_00_whose_request_was_lost_runs_to_the_silence() {
+        // After an answer the bus expects a request, and the 8 bytes before the 00 that
+        // ends this answer read as one; the silence falls after the 00.
+        let request = rtu(&[0x01, 0x03, 0x00, 0x00, 0x00, 0x02]);
+        let answer = rtu(&[0x01, 0x03, 0x04, 0x00, 0x01, 0x00, 0x02]);
+        let ends_in_00 = rtu(&[0x01, 0x03, 0x04, 0x00, 0x00, 0x05, 0x84]);
+        assert_eq!(ends_in_00.last(), Some(&0x00));
+        let out = timed_frames(&[(&request, 5_000), (&answer, 15_000), (&ends_in_00, 30_000)]);
+        assert_eq!(out, [(request, None), (answer, None), (ends_in_00, None)]);
+    }
+
+    #[test]
     fn a_device_that_pauses_inside_its_answer_has_it_taken_whole() {
         // The first byte after the pause comes alone: too soon to tell.
         let out = timed_frames(&[

@@ -197,6 +197,15 @@ impl Framer {
                         Tell::No => {}
                     }
                 }
+                // A frame ending in 00 leaves its prefix valid too: where the silence falls
+                // after the longer reading and not after the one on the turn, the longer
+                // one is the frame (an answer whose request was lost, say).
+                if let Some(longer) = several
+                    .iter()
+                    .find(|c| c.len > primary.len && self.silence_after(at + c.len - 1))
+                {
+                    return Ok(*longer);
+                }
             }
             return Ok(*primary);
         }
