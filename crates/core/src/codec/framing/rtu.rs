@@ -199,12 +199,20 @@ impl Framer {
                 }
                 // A frame ending in 00 leaves its prefix valid too: where the silence falls
                 // after the longer reading and not after the one on the turn, the longer
-                // one is the frame (an answer whose request was lost, say).
-                if let Some(longer) = several
+                // one is the frame (an answer whose request was lost, say); unless the one
+                // on the turn is answered past that 00, a turnaround glitch.
+                let longer = several
                     .iter()
-                    .find(|c| c.len > primary.len && self.silence_after(at + c.len - 1))
-                {
-                    return Ok(*longer);
+                    .find(|c| c.len > primary.len && self.silence_after(at + c.len - 1));
+                if let Some(longer) = longer {
+                    match self.asked_by(at, primary) {
+                        Some(asked) => match self.answer_further_on(at + primary.len, asked) {
+                            Tell::Yes => {}
+                            Tell::NotYet => return Err(()),
+                            Tell::No => return Ok(*longer),
+                        },
+                        None => return Ok(*longer),
+                    }
                 }
             }
             return Ok(*primary);
