@@ -745,20 +745,24 @@ mod tests {
     use mbtool_core::codec::Mode;
     use mbtool_core::sniff::session::{Filter, Session};
 
-    /// Sniff's JSON Lines for a stream of bytes without timing.
-    fn json_of(stream: &[u8]) -> Vec<serde_json::Value> {
+    /// What sniff writes in `format` for a stream of bytes without timing, with its summary.
+    fn sniffed(stream: &[u8], format: Format) -> String {
         let mut session = Session::new(Mode::Rtu, 1145.8, 4010, Filter::default());
         let mut records = Vec::new();
         session.push(stream, &mut records);
         session.finish(None, &mut records);
-        let mut writer = SniffWriter::new(Format::Json, false);
+        let mut writer = SniffWriter::new(format, false);
         let mut out = Vec::new();
         for record in &records {
             writer.record(&mut out, record).unwrap();
         }
         writer.summary(&mut out, session.counts(), None).unwrap();
-        String::from_utf8(out)
-            .unwrap()
+        String::from_utf8(out).unwrap()
+    }
+
+    /// Sniff's JSON Lines for a stream of bytes without timing.
+    fn json_of(stream: &[u8]) -> Vec<serde_json::Value> {
+        sniffed(stream, Format::Json)
             .lines()
             .map(|line| serde_json::from_str(line).unwrap())
             .collect()
@@ -848,19 +852,9 @@ mod tests {
         assert_eq!(lines[3]["noise_bytes"], 1);
     }
 
-    /// Sniff's table for a stream of bytes without timing, without its summary.
+    /// Sniff's table for a stream of bytes without timing, a line each.
     fn table_of(stream: &[u8]) -> Vec<String> {
-        let mut session = Session::new(Mode::Rtu, 1145.8, 4010, Filter::default());
-        let mut records = Vec::new();
-        session.push(stream, &mut records);
-        session.finish(None, &mut records);
-        let mut writer = SniffWriter::new(Format::Table, false);
-        let mut out = Vec::new();
-        for record in &records {
-            writer.record(&mut out, record).unwrap();
-        }
-        String::from_utf8(out)
-            .unwrap()
+        sniffed(stream, Format::Table)
             .lines()
             .map(String::from)
             .collect()
