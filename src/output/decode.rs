@@ -18,7 +18,8 @@ pub struct DecodeWriter {
     line: Vec<u8>,
 }
 
-const CSV_HEADER: &str = "mode,kind,slave,function,valid,address,ref,count,values,exception,error";
+const CSV_HEADER: &str =
+    "mode,kind,slave,function,valid,address,ref,count,max_count,values,exception,error";
 
 impl DecodeWriter {
     pub fn new(style: Style) -> Self {
@@ -84,7 +85,7 @@ impl DecodeWriter {
         let values = f.values.as_ref().map(|v| self.value_strings(v).join(" "));
         writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{}",
             report.mode,
             report.kind.name(),
             report.slave,
@@ -93,6 +94,7 @@ impl DecodeWriter {
             opt(f.address.map(|a| a.to_string())),
             opt(f.reference.clone()),
             opt(f.count.map(|c| c.to_string())),
+            opt(f.max_count.map(|c| c.to_string())),
             csv_field(&opt(values)),
             opt(f.exception.map(|e| e.to_string())),
             csv_field(&opt(report.error.clone())),

@@ -316,9 +316,18 @@ fn values_and_csv_outputs() {
     let mut lines = run.stdout.lines();
     assert_eq!(
         lines.next(),
-        Some("mode,kind,slave,function,valid,address,ref,count,values,exception,error")
+        Some("mode,kind,slave,function,valid,address,ref,count,max_count,values,exception,error")
     );
-    assert_eq!(lines.next(), Some("rtu,response,17,3,true,,,3,555 0 100,,"));
+    assert_eq!(
+        lines.next(),
+        Some("rtu,response,17,3,true,,,3,,555 0 100,,")
+    );
+    // A bit answer alone: the count is not known, the most its bytes can hold is.
+    let run = decode(&["-o", "csv", &rtu(&[0x11, 0x02, 0x01, 0xFF])], b"");
+    assert_eq!(
+        run.stdout.lines().nth(1),
+        Some("rtu,response,17,2,true,,,,8,1,,")
+    );
 }
 
 #[test]
