@@ -49,7 +49,7 @@ pub enum Values {
 }
 
 impl Values {
-    fn bits(bits: &[bool]) -> Values {
+    pub(crate) fn bits(bits: &[bool]) -> Values {
         Values::Bits(bits.iter().map(|b| u8::from(*b)).collect())
     }
 

@@ -431,13 +431,10 @@ pub(super) fn locate(report: &mut FrameReport, request: &Request, pdu: &[u8]) {
     report.fields.address = Some(address);
     report.fields.reference = Some(reference(table, address));
     report.fields.count = Some(quantity);
-    if let Some(Values::Bits(bits)) = &mut report.fields.values {
+    if let Some(values @ Values::Bits(_)) = &mut report.fields.values {
         // Function, byte count, then the bits packed.
         let packed = pdu.get(2..).unwrap_or_default();
-        *bits = unpack(packed, usize::from(quantity))
-            .into_iter()
-            .map(u8::from)
-            .collect();
+        *values = Values::bits(&unpack(packed, usize::from(quantity)));
         report.fields.max_count = None;
     }
 }

@@ -342,9 +342,10 @@ impl Framer {
 
     /// Whether the bytes from `at`, which make no frame, were ended by the silence before
     /// `end`. Not when their layout's length ends right there (a CRC error, told as such),
-    /// nor when a frame of known layout starts among them and runs whole across the
-    /// silence (the gap was an adapter's, not the line's). Not yet while their length, or
-    /// such a frame, may still come, unless a whole frame starts right after the silence.
+    /// nor when a frame starts among them and runs whole across the silence, of known
+    /// layout or followed well (the gap was an adapter's, not the line's). Not yet while
+    /// their length, or such a frame, may still come, unless a whole frame starts right
+    /// after the silence.
     fn ended_by_silence(&self, at: usize, end: usize, may_complete: bool) -> Tell {
         let data = &self.buffer[at..end];
         // The answer awaited is read as an answer only.
@@ -363,19 +364,16 @@ impl Framer {
         let mut crossing_may_come = false;
         for inner in at + 1..end {
             let found = self.candidates(inner);
-            if found
-                .valid
-                .iter()
-                .any(|c| c.known_layout && inner + c.len > end)
-            {
-                return Tell::No;
+            for crossing in found.valid.iter().filter(|c| inner + c.len > end) {
+                let followed = || {
+                    let asked = self.asked_by(inner, crossing);
+                    self.followed_well(inner + crossing.len, 0, false, asked)
+                };
+                if crossing.known_layout || followed() == Tell::Yes {
+                    return Tell::No;
+                }
             }
             crossing_may_come |= open && !found.pending.is_empty();
-        }
-        // Nor when a frame without a known layout starts among them, runs across the
-        // silence and is followed well.
-        if self.overlapped(at, end) == Tell::Yes {
-            return Tell::No;
         }
         match self.frame_starts(end) {
             Tell::Yes => Tell::Yes,
