@@ -15,11 +15,15 @@ pub struct JsonObject<'a> {
 
 impl<'a> JsonObject<'a> {
     pub fn open(line: &'a mut Vec<u8>) -> Self {
+        // Room for a whole line of a frame, so that the fields do not grow it one by one.
+        line.reserve(512);
         line.push(b'{');
         Self { line, empty: true }
     }
 
-    /// `key` must need no escaping: the keys are mbtool's own.
+    /// `key` must need no escaping: the keys are mbtool's own. Inlined, so that a key
+    /// given as a literal is copied as a constant, not through a call to `memcpy`.
+    #[inline(always)]
     fn key(&mut self, key: &str) {
         if !self.empty {
             self.line.push(b',');
@@ -30,6 +34,7 @@ impl<'a> JsonObject<'a> {
         self.line.extend_from_slice(b"\":");
     }
 
+    #[inline(always)]
     pub fn field(&mut self, key: &str, value: &(impl Serialize + ?Sized)) -> io::Result<()> {
         self.key(key);
         Ok(serde_json::to_writer(&mut *self.line, value)?)
@@ -42,11 +47,14 @@ impl<'a> JsonObject<'a> {
         }
     }
 
-    /// Spaced hex (`push_spaced_hex`), which needs no escaping.
-    pub fn hex(&mut self, key: &str, hex: &str) {
+    /// A string that needs no escaping, written as it is: mbtool's own names (a function's,
+    /// a kind's) and spaced hex (`push_spaced_hex`).
+    #[inline(always)]
+    pub fn plain(&mut self, key: &str, text: &str) {
+        debug_assert!(!text.bytes().any(|b| b == b'"' || b == b'\\' || b < 0x20));
         self.key(key);
         self.line.push(b'"');
-        self.line.extend_from_slice(hex.as_bytes());
+        self.line.extend_from_slice(text.as_bytes());
         self.line.push(b'"');
     }
 
@@ -97,7 +105,7 @@ mod tests {
                 o.field("d", &[1, 2])?;
                 o.flatten(&empty)?;
                 o.field_if("e", None::<&u8>)?;
-                o.hex("f", "01 02");
+                o.plain("f", "01 02");
                 o.field("g", "a\nb")
             }),
             r#"{"b":2,"c":"x\"y","d":[1,2],"f":"01 02","g":"a\nb"}"#

@@ -92,13 +92,13 @@ pub struct SniffWriter {
 fn frame_json(line: &mut Vec<u8>, frame: &FrameRecord, hex: &str) -> io::Result<()> {
     let report = &frame.report;
     let mut object = JsonObject::open(line);
-    object.field("type", "frame")?;
+    object.plain("type", "frame");
     object.field("number", &frame.number)?;
     object.field("time", &seconds(frame.at))?;
     object.field_if("gap", frame.gap.map(seconds).as_ref())?;
     object.field("offset", &frame.found.offset)?;
     // Always hex, whatever the mode: a JSON reader gets the bytes as they were.
-    object.hex("bytes", hex);
+    object.plain("bytes", hex);
     report_fields(&mut object, report)?;
     if frame.paired {
         object.field("paired", &true)?;
@@ -112,13 +112,13 @@ fn frame_json(line: &mut Vec<u8>, frame: &FrameRecord, hex: &str) -> io::Result<
 
 /// The fields of a `FrameReport`, as its `Serialize` gives them.
 fn report_fields(object: &mut JsonObject, report: &FrameReport) -> io::Result<()> {
-    object.field("mode", report.mode)?;
-    object.field("kind", &report.kind)?;
+    object.plain("mode", report.mode);
+    object.plain("kind", report.kind.name());
     object.field("slave", &report.slave)?;
     object.field("function", &report.function)?;
     object.field("valid", &report.valid)?;
     object.field_if("transaction", report.transaction.as_ref())?;
-    object.field("function_name", report.function_name)?;
+    object.plain("function_name", report.function_name);
     object.flatten(&report.fields)?;
     object.field_if("error", report.error.as_ref())?;
     if report.ambiguous {
@@ -299,11 +299,11 @@ impl SniffWriter {
                 self.text.clear();
                 push_spaced_hex(&mut self.text, kept);
                 let mut object = JsonObject::open(&mut self.line);
-                object.field("type", "noise")?;
+                object.plain("type", "noise");
                 object.field("time", &seconds(*at))?;
                 object.field("offset", offset)?;
                 object.field("count", len)?;
-                object.hex("bytes", &self.text);
+                object.plain("bytes", &self.text);
                 object.close();
                 self.line.push(b'\n');
                 out.write_all(&self.line)
