@@ -127,7 +127,7 @@ fn writes(
         Request::MaskWriteRegister { and_mask, .. } => {
             bit_reference(table, address, (!and_mask).trailing_zeros() as u8)
         }
-        _ => reference(table, address),
+        _ => reference(table, address).into(),
     };
     if written.mask_write_emulated {
         super::shared::note_mask_write_emulated(plan.slave, &reference);

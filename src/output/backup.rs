@@ -13,7 +13,7 @@ pub fn range_text(table: Table, address: u16, count: u32) -> String {
         Ok(last) if last != address => {
             format!("{}-{}", reference(table, address), reference(table, last))
         }
-        _ => reference(table, address),
+        _ => reference(table, address).into(),
     }
 }
 

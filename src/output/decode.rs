@@ -92,7 +92,7 @@ impl DecodeWriter {
             report.function,
             report.valid,
             opt(f.address.map(|a| a.to_string())),
-            opt(f.reference.clone()),
+            opt(f.reference.map(String::from)),
             opt(f.count.map(|c| c.to_string())),
             opt(f.max_count.map(|c| c.to_string())),
             csv_field(&opt(values)),
@@ -211,7 +211,7 @@ impl DecodeWriter {
                 Some((start, table)) => {
                     let address = u32::from(start) + offset as u32;
                     match u16::try_from(address) {
-                        Ok(address) => vec![reference(table, address), address.to_string()],
+                        Ok(address) => vec![reference(table, address).into(), address.to_string()],
                         Err(_) => vec![String::new(), address.to_string()],
                     }
                 }

@@ -120,7 +120,7 @@ impl ReadWriter {
     /// The rows of one run of addresses read.
     fn part_rows<'a>(&self, result: &'a ReadResult) -> Vec<Row<'a>> {
         let start = u32::from(result.address);
-        let ref_of = |address: u32| reference(result.table, address as u16);
+        let ref_of = |address: u32| String::from(reference(result.table, address as u16));
         let shown = |address: u32| address + self.style.address_base.first();
         match &result.data {
             // Text is one value, whatever the number of registers that hold it.
@@ -187,7 +187,7 @@ impl ReadWriter {
         for (address, table) in range.missing.iter().zip(std::iter::repeat(table).flatten()) {
             rows.push(Row {
                 address: self.style.address_base.number(*address),
-                reference: reference(table, *address),
+                reference: reference(table, *address).into(),
                 registers: &[],
                 value: None,
             });
@@ -476,7 +476,7 @@ mod tests {
             slave: 17,
             function: 6,
             address: 1,
-            reference: reference(Table::HoldingRegisters, 1),
+            reference: reference(Table::HoldingRegisters, 1).into(),
             count: 1,
             broadcast: false,
         };

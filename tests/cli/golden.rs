@@ -130,7 +130,7 @@ fn read_holding_108_to_110_is_555_0_100() {
     assert_eq!(report.kind, Kind::Response);
     assert_eq!(
         report.fields.values,
-        Some(Values::Registers(vec![555, 0, 100]))
+        Some(Values::Registers(vec![555, 0, 100].into()))
     );
 }
 

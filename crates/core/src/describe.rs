@@ -2,6 +2,7 @@
 //! (table, JSON, values, CSV) renders. Building it is logic; rendering lives in `output`.
 
 use serde::Serialize;
+use smallvec::{smallvec, SmallVec};
 
 use crate::codec::adu::hex_digit;
 use crate::codec::checksum::{crc16, lrc};
@@ -12,7 +13,7 @@ use crate::codec::{
     bits, Checksum, Direction, Envelope, Exception, FrameError, Mode, Pdu, Reading, Request,
     Response,
 };
-use crate::model::address::{reference, Table};
+use crate::model::address::{reference, Reference, Table};
 use crate::model::values::escape_text;
 
 /// Which kind of PDU a frame carries.
@@ -38,14 +39,15 @@ impl Kind {
     }
 }
 
-/// Register values as numbers, bits as 0/1.
+/// Register values as numbers, bits as 0/1. Inline up to a few words, as most frames
+/// carry: no allocation per frame a sniffer describes.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 #[serde(untagged)]
 pub enum Values {
     /// 16-bit register values, first address first.
-    Registers(Vec<u16>),
+    Registers(SmallVec<[u16; 8]>),
     /// Coil or input states, 0 or 1, first address first.
-    Bits(Vec<u8>),
+    Bits(SmallVec<[u8; 16]>),
 }
 
 impl Values {
@@ -87,7 +89,7 @@ pub struct Fields {
     /// The Modicon reference of `address` (holding register 107 is "400108"), where the
     /// function names a table.
     #[serde(rename = "ref", skip_serializing_if = "Option::is_none")]
-    pub reference: Option<String>,
+    pub reference: Option<Reference>,
     /// How many coils or registers are asked, written or carried; unknown (absent) for a
     /// bit answer whose request was not seen.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -218,7 +220,7 @@ pub fn push_spaced_hex(out: &mut String, bytes: &[u8]) {
     }
 }
 
-fn with_reference(function: u8, address: u16) -> (Option<u16>, Option<String>) {
+fn with_reference(function: u8, address: u16) -> (Option<u16>, Option<Reference>) {
     let reference = Table::of_function(function).map(|table| reference(table, address));
     (Some(address), reference)
 }
@@ -240,7 +242,7 @@ fn request_fields(request: &Request) -> Fields {
         }
         Request::WriteSingleRegister { address, value } => {
             (f.address, f.reference) = with_reference(function, *address);
-            f.values = Some(Values::Registers(vec![*value]));
+            f.values = Some(Values::Registers(smallvec![*value]));
         }
         Request::WriteMultipleCoils { address, values } => {
             (f.address, f.reference) = with_reference(function, *address);
@@ -250,7 +252,7 @@ fn request_fields(request: &Request) -> Fields {
         Request::WriteMultipleRegisters { address, values } => {
             (f.address, f.reference) = with_reference(function, *address);
             f.count = u16::try_from(values.len()).ok();
-            f.values = Some(Values::Registers(values.clone()));
+            f.values = Some(Values::Registers(SmallVec::from_slice(values)));
         }
         Request::ReadExceptionStatus | Request::ReportServerId => {}
         Request::Diagnostics { sub_function, data } => {
@@ -276,7 +278,7 @@ fn request_fields(request: &Request) -> Fields {
             f.read_count = Some(*read_quantity);
             (f.address, f.reference) = with_reference(function, *write_address);
             f.count = u16::try_from(values.len()).ok();
-            f.values = Some(Values::Registers(values.clone()));
+            f.values = Some(Values::Registers(SmallVec::from_slice(values)));
         }
         Request::ReadDeviceIdentification {
             read_code,
@@ -322,7 +324,7 @@ fn response_fields(response: &Response) -> Fields {
         | Response::ReadInputRegisters { values }
         | Response::ReadWriteMultipleRegisters { values } => {
             f.count = u16::try_from(values.len()).ok();
-            f.values = Some(Values::Registers(values.clone()));
+            f.values = Some(Values::Registers(SmallVec::from_slice(values)));
         }
         Response::WriteSingleCoil { address, value } => {
             (f.address, f.reference) = with_reference(function, *address);
@@ -330,7 +332,7 @@ fn response_fields(response: &Response) -> Fields {
         }
         Response::WriteSingleRegister { address, value } => {
             (f.address, f.reference) = with_reference(function, *address);
-            f.values = Some(Values::Registers(vec![*value]));
+            f.values = Some(Values::Registers(smallvec![*value]));
         }
         Response::ReadExceptionStatus { status } => f.status = Some(*status),
         Response::Diagnostics { sub_function, data } => {
@@ -617,7 +619,7 @@ mod tests {
         assert_eq!(answer.kind, Kind::Response);
         assert_eq!(
             answer.fields.values,
-            Some(Values::Registers(vec![555, 0, 100]))
+            Some(Values::Registers(vec![555, 0, 100].into()))
         );
         let exception = describe_frame(&[0x0A, 0x81, 0x02, 0xB0, 0x53], Some(Mode::Rtu), None);
         assert_eq!(exception.kind, Kind::Exception);

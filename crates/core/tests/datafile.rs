@@ -124,7 +124,7 @@ proptest! {
         match parse("twice.txt", &text) {
             Err(DataFileError::Line { line, error: EntryError::Repeated { reference: named, .. }, .. }) => {
                 prop_assert_eq!(line, lines);
-                prop_assert_eq!(named, reference(entry.table, address));
+                prop_assert_eq!(named, String::from(reference(entry.table, address)));
             }
             other => prop_assert!(false, "{text:?} gave {other:?}"),
         }

@@ -120,16 +120,65 @@ pub fn bit_reference(table: Table, address: u16, bit: u8) -> String {
 }
 
 /// The 6-digit Modicon reference of a protocol address: holding register 107 is `400108`.
-pub fn reference(table: Table, address: u16) -> String {
+pub fn reference(table: Table, address: u16) -> Reference {
     // Written digit by digit: a sniffer names a reference for nearly every frame, and the
     // formatting machinery costs more than the rest of the description.
     let number = u32::from(address) + 1;
-    let mut text = String::with_capacity(6);
-    text.push(char::from(b'0' + table.digit()));
-    for power in [10_000, 1_000, 100, 10, 1] {
-        text.push(char::from(b'0' + (number / power % 10) as u8));
+    let mut digits = [b'0' + table.digit(); 6];
+    for (digit, power) in digits[1..].iter_mut().zip([10_000, 1_000, 100, 10, 1]) {
+        *digit = b'0' + (number / power % 10) as u8;
     }
-    text
+    Reference(digits)
+}
+
+/// A Modicon reference, such as `400108`: always six ASCII digits, kept inline, since a
+/// sniffer makes one for nearly every frame.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+pub struct Reference([u8; 6]);
+
+impl Reference {
+    /// The six digits.
+    pub fn as_str(&self) -> &str {
+        // Only `reference` makes one, of ASCII digits.
+        std::str::from_utf8(&self.0).unwrap_or_default()
+    }
+}
+
+impl std::ops::Deref for Reference {
+    type Target = str;
+    fn deref(&self) -> &str {
+        self.as_str()
+    }
+}
+
+impl fmt::Display for Reference {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.pad(self.as_str())
+    }
+}
+
+impl fmt::Debug for Reference {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Debug::fmt(self.as_str(), f)
+    }
+}
+
+impl PartialEq<&str> for Reference {
+    fn eq(&self, other: &&str) -> bool {
+        self.as_str() == *other
+    }
+}
+
+impl From<Reference> for String {
+    fn from(reference: Reference) -> String {
+        reference.as_str().to_string()
+    }
+}
+
+impl serde::Serialize for Reference {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.serialize_str(self.as_str())
+    }
 }
 
 /// Where a bare address number counts from: 0 as the protocol does (`107` is the 108th

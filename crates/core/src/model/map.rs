@@ -79,7 +79,7 @@ impl Point {
     pub fn reference(&self) -> String {
         match self.bit {
             Some(bit) => bit_reference(self.table, self.address, bit),
-            None => reference(self.table, self.address),
+            None => reference(self.table, self.address).into(),
         }
     }
 
@@ -480,7 +480,7 @@ pub fn range_points(
     let point = |address: u16, bit: Option<u8>, kind: Kind| Point {
         name: match bit {
             Some(bit) => bit_reference(table, address, bit),
-            None => reference(table, address),
+            None => reference(table, address).into(),
         },
         table,
         address,

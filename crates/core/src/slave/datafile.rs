@@ -149,7 +149,7 @@ impl Claims {
         };
         if let Some((address, line)) = clash {
             return Err(EntryError::Repeated {
-                reference: reference(table, u16::try_from(address).unwrap_or(u16::MAX)),
+                reference: reference(table, u16::try_from(address).unwrap_or(u16::MAX)).into(),
                 line,
             });
         }
@@ -252,7 +252,7 @@ fn fill<T: Copy>(
 
 fn check_end(table: Table, start: u32, count: usize) -> Result<(), EntryError> {
     if start as usize + count > 65536 {
-        return Err(EntryError::PastEnd(reference(table, 65535)));
+        return Err(EntryError::PastEnd(reference(table, 65535).into()));
     }
     Ok(())
 }
