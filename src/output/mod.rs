@@ -158,11 +158,11 @@ pub fn write_values(out: &mut String, values: &Values, most: usize) {
 
 /// Value `i` of `values`, written into `out`.
 pub fn write_value(out: &mut String, values: &Values, i: usize) {
-    use std::fmt::Write as _;
-    let _ = match values {
-        Values::Registers(v) => write!(out, "{}", v[i]),
-        Values::Bits(v) => write!(out, "{}", v[i]),
-    };
+    let mut digits = itoa::Buffer::new();
+    out.push_str(match values {
+        Values::Registers(v) => digits.format(v[i]),
+        Values::Bits(v) => digits.format(v[i]),
+    });
 }
 
 /// What a PDU's fields say in a few words, for the one-line views of `sniff` and `serve`:
