@@ -468,7 +468,10 @@ fn replay(
     save: &mut Option<Save>,
 ) -> Result<u64> {
     let mut records = Vec::new();
-    let mut chunk = vec![0u8; 1 << 16];
+    // A few kilobytes at a time, so that few records are alive at once: the frames of a
+    // 64 kB read, written only after all of them were found, made the allocator give its
+    // memory back and take it again, a page fault a page, for every read.
+    let mut chunk = vec![0u8; 1 << 12];
     let mut read = 0;
     loop {
         let n = match input.read(&mut chunk) {

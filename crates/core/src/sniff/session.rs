@@ -13,12 +13,10 @@ use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
 use crate::describe::{describe_frame, describe_reading, FrameReport, Kind, Values};
 use crate::model::address::{reference, Table};
 
-/// What a session reports, in order.
 /// What a session found in the bytes, in the order it happened.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Record {
-    /// Boxed: a frame record is large beside the other records.
-    /// A frame, valid or broken.
+    /// A frame, valid or broken. Boxed: a frame record is large beside the other records.
     Frame(Box<FrameRecord>),
     /// A run of bytes that belong to no frame.
     Noise {
