@@ -15,9 +15,12 @@ use crate::model::address::{reference, Table};
 
 /// What a session found in the bytes, in the order it happened.
 #[derive(Clone, Debug, PartialEq)]
+// A frame record is large beside the others, but not boxed: the records of a push are
+// written and dropped together, and a box cost an allocation a frame.
+#[allow(clippy::large_enum_variant)]
 pub enum Record {
-    /// A frame, valid or broken. Boxed: a frame record is large beside the other records.
-    Frame(Box<FrameRecord>),
+    /// A frame, valid or broken.
+    Frame(FrameRecord),
     /// A run of bytes that belong to no frame.
     Noise {
         /// The first bytes of the run (`codec::framing::NOISE_KEPT`).
@@ -349,7 +352,7 @@ impl Session {
         };
         self.numbered += 1;
         if let Some((report, paired)) = shown {
-            out.push(Record::Frame(Box::new(FrameRecord {
+            out.push(Record::Frame(FrameRecord {
                 number: self.numbered,
                 at: self.at(found.start, found.offset),
                 found,
@@ -357,7 +360,7 @@ impl Session {
                 gap,
                 paired,
                 tcp: None,
-            })));
+            }));
         }
     }
 

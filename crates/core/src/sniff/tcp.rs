@@ -411,7 +411,7 @@ impl TcpSession {
         self.counts.frame(&report);
         self.numbered += 1;
         if self.filter.shows(report.slave, report.function) {
-            out.push(Record::Frame(Box::new(FrameRecord {
+            out.push(Record::Frame(FrameRecord {
                 number: self.numbered,
                 at: self.at(Some(time)),
                 paired: place.request_packet.is_some(),
@@ -419,7 +419,7 @@ impl TcpSession {
                 report,
                 gap: None,
                 tcp: Some(place),
-            })));
+            }));
         }
     }
 
