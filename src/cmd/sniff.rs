@@ -40,18 +40,20 @@ struct Sinks {
 
 impl Sinks {
     fn write(&mut self, records: &mut Vec<Record>) -> io::Result<()> {
-        for record in records.drain(..) {
+        // Written where they lie, then dropped together: a frame record is large to move.
+        for record in records.iter() {
             if let Some(stats) = self.stats.as_mut() {
-                stats.record(&record);
+                stats.record(record);
             }
-            if let (Some(pcap), Record::Frame(frame)) = (self.pcap.as_mut(), &record) {
+            if let (Some(pcap), Record::Frame(frame)) = (self.pcap.as_mut(), record) {
                 pcap.frame(
                     self.epoch_us + frame.at,
                     &pcap::rtu_form(self.mode, &frame.found.bytes),
                 )?;
             }
-            self.writer.record(&mut self.out, &record)?;
+            self.writer.record(&mut self.out, record)?;
         }
+        records.clear();
         if self.live {
             self.out.flush()?;
         }

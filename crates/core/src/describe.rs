@@ -195,9 +195,10 @@ pub struct FrameReport {
     /// `alternative` the response.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub ambiguous: bool,
-    /// The response reading of an ambiguous frame.
+    /// The response reading of an ambiguous frame. Boxed: it is rare, and a report is
+    /// moved several times on its way to the printer.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub alternative: Option<Alternative>,
+    pub alternative: Option<Box<Alternative>>,
 }
 
 /// Formats bytes as spaced upper-case hex, the way mbtool prints every frame.
@@ -493,10 +494,10 @@ pub fn describe_reading(mode: Mode, envelope: &Envelope, reading: Reading) -> Fr
             report.kind = Kind::Request;
             report.fields = request_fields(&request);
             report.ambiguous = true;
-            report.alternative = Some(Alternative {
+            report.alternative = Some(Box::new(Alternative {
                 kind: Kind::Response,
                 fields: response_fields(&response),
-            });
+            }));
         }
         Reading::Neither {
             as_request,
