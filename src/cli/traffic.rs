@@ -23,7 +23,10 @@ counted. A line that starts with # is a comment. Frames glued together on one li
 split as sniff splits them.
 
 The framing (RTU, ASCII, TCP) is detected unless --mode says; request or response is \
-inferred from the bytes, and a frame that reads both ways says so (--direction settles it).
+inferred from the bytes, and a frame that reads both ways says so (--direction settles it). \
+An answer right after the request it answers is read with that request: its addresses, and \
+as many coils or inputs as were asked; alone, a bit answer shows only the bits sure to be \
+values (the last byte may end in padding) and max_count.
 
 Exit status 4 when any frame fails its checksum or is malformed; 2 when a line is not hex \
 (which outranks 4).";

@@ -9,8 +9,8 @@ use mbtool::lines::{Line, Lines};
 use mbtool::output::{self, decode::DecodeWriter};
 use mbtool::settings::Settings;
 use mbtool_core::codec::framing::split_glued;
-use mbtool_core::codec::{limits, Direction, Mode};
-use mbtool_core::describe::{describe_frame, FrameReport};
+use mbtool_core::codec::{limits, Direction, Mode, Request};
+use mbtool_core::describe::{describe_frame, pair_answer, request_made, FrameReport};
 use mbtool_core::model::hexinput::{read_line, HexError};
 
 /// Longer lines cannot be a frame: even spaced hex of the longest ASCII frame is shorter.
@@ -26,6 +26,9 @@ struct Decoder {
     unreadable: u64,
     /// Lines of a log that were its own messages, not frames.
     messages: u64,
+    /// The request of the frame just shown, with its slave: the frame after it may be its
+    /// answer, and then reads with the request's addresses and quantity.
+    asked: Option<(u8, Request)>,
 }
 
 impl Decoder {
@@ -69,18 +72,22 @@ impl Decoder {
                 // for what they are (the answer glued to its request, say).
                 for (i, bytes) in frames.iter().enumerate() {
                     let direction = if i == 0 { direction } else { self.direction };
-                    self.show(bytes, &describe_frame(bytes, Some(mode), direction))?;
+                    self.show(bytes, describe_frame(bytes, Some(mode), direction))?;
                 }
                 return Ok(());
             }
         }
-        self.show(&frame.bytes, &report)
+        self.show(&frame.bytes, report)
     }
 
-    fn show(&mut self, bytes: &[u8], report: &FrameReport) -> io::Result<()> {
+    fn show(&mut self, bytes: &[u8], mut report: FrameReport) -> io::Result<()> {
         self.frames += 1;
         self.failed += u64::from(!report.valid);
-        self.writer.write(&mut self.out, bytes, report)
+        if let Some(asked) = self.asked.take() {
+            pair_answer(&mut report, bytes, &asked);
+        }
+        self.asked = request_made(bytes, &report);
+        self.writer.write(&mut self.out, bytes, &report)
     }
 
     fn too_long(&mut self, place: String) {
@@ -101,6 +108,7 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
         failed: 0,
         unreadable: 0,
         messages: 0,
+        asked: None,
     };
     if args.frames.is_empty() {
         let stdin = io::stdin();

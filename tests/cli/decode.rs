@@ -249,6 +249,53 @@ fn a_frame_that_reads_both_ways_says_so_and_direction_settles_it() {
 }
 
 #[test]
+fn an_answer_after_its_request_reads_with_the_request_addresses_and_quantity() {
+    // 10 coils from 0x0013; the answer's last byte holds 2 values and 6 padding bits, set
+    // here so that a padding bit taken for a coil would show.
+    let request = rtu(&[0x11, 0x01, 0x00, 0x13, 0x00, 0x0A]);
+    let answer = rtu(&[0x11, 0x01, 0x02, 0xCD, 0xFD]);
+    let holding = rtu(&[0x11, 0x03, 0x00, 0x6B, 0x00, 0x02]);
+    let registers = rtu(&[0x11, 0x03, 0x04, 0x02, 0x2B, 0x00, 0x64]);
+    let other_slave = rtu(&[0x12, 0x01, 0x00, 0x13, 0x00, 0x0A]);
+    let lines = [
+        &request,
+        &answer,
+        &answer,
+        &holding,
+        &registers,
+        &other_slave,
+        &answer,
+    ]
+    .map(|frame| format!("{frame}\n"))
+    .concat();
+    let run = decode(&["--json"], lines.as_bytes());
+    let json = json_lines(&run.stdout);
+    let coils = [1, 0, 1, 1, 0, 0, 1, 1, 1, 0];
+    assert_eq!(json[1]["count"], 10, "{}", run.stdout);
+    assert_eq!(json[1]["ref"], "000020");
+    assert_eq!(json[1]["values"], serde_json::json!(coils));
+    assert!(json[1].get("max_count").is_none());
+    // The same answer again has no request before it: only the bits sure to be values.
+    assert_eq!(json[2]["max_count"], 16);
+    assert_eq!(json[2]["values"].as_array().unwrap().len(), 9);
+    assert_eq!(json[4]["ref"], "400108");
+    assert_eq!(json[4]["values"], serde_json::json!([555, 100]));
+    // A request to another slave is not what slave 17 answers.
+    assert_eq!(json[6]["max_count"], 16);
+
+    // Glued on one line, as a log may write a request and its answer.
+    let glued = format!("{request}{answer}").replace(' ', "");
+    let run = decode(&["--json", &glued], b"");
+    let json = json_lines(&run.stdout);
+    assert_eq!(
+        json[1]["values"],
+        serde_json::json!(coils),
+        "{}",
+        run.stdout
+    );
+}
+
+#[test]
 fn device_strings_are_escaped_never_raw() {
     // Report server id whose text holds ESC [2J (clear screen) and a newline.
     let frame = rtu(&[0x11, 0x11, 0x07, b'P', b'L', b'C', 0x1B, b'[', b'2', b'\n']);

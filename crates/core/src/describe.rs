@@ -201,6 +201,74 @@ pub struct FrameReport {
     pub alternative: Option<Box<Alternative>>,
 }
 
+/// Gives a read answer (`pdu`, as on the wire) the addresses of the request it answers,
+/// and the bits of a bit answer to the quantity asked.
+pub fn locate_answer(report: &mut FrameReport, request: &Request, pdu: &[u8]) {
+    let (address, quantity) = match request {
+        Request::ReadCoils { address, quantity }
+        | Request::ReadDiscreteInputs { address, quantity }
+        | Request::ReadHoldingRegisters { address, quantity }
+        | Request::ReadInputRegisters { address, quantity } => (*address, *quantity),
+        Request::ReadWriteMultipleRegisters {
+            read_address,
+            read_quantity,
+            ..
+        } => (*read_address, *read_quantity),
+        _ => return,
+    };
+    let table = Table::of_function(request.function()).unwrap_or(Table::HoldingRegisters);
+    report.fields.address = Some(address);
+    report.fields.reference = Some(reference(table, address));
+    report.fields.count = Some(quantity);
+    if let Some(values @ Values::Bits(_)) = &mut report.fields.values {
+        // Function, byte count, then the bits packed.
+        let packed = pdu.get(2..).unwrap_or_default();
+        *values = Values::bits(&bits::unpack(packed, usize::from(quantity)));
+        report.fields.max_count = None;
+    }
+}
+
+/// The request a frame described as `report` makes, with its slave: what a frame after it
+/// may answer. `None` for anything else, or a frame that is not valid.
+pub fn request_made(bytes: &[u8], report: &FrameReport) -> Option<(u8, Request)> {
+    if !report.valid || report.kind != Kind::Request {
+        return None;
+    }
+    let envelope = Envelope::open(mode_named(report.mode)?, bytes).ok()?;
+    let request = Request::decode(&envelope.pdu).ok()?;
+    Some((envelope.slave, request))
+}
+
+/// Describes the answer `bytes` (described as `report`) as the answer to `asked`, the
+/// request and slave of the frame before it, where it fits that request: a read answer
+/// gets the request's addresses, and a bit answer the quantity asked. Returns whether it
+/// answers.
+pub fn pair_answer(report: &mut FrameReport, bytes: &[u8], asked: &(u8, Request)) -> bool {
+    let (slave, request) = asked;
+    if !report.valid || report.kind == Kind::Request || report.slave != *slave {
+        return false;
+    }
+    let Some(envelope) = mode_named(report.mode).and_then(|m| Envelope::open(m, bytes).ok()) else {
+        return false;
+    };
+    let Ok(pdu) = Pdu::decode(&envelope.pdu, Direction::Response) else {
+        return false;
+    };
+    if crate::codec::answer::check(request, &pdu).is_err() {
+        return false;
+    }
+    if matches!(pdu, Pdu::Response(_)) {
+        locate_answer(report, request, &envelope.pdu);
+    }
+    true
+}
+
+fn mode_named(name: &str) -> Option<Mode> {
+    [Mode::Rtu, Mode::Ascii, Mode::Tcp]
+        .into_iter()
+        .find(|mode| mode.name() == name)
+}
+
 /// Formats bytes as spaced upper-case hex, the way mbtool prints every frame.
 pub fn spaced_hex(bytes: &[u8]) -> String {
     let mut out = String::with_capacity(bytes.len() * 3);

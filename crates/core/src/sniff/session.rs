@@ -7,11 +7,9 @@ use std::net::SocketAddr;
 use serde::Serialize;
 
 use super::pairing::{Pairer, Role, Unanswered};
-use crate::codec::bits::unpack;
 use crate::codec::framing::{Broken, Event, Found, Framer, Noise, NoiseBytes};
 use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
-use crate::describe::{describe_frame, describe_reading, FrameReport, Kind, Values};
-use crate::model::address::{reference, Table};
+use crate::describe::{describe_frame, describe_reading, locate_answer, FrameReport, Kind};
 
 /// What a session found in the bytes, in the order it happened.
 #[derive(Clone, Debug, PartialEq)]
@@ -401,7 +399,7 @@ impl Session {
                 let answer_to_read = matches!(pdu, Pdu::Response(_));
                 let mut report = describe(Reading::One(pdu));
                 if let (Some(request), true) = (&to, answer_to_read) {
-                    locate(&mut report, request, &envelope.pdu);
+                    locate_answer(&mut report, request, &envelope.pdu);
                 }
                 (report, to.is_some())
             }
@@ -410,32 +408,5 @@ impl Session {
             }
             Role::Malformed(reading) => (describe(reading), false),
         })
-    }
-}
-
-/// Gives a read answer (`pdu`, as on the wire) the addresses of the request it answers,
-/// and the bits of a bit answer to the quantity asked.
-pub(super) fn locate(report: &mut FrameReport, request: &Request, pdu: &[u8]) {
-    let (address, quantity) = match request {
-        Request::ReadCoils { address, quantity }
-        | Request::ReadDiscreteInputs { address, quantity }
-        | Request::ReadHoldingRegisters { address, quantity }
-        | Request::ReadInputRegisters { address, quantity } => (*address, *quantity),
-        Request::ReadWriteMultipleRegisters {
-            read_address,
-            read_quantity,
-            ..
-        } => (*read_address, *read_quantity),
-        _ => return,
-    };
-    let table = Table::of_function(request.function()).unwrap_or(Table::HoldingRegisters);
-    report.fields.address = Some(address);
-    report.fields.reference = Some(reference(table, address));
-    report.fields.count = Some(quantity);
-    if let Some(values @ Values::Bits(_)) = &mut report.fields.values {
-        // Function, byte count, then the bits packed.
-        let packed = pdu.get(2..).unwrap_or_default();
-        *values = Values::bits(&unpack(packed, usize::from(quantity)));
-        report.fields.max_count = None;
     }
 }

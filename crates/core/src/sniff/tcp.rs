@@ -10,11 +10,11 @@ use serde::Serialize;
 
 use super::capture::{segment, Packet};
 use super::reassembly::{At, Piece, Stream};
-use super::session::{locate, Counts, Filter, FrameRecord, Record, TcpPlace};
+use super::session::{Counts, Filter, FrameRecord, Record, TcpPlace};
 use crate::codec::answer::check;
 use crate::codec::framing::{Broken, Event, Found, Framer};
 use crate::codec::{Direction, Envelope, Mode, Pdu, Reading, Request};
-use crate::describe::{describe_frame, describe_reading, Kind};
+use crate::describe::{describe_frame, describe_reading, locate_answer, Kind};
 
 /// The port Modbus TCP servers listen on, unless told otherwise.
 pub const MODBUS_PORT: u16 = 502;
@@ -377,7 +377,7 @@ impl TcpSession {
                         let answer_to_read = matches!(pdu, Pdu::Response(_));
                         let mut report = describe_reading(self.mode, &envelope, Reading::One(pdu));
                         if let (Some(request), true) = (&request, answer_to_read) {
-                            locate(&mut report, request, &envelope.pdu);
+                            locate_answer(&mut report, request, &envelope.pdu);
                         }
                         report
                     }
