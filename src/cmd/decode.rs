@@ -9,8 +9,8 @@ use mbtool::lines::{Line, Lines};
 use mbtool::output::{self, decode::DecodeWriter};
 use mbtool::settings::Settings;
 use mbtool_core::codec::framing::split_glued;
-use mbtool_core::codec::{limits, Direction, Mode, Request};
-use mbtool_core::describe::{describe_frame, pair_answer, request_made, FrameReport};
+use mbtool_core::codec::{limits, Direction, Mode};
+use mbtool_core::describe::{describe_frame, pair_answer, request_made, Asked, FrameReport};
 use mbtool_core::model::hexinput::{read_line, HexError};
 
 /// Longer lines cannot be a frame: even spaced hex of the longest ASCII frame is shorter.
@@ -26,9 +26,9 @@ struct Decoder {
     unreadable: u64,
     /// Lines of a log that were its own messages, not frames.
     messages: u64,
-    /// The request of the frame just shown, with its slave: the frame after it may be its
-    /// answer, and then reads with the request's addresses and quantity.
-    asked: Option<(u8, Request)>,
+    /// The request of the frame just shown: the frame after it may be its answer, and then
+    /// reads with the request's addresses and quantity.
+    asked: Option<Asked>,
 }
 
 impl Decoder {

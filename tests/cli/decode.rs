@@ -293,6 +293,30 @@ fn an_answer_after_its_request_reads_with_the_request_addresses_and_quantity() {
         "{}",
         run.stdout
     );
+    // On TCP the transaction must match too.
+    let mbap = |transaction: u8, pdu: &[u8]| {
+        let mut frame = vec![0, transaction, 0, 0, 0, pdu.len() as u8 + 1, 0x11];
+        frame.extend_from_slice(pdu);
+        hex::encode_upper(frame)
+    };
+    let request = mbap(1, &[0x01, 0x00, 0x13, 0x00, 0x0A]);
+    let lines = [
+        request.clone(),
+        mbap(2, &[0x01, 0x02, 0xCD, 0xFD]),
+        request,
+        mbap(1, &[0x01, 0x02, 0xCD, 0xFD]),
+    ]
+    .map(|frame| format!("{frame}\n"))
+    .concat();
+    let run = decode(&["--json", "--mode", "tcp"], lines.as_bytes());
+    let json = json_lines(&run.stdout);
+    assert_eq!(json[1]["max_count"], 16, "{}", run.stdout);
+    assert_eq!(
+        json[3]["values"],
+        serde_json::json!(coils),
+        "{}",
+        run.stdout
+    );
 }
 
 #[test]

@@ -228,29 +228,45 @@ pub fn locate_answer(report: &mut FrameReport, request: &Request, pdu: &[u8]) {
     }
 }
 
-/// The request a frame described as `report` makes, with its slave: what a frame after it
-/// may answer. `None` for anything else, or a frame that is not valid.
-pub fn request_made(bytes: &[u8], report: &FrameReport) -> Option<(u8, Request)> {
+/// A request, and who it asked: what the frame after it may answer.
+#[derive(Clone, Debug)]
+pub struct Asked {
+    slave: u8,
+    /// The MBAP transaction identifier; 0 on serial lines.
+    transaction: u16,
+    request: Request,
+}
+
+/// The request a frame described as `report` makes. `None` for anything else, or a frame
+/// that is not valid.
+pub fn request_made(bytes: &[u8], report: &FrameReport) -> Option<Asked> {
     if !report.valid || report.kind != Kind::Request {
         return None;
     }
     let envelope = Envelope::open(mode_named(report.mode)?, bytes).ok()?;
     let request = Request::decode(&envelope.pdu).ok()?;
-    Some((envelope.slave, request))
+    Some(Asked {
+        slave: envelope.slave,
+        transaction: envelope.transaction,
+        request,
+    })
 }
 
 /// Describes the answer `bytes` (described as `report`) as the answer to `asked`, the
-/// request and slave of the frame before it, where it fits that request: a read answer
-/// gets the request's addresses, and a bit answer the quantity asked. Returns whether it
-/// answers.
-pub fn pair_answer(report: &mut FrameReport, bytes: &[u8], asked: &(u8, Request)) -> bool {
-    let (slave, request) = asked;
-    if !report.valid || report.kind == Kind::Request || report.slave != *slave {
+/// request of the frame before it, where it fits that request (same slave, and on TCP the
+/// same transaction): a read answer gets the request's addresses, and a bit answer the
+/// quantity asked. Returns whether it answers.
+pub fn pair_answer(report: &mut FrameReport, bytes: &[u8], asked: &Asked) -> bool {
+    let request = &asked.request;
+    if !report.valid || report.kind == Kind::Request || report.slave != asked.slave {
         return false;
     }
     let Some(envelope) = mode_named(report.mode).and_then(|m| Envelope::open(m, bytes).ok()) else {
         return false;
     };
+    if envelope.transaction != asked.transaction {
+        return false;
+    }
     let Ok(pdu) = Pdu::decode(&envelope.pdu, Direction::Response) else {
         return false;
     };
