@@ -62,9 +62,10 @@ the bytes after the silence come, because a USB adapter hands bytes over when it
 timer runs out (16 ms by default), so a frame can arrive in two reads a whole period apart \
 that were back to back on the wire, and a slow device may pause inside its frames: such a \
 frame, whose CRC holds across the gap (of a known layout, or the answer awaited where no \
-frame starts after the gap), is taken whole, and from then on the gaps of that line are not \
-taken for silence (a frame cut short is kept until the bytes show it is none, as without \
-timing). Until then, bytes a gap cuts short, and the frame before them, wait for the bytes \
+frame starts after the gap), is taken whole, and from then on, if that line's bytes come \
+in bursts (several a read, as an adapter gathers them), its gaps are not taken for silence \
+(a frame cut short is kept until the bytes show it is none, as without timing). Read a \
+byte at a time, a line's gaps are its own, and stay believed. Until then, bytes a gap cuts short, and the frame before them, wait for the bytes \
 after the gap. A long run of noise is counted, and only its first 64 bytes \
 kept. When bytes arrive in bursts the gaps between frames are not real: mbtool says so once. \
 The fix is the adapter's latency timer: \

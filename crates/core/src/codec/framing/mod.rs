@@ -25,11 +25,13 @@
 //! this is decided when the bytes after the silence come, so that a frame whose rest comes
 //! after a gap is still taken whole, and a frame followed by such bytes waits for them too.
 //! A frame that did (its CRC holding across the gap: one of known layout, or the answer
-//! awaited when no frame starts right after the gap) shows that the gaps lie: a USB
-//! adapter hands bytes over when its latency timer runs out, so a frame straddling a tick
-//! arrives in two reads a whole period apart, and a device may pause inside its frames.
-//! From then on the times are not taken for silence (nor is the quiet they told), and a
-//! frame cut short is kept until bytes show it is no frame, as without timing.
+//! awaited when no frame starts right after the gap) shows that the gaps lie, where the
+//! bytes come in bursts: a USB adapter hands bytes over when its latency timer runs out, so
+//! a frame straddling a tick arrives in two reads a whole period apart. From then on the
+//! times are not taken for silence (nor is the quiet they told), and a frame cut short is
+//! kept until bytes show it is no frame, as without timing. Bytes read one at a time come
+//! through no such adapter: a frame across a gap there is a device pausing inside it (or a
+//! CRC passing by chance), and the line's silences stay believed.
 //!
 //! ASCII: ':' starts a frame and CR LF ends it; up to a second may pass between characters.
 //! TCP: the MBAP length alone frames, however the bytes were segmented.
@@ -161,6 +163,12 @@ pub struct Framer {
     /// this line do not tell its silences (a USB adapter's latency timer, a device that
     /// pauses inside frames).
     gaps_lie: bool,
+    /// A read brought several bytes at once: the line may be behind an adapter that
+    /// gathers what arrives until its latency timer runs out, whose reads make gaps that
+    /// are no silence. Read a byte at a time (a UART, a capture timed byte by byte), a
+    /// line's gaps are its own: a frame found whole across one is a device pausing inside
+    /// it, or chance, and the times are still believed.
+    bursts: bool,
     /// Silence ends a frame cut short: a sniffer's rule (see [`Framer::end_cut_frames`]).
     ends_cut_frames: bool,
     /// Position in the stream of `buffer[0]`.
@@ -199,6 +207,7 @@ impl Framer {
             times: Vec::new(),
             crc_verdicts: CrcVerdicts::default(),
             gaps_lie: false,
+            bursts: false,
             ends_cut_frames: false,
             offset: 0,
             in_step: true,
@@ -236,6 +245,7 @@ impl Framer {
         let Some(last) = bytes.len().checked_sub(1) else {
             return;
         };
+        self.bursts |= last > 0;
         let first_time = time.saturating_sub((last as f64 * self.char_us) as u64);
         self.settle_before(first_time, out);
         self.times.resize(self.buffer.len(), UNTIMED);
@@ -447,10 +457,12 @@ impl Framer {
                     };
                     if broken.is_none() {
                         self.turn(&found);
-                        // Whole across a silence: the times do not tell this line's
-                        // silences (the times are kept all the same, to be shown).
+                        // Whole across a silence, on a line read in bursts: the times
+                        // do not tell this line's silences (they are kept all the same,
+                        // to be shown).
                         if self.ends_cut_frames
                             && self.mode == Mode::Rtu
+                            && self.bursts
                             && self.silence_inside(at, at + len)
                         {
                             self.gaps_lie = true;
@@ -782,6 +794,47 @@ mod tests {
         framer.push_at(&REQUEST[..5], 48_000, &mut out);
         framer.push_at(&REQUEST[5..], 64_000, &mut out);
         assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes[..] == REQUEST[..]));
+    }
+
+    #[test]
+    fn read_a_byte_at_a_time_a_frame_across_a_gap_leaves_the_silences_believed() {
+        // A device pauses 3 ms inside its answer; later, a frame of function 72 followed by
+        // silence and a frame cut short. Each byte is read alone, one character apart, so
+        // no adapter gathered them: the gaps after the pause still end what they cut.
+        let user = rtu(&[0x85, 0x48, 0xA3, 0x7F, 0x4F, 0x50, 0x82, 0x7F, 0xD2, 0x0F]);
+        let cut = [0x85, 0x48, 0xDB];
+        let next = rtu(&[0x6F, 0x03, 0xAB, 0xAA, 0x00, 0x27]);
+        let mut reads = Vec::new();
+        let mut time = 0;
+        let mut line = |bytes: &[u8], pause_after: Option<usize>| {
+            for (i, byte) in bytes.iter().enumerate() {
+                time += 573;
+                reads.push((vec![*byte], time));
+                if pause_after == Some(i) {
+                    time += 3_000;
+                }
+            }
+            time += 3_000;
+        };
+        line(&REQUEST, None);
+        line(&ANSWER, Some(6));
+        line(&user, None);
+        line(&cut, None);
+        line(&next, None);
+        let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
+        let valid: Vec<Vec<u8>> = timed_frames(&pieces)
+            .into_iter()
+            .filter(|(_, broken)| broken.is_none())
+            .map(|(bytes, _)| bytes)
+            .collect();
+        assert_eq!(valid, [REQUEST.to_vec(), ANSWER.to_vec(), user, next]);
+        // The same bytes in reads of several (an adapter's bursts) make the gaps lie.
+        let mut framer = framer(Mode::Rtu);
+        framer.end_cut_frames();
+        let mut out = Vec::new();
+        framer.push_at(&ANSWER[..4], 16_000, &mut out);
+        framer.push_at(&ANSWER[4..], 32_000, &mut out);
+        assert!(framer.gaps_lie);
     }
 
     #[test]
