@@ -10,6 +10,7 @@ use super::{csv_field, new_table, Style};
 use mbtool_core::codec::{Checksum, ExceptionCode, Mode};
 use mbtool_core::describe::{spaced_hex, Fields, FrameReport, Values};
 use mbtool_core::model::address::{reference, Table};
+use mbtool_core::model::values::{ByteOrder, ValueType};
 
 pub struct DecodeWriter {
     style: Style,
@@ -41,6 +42,7 @@ impl DecodeWriter {
             Format::Json => {
                 self.line.clear();
                 serde_json::to_writer(&mut self.line, report)?;
+                self.typed_json(report)?;
                 self.line.push(b'\n');
                 out.write_all(&self.line)
             }
@@ -48,6 +50,27 @@ impl DecodeWriter {
             Format::Csv => self.write_csv(out, report),
             Format::Table => self.write_table(out, shown, report),
         }
+    }
+
+    /// With `--type` or `--order`, register values also as that type, after the registers
+    /// as they are: `"value_type":"f32","typed_values":[3.14]`.
+    fn typed_json(&mut self, report: &FrameReport) -> io::Result<()> {
+        let default =
+            self.style.value_type == ValueType::U16 && self.style.order == ByteOrder::Abcd;
+        let Some(Values::Registers(registers)) = &report.fields.values else {
+            return Ok(());
+        };
+        if default || self.line.last() != Some(&b'}') {
+            return Ok(());
+        }
+        self.line.pop();
+        self.line.extend_from_slice(b",\"value_type\":");
+        serde_json::to_writer(&mut self.line, self.style.value_type.name())?;
+        self.line.extend_from_slice(b",\"typed_values\":");
+        let typed = self.style.value_type.read_all(registers, self.style.order);
+        serde_json::to_writer(&mut self.line, &typed)?;
+        self.line.push(b'}');
+        Ok(())
     }
 
     fn typed(&self, registers: &[u16]) -> Vec<String> {

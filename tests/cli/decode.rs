@@ -320,6 +320,32 @@ fn an_answer_after_its_request_reads_with_the_request_addresses_and_quantity() {
 }
 
 #[test]
+fn json_gives_register_values_as_the_type_asked_beside_the_registers() {
+    let answer = rtu(&[0x01, 0x03, 0x04, 0x40, 0x49, 0x0F, 0xDB]);
+    let run = decode(&["--json", "-t", "f32", &answer], b"");
+    let json = &json_lines(&run.stdout)[0];
+    assert_eq!(json["values"], serde_json::json!([16457, 4059]));
+    assert_eq!(json["value_type"], "f32");
+    assert_eq!(json["typed_values"].to_string(), "[3.1415927]");
+    let run = decode(
+        &["--json", "-t", "i16", &rtu(&[0x01, 0x03, 0x02, 0xFF, 0xFF])],
+        b"",
+    );
+    assert_eq!(
+        json_lines(&run.stdout)[0]["typed_values"],
+        serde_json::json!([-1])
+    );
+    let run = decode(&["--json", "--order", "CDAB", "-t", "u32", &answer], b"");
+    assert_eq!(
+        json_lines(&run.stdout)[0]["typed_values"],
+        serde_json::json!([0x0FDB_4049_u32])
+    );
+    // Without a type, the registers alone.
+    let run = decode(&["--json", &answer], b"");
+    assert!(json_lines(&run.stdout)[0].get("typed_values").is_none());
+}
+
+#[test]
 fn device_strings_are_escaped_never_raw() {
     // Report server id whose text holds ESC [2J (clear screen) and a newline.
     let frame = rtu(&[0x11, 0x11, 0x07, b'P', b'L', b'C', 0x1B, b'[', b'2', b'\n']);
