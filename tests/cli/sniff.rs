@@ -225,6 +225,8 @@ fn the_worked_frames_glued_together_come_out_paired() {
     // Without timing, a frame's time is where it stands at the line's speed (19200 8E1,
     // 11 bits a character): the 03 request starts 34 bytes in, at 19.479 ms.
     assert_eq!(frames[4]["time"].as_f64(), Some(0.019479));
+    // To the nearest microsecond: the 02 request, 26 bytes in, starts at 14,895.83 us.
+    assert_eq!(frames[3]["time"].as_f64(), Some(0.014896));
     assert!(
         frames[4].get("gap").is_none(),
         "no gap is made up without timing"

@@ -297,7 +297,7 @@ impl Session {
 
     /// The time of bytes at `offset`: as they arrived, or at the line's speed.
     fn at(&self, time: Option<u64>, offset: u64) -> u64 {
-        time.unwrap_or((offset as f64 * self.char_us) as u64)
+        time.unwrap_or((offset as f64 * self.char_us).round() as u64)
     }
 
     fn unanswered(&mut self, unanswered: Unanswered, out: &mut Vec<Record>) {
