@@ -395,11 +395,9 @@ impl SniffWriter {
             out,
             "{},{},{},{},{},{},{},{}",
             frame.number,
-            frame
-                .found
-                .start
-                .map(|t| format!("{:.6}", seconds(t)))
-                .unwrap_or_default(),
+            // As JSON gives it: when the frame came, or without timing where it stands at
+            // the line's speed.
+            format_args!("{:.6}", seconds(frame.at)),
             frame
                 .gap
                 .map(|t| format!("{:.6}", seconds(t)))

@@ -297,6 +297,21 @@ fn a_hundred_thousand_pairs_with_noise_lose_and_invent_nothing() {
 }
 
 #[test]
+fn csv_gives_the_time_json_gives_without_timing_too() {
+    let glued: Vec<u8> = WORKED.concat();
+    let output = mbtool()
+        .args(["sniff", "-o", "csv", "--input", "-"])
+        .write_stdin(glued)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    let rows: Vec<Vec<&str>> = stdout.lines().map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows[0][..3], ["number", "time", "gap"]);
+    // The 03 request, 34 bytes in at 19200 8E1: at 19.479 ms, no gap made up.
+    assert_eq!(rows[5][..3], ["5", "0.019479", ""], "{stdout}");
+}
+
+#[test]
 fn an_ascii_capture_with_noise_and_a_cut_frame() {
     let capture = b"\x00:1103006B00037E\r\n\xFE:110306022B0000006455\r\n:1103006B:1103006B00037E\r\n:110306022B0000006455\r\n";
     let output = mbtool()
