@@ -674,6 +674,36 @@ mod tests {
     }
 
     #[test]
+    fn a_corrupt_answer_before_a_frame_without_a_known_layout_is_a_crc_error() {
+        // The answer awaited, its CRC broken, then function 65 asked and answered: the
+        // conversation vouches for the answer's place, though what follows it needs
+        // support of its own. Four bytes that read as a request in step, before the same
+        // frames, are still noise: nothing vouches for them.
+        let mut bad = ANSWER;
+        bad[10] ^= 0xFF;
+        let user_request = rtu(&[0x09, 0x41, 0x01, 0x02, 0x03]);
+        let user_answer = rtu(&[0x09, 0x41, 0x04, 0x05]);
+        let broken = |stream: &[u8]| -> Vec<Vec<u8>> {
+            events(Mode::Rtu, stream)
+                .into_iter()
+                .filter_map(|event| match event {
+                    Event::Frame(f) if f.broken.is_some() => Some(f.bytes.to_vec()),
+                    _ => None,
+                })
+                .collect()
+        };
+        let stream = [&REQUEST[..], &bad, &user_request, &user_answer].concat();
+        assert_eq!(broken(&stream), [bad.to_vec()]);
+        assert_eq!(
+            frames(&stream),
+            [REQUEST.to_vec(), user_request.clone(), user_answer.clone()]
+        );
+        let noise = [0xAA, 0x0B, 0xE7, 0x20];
+        let stream = [&REQUEST[..], &ANSWER, &noise, &user_request, &user_answer].concat();
+        assert_eq!(broken(&stream), Vec::<Vec<u8>>::new());
+    }
+
+    #[test]
     fn an_unknown_function_before_a_request_does_not_swallow_it() {
         // 01 41: a byte whose next byte is a user-defined function.
         let mut stream = vec![0x01, 0x41];

@@ -466,8 +466,12 @@ impl Framer {
             }
             // What follows first: it is cheaper to tell than what lies inside. Nor may a
             // frame start inside it and run whole past its end: then the silence after it
-            // was an adapter's, and its bytes are noise and that frame's start.
-            match self.followed_well(at + len, 0, false, None) {
+            // was an adapter's, and its bytes are noise and that frame's start. The answer
+            // awaited may be followed by a frame that needs support of its own (a function
+            // without a known layout): the conversation vouches for the answer's place. A
+            // request in step has no such voucher, and a few bytes of noise read as one.
+            let depth = u8::from(direction == Direction::Response);
+            match self.followed_well(at + len, depth, false, None) {
                 Tell::Yes
                     if self.inner_frame_end(at, at + len).is_none()
                         && !self.holds_unknown_frame(at, at + len) =>
