@@ -203,12 +203,19 @@ struct Seconds(u64);
 
 impl ColumnText for Seconds {
     fn push_to(self, text: &mut String) {
+        use std::fmt::Write as _;
+        let _ = write!(text, "{self}");
+    }
+}
+
+impl std::fmt::Display for Seconds {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let mut digits = itoa::Buffer::new();
-        text.push_str(digits.format(self.0 / 1_000_000));
-        text.push('.');
+        f.write_str(digits.format(self.0 / 1_000_000))?;
+        f.write_str(".")?;
         let fraction = digits.format(self.0 % 1_000_000);
-        text.push_str(&"00000"[..6 - fraction.len()]);
-        text.push_str(fraction);
+        f.write_str(&"00000"[..6 - fraction.len()])?;
+        f.write_str(fraction)
     }
 }
 
@@ -397,10 +404,10 @@ impl SniffWriter {
             frame.number,
             // As JSON gives it: when the frame came, or without timing where it stands at
             // the line's speed.
-            format_args!("{:.6}", seconds(frame.at)),
+            Seconds(frame.at),
             frame
                 .gap
-                .map(|t| format!("{:.6}", seconds(t)))
+                .map(|t| Seconds(t).to_string())
                 .unwrap_or_default(),
             r.slave,
             r.function,
