@@ -255,28 +255,27 @@ pub fn request_made(bytes: &[u8], report: &FrameReport) -> Option<Asked> {
 /// Describes the answer `bytes` (described as `report`) as the answer to `asked`, the
 /// request of the frame before it, where it fits that request (same slave, and on TCP the
 /// same transaction): a read answer gets the request's addresses, and a bit answer the
-/// quantity asked. Returns whether it answers.
-pub fn pair_answer(report: &mut FrameReport, bytes: &[u8], asked: &Asked) -> bool {
+/// quantity asked.
+pub fn pair_answer(report: &mut FrameReport, bytes: &[u8], asked: &Asked) {
     let request = &asked.request;
     if !report.valid || report.kind == Kind::Request || report.slave != asked.slave {
-        return false;
+        return;
     }
     let Some(envelope) = mode_named(report.mode).and_then(|m| Envelope::open(m, bytes).ok()) else {
-        return false;
+        return;
     };
     if envelope.transaction != asked.transaction {
-        return false;
+        return;
     }
     let Ok(pdu) = Pdu::decode(&envelope.pdu, Direction::Response) else {
-        return false;
+        return;
     };
     if crate::codec::answer::check(request, &pdu).is_err() {
-        return false;
+        return;
     }
     if matches!(pdu, Pdu::Response(_)) {
         locate_answer(report, request, &envelope.pdu);
     }
-    true
 }
 
 fn mode_named(name: &str) -> Option<Mode> {
