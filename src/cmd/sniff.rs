@@ -4,7 +4,8 @@ use std::fs::File;
 use std::io::{self, BufRead, BufWriter, Read, Write};
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
+use std::sync::{mpsc, Arc};
+use std::thread;
 use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 
 use anyhow::{Context, Result};
@@ -143,17 +144,18 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
     let mut records = Vec::new();
     let end = match (&args.input, input.as_mut()) {
         (Some(path), Some(input)) => {
-            match replay_timing(path)? {
+            let timing = replay_timing(path)?;
+            write_alongside(&mut sinks, |found| match &timing {
                 // The capture ended at its last read or idle, not at its last frame.
                 Some(events) => {
-                    replay_timed(input, &events, &mut session, &mut sinks, &mut save)?;
-                    events.iter().map(timing::Event::time).max()
+                    replay_timed(input, events, &mut session, found, &mut save)?;
+                    Ok(events.iter().map(timing::Event::time).max())
                 }
                 None => {
-                    replay(input, &mut session, &mut sinks, &mut save)?;
-                    None
+                    replay(input, &mut session, found, &mut save)?;
+                    Ok(None)
                 }
-            }
+            })?
         }
         _ => Some(live(
             settings,
@@ -462,14 +464,86 @@ fn replay_timing(path: &Path) -> Result<Option<Vec<timing::Event>>> {
     Ok(Some(events))
 }
 
+/// How many batches of records may wait to be written while the next are framed.
+const BATCHES_IN_FLIGHT: usize = 2;
+
+/// How many records make a batch worth handing over: a timed replay frames a read at a
+/// time, often a byte, and a hand-over per frame would cost more than the frame.
+const BATCH: usize = 256;
+
+/// The records a replay finds, handed over in batches to be written on another thread.
+struct Batches {
+    records: Vec<Record>,
+    to_write: mpsc::SyncSender<Vec<Record>>,
+    written: mpsc::Receiver<Vec<Record>>,
+}
+
+impl Batches {
+    /// Hands the records found so far over, once they make a batch (`at_least`).
+    fn hand_over(&mut self, at_least: usize) -> io::Result<()> {
+        if self.records.is_empty() || self.records.len() < at_least {
+            return Ok(());
+        }
+        let empty = self.written.try_recv().unwrap_or_default();
+        self.to_write
+            .send(std::mem::replace(&mut self.records, empty))
+            .map_err(|_| io::Error::other("the output stopped"))
+    }
+
+    /// Hands a batch over when there are enough records for one.
+    fn found(&mut self) -> io::Result<()> {
+        self.hand_over(BATCH)
+    }
+}
+
+/// Runs a replay on a thread of its own while its records are written on this one: a
+/// capture is framed and written at the pace of the slower of the two, not of both added
+/// up. Written batches come back to be filled again, so that their memory is taken once.
+/// When the output fails (a closed pipe), the replay stops at its next batch and the
+/// output's error is the one told.
+fn write_alongside<T: Send>(
+    sinks: &mut Sinks,
+    replay: impl FnOnce(&mut Batches) -> Result<T> + Send,
+) -> Result<T> {
+    let (to_write, batches) = mpsc::sync_channel(BATCHES_IN_FLIGHT);
+    let (give_back, written) = mpsc::channel();
+    thread::scope(|scope| {
+        let replaying = scope.spawn(move || {
+            let mut found = Batches {
+                records: Vec::new(),
+                to_write,
+                written,
+            };
+            let replayed = replay(&mut found);
+            // What came before an error in the capture is shown all the same.
+            found.hand_over(1)?;
+            replayed
+        });
+        let mut written = Ok(());
+        for mut batch in &batches {
+            written = sinks.write(&mut batch);
+            if written.is_err() {
+                break;
+            }
+            // The replay may have ended and gone: then the batch is not needed.
+            let _ = give_back.send(batch);
+        }
+        drop(batches);
+        let replayed = replaying
+            .join()
+            .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+        written?;
+        replayed
+    })
+}
+
 /// A capture without timing: framed by content alone. Returns how many bytes it read.
 fn replay(
     input: &mut dyn Read,
     session: &mut Session,
-    sinks: &mut Sinks,
+    found: &mut Batches,
     save: &mut Option<Save>,
 ) -> Result<u64> {
-    let mut records = Vec::new();
     // A few kilobytes at a time, so that few records are alive at once: the frames of a
     // 64 kB read, written only after all of them were found, made the allocator give its
     // memory back and take it again, a page fault a page, for every read.
@@ -486,8 +560,8 @@ fn replay(
             save.bytes(&chunk[..n], None)?;
         }
         read += n as u64;
-        session.push(&chunk[..n], &mut records);
-        sinks.write(&mut records)?;
+        session.push(&chunk[..n], &mut found.records);
+        found.found()?;
     }
 }
 
@@ -497,10 +571,9 @@ fn replay_timed(
     input: &mut dyn Read,
     events: &[timing::Event],
     session: &mut Session,
-    sinks: &mut Sinks,
+    found: &mut Batches,
     save: &mut Option<Save>,
 ) -> Result<()> {
-    let mut records = Vec::new();
     let mut chunk = Vec::new();
     for event in events {
         match *event {
@@ -514,16 +587,16 @@ fn replay_timed(
                 if let Some(save) = save.as_mut() {
                     save.bytes(&chunk, None)?;
                 }
-                session.push_at(&chunk, time, &mut records);
+                session.push_at(&chunk, time, &mut found.records);
             }
             timing::Event::Idle { time } => {
-                session.idle(time, &mut records);
+                session.idle(time, &mut found.records);
             }
         }
-        sinks.write(&mut records)?;
+        found.found()?;
     }
     // Bytes the timing does not cover (a capture appended to later) come untimed.
-    let untimed = replay(input, session, sinks, save)?;
+    let untimed = replay(input, session, found, save)?;
     if untimed > 0 {
         mbtool::note!(
             "mbtool: the .timing file covers the capture's first {} bytes; the last {untimed} are framed without timing",

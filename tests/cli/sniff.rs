@@ -731,6 +731,42 @@ fn two_hundred_mebibytes_of_00_take_under_50_mb() {
 }
 
 #[test]
+fn a_replay_whose_reader_goes_away_ends_at_once_quietly_with_status_0() {
+    // Like `mbtool sniff --input big.bin --json | head -1`: frames are still being found
+    // when the pipe closes, and the replay stops there rather than framing the rest.
+    let dir = tempfile::tempdir().unwrap();
+    let capture = dir.path().join("capture.bin");
+    let recording = std::fs::read(captures().join("wizmodbus.bin")).unwrap();
+    std::fs::write(&capture, recording.repeat(20_000)).unwrap();
+    let started = Instant::now();
+    let mut child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+        .args([
+            "sniff", "-b", "9600", "--parity", "none", "--json", "--input",
+        ])
+        .arg(&capture)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = String::new();
+    std::io::BufRead::read_line(
+        &mut std::io::BufReader::new(child.stdout.take().unwrap()),
+        &mut first,
+    )
+    .unwrap();
+    assert!(first.contains("\"function\":3"), "{first}");
+    let output = child.wait_with_output().unwrap();
+    assert_eq!(output.status.code(), Some(0));
+    assert_eq!(String::from_utf8_lossy(&output.stderr), "");
+    // The whole capture (1.76 million frames) takes seconds to frame.
+    assert!(
+        started.elapsed() < Duration::from_secs(1),
+        "{:?}",
+        started.elapsed()
+    );
+}
+
+#[test]
 fn a_timed_replay_says_how_long_the_last_request_waited_in_vain() {
     // A request read at 10 ms, and the line quiet until 60 ms, where the capture ends.
     let dir = tempfile::tempdir().unwrap();
