@@ -249,6 +249,48 @@ fn a_frame_that_reads_both_ways_says_so_and_direction_settles_it() {
 }
 
 #[test]
+fn functions_kept_byte_for_byte_read_only_the_way_their_length_allows() {
+    // The manual's worked frames for functions 11, 12 and 24, each kept as bytes: a Get
+    // Comm Event Counter request is its function code alone, its answer four bytes more.
+    for (body, kind) in [
+        (&[0x11, 0x0B][..], "request"),
+        (&[0x11, 0x0B, 0xFF, 0xFF, 0x01, 0x08][..], "response"),
+        (&[0x11, 0x0C][..], "request"),
+        (
+            &[
+                0x11, 0x0C, 0x08, 0x00, 0x00, 0x01, 0x08, 0x01, 0x21, 0x01, 0x20,
+            ][..],
+            "response",
+        ),
+        (&[0x11, 0x18, 0x04, 0xDE][..], "request"),
+        (
+            &[0x11, 0x18, 0x00, 0x06, 0x00, 0x02, 0x01, 0xB8, 0x12, 0x84][..],
+            "response",
+        ),
+    ] {
+        let (json, code) = decode_one(&rtu(body));
+        assert_eq!(code, 0, "{json}");
+        assert_eq!(json["kind"], kind, "{json}");
+        assert!(json.get("ambiguous").is_none(), "{json}");
+    }
+    // Asked to read one the other way, it is told why not.
+    let run = decode(
+        &[
+            "--direction",
+            "request",
+            &rtu(&[0x11, 0x0B, 0xFF, 0xFF, 0x01, 0x08]),
+        ],
+        b"",
+    );
+    assert_ne!(run.code, 0);
+    assert!(
+        run.stdout.contains("carries 1 PDU bytes, the frame has 5"),
+        "{}",
+        run.stdout
+    );
+}
+
+#[test]
 fn an_answer_after_its_request_reads_with_the_request_addresses_and_quantity() {
     // 10 coils from 0x0013; the answer's last byte holds 2 values and 6 padding bits, set
     // here so that a padding bit taken for a coil would show.

@@ -2,11 +2,12 @@
 
 use crate::codec::error::PduError;
 use crate::codec::function::*;
-use crate::codec::{bits, limits};
+use crate::codec::{bits, limits, Direction};
 
 use super::wire::{
-    check_normal_function, check_pdu_len, check_quantity, check_range, check_read, coil_from_word,
-    coil_word, counted_exactly, counted_registers, len_u8, quantity_of, Reader, Writer,
+    check_layout_length, check_normal_function, check_pdu_len, check_quantity, check_range,
+    check_read, coil_from_word, coil_word, counted_exactly, counted_registers, len_u8, quantity_of,
+    Reader, Writer,
 };
 use super::Request;
 
@@ -122,6 +123,7 @@ impl Request {
             Request::Other { function, data } => {
                 check_normal_function(*function)?;
                 w.bytes(data);
+                check_layout_length(&out[start..], Direction::Request)?;
             }
         }
         check_pdu_len(out.len() - start)
@@ -210,10 +212,13 @@ impl Request {
                     object_id: r.u8()?,
                 }
             }
-            function => Request::Other {
-                function,
-                data: r.rest().to_vec(),
-            },
+            function => {
+                check_layout_length(pdu, Direction::Request)?;
+                Request::Other {
+                    function,
+                    data: r.rest().to_vec(),
+                }
+            }
         };
         r.finish()?;
         check_pdu_len(pdu.len())?;

@@ -3,11 +3,11 @@
 use crate::codec::error::PduError;
 use crate::codec::exception::ExceptionCode;
 use crate::codec::function::*;
-use crate::codec::{bits, limits};
+use crate::codec::{bits, limits, Direction};
 
 use super::wire::{
-    check_normal_function, check_pdu_len, check_quantity, check_range, coil_from_word, coil_word,
-    len_u8, quantity_of, Reader, Writer,
+    check_layout_length, check_normal_function, check_pdu_len, check_quantity, check_range,
+    coil_from_word, coil_word, len_u8, quantity_of, Reader, Writer,
 };
 use super::{DeviceIdentification, DeviceObject, Exception, Response};
 
@@ -104,6 +104,7 @@ impl Response {
             Response::Other { function, data } => {
                 check_normal_function(*function)?;
                 w.bytes(data);
+                check_layout_length(&out[start..], Direction::Response)?;
             }
         }
         check_pdu_len(out.len() - start)
@@ -212,10 +213,13 @@ impl Response {
                     objects,
                 })
             }
-            function => Response::Other {
-                function,
-                data: r.rest().to_vec(),
-            },
+            function => {
+                check_layout_length(pdu, Direction::Response)?;
+                Response::Other {
+                    function,
+                    data: r.rest().to_vec(),
+                }
+            }
         };
         r.finish()?;
         check_pdu_len(pdu.len())?;

@@ -3,7 +3,9 @@
 
 use crate::codec::error::PduError;
 use crate::codec::function::*;
+use crate::codec::length::{pdu_length, Length};
 use crate::codec::limits;
+use crate::codec::Direction;
 
 #[inline]
 pub(super) fn check_quantity(quantity: u16, max: u16) -> Result<(), PduError> {
@@ -177,6 +179,26 @@ pub(super) fn check_normal_function(function: u8) -> Result<(), PduError> {
         ));
     }
     Ok(())
+}
+
+/// A function kept byte for byte whose layout still tells its length (11, 12, 20, 21, 24):
+/// a PDU of another length is no PDU of that function in `direction`. A Get Comm Event
+/// Counter request is its function code alone, and its answer four bytes more.
+pub(super) fn check_layout_length(pdu: &[u8], direction: Direction) -> Result<(), PduError> {
+    match pdu_length(pdu, direction) {
+        Length::Known(expected) if expected != pdu.len() => Err(PduError::LengthMismatch {
+            function: pdu.first().copied().unwrap_or_default(),
+            expected,
+            actual: pdu.len(),
+        }),
+        // Too short for the byte count its layout reads.
+        Length::AtLeast(needed) => Err(PduError::Truncated {
+            function: pdu.first().copied().unwrap_or_default(),
+            needed,
+            actual: pdu.len(),
+        }),
+        _ => Ok(()),
+    }
 }
 
 #[inline]
