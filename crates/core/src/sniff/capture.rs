@@ -55,14 +55,22 @@ pub enum CaptureError {
     #[error("is empty, where a pcap or pcapng file was expected")]
     Empty,
     /// The file ends inside a record.
-    #[error("ends in the middle of a record, after {0} packets: the capture was cut off")]
+    #[error("ends in the middle of a record, after {}: the capture was cut off", packets(*.0))]
     Truncated(u64),
     /// A record that cannot be read.
-    #[error("is damaged after {0} packets: a record cannot be read")]
+    #[error("is damaged after {}: a record cannot be read", packets(*.0))]
     Damaged(u64),
     /// A read of the file failed.
     #[error("cannot be read: {0}")]
     Io(String),
+}
+
+/// "1 packet", "2 packets".
+fn packets(count: u64) -> String {
+    match count {
+        1 => "1 packet".to_string(),
+        _ => format!("{count} packets"),
+    }
 }
 
 /// The buffer records are read into, grown for a larger record up to [`MOST_RECORD`].
@@ -319,4 +327,21 @@ fn ether_type(data: &[u8], at: usize, len: usize) -> Option<LaxSlicedPacket<'_>>
         EtherType(kind),
         data.get(len..)?,
     ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_packet_is_said_so() {
+        assert_eq!(
+            CaptureError::Truncated(1).to_string(),
+            "ends in the middle of a record, after 1 packet: the capture was cut off"
+        );
+        assert_eq!(
+            CaptureError::Damaged(2).to_string(),
+            "is damaged after 2 packets: a record cannot be read"
+        );
+    }
 }

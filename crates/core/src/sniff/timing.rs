@@ -14,6 +14,11 @@ use std::fmt;
 /// The first line of a timing file.
 pub const HEADER: &str = "# mbtool sniff timing: '<us> <count>' = count bytes read together, the last at <us>; '<us> idle' = quiet until <us>";
 
+/// The latest time a timing file may give: 2^53 microseconds, 285 years, and every time up
+/// to it is exact as the seconds shown. Later ones are no capture's, and the largest would
+/// read as a byte without a time.
+pub const MAX_TIME_US: u64 = 1 << 53;
+
 /// The name of the timing file kept beside a capture.
 pub fn beside(capture: &std::path::Path) -> std::path::PathBuf {
     let mut name = capture.as_os_str().to_owned();
@@ -65,6 +70,11 @@ pub fn parse(line: &str) -> Result<Option<Event>, String> {
     let bad = || format!("'{line}' is neither '<us> <count>' nor '<us> idle'");
     let (time, what) = line.split_once(' ').ok_or_else(bad)?;
     let time = time.parse::<u64>().map_err(|_| bad())?;
+    if time > MAX_TIME_US {
+        return Err(format!(
+            "{time} us is past any capture's times (at most 2^53 us, 285 years)"
+        ));
+    }
     match what.trim() {
         "idle" => Ok(Some(Event::Idle { time })),
         count => count
@@ -77,6 +87,15 @@ pub fn parse(line: &str) -> Result<Option<Event>, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_time_past_285_years_is_refused() {
+        assert!(parse(&format!("{MAX_TIME_US} 8")).is_ok());
+        for line in ["9007199254740993 8", "18446744073709551615 idle"] {
+            let error = parse(line).unwrap_err();
+            assert!(error.contains("past any capture's times"), "{error}");
+        }
+    }
 
     #[test]
     fn lines_read_back_as_written() {
