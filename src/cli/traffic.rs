@@ -20,7 +20,8 @@ QModMaster ([RTU]>Rx > 10:33:38:374 : 01 03 ...), mbpoll -v and libmodbus ([01][
 <01><03>... received) and pymodbus's debug log (SEND: 0x1 0x3 ...) are read with the \
 direction they mark; their own messages (Waiting for a confirmation...) are passed over and \
 counted. A line that starts with # is a comment. Frames glued together on one line are \
-split as sniff splits them.
+split as sniff splits them. A binary file (a NUL byte on a line) or a UTF-16 file ends the \
+run with one message and exit status 2: raw bytes are read by sniff --input.
 
 The framing (RTU, ASCII, TCP) is detected unless --mode says; request or response is \
 inferred from the bytes, and a frame that reads both ways says so (--direction settles it). \

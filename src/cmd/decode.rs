@@ -5,6 +5,7 @@ use std::io::{self, Write};
 use anyhow::Result;
 
 use mbtool::cli::DecodeArgs;
+use mbtool::error::Error;
 use mbtool::lines::{Line, Lines};
 use mbtool::output::{self, decode::DecodeWriter};
 use mbtool::settings::Settings;
@@ -117,6 +118,19 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
         let mut number = 0u64;
         while let Some(kind) = lines.next_line(&mut line)? {
             number += 1;
+            // Text never holds a NUL byte, and a binary file soon does: one message for
+            // the whole file, not one for each of its "lines".
+            if line.contains(&0) {
+                decoder.out.flush()?;
+                let utf16 =
+                    number == 1 && matches!(line.get(..2), Some([0xFF, 0xFE] | [0xFE, 0xFF]));
+                return Err(Error::usage(if utf16 {
+                    "the input is UTF-16 text (a Windows \"Unicode\" file): save it as UTF-8 or ASCII".to_string()
+                } else {
+                    format!("line {number} holds NUL bytes: the input is binary, not frames written as hex (a capture of raw bytes is read by `mbtool sniff --input FILE`)")
+                })
+                .into());
+            }
             match kind {
                 Line::Complete => decoder.line(&line, true, || format!("line {number}"))?,
                 Line::TooLong => decoder.too_long(format!("line {number}")),

@@ -249,6 +249,43 @@ fn a_frame_that_reads_both_ways_says_so_and_direction_settles_it() {
 }
 
 #[test]
+fn a_binary_file_gets_one_message_not_one_a_line() {
+    // An executable, a capture of raw bytes: text never holds a NUL byte.
+    let mut binary: Vec<u8> = b"11 03 00 6B 00 03 76 87\n".to_vec();
+    for i in 0u32..20_000 {
+        binary.extend_from_slice(&i.wrapping_mul(2_654_435_761).to_le_bytes());
+        if i % 50 == 0 {
+            binary.push(b'\n');
+        }
+    }
+    let run = decode(&[], &binary);
+    assert_eq!(run.code, 2);
+    assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+    assert!(
+        run.stderr
+            .contains("line 2 holds NUL bytes: the input is binary"),
+        "{}",
+        run.stderr
+    );
+    // The frame before it is shown all the same.
+    assert!(
+        run.stdout.contains("Read Holding Registers"),
+        "{}",
+        run.stdout
+    );
+
+    // A log saved as UTF-16 by a Windows editor is told as such.
+    let utf16: Vec<u8> = [0xFF, 0xFE]
+        .into_iter()
+        .chain("11 03 00 6B 00 03 76 87\r\n".bytes().flat_map(|b| [b, 0]))
+        .collect();
+    let run = decode(&[], &utf16);
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.contains("UTF-16"), "{}", run.stderr);
+    assert_one_line_errors(&run.stderr);
+}
+
+#[test]
 fn functions_kept_byte_for_byte_read_only_the_way_their_length_allows() {
     // The manual's worked frames for functions 11, 12 and 24, each kept as bytes: a Get
     // Comm Event Counter request is its function code alone, its answer four bytes more.
