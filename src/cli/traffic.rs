@@ -59,14 +59,16 @@ elsewhere its bytes are noise. On a live line (or a replay with its .timing), 3.
 characters of silence inside bytes that do not make a whole frame before it end them: they \
 are a frame cut short where the conversation expects a frame ([incomplete], counted as a CRC \
 error), noise elsewhere, and the frame after the silence starts clean. This is decided when \
-the bytes after the silence come, because a USB adapter hands bytes over when its latency \
-timer runs out (16 ms by default), so a frame can arrive in two reads a whole period apart \
-that were back to back on the wire, and a slow device may pause inside its frames: such a \
-frame, whose CRC holds across the gap (of a known layout, or the answer awaited where no \
-frame starts after the gap), is taken whole, and from then on, if that line's bytes come \
-in bursts (several a read, as an adapter gathers them), its gaps are not taken for silence \
-(a frame cut short is kept until the bytes show it is none, as without timing). Read a \
-byte at a time, a line's gaps are its own, and stay believed. Until then, bytes a gap cuts short, and the frame before them, wait for the bytes \
+the bytes after the silence come. A USB adapter hands bytes over when its latency timer runs \
+out (16 ms by default), so a frame can arrive in two reads a whole period apart that were \
+back to back on the wire: where a line's bytes come in bursts (several a read, as an adapter \
+gathers them), a frame whose CRC holds across the gap (of a known layout, or the answer \
+awaited where no frame starts after the gap) is taken whole, and from then on that line's \
+gaps are not taken for silence (a frame cut short is kept until the bytes show it is none, \
+as without timing). Read a byte at a time, a line's gaps are its own: a silence ends a frame \
+there as it does for every receiver on the bus, whatever CRC the bytes across it pass (a \
+device that pauses inside its frame shows as a frame cut short and the rest). Bytes a gap \
+cuts short, and the frame before them, wait for the bytes \
 after the gap. A long run of noise is counted, and only its first 64 bytes \
 kept. When bytes arrive in bursts the gaps between frames are not real: mbtool says so once. \
 The fix is the adapter's latency timer: \

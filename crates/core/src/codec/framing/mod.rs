@@ -30,8 +30,9 @@
 //! a frame straddling a tick arrives in two reads a whole period apart. From then on the
 //! times are not taken for silence (nor is the quiet they told), and a frame cut short is
 //! kept until bytes show it is no frame, as without timing. Bytes read one at a time come
-//! through no such adapter: a frame across a gap there is a device pausing inside it (or a
-//! CRC passing by chance), and the line's silences stay believed.
+//! through no such adapter: a line's silences are its own, and one ends a frame as it does
+//! for every receiver on the bus, whatever CRC the bytes across it pass (a device that
+//! pauses inside its frame sends two pieces, a frame cut short and the rest).
 //!
 //! ASCII: ':' starts a frame and CR LF ends it; up to a second may pass between characters.
 //! TCP: the MBAP length alone frames, however the bytes were segmented.
@@ -166,8 +167,7 @@ pub struct Framer {
     /// A read brought several bytes at once: the line may be behind an adapter that
     /// gathers what arrives until its latency timer runs out, whose reads make gaps that
     /// are no silence. Read a byte at a time (a UART, a capture timed byte by byte), a
-    /// line's gaps are its own: a frame found whole across one is a device pausing inside
-    /// it, or chance, and the times are still believed.
+    /// line's gaps are its own: no frame runs across a silence there.
     bursts: bool,
     /// Silence ends a frame cut short: a sniffer's rule (see [`Framer::end_cut_frames`]).
     ends_cut_frames: bool,
@@ -824,10 +824,41 @@ mod tests {
     }
 
     #[test]
-    fn read_a_byte_at_a_time_a_frame_across_a_gap_leaves_the_silences_believed() {
+    fn read_a_byte_at_a_time_a_cut_answer_and_the_next_byte_are_no_frame_by_their_crc() {
+        // The answer awaited, cut one byte short; silence; then a request cut short whose
+        // first byte happens to be the answer's missing last byte, and silence again.
+        // Read together the answer passes its CRC, but on a line read a byte at a time the
+        // silence is real: the answer was cut, and no frame is made up across the silence.
+        let mut reads: Vec<(Vec<u8>, u64)> = Vec::new();
+        let mut time = 0;
+        let mut line = |bytes: &[u8]| {
+            for byte in bytes {
+                time += 573;
+                reads.push((vec![*byte], time));
+            }
+            time += 5_000;
+        };
+        line(&REQUEST);
+        line(&ANSWER[..10]);
+        line(&[ANSWER[10], 0x03, 0x00]);
+        line(&REQUEST);
+        let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
+        let out = timed_frames(&pieces);
+        assert!(
+            !out.contains(&(ANSWER.to_vec(), None)),
+            "a frame made up across the silence: {out:?}"
+        );
+        assert_eq!(out[1], (ANSWER[..10].to_vec(), Some(Broken::Incomplete)));
+        assert_eq!(out.last(), Some(&(REQUEST.to_vec(), None)));
+    }
+
+    #[test]
+    fn read_a_byte_at_a_time_a_silence_inside_a_frame_ends_it() {
         // A device pauses 3 ms inside its answer; later, a frame of function 72 followed by
         // silence and a frame cut short. Each byte is read alone, one character apart, so
-        // no adapter gathered them: the gaps after the pause still end what they cut.
+        // no adapter gathered them: the pause is the line's own, and ends the answer for
+        // every receiver on the bus, though the bytes across it pass their CRC. The gaps
+        // after it still end what they cut.
         let user = rtu(&[0x85, 0x48, 0xA3, 0x7F, 0x4F, 0x50, 0x82, 0x7F, 0xD2, 0x0F]);
         let cut = [0x85, 0x48, 0xDB];
         let next = rtu(&[0x6F, 0x03, 0xAB, 0xAA, 0x00, 0x27]);
@@ -849,13 +880,34 @@ mod tests {
         line(&cut, None);
         line(&next, None);
         let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
-        let valid: Vec<Vec<u8>> = timed_frames(&pieces)
+        let mut framer = Framer::new(Mode::Rtu, 573.0, 2005);
+        framer.end_cut_frames();
+        let mut events = Vec::new();
+        for (bytes, time) in &pieces {
+            framer.push_at(bytes, *time, &mut events);
+        }
+        framer.finish(&mut events);
+        let shown: Vec<(Vec<u8>, Option<Broken>)> = events
             .into_iter()
-            .filter(|(_, broken)| broken.is_none())
-            .map(|(bytes, _)| bytes)
+            .map(|event| match event {
+                Event::Frame(found) => (found.bytes.to_vec(), found.broken),
+                Event::Noise(noise) => (noise.kept.to_vec(), None),
+            })
             .collect();
-        assert_eq!(valid, [REQUEST.to_vec(), ANSWER.to_vec(), user, next]);
-        // In reads of several bytes the same gap makes the gaps lie: see
+        assert_eq!(
+            shown,
+            [
+                (REQUEST.to_vec(), None),
+                // The answer's first 7 bytes, cut by the pause; its last 4 bytes are noise.
+                (ANSWER[..7].to_vec(), Some(Broken::Incomplete)),
+                (ANSWER[7..].to_vec(), None),
+                (user, None),
+                // A cut function without a layout tells no length it fell short of: noise.
+                (cut.to_vec(), None),
+                (next, None),
+            ]
+        );
+        // In reads of several bytes the same gap is an adapter's: see
         // a_frame_whose_rest_comes_after_a_gap_is_whole_and_then_gaps_are_not_silence.
     }
 

@@ -261,6 +261,12 @@ impl Framer {
                 _ => {}
             }
         }
+        // Read a byte at a time, a line's silences are its own (no adapter gathers its
+        // bytes), and a silence ends a frame as it does for every receiver on the bus: no
+        // reading runs across one, whatever CRC its bytes pass.
+        if !self.bursts && self.times_tell_silence() {
+            found.valid.retain(|c| !self.silence_inside(at, at + c.len));
+        }
         found.valid.sort_unstable_by_key(|c| c.len);
         found
     }
