@@ -1113,7 +1113,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --interface 'Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng'
             cand --tcp-port 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)'
             cand --save 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng'
-            cand --pcap 'Also write the frames to a pcap file for Wireshark (link type 147, see above)'
+            cand --pcap 'Also write the frames shown to a pcap file for Wireshark (link type 147, see above)'
             cand --slave 'Show only the frames of this slave; repeatable'
             cand --function 'Show only the frames of this function code (3, 0x10); repeatable'
             cand --rs485 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'

@@ -1254,7 +1254,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l interface -d 'Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l tcp-port -d 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pcap -d 'Also write the frames to a pcap file for Wireshark (link type 147, see above)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pcap -d 'Also write the frames shown to a pcap file for Wireshark (link type 147, see above)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l slave -d 'Show only the frames of this slave; repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l function -d 'Show only the frames of this function code (3, 0x10); repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'

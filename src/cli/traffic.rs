@@ -92,8 +92,8 @@ and unit id, with the response time; each line shows the connection, and JSON ha
 server, transaction, packet (numbered as Wireshark numbers them), and on answers \
 request_packet and response_time_us.
 
---pcap writes the frames for Wireshark with link type DLT_USER0 (147), a TCP frame as the \
-RTU frame it carries. Once, in Wireshark: Preferences > Protocols > DLT_USER > Edit, add DLT \
+--pcap writes the frames shown (--slave and --function filter it too) for Wireshark with \
+link type DLT_USER0 (147), a TCP frame as the RTU frame it carries. Once, in Wireshark: Preferences > Protocols > DLT_USER > Edit, add DLT \
 147 with payload protocol mbrtu.";
 
 #[derive(Clone, Debug, Args)]
@@ -142,7 +142,7 @@ pub struct SniffArgs {
     #[arg(long, value_name = "FILE")]
     pub save: Option<std::path::PathBuf>,
 
-    /// Also write the frames to a pcap file for Wireshark (link type 147, see above)
+    /// Also write the frames shown to a pcap file for Wireshark (link type 147, see above)
     #[arg(long, value_name = "FILE")]
     pub pcap: Option<std::path::PathBuf>,
 

@@ -122,8 +122,9 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
             // the whole file, not one for each of its "lines".
             if line.contains(&0) {
                 decoder.out.flush()?;
-                let utf16 =
-                    number == 1 && matches!(line.get(..2), Some([0xFF, 0xFE] | [0xFE, 0xFF]));
+                let utf16 = (number == 1
+                    && matches!(line.get(..2), Some([0xFF, 0xFE] | [0xFE, 0xFF])))
+                    || looks_utf16(&line);
                 return Err(Error::usage(if utf16 {
                     "the input is UTF-16 text (a Windows \"Unicode\" file): save it as UTF-8 or ASCII".to_string()
                 } else {
@@ -180,4 +181,16 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
     } else {
         0
     })
+}
+
+/// Text in UTF-16 without its byte-order mark: printable ASCII with a NUL beside every
+/// character, so about as many NULs as characters.
+fn looks_utf16(line: &[u8]) -> bool {
+    let nuls = line.iter().filter(|b| **b == 0).count();
+    let text = line.len() - nuls;
+    line.len() >= 4
+        && nuls.abs_diff(text) <= 2
+        && line
+            .iter()
+            .all(|b| *b == 0 || b.is_ascii_graphic() || b.is_ascii_whitespace())
 }

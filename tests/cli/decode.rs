@@ -283,6 +283,14 @@ fn a_binary_file_gets_one_message_not_one_a_line() {
     assert_eq!(run.code, 2);
     assert!(run.stderr.contains("UTF-16"), "{}", run.stderr);
     assert_one_line_errors(&run.stderr);
+    // Without its byte-order mark too, big-endian.
+    let utf16be: Vec<u8> = "11 03 00 6B 00 03 76 87\n"
+        .bytes()
+        .flat_map(|b| [0, b])
+        .collect();
+    let run = decode(&[], &utf16be);
+    assert_eq!(run.code, 2);
+    assert!(run.stderr.contains("UTF-16"), "{}", run.stderr);
 }
 
 #[test]
