@@ -63,9 +63,9 @@ the bytes after the silence come. A USB adapter hands bytes over when its latenc
 out (16 ms by default), so a frame can arrive in two reads a whole period apart that were \
 back to back on the wire: where a line's bytes come in bursts (several a read, as an adapter \
 gathers them), a frame whose CRC holds across the gap (of a known layout, or the answer \
-awaited where no frame starts after the gap) is taken whole, and from then on that line's \
-gaps are not taken for silence (a frame cut short is kept until the bytes show it is none, \
-as without timing). Read a byte at a time, a line's gaps are its own: a silence ends a frame \
+awaited where no frame starts after the gap) is taken whole, and once such frames are more \
+than chance (one in 200 frames or more), that line's gaps are not taken for silence from \
+then on (a frame cut short is kept until the bytes show it is none, as without timing). Read a byte at a time, a line's gaps are its own: a silence ends a frame \
 there as it does for every receiver on the bus, whatever CRC the bytes across it pass (a \
 device that pauses inside its frame shows as a frame cut short and the rest). Bytes a gap \
 cuts short, and the frame before them, wait for the bytes \

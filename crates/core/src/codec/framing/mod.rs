@@ -24,10 +24,13 @@
 //! awaited, or a request in step) or noise, and the frame after the silence starts clean;
 //! this is decided when the bytes after the silence come, so that a frame whose rest comes
 //! after a gap is still taken whole, and a frame followed by such bytes waits for them too.
-//! A frame that did (its CRC holding across the gap: one of known layout, or the answer
-//! awaited when no frame starts right after the gap) shows that the gaps lie, where the
-//! bytes come in bursts: a USB adapter hands bytes over when its latency timer runs out, so
-//! a frame straddling a tick arrives in two reads a whole period apart. From then on the
+//! Frames that did (their CRC holding across the gap: of known layout, or the answer
+//! awaited when no frame starts right after the gap) show that the gaps lie, where the
+//! bytes come in bursts and such frames are no rarity (one in 200 frames or more): a USB
+//! adapter hands bytes over when its latency timer runs out, so a frame straddling a tick
+//! arrives in two reads a whole period apart, while a CRC holding by chance across a real
+//! silence is far rarer, and one such frame must not cost the rest of a capture its
+//! silences. From then on the
 //! times are not taken for silence (nor is the quiet they told), and a frame cut short is
 //! kept until bytes show it is no frame, as without timing. Bytes read one at a time come
 //! through no such adapter: a line's silences are its own, and one ends a frame as it does
@@ -121,6 +124,11 @@ pub enum Event {
     Noise(Noise),
 }
 
+/// A frame across a gap once in this many frames is more than chance: a CRC holding by
+/// chance across a real silence is far rarer, and an adapter's latency timer splits a frame
+/// whenever one straddles its tick.
+const CROSSINGS_PER_ADAPTER: u64 = 200;
+
 /// A time not known (the byte came without one).
 const UNTIMED: u64 = u64::MAX;
 
@@ -160,15 +168,18 @@ pub struct Framer {
     times: Vec<u64>,
     /// The CRCs checked lately.
     crc_verdicts: CrcVerdicts,
-    /// A frame was taken whole across a gap its times showed as silence: the times of
-    /// this line do not tell its silences (a USB adapter's latency timer, a device that
-    /// pauses inside frames).
+    /// Frames taken whole across gaps their times showed as silence are more than chance,
+    /// on a line read in bursts: its times do not tell its silences (a USB adapter's
+    /// latency timer).
     gaps_lie: bool,
     /// A read brought several bytes at once: the line may be behind an adapter that
     /// gathers what arrives until its latency timer runs out, whose reads make gaps that
     /// are no silence. Read a byte at a time (a UART, a capture timed byte by byte), a
     /// line's gaps are its own: no frame runs across a silence there.
     bursts: bool,
+    /// Valid frames taken, and how many of them ran whole across a silence.
+    frames_taken: u64,
+    crossings: u64,
     /// Silence ends a frame cut short: a sniffer's rule (see [`Framer::end_cut_frames`]).
     ends_cut_frames: bool,
     /// Position in the stream of `buffer[0]`.
@@ -208,6 +219,8 @@ impl Framer {
             crc_verdicts: CrcVerdicts::default(),
             gaps_lie: false,
             bursts: false,
+            frames_taken: 0,
+            crossings: 0,
             ends_cut_frames: false,
             offset: 0,
             in_step: true,
@@ -460,14 +473,19 @@ impl Framer {
                         // Whole across a silence, on a line read in bursts: the times
                         // do not tell this line's silences (they are kept all the same,
                         // to be shown).
+                        self.frames_taken += 1;
                         if self.ends_cut_frames
                             && self.mode == Mode::Rtu
                             && self.bursts
                             && self.silence_inside(at, at + len)
                         {
-                            self.gaps_lie = true;
-                            // The quiet the times told was a lie too, unless the input ended.
-                            self.quiet = self.ended;
+                            self.crossings += 1;
+                            if self.crossings * CROSSINGS_PER_ADAPTER >= self.frames_taken {
+                                self.gaps_lie = true;
+                                // The quiet the times told was a lie too, unless the input
+                                // ended.
+                                self.quiet = self.ended;
+                            }
                         }
                     }
                     out.push(Event::Frame(found));
@@ -821,6 +839,41 @@ mod tests {
         framer.push_at(&REQUEST[..5], 48_000, &mut out);
         framer.push_at(&REQUEST[5..], 64_000, &mut out);
         assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes[..] == REQUEST[..]));
+    }
+
+    #[test]
+    fn one_frame_by_chance_across_a_silence_in_many_does_not_make_the_gaps_lie() {
+        // A line read a frame at a time, each read at the end of its frame (a UART with a
+        // FIFO, an adapter that hands bytes over when the line goes quiet): 300 frames,
+        // then the answer cut one byte short, silence, and a piece whose first byte passes
+        // the answer's CRC with it. One such frame in 300 is chance, not an adapter's
+        // latency timer: a request cut short later is still ended by the silence after it.
+        let mut reads: Vec<(Vec<u8>, u64)> = Vec::new();
+        let mut time = 0;
+        let mut read = |bytes: &[u8]| {
+            time += 573 * bytes.len() as u64;
+            reads.push((bytes.to_vec(), time));
+            time += 5_000;
+        };
+        for _ in 0..150 {
+            read(&REQUEST);
+            read(&ANSWER);
+        }
+        read(&REQUEST);
+        read(&ANSWER[..10]);
+        read(&[ANSWER[10], 0x03, 0x00]);
+        read(&REQUEST[..6]);
+        read(&REQUEST);
+        let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
+        let out = timed_frames(&pieces);
+        assert!(
+            out.ends_with(&[
+                (REQUEST[..6].to_vec(), Some(Broken::Incomplete)),
+                (REQUEST.to_vec(), None),
+            ]),
+            "{:?}",
+            &out[out.len() - 4..]
+        );
     }
 
     #[test]
