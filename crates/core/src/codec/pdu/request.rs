@@ -123,7 +123,6 @@ impl Request {
             Request::Other { function, data } => {
                 check_normal_function(*function)?;
                 w.bytes(data);
-                check_layout_length(&out[start..], Direction::Request)?;
             }
         }
         check_pdu_len(out.len() - start)

@@ -104,7 +104,6 @@ impl Response {
             Response::Other { function, data } => {
                 check_normal_function(*function)?;
                 w.bytes(data);
-                check_layout_length(&out[start..], Direction::Response)?;
             }
         }
         check_pdu_len(out.len() - start)
