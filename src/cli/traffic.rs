@@ -20,8 +20,9 @@ QModMaster ([RTU]>Rx > 10:33:38:374 : 01 03 ...), mbpoll -v and libmodbus ([01][
 <01><03>... received) and pymodbus's debug log (SEND: 0x1 0x3 ...) are read with the \
 direction they mark; their own messages (Waiting for a confirmation...) are passed over and \
 counted. A line that starts with # is a comment. Frames glued together on one line are \
-split as sniff splits them. A binary file (a NUL byte on a line) or a UTF-16 file ends the \
-run with one message and exit status 2: raw bytes are read by sniff --input.
+split as sniff splits them. The first line holding a NUL byte (a binary file soon has one) \
+or a UTF-16 file ends the run with one message and exit status 2: raw bytes are read by \
+sniff --input.
 
 The framing (RTU, ASCII, TCP) is detected unless --mode says; request or response is \
 inferred from the bytes, and a frame that reads both ways says so (--direction settles it). \
@@ -63,9 +64,10 @@ the bytes after the silence come. A USB adapter hands bytes over when its latenc
 out (16 ms by default), so a frame can arrive in two reads a whole period apart that were \
 back to back on the wire: where a line's bytes come in bursts (several a read, as an adapter \
 gathers them), a frame whose CRC holds across the gap (of a known layout, or the answer \
-awaited where no frame starts after the gap) is taken whole, and once such frames are more \
-than chance (one in 200 frames or more), that line's gaps are not taken for silence from \
-then on (a frame cut short is kept until the bytes show it is none, as without timing). Read a byte at a time, a line's gaps are its own: a silence ends a frame \
+awaited where no frame starts after the gap) is taken whole, and while such frames are more \
+than chance (one in 200 frames or more, the last within 2,000 frames), that line's gaps are \
+not taken for silence (a frame cut short is kept until the bytes show it is none, as \
+without timing). Read a byte at a time, a line's gaps are its own: a silence ends a frame \
 there as it does for every receiver on the bus, whatever CRC the bytes across it pass (a \
 device that pauses inside its frame shows as a frame cut short and the rest). Bytes a gap \
 cuts short, and the frame before them, wait for the bytes \

@@ -26,11 +26,11 @@
 //! after a gap is still taken whole, and a frame followed by such bytes waits for them too.
 //! Frames that did (their CRC holding across the gap: of known layout, or the answer
 //! awaited when no frame starts right after the gap) show that the gaps lie, where the
-//! bytes come in bursts and such frames are no rarity (one in 200 frames or more): a USB
-//! adapter hands bytes over when its latency timer runs out, so a frame straddling a tick
-//! arrives in two reads a whole period apart, while a CRC holding by chance across a real
-//! silence is far rarer, and one such frame must not cost the rest of a capture its
-//! silences. From then on the
+//! bytes come in bursts and such frames are no rarity (one in 200 frames or more, the last
+//! within 2,000 frames): a USB adapter hands bytes over when its latency timer runs out, so
+//! a frame straddling a tick arrives in two reads a whole period apart, while a CRC holding
+//! by chance across a real silence is far rarer, and one such frame (or a device that
+//! paused once) must not cost the rest of a capture its silences. Meanwhile the
 //! times are not taken for silence (nor is the quiet they told), and a frame cut short is
 //! kept until bytes show it is no frame, as without timing. Bytes read one at a time come
 //! through no such adapter: a line's silences are its own, and one ends a frame as it does
@@ -129,6 +129,11 @@ pub enum Event {
 /// whenever one straddles its tick.
 const CROSSINGS_PER_ADAPTER: u64 = 200;
 
+/// Without a frame across a gap in this many frames, a line's gaps are believed again:
+/// a device that paused inside its frames, or a CRC that held by chance, early in a
+/// capture, does not cost the silences of the rest of it.
+const LYING_FOR_FRAMES: u64 = 2_000;
+
 /// A time not known (the byte came without one).
 const UNTIMED: u64 = u64::MAX;
 
@@ -168,10 +173,10 @@ pub struct Framer {
     times: Vec<u64>,
     /// The CRCs checked lately.
     crc_verdicts: CrcVerdicts,
-    /// Frames taken whole across gaps their times showed as silence are more than chance,
-    /// on a line read in bursts: its times do not tell its silences (a USB adapter's
-    /// latency timer).
-    gaps_lie: bool,
+    /// How many valid frames had been taken when the last frame came whole across a gap
+    /// its times showed as silence, on a line read in bursts, while such frames were more
+    /// than chance: see [`Framer::gaps_lie`].
+    lying_since: Option<u64>,
     /// A read brought several bytes at once: the line may be behind an adapter that
     /// gathers what arrives until its latency timer runs out, whose reads make gaps that
     /// are no silence. Read a byte at a time (a UART, a capture timed byte by byte), a
@@ -217,7 +222,7 @@ impl Framer {
             buffer: Vec::with_capacity(1024),
             times: Vec::new(),
             crc_verdicts: CrcVerdicts::default(),
-            gaps_lie: false,
+            lying_since: None,
             bursts: false,
             frames_taken: 0,
             crossings: 0,
@@ -359,10 +364,22 @@ impl Framer {
         })
     }
 
+    /// Whether this line's times do not tell its silences: frames have come whole across
+    /// gaps its times showed as silence, on a line read in bursts, more often than chance
+    /// (one in [`CROSSINGS_PER_ADAPTER`] frames or more) and lately (within
+    /// [`LYING_FOR_FRAMES`] frames). So behind a USB adapter's latency timer, which splits
+    /// every frame that straddles its tick; a device that paused inside one frame, or a
+    /// CRC that held by chance, costs the silences of the frames after it for a while at
+    /// most.
+    fn gaps_lie(&self) -> bool {
+        self.lying_since
+            .is_some_and(|since| self.frames_taken - since < LYING_FOR_FRAMES)
+    }
+
     /// Whether the times of the bytes tell the line's silences, for a sniffer's rules: it
     /// has times, and no frame has come whole across a gap.
     fn times_tell_silence(&self) -> bool {
-        self.ends_cut_frames && !self.times.is_empty() && !self.gaps_lie
+        self.ends_cut_frames && !self.times.is_empty() && !self.gaps_lie()
     }
 
     /// Where the first silence inside the bytes from `at` ends (the index of the byte
@@ -392,7 +409,7 @@ impl Framer {
 
     /// Whether the line has been silent since the last byte, by `now`.
     fn silent_since_last(&self, now: u64) -> bool {
-        if self.gaps_lie {
+        if self.gaps_lie() {
             return false;
         }
         match self.buffer.len().checked_sub(1).and_then(|i| self.time(i)) {
@@ -422,7 +439,7 @@ impl Framer {
         if i + 1 == self.buffer.len() {
             return self.quiet;
         }
-        if self.gaps_lie {
+        if self.gaps_lie() {
             return false;
         }
         match (self.time(i), self.time(i + 1)) {
@@ -481,7 +498,7 @@ impl Framer {
                         {
                             self.crossings += 1;
                             if self.crossings * CROSSINGS_PER_ADAPTER >= self.frames_taken {
-                                self.gaps_lie = true;
+                                self.lying_since = Some(self.frames_taken);
                                 // The quiet the times told was a lie too, unless the input
                                 // ended.
                                 self.quiet = self.ended;
@@ -834,7 +851,7 @@ mod tests {
         let mut out = Vec::new();
         framer.push_at(&ANSWER[..4], 16_000, &mut out);
         framer.push_at(&ANSWER[4..], 32_000, &mut out);
-        assert!(framer.gaps_lie);
+        assert!(framer.gaps_lie());
         // From then on a request cut short by a gap is kept, as without timing.
         framer.push_at(&REQUEST[..5], 48_000, &mut out);
         framer.push_at(&REQUEST[5..], 64_000, &mut out);
@@ -866,6 +883,39 @@ mod tests {
         read(&REQUEST);
         let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
         let out = timed_frames(&pieces);
+        assert!(
+            out.ends_with(&[
+                (REQUEST[..6].to_vec(), Some(Broken::Incomplete)),
+                (REQUEST.to_vec(), None),
+            ]),
+            "{:?}",
+            &out[out.len() - 4..]
+        );
+    }
+
+    #[test]
+    fn a_device_that_paused_once_inside_its_first_frame_leaves_the_later_silences_believed() {
+        // Read a frame at a time: the first answer with a 4 ms pause inside it, taken whole
+        // across it; then 2,200 frames; then a request cut short and ended by silence.
+        let mut reads: Vec<(Vec<u8>, u64)> = Vec::new();
+        let mut time = 0;
+        let mut read = |bytes: &[u8], pause: u64| {
+            time += 573 * bytes.len() as u64;
+            reads.push((bytes.to_vec(), time));
+            time += pause;
+        };
+        read(&REQUEST, 5_000);
+        read(&ANSWER[..6], 4_000);
+        read(&ANSWER[6..], 5_000);
+        for _ in 0..1_100 {
+            read(&REQUEST, 5_000);
+            read(&ANSWER, 5_000);
+        }
+        read(&REQUEST[..6], 5_000);
+        read(&REQUEST, 5_000);
+        let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
+        let out = timed_frames(&pieces);
+        assert_eq!(out[1], (ANSWER.to_vec(), None));
         assert!(
             out.ends_with(&[
                 (REQUEST[..6].to_vec(), Some(Broken::Incomplete)),
