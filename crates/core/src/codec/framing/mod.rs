@@ -858,36 +858,54 @@ mod tests {
         assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes[..] == REQUEST[..]));
     }
 
+    /// The frames of pieces read one a read, each read at its last byte (one character a
+    /// byte at 19200 8E1), with the silence after it in us: a line read a frame at a time.
+    fn read_at_their_ends(pieces: &[(&[u8], u64)]) -> Vec<(Vec<u8>, Option<Broken>)> {
+        let mut time = 0;
+        let reads: Vec<(&[u8], u64)> = pieces
+            .iter()
+            .map(|(bytes, silence)| {
+                time += 573 * bytes.len() as u64;
+                let read_at = time;
+                time += silence;
+                (*bytes, read_at)
+            })
+            .collect();
+        timed_frames(&reads)
+    }
+
+    /// The exchanges of a busy line, each frame followed by 5 ms of silence.
+    fn exchanges(count: usize) -> Vec<(&'static [u8], u64)> {
+        [(&REQUEST[..], 5_000), (&ANSWER[..], 5_000)].repeat(count)
+    }
+
+    /// Whether `out` ends with a request cut short and ended by its silence, then the
+    /// request whole: the line's silences are believed.
+    fn ends_with_a_cut_request_told(out: &[(Vec<u8>, Option<Broken>)]) -> bool {
+        out.ends_with(&[
+            (REQUEST[..6].to_vec(), Some(Broken::Incomplete)),
+            (REQUEST.to_vec(), None),
+        ])
+    }
+
     #[test]
     fn one_frame_by_chance_across_a_silence_in_many_does_not_make_the_gaps_lie() {
-        // A line read a frame at a time, each read at the end of its frame (a UART with a
-        // FIFO, an adapter that hands bytes over when the line goes quiet): 300 frames,
-        // then the answer cut one byte short, silence, and a piece whose first byte passes
-        // the answer's CRC with it. One such frame in 300 is chance, not an adapter's
-        // latency timer: a request cut short later is still ended by the silence after it.
-        let mut reads: Vec<(Vec<u8>, u64)> = Vec::new();
-        let mut time = 0;
-        let mut read = |bytes: &[u8]| {
-            time += 573 * bytes.len() as u64;
-            reads.push((bytes.to_vec(), time));
-            time += 5_000;
-        };
-        for _ in 0..150 {
-            read(&REQUEST);
-            read(&ANSWER);
-        }
-        read(&REQUEST);
-        read(&ANSWER[..10]);
-        read(&[ANSWER[10], 0x03, 0x00]);
-        read(&REQUEST[..6]);
-        read(&REQUEST);
-        let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
-        let out = timed_frames(&pieces);
+        // A line read a frame at a time (a UART with a FIFO, an adapter that hands bytes
+        // over when the line goes quiet): 300 frames, then the answer cut one byte short,
+        // silence, and a piece whose first byte passes the answer's CRC with it. One such
+        // frame in 300 is chance, not an adapter's latency timer: a request cut short later
+        // is still ended by the silence after it.
+        let mut pieces = exchanges(150);
+        pieces.extend([
+            (&REQUEST[..], 5_000),
+            (&ANSWER[..10], 5_000),
+            (&[ANSWER[10], 0x03, 0x00][..], 5_000),
+            (&REQUEST[..6], 5_000),
+            (&REQUEST[..], 5_000),
+        ]);
+        let out = read_at_their_ends(&pieces);
         assert!(
-            out.ends_with(&[
-                (REQUEST[..6].to_vec(), Some(Broken::Incomplete)),
-                (REQUEST.to_vec(), None),
-            ]),
+            ends_with_a_cut_request_told(&out),
             "{:?}",
             &out[out.len() - 4..]
         );
@@ -897,30 +915,17 @@ mod tests {
     fn a_device_that_paused_once_inside_its_first_frame_leaves_the_later_silences_believed() {
         // Read a frame at a time: the first answer with a 4 ms pause inside it, taken whole
         // across it; then 2,200 frames; then a request cut short and ended by silence.
-        let mut reads: Vec<(Vec<u8>, u64)> = Vec::new();
-        let mut time = 0;
-        let mut read = |bytes: &[u8], pause: u64| {
-            time += 573 * bytes.len() as u64;
-            reads.push((bytes.to_vec(), time));
-            time += pause;
-        };
-        read(&REQUEST, 5_000);
-        read(&ANSWER[..6], 4_000);
-        read(&ANSWER[6..], 5_000);
-        for _ in 0..1_100 {
-            read(&REQUEST, 5_000);
-            read(&ANSWER, 5_000);
-        }
-        read(&REQUEST[..6], 5_000);
-        read(&REQUEST, 5_000);
-        let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
-        let out = timed_frames(&pieces);
+        let mut pieces = vec![
+            (&REQUEST[..], 5_000),
+            (&ANSWER[..6], 4_000),
+            (&ANSWER[6..], 5_000),
+        ];
+        pieces.extend(exchanges(1_100));
+        pieces.extend([(&REQUEST[..6], 5_000), (&REQUEST[..], 5_000)]);
+        let out = read_at_their_ends(&pieces);
         assert_eq!(out[1], (ANSWER.to_vec(), None));
         assert!(
-            out.ends_with(&[
-                (REQUEST[..6].to_vec(), Some(Broken::Incomplete)),
-                (REQUEST.to_vec(), None),
-            ]),
+            ends_with_a_cut_request_told(&out),
             "{:?}",
             &out[out.len() - 4..]
         );
