@@ -439,9 +439,12 @@ impl Framer {
         if i + 1 == self.buffer.len() {
             return self.quiet;
         }
-        if self.gaps_lie() {
-            return false;
-        }
+        !self.gaps_lie() && self.timed_gap_after(i)
+    }
+
+    /// Whether the times of byte `i` and the byte after it, both in the buffer, are a
+    /// silence apart, whether or not this line's gaps are believed.
+    fn timed_gap_after(&self, i: usize) -> bool {
         match (self.time(i), self.time(i + 1)) {
             (Some(a), Some(b)) => self.is_silence(a, b),
             _ => false,
@@ -487,14 +490,16 @@ impl Framer {
                     };
                     if broken.is_none() {
                         self.turn(&found);
-                        // Whole across a silence, on a line read in bursts: the times
-                        // do not tell this line's silences (they are kept all the same,
-                        // to be shown).
+                        // Whole across a gap its times show as silence, on a line read in
+                        // bursts: while such frames are more than chance, the times do not
+                        // tell this line's silences (they are kept all the same, to be
+                        // shown). Counted from the times themselves, so that the count
+                        // goes on while the gaps are not believed.
                         self.frames_taken += 1;
                         if self.ends_cut_frames
                             && self.mode == Mode::Rtu
                             && self.bursts
-                            && self.silence_inside(at, at + len)
+                            && (at..at + len - 1).any(|i| self.timed_gap_after(i))
                         {
                             self.crossings += 1;
                             if self.crossings * CROSSINGS_PER_ADAPTER >= self.frames_taken {
@@ -929,6 +934,31 @@ mod tests {
             "{:?}",
             &out[out.len() - 4..]
         );
+    }
+
+    #[test]
+    fn behind_a_usb_adapter_the_gaps_stay_unbelieved_past_two_thousand_frames() {
+        // Every answer split by a 16 ms tick, for 6,000 frames: the frames across gaps go
+        // on being counted while the gaps are not believed, so the line stays an adapter's.
+        let mut framer = framer(Mode::Rtu);
+        framer.end_cut_frames();
+        let mut out = Vec::new();
+        let mut tick = 0;
+        for exchange in 0..3_000 {
+            for piece in [&REQUEST[..], &ANSWER[..4], &ANSWER[4..]] {
+                tick += 16_000;
+                framer.push_at(piece, tick, &mut out);
+            }
+            assert!(
+                framer.gaps_lie(),
+                "gaps believed again at exchange {exchange}"
+            );
+        }
+        let whole = out
+            .iter()
+            .filter(|event| matches!(event, Event::Frame(f) if f.broken.is_none()))
+            .count();
+        assert_eq!(whole, 6_000);
     }
 
     #[test]
