@@ -479,9 +479,9 @@ struct Batches {
 }
 
 impl Batches {
-    /// Hands the records found so far over, once they make a batch (`at_least`).
+    /// Hands the records found so far over, once there are `at_least` of them (1 or more).
     fn hand_over(&mut self, at_least: usize) -> io::Result<()> {
-        if self.records.is_empty() || self.records.len() < at_least {
+        if self.records.len() < at_least.max(1) {
             return Ok(());
         }
         let empty = self.written.try_recv().unwrap_or_default();
