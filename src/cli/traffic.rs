@@ -54,7 +54,9 @@ all the same, and noise or a cut frame never costs the frame after it. Since ran
 pass a CRC once in 65,536 tries, a frame found right after noise, or of a function whose \
 layout is not known (user-defined 65-72 and 100-110), is only taken when what follows \
 supports it: 3.5 characters of silence on a live line, a frame right after it, the end of \
-the input, or, for a request, its answer. A frame whose CRC fails is shown as a CRC error \
+the input, or, for a request, its answer. A request whose CRC holds but whose PDU does not \
+read (a master's mistake, such as a coil value of 0004) is shown after noise only when its \
+slave's exception follows it at once. A frame whose CRC fails is shown as a CRC error \
 where the conversation expects a frame (a request in turn, the answer a request awaits); \
 elsewhere its bytes are noise. On a live line (or a replay with its .timing), 3.5 \
 characters of silence inside bytes that do not make a whole frame before it end them: they \

@@ -991,6 +991,68 @@ mod tests {
     }
 
     #[test]
+    fn a_malformed_request_after_glued_noise_is_shown_when_its_exception_follows() {
+        // Noise glued before a request whose CRC holds but whose PDU does not read (a coil
+        // value of 0004; function 15 with a byte count of 2 for one coil), then the slave's
+        // exception. The second noise starts as a request of function 21 would, so that the
+        // bytes up to the silence also look like a frame cut short.
+        let coil = rtu(&[0x11, 0x05, 0x01, 0x69, 0x00, 0x04]);
+        let coil_refused = rtu(&[0x11, 0x85, 0x03]);
+        let coils = rtu(&[0x03, 0x0F, 0x00, 0x01, 0x00, 0x01, 0x02, 0x00, 0x00]);
+        let coils_refused = rtu(&[0x03, 0x8F, 0x04]);
+        let first_noise = [0x8D, 0xB8, 0x0A, 0xD7, 0x97, 0x59];
+        let second_noise = [0x44, 0x15, 0x95, 0xCE, 0x7F, 0x52];
+        let lines: [&[u8]; 8] = [
+            &REQUEST,
+            &ANSWER,
+            &[&first_noise[..], &coil].concat(),
+            &coil_refused,
+            &[&second_noise[..], &coils].concat(),
+            &coils_refused,
+            &REQUEST,
+            &ANSWER,
+        ];
+        let shown = |out: &[(Vec<u8>, Option<Broken>)]| {
+            out.iter()
+                .filter(|(_, broken)| broken.is_none())
+                .map(|(bytes, _)| bytes.clone())
+                .collect::<Vec<_>>()
+        };
+        let expected = [
+            REQUEST.to_vec(),
+            ANSWER.to_vec(),
+            coil.clone(),
+            coil_refused.clone(),
+            coils.clone(),
+            coils_refused.clone(),
+            REQUEST.to_vec(),
+            ANSWER.to_vec(),
+        ];
+        // The bytes alone, and each byte read alone with a silence after every line.
+        let all_at_once: Vec<(Vec<u8>, Option<Broken>)> = frames(&lines.concat())
+            .into_iter()
+            .map(|f| (f, None))
+            .collect();
+        assert_eq!(shown(&all_at_once), expected);
+        let mut reads: Vec<(Vec<u8>, u64)> = Vec::new();
+        let mut time = 0;
+        for line in lines {
+            for byte in line {
+                time += 573;
+                reads.push((vec![*byte], time));
+            }
+            time += 5_000;
+        }
+        let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
+        let timed = timed_frames(&pieces);
+        assert_eq!(shown(&timed), expected, "{timed:?}");
+        assert!(
+            timed.iter().all(|(_, broken)| broken.is_none()),
+            "{timed:?}"
+        );
+    }
+
+    #[test]
     fn read_a_byte_at_a_time_a_silence_inside_a_frame_ends_it() {
         // A device pauses 3 ms inside its answer; later, a frame of function 72 followed by
         // silence and a frame cut short. Each byte is read alone, one character apart, so

@@ -40,7 +40,7 @@ impl Framer {
             return Tell::No;
         }
         if candidate.known_layout && !pdu_reads(frame, candidate.direction, !in_step) {
-            return Tell::No;
+            return self.refused_right_after(end, self.asked_by(at, candidate));
         }
         let tell = self.followed_or_answered(at, candidate, depth, in_step);
         // Nor may it swallow a whole frame, unless it is the answer awaited. What follows
@@ -220,6 +220,19 @@ impl Framer {
             Some(_) => Tell::No,
             None if self.last_bytes_may_grow() => Tell::NotYet,
             None => Tell::No,
+        }
+    }
+
+    /// Whether the exception answering `asked` starts right at `at`: a request whose PDU
+    /// does not read (a coil value of 0004, a byte count its quantity does not give) is the
+    /// master's mistake, to be shown, when its slave refuses it at once; noise glued before
+    /// it takes away the step that would otherwise vouch for it.
+    /// Bus: a master sending a malformed request, and the slave's exception 03.
+    pub(super) fn refused_right_after(&self, at: usize, asked: Option<(u8, u8)>) -> Tell {
+        match (asked, self.buffer.get(at + 1)) {
+            (None, _) => Tell::No,
+            (Some(_), Some(function)) if function & EXCEPTION_FLAG == 0 => Tell::No,
+            (Some(asked), _) => self.answer_at(at, asked),
         }
     }
 

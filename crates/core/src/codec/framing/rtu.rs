@@ -415,19 +415,41 @@ impl Framer {
         } else {
             None
         };
+        let whole_inside =
+            || self.inner_frame_end(at, end).is_some() || self.holds_unknown_frame(at, end);
         match direction {
-            Some(direction)
-                if self.inner_frame_end(at, end).is_none()
-                    && !self.holds_unknown_frame(at, end) =>
-            {
-                Look::Frame {
+            Some(direction) if !whole_inside() => match self.refused_request_ends(at, end) {
+                Tell::No => Look::Frame {
                     len: end - at,
                     broken: Some(Broken::Incomplete),
                     direction: Some(direction),
-                }
-            }
+                },
+                Tell::NotYet => Look::NeedMore,
+                Tell::Yes => Look::Noise,
+            },
             _ => Look::Noise,
         }
+    }
+
+    /// Whether a request of known layout, its CRC sound but its PDU not, starts after `at`
+    /// and ends at `end`, and its slave refuses it right after: then the bytes before it are
+    /// noise glued to it, not the start of a frame cut short.
+    fn refused_request_ends(&self, at: usize, end: usize) -> Tell {
+        for inner in at + 1..end.saturating_sub(MIN_RTU_FRAME - 1) {
+            let len = end - inner;
+            let request = &self.buffer[inner..end];
+            if rtu_frame_length(request, Direction::Request) == Length::Known(len)
+                && self.crc_holds_at(inner, len)
+                && !pdu_reads(request, Some(Direction::Request), true)
+            {
+                let asked = (request[0], request[1]);
+                match self.refused_right_after(end, Some(asked)) {
+                    Tell::No => {}
+                    tell => return tell,
+                }
+            }
+        }
+        Tell::No
     }
 
     /// The bytes at `at` as a frame of known layout whose CRC fails, or else as noise. A
