@@ -6,6 +6,7 @@ use crate::codec::function::{
     self, ENCAPSULATED_INTERFACE, EXCEPTION_FLAG, MEI_READ_DEVICE_IDENTIFICATION,
 };
 use crate::codec::limits::MAX_RTU_ADU;
+use crate::codec::pdu::Values;
 use crate::codec::{Direction, Pdu};
 
 use super::{Candidate, Framer, MAX_SLAVE};
@@ -341,7 +342,7 @@ pub(super) fn pdu_reads(frame: &[u8], direction: Option<Direction>, after_noise:
     let Some(pdu) = frame.get(1..frame.len().saturating_sub(2)) else {
         return false;
     };
-    let reads = |direction| match Pdu::decode(pdu, direction) {
+    let reads = |direction| match Pdu::read(pdu, direction, Values::Skipped) {
         Ok(Pdu::Exception(exception)) => {
             !after_noise
                 || (exception.code.is_defined() && function::is_defined(exception.function))

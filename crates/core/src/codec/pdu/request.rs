@@ -7,7 +7,7 @@ use crate::codec::{bits, limits, Direction};
 use super::wire::{
     check_layout_length, check_normal_function, check_pdu_len, check_quantity, check_range,
     check_read, coil_from_word, coil_word, counted_exactly, counted_registers, len_u8, quantity_of,
-    Reader, Writer,
+    Reader, Values, Writer,
 };
 use super::Request;
 
@@ -130,7 +130,11 @@ impl Request {
 
     /// Reads a request PDU.
     pub fn decode(pdu: &[u8]) -> Result<Request, PduError> {
-        let mut r = Reader::new(pdu)?;
+        Self::read(pdu, Values::Kept)
+    }
+
+    pub(crate) fn read(pdu: &[u8], values: Values) -> Result<Request, PduError> {
+        let mut r = Reader::new(pdu, values)?;
         check_normal_function(r.function)?;
         let request = match r.function {
             READ_COILS | READ_DISCRETE_INPUTS => {
@@ -163,7 +167,10 @@ impl Request {
             REPORT_SERVER_ID => Request::ReportServerId,
             DIAGNOSTICS => Request::Diagnostics {
                 sub_function: r.u16()?,
-                data: r.rest().to_vec(),
+                data: {
+                    let rest = r.rest();
+                    r.owned(rest)
+                },
             },
             WRITE_MULTIPLE_COILS => {
                 let (address, quantity) = (r.u16()?, r.u16()?);
@@ -172,7 +179,7 @@ impl Request {
                 let packed = counted_exactly(&mut r, usize::from(quantity).div_ceil(8), quantity)?;
                 Request::WriteMultipleCoils {
                     address,
-                    values: bits::unpack(packed, usize::from(quantity)),
+                    values: r.bits(packed, usize::from(quantity)),
                 }
             }
             WRITE_MULTIPLE_REGISTERS => {
@@ -215,7 +222,10 @@ impl Request {
                 check_layout_length(pdu, Direction::Request)?;
                 Request::Other {
                     function,
-                    data: r.rest().to_vec(),
+                    data: {
+                        let rest = r.rest();
+                        r.owned(rest)
+                    },
                 }
             }
         };

@@ -7,7 +7,7 @@ use crate::codec::{bits, limits, Direction};
 
 use super::wire::{
     check_layout_length, check_normal_function, check_pdu_len, check_quantity, check_range,
-    coil_from_word, coil_word, len_u8, quantity_of, Reader, Writer,
+    coil_from_word, coil_word, len_u8, quantity_of, Reader, Values, Writer,
 };
 use super::{DeviceIdentification, DeviceObject, Exception, Response};
 
@@ -111,17 +111,22 @@ impl Response {
 
     /// Reads a normal response PDU.
     pub fn decode(pdu: &[u8]) -> Result<Response, PduError> {
-        let mut r = Reader::new(pdu)?;
+        Self::read(pdu, Values::Kept)
+    }
+
+    pub(crate) fn read(pdu: &[u8], values: Values) -> Result<Response, PduError> {
+        let mut r = Reader::new(pdu, values)?;
         check_normal_function(r.function)?;
         let response = match r.function {
             READ_COILS | READ_DISCRETE_INPUTS => {
-                let packed = r.counted_rest()?.to_vec();
+                let packed = r.counted_rest()?;
                 if packed.is_empty() || packed.len() > limits::MAX_READ_BITS_BYTES {
                     return Err(PduError::BadByteCount {
                         function: r.function,
                         byte_count: len_u8(packed.len(), 255).unwrap_or(u8::MAX),
                     });
                 }
+                let packed = r.owned(packed);
                 if r.function == READ_COILS {
                     Response::ReadCoils { packed }
                 } else {
@@ -137,10 +142,7 @@ impl Response {
                         byte_count: len_u8(data.len(), 255).unwrap_or(u8::MAX),
                     });
                 }
-                let values = data
-                    .chunks_exact(2)
-                    .map(|b| u16::from_be_bytes([b[0], b[1]]))
-                    .collect();
+                let values = r.words(data);
                 match function {
                     READ_HOLDING_REGISTERS => Response::ReadHoldingRegisters { values },
                     READ_INPUT_REGISTERS => Response::ReadInputRegisters { values },
@@ -158,7 +160,10 @@ impl Response {
             READ_EXCEPTION_STATUS => Response::ReadExceptionStatus { status: r.u8()? },
             DIAGNOSTICS => Response::Diagnostics {
                 sub_function: r.u16()?,
-                data: r.rest().to_vec(),
+                data: {
+                    let rest = r.rest();
+                    r.owned(rest)
+                },
             },
             WRITE_MULTIPLE_COILS | WRITE_MULTIPLE_REGISTERS => {
                 let function = r.function;
@@ -176,9 +181,12 @@ impl Response {
                     Response::WriteMultipleRegisters { address, quantity }
                 }
             }
-            REPORT_SERVER_ID => Response::ReportServerId {
-                data: r.counted_rest()?.to_vec(),
-            },
+            REPORT_SERVER_ID => {
+                let data = r.counted_rest()?;
+                Response::ReportServerId {
+                    data: r.owned(data),
+                }
+            }
             MASK_WRITE_REGISTER => Response::MaskWriteRegister {
                 address: r.u16()?,
                 and_mask: r.u16()?,
@@ -195,14 +203,17 @@ impl Response {
                 };
                 let next_object_id = r.u8()?;
                 let count = r.u8()?;
-                let mut objects = Vec::with_capacity(usize::from(count));
+                let mut objects = Vec::new();
                 for _ in 0..count {
                     let id = r.u8()?;
                     let len = usize::from(r.u8()?);
-                    objects.push(DeviceObject {
-                        id,
-                        value: r.take(len)?.to_vec(),
-                    });
+                    let value = r.take(len)?;
+                    if r.keeps() {
+                        objects.push(DeviceObject {
+                            id,
+                            value: value.to_vec(),
+                        });
+                    }
                 }
                 Response::ReadDeviceIdentification(DeviceIdentification {
                     read_code,
@@ -216,7 +227,10 @@ impl Response {
                 check_layout_length(pdu, Direction::Response)?;
                 Response::Other {
                     function,
-                    data: r.rest().to_vec(),
+                    data: {
+                        let rest = r.rest();
+                        r.owned(rest)
+                    },
                 }
             }
         };
@@ -252,7 +266,7 @@ impl Exception {
 
     /// Reads an exception PDU: a function code with 0x80 set, then the exception code.
     pub fn decode(pdu: &[u8]) -> Result<Exception, PduError> {
-        let mut r = Reader::new(pdu)?;
+        let mut r = Reader::new(pdu, Values::Kept)?;
         if r.function & EXCEPTION_FLAG == 0 {
             return Err(PduError::BadField(
                 "an exception has bit 7 of its function set",

@@ -4,8 +4,8 @@
 use crate::codec::error::PduError;
 use crate::codec::function::*;
 use crate::codec::length::{pdu_length, Length};
-use crate::codec::limits;
 use crate::codec::Direction;
+use crate::codec::{bits, limits};
 
 #[inline]
 pub(super) fn check_quantity(quantity: u16, max: u16) -> Result<(), PduError> {
@@ -83,23 +83,74 @@ impl Writer<'_> {
     }
 }
 
+/// What a decode keeps of a PDU's variable parts (registers, bits, data bytes).
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Values {
+    /// All of them: the PDU as it is.
+    Kept,
+    /// None: every field is read and checked as for `Kept`, and the lists are left empty,
+    /// so that asking whether bytes read costs no allocation. Such a PDU is only asked
+    /// whether it read, never shown.
+    Skipped,
+}
+
 /// Reads a PDU's fields in order; running short is an error, never a panic.
 pub(super) struct Reader<'a> {
     pub(super) function: u8,
     bytes: &'a [u8],
     pos: usize,
+    values: Values,
 }
 
 impl<'a> Reader<'a> {
     /// A reader positioned after the function code.
     #[inline]
-    pub(super) fn new(pdu: &'a [u8]) -> Result<Self, PduError> {
+    pub(super) fn new(pdu: &'a [u8], values: Values) -> Result<Self, PduError> {
         let function = *pdu.first().ok_or(PduError::Empty)?;
         Ok(Self {
             function,
             bytes: pdu,
             pos: 1,
+            values,
         })
+    }
+
+    /// Whether the values read are kept.
+    #[inline]
+    pub(super) fn keeps(&self) -> bool {
+        self.values == Values::Kept
+    }
+
+    /// `bytes` as a value of the PDU.
+    #[inline]
+    pub(super) fn owned(&self, bytes: &[u8]) -> Vec<u8> {
+        if self.keeps() {
+            bytes.to_vec()
+        } else {
+            Vec::new()
+        }
+    }
+
+    /// Big-endian 16-bit words, two bytes each, as values of the PDU.
+    #[inline]
+    pub(super) fn words(&self, bytes: &[u8]) -> Vec<u16> {
+        if !self.keeps() {
+            return Vec::new();
+        }
+        bytes
+            .chunks_exact(2)
+            .map(|b| u16::from_be_bytes([b[0], b[1]]))
+            .collect()
+    }
+
+    /// The first `count` bits of `packed` as values of the PDU.
+    #[inline]
+    pub(super) fn bits(&self, packed: &[u8], count: usize) -> Vec<bool> {
+        if self.keeps() {
+            bits::unpack(packed, count)
+        } else {
+            Vec::new()
+        }
     }
 
     #[inline]
@@ -127,11 +178,8 @@ impl<'a> Reader<'a> {
 
     #[inline]
     pub(super) fn registers(&mut self, count: usize) -> Result<Vec<u16>, PduError> {
-        Ok(self
-            .take(count * 2)?
-            .chunks_exact(2)
-            .map(|b| u16::from_be_bytes([b[0], b[1]]))
-            .collect())
+        let bytes = self.take(count * 2)?;
+        Ok(self.words(bytes))
     }
 
     #[inline]
