@@ -457,6 +457,16 @@ impl Framer {
     /// must end where a frame, silence or the end of the input follows, and hold no valid
     /// frame. Random bytes are noise.
     pub(super) fn broken_or_noise(&self, at: usize, in_step: bool) -> Look {
+        // A sound frame right after this byte settles it: a broken frame from here would
+        // hold that frame or run into it, and neither is taken. Far cheaper to ask than
+        // the search, and the common case (a glitch byte at a turnaround). Not where the
+        // times show a gap inside them, which the rules about silence decide.
+        let sound_next = self
+            .known_frame_len(at + 1, self.buffer.len())
+            .is_some_and(|len| !(at..at + len).any(|i| self.timed_gap_after(i)));
+        if sound_next {
+            return Look::Noise;
+        }
         match self.broken(at, in_step) {
             (Tell::Yes, Some((len, direction))) => Look::Frame {
                 len,
