@@ -196,7 +196,7 @@ impl DecodeWriter {
             writeln!(
                 out,
                 "{}",
-                self.values_table(values, report.fields.address, table_of)
+                self.values_table(values, &report.fields, table_of)
             )?;
         }
         Ok(())
@@ -224,11 +224,11 @@ impl DecodeWriter {
     fn values_table(
         &self,
         values: &Values,
-        address: Option<u16>,
+        fields: &Fields,
         table_of: Option<Table>,
     ) -> comfy_table::Table {
         let mut table = new_table(self.style.colour);
-        let located = address.zip(table_of);
+        let located = fields.address.zip(table_of);
         let place = |offset: usize| -> Vec<String> {
             match located {
                 Some((start, table)) => {
@@ -270,19 +270,17 @@ impl DecodeWriter {
             Values::Bits(bits) => {
                 // A row per byte as it stands in the frame: first bit on the left. The last
                 // byte's bits past the values are padding (or, the request not seen, not
-                // known to be values), so its byte is not made up from the values.
+                // known to be values): its byte is the frame's, never made up from the
+                // values.
                 header.extend(["byte".to_string(), "bits (first to last)".to_string()]);
                 table.set_header(header);
+                let packed = fields.packed.as_deref().unwrap_or_default();
                 for (i, chunk) in bits.chunks(8).enumerate() {
-                    let byte = chunk
-                        .iter()
-                        .enumerate()
-                        .fold(0u8, |byte, (bit, on)| byte | (*on & 1) << bit);
                     let shown: Vec<String> = chunk.iter().map(ToString::to_string).collect();
                     let mut row = place(i * 8);
-                    row.push(match chunk.len() {
-                        8 => format!("{byte:02X}"),
-                        _ => String::new(),
+                    row.push(match packed.get(i) {
+                        Some(byte) => format!("{byte:02X}"),
+                        None => String::new(),
                     });
                     row.push(shown.join(" "));
                     table.add_row(row);

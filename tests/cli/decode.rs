@@ -336,6 +336,32 @@ fn functions_kept_byte_for_byte_read_only_the_way_their_length_allows() {
 }
 
 #[test]
+fn a_bit_table_shows_every_byte_as_the_frame_has_it_padding_included() {
+    // 10 coils: the last byte holds 2 values and 6 padding bits, set here (FD), so that a
+    // byte made up from the values (01), or none, would show. The write's last byte is 01.
+    let request = rtu(&[0x11, 0x01, 0x00, 0x13, 0x00, 0x0A]);
+    let answer = rtu(&[0x11, 0x01, 0x02, 0xCD, 0xFD]);
+    let write = rtu(&[0x11, 0x0F, 0x00, 0x13, 0x00, 0x0A, 0x02, 0xCD, 0x01]);
+    let lines = format!("{request}\n{answer}\n{answer}\n{write}\n");
+    let run = decode(&["-o", "table"], lines.as_bytes());
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    // Each table row's cells, between its borders.
+    let rows: Vec<Vec<&str>> = run
+        .stdout
+        .lines()
+        .filter(|line| line.starts_with('│'))
+        .map(|line| line.trim_matches('│').split('┆').map(str::trim).collect())
+        .collect();
+    let has = |cells: &[&str]| rows.iter().any(|row| row.as_slice() == cells);
+    // The answer after its request: 10 coils, its last byte as sent.
+    assert!(has(&["000028", "27", "FD", "1 0"]), "{}", run.stdout);
+    // The same answer alone: the bits sure to be values, the byte as sent.
+    assert!(has(&["8", "FD", "1"]), "{}", run.stdout);
+    // The write of 10 coils.
+    assert!(has(&["000028", "27", "01", "1 0"]), "{}", run.stdout);
+}
+
+#[test]
 fn an_answer_after_its_request_reads_with_the_request_addresses_and_quantity() {
     // 10 coils from 0x0013; the answer's last byte holds 2 values and 6 padding bits, set
     // here so that a padding bit taken for a coil would show.

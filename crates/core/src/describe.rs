@@ -103,6 +103,10 @@ pub struct Fields {
     /// The values written or read.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub values: Option<Values>,
+    /// The bytes that carry the bits of a coil or input frame, as the frame has them, the
+    /// padding bits of the last included: what a table of its bytes shows.
+    #[serde(skip)]
+    pub packed: Option<SmallVec<[u8; 4]>>,
     /// The exception code of an exception response.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub exception: Option<u8>,
@@ -403,6 +407,7 @@ fn response_fields(response: &Response) -> Fields {
             let sure = packed.len().saturating_sub(1) * 8 + usize::from(!packed.is_empty());
             f.max_count = u16::try_from(packed.len() * 8).ok();
             f.values = Some(Values::bits(&bits::unpack(packed, sure)));
+            f.packed = Some(SmallVec::from_slice(packed));
         }
         Response::ReadHoldingRegisters { values }
         | Response::ReadInputRegisters { values }
@@ -572,6 +577,11 @@ pub fn describe_reading(mode: Mode, envelope: &Envelope, reading: Reading) -> Fr
     let mut report = opened(mode, envelope);
     let function = report.function;
     match reading {
+        Reading::One(Pdu::Request(request @ Request::WriteMultipleCoils { .. })) => {
+            report.fields = request_fields(&request);
+            // The bits as the frame packs them: the bytes after its byte count.
+            report.fields.packed = envelope.pdu.get(6..).map(SmallVec::from_slice);
+        }
         Reading::One(pdu) => (report.kind, report.fields) = describe_pdu(&pdu),
         Reading::Both { request, response } => {
             report.kind = Kind::Request;
