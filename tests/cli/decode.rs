@@ -318,6 +318,41 @@ fn functions_kept_byte_for_byte_read_only_the_way_their_length_allows() {
         assert_eq!(json["kind"], kind, "{json}");
         assert!(json.get("ambiguous").is_none(), "{json}");
     }
+    // Read File Record's byte count fits both ways: its groups tell, 7 bytes each in a
+    // request, a length and as many bytes in its answer (the manual's frames). A group
+    // without reference type 06 is neither.
+    let read_request = [
+        0x11, 0x14, 0x0E, 0x06, 0x00, 0x04, 0x00, 0x01, 0x00, 0x02, 0x06, 0x00, 0x03, 0x00, 0x09,
+        0x00, 0x02,
+    ];
+    let read_answer = [
+        0x11, 0x14, 0x0C, 0x05, 0x06, 0x0D, 0xFE, 0x00, 0x20, 0x05, 0x06, 0x33, 0xCD, 0x00, 0x40,
+    ];
+    for (body, kind) in [(&read_request[..], "request"), (&read_answer, "response")] {
+        let (json, code) = decode_one(&rtu(body));
+        assert_eq!(code, 0, "{json}");
+        assert_eq!(json["kind"], kind, "{json}");
+        assert!(json.get("ambiguous").is_none(), "{json}");
+    }
+    let mut no_reference = read_request;
+    no_reference[10] = 0x07;
+    let (json, code) = decode_one(&rtu(&no_reference));
+    assert_eq!(code, 4, "{json}");
+    assert!(
+        json["error"]
+            .as_str()
+            .unwrap()
+            .contains("reference type 06"),
+        "{json}"
+    );
+    // Write File Record's answer echoes its request: it reads both ways, and says so.
+    let write = [
+        0x11, 0x15, 0x0D, 0x06, 0x00, 0x04, 0x00, 0x07, 0x00, 0x03, 0x06, 0xAF, 0x04, 0xBE, 0x10,
+        0x0D,
+    ];
+    let (json, code) = decode_one(&rtu(&write));
+    assert_eq!(code, 0, "{json}");
+    assert_eq!(json["ambiguous"], true, "{json}");
     // Asked to read one the other way, it is told why not.
     let run = decode(
         &[

@@ -245,8 +245,55 @@ pub(super) fn check_layout_length(pdu: &[u8], direction: Direction) -> Result<()
             needed,
             actual: pdu.len(),
         }),
-        _ => Ok(()),
+        _ => file_record_groups(pdu, direction),
     }
+}
+
+/// The file records' groups after the byte count, each of reference type 06: what tells a
+/// Read File Record request (7 bytes a group) from its answer (a length, then that many
+/// bytes), whose byte counts fit either way.
+fn file_record_groups(pdu: &[u8], direction: Direction) -> Result<(), PduError> {
+    const REFERENCE_TYPE: u8 = 0x06;
+    let layout = match (pdu.first().copied(), direction) {
+        (Some(READ_FILE_RECORD), Direction::Request) => {
+            "a Read File Record request is groups of 7 bytes: reference type 06, file, record \
+             and length"
+        }
+        (Some(READ_FILE_RECORD), Direction::Response) => {
+            "a Read File Record answer is groups of a length, then as many bytes: reference \
+             type 06 and the registers"
+        }
+        (Some(WRITE_FILE_RECORD), _) => {
+            "a Write File Record is groups of reference type 06, file, record, length and as \
+             many registers"
+        }
+        _ => return Ok(()),
+    };
+    let mut rest = pdu.get(2..).unwrap_or_default();
+    let malformed = Err(PduError::BadField(layout));
+    if rest.is_empty() {
+        return malformed;
+    }
+    while !rest.is_empty() {
+        // Each group's length, counted from its reference type.
+        let len = match (pdu[0], direction) {
+            (READ_FILE_RECORD, Direction::Request) => 7,
+            (READ_FILE_RECORD, Direction::Response) => {
+                let len = usize::from(rest[0]);
+                rest = &rest[1..];
+                len
+            }
+            _ => match rest.get(5..7) {
+                Some(&[hi, lo]) => 7 + 2 * usize::from(u16::from_be_bytes([hi, lo])),
+                _ => return malformed,
+            },
+        };
+        match rest.get(..len) {
+            Some(group) if group.first() == Some(&REFERENCE_TYPE) => rest = &rest[len..],
+            _ => return malformed,
+        }
+    }
+    Ok(())
 }
 
 #[inline]
