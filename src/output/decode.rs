@@ -20,7 +20,7 @@ pub struct DecodeWriter {
 }
 
 const CSV_HEADER: &str =
-    "mode,kind,slave,function,valid,address,ref,count,max_count,values,exception,error";
+    "mode,kind,slave,function,valid,address,ref,count,max_count,values,exception,error,ambiguous";
 
 impl DecodeWriter {
     pub fn new(style: Style) -> Self {
@@ -108,7 +108,7 @@ impl DecodeWriter {
         let values = f.values.as_ref().map(|v| self.value_strings(v).join(" "));
         writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
             report.mode,
             report.kind.name(),
             report.slave,
@@ -121,6 +121,7 @@ impl DecodeWriter {
             csv_field(&opt(values)),
             opt(f.exception.map(|e| e.to_string())),
             csv_field(&opt(report.error.clone())),
+            report.ambiguous,
         )
     }
 
