@@ -275,14 +275,19 @@ impl DecodeWriter {
                 // values.
                 header.extend(["byte".to_string(), "bits (first to last)".to_string()]);
                 table.set_header(header);
-                let packed = fields.packed.as_deref().unwrap_or_default();
                 for (i, chunk) in bits.chunks(8).enumerate() {
+                    let byte = match chunk.len() {
+                        8 => Some(
+                            chunk
+                                .iter()
+                                .enumerate()
+                                .fold(0u8, |byte, (bit, on)| byte | (*on & 1) << bit),
+                        ),
+                        _ => fields.last_packed,
+                    };
                     let shown: Vec<String> = chunk.iter().map(ToString::to_string).collect();
                     let mut row = place(i * 8);
-                    row.push(match packed.get(i) {
-                        Some(byte) => format!("{byte:02X}"),
-                        None => String::new(),
-                    });
+                    row.push(byte.map(|byte| format!("{byte:02X}")).unwrap_or_default());
                     row.push(shown.join(" "));
                     table.add_row(row);
                 }

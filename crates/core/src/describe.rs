@@ -103,10 +103,11 @@ pub struct Fields {
     /// The values written or read.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub values: Option<Values>,
-    /// The bytes that carry the bits of a coil or input frame, as the frame has them, the
-    /// padding bits of the last included: what a table of its bytes shows.
+    /// The last byte that carries the bits of a coil or input frame, as the frame has it:
+    /// its bits past the values are padding (or not known to be values), so it cannot be
+    /// made up from the values, as the bytes before it can. For a table of the bytes.
     #[serde(skip)]
-    pub packed: Option<SmallVec<[u8; 4]>>,
+    pub last_packed: Option<u8>,
     /// The exception code of an exception response.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub exception: Option<u8>,
@@ -407,7 +408,7 @@ fn response_fields(response: &Response) -> Fields {
             let sure = packed.len().saturating_sub(1) * 8 + usize::from(!packed.is_empty());
             f.max_count = u16::try_from(packed.len() * 8).ok();
             f.values = Some(Values::bits(&bits::unpack(packed, sure)));
-            f.packed = Some(SmallVec::from_slice(packed));
+            f.last_packed = packed.last().copied();
         }
         Response::ReadHoldingRegisters { values }
         | Response::ReadInputRegisters { values }
@@ -579,8 +580,8 @@ pub fn describe_reading(mode: Mode, envelope: &Envelope, reading: Reading) -> Fr
     match reading {
         Reading::One(Pdu::Request(request @ Request::WriteMultipleCoils { .. })) => {
             report.fields = request_fields(&request);
-            // The bits as the frame packs them: the bytes after its byte count.
-            report.fields.packed = envelope.pdu.get(6..).map(SmallVec::from_slice);
+            // Its bits are packed at the end of its PDU.
+            report.fields.last_packed = envelope.pdu.last().copied();
         }
         Reading::One(pdu) => (report.kind, report.fields) = describe_pdu(&pdu),
         Reading::Both { request, response } => {
