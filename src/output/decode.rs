@@ -320,12 +320,21 @@ fn field_rows(f: &Fields) -> Vec<(&'static str, String)> {
         rows.push(("count", count.to_string()));
     }
     if let (Some(values), Some(most)) = (&f.values, f.max_count) {
+        // The last byte's bits that are values or padding, shown as they are, not as values:
+        // an input that is ON must not vanish from view, nor a padding bit become a coil.
+        let sure = values.len();
+        let undecided = match f.last_packed {
+            Some(last) => ((sure + 8).saturating_sub(usize::from(most))..8)
+                .map(|bit| ((last >> bit) & 1).to_string())
+                .collect::<Vec<_>>()
+                .join(" "),
+            None => String::new(),
+        };
         rows.push((
             "count",
             format!(
-                "{} to {most}: the request decides (the bits after the first {} may be padding)",
-                values.len(),
-                values.len()
+                "{sure} to {most}: the request decides (the bits after the first {sure}, \
+                 {undecided}, may be padding)"
             ),
         ));
     }

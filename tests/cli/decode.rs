@@ -390,8 +390,18 @@ fn a_bit_table_shows_every_byte_as_the_frame_has_it_padding_included() {
     let has = |cells: &[&str]| rows.iter().any(|row| row.as_slice() == cells);
     // The answer after its request: 10 coils, its last byte as sent.
     assert!(has(&["000028", "27", "FD", "1 0"]), "{}", run.stdout);
-    // The same answer alone: the bits sure to be values, the byte as sent.
+    // The same answer alone: the bits sure to be values, the byte as sent, and the bits
+    // that are values or padding as they are, not as values.
     assert!(has(&["8", "FD", "1"]), "{}", run.stdout);
+    assert!(
+        has(&[
+            "count",
+            "9 to 16: the request decides (the bits after the first 9, 0 1 1 1 1 1 1, may be \
+             padding)"
+        ]),
+        "{}",
+        run.stdout
+    );
     // The write of 10 coils.
     assert!(has(&["000028", "27", "01", "1 0"]), "{}", run.stdout);
 }
