@@ -1053,6 +1053,46 @@ mod tests {
     }
 
     #[test]
+    fn read_a_byte_at_a_time_a_user_defined_frame_ending_in_00_00_ends_at_its_silence() {
+        // An answer of function 65 whose data ends with the CRC of the bytes before it, so
+        // that its own CRC is 00 00 and the bytes before those pass a CRC too. From the
+        // bytes alone the shorter frame is taken; read a byte at a time, the silence comes
+        // after the 00 00 and not before: they are the answer's own.
+        let request = rtu(&[0x01, 0x41, 0x01, 0x02]);
+        let answer = rtu(&rtu(&[0x01, 0x41, 0xAA, 0xBB]));
+        assert_eq!(answer[6..], [0, 0]);
+        let lines: [&[u8]; 4] = [&request, &answer, &REQUEST, &ANSWER];
+        assert_eq!(frames(&lines.concat())[1], answer[..6].to_vec());
+        let found = |lines: &[&[u8]]| -> Vec<Vec<u8>> {
+            let mut reads: Vec<(Vec<u8>, u64)> = Vec::new();
+            let mut time = 0;
+            for line in lines {
+                for byte in *line {
+                    time += 573;
+                    reads.push((vec![*byte], time));
+                }
+                time += 3_000;
+            }
+            let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
+            timed_frames(&pieces).into_iter().map(|(f, _)| f).collect()
+        };
+        assert_eq!(found(&lines), lines.map(<[u8]>::to_vec));
+        // A longer run of 00 after a frame, up to the silence, is a line held low after
+        // it, not its CRC.
+        let held_low = [&answer[..6], &[0; 5][..]].concat();
+        let lines: [&[u8]; 4] = [&request, &held_low, &REQUEST, &ANSWER];
+        assert_eq!(
+            found(&lines),
+            [
+                request.clone(),
+                answer[..6].to_vec(),
+                REQUEST.to_vec(),
+                ANSWER.to_vec()
+            ]
+        );
+    }
+
+    #[test]
     fn read_a_byte_at_a_time_a_silence_inside_a_frame_ends_it() {
         // A device pauses 3 ms inside its answer; later, a frame of function 72 followed by
         // silence and a frame cut short. Each byte is read alone, one character apart, so

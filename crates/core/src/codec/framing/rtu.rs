@@ -272,9 +272,11 @@ impl Framer {
     }
 
     /// A function without a known layout: every length whose CRC holds, save those that
-    /// only add 00 bytes to a shorter one (the CRC of a frame and its own CRC is zero). No
-    /// length may swallow a whole frame of known layout. Also says whether more bytes could
-    /// still give a length.
+    /// only add 00 bytes to a shorter one (the CRC of a frame and its own CRC is zero),
+    /// unless a line read a byte at a time shows its silence after the 00 bytes and not
+    /// before them: then they are the frame's own (its data ends with the CRC of what
+    /// precedes it). No length may swallow a whole frame of known layout. Also says whether
+    /// more bytes could still give a length.
     pub(super) fn unknown_lengths(&self, at: usize) -> (Vec<usize>, bool) {
         let data = &self.buffer[at..];
         let reach = data.len().min(MAX_RTU_ADU);
@@ -291,9 +293,25 @@ impl Framer {
         let lengths = matches
             .into_iter()
             .filter(|len| *len <= limit)
-            .filter(|len| len - 2 < MIN_RTU_FRAME || data[len - 2..*len] != [0, 0])
+            .filter(|len| {
+                len - 2 < MIN_RTU_FRAME
+                    || data[len - 2..*len] != [0, 0]
+                    || self.zeros_end_it(at, *len)
+            })
             .collect();
         (lengths, could_grow && inner_end.is_none())
+    }
+
+    /// Whether the frame of `len` bytes at `at`, its last two 00, ends where the line's own
+    /// silence says: read a byte at a time (no adapter gathers the bytes), silence after
+    /// the two 00 bytes and none before them. Not after a third 00: a longer run of them is
+    /// a line held low after the frame, not its CRC.
+    fn zeros_end_it(&self, at: usize, len: usize) -> bool {
+        !self.bursts
+            && self.times_tell_silence()
+            && self.buffer[at + len - 3] != 0
+            && self.silence_after(at + len - 1)
+            && !self.silence_after(at + len - 3)
     }
 
     /// Where the first whole frame of known layout that lies entirely after `at` and
