@@ -741,6 +741,23 @@ mod tests {
     }
 
     #[test]
+    fn the_start_of_a_long_request_passing_a_crc_as_an_answer_is_not_taken_for_one() {
+        // A write of 1,036 coils, after a read that awaits its answer: its first eight
+        // bytes read as a function 15 answer whose CRC holds, by chance. That answer is on
+        // the turn but followed by nothing sound; the whole request is followed by a frame
+        // right after it.
+        let read = rtu(&[0x01, 0x01, 0x00, 0x00, 0x00, 0x01]);
+        let mut packed = vec![0u8; 130];
+        packed[0] = 0x5A;
+        packed[128] = 0x02;
+        let write = rtu(&[&[0x71, 0x0F, 0xC9, 0xD6, 0x04, 0x0C, 0x82][..], &packed].concat());
+        assert!(crc16(&write[..8]) == 0, "the chance this test is about");
+        let next = rtu(&[0x07, 0x01, 0x25, 0x3E, 0x06, 0xA0]);
+        let stream = [&read[..], &write, &next].concat();
+        assert_eq!(frames(&stream), [read, write, next]);
+    }
+
+    #[test]
     fn an_unknown_function_before_a_request_does_not_swallow_it() {
         // 01 41: a byte whose next byte is a user-defined function.
         let mut stream = vec![0x01, 0x41];

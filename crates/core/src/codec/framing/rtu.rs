@@ -200,10 +200,25 @@ impl Framer {
                 // A frame ending in 00 leaves its prefix valid too: where the silence falls
                 // after the longer reading and not after the one on the turn, the longer
                 // one is the frame (an answer whose request was lost, say); unless the one
-                // on the turn is answered past that 00, a turnaround glitch.
-                let longer = several
-                    .iter()
-                    .find(|c| c.len > primary.len && self.silence_after(at + c.len - 1));
+                // on the turn is answered past that 00, a turnaround glitch. So too where a
+                // frame follows right after the longer one: the one on the turn is then
+                // bytes of it that pass a CRC by chance (the start of a long request).
+                let mut longer = None;
+                for candidate in several.iter().filter(|c| c.len > primary.len) {
+                    let ends_well = if self.silence_after(at + candidate.len - 1) {
+                        Tell::Yes
+                    } else {
+                        followed(candidate, false)
+                    };
+                    match ends_well {
+                        Tell::Yes => {
+                            longer = Some(candidate);
+                            break;
+                        }
+                        Tell::NotYet => return Err(()),
+                        Tell::No => {}
+                    }
+                }
                 if let Some(longer) = longer {
                     match self.asked_by(at, primary) {
                         Some(asked) => match self.answer_further_on(at + primary.len, asked) {
