@@ -71,9 +71,9 @@ than chance (one in 200 frames or more, the last within 2,000 frames), that line
 not taken for silence (a frame cut short is kept until the bytes show it is none, as \
 without timing). Read a byte at a time, a line's gaps are its own: a silence ends a frame \
 there as it does for every receiver on the bus, whatever CRC the bytes across it pass (a \
-device that pauses inside its frame shows as a frame cut short and the rest), and a frame of \
-a user-defined function whose CRC is 00 00 runs to the silence, though the bytes before the \
-00 00 pass a CRC too. Bytes a gap \
+device that pauses inside its frame shows as a frame cut short and the rest). Where the times \
+tell silence, a frame of a user-defined function whose CRC is 00 00 runs to the silence, \
+though the bytes before the 00 00 pass a CRC too. Bytes a gap \
 cuts short, and the frame before them, wait for the bytes \
 after the gap. A long run of noise is counted, and only its first 64 bytes \
 kept. When bytes arrive in bursts the gaps between frames are not real: mbtool says so once. \

@@ -758,6 +758,37 @@ mod tests {
     }
 
     #[test]
+    fn a_request_supported_by_a_long_frame_further_on_is_found_read_a_byte_at_a_time_too() {
+        // After noise, a request whose answer is cut short and followed by a line held
+        // high: only a frame further on supports it, a write of 1,839 coils that starts
+        // within the longest frame's reach but ends past it. Read all at once it is whole;
+        // read a byte at a time it is not, until it is.
+        let request = rtu(&[0x09, 0x02, 0x6D, 0x50, 0x00, 0xB4]);
+        let cut_answer = &rtu(&[&[0x09, 0x02, 0x17][..], &[0x5A; 23]].concat())[..9];
+        let mut coils = vec![0x11, 0x0F, 0x80, 0xE6, 0x07, 0x2F, 0xE6];
+        coils.extend((0..230).map(|i| (i * 37 % 256) as u8));
+        let write = rtu(&coils);
+        let stream = [
+            &[0x44, 0x64, 0x01][..],
+            &request,
+            cut_answer,
+            &[0xFF; 76],
+            &write,
+            &REQUEST,
+        ]
+        .concat();
+        let whole = events(Mode::Rtu, &stream);
+        let mut single = Vec::new();
+        let mut framer = framer(Mode::Rtu);
+        for byte in &stream {
+            framer.push(&[*byte], &mut single);
+        }
+        framer.finish(&mut single);
+        assert_eq!(single, whole);
+        assert_eq!(frames(&stream), [request, write, REQUEST.to_vec()]);
+    }
+
+    #[test]
     fn an_unknown_function_before_a_request_does_not_swallow_it() {
         // 01 41: a byte whose next byte is a user-defined function.
         let mut stream = vec![0x01, 0x41];
@@ -1070,43 +1101,50 @@ mod tests {
     }
 
     #[test]
-    fn read_a_byte_at_a_time_a_user_defined_frame_ending_in_00_00_ends_at_its_silence() {
+    fn a_user_defined_frame_ending_in_00_00_ends_at_its_silence() {
         // An answer of function 65 whose data ends with the CRC of the bytes before it, so
         // that its own CRC is 00 00 and the bytes before those pass a CRC too. From the
-        // bytes alone the shorter frame is taken; read a byte at a time, the silence comes
-        // after the 00 00 and not before: they are the answer's own.
+        // bytes alone the shorter frame is taken; read a byte at a time, or a frame a read,
+        // the silence comes after the 00 00 and not before: they are the answer's own.
         let request = rtu(&[0x01, 0x41, 0x01, 0x02]);
         let answer = rtu(&rtu(&[0x01, 0x41, 0xAA, 0xBB]));
         assert_eq!(answer[6..], [0, 0]);
         let lines: [&[u8]; 4] = [&request, &answer, &REQUEST, &ANSWER];
         assert_eq!(frames(&lines.concat())[1], answer[..6].to_vec());
-        let found = |lines: &[&[u8]]| -> Vec<Vec<u8>> {
+        let found = |lines: &[&[u8]], byte_a_read: bool| -> Vec<Vec<u8>> {
             let mut reads: Vec<(Vec<u8>, u64)> = Vec::new();
             let mut time = 0;
             for line in lines {
-                for byte in *line {
-                    time += 573;
-                    reads.push((vec![*byte], time));
+                if byte_a_read {
+                    for byte in *line {
+                        time += 573;
+                        reads.push((vec![*byte], time));
+                    }
+                } else {
+                    time += 573 * line.len() as u64;
+                    reads.push((line.to_vec(), time));
                 }
                 time += 3_000;
             }
             let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
             timed_frames(&pieces).into_iter().map(|(f, _)| f).collect()
         };
-        assert_eq!(found(&lines), lines.map(<[u8]>::to_vec));
-        // A longer run of 00 after a frame, up to the silence, is a line held low after
-        // it, not its CRC.
-        let held_low = [&answer[..6], &[0; 5][..]].concat();
-        let lines: [&[u8]; 4] = [&request, &held_low, &REQUEST, &ANSWER];
-        assert_eq!(
-            found(&lines),
-            [
-                request.clone(),
-                answer[..6].to_vec(),
-                REQUEST.to_vec(),
-                ANSWER.to_vec()
-            ]
-        );
+        for byte_a_read in [true, false] {
+            assert_eq!(found(&lines, byte_a_read), lines.map(<[u8]>::to_vec));
+            // A longer run of 00 after a frame, up to the silence, is a line held low after
+            // it, not its CRC.
+            let held_low = [&answer[..6], &[0; 5][..]].concat();
+            let lines: [&[u8]; 4] = [&request, &held_low, &REQUEST, &ANSWER];
+            assert_eq!(
+                found(&lines, byte_a_read),
+                [
+                    request.clone(),
+                    answer[..6].to_vec(),
+                    REQUEST.to_vec(),
+                    ANSWER.to_vec()
+                ]
+            );
+        }
     }
 
     #[test]

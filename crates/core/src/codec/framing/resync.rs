@@ -5,11 +5,12 @@
 use crate::codec::function::{
     self, ENCAPSULATED_INTERFACE, EXCEPTION_FLAG, MEI_READ_DEVICE_IDENTIFICATION,
 };
+use crate::codec::length::{rtu_frame_length, Length};
 use crate::codec::limits::MAX_RTU_ADU;
 use crate::codec::pdu::Values;
 use crate::codec::{Direction, Pdu};
 
-use super::{Candidate, Framer, MAX_SLAVE};
+use super::{Candidate, Framer, MAX_SLAVE, MIN_RTU_FRAME};
 
 /// Three answers to "is it so?": the bytes that would tell may not be here yet.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -278,15 +279,36 @@ impl Framer {
     pub(super) fn frame_further_on(&self, at: usize) -> Tell {
         let at = after_run(&self.buffer, at);
         let reach = at + MAX_RTU_ADU;
-        if (at..reach.min(self.buffer.len()))
-            .any(|p| self.known_frame_len(p, self.buffer.len()).is_some())
-        {
-            return Tell::Yes;
+        // Also not yet while a frame that starts within reach may still complete: a long
+        // one is not all here yet when the bytes come a read at a time, though it would be
+        // read all at once.
+        let mut may_come = reach > self.buffer.len();
+        for p in at..reach.min(self.buffer.len()) {
+            if self.known_frame_len(p, self.buffer.len()).is_some() {
+                return Tell::Yes;
+            }
+            may_come = may_come || self.known_frame_may_complete(p);
         }
-        if reach > self.buffer.len() && self.last_bytes_may_grow() {
-            return Tell::NotYet;
+        if may_come && self.last_bytes_may_grow() {
+            Tell::NotYet
+        } else {
+            Tell::No
         }
-        Tell::No
+    }
+
+    /// Whether the bytes at `at` begin a frame of known layout that more bytes may still
+    /// complete.
+    fn known_frame_may_complete(&self, at: usize) -> bool {
+        let data = &self.buffer[at..];
+        [Direction::Request, Direction::Response].into_iter().any(
+            |direction| match rtu_frame_length(data, direction) {
+                Length::Known(len) => {
+                    (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len) && len > data.len()
+                }
+                Length::AtLeast(_) => true,
+                Length::Unknown | Length::Never => false,
+            },
+        )
     }
 
     /// The slave and function a candidate asks for, when it can be a request: a request

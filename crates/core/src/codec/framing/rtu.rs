@@ -288,8 +288,8 @@ impl Framer {
 
     /// A function without a known layout: every length whose CRC holds, save those that
     /// only add 00 bytes to a shorter one (the CRC of a frame and its own CRC is zero),
-    /// unless a line read a byte at a time shows its silence after the 00 bytes and not
-    /// before them: then they are the frame's own (its data ends with the CRC of what
+    /// unless the line's times show its silence after the 00 bytes and not before them:
+    /// then they are the frame's own (its data ends with the CRC of what
     /// precedes it). No length may swallow a whole frame of known layout. Also says whether
     /// more bytes could still give a length.
     pub(super) fn unknown_lengths(&self, at: usize) -> (Vec<usize>, bool) {
@@ -317,13 +317,12 @@ impl Framer {
         (lengths, could_grow && inner_end.is_none())
     }
 
-    /// Whether the frame of `len` bytes at `at`, its last two 00, ends where the line's own
-    /// silence says: read a byte at a time (no adapter gathers the bytes), silence after
-    /// the two 00 bytes and none before them. Not after a third 00: a longer run of them is
-    /// a line held low after the frame, not its CRC.
+    /// Whether the frame of `len` bytes at `at`, its last two 00, ends where the line's
+    /// silence says: silence after the two 00 bytes and none before them, whether the line
+    /// is read a byte at a time or a frame a read. Not after a third 00: a longer run of
+    /// them is a line held low after the frame, not its CRC.
     fn zeros_end_it(&self, at: usize, len: usize) -> bool {
-        !self.bursts
-            && self.times_tell_silence()
+        self.times_tell_silence()
             && self.buffer[at + len - 3] != 0
             && self.silence_after(at + len - 1)
             && !self.silence_after(at + len - 3)
