@@ -364,7 +364,9 @@ fn functions_kept_byte_for_byte_read_only_the_way_their_length_allows() {
     );
     assert_ne!(run.code, 0);
     assert!(
-        run.stdout.contains("carries 1 PDU bytes, the frame has 5"),
+        // The function in decimal, as everywhere else: 11, not 0B.
+        run.stdout
+            .contains("function 11 carries 1 PDU bytes, the frame has 5"),
         "{}",
         run.stdout
     );

@@ -9,7 +9,7 @@ pub enum PduError {
     #[error("empty PDU: no function code")]
     Empty,
     /// The PDU ends before a field its function requires.
-    #[error("function {function:02X} needs {needed} PDU bytes, the frame carries {actual}")]
+    #[error("function {function} needs {needed} PDU bytes, the frame carries {actual}")]
     Truncated {
         /// The function code of the PDU.
         function: u8,
@@ -19,7 +19,7 @@ pub enum PduError {
         actual: usize,
     },
     /// The PDU is longer or shorter than its layout and byte count say.
-    #[error("function {function:02X} carries {expected} PDU bytes, the frame has {actual}")]
+    #[error("function {function} carries {expected} PDU bytes, the frame has {actual}")]
     LengthMismatch {
         /// The function code of the PDU.
         function: u8,
@@ -56,7 +56,7 @@ pub enum PduError {
     },
     /// The byte count of a response is not one its function allows (0, odd for registers, or
     /// too large).
-    #[error("byte count {byte_count} is not valid for function {function:02X}")]
+    #[error("byte count {byte_count} is not valid for function {function}")]
     BadByteCount {
         /// The function code of the PDU.
         function: u8,
