@@ -927,6 +927,21 @@ mod tests {
         timed_frames(&reads)
     }
 
+    /// Feeds `pieces` (bytes, then the silence after them in microseconds) a byte a read,
+    /// one character apart: a line no adapter gathers; returns the frames, valid or not.
+    fn read_a_byte_at_a_time(pieces: &[(&[u8], u64)]) -> Vec<(Vec<u8>, Option<Broken>)> {
+        let mut time = 0;
+        let mut reads: Vec<(&[u8], u64)> = Vec::new();
+        for (bytes, silence) in pieces {
+            for byte in *bytes {
+                time += 573;
+                reads.push((std::slice::from_ref(byte), time));
+            }
+            time += silence;
+        }
+        timed_frames(&reads)
+    }
+
     /// The exchanges of a busy line, each frame followed by 5 ms of silence.
     fn exchanges(count: usize) -> Vec<(&'static [u8], u64)> {
         [(&REQUEST[..], 5_000), (&ANSWER[..], 5_000)].repeat(count)
@@ -1015,21 +1030,12 @@ mod tests {
         // first byte happens to be the answer's missing last byte, and silence again.
         // Read together the answer passes its CRC, but on a line read a byte at a time the
         // silence is real: the answer was cut, and no frame is made up across the silence.
-        let mut reads: Vec<(Vec<u8>, u64)> = Vec::new();
-        let mut time = 0;
-        let mut line = |bytes: &[u8]| {
-            for byte in bytes {
-                time += 573;
-                reads.push((vec![*byte], time));
-            }
-            time += 5_000;
-        };
-        line(&REQUEST);
-        line(&ANSWER[..10]);
-        line(&[ANSWER[10], 0x03, 0x00]);
-        line(&REQUEST);
-        let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
-        let out = timed_frames(&pieces);
+        let out = read_a_byte_at_a_time(&[
+            (&REQUEST, 5_000),
+            (&ANSWER[..10], 5_000),
+            (&[ANSWER[10], 0x03, 0x00], 5_000),
+            (&REQUEST, 5_000),
+        ]);
         assert!(
             !out.contains(&(ANSWER.to_vec(), None)),
             "a frame made up across the silence: {out:?}"
@@ -1082,17 +1088,7 @@ mod tests {
             .map(|f| (f, None))
             .collect();
         assert_eq!(shown(&all_at_once), expected);
-        let mut reads: Vec<(Vec<u8>, u64)> = Vec::new();
-        let mut time = 0;
-        for line in lines {
-            for byte in line {
-                time += 573;
-                reads.push((vec![*byte], time));
-            }
-            time += 5_000;
-        }
-        let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
-        let timed = timed_frames(&pieces);
+        let timed = read_a_byte_at_a_time(&lines.map(|line| (line, 5_000)));
         assert_eq!(shown(&timed), expected, "{timed:?}");
         assert!(
             timed.iter().all(|(_, broken)| broken.is_none()),
@@ -1112,22 +1108,13 @@ mod tests {
         let lines: [&[u8]; 4] = [&request, &answer, &REQUEST, &ANSWER];
         assert_eq!(frames(&lines.concat())[1], answer[..6].to_vec());
         let found = |lines: &[&[u8]], byte_a_read: bool| -> Vec<Vec<u8>> {
-            let mut reads: Vec<(Vec<u8>, u64)> = Vec::new();
-            let mut time = 0;
-            for line in lines {
-                if byte_a_read {
-                    for byte in *line {
-                        time += 573;
-                        reads.push((vec![*byte], time));
-                    }
-                } else {
-                    time += 573 * line.len() as u64;
-                    reads.push((line.to_vec(), time));
-                }
-                time += 3_000;
-            }
-            let pieces: Vec<(&[u8], u64)> = reads.iter().map(|(b, t)| (&b[..], *t)).collect();
-            timed_frames(&pieces).into_iter().map(|(f, _)| f).collect()
+            let pieces: Vec<(&[u8], u64)> = lines.iter().map(|line| (*line, 3_000)).collect();
+            let out = if byte_a_read {
+                read_a_byte_at_a_time(&pieces)
+            } else {
+                read_at_their_ends(&pieces)
+            };
+            out.into_iter().map(|(frame, _)| frame).collect()
         };
         for byte_a_read in [true, false] {
             assert_eq!(found(&lines, byte_a_read), lines.map(<[u8]>::to_vec));

@@ -289,9 +289,9 @@ impl Framer {
     /// A function without a known layout: every length whose CRC holds, save those that
     /// only add 00 bytes to a shorter one (the CRC of a frame and its own CRC is zero),
     /// unless the line's times show its silence after the 00 bytes and not before them:
-    /// then they are the frame's own (its data ends with the CRC of what
-    /// precedes it). No length may swallow a whole frame of known layout. Also says whether
-    /// more bytes could still give a length.
+    /// then they are the frame's own (its data ends with the CRC of what precedes it). No
+    /// length may swallow a whole frame of known layout. Also says whether more bytes could
+    /// still give a length.
     pub(super) fn unknown_lengths(&self, at: usize) -> (Vec<usize>, bool) {
         let data = &self.buffer[at..];
         let reach = data.len().min(MAX_RTU_ADU);
