@@ -660,6 +660,17 @@ mod tests {
         out
     }
 
+    /// Every event of `stream` fed a byte at a time, then finished.
+    fn events_byte_by_byte(mode: Mode, stream: &[u8]) -> Vec<Event> {
+        let mut framer = framer(mode);
+        let mut out = Vec::new();
+        for byte in stream {
+            framer.push(&[*byte], &mut out);
+        }
+        framer.finish(&mut out);
+        out
+    }
+
     /// The valid frames of `stream`.
     fn frames(stream: &[u8]) -> Vec<Vec<u8>> {
         frames_that(stream, true)
@@ -693,14 +704,10 @@ mod tests {
         let mut stream = vec![0x00, 0xFE];
         stream.extend_from_slice(&REQUEST);
         stream.extend_from_slice(&ANSWER);
-        let whole = events(Mode::Rtu, &stream);
-        let mut single = Vec::new();
-        let mut framer = framer(Mode::Rtu);
-        for byte in &stream {
-            framer.push(&[*byte], &mut single);
-        }
-        framer.finish(&mut single);
-        assert_eq!(whole, single);
+        assert_eq!(
+            events(Mode::Rtu, &stream),
+            events_byte_by_byte(Mode::Rtu, &stream)
+        );
     }
 
     #[test]
@@ -777,14 +784,10 @@ mod tests {
             &REQUEST,
         ]
         .concat();
-        let whole = events(Mode::Rtu, &stream);
-        let mut single = Vec::new();
-        let mut framer = framer(Mode::Rtu);
-        for byte in &stream {
-            framer.push(&[*byte], &mut single);
-        }
-        framer.finish(&mut single);
-        assert_eq!(single, whole);
+        assert_eq!(
+            events_byte_by_byte(Mode::Rtu, &stream),
+            events(Mode::Rtu, &stream)
+        );
         assert_eq!(frames(&stream), [request, write, REQUEST.to_vec()]);
     }
 
@@ -947,13 +950,17 @@ mod tests {
         [(&REQUEST[..], 5_000), (&ANSWER[..], 5_000)].repeat(count)
     }
 
-    /// Whether `out` ends with a request cut short and ended by its silence, then the
+    /// Asserts that `out` ends with a request cut short and ended by its silence, then the
     /// request whole: the line's silences are believed.
-    fn ends_with_a_cut_request_told(out: &[(Vec<u8>, Option<Broken>)]) -> bool {
-        out.ends_with(&[
-            (REQUEST[..6].to_vec(), Some(Broken::Incomplete)),
-            (REQUEST.to_vec(), None),
-        ])
+    fn assert_ends_with_a_cut_request_told(out: &[(Vec<u8>, Option<Broken>)]) {
+        assert!(
+            out.ends_with(&[
+                (REQUEST[..6].to_vec(), Some(Broken::Incomplete)),
+                (REQUEST.to_vec(), None),
+            ]),
+            "{:?}",
+            &out[out.len().saturating_sub(4)..]
+        );
     }
 
     #[test]
@@ -972,11 +979,7 @@ mod tests {
             (&REQUEST[..], 5_000),
         ]);
         let out = read_at_their_ends(&pieces);
-        assert!(
-            ends_with_a_cut_request_told(&out),
-            "{:?}",
-            &out[out.len() - 4..]
-        );
+        assert_ends_with_a_cut_request_told(&out);
     }
 
     #[test]
@@ -992,11 +995,7 @@ mod tests {
         pieces.extend([(&REQUEST[..6], 5_000), (&REQUEST[..], 5_000)]);
         let out = read_at_their_ends(&pieces);
         assert_eq!(out[1], (ANSWER.to_vec(), None));
-        assert!(
-            ends_with_a_cut_request_told(&out),
-            "{:?}",
-            &out[out.len() - 4..]
-        );
+        assert_ends_with_a_cut_request_told(&out);
     }
 
     #[test]
