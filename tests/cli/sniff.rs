@@ -464,6 +464,41 @@ fn a_pcap_file_holds_every_frame() {
     assert_eq!(records, want);
 }
 
+#[test]
+fn started_with_standard_output_closed_the_table_goes_nowhere_not_into_the_pcap() {
+    // `mbtool sniff ... >&-` in a script: the pcap file, the first file opened, would take
+    // descriptor 1, and the table would be written into it.
+    let dir = tempfile::tempdir().unwrap();
+    let capture = dir.path().join("capture.bin");
+    std::fs::write(&capture, WORKED.concat()).unwrap();
+    let pcap_written = |name: &str, redirect: &str| {
+        let pcap = dir.path().join(name);
+        let status = Process::new("sh")
+            .arg("-c")
+            .arg(format!(
+                "exec \"$0\" sniff --input - --pcap \"$1\" < \"$2\" {redirect}"
+            ))
+            .arg(assert_cmd::cargo::cargo_bin("mbtool"))
+            .arg(&pcap)
+            .arg(&capture)
+            .stdout(Stdio::null())
+            .status()
+            .unwrap();
+        assert_eq!(status.code(), Some(0), "{redirect}");
+        std::fs::read(pcap).unwrap()
+    };
+    let open = pcap_written("open.pcap", "");
+    assert!(open.len() > 24, "a header and the frames");
+    let closed = pcap_written("closed.pcap", ">&-");
+    assert!(
+        closed == open,
+        "the pcap holds {} bytes, not {}: {:?}",
+        closed.len(),
+        open.len(),
+        String::from_utf8_lossy(&closed[..closed.len().min(80)])
+    );
+}
+
 /// Runs `mbtool sniff` at 9600 baud on a pty while the test writes `chunks`, each followed
 /// by its pause; returns sniff's JSON Lines and when each chunk was written.
 fn sniff_live(
