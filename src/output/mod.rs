@@ -182,7 +182,7 @@ pub fn write_fields_summary(out: &mut String, fields: &Fields) {
             true
         }
         (None, Some(address)) => {
-            let _ = write!(out, "{address}");
+            out.push_str(itoa::Buffer::new().format(address));
             true
         }
         (None, None) => false,
@@ -206,7 +206,8 @@ pub fn write_fields_summary(out: &mut String, fields: &Fields) {
             let data = fields.text.as_ref().or(fields.data.as_ref());
             if place(out) {
                 if let Some(count) = count {
-                    let _ = write!(out, " x{count}");
+                    out.push_str(" x");
+                    out.push_str(itoa::Buffer::new().format(count));
                 }
                 if let (Some(and), Some(or)) = (fields.and_mask, fields.or_mask) {
                     let _ = write!(out, " AND {and:04X} OR {or:04X}");
