@@ -137,6 +137,12 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
                 Line::TooLong => decoder.too_long(format!("line {number}")),
             }
         }
+    } else if args.frames.iter().all(|frame| frame.trim().is_empty()) {
+        // `mbtool decode "$FRAME"` with the variable unset: a mistake, not an empty input.
+        return Err(Error::usage(
+            "the frame given is empty: give its bytes in hex (mbtool decode 11 03 00 6B 00 03 76 87), or no argument to read frames from standard input",
+        )
+        .into());
     } else {
         // Arguments: one frame per argument, unless the frame was split into words
         // (`mbtool decode 11 03 00 6B ...`, `mbtool decode TX 11 03 ...`): a lone byte is no

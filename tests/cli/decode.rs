@@ -249,6 +249,30 @@ fn a_frame_that_reads_both_ways_says_so_and_direction_settles_it() {
 }
 
 #[test]
+fn an_empty_frame_argument_is_refused_and_empty_input_is_nothing_to_show() {
+    // `mbtool decode "$FRAME"` with the variable unset or blank.
+    for args in [&[""][..], &["  "], &["", " "]] {
+        let run = decode(args, b"");
+        assert_eq!(run.code, 2, "{args:?}");
+        assert!(
+            run.stderr.starts_with("mbtool: the frame given is empty"),
+            "{}",
+            run.stderr
+        );
+        assert_one_line_errors(&run.stderr);
+        assert_eq!(run.stdout, "");
+    }
+    // A filter given nothing prints nothing.
+    for stdin in [&b""[..], b"\n\n", b"# no frames today\n"] {
+        let run = decode(&[], stdin);
+        assert_eq!(
+            (run.code, run.stdout.as_str(), run.stderr.as_str()),
+            (0, "", "")
+        );
+    }
+}
+
+#[test]
 fn a_binary_file_gets_one_message_not_one_a_line() {
     // An executable, a capture of raw bytes: text never holds a NUL byte.
     let mut binary: Vec<u8> = b"11 03 00 6B 00 03 76 87\n".to_vec();
