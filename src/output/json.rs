@@ -58,6 +58,28 @@ impl<'a> JsonObject<'a> {
         self.line.push(b'"');
     }
 
+    /// An integer, written digit by digit.
+    #[inline(always)]
+    pub fn number(&mut self, key: &str, value: impl itoa::Integer) {
+        self.key(key);
+        self.line
+            .extend_from_slice(itoa::Buffer::new().format(value).as_bytes());
+    }
+
+    /// An array of integers, written digit by digit.
+    pub fn numbers<N: itoa::Integer>(&mut self, key: &str, values: impl IntoIterator<Item = N>) {
+        self.key(key);
+        self.line.push(b'[');
+        let mut digits = itoa::Buffer::new();
+        for (i, value) in values.into_iter().enumerate() {
+            if i > 0 {
+                self.line.push(b',');
+            }
+            self.line.extend_from_slice(digits.format(value).as_bytes());
+        }
+        self.line.push(b']');
+    }
+
     /// The fields of `value`, which serializes as an object, as fields of this one: what
     /// `#[serde(flatten)]` does, without its cost.
     pub fn flatten(&mut self, value: &impl Serialize) -> io::Result<()> {
