@@ -143,6 +143,9 @@ fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
     let mut message = match error.kind() {
         ErrorKind::MissingRequiredArgument => missing(error, &subcommand),
         ErrorKind::InvalidSubcommand => unknown_command(error, command, &path),
+        ErrorKind::InvalidUtf8 => {
+            not_utf8().unwrap_or_else(|| first_line(&rendered, error, command))
+        }
         _ => mbpoll_habit(error).unwrap_or_else(|| first_line(&rendered, error, command)),
     };
     let see = if path.len() > 1 {
@@ -157,7 +160,7 @@ fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
 /// An option of mbpoll or modpoll typed out of habit (`-a 17 -r 1 -c 2`, or `-t 4`, which
 /// mbtool's --type takes for a value type), answered with mbtool's spelling.
 fn mbpoll_habit(error: &clap::Error) -> Option<String> {
-    let args: Vec<String> = std::env::args().collect();
+    let args: Vec<String> = words().collect();
     let Some(ContextValue::String(arg)) = error.get(ContextKind::InvalidArg) else {
         return None;
     };
@@ -177,11 +180,43 @@ fn mbpoll_habit(error: &clap::Error) -> Option<String> {
     }
 }
 
+/// Which word of the command line, or which MBTOOL_ variable, is not UTF-8 text.
+fn not_utf8() -> Option<String> {
+    if let Some((number, word)) = std::env::args_os()
+        .enumerate()
+        .skip(1)
+        .find(|(_, word)| word.to_str().is_none())
+    {
+        return Some(format!(
+            "argument {number} ('{}') is not UTF-8 text: give it in UTF-8",
+            word.to_string_lossy()
+        ));
+    }
+    std::env::vars_os()
+        .find(|(name, value)| {
+            name.to_str()
+                .is_some_and(|name| name.starts_with("MBTOOL_"))
+                && value.to_str().is_none()
+        })
+        .map(|(name, _)| {
+            format!(
+                "the environment variable {} is not UTF-8 text: set it in UTF-8, or unset it",
+                name.to_string_lossy()
+            )
+        })
+}
+
+/// The words of the command line, to tell an error by. A word that is not UTF-8 (which clap
+/// refuses) is read with U+FFFD in place of its bad bytes, not taken for a panic.
+fn words() -> impl Iterator<Item = String> {
+    std::env::args_os().map(|word| word.to_string_lossy().into_owned())
+}
+
 /// `mbtool` and the command names on the command line: `["mbtool", "encode", "raw"]`.
 fn typed_commands(command: &clap::Command) -> Vec<String> {
     let mut path = vec!["mbtool".to_string()];
     let mut level = command;
-    for word in std::env::args().skip(1) {
+    for word in words().skip(1) {
         if let Some(sub) = level.find_subcommand(&word) {
             path.push(sub.get_name().to_string());
             level = sub;
@@ -281,10 +316,10 @@ fn from_environment(error: &clap::Error, command: &clap::Command) -> Option<(Str
     let variable = arg.get_env()?.to_string_lossy().into_owned();
     std::env::var_os(&variable)?;
     let flag = format!("--{long}");
-    let given = std::env::args().any(|word| word == flag || word.starts_with(&format!("{flag}=")))
-        || arg.get_short().is_some_and(|short| {
-            std::env::args().any(|word| word.starts_with(&format!("-{short}")))
-        });
+    let given = words().any(|word| word == flag || word.starts_with(&format!("{flag}=")))
+        || arg
+            .get_short()
+            .is_some_and(|short| words().any(|word| word.starts_with(&format!("-{short}"))));
     (!given).then(|| (variable, option.clone()))
 }
 

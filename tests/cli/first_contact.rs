@@ -43,6 +43,60 @@ fn mbtool_alone_prints_a_short_usage_and_the_commands() {
 }
 
 #[test]
+fn a_word_or_a_variable_that_is_not_utf8_is_told_not_panicked_on() {
+    use std::ffi::OsStr;
+    use std::os::unix::ffi::OsStrExt;
+    let bad = OsStr::from_bytes(b"caf\xe9");
+    for args in [
+        vec![OsStr::new("decode"), bad],
+        vec![
+            OsStr::new("--port"),
+            bad,
+            OsStr::new("read-holding"),
+            OsStr::new("17"),
+            OsStr::new("0"),
+        ],
+        vec![
+            OsStr::new("sniff"),
+            OsStr::new("--slave"),
+            bad,
+            OsStr::new("--input"),
+            OsStr::new("x"),
+        ],
+        vec![bad],
+    ] {
+        let output = mbtool().args(&args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(2), "{args:?}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(stderr.starts_with("mbtool: "), "{stderr}");
+        assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+    let output = mbtool()
+        .args(["decode", "--", "01"])
+        .arg(bad)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.starts_with("mbtool: argument 4 ('caf\u{FFFD}') is not UTF-8 text"),
+        "{stderr}"
+    );
+
+    let output = mbtool()
+        .env("MBTOOL_PORT", bad)
+        .args(["read-holding", "17", "0"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.starts_with("mbtool: the environment variable MBTOOL_PORT is not UTF-8 text"),
+        "{stderr}"
+    );
+}
+
+#[test]
 fn a_missing_argument_is_named() {
     refused_with(
         "read-holding 17",
