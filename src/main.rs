@@ -89,10 +89,14 @@ fn parse() -> Result<(Settings, Command), u8> {
         parsed = parse_with(&mut command);
     }
     let (cli, matches) = parsed.map_err(|error| match error.kind() {
-        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
-            let _ = error.print();
-            0
-        }
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match error.print() {
+            // `mbtool --help | head -3` is the reader's choice.
+            Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
+                mbtool::note!("mbtool: cannot write standard output: {e}");
+                1
+            }
+            _ => 0,
+        },
         ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
             mbtool::note!("{}", mbtool::docs::short_usage(&command));
             2

@@ -72,6 +72,9 @@ fn a_full_disk_is_named_whatever_was_being_written() {
             stdout,
         ),
         (vec!["decode", "01030000000AC5CD"], true, stdout),
+        (vec!["--help"], true, stdout),
+        (vec!["--version"], true, stdout),
+        (vec!["sniff", "--help"], true, stdout),
         (vec!["sniff", "--input", &capture, "--json"], true, stdout),
         (
             vec![
