@@ -31,9 +31,10 @@ as many coils or inputs as were asked; alone, a bit answer shows only the bits s
 values (the last byte may end in padding) and max_count.
 
 Exit status 4 when any frame fails its checksum or is malformed; 2 when a line is not hex \
-(which outranks 4), or when the only frames given as arguments are empty. Standard input \
-that holds no frame (empty, blank lines, comments) prints nothing and exits 0, as a filter \
-does.";
+(which outranks 4), or when an argument is empty or the arguments hold only comments. An \
+argument of several lines (\"$(cat log.txt)\") is read a line at a time, as standard input \
+is. Standard input that holds no frame (empty, blank lines, comments) prints nothing and \
+exits 0, as a filter does.";
 
 pub(super) const ENCODE_ABOUT: &str = "\
 Print the frame that a request command would send, as spaced upper-case hex (RTU or TCP) or \

@@ -99,6 +99,33 @@ impl Decoder {
     }
 }
 
+/// The lines the arguments give, each with its place for messages: one frame per argument,
+/// unless the frame was split into words (`mbtool decode 11 03 00 6B ...`, `mbtool decode
+/// TX 11 03 ...`): a lone byte is no frame, so words with one among them are one line. An
+/// argument of several lines (`mbtool decode "$(cat log.txt)"`) is read a line at a time,
+/// as standard input is.
+fn argument_lines(frames: &[String]) -> Vec<(String, String)> {
+    let one_per_line = frames.iter().any(|f| f.contains('\n'));
+    if !one_per_line && frames.iter().any(|f| f.trim_ascii().len() <= 2) {
+        return vec![("frame 1".into(), frames.join(" "))];
+    }
+    frames
+        .iter()
+        .enumerate()
+        .flat_map(|(i, frame)| {
+            let several = frame.trim_ascii().contains('\n');
+            frame.lines().enumerate().map(move |(j, line)| {
+                let place = if several {
+                    format!("frame {}, line {}", i + 1, j + 1)
+                } else {
+                    format!("frame {}", i + 1)
+                };
+                (place, line.to_string())
+            })
+        })
+        .collect()
+}
+
 pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
     let mut decoder = Decoder {
         mode: settings.connection.mode,
@@ -137,29 +164,29 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
                 Line::TooLong => decoder.too_long(format!("line {number}")),
             }
         }
-    } else if args.frames.iter().all(|frame| frame.trim().is_empty()) {
-        // `mbtool decode "$FRAME"` with the variable unset: a mistake, not an empty input.
-        return Err(Error::usage(
-            "the frame given is empty: give its bytes in hex (mbtool decode 11 03 00 6B 00 03 76 87), or no argument to read frames from standard input",
-        )
-        .into());
     } else {
-        // Arguments: one frame per argument, unless the frame was split into words
-        // (`mbtool decode 11 03 00 6B ...`, `mbtool decode TX 11 03 ...`): a lone byte is no
-        // frame, so words with one among them are one line.
-        let joined;
-        let frames: Vec<&str> = if args.frames.iter().any(|f| f.trim().len() <= 2) {
-            joined = args.frames.join(" ");
-            vec![joined.as_str()]
-        } else {
-            args.frames.iter().map(String::as_str).collect()
-        };
-        for (i, frame) in frames.iter().enumerate() {
-            if frame.len() > MAX_LINE {
-                decoder.too_long(format!("frame {}", i + 1));
+        // `mbtool decode "$REQUEST" "$ANSWER"` with a variable unset or blank: a mistake,
+        // not a frame to pass over, and it would change how the others are read.
+        if let Some(blank) = args.frames.iter().position(|f| f.trim_ascii().is_empty()) {
+            return Err(Error::usage(format!(
+                "frame {} is empty: give its bytes in hex (mbtool decode 11 03 00 6B 00 03 76 87), or no argument to read frames from standard input",
+                blank + 1
+            ))
+            .into());
+        }
+        for (place, line) in argument_lines(&args.frames) {
+            if line.len() > MAX_LINE {
+                decoder.too_long(place);
                 continue;
             }
-            decoder.line(frame.as_bytes(), false, || format!("frame {}", i + 1))?;
+            decoder.line(line.as_bytes(), false, || place.clone())?;
+        }
+        // Comments alone are no frames either.
+        if decoder.frames == 0 && decoder.unreadable == 0 {
+            return Err(Error::usage(
+                "the arguments hold no frame, only comments: give a frame's bytes in hex (mbtool decode 11 03 00 6B 00 03 76 87)",
+            )
+            .into());
         }
     }
     decoder.out.flush()?;

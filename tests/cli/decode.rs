@@ -250,18 +250,45 @@ fn a_frame_that_reads_both_ways_says_so_and_direction_settles_it() {
 
 #[test]
 fn an_empty_frame_argument_is_refused_and_empty_input_is_nothing_to_show() {
-    // `mbtool decode "$FRAME"` with the variable unset or blank.
-    for args in [&[""][..], &["  "], &["", " "]] {
+    let request = rtu(&[0x11, 0x03, 0x00, 0x6B, 0x00, 0x03]);
+    let answer = rtu(&[0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64]);
+    // `mbtool decode "$REQUEST" "$ANSWER"` with a variable unset or blank, alone or beside
+    // real frames (which it must not make into one line).
+    for (args, blank) in [
+        (vec![""], 1),
+        (vec!["  "], 1),
+        (vec!["", " "], 1),
+        (vec![request.as_str(), answer.as_str(), ""], 3),
+        (vec![request.as_str(), "\t", answer.as_str()], 2),
+    ] {
+        let run = decode(&args, b"");
+        assert_eq!(run.code, 2, "{args:?}");
+        let said = format!("mbtool: frame {blank} is empty");
+        assert!(run.stderr.starts_with(&said), "{args:?}: {}", run.stderr);
+        assert_one_line_errors(&run.stderr);
+        assert_eq!(run.stdout, "", "nothing is decoded before the check");
+    }
+    // Comments alone are no frames; a comment line inside an argument hides nothing after
+    // it, as on standard input.
+    for args in [&["#"][..], &["# c", "#"]] {
         let run = decode(args, b"");
         assert_eq!(run.code, 2, "{args:?}");
         assert!(
-            run.stderr.starts_with("mbtool: the frame given is empty"),
+            run.stderr
+                .starts_with("mbtool: the arguments hold no frame"),
             "{}",
             run.stderr
         );
-        assert_one_line_errors(&run.stderr);
-        assert_eq!(run.stdout, "");
     }
+    let log = format!("# saved at the panel\n{request}\n{answer}\n");
+    let run = decode(&["-o", "csv", &log], b"");
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    assert_eq!(
+        run.stdout.lines().count(),
+        3,
+        "a header and two frames: {}",
+        run.stdout
+    );
     // A filter given nothing prints nothing.
     for stdin in [&b""[..], b"\n\n", b"# no frames today\n"] {
         let run = decode(&[], stdin);
