@@ -144,3 +144,28 @@ fn a_duplicated_answer_is_skipped_by_the_next_transaction() {
         assert_eq!(reply, Reply::Response(expected));
     }
 }
+
+#[test]
+fn a_server_that_resets_the_connection_is_named_in_the_message() {
+    // A server that stops (or restarts) as the request comes: closing with the request
+    // unread makes its kernel reset the connection.
+    let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = listener.local_addr().unwrap().port();
+    let server = thread::spawn(move || {
+        let (client, _) = listener.accept().unwrap();
+        let mut request = [0u8; 12];
+        let _ = client.peek(&mut request);
+        drop(client);
+    });
+    let output = read_17(port, &["--timeout", "5s"]).get_output().clone();
+    server.join().unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.starts_with(&format!(
+            "mbtool: 127.0.0.1:{port} dropped the connection (it closed or restarted)"
+        )),
+        "{stderr}"
+    );
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+}

@@ -81,7 +81,15 @@ impl Tcp {
         let Some((address, timeout)) = self.reconnect else {
             return Err(closed(&self.peer));
         };
-        let stream = TcpStream::connect_timeout(&address, timeout)?;
+        let stream = TcpStream::connect_timeout(&address, timeout).map_err(|e| {
+            io::Error::new(
+                e.kind(),
+                format!(
+                    "{} closed the connection, and connecting again failed: {e}",
+                    self.peer
+                ),
+            )
+        })?;
         stream.set_nodelay(true)?;
         self.stream = stream;
         self.read_timeout_ms = 0;
@@ -124,7 +132,9 @@ impl Transport for Tcp {
             self.connect_again()?;
         }
         self.last_used = Instant::now();
-        self.stream.write_all(frame)
+        self.stream
+            .write_all(frame)
+            .map_err(|e| lost(&self.peer, e))
     }
 
     fn receive(&mut self, buf: &mut Vec<u8>, deadline: Instant) -> io::Result<usize> {
@@ -146,7 +156,7 @@ impl TimedRead for Tcp {
     }
 
     fn read_some(&mut self, chunk: &mut [u8]) -> io::Result<usize> {
-        let n = self.stream.read(chunk)?;
+        let n = self.stream.read(chunk).map_err(|e| lost(&self.peer, e))?;
         let first = !self.heard && !self.serial_behind;
         if n == 0 && first {
             return Err(io::Error::new(
@@ -176,6 +186,21 @@ impl TimedRead for Tcp {
         self.heard = true;
         self.last_used = Instant::now();
         Ok(n)
+    }
+}
+
+/// A connection the other end reset or closed under a read or a write, told with its
+/// address. Not as a broken pipe, which the binary takes for its own output closed by
+/// the reader; other errors (a timeout) keep what they are.
+fn lost(peer: &str, error: io::Error) -> io::Error {
+    match error.kind() {
+        io::ErrorKind::ConnectionReset
+        | io::ErrorKind::ConnectionAborted
+        | io::ErrorKind::BrokenPipe => io::Error::new(
+            io::ErrorKind::ConnectionAborted,
+            format!("{peer} dropped the connection (it closed or restarted): {error}"),
+        ),
+        _ => error,
     }
 }
 
