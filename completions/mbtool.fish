@@ -1250,7 +1250,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s o -l output -d '
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a capture instead of the port (\'-\' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a capture instead of the port (\'-\' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line. Standard input still open (another program\'s capture piped in) ends on Ctrl-C or SIGTERM as a live capture does, its frames and the summary shown' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l interface -d 'Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l tcp-port -d 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng' -r -F

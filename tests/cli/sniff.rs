@@ -920,3 +920,55 @@ fn with_timing_a_user_defined_answer_runs_to_the_silence_after_it() {
         .collect();
     assert!(frames.iter().any(|f| f == answer), "{frames:#?}");
 }
+
+#[test]
+fn standard_input_still_open_ends_on_sigterm_and_sigint_with_its_frames_and_the_summary() {
+    // `socat ... | mbtool sniff --input -`: a line captured by another program, ended by
+    // Ctrl-C or SIGTERM while the pipe is quiet, as a live capture ends.
+    for signal in ["TERM", "INT"] {
+        let mut child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+            .args(["sniff", "--input", "-", "--json"])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let mut stdin = child.stdin.take().unwrap();
+        std::io::Write::write_all(&mut stdin, &WORKED.concat()).unwrap();
+        // The replay writes in batches: give it time to take the bytes in.
+        std::thread::sleep(Duration::from_millis(500));
+        let sent = Instant::now();
+        let killed = Process::new("kill")
+            .args([&format!("-{signal}"), &child.id().to_string()])
+            .status()
+            .unwrap();
+        assert!(killed.success());
+        // Its input still open, it must end on the signal alone.
+        while child.try_wait().unwrap().is_none() {
+            if sent.elapsed() > Duration::from_secs(5) {
+                let _ = child.kill();
+                panic!("sniff --input - did not end on SIG{signal}");
+            }
+            std::thread::sleep(Duration::from_millis(20));
+        }
+        assert!(
+            sent.elapsed() < Duration::from_secs(2),
+            "{:?}",
+            sent.elapsed()
+        );
+        let output = child.wait_with_output().unwrap();
+        drop(stdin);
+        assert_eq!(output.status.code(), Some(0), "SIG{signal}");
+        let rest = String::from_utf8_lossy(&output.stdout);
+        let lines: Vec<&str> = rest.lines().collect();
+        let frames = lines
+            .iter()
+            .filter(|l| l.contains("\"type\":\"frame\""))
+            .count();
+        assert_eq!(frames, WORKED.len(), "SIG{signal}: {rest}");
+        assert!(
+            lines.last().unwrap().contains("\"type\":\"summary\""),
+            "{rest}"
+        );
+    }
+}
