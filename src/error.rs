@@ -133,6 +133,7 @@ impl Error {
             Error::Master(MasterError::BadFrame { .. }) => 4,
             Error::Master(MasterError::Encode(_)) => 2,
             Error::Master(MasterError::Io(_)) => 1,
+            Error::Master(MasterError::Interrupted) => 130,
             // 10 + N; a code past 245 (none is defined) saturates at 255.
             Error::Exception { code, .. } => 10u8.saturating_add(code.0),
         }

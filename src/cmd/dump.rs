@@ -35,6 +35,7 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
     }
     let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
     let stop = super::shared::stop_on_signal()?;
+    connection.master.stop_on(stop.clone());
     let dump = backup::dump(
         &mut connection.master,
         slave,

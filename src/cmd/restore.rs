@@ -15,6 +15,8 @@ use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Mode, Pdu};
 use mbtool_core::master::backup::{restore_requests, verify};
 use mbtool_core::master::plan::parse_slave;
+use mbtool_core::master::run::RunError;
+use mbtool_core::master::MasterError;
 use mbtool_core::slave::datafile;
 
 pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
@@ -56,6 +58,7 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
     }
     let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
     let stop = super::shared::stop_on_signal()?;
+    connection.master.stop_on(stop.clone());
     let master = &mut connection.master;
     let mut sent = 0;
     let outcome = requests
@@ -67,6 +70,14 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
             super::shared::tell_switches(settings, master);
             answered
         });
+    if matches!(outcome, Err(RunError::Master(MasterError::Interrupted))) {
+        // Stopped while a write waited for its answer: it may or may not have been done.
+        mbtool::note!(
+            "mbtool: restore interrupted while request {sent} of {} waited for its answer (it may or may not have been written): slave {slave} may hold part of {file}; run restore again to write it all",
+            requests.len()
+        );
+        return Ok(super::shared::INTERRUPTED);
+    }
     if outcome.is_ok() && sent < requests.len() {
         // Stopped between two writes: the device holds part of the file, and says so.
         mbtool::note!(

@@ -130,6 +130,44 @@ fn an_interrupted_dump_writes_no_file_and_leaves_an_older_one_as_it_was() {
 }
 
 #[test]
+fn a_dump_or_a_restore_waiting_for_an_answer_ends_on_a_signal_not_at_its_timeout() {
+    // Nobody answers on the other end of the line, and the timeout is long.
+    let Some(pair) = PtyPair::new() else { return };
+    let port = vec!["--port".to_string(), pair.a.display().to_string()];
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("pump.txt");
+    let args = words(
+        &port,
+        &format!("--timeout 5s dump 17 400001-400200 -o {}", file.display()),
+    );
+    for signal in ["INT", "TERM"] {
+        let (output, took) = signalled(&args, Duration::from_millis(500), signal);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(130), "SIG{signal}: {stderr}");
+        assert!(
+            took < Duration::from_secs(1),
+            "SIG{signal}: ended {took:?} after"
+        );
+        assert!(stderr.contains("mbtool: dump interrupted"), "{stderr}");
+        assert!(!file.exists());
+    }
+    // A restore too, its write waiting: the device may or may not have taken it.
+    std::fs::write(&file, "400001 = 1 2 3\n").unwrap();
+    let args = words(
+        &port,
+        &format!("--timeout 5s restore 17 {}", file.display()),
+    );
+    let (output, took) = signalled(&args, Duration::from_millis(500), "TERM");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(130), "{stderr}");
+    assert!(took < Duration::from_secs(1), "ended {took:?} after");
+    assert!(
+        stderr.contains("mbtool: restore interrupted while request 1 of 1 waited for its answer"),
+        "{stderr}"
+    );
+}
+
+#[test]
 fn ctrl_c_in_a_terminal_ends_a_scan_with_what_it_found() {
     let Some(pair) = PtyPair::new() else { return };
     let (_server, port) = serve_pty(&pair, &["--slave", "5", "--slave", "17"]);

@@ -144,7 +144,9 @@ impl Line {
                 let echo = (options.broadcast_reply && broadcast).then(|| echo(&request));
                 done(request, echo, tries, Outcome::Broadcast)
             }
-            Err(MasterError::Timeout { .. }) => {
+            // The gateway's master is given no stop, so no wait is cut short; one that
+            // were would be no answer all the same.
+            Err(MasterError::Timeout { .. } | MasterError::Interrupted) => {
                 let answer = failed(&request);
                 done(request, Some(answer), tries, Outcome::Timeout)
             }

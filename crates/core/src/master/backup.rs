@@ -7,7 +7,7 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use super::run::{ReadData, RunError};
-use super::Master;
+use super::{Master, MasterError};
 use crate::codec::{limits, ExceptionCode, Request, Response};
 use crate::model::address::Table;
 use crate::slave::datafile::Entry;
@@ -131,6 +131,8 @@ fn read_splitting(
                 read_splitting(master, place, (address + first, count - first), dump, stop)?;
             }
         }
+        // A signal came while the request waited for its answer.
+        Err(RunError::Master(MasterError::Interrupted)) => dump.interrupted = true,
         Err(error) => return Err(error),
     }
     Ok(())

@@ -276,7 +276,8 @@ impl Failover {
             Err(MasterError::Timeout { .. }) => seen.timeouts += 1,
             Err(MasterError::BadFrame { .. }) => seen.bad_frames += 1,
             Err(MasterError::Io(error)) => seen.disconnected = Some(error.to_string()),
-            Err(MasterError::Encode(_)) => return None,
+            // Neither says anything of the path.
+            Err(MasterError::Encode(_) | MasterError::Interrupted) => return None,
         }
         let held: Vec<String> = self
             .rule

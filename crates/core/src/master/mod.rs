@@ -1,6 +1,8 @@
 //! The master side of a transaction: send a request, wait for the answer that belongs to
 //! it, check it, and retry what is worth retrying.
 
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use thiserror::Error;
@@ -78,6 +80,9 @@ pub enum MasterError {
     /// The transport failed: the port went away or the connection closed.
     #[error(transparent)]
     Io(#[from] std::io::Error),
+    /// A stop was asked (see [`Master::stop_on`]) while the master waited for an answer.
+    #[error("interrupted while waiting for an answer")]
+    Interrupted,
 }
 
 /// What was wrong with what came back instead of the answer.
@@ -129,6 +134,9 @@ pub type Tracer = Box<dyn FnMut(Traffic, &[u8]) + Send>;
 /// noise, say) before giving up: longer than a USB adapter's 16 ms latency timer.
 const SETTLE: Duration = Duration::from_millis(50);
 
+/// How often a wait for an answer looks whether a stop was asked (see [`Master::stop_on`]).
+const STOP_CHECK: Duration = Duration::from_millis(50);
+
 /// The shortest timeout honoured: below it a deadline would pass before a byte could come.
 const MIN_TIMEOUT: Duration = Duration::from_millis(1);
 
@@ -149,6 +157,8 @@ pub struct Master {
     in_step: bool,
     /// A second path to the device, and when to change to it.
     failover: Option<Box<failover::Failover>>,
+    /// Set (by a signal handler) to end a wait for an answer at once.
+    stop: Option<Arc<AtomicBool>>,
 }
 
 /// What the bytes received so far came to.
@@ -179,6 +189,41 @@ impl Master {
             started: Instant::now(),
             in_step: false,
             failover: None,
+            stop: None,
+        }
+    }
+
+    /// Ends a wait for an answer as soon as `stop` is set, with
+    /// [`MasterError::Interrupted`], rather than at the answer's timeout: a command that a
+    /// signal ends (a dump) stops at once however long `--timeout` is.
+    pub fn stop_on(&mut self, stop: Arc<AtomicBool>) {
+        self.stop = Some(stop);
+    }
+
+    fn stopped(&self) -> bool {
+        self.stop
+            .as_ref()
+            .is_some_and(|stop| stop.load(Ordering::SeqCst))
+    }
+
+    /// The transport's `receive` until `until`, in slices short enough to notice a stop
+    /// asked meanwhile: then an error of kind `Interrupted`.
+    fn receive(&mut self, chunk: &mut Vec<u8>, until: Instant) -> std::io::Result<usize> {
+        if self.stop.is_none() {
+            return self.transport.receive(chunk, until);
+        }
+        loop {
+            if self.stopped() {
+                return Err(std::io::Error::new(
+                    std::io::ErrorKind::Interrupted,
+                    "interrupted",
+                ));
+            }
+            let slice = until.min(Instant::now() + STOP_CHECK);
+            let received = self.transport.receive(chunk, slice)?;
+            if received > 0 || Instant::now() >= until {
+                return Ok(received);
+            }
         }
     }
 
@@ -224,7 +269,7 @@ impl Master {
                 None => end,
             };
             chunk.clear();
-            let received = self.transport.receive(&mut chunk, until)?;
+            let received = self.receive(&mut chunk, until)?;
             if received == 0 {
                 framer.finish(&mut events);
             } else {
@@ -455,7 +500,7 @@ impl Master {
                 give_up
             };
             chunk.clear();
-            match self.transport.receive(&mut chunk, wait_until) {
+            match self.receive(&mut chunk, wait_until) {
                 Ok(0) if undecided && Instant::now() < give_up => {
                     undecided = false;
                     let now = self.started.elapsed().as_micros() as u64;
@@ -494,6 +539,7 @@ impl Master {
                 self.in_step = true;
                 Ok(pdu)
             }
+            (Err(Some(_)), _) if self.stopped() => Err(MasterError::Interrupted),
             (Err(Some(io_error)), _) => Err(MasterError::Io(io_error)),
             _ => {
                 let unexplained = received.len().saturating_sub(heard.stale_bytes);
