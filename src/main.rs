@@ -2,8 +2,9 @@
 //! into one line on stderr and the exit status of CLI.md.
 
 // The C runtime calls `main` below directly, not through the standard library's start: see
-// `main`.
-#![no_main]
+// `main`. A test build keeps the test harness's own `main`, and leaves the rest unused.
+#![cfg_attr(not(test), no_main)]
+#![cfg_attr(test, allow(dead_code, unused_imports))]
 
 mod cmd;
 
@@ -24,6 +25,7 @@ use mbtool::settings::{self, Settings};
 /// writing to a closed pipe is an error the command ends on quietly; descriptors 0 to 2
 /// open, so that no file the command opens (a serial port) takes one of their places; a
 /// panic's message and exit status 101; and standard output flushed on exit.
+#[cfg(not(test))]
 #[allow(unsafe_code)]
 #[no_mangle]
 extern "C" fn main(_argc: c_int, _argv: *const *const c_char) -> c_int {
@@ -42,6 +44,7 @@ extern "C" fn main(_argc: c_int, _argv: *const *const c_char) -> c_int {
 ///
 /// # Safety
 /// Must run before other threads open files.
+#[cfg(not(test))]
 #[allow(unsafe_code)]
 unsafe fn open_standard_descriptors() {
     let mut fds = [0, 1, 2].map(|fd| libc::pollfd {
