@@ -926,7 +926,7 @@ fn standard_input_still_open_ends_on_sigterm_and_sigint_with_its_frames_and_the_
     // `socat ... | mbtool sniff --input -`: a line captured by another program, ended by
     // Ctrl-C or SIGTERM while the pipe is quiet, as a live capture ends.
     for signal in ["TERM", "INT"] {
-        let mut child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+        let mut child = crate::support::mbtool_process()
             .args(["sniff", "--input", "-", "--json"])
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
