@@ -90,7 +90,7 @@ pub struct SniffWriter {
 /// pairing and the TCP place.
 /// `hex`: the frame's bytes as spaced hex.
 fn frame_json(line: &mut Vec<u8>, frame: &FrameRecord, hex: &str) -> io::Result<()> {
-    let report = &frame.report;
+    let report = frame.report();
     let mut object = JsonObject::open(line);
     object.plain("type", "frame");
     object.field("number", &frame.number)?;
@@ -450,8 +450,8 @@ impl SniffWriter {
             }
             (Format::Csv, Record::Frame(frame)) => self.csv(out, frame),
             (Format::Csv, _) => Ok(()),
-            (Format::Values, Record::Frame(frame)) => match &frame.report.fields.values {
-                Some(values) if frame.report.kind == Kind::Response => {
+            (Format::Values, Record::Frame(frame)) => match &frame.report().fields.values {
+                Some(values) if frame.report().kind == Kind::Response => {
                     for value in shown_values(values, usize::MAX).split(' ') {
                         writeln!(out, "{value}")?;
                     }
@@ -472,7 +472,7 @@ impl SniffWriter {
             writeln!(out, "number,time,gap,slave,function,kind,valid,summary")?;
             self.csv_header_written = true;
         }
-        let r = &frame.report;
+        let r = frame.report();
         writeln!(
             out,
             "{},{},{},{},{},{},{},{}",
@@ -507,7 +507,7 @@ impl SniffWriter {
             )?;
             self.csv_header_written = true;
         }
-        let r = &frame.report;
+        let r = frame.report();
         let show = |value: Option<u64>| value.map(|v| v.to_string()).unwrap_or_default();
         writeln!(
             out,
@@ -545,7 +545,7 @@ impl SniffWriter {
     /// A serial frame's line, put together in `self.text`: the number, time, gap, slave,
     /// function, kind, what it says and its checksum.
     fn serial_frame_line(&mut self, frame: &FrameRecord) {
-        let r = &frame.report;
+        let r = frame.report();
         let text = &mut self.text;
         text.clear();
         let colour = if !r.valid {
@@ -603,7 +603,7 @@ impl SniffWriter {
                     self.serial_frame_line(frame);
                     return out.write_all(self.text.as_bytes());
                 };
-                let r = &frame.report;
+                let r = frame.report();
                 let mut text = format!(
                     "#{:<6}{} {}  tid {:<5} unit {:<3} {:>2} {:<30} {:<9} {}{}",
                     frame.number,

@@ -144,7 +144,7 @@ fn replay_timed_frames(
     let shown = frames
         .iter()
         .map(|f| {
-            let direction = match (f.report.kind, f.report.valid) {
+            let direction = match (f.report().kind, f.report().valid) {
                 (mbtool_core::describe::Kind::Request, _) => "req",
                 (_, true) => "resp",
                 (_, false) => "broken",

@@ -142,9 +142,9 @@ fn frames(records: &[Record]) -> Vec<(u16, Kind, bool, Option<u64>)> {
         .iter()
         .filter_map(|record| match record {
             Record::Frame(frame) => Some((
-                frame.report.transaction.unwrap_or_default(),
-                frame.report.kind,
-                frame.report.valid,
+                frame.report().transaction.unwrap_or_default(),
+                frame.report().kind,
+                frame.report().valid,
                 frame.tcp.and_then(|place| place.request_packet),
             )),
             _ => None,

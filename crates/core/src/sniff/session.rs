@@ -1,6 +1,7 @@
 //! A sniffing session: frames found, read as requests and answers, paired, filtered and
 //! counted. Pure, like the framer it drives.
 
+use std::cell::{OnceCell, RefCell};
 use std::collections::BTreeMap;
 use std::net::SocketAddr;
 
@@ -63,7 +64,7 @@ pub struct TcpPlace {
 }
 
 /// A frame as a session shows it.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct FrameRecord {
     /// Its number in the capture, from 1, counting the frames a filter hides.
     pub number: u64,
@@ -72,14 +73,90 @@ pub struct FrameRecord {
     /// Microseconds from the start of the capture: when the first byte arrived, or, without
     /// timing, where the frame stands at the line's speed.
     pub at: u64,
-    /// What the frame says, field by field.
-    pub report: FrameReport,
+    /// What the frame says: see [`FrameRecord::report`].
+    report: OnceCell<FrameReport>,
+    /// How the session read a valid frame, until its report is worked out from it.
+    reading: RefCell<Option<SessionReading>>,
     /// Silence before the frame since the end of the previous one, in microseconds.
     pub gap: Option<u64>,
     /// An answer that follows its request.
     pub paired: bool,
     /// In a TCP capture: where the frame was.
     pub tcp: Option<TcpPlace>,
+}
+
+/// How the session read a valid frame's PDU, and the request it answers: all its report
+/// is made from.
+#[derive(Clone, Debug)]
+struct SessionReading {
+    mode: Mode,
+    reading: Reading,
+    /// The request a read answer answers, which gives its addresses.
+    answers: Option<Request>,
+}
+
+impl FrameRecord {
+    /// A frame and its report.
+    pub fn new(number: u64, found: Found, at: u64, report: FrameReport) -> Self {
+        Self {
+            number,
+            found,
+            at,
+            report: OnceCell::from(report),
+            reading: RefCell::new(None),
+            gap: None,
+            paired: false,
+            tcp: None,
+        }
+    }
+
+    /// A valid frame whose report is worked out from `reading` when first asked for.
+    fn read(number: u64, found: Found, at: u64, reading: SessionReading) -> Self {
+        Self {
+            number,
+            found,
+            at,
+            report: OnceCell::new(),
+            reading: RefCell::new(Some(reading)),
+            gap: None,
+            paired: false,
+            tcp: None,
+        }
+    }
+
+    /// What the frame says, field by field. A valid frame's is worked out the first time it
+    /// is asked for, on the thread that asks: the one that shows the frame, not the one
+    /// that finds it, so that a capture is framed and described side by side.
+    pub fn report(&self) -> &FrameReport {
+        self.report.get_or_init(|| {
+            let bytes = &self.found.bytes;
+            let Some(read) = self.reading.borrow_mut().take() else {
+                // Every record has its report or its reading; this is a description all
+                // the same, from the bytes alone.
+                return describe_frame(bytes, None, None);
+            };
+            let Ok(envelope) = Envelope::open(read.mode, bytes) else {
+                return describe_frame(bytes, Some(read.mode), None);
+            };
+            let mut report = describe_reading(read.mode, &envelope, read.reading);
+            if let Some(request) = &read.answers {
+                locate_answer(&mut report, request, &envelope.pdu);
+            }
+            report
+        })
+    }
+}
+
+impl PartialEq for FrameRecord {
+    fn eq(&self, other: &Self) -> bool {
+        self.number == other.number
+            && self.found == other.found
+            && self.at == other.at
+            && self.gap == other.gap
+            && self.paired == other.paired
+            && self.tcp == other.tcp
+            && self.report() == other.report()
+    }
 }
 
 /// The tally of one slave address.
@@ -322,6 +399,8 @@ impl Session {
             _ => None,
         };
         self.last_end = found.end.or(self.last_end);
+        self.numbered += 1;
+        let (number, at) = (self.numbered, self.at(found.start, found.offset));
         let shown = match found.broken {
             Some(broken) => {
                 // Read the way the framer found it travelling (a cut answer is an answer).
@@ -344,34 +423,31 @@ impl Session {
                 self.counts.frame(&report);
                 self.filter
                     .shows(report.slave, report.function)
-                    .then_some((report, false))
+                    .then(|| FrameRecord::new(number, found, at, report))
             }
-            None => self.valid_frame(&found, out),
+            None => self.valid_frame(number, found, at, out),
         };
-        self.numbered += 1;
-        if let Some((report, paired)) = shown {
-            out.push(Record::Frame(FrameRecord {
-                number: self.numbered,
-                at: self.at(found.start, found.offset),
-                found,
-                report,
-                gap,
-                paired,
-                tcp: None,
-            }));
+        if let Some(mut record) = shown {
+            record.gap = gap;
+            out.push(Record::Frame(record));
         }
     }
 
-    /// Pairs and counts a frame whose checksum holds; describes it only when the filter
-    /// shows it (the description is most of the cost of a frame).
-    fn valid_frame(&mut self, found: &Found, out: &mut Vec<Record>) -> Option<(FrameReport, bool)> {
+    /// A frame whose checksum holds: paired and counted now, described when shown.
+    fn valid_frame(
+        &mut self,
+        number: u64,
+        found: Found,
+        at: u64,
+        out: &mut Vec<Record>,
+    ) -> Option<FrameRecord> {
         let Ok(envelope) = Envelope::open(self.mode, &found.bytes) else {
             let report = describe_frame(&found.bytes, Some(self.mode), None);
             self.counts.frame(&report);
             return self
                 .filter
                 .shows(report.slave, report.function)
-                .then_some((report, false));
+                .then(|| FrameRecord::new(number, found, at, report));
         };
         // The PDU is read once: to pair it, and then to describe that reading.
         let reading = Reading::infer(&envelope.pdu);
@@ -392,21 +468,31 @@ impl Session {
         if !self.filter.shows(envelope.slave, function) {
             return None;
         }
-        let describe = |reading| describe_reading(self.mode, &envelope, reading);
-        Some(match role {
-            Role::Request(request) => (describe(Reading::One(Pdu::Request(request))), false),
+        let (reading, answers, paired) = match role {
+            Role::Request(request) => (Reading::One(Pdu::Request(request)), None, false),
             Role::Answer { pdu, to } => {
-                let answer_to_read = matches!(pdu, Pdu::Response(_));
-                let mut report = describe(Reading::One(pdu));
-                if let (Some(request), true) = (&to, answer_to_read) {
-                    locate_answer(&mut report, request, &envelope.pdu);
-                }
-                (report, to.is_some())
+                let paired = to.is_some();
+                // Only a read's answer takes its addresses from the request.
+                let answers = to.filter(|_| matches!(pdu, Pdu::Response(_)));
+                (Reading::One(pdu), answers, paired)
             }
             Role::Unsettled { request, response } => {
-                (describe(Reading::Both { request, response }), false)
+                (Reading::Both { request, response }, None, false)
             }
-            Role::Malformed(reading) => (describe(reading), false),
-        })
+            Role::Malformed(reading) => (reading, None, false),
+        };
+        let mode = self.mode;
+        let mut record = FrameRecord::read(
+            number,
+            found,
+            at,
+            SessionReading {
+                mode,
+                reading,
+                answers,
+            },
+        );
+        record.paired = paired;
+        Some(record)
     }
 }

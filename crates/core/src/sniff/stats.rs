@@ -68,14 +68,14 @@ impl Stats {
     /// Takes a record into the tallies.
     pub fn record(&mut self, record: &Record) {
         match record {
-            Record::Frame(frame) if frame.report.valid => {
-                let station = (frame.tcp.map(|place| place.server), frame.report.slave);
+            Record::Frame(frame) if frame.report().valid => {
+                let station = (frame.tcp.map(|place| place.server), frame.report().slave);
                 let tally = self.stations.entry(station).or_default();
-                match frame.report.kind {
+                match frame.report().kind {
                     Kind::Request => tally.requests += 1,
                     Kind::Response | Kind::Exception => {
                         tally.answers += 1;
-                        if let Some(code) = frame.report.fields.exception {
+                        if let Some(code) = frame.report().fields.exception {
                             *tally.exceptions.entry(code).or_default() += 1;
                         }
                     }
@@ -84,7 +84,7 @@ impl Stats {
                     tally.times.push(time);
                     let function = tally
                         .functions
-                        .entry(frame.report.function & 0x7F)
+                        .entry(frame.report().function & 0x7F)
                         .or_default();
                     *function = (function.0 + 1, function.1 + time);
                 }

@@ -411,15 +411,10 @@ impl TcpSession {
         self.counts.frame(&report);
         self.numbered += 1;
         if self.filter.shows(report.slave, report.function) {
-            out.push(Record::Frame(FrameRecord {
-                number: self.numbered,
-                at: self.at(Some(time)),
-                paired: place.request_packet.is_some(),
-                found,
-                report,
-                gap: None,
-                tcp: Some(place),
-            }));
+            let mut record = FrameRecord::new(self.numbered, found, self.at(Some(time)), report);
+            record.paired = place.request_packet.is_some();
+            record.tcp = Some(place);
+            out.push(Record::Frame(record));
         }
     }
 
