@@ -2,6 +2,7 @@
 //! Modbus; it only shows what the logic produced.
 
 pub mod backup;
+mod columns;
 pub mod decode;
 pub mod device;
 pub mod encode;
