@@ -88,6 +88,12 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
         return Ok(super::shared::INTERRUPTED);
     }
     let outcome = outcome.and_then(|()| verify(master, slave, &entries));
+    if matches!(outcome, Err(RunError::Master(MasterError::Interrupted))) {
+        mbtool::note!(
+            "mbtool: restore interrupted while reading back: every value of {file} was written to slave {slave}, but not all were read back; run restore again to check them"
+        );
+        return Ok(super::shared::INTERRUPTED);
+    }
     super::shared::tell_switches(settings, master);
     let differences =
         outcome.map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;

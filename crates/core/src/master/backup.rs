@@ -276,6 +276,10 @@ pub fn verify(
             count: entry.values.len() as u32,
         };
         let read = dump(master, slave, &[range], None, &AtomicBool::new(false))?;
+        // A stop asked while a read-back waited: what was not read is no difference.
+        if read.interrupted {
+            return Err(RunError::Master(MasterError::Interrupted));
+        }
         let wanted = as_numbers(&entry.values);
         let mut found = vec![None; wanted.len()];
         for got in &read.entries {

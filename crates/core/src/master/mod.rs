@@ -194,8 +194,11 @@ impl Master {
     }
 
     /// Ends a wait for an answer as soon as `stop` is set, with
-    /// [`MasterError::Interrupted`], rather than at the answer's timeout: a command that a
-    /// signal ends (a dump) stops at once however long `--timeout` is.
+    /// [`MasterError::Interrupted`], rather than at the answer's timeout, where nothing is
+    /// left behind: over Modbus TCP the answer goes to a connection that closes with the
+    /// process. On a serial line (or one behind a gateway) the wait goes on to its answer
+    /// or its timeout all the same: an answer still on its way would be taken by the next
+    /// command for the answer to its own request, a value shown that was never asked.
     pub fn stop_on(&mut self, stop: Arc<AtomicBool>) {
         self.stop = Some(stop);
     }
@@ -209,7 +212,7 @@ impl Master {
     /// The transport's `receive` until `until`, in slices short enough to notice a stop
     /// asked meanwhile: then an error of kind `Interrupted`.
     fn receive(&mut self, chunk: &mut Vec<u8>, until: Instant) -> std::io::Result<usize> {
-        if self.stop.is_none() {
+        if self.stop.is_none() || self.transport.is_serial_line() {
             return self.transport.receive(chunk, until);
         }
         loop {
