@@ -66,12 +66,41 @@ impl Sinks {
 type Input = io::BufReader<Box<dyn Read + Send>>;
 
 fn open_input(path: &Path) -> Result<Input> {
-    let input: Box<dyn Read + Send> = if path.as_os_str() == "-" {
+    let mut input: Box<dyn Read + Send> = if path.as_os_str() == "-" {
         Box::new(StoppableStdin::new(super::shared::stop_on_signal()?))
     } else {
         Box::new(File::open(path).with_context(|| format!("cannot open {}", path.display()))?)
     };
-    Ok(io::BufReader::with_capacity(1 << 16, input))
+    let head =
+        capture_head(&mut input).with_context(|| format!("cannot read {}", path.display()))?;
+    Ok(io::BufReader::with_capacity(
+        1 << 16,
+        Box::new(io::Cursor::new(head).chain(input)),
+    ))
+}
+
+/// The first bytes of the input, read until they tell whether it is a packet capture and,
+/// if it is, hold its file header whole: a pipe (`tcpdump -w - | mbtool sniff --input -`)
+/// may bring the header in pieces, and the capture is told, and its header read, from
+/// what the first read gives. Raw bytes of a line are held back by four bytes at most.
+fn capture_head(input: &mut dyn Read) -> io::Result<Vec<u8>> {
+    let mut head = Vec::new();
+    let mut want = 4;
+    while head.len() < want {
+        let mut chunk = vec![0u8; want - head.len()];
+        match input.read(&mut chunk) {
+            Ok(0) => break,
+            Ok(n) => head.extend_from_slice(&chunk[..n]),
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        }
+        if head.len() >= want {
+            want = capture::header_len(&head)
+                .unwrap_or(head.len())
+                .max(head.len());
+        }
+    }
+    Ok(head)
 }
 
 /// Standard input that ends, as at the end of the input, on Ctrl-C or SIGTERM: `--input -`

@@ -598,3 +598,40 @@ fn frames_written_for_wireshark(file: &Path, port: u16) {
         "{read:?}"
     );
 }
+
+#[test]
+fn a_capture_piped_in_pieces_is_read_as_the_file_is() {
+    // `tcpdump -w - | mbtool sniff --input -`: the file header may come in pieces, a byte
+    // first, the rest later.
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/captures/modbus-tcp.pcap");
+    let capture = std::fs::read(&path).unwrap();
+    let from_file = mbtool()
+        .args(["sniff", "--json", "--input"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    assert_eq!(from_file.status.code(), Some(0));
+    for split in [1, 8, 23] {
+        let mut child = crate::support::mbtool_process()
+            .args(["sniff", "--json", "--input", "-"])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let mut stdin = child.stdin.take().unwrap();
+        let pieces = capture.clone();
+        let feeder = std::thread::spawn(move || {
+            std::io::Write::write_all(&mut stdin, &pieces[..split]).unwrap();
+            std::thread::sleep(std::time::Duration::from_millis(200));
+            std::io::Write::write_all(&mut stdin, &pieces[split..]).unwrap();
+        });
+        let piped = child.wait_with_output().unwrap();
+        feeder.join().unwrap();
+        assert_eq!(piped.status.code(), Some(0), "split at {split}");
+        assert_eq!(
+            String::from_utf8_lossy(&piped.stdout),
+            String::from_utf8_lossy(&from_file.stdout),
+            "split at {split}"
+        );
+    }
+}

@@ -131,8 +131,11 @@ fn read_splitting(
                 read_splitting(master, place, (address + first, count - first), dump, stop)?;
             }
         }
-        // A signal came while the request waited for its answer.
-        Err(RunError::Master(MasterError::Interrupted)) => dump.interrupted = true,
+        // A signal came while the request waited for its answer: it counts as not made.
+        Err(RunError::Master(MasterError::Interrupted)) => {
+            dump.requests -= 1;
+            dump.interrupted = true;
+        }
         Err(error) => return Err(error),
     }
     Ok(())

@@ -102,6 +102,29 @@ pub fn is_capture(start: &[u8]) -> bool {
     MAGICS.iter().any(|magic| start.starts_with(magic))
 }
 
+/// How long the file header of the capture that `start` begins is, as far as `start` tells:
+/// 24 bytes for pcap; for pcapng, its first block, whose length follows its type (at most
+/// 64 kB is asked for). `None` when `start` begins no capture.
+pub fn header_len(start: &[u8]) -> Option<usize> {
+    if !is_capture(start) {
+        return None;
+    }
+    const PCAP_HEADER: usize = 24;
+    const PCAPNG_LENGTH_AND_ORDER: usize = 12;
+    if !start.starts_with(&[0x0A, 0x0D, 0x0D, 0x0A]) {
+        return Some(PCAP_HEADER);
+    }
+    let (Some(length), Some(order)) = (start.get(4..8), start.get(8..12)) else {
+        return Some(PCAPNG_LENGTH_AND_ORDER);
+    };
+    let length = [length[0], length[1], length[2], length[3]];
+    let length = match order {
+        [0x1A, 0x2B, 0x3C, 0x4D] => u32::from_be_bytes(length),
+        _ => u32::from_le_bytes(length),
+    };
+    Some((length as usize).clamp(PCAPNG_LENGTH_AND_ORDER, 1 << 16))
+}
+
 /// Reads the packets of a pcap or pcapng capture, in order, handing each to `each` until
 /// it returns false; returns how many there were.
 pub fn read_packets<R: Read + Send>(
