@@ -35,13 +35,16 @@ fn is_separator(b: u8) -> bool {
     b.is_ascii_whitespace() || matches!(b, b',' | b';')
 }
 
-/// Shows a byte of the input in an error message without printing it raw.
+/// Shows a byte of the input in an error message without printing it raw: a control
+/// character by its byte, a space that is no ASCII space (a no-break space pasted from a
+/// document) by its code point, since shown as itself it would read as a blank.
 fn shown(text: &[u8], at: usize) -> String {
     let rest = text.get(at..).unwrap_or_default();
     match std::str::from_utf8(rest)
         .ok()
         .and_then(|s| s.chars().next())
     {
+        Some(c) if c.is_whitespace() && !c.is_ascii() => format!("U+{:04X}", u32::from(c)),
         Some(c) if !c.is_control() => c.to_string(),
         _ => format!("\\x{:02X}", rest.first().copied().unwrap_or_default()),
     }
@@ -467,6 +470,7 @@ mod tests {
         assert!(matches!(hex("11 0G"), Err(HexError::NotHex(c, 5)) if c == "G"));
         assert_eq!(hex("  "), Err(HexError::Empty));
         assert!(matches!(hex("11 é"), Err(HexError::NotHex(c, _)) if c == "é"));
+        assert!(matches!(hex("11\u{A0}03"), Err(HexError::NotHex(c, 3)) if c == "U+00A0"));
         assert!(matches!(hex("0x"), Err(HexError::NoDigits(_))));
     }
     const REQUEST: [u8; 8] = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
