@@ -1,5 +1,6 @@
 //! `mbtool decode [FRAME...]`: frames from the arguments or, one per line, from stdin.
 
+use std::borrow::Cow;
 use std::io::{self, Write};
 
 use anyhow::Result;
@@ -99,29 +100,50 @@ impl Decoder {
     }
 }
 
-/// The lines the arguments give, each with its place for messages: one frame per argument,
-/// unless the frame was split into words (`mbtool decode 11 03 00 6B ...`, `mbtool decode
-/// TX 11 03 ...`): a lone byte is no frame, so words with one among them are one line. An
-/// argument of several lines (`mbtool decode "$(cat log.txt)"`) is read a line at a time,
-/// as standard input is.
-fn argument_lines(frames: &[String]) -> Vec<(String, String)> {
+/// A line the arguments give, and where it stands, for messages.
+struct ArgumentLine<'a> {
+    text: Cow<'a, str>,
+    /// The argument's number, from 1.
+    frame: usize,
+    /// The line's number within an argument of several lines.
+    line: Option<usize>,
+}
+
+impl ArgumentLine<'_> {
+    fn place(&self) -> String {
+        match self.line {
+            Some(line) => format!("frame {}, line {line}", self.frame),
+            None => format!("frame {}", self.frame),
+        }
+    }
+}
+
+/// The lines the arguments give: one frame per argument, unless the frame was split into
+/// words (`mbtool decode 11 03 00 6B ...`, `mbtool decode TX 11 03 ...`): a lone byte is no
+/// frame, so words with one among them are one line. An argument of several lines
+/// (`mbtool decode "$(cat log.txt)"`) is read a line at a time, as standard input is.
+fn argument_lines(frames: &[String]) -> Vec<ArgumentLine<'_>> {
     let one_per_line = frames.iter().any(|f| f.contains('\n'));
     if !one_per_line && frames.iter().any(|f| f.trim_ascii().len() <= 2) {
-        return vec![("frame 1".into(), frames.join(" "))];
+        return vec![ArgumentLine {
+            text: Cow::Owned(frames.join(" ")),
+            frame: 1,
+            line: None,
+        }];
     }
     frames
         .iter()
         .enumerate()
         .flat_map(|(i, frame)| {
             let several = frame.trim_ascii().contains('\n');
-            frame.lines().enumerate().map(move |(j, line)| {
-                let place = if several {
-                    format!("frame {}, line {}", i + 1, j + 1)
-                } else {
-                    format!("frame {}", i + 1)
-                };
-                (place, line.to_string())
-            })
+            frame
+                .lines()
+                .enumerate()
+                .map(move |(j, line)| ArgumentLine {
+                    text: Cow::Borrowed(line),
+                    frame: i + 1,
+                    line: several.then_some(j + 1),
+                })
         })
         .collect()
 }
@@ -174,12 +196,12 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
             ))
             .into());
         }
-        for (place, line) in argument_lines(&args.frames) {
-            if line.len() > MAX_LINE {
-                decoder.too_long(place);
+        for line in argument_lines(&args.frames) {
+            if line.text.len() > MAX_LINE {
+                decoder.too_long(line.place());
                 continue;
             }
-            decoder.line(line.as_bytes(), false, || place.clone())?;
+            decoder.line(line.text.as_bytes(), false, || line.place())?;
         }
         // Comments alone are no frames either.
         if decoder.frames == 0 && decoder.unreadable == 0 {
