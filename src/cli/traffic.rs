@@ -72,7 +72,9 @@ gathers them), a frame whose CRC holds across the gap (of a known layout, or the
 awaited where no frame starts after the gap) is taken whole, and while such frames are more \
 than chance (one in 200 frames or more, the last within 2,000 frames), that line's gaps are \
 not taken for silence (a frame cut short is kept until the bytes show it is none, as \
-without timing). Read a byte at a time, a line's gaps are its own: a silence ends a frame \
+without timing). A gap longer than 64 ms is more than an adapter makes (reads one latency \
+period apart, 32 ms at the longest commonly set, with room for a late read): no frame runs \
+across it, however the line is read. Read a byte at a time, a line's gaps are its own: a silence ends a frame \
 there as it does for every receiver on the bus, whatever CRC the bytes across it pass (a \
 device that pauses inside its frame shows as a frame cut short and the rest). Where the times \
 tell silence, a frame of a user-defined function whose CRC is 00 00 runs to the silence, \

@@ -32,8 +32,10 @@
 //! by chance across a real silence is far rarer, and one such frame (or a device that
 //! paused once) must not cost the rest of a capture its silences. Meanwhile the
 //! times are not taken for silence (nor is the quiet they told), and a frame cut short is
-//! kept until bytes show it is no frame, as without timing. Bytes read one at a time come
-//! through no such adapter: a line's silences are its own, and one ends a frame as it does
+//! kept until bytes show it is no frame, as without timing. No frame runs across a gap
+//! longer than an adapter's reads explain ([`ADAPTER_GAP_MAX_US`]), however the line is
+//! read. Bytes read one at a time come through no such adapter: a line's silences are its
+//! own, and one ends a frame as it does
 //! for every receiver on the bus, whatever CRC the bytes across it pass (a device that
 //! pauses inside its frame sends two pieces, a frame cut short and the rest).
 //!
@@ -133,6 +135,13 @@ const CROSSINGS_PER_ADAPTER: u64 = 200;
 /// a device that paused inside its frames, or a CRC that held by chance, early in a
 /// capture, does not cost the silences of the rest of it.
 const LYING_FOR_FRAMES: u64 = 2_000;
+
+/// The longest gap inside a frame that a USB adapter's reads explain. An adapter hands
+/// bytes over when its latency timer runs out, so a frame that straddles a tick arrives in
+/// reads one period apart: 16 ms by default, 1 ms at `--low-latency`, 32 ms at the longest
+/// commonly set; twice that leaves room for a busy host's late read. A longer gap is the
+/// line's own silence however its bytes were read, and no frame runs across it.
+const ADAPTER_GAP_MAX_US: u64 = 64_000;
 
 /// A time not known (the byte came without one).
 const UNTIMED: u64 = u64::MAX;
@@ -405,6 +414,23 @@ impl Framer {
     /// Whether silence follows any byte of `at..end` but the last: a frame there crosses it.
     fn silence_inside(&self, at: usize, end: usize) -> bool {
         (at..end - 1).any(|i| self.silence_after(i))
+    }
+
+    /// Whether bytes over `at..end` run across a silence that ends a frame, for a sniffer's
+    /// rules: any silence the times tell, where the line is read a byte at a time (no
+    /// adapter gathers its bytes); a gap longer than an adapter's reads explain, however
+    /// the line is read.
+    fn crosses_silence(&self, at: usize, end: usize) -> bool {
+        if !self.ends_cut_frames || self.times.is_empty() {
+            return false;
+        }
+        if !self.bursts && self.times_tell_silence() {
+            return self.silence_inside(at, end);
+        }
+        (at..end - 1).any(|i| match (self.time(i), self.time(i + 1)) {
+            (Some(a), Some(b)) => b.saturating_sub(a) > ADAPTER_GAP_MAX_US,
+            _ => false,
+        })
     }
 
     /// Whether the line has been silent since the last byte, by `now`.
@@ -914,6 +940,32 @@ mod tests {
         assert!(matches!(out.last(), Some(Event::Frame(f)) if f.bytes[..] == REQUEST[..]));
     }
 
+    #[test]
+    fn a_gap_longer_than_an_adapter_makes_ends_a_frame_on_a_line_read_in_bursts() {
+        // The answer's last byte comes 200 ms after the rest, and no frame after it: an
+        // adapter's latency timer splits a frame into reads one period apart, never that far.
+        let after = [ANSWER[10], 0xF3, 0x7A];
+        let out = timed_frames(&[
+            (&REQUEST, 10_000),
+            (&ANSWER[..10], 20_000),
+            (&after, 220_000),
+        ]);
+        assert_eq!(
+            out,
+            [
+                (REQUEST.to_vec(), None),
+                (ANSWER[..10].to_vec(), Some(Broken::Incomplete))
+            ]
+        );
+        // 16 ms apart, the two reads are one answer.
+        let out = timed_frames(&[
+            (&REQUEST, 10_000),
+            (&ANSWER[..10], 20_000),
+            (&ANSWER[10..], 36_000),
+        ]);
+        assert_eq!(out, [(REQUEST.to_vec(), None), (ANSWER.to_vec(), None)]);
+    }
+
     /// The frames of pieces read one a read, each read at its last byte (one character a
     /// byte at 19200 8E1), with the silence after it in us: a line read a frame at a time.
     fn read_at_their_ends(pieces: &[(&[u8], u64)]) -> Vec<(Vec<u8>, Option<Broken>)> {
@@ -943,6 +995,51 @@ mod tests {
             time += silence;
         }
         timed_frames(&reads)
+    }
+
+    #[test]
+    fn read_a_byte_at_a_time_a_cut_request_that_reads_as_an_answer_is_no_crc_error_across_its_silence(
+    ) {
+        // Read Input Registers cut two bytes short: its first six bytes read as an answer of
+        // one byte, a length that ends at the silence. No request awaits that answer, so
+        // they are a request cut short, not the start of one running across the silence.
+        let request = rtu(&[0x11, 0x04, 0x01, 0x35, 0x00, 0x0C]);
+        let out = read_a_byte_at_a_time(&[
+            (&REQUEST, 5_000),
+            (&ANSWER, 5_000),
+            (&request[..6], 133_000),
+            (&[0x11, 0x17], 250_000),
+            (&request, 5_000),
+        ]);
+        assert_eq!(
+            out,
+            [
+                (REQUEST.to_vec(), None),
+                (ANSWER.to_vec(), None),
+                (request[..6].to_vec(), Some(Broken::Incomplete)),
+                (vec![0x11, 0x17], Some(Broken::Incomplete)),
+                (request, None),
+            ]
+        );
+    }
+
+    #[test]
+    fn the_awaited_answer_that_fills_its_turn_is_a_crc_error_whatever_passes_a_crc_inside() {
+        // The answer to Read Input Registers x6, corrupted; its last seven bytes pass a CRC
+        // as a frame of user-defined function 65, which the silence after it would support.
+        let request = rtu(&[0x11, 0x04, 0x00, 0x00, 0x00, 0x06]);
+        let mut answer = vec![0x11, 0x04, 0x0C, 0x10, 0x20, 0x30, 0x40, 0x50, 0x60, 0x70];
+        answer.extend_from_slice(&rtu(&[0x05, 0x41, 0xAA, 0xBB, 0xCC]));
+        assert!(!crc_holds(&answer));
+        let out = read_a_byte_at_a_time(&[(&request, 5_000), (&answer, 5_000), (&REQUEST, 5_000)]);
+        assert_eq!(
+            out,
+            [
+                (request, None),
+                (answer, Some(Broken::Checksum)),
+                (REQUEST.to_vec(), None)
+            ]
+        );
     }
 
     /// The exchanges of a busy line, each frame followed by 5 ms of silence.

@@ -278,10 +278,11 @@ impl Framer {
         }
         // Read a byte at a time, a line's silences are its own (no adapter gathers its
         // bytes), and a silence ends a frame as it does for every receiver on the bus: no
-        // reading runs across one, whatever CRC its bytes pass.
-        if !self.bursts && self.times_tell_silence() {
-            found.valid.retain(|c| !self.silence_inside(at, at + c.len));
-        }
+        // reading runs across one, whatever CRC its bytes pass. Nor, however the line is
+        // read, across a gap longer than an adapter makes.
+        found
+            .valid
+            .retain(|c| !self.crosses_silence(at, at + c.len));
         found.valid.sort_unstable_by_key(|c| c.len);
         found
     }
@@ -386,11 +387,12 @@ impl Framer {
     /// after the silence.
     fn ended_by_silence(&self, at: usize, end: usize, may_complete: bool) -> Tell {
         let data = &self.buffer[at..end];
-        // The answer awaited is read as an answer only.
+        // The answer awaited is read as an answer only, anything else as a request: a
+        // broken answer is told only where it is awaited.
         let directions: &[Direction] = if self.answers_awaited(data, None) {
             &[Direction::Response]
         } else {
-            &[Direction::Request, Direction::Response]
+            &[Direction::Request]
         };
         if directions
             .iter()
@@ -516,8 +518,11 @@ impl Framer {
             [Direction::Request, Direction::Response]
                 .into_iter()
                 .filter_map(|direction| match rtu_frame_length(data, direction) {
+                    // Nor does a broken frame run across a silence that ends frames.
                     Length::Known(len)
-                        if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len) && len <= data.len() =>
+                        if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len)
+                            && len <= data.len()
+                            && !self.crosses_silence(at, at + len) =>
                     {
                         Some((len, direction))
                     }
@@ -541,10 +546,16 @@ impl Framer {
             // without a known layout): the conversation vouches for the answer's place. A
             // request in step has no such voucher, and a few bytes of noise read as one.
             let depth = u8::from(direction == Direction::Response);
+            // The answer awaited whose layout ends right where the times tell a silence
+            // has the conversation and the line both for it: bytes inside it that pass a
+            // CRC as a function without a known layout are chance.
+            let fills_its_turn = direction == Direction::Response
+                && self.times_tell_silence()
+                && self.silence_after(at + len - 1);
             match self.followed_well(at + len, depth, false, None) {
                 Tell::Yes
                     if self.inner_frame_end(at, at + len).is_none()
-                        && !self.holds_unknown_frame(at, at + len) =>
+                        && (fills_its_turn || !self.holds_unknown_frame(at, at + len)) =>
                 {
                     match self.overlapped(at, at + len) {
                         Tell::No => return (Tell::Yes, Some((len, direction))),
