@@ -244,10 +244,7 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
             let timing = replay_timing(path)?;
             write_alongside(&mut sinks, |found| match &timing {
                 // The capture ended at its last read or idle, not at its last frame.
-                Some(events) => {
-                    replay_timed(input, events, &mut session, found, &mut save)?;
-                    Ok(events.iter().map(timing::Event::time).max())
-                }
+                Some(timing) => replay_timed(input, timing, &mut session, found, &mut save),
                 None => {
                     replay(input, &mut session, found, &mut save)?;
                     Ok(None)
@@ -502,63 +499,75 @@ impl Save {
     }
 }
 
-/// The timing saved beside a capture file, when there is one.
-fn replay_timing(path: &Path) -> Result<Option<Vec<timing::Event>>> {
+/// The timing file beside a capture, when there is one, read through once to check it: a
+/// replay must not show frames and then find its timing bad. It is read again, an event
+/// at a time, as the capture is replayed.
+fn replay_timing(path: &Path) -> Result<Option<TimingFile>> {
     let beside = timing::beside(path);
     if path.as_os_str() == "-" || !beside.exists() {
         return Ok(None);
     }
-    let bytes =
-        std::fs::read(&beside).with_context(|| format!("cannot read {}", beside.display()))?;
-    let text = String::from_utf8(bytes).map_err(|_| {
-        Error::usage(format!(
-            "{} is not text, so no .timing file: move it away to replay without timing",
+    // A directory or a FIFO of that name is no timing written by `--save`, and a FIFO
+    // would hold the replay until someone writes to it.
+    let is_file = std::fs::metadata(&beside)
+        .with_context(|| format!("cannot read {}", beside.display()))?
+        .is_file();
+    if !is_file {
+        return Err(Error::usage(format!(
+            "{} is not a file, so no .timing file: move it away to replay without timing",
             beside.display()
         ))
-    })?;
-    // The reads may not add up to more than the capture holds: a count that does is a
-    // file written by someone else, and must not make the replay allocate it.
-    let capture = std::fs::metadata(path)
-        .with_context(|| format!("cannot read {}", path.display()))?
-        .len();
-    let mut covered = 0u64;
-    let mut events: Vec<timing::Event> = Vec::new();
-    for (number, line) in text.lines().enumerate() {
-        let fault = match timing::parse(line) {
-            Ok(Some(event)) => match (events.last(), event) {
-                (Some(before), _) if event.time() < before.time() => Some(format!(
-                    "{} us comes before the line above it ({} us): the times must not go back",
-                    event.time(),
-                    before.time()
-                )),
-                (_, timing::Event::Bytes { count, .. })
-                    if covered.saturating_add(count as u64) > capture =>
-                {
-                    Some(format!(
-                        "the reads come to more than the capture's {capture} bytes"
-                    ))
-                }
-                (_, event) => {
-                    if let timing::Event::Bytes { count, .. } = event {
-                        covered += count as u64;
-                    }
-                    events.push(event);
-                    None
-                }
-            },
-            Ok(None) => None,
-            Err(message) => Some(message),
-        };
-        if let Some(message) = fault {
-            return Err(Error::usage(format!(
-                "{}:{}: {message}; move the file away to replay without timing",
-                beside.display(),
-                number + 1
-            ))
-            .into());
-        }
+        .into());
     }
-    Ok(Some(events))
+    let timing = TimingFile {
+        // The reads may not add up to more than the capture holds: a count that does is
+        // a file written by someone else, and must not make the replay allocate it.
+        capture_len: std::fs::metadata(path)
+            .with_context(|| format!("cannot read {}", path.display()))?
+            .len(),
+        path: beside,
+    };
+    let mut events = timing.open()?;
+    while timing.next(&mut events)?.is_some() {}
+    Ok(Some(timing))
+}
+
+/// A capture's timing file, and the length of the capture it times.
+struct TimingFile {
+    path: std::path::PathBuf,
+    capture_len: u64,
+}
+
+impl TimingFile {
+    fn open(&self) -> Result<timing::Reader<io::BufReader<File>>> {
+        let file = File::open(&self.path)
+            .with_context(|| format!("cannot read {}", self.path.display()))?;
+        Ok(timing::Reader::new(
+            io::BufReader::new(file),
+            self.capture_len,
+        ))
+    }
+
+    /// The next event of `events`, its faults told as what to do.
+    fn next(
+        &self,
+        events: &mut timing::Reader<io::BufReader<File>>,
+    ) -> Result<Option<timing::Event>> {
+        let path = self.path.display();
+        events.next_event().map_err(|error| match error {
+            timing::TimingError::Io(error) => {
+                anyhow::Error::new(error).context(format!("cannot read {path}"))
+            }
+            timing::TimingError::NotText => Error::usage(format!(
+                "{path} is not text, so no .timing file: move it away to replay without timing"
+            ))
+            .into(),
+            timing::TimingError::Line { line, message } => Error::usage(format!(
+                "{path}:{line}: {message}; move the file away to replay without timing"
+            ))
+            .into(),
+        })
+    }
 }
 
 /// How many batches of records may wait to be written while the next are framed.
@@ -663,17 +672,19 @@ fn replay(
 }
 
 /// A capture with its timing: the bytes are given to the session exactly as the live
-/// session was given them, so the same frames come out.
+/// session was given them, so the same frames come out. Returns the time of the timing's
+/// last event, when the capture ended.
 fn replay_timed(
     input: &mut dyn Read,
-    events: &[timing::Event],
+    timing: &TimingFile,
     session: &mut Session,
     found: &mut Batches,
     save: &mut Option<Save>,
-) -> Result<()> {
+) -> Result<Option<u64>> {
+    let mut events = timing.open()?;
     let mut chunk = Vec::new();
-    for event in events {
-        match *event {
+    while let Some(event) = timing.next(&mut events)? {
+        match event {
             timing::Event::Bytes { time, count } => {
                 chunk.resize(count, 0);
                 input.read_exact(&mut chunk).map_err(|_| {
@@ -697,16 +708,10 @@ fn replay_timed(
     if untimed > 0 {
         mbtool::note!(
             "mbtool: the .timing file covers the capture's first {} bytes; the last {untimed} are framed without timing",
-            events
-                .iter()
-                .map(|event| match event {
-                    timing::Event::Bytes { count, .. } => *count as u64,
-                    timing::Event::Idle { .. } => 0,
-                })
-                .sum::<u64>()
+            events.covered()
         );
     }
-    Ok(())
+    Ok(events.last_time())
 }
 
 /// Reads the port until Ctrl-C; returns the time the capture ended, in microseconds.

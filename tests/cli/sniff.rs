@@ -873,6 +873,38 @@ fn a_timing_file_that_goes_back_or_falls_short_is_told() {
         .filter(|l| l["type"] == "frame")
         .count();
     assert_eq!(frames, 2);
+    // Written by an editor: a byte order mark and a tab are read as the text they frame.
+    std::fs::write(&timing, "\u{feff}9000\t8\n9600 11\n").unwrap();
+    let output = sniff();
+    assert!(
+        output.status.success() && output.stderr.is_empty(),
+        "{output:?}"
+    );
+    // A line of 100,000 characters is quoted by its start, in one short line.
+    std::fs::write(&timing, "9".repeat(100_000) + " x\n").unwrap();
+    let output = sniff();
+    assert_eq!(output.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.len() < 300 && stderr.lines().count() == 1,
+        "{stderr}"
+    );
+    // A directory or a FIFO of that name: refused at once, a FIFO not waited on.
+    std::fs::remove_file(&timing).unwrap();
+    std::fs::create_dir(&timing).unwrap();
+    let output = sniff();
+    assert_eq!(output.status.code(), Some(2), "{output:?}");
+    assert!(String::from_utf8_lossy(&output.stderr).contains("is not a file"));
+    std::fs::remove_dir(&timing).unwrap();
+    let made = std::process::Command::new("mkfifo")
+        .arg(&timing)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let started = std::time::Instant::now();
+    let output = sniff();
+    assert_eq!(output.status.code(), Some(2), "{output:?}");
+    assert!(started.elapsed() < std::time::Duration::from_secs(1));
 }
 
 #[test]

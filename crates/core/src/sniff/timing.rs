@@ -10,6 +10,7 @@
 //! Lines starting with `#` are comments.
 
 use std::fmt;
+use std::io::{self, BufRead, Read};
 
 /// The first line of a timing file.
 pub const HEADER: &str = "# mbtool sniff timing: '<us> <count>' = count bytes read together, the last at <us>; '<us> idle' = quiet until <us>";
@@ -67,20 +68,152 @@ pub fn parse(line: &str) -> Result<Option<Event>, String> {
     if line.is_empty() || line.starts_with('#') {
         return Ok(None);
     }
-    let bad = || format!("'{line}' is neither '<us> <count>' nor '<us> idle'");
-    let (time, what) = line.split_once(' ').ok_or_else(bad)?;
+    let bad = || format!("{} is neither '<us> <count>' nor '<us> idle'", quoted(line));
+    // Spaces or tabs between the two words, as a hand edit leaves them.
+    let mut words = line.split_ascii_whitespace();
+    let (Some(time), Some(what), None) = (words.next(), words.next(), words.next()) else {
+        return Err(bad());
+    };
     let time = time.parse::<u64>().map_err(|_| bad())?;
     if time > MAX_TIME_US {
         return Err(format!(
             "{time} us is past any capture's times (at most 2^53 us, 285 years)"
         ));
     }
-    match what.trim() {
+    match what {
         "idle" => Ok(Some(Event::Idle { time })),
         count => count
             .parse::<usize>()
             .map(|count| Some(Event::Bytes { time, count }))
             .map_err(|_| bad()),
+    }
+}
+
+/// The longest line a timing file may hold: its lines are some thirty characters, and a
+/// file without line ends (not a timing file at all) must not be read whole to find one.
+const MAX_LINE: u64 = 4096;
+
+/// What is wrong with a timing file.
+#[derive(Debug, thiserror::Error)]
+pub enum TimingError {
+    /// It could not be read.
+    #[error(transparent)]
+    Io(io::Error),
+    /// It is not UTF-8 text.
+    #[error("not text")]
+    NotText,
+    /// A line is not an event, or does not follow from those before it.
+    #[error("line {line}: {message}")]
+    Line {
+        /// Its number, from 1.
+        line: usize,
+        /// What is wrong with it.
+        message: String,
+    },
+}
+
+/// Reads the events of a timing file in order, a line at a time: a day of a line read a
+/// byte a read is millions of lines, and holding them costs more than the capture. Each
+/// event is checked against those before it: the times may not go back, and the reads may
+/// not come to more than the capture's bytes.
+pub struct Reader<R> {
+    input: R,
+    line: String,
+    number: usize,
+    last_time: Option<u64>,
+    covered: u64,
+    capture_len: u64,
+}
+
+impl<R: BufRead> Reader<R> {
+    /// Reads `input`, the timing of a capture of `capture_len` bytes.
+    pub fn new(input: R, capture_len: u64) -> Self {
+        Self {
+            input,
+            line: String::new(),
+            number: 0,
+            last_time: None,
+            covered: 0,
+            capture_len,
+        }
+    }
+
+    /// How many bytes of the capture the reads so far cover.
+    pub fn covered(&self) -> u64 {
+        self.covered
+    }
+
+    /// The time of the last event read.
+    pub fn last_time(&self) -> Option<u64> {
+        self.last_time
+    }
+
+    /// The next event; `Ok(None)` at the end of the file.
+    pub fn next_event(&mut self) -> Result<Option<Event>, TimingError> {
+        loop {
+            self.line.clear();
+            let read = (&mut self.input)
+                .take(MAX_LINE + 1)
+                .read_line(&mut self.line);
+            match read {
+                Ok(0) => return Ok(None),
+                Ok(_) => self.number += 1,
+                Err(error) if error.kind() == io::ErrorKind::InvalidData => {
+                    return Err(TimingError::NotText)
+                }
+                Err(error) => return Err(TimingError::Io(error)),
+            }
+            let fault = |message| TimingError::Line {
+                line: self.number,
+                message,
+            };
+            if self.line.len() as u64 > MAX_LINE {
+                return Err(fault(format!(
+                    "longer than {MAX_LINE} characters, no line of a timing file"
+                )));
+            }
+            // A byte order mark, as some editors write at the start of a file, is no text
+            // of it.
+            let text = match self.number {
+                1 => self.line.strip_prefix('\u{feff}').unwrap_or(&self.line),
+                _ => &self.line,
+            };
+            let Some(event) = parse(text).map_err(fault)? else {
+                continue;
+            };
+            if let Some(before) = self.last_time.filter(|before| event.time() < *before) {
+                return Err(fault(format!(
+                    "{} us comes before the line above it ({before} us): the times must not go back",
+                    event.time()
+                )));
+            }
+            if let Event::Bytes { count, .. } = event {
+                match self.covered.checked_add(count as u64) {
+                    Some(covered) if covered <= self.capture_len => self.covered = covered,
+                    _ => {
+                        return Err(fault(format!(
+                            "the reads come to more than the capture's {} bytes",
+                            self.capture_len
+                        )))
+                    }
+                }
+            }
+            self.last_time = Some(event.time());
+            return Ok(Some(event));
+        }
+    }
+}
+
+/// A line as a message quotes it: its start only, when it is too long for one line.
+fn quoted(line: &str) -> String {
+    const SHOWN: usize = 40;
+    match line.char_indices().nth(SHOWN) {
+        Some((end, _)) => format!(
+            "'{}...' ({} characters)",
+            &line[..end],
+            line.chars().count()
+        ),
+        None => format!("'{line}'"),
     }
 }
 
@@ -110,5 +243,66 @@ mod tests {
         }
         assert_eq!(parse(HEADER), Ok(None));
         assert!(parse("12 many").is_err());
+        assert_eq!(
+            parse("12\t8"),
+            Ok(Some(Event::Bytes { time: 12, count: 8 }))
+        );
+        assert!(parse("12 8 9").is_err());
+    }
+
+    /// Every event of `text`, or the first fault.
+    fn read_all(text: &[u8], capture_len: u64) -> Result<Vec<Event>, TimingError> {
+        let mut reader = Reader::new(text, capture_len);
+        let mut events = Vec::new();
+        while let Some(event) = reader.next_event()? {
+            events.push(event);
+        }
+        Ok(events)
+    }
+
+    #[test]
+    fn a_file_is_read_an_event_at_a_time_and_checked_against_what_came_before() {
+        let text = format!("{HEADER}\n\n2005 8\n# edited\n4100 idle\n9000 11");
+        let events = read_all(text.as_bytes(), 19).unwrap();
+        assert_eq!(
+            events,
+            [
+                Event::Bytes {
+                    time: 2005,
+                    count: 8
+                },
+                Event::Idle { time: 4100 },
+                Event::Bytes {
+                    time: 9000,
+                    count: 11
+                }
+            ]
+        );
+        let fault = |text: &str, capture_len| match read_all(text.as_bytes(), capture_len) {
+            Err(TimingError::Line { line, message }) => (line, message),
+            other => panic!("{other:?}"),
+        };
+        let (line, message) = fault("9000 8\n1000 11\n", 19);
+        assert!(
+            line == 2 && message.contains("must not go back"),
+            "{message}"
+        );
+        let (line, message) = fault("9000 8\n9500 18446744073709551615\n", 19);
+        assert!(line == 2 && message.contains("come to more"), "{message}");
+        let (line, _) = fault(&"9".repeat(10_000), 19);
+        assert_eq!(line, 1);
+        assert!(matches!(
+            read_all(&[0xFF, 0xFE, b'\n'], 19),
+            Err(TimingError::NotText)
+        ));
+        assert_eq!(read_all("\u{feff}12 1\n".as_bytes(), 1).unwrap().len(), 1);
+    }
+
+    #[test]
+    fn a_long_bad_line_is_quoted_by_its_start() {
+        let line = "7".repeat(100_000) + " x";
+        let error = parse(&line).unwrap_err();
+        assert!(error.len() < 120, "{error}");
+        assert!(error.contains("100002 characters"), "{error}");
     }
 }
