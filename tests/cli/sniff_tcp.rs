@@ -19,8 +19,20 @@ type Pairing = (u64, u64);
 
 /// tcpdump recording `interface` to `file`, once it says it listens.
 fn tcpdump(interface: &str, file: &Path, filter: &str) -> Stopped {
+    // A buffer of 32 MB, not the 2 MB default: on a loaded machine the kernel drops what
+    // a slow tcpdump has not taken yet, and the comparison then has too little to go by.
     let mut child = Process::new("tcpdump")
-        .args(["-i", interface, "--immediate-mode", "-U", "-s", "0", "-w"])
+        .args([
+            "-i",
+            interface,
+            "--immediate-mode",
+            "-U",
+            "-B",
+            "32768",
+            "-s",
+            "0",
+            "-w",
+        ])
         .arg(file)
         .arg(filter)
         .stdout(Stdio::null())
