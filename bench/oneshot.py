@@ -2,7 +2,8 @@
 """What one process costs: `mbtool read-holding` against mbpoll, each reading 3 registers
 once from the same `mbtool serve` over TCP on 127.0.0.1, 50 processes of each, taken in
 turn. CPU per process from getrusage of the children (user + system), wall time per
-process, and the ratios mbtool / mbpoll.
+process, and the ratios mbtool / mbpoll. Then the start alone (`--version`, `-V`) beside a
+process that does nothing, to tell what a start costs from what the read does.
 
 mbtool is timed as installed: `cargo install` copies the binary, as a package manager
 writes mbpoll's. The file the linker wrote in target/release costs each process about half
@@ -65,6 +66,10 @@ def main():
             "mbtool as linked in target/release": [MBTOOL] + read,
             "mbpoll": ["mbpoll", "-m", "tcp", "-p", str(port), "-a", "17", "-r", "108", "-c", "3",
                        "-1", "127.0.0.1"],
+            # What a start alone costs, beside a process that does nothing.
+            "mbtool --version": [installed, "--version"],
+            "mbpoll -V": ["mbpoll", "-V"],
+            "true": [shutil.which("true")],
         }
         samples = {name: [] for name in commands}
         for _ in range(RUNS):
@@ -79,6 +84,12 @@ def main():
                   f"{wall:.2f} ms wall (median)")
         (tool_cpu, tool_wall), (peer_cpu, peer_wall) = figures["mbtool"], figures["mbpoll"]
         print(f"mbtool / mbpoll: CPU x{tool_cpu / peer_cpu:.2f}, wall x{tool_wall / peer_wall:.2f}")
+        nothing = figures["true"][0]
+        print(f"CPU of a start beyond a process that does nothing: mbtool "
+              f"{figures['mbtool --version'][0] - nothing:.2f} ms, mbpoll "
+              f"{figures['mbpoll -V'][0] - nothing:.2f} ms; of the read beyond the start: mbtool "
+              f"{tool_cpu - figures['mbtool --version'][0]:.2f} ms, mbpoll "
+              f"{peer_cpu - figures['mbpoll -V'][0]:.2f} ms")
     finally:
         server.terminate()
         server.wait()
