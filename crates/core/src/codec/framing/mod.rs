@@ -180,6 +180,10 @@ pub struct Framer {
     /// The arrival time of each byte of `buffer` ([`UNTIMED`] where not known); empty
     /// while no byte has a time, so that a file framed without timing costs nothing here.
     times: Vec<u64>,
+    /// Beside `times`: whether each byte was the first of its read. The times of a read's
+    /// bytes are placed one character apart before it, so a gap the line had inside a read
+    /// does not show; where the read could hold one is told from the gap before it.
+    read_starts: Vec<bool>,
     /// The CRCs checked lately.
     crc_verdicts: CrcVerdicts,
     /// How many valid frames had been taken when the last frame came whole across a gap
@@ -230,6 +234,7 @@ impl Framer {
             char_us,
             buffer: Vec::with_capacity(1024),
             times: Vec::new(),
+            read_starts: Vec::new(),
             crc_verdicts: CrcVerdicts::default(),
             lying_since: None,
             bursts: false,
@@ -262,6 +267,7 @@ impl Framer {
         self.buffer.extend_from_slice(bytes);
         if !self.times.is_empty() {
             self.times.resize(self.buffer.len(), UNTIMED);
+            self.read_starts.resize(self.buffer.len(), true);
         }
         self.scan(out);
     }
@@ -276,10 +282,12 @@ impl Framer {
         let first_time = time.saturating_sub((last as f64 * self.char_us) as u64);
         self.settle_before(first_time, out);
         self.times.resize(self.buffer.len(), UNTIMED);
+        self.read_starts.resize(self.buffer.len(), true);
         for (i, byte) in bytes.iter().enumerate() {
             let back = ((last - i) as f64 * self.char_us) as u64;
             self.buffer.push(*byte);
             self.times.push(time.saturating_sub(back));
+            self.read_starts.push(i == 0);
         }
         self.scan(out);
     }
@@ -344,6 +352,7 @@ impl Framer {
         self.offset += self.buffer.len() as u64;
         self.buffer.clear();
         self.times.clear();
+        self.read_starts.clear();
         self.noise = None;
         self.in_step = true;
         self.quiet = false;
@@ -468,6 +477,20 @@ impl Framer {
         !self.gaps_lie() && self.timed_gap_after(i)
     }
 
+    /// Whether the line may have been silent between byte `i` and the byte after it though
+    /// the times show no gap: both came in one read, and the time before that read was
+    /// long enough to hold the read's bytes and a silence (an adapter gathering what came
+    /// in its whole period). A UART read at the line's pace leaves no such room.
+    fn may_hide_silence_after(&self, i: usize) -> bool {
+        if self.read_starts.get(i + 1) != Some(&false) {
+            return false;
+        }
+        match (0..=i).rev().find(|j| self.read_starts[*j]) {
+            Some(0) | None => true,
+            Some(first) => self.timed_gap_after(first - 1),
+        }
+    }
+
     /// Whether the times of byte `i` and the byte after it, both in the buffer, are a
     /// silence apart, whether or not this line's gaps are believed.
     fn timed_gap_after(&self, i: usize) -> bool {
@@ -556,6 +579,7 @@ impl Framer {
         }
         self.buffer.drain(..at);
         self.times.drain(..at.min(self.times.len()));
+        self.read_starts.drain(..at.min(self.read_starts.len()));
         self.offset += at as u64;
         self.in_step = in_step;
         if self.ended {
@@ -964,6 +988,40 @@ mod tests {
             (&ANSWER[10..], 36_000),
         ]);
         assert_eq!(out, [(REQUEST.to_vec(), None), (ANSWER.to_vec(), None)]);
+    }
+
+    #[test]
+    fn behind_an_adapter_the_answer_awaited_is_taken_with_bytes_after_it_in_its_read() {
+        // A user-defined answer and three bytes of noise in one read: an adapter gathers
+        // whatever came in its period, so no gap can show between them, and the answer
+        // stands on the conversation as it does without timing.
+        let request = rtu(&[0x48, 0x46, 0xD4, 0xB7, 0xC2]);
+        let answer = rtu(&[0x48, 0x46, 0x5D, 0x86, 0x90]);
+        let read = [&answer[..], &[0x2A, 0x43, 0x5F]].concat();
+        let out = timed_frames(&[
+            (&REQUEST, 10_000),
+            (&ANSWER, 20_000),
+            (&request, 40_000),
+            (&read, 56_000),
+            (&REQUEST, 80_000),
+            (&ANSWER, 90_000),
+        ]);
+        let valid: Vec<Vec<u8>> = out
+            .into_iter()
+            .filter(|(_, broken)| broken.is_none())
+            .map(|(bytes, _)| bytes)
+            .collect();
+        assert_eq!(
+            valid,
+            [
+                REQUEST.to_vec(),
+                ANSWER.to_vec(),
+                request,
+                answer,
+                REQUEST.to_vec(),
+                ANSWER.to_vec()
+            ]
+        );
     }
 
     /// The frames of pieces read one a read, each read at its last byte (one character a

@@ -82,12 +82,15 @@ impl Framer {
         }
         // The conversation supports the answer awaited; but where the times tell silences,
         // one whose length only its CRC tells must end where the silence does, since the
-        // bytes that go on without a gap are still its own. Unless it runs across a gap
-        // after which no frame starts (`look_rtu` has dropped it otherwise): then the gaps
-        // are an adapter's latency timer, and the bytes after it tell nothing either.
+        // bytes that go on without a gap are still its own. Unless they came in its read
+        // and the read could hide a gap (an adapter gathers what came in its whole period),
+        // or it runs across a gap after which no frame starts (`look_rtu` has dropped it
+        // otherwise): then the gaps are an adapter's latency timer, and the bytes after it
+        // tell nothing either.
         let by_conversation = self.answers_awaited(frame, candidate.direction)
             && (candidate.known_layout
                 || !self.times_tell_silence()
+                || self.may_hide_silence_after(end - 1)
                 || self.silence_inside(at, end));
         if self.silence_after(end - 1) || by_conversation {
             return Tell::Yes;
