@@ -280,9 +280,11 @@ impl Framer {
         // bytes), and a silence ends a frame as it does for every receiver on the bus: no
         // reading runs across one, whatever CRC its bytes pass. Nor, however the line is
         // read, across a gap longer than an adapter makes.
-        found
-            .valid
-            .retain(|c| !self.crosses_silence(at, at + c.len));
+        if !self.times.is_empty() {
+            found
+                .valid
+                .retain(|c| !self.crosses_silence(at, at + c.len));
+        }
         found.valid.sort_unstable_by_key(|c| c.len);
         found
     }
