@@ -64,7 +64,9 @@ where the conversation expects a frame (a request in turn, the answer a request 
 elsewhere its bytes are noise. On a live line (or a replay with its .timing), 3.5 \
 characters of silence inside bytes that do not make a whole frame before it end them: they \
 are a frame cut short where the conversation expects a frame ([incomplete], counted as a CRC \
-error), noise elsewhere, and the frame after the silence starts clean. This is decided when \
+error), noise elsewhere, and the frame after the silence starts clean; the answer awaited of \
+a user-defined function, whose length only the silence tells, is a CRC error when its CRC \
+fails there. This is decided when \
 the bytes after the silence come. A USB adapter hands bytes over when its latency timer runs \
 out (16 ms by default), so a frame can arrive in two reads a whole period apart that were \
 back to back on the wire: where a line's bytes come in bursts (several a read, as an adapter \

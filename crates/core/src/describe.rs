@@ -532,7 +532,9 @@ fn without_checksum(bytes: &[u8], mode: Mode, direction: Option<Direction>) -> O
     Some(report)
 }
 
-fn describe_as(bytes: &[u8], mode: Mode, direction: Option<Direction>) -> FrameReport {
+/// Describes a frame as `mode` gives it, its checksum where that mode puts it: a frame the
+/// framer found, which cannot be a frame pasted without its checksum.
+pub(crate) fn describe_as(bytes: &[u8], mode: Mode, direction: Option<Direction>) -> FrameReport {
     let envelope = match Envelope::open(mode, bytes) {
         Ok(envelope) => envelope,
         Err(error) => return unreadable(mode, bytes, error),

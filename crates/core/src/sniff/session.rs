@@ -10,7 +10,9 @@ use serde::Serialize;
 use super::pairing::{Pairer, Role, Unanswered};
 use crate::codec::framing::{Broken, Event, Found, Framer, Noise, NoiseBytes};
 use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
-use crate::describe::{describe_frame, describe_reading, locate_answer, FrameReport, Kind};
+use crate::describe::{
+    describe_as, describe_frame, describe_reading, locate_answer, FrameReport, Kind,
+};
 
 /// What a session found in the bytes, in the order it happened.
 #[derive(Clone, Debug, PartialEq)]
@@ -403,8 +405,9 @@ impl Session {
         let (number, at) = (self.numbered, self.at(found.start, found.offset));
         let shown = match found.broken {
             Some(broken) => {
-                // Read the way the framer found it travelling (a cut answer is an answer).
-                let mut report = describe_frame(&found.bytes, Some(self.mode), found.direction);
+                // Read the way the framer found it travelling (a cut answer is an answer),
+                // its CRC where the framer found it.
+                let mut report = describe_as(&found.bytes, self.mode, found.direction);
                 report.valid = false;
                 // Too short to read, it is still what the framer found it to be.
                 if let Some(direction) = found.direction {

@@ -1100,6 +1100,43 @@ mod tests {
         );
     }
 
+    #[test]
+    fn read_a_byte_at_a_time_the_broken_answer_of_a_user_defined_function_ends_at_its_silence() {
+        // Function 67 has no layout: its answer's length is where the silence falls. Bytes
+        // of the slave and function awaited, up to the silence, are that answer: a CRC
+        // error, or cut short when too few to hold a CRC; not noise.
+        let request = rtu(&[0x11, 0x43]);
+        for broken in [
+            &[0x11, 0x43, 0xF4, 0x48, 0x8A, 0x46, 0x5D, 0xD2, 0x0C, 0xA2][..],
+            &[0x11, 0x43, 0xF4][..],
+        ] {
+            // After an exchange, so that the frame of function 67 is read as a request.
+            let out = read_a_byte_at_a_time(&[
+                (&REQUEST, 5_000),
+                (&ANSWER, 5_000),
+                (&request, 5_000),
+                (broken, 5_000),
+                (&REQUEST, 5_000),
+                (&ANSWER, 5_000),
+            ]);
+            let expected = match broken.len() {
+                3 => Broken::Incomplete,
+                _ => Broken::Checksum,
+            };
+            assert_eq!(
+                out,
+                [
+                    (REQUEST.to_vec(), None),
+                    (ANSWER.to_vec(), None),
+                    (request.clone(), None),
+                    (broken.to_vec(), Some(expected)),
+                    (REQUEST.to_vec(), None),
+                    (ANSWER.to_vec(), None)
+                ]
+            );
+        }
+    }
+
     /// The exchanges of a busy line, each frame followed by 5 ms of silence.
     fn exchanges(count: usize) -> Vec<(&'static [u8], u64)> {
         [(&REQUEST[..], 5_000), (&ANSWER[..], 5_000)].repeat(count)
@@ -1338,8 +1375,9 @@ mod tests {
                 (ANSWER[..7].to_vec(), Some(Broken::Incomplete)),
                 (ANSWER[7..].to_vec(), None),
                 (user, None),
-                // A cut function without a layout tells no length it fell short of: noise.
-                (cut.to_vec(), None),
+                // The slave and function the frame before asked, cut by the silence: its
+                // answer cut short, though a function without a layout tells no length.
+                (cut.to_vec(), Some(Broken::Incomplete)),
                 (next, None),
             ]
         );

@@ -437,10 +437,16 @@ impl Framer {
             Length::AtLeast(_) => true,
             _ => false,
         };
+        // The answer awaited of a function without a known layout ends at the silence, its
+        // length told by nothing else: whole but for its CRC when it is long enough to hold
+        // one, else cut short.
+        let unknown_answer = self.answers_awaited(bytes, None) && may_lack_layout(bytes);
         // A lone byte tells no function: a glitch, not a frame.
         let direction = if bytes.len() < 2 || !in_step {
             None
-        } else if self.answers_awaited(bytes, None) && begins(Direction::Response) {
+        } else if self.answers_awaited(bytes, None)
+            && (begins(Direction::Response) || unknown_answer)
+        {
             Some(Direction::Response)
         } else if self.awaiting.is_none()
             && self.expect != Some(Direction::Response)
@@ -457,7 +463,11 @@ impl Framer {
             Some(direction) if !whole_inside() => match self.refused_request_ends(at, end) {
                 Tell::No => Look::Frame {
                     len: end - at,
-                    broken: Some(Broken::Incomplete),
+                    broken: Some(if unknown_answer && bytes.len() >= MIN_RTU_FRAME {
+                        Broken::Checksum
+                    } else {
+                        Broken::Incomplete
+                    }),
                     direction: Some(direction),
                 },
                 Tell::NotYet => Look::NeedMore,
