@@ -33,11 +33,11 @@
 //! paused once) must not cost the rest of a capture its silences. Meanwhile the
 //! times are not taken for silence (nor is the quiet they told), and a frame cut short is
 //! kept until bytes show it is no frame, as without timing. No frame runs across a gap
-//! longer than an adapter's reads explain ([`ADAPTER_GAP_MAX_US`]), however the line is
-//! read. Bytes read one at a time come through no such adapter: a line's silences are its
-//! own, and one ends a frame as it does
-//! for every receiver on the bus, whatever CRC the bytes across it pass (a device that
-//! pauses inside its frame sends two pieces, a frame cut short and the rest).
+//! longer than an adapter's reads explain (64 ms, `ADAPTER_GAP_MAX_US`), however the line
+//! is read. Bytes read one at a time come through no such adapter: a line's silences are
+//! its own, and one ends a frame as it does for every receiver on the bus, whatever CRC
+//! the bytes across it pass (a device that pauses inside its frame sends two pieces, a
+//! frame cut short and the rest).
 //!
 //! ASCII: ':' starts a frame and CR LF ends it; up to a second may pass between characters.
 //! TCP: the MBAP length alone frames, however the bytes were segmented.
