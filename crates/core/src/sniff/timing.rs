@@ -63,7 +63,7 @@ impl fmt::Display for Event {
 }
 
 /// Reads one line; `Ok(None)` for a comment or a blank line.
-pub fn parse(line: &str) -> Result<Option<Event>, String> {
+fn parse(line: &str) -> Result<Option<Event>, String> {
     let line = line.trim();
     if line.is_empty() || line.starts_with('#') {
         return Ok(None);

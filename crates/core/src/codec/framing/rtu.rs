@@ -444,8 +444,8 @@ impl Framer {
         // A lone byte tells no function: a glitch, not a frame.
         let direction = if bytes.len() < 2 || !in_step {
             None
-        } else if self.answers_awaited(bytes, None)
-            && (begins(Direction::Response) || unknown_answer)
+        } else if unknown_answer
+            || (self.answers_awaited(bytes, None) && begins(Direction::Response))
         {
             Some(Direction::Response)
         } else if self.awaiting.is_none()
