@@ -8,7 +8,9 @@ process that does nothing, to tell what a start costs from what the read does.
 mbtool is timed as installed: `cargo install` copies the binary, as a package manager
 writes mbpoll's. The file the linker wrote in target/release costs each process about half
 a millisecond more to load than a copy of the same bytes (on Linux 6, measured), so it is
-timed too, beside the copy, but the ratios are the installed copy's.
+timed too, beside the copy. Two builds are timed: `cargo build --release`, linked against
+the shared C library, and `cargo build-static` (.cargo/config.toml), linked static-pie,
+which `cargo install-static` installs; the ratios are given for each.
 
     python3 bench/oneshot.py [RUNS]        (needs mbpoll)
 """
@@ -24,6 +26,10 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MBTOOL = os.path.join(ROOT, "target", "release", "mbtool")
+HOST = next(line.split(": ", 1)[1] for line in subprocess.run(
+    ["rustc", "-vV"], capture_output=True, text=True, check=True).stdout.splitlines()
+    if line.startswith("host: "))
+STATIC = os.path.join(ROOT, "target", HOST, "release", "mbtool")
 RUNS = int(sys.argv[1]) if len(sys.argv) > 1 else 50
 
 
@@ -46,6 +52,7 @@ def run(args):
 
 def main():
     subprocess.run(["cargo", "build", "--release", "--quiet"], cwd=ROOT, check=True)
+    subprocess.run(["cargo", "build-static", "--quiet"], cwd=ROOT, check=True)
     work = tempfile.mkdtemp()
     port = free_port()
     server = subprocess.Popen(
@@ -60,14 +67,18 @@ def main():
                 time.sleep(0.05)
         installed = os.path.join(work, "mbtool")
         shutil.copy2(MBTOOL, installed)
+        installed_static = os.path.join(work, "mbtool-static")
+        shutil.copy2(STATIC, installed_static)
         read = ["--port", f"127.0.0.1:{port}", "read-holding", "17", "400108", "3"]
         commands = {
             "mbtool": [installed] + read,
+            "mbtool static-pie": [installed_static] + read,
             "mbtool as linked in target/release": [MBTOOL] + read,
             "mbpoll": ["mbpoll", "-m", "tcp", "-p", str(port), "-a", "17", "-r", "108", "-c", "3",
                        "-1", "127.0.0.1"],
             # What a start alone costs, beside a process that does nothing.
             "mbtool --version": [installed, "--version"],
+            "mbtool static-pie --version": [installed_static, "--version"],
             "mbpoll -V": ["mbpoll", "-V"],
             "true": [shutil.which("true")],
         }
@@ -82,14 +93,18 @@ def main():
             figures[name] = (cpu, wall)
             print(f"{name}: {cpu:.2f} ms CPU per process (mean of {RUNS}), "
                   f"{wall:.2f} ms wall (median)")
-        (tool_cpu, tool_wall), (peer_cpu, peer_wall) = figures["mbtool"], figures["mbpoll"]
-        print(f"mbtool / mbpoll: CPU x{tool_cpu / peer_cpu:.2f}, wall x{tool_wall / peer_wall:.2f}")
+        peer_cpu, peer_wall = figures["mbpoll"]
         nothing = figures["true"][0]
-        print(f"CPU of a start beyond a process that does nothing: mbtool "
-              f"{figures['mbtool --version'][0] - nothing:.2f} ms, mbpoll "
-              f"{figures['mbpoll -V'][0] - nothing:.2f} ms; of the read beyond the start: mbtool "
-              f"{tool_cpu - figures['mbtool --version'][0]:.2f} ms, mbpoll "
-              f"{peer_cpu - figures['mbpoll -V'][0]:.2f} ms")
+        peer_start = figures["mbpoll -V"][0]
+        print(f"mbpoll: start beyond a process that does nothing {peer_start - nothing:.2f} ms "
+              f"CPU, the read beyond the start {peer_cpu - peer_start:.2f} ms")
+        for build in ["mbtool", "mbtool static-pie"]:
+            tool_cpu, tool_wall = figures[build]
+            tool_start = figures[f"{build} --version"][0]
+            print(f"{build} / mbpoll: CPU x{tool_cpu / peer_cpu:.2f}, "
+                  f"wall x{tool_wall / peer_wall:.2f}; start beyond a process that does "
+                  f"nothing {tool_start - nothing:.2f} ms CPU, the read beyond the start "
+                  f"{tool_cpu - tool_start:.2f} ms")
     finally:
         server.terminate()
         server.wait()
