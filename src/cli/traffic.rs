@@ -71,10 +71,13 @@ the bytes after the silence come. A USB adapter hands bytes over when its latenc
 out (16 ms by default), so a frame can arrive in two reads a whole period apart that were \
 back to back on the wire: where a line's bytes come in bursts (several a read, as an adapter \
 gathers them), a frame whose CRC holds across the gap (of a known layout, or the answer \
-awaited where no frame starts after the gap) is taken whole, and while such frames are more \
-than chance (one in 200 frames or more, the last within 2,000 frames), that line's gaps are \
-not taken for silence (a frame cut short is kept until the bytes show it is none, as \
-without timing). A gap longer than 64 ms is more than an adapter makes (reads one latency \
+awaited where no frame starts after the gap) is taken whole. An adapter's reads end on its \
+timer's ticks, so where the frame's two reads are one period apart and the line's latest \
+reads keep that period (three intervals in four a whole number of periods), and while such \
+frames are more than chance (one in 200 frames or more, the last within 2,000 frames), that \
+line's gaps are not taken for silence (a frame cut short is kept until the bytes show it is \
+none, as without timing), and mbtool says so once. A device that pauses inside its frame, \
+read where the bytes end, leaves a gap at no period: the line's silences are still believed. A gap longer than 64 ms is more than an adapter makes (reads one latency \
 period apart, 32 ms at the longest commonly set, with room for a late read): no frame runs \
 across it, however the line is read. Read a byte at a time, a line's gaps are its own: a silence ends a frame \
 there as it does for every receiver on the bus, whatever CRC the bytes across it pass (a \
@@ -83,8 +86,7 @@ tell silence, a frame of a user-defined function whose CRC is 00 00 runs to the 
 though the bytes before the 00 00 pass a CRC too. Bytes a gap \
 cuts short, and the frame before them, wait for the bytes \
 after the gap. A long run of noise is counted, and only its first 64 bytes \
-kept. When bytes arrive in bursts the gaps between frames are not real: mbtool says so once. \
-The fix is the adapter's latency timer: \
+kept. The fix for gaps that are not real is the adapter's latency timer: \
 echo 1 | sudo tee /sys/bus/usb-serial/devices/ttyUSB0/latency_timer, or --low-latency.
 
 --save FILE keeps every byte as received; live, the times the bytes came go to FILE.timing \

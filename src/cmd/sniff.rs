@@ -779,7 +779,7 @@ fn live(
             }
         }
         sinks.write(&mut records)?;
-        if session.bursty && !warned {
+        if session.behind_latency_timer && !warned {
             warned = true;
             mbtool::note!(
                 "mbtool: bytes arrive in bursts, so gaps between frames are not real (frames are still split by content); set the adapter's latency timer: echo 1 | sudo tee /sys/bus/usb-serial/devices/*/latency_timer, or use --low-latency"

@@ -499,12 +499,17 @@ fn started_with_standard_output_closed_the_table_goes_nowhere_not_into_the_pcap(
     );
 }
 
+/// What a live `mbtool sniff` gave: its JSON Lines, when each chunk was written, and what
+/// it said on standard error.
+struct Sniffed {
+    lines: Vec<serde_json::Value>,
+    written: Vec<Instant>,
+    said: String,
+}
+
 /// Runs `mbtool sniff` at 9600 baud on a pty while the test writes `chunks`, each followed
-/// by its pause; returns sniff's JSON Lines and when each chunk was written.
-fn sniff_live(
-    chunks: &[(Vec<u8>, Duration)],
-    extra: &[&str],
-) -> (Vec<serde_json::Value>, Vec<Instant>) {
+/// by its pause.
+fn sniff_live(chunks: &[(Vec<u8>, Duration)], extra: &[&str]) -> Sniffed {
     let pty = Pty::new();
     let mut port = pty.master.try_clone_native().unwrap();
     let mut child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
@@ -519,8 +524,9 @@ fn sniff_live(
     let child_guard_pid = child.id();
     // Wait until sniff listens (it says so on stderr).
     let mut stderr = child.stderr.take().unwrap();
-    let mut said = [0u8; 16];
-    let _ = stderr.read(&mut said);
+    let mut said = vec![0u8; 16];
+    let first = stderr.read(&mut said).unwrap_or(0);
+    said.truncate(first);
     let mut written = Vec::new();
     for (bytes, pause) in chunks {
         write_all(&mut port, bytes);
@@ -532,6 +538,7 @@ fn sniff_live(
         .args(["-INT", &child_guard_pid.to_string()])
         .status();
     let output = child.wait_with_output().unwrap();
+    stderr.read_to_end(&mut said).unwrap();
     assert!(
         output.status.success(),
         "sniff ended with {:?}",
@@ -541,7 +548,11 @@ fn sniff_live(
     port.set_timeout(Duration::from_millis(50)).unwrap();
     let mut echo = [0u8; 16];
     assert!(port.read(&mut echo).is_err(), "sniff wrote to the bus");
-    (json_lines(&output.stdout), written)
+    Sniffed {
+        lines: json_lines(&output.stdout),
+        written,
+        said: String::from_utf8_lossy(&said).into_owned(),
+    }
 }
 
 /// Runs `mbtool sniff` on a pty while the test writes frames with chosen gaps at 9600
@@ -553,7 +564,7 @@ fn live_capture(extra: &[&str]) -> (Vec<serde_json::Value>, Vec<u64>) {
         .zip(pauses)
         .map(|(frame, pause)| (frame.clone(), Duration::from_micros(pause)))
         .collect();
-    let (lines, written) = sniff_live(&chunks, extra);
+    let Sniffed { lines, written, .. } = sniff_live(&chunks, extra);
     // 10 bits a character at 9600 baud; the writer sends each frame whole. The gap the
     // writer made: from the end of a frame's last character to the start of the next
     // frame's first, with frames placed as they arrive whole.
@@ -678,6 +689,56 @@ fn an_rtu_frame_from_slave_58_is_hex_in_json() {
     assert_eq!(lines[0]["slave"], 58);
 }
 
+/// The notice that a line's gaps are not its silences, and the adapter setting that fixes it.
+const LATENCY_TIMER_NOTICE: &str = "bytes arrive in bursts";
+
+#[test]
+fn reads_on_an_adapters_latency_ticks_are_told_and_a_device_pausing_in_a_frame_is_not() {
+    let request = rtu(&[0x11, 0x03, 0x00, 0x6B, 0x00, 0x03]);
+    let answer = rtu(&[0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64]);
+    // A USB adapter with a 32 ms latency timer: a read on each tick, and every answer
+    // split across two of them, 25 ms apart on the line though back to back on the wire.
+    let tick = Duration::from_millis(32);
+    let adapter: Vec<(Vec<u8>, Duration)> = (0..15)
+        .flat_map(|_| [&request[..], &answer[..4], &answer[4..]])
+        .map(|piece| (piece.to_vec(), tick))
+        .collect();
+    let sniffed = sniff_live(&adapter, &[]);
+    assert!(
+        sniffed.said.contains(LATENCY_TIMER_NOTICE),
+        "{}",
+        sniffed.said
+    );
+    let valid = frames_of(&sniffed.lines)
+        .iter()
+        .filter(|(_, valid)| *valid == true)
+        .count();
+    assert_eq!(valid, 30, "{:?}", frames_of(&sniffed.lines));
+    // A frame a write, where the bytes end, at the pace of a polling master; one device
+    // pauses 25 ms inside an answer, as long as the adapter's gap. Its reads keep no
+    // period: the line's gaps are its own, and nothing is said of a latency timer.
+    let ms = Duration::from_millis;
+    let mut paced = Vec::new();
+    for (exchange, (turnaround, idle)) in [(7, 41), (9, 23), (12, 55), (8, 30), (14, 47), (6, 36)]
+        .into_iter()
+        .enumerate()
+    {
+        paced.push((request.clone(), ms(turnaround)));
+        if exchange == 3 {
+            paced.push((answer[..4].to_vec(), ms(25)));
+            paced.push((answer[4..].to_vec(), ms(idle)));
+        } else {
+            paced.push((answer.clone(), ms(idle)));
+        }
+    }
+    let sniffed = sniff_live(&paced, &[]);
+    assert!(
+        !sniffed.said.contains(LATENCY_TIMER_NOTICE),
+        "{}",
+        sniffed.said
+    );
+}
+
 #[test]
 fn where_only_silence_tells_a_replay_of_save_agrees_with_the_live_session() {
     // A user-defined function (no layout: only the silence after it supports it), noise
@@ -695,7 +756,7 @@ fn where_only_silence_tells_a_replay_of_save_agrees_with_the_live_session() {
     ];
     let dir = tempfile::tempdir().unwrap();
     let saved = dir.path().join("bus.bin");
-    let (lines, _) = sniff_live(&chunks, &["--save", saved.to_str().unwrap()]);
+    let lines = sniff_live(&chunks, &["--save", saved.to_str().unwrap()]).lines;
     let live = frames_of(&lines);
     let hex = |bytes: &[u8]| serde_json::Value::from(crate::support::spaced_hex(bytes));
     let valid: Vec<serde_json::Value> = live

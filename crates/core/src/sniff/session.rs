@@ -268,8 +268,9 @@ pub struct Session {
     last_end: Option<u64>,
     numbered: u64,
     events: Vec<Event>,
-    /// Frames came glued in one read: timing cannot split them.
-    pub bursty: bool,
+    /// The line's reads come on a USB adapter's latency timer: its gaps are not its
+    /// silences (see [`Framer::gaps_lie`]).
+    pub behind_latency_timer: bool,
 }
 
 impl Session {
@@ -287,7 +288,7 @@ impl Session {
             last_end: None,
             numbered: 0,
             events: Vec::new(),
-            bursty: false,
+            behind_latency_timer: false,
         }
     }
 
@@ -308,14 +309,7 @@ impl Session {
     pub fn push_at(&mut self, bytes: &[u8], time: u64, out: &mut Vec<Record>) {
         let mut events = std::mem::take(&mut self.events);
         self.framer.push_at(bytes, time, &mut events);
-        if events
-            .iter()
-            .filter(|e| matches!(e, Event::Frame(_)))
-            .count()
-            > 1
-        {
-            self.bursty = true;
-        }
+        self.behind_latency_timer |= self.framer.gaps_lie();
         self.read_events(&mut events, out);
         self.events = events;
     }
