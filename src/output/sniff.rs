@@ -59,6 +59,9 @@ struct JsonUnanswered {
     request: mbtool_core::describe::Fields,
     #[serde(skip_serializing_if = "Option::is_none")]
     waited: Option<f64>,
+    /// The capture ended while the request waited.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    capture_ended: bool,
     #[serde(skip_serializing_if = "Option::is_none")]
     transaction: Option<u16>,
     #[serde(flatten, skip_serializing_if = "Option::is_none")]
@@ -326,6 +329,7 @@ impl SniffWriter {
                     slave,
                     request,
                     waited,
+                    capture_ended,
                     tcp,
                 },
             ) => {
@@ -339,6 +343,7 @@ impl SniffWriter {
                         function: request.function(),
                         request: fields,
                         waited: waited.map(seconds),
+                        capture_ended: *capture_ended,
                         transaction: tcp.map(|(_, transaction)| transaction),
                         tcp: tcp.as_ref().map(|(place, _)| JsonTcp::from(place)),
                     },
@@ -546,6 +551,7 @@ impl SniffWriter {
                 slave,
                 request,
                 waited,
+                capture_ended,
                 tcp,
             } => {
                 let waited = waited
@@ -561,8 +567,13 @@ impl SniffWriter {
                         format!(" on {}, tid {transaction}", connection(&place))
                     })
                     .unwrap_or_default();
+                let ended = if *capture_ended {
+                    " before the capture ended"
+                } else {
+                    ""
+                };
                 let text = format!(
-                    "       no answer from slave {slave} to {} {} {}{waited}{on}",
+                    "       no answer from slave {slave} to {} {} {}{ended}{waited}{on}",
                     request.function(),
                     function::name(request.function()),
                     request_summary(request)

@@ -885,6 +885,43 @@ fn a_timed_replay_says_how_long_the_last_request_waited_in_vain() {
         .expect("the request is unanswered");
     let waited = unanswered["waited"].as_f64().unwrap();
     assert!((0.049..0.051).contains(&waited), "{unanswered}");
+    assert_eq!(unanswered["capture_ended"], true, "{unanswered}");
+}
+
+#[test]
+fn a_request_that_ends_the_capture_is_told_as_such_not_as_waiting_no_time() {
+    // The capture's last read is the request itself: it waited no time that the capture
+    // shows, and its answer may have come after the capture ended.
+    let dir = tempfile::tempdir().unwrap();
+    let capture = dir.path().join("capture.bin");
+    std::fs::write(&capture, [&WORKED[4][..], &WORKED[5], &WORKED[4]].concat()).unwrap();
+    let timing = format!(
+        "10000 {}\n20000 {}\n900000 {}\n",
+        WORKED[4].len(),
+        WORKED[5].len(),
+        WORKED[4].len()
+    );
+    std::fs::write(dir.path().join("capture.bin.timing"), timing).unwrap();
+    let run = |format: &str| {
+        let output = mbtool()
+            .args(["sniff", "-b", "19200", "-o", format, "--input"])
+            .arg(&capture)
+            .env("NO_COLOR", "1")
+            .output()
+            .unwrap();
+        assert!(output.status.success(), "{output:?}");
+        String::from_utf8(output.stdout).unwrap()
+    };
+    let table = run("table");
+    let told: Vec<&str> = table.lines().filter(|l| l.contains("no answer")).collect();
+    assert_eq!(told.len(), 1, "{table}");
+    assert!(told[0].ends_with("before the capture ended"), "{table}");
+    let lines = json_lines(run("json").as_bytes());
+    let unanswered: Vec<&serde_json::Value> =
+        lines.iter().filter(|l| l["type"] == "unanswered").collect();
+    assert_eq!(unanswered.len(), 1, "{lines:?}");
+    assert_eq!(unanswered[0]["capture_ended"], true);
+    assert!(unanswered[0].get("waited").is_none(), "{}", unanswered[0]);
 }
 
 #[test]

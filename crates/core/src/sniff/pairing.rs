@@ -46,6 +46,8 @@ pub(super) struct Pairer {
 pub(super) struct Unanswered {
     pub pending: Pending,
     pub waited: Option<u64>,
+    /// The capture ended while it waited.
+    pub capture_ended: bool,
 }
 
 impl Pairer {
@@ -119,17 +121,20 @@ impl Pairer {
                 _ => None,
             },
             pending,
+            capture_ended: false,
         })
     }
 
-    /// The end of the capture: a request still waiting is unanswered.
+    /// The end of the capture: a request still waiting is unanswered, for as long as the
+    /// capture went on after it (no time at all when it ended with the request).
     pub(super) fn finish(&mut self, now: Option<u64>) -> Option<Unanswered> {
         self.pending.take().map(|pending| Unanswered {
             waited: match (pending.time, now) {
-                (Some(sent), Some(now)) => Some(now.saturating_sub(sent)),
+                (Some(sent), Some(now)) if now > sent => Some(now - sent),
                 _ => None,
             },
             pending,
+            capture_ended: true,
         })
     }
 }

@@ -41,8 +41,12 @@ pub enum Record {
         slave: u8,
         /// The request.
         request: Request,
-        /// Microseconds from the end of the request until the next frame (or the end of the capture), when known.
+        /// Microseconds from the end of the request until the next frame (or the end of the
+        /// capture), when known and more than none.
         waited: Option<u64>,
+        /// The capture ended while the request waited: the capture, not the slave, may be
+        /// why no answer was seen.
+        capture_ended: bool,
         /// In a TCP capture: its connection and packet, and its transaction id.
         tcp: Option<(TcpPlace, u16)>,
     },
@@ -384,6 +388,7 @@ impl Session {
                 slave,
                 request: unanswered.pending.request,
                 waited: unanswered.waited,
+                capture_ended: unanswered.capture_ended,
                 tcp: None,
             });
         }

@@ -172,7 +172,7 @@ impl TcpSession {
         let key = (client, server);
         if segment.syn && from_client {
             // A new connection on the same addresses: the old one is over.
-            self.close(key, out);
+            self.close(key, false, out);
         }
         let mode = self.mode;
         let connection = self.connections.entry(key).or_insert_with(|| Connection {
@@ -231,14 +231,14 @@ impl TcpSession {
         self.read_events(&mut found, place, out);
         self.found = found;
         if segment.rst {
-            self.close(key, out);
+            self.close(key, false, out);
         } else if segment.fin {
             let done = self.connections.get_mut(&key).is_some_and(|c| {
                 c.fins += 1;
                 c.fins >= 2
             });
             if done {
-                self.close(key, out);
+                self.close(key, false, out);
             }
         }
     }
@@ -248,13 +248,13 @@ impl TcpSession {
     pub fn finish(&mut self, out: &mut Vec<Record>) {
         let keys: Vec<_> = self.connections.keys().copied().collect();
         for key in keys {
-            self.close(key, out);
+            self.close(key, true, out);
         }
     }
 
-    /// A connection is over: its streams are read to their end, and what still waits
-    /// for an answer is unanswered.
-    fn close(&mut self, key: (SocketAddr, SocketAddr), out: &mut Vec<Record>) {
+    /// A connection is over (closed, or `capture_ended`): its streams are read to their
+    /// end, and what still waits for an answer is unanswered.
+    fn close(&mut self, key: (SocketAddr, SocketAddr), capture_ended: bool, out: &mut Vec<Record>) {
         for from_client in [true, false] {
             let Some(connection) = self.connections.get_mut(&key) else {
                 return;
@@ -287,7 +287,7 @@ impl TcpSession {
             self.packets.missing_bytes += side.stream.missing;
         }
         for pending in connection.pending {
-            self.unanswered(pending, key, out);
+            self.unanswered(pending, key, capture_ended, out);
         }
     }
 
@@ -295,6 +295,7 @@ impl TcpSession {
         &mut self,
         pending: Pending,
         key: (SocketAddr, SocketAddr),
+        capture_ended: bool,
         out: &mut Vec<Record>,
     ) {
         self.counts.unanswered(pending.slave);
@@ -310,7 +311,8 @@ impl TcpSession {
             out.push(Record::Unanswered {
                 slave: pending.slave,
                 request: pending.request,
-                waited: Some(self.last_time.saturating_sub(pending.time)),
+                waited: Some(self.last_time.saturating_sub(pending.time)).filter(|w| *w > 0),
+                capture_ended,
                 tcp: Some((place, pending.transaction)),
             });
         }
@@ -449,7 +451,7 @@ impl TcpSession {
                 connection.pending.push(pending);
                 if let Some(index) = reused {
                     let old = connection.pending.remove(index);
-                    self.unanswered(old, key, out);
+                    self.unanswered(old, key, false, out);
                 }
                 None
             }
