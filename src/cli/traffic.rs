@@ -74,7 +74,9 @@ back to back on the wire: where a line's bytes come in bursts (several a read, a
 gathers them), a frame whose CRC holds across the gap (of a known layout, or the answer \
 awaited where no frame starts after the gap) is taken whole. An adapter's reads end on its \
 timer's ticks, so where the frame's two reads are one period apart and the line's latest \
-reads keep that period (three intervals in four a whole number of periods), and while such \
+reads sit on that period's grid (each a whole number of periods after the first read of its \
+stretch of traffic: all within a thirty-second of a period while the reads are few, three in \
+four within a twelfth from 16 reads on), and while such \
 frames are more than chance (one in 200 frames or more, the last within 2,000 frames), that \
 line's gaps are not taken for silence (a frame cut short is kept until the bytes show it is \
 none, as without timing), and mbtool says so once. A device that pauses inside its frame, \

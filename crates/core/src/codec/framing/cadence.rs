@@ -1,67 +1,134 @@
 //! The rhythm of a line's reads. A USB adapter hands bytes over when its latency timer runs
-//! out, so while bytes flow its reads end on the timer's ticks, a whole number of periods
-//! apart. A reader that takes bytes as they come (a UART, a pseudo-terminal, a capture
-//! timed byte by byte) reads where the bytes end, at no period. A frame that comes whole
-//! across a gap is an adapter's doing when its two reads are one period apart and the
-//! line's other reads keep that period; otherwise the gap is the line's own (a device that
-//! paused inside its frame).
+//! out, so while bytes flow its reads end on the timer's ticks: a whole number of periods
+//! after one another, and after any earlier read of the same stretch of traffic, give or
+//! take the host's lateness, which does not add up. A reader that takes bytes as they come
+//! (a UART, a pseudo-terminal, a capture timed byte by byte) reads where the bytes end, at
+//! no period: even where its intervals are alike (a polling master's), their differences
+//! add up, and its reads drift off any grid. A frame that comes whole across a gap is an
+//! adapter's doing when its two reads are one period apart and the line's latest reads
+//! sit on that period's grid; otherwise the gap is the line's own (a device that paused
+//! inside its frame).
+
+use smallvec::SmallVec;
 
 use super::ADAPTER_GAP_MAX_US;
 
-/// How many of the latest intervals between reads are kept.
-const KEPT: usize = 16;
+/// How many of the latest reads are kept: enough for the lateness of alike intervals to
+/// add up past any grid.
+const KEPT: usize = 32;
 
-/// Fewer intervals than this tell no period: chance would too often line them up. More
-/// would leave a capture's first frames across an adapter's ticks untold: an adapter must
-/// show its period within a few reads.
+/// Fewer reads placed on a grid than this tell no period: chance would too often line
+/// them up. More would leave a capture's first frames across an adapter's ticks untold:
+/// an adapter must show its period within a few reads.
 const ENOUGH: usize = 3;
+
+/// From this many reads placed on a grid, a few may stray from it (a busy host's late
+/// read, an adapter's early delivery of a full buffer); fewer must all sit on it closely.
+const SETTLED: usize = 16;
 
 /// The least tolerance of a read's end around its tick, in microseconds: a USB host polls
 /// every millisecond, and a busy host reads a little late.
 const TOLERANCE_FLOOR_US: u64 = 500;
 
-/// The intervals between the latest reads that brought bytes.
+/// When the latest reads that brought bytes ended.
 #[derive(Default)]
 pub(super) struct ReadCadence {
-    last_end: Option<u64>,
-    intervals: [u64; KEPT],
+    ends: [u64; KEPT],
     kept: usize,
     next: usize,
 }
 
 impl ReadCadence {
-    /// A read that brought bytes ended at `end`. Intervals longer than an adapter's reads
-    /// explain are quiet lines between exchanges: they tell nothing of a period.
+    /// A read that brought bytes ended at `end`.
     pub(super) fn record(&mut self, end: u64) {
-        let Some(last) = self.last_end.replace(end) else {
-            return;
-        };
-        let interval = end.saturating_sub(last);
-        if interval > ADAPTER_GAP_MAX_US {
-            return;
-        }
-        self.intervals[self.next] = interval;
+        self.ends[self.next] = end;
         self.next = (self.next + 1) % KEPT;
         self.kept = (self.kept + 1).min(KEPT);
     }
 
-    /// Whether the latest reads end on ticks `period` apart: three intervals in four, of
-    /// enough of them, a whole number of periods give or take an eighth of one. An interval
-    /// of reads at no period matches so by chance one time in four: all of three one time in
-    /// 64, twelve of sixteen one time in 30,000.
+    /// Where each kept read ended after the first read of its stretch of traffic (reads no
+    /// further apart than an adapter's explain), oldest first, with the stretch it is in;
+    /// the first read of each stretch is the origin, and not placed.
+    fn placed(&self) -> impl Iterator<Item = (usize, u64)> + '_ {
+        let oldest = (self.next + KEPT - self.kept) % KEPT;
+        let ends = (0..self.kept).map(move |i| self.ends[(oldest + i) % KEPT]);
+        let mut stretch = 0;
+        let mut origin = None;
+        let mut last = 0;
+        ends.filter_map(move |end| {
+            let offset = match origin {
+                Some(origin) if end.saturating_sub(last) <= ADAPTER_GAP_MAX_US => {
+                    Some((stretch, end.saturating_sub(origin)))
+                }
+                _ => {
+                    stretch += 1;
+                    origin = Some(end);
+                    None
+                }
+            };
+            last = end;
+            offset
+        })
+    }
+
+    /// Whether the latest reads sit on a grid of ticks about `period` apart (the period
+    /// itself is fitted to them, as one interval tells it only to a host's lateness).
+    /// Settled, three reads in four within a twelfth of a period of a tick; before that,
+    /// every one of them within a thirty-second of one (half a millisecond at 16 ms). No
+    /// two reads of a stretch on the same tick. Reads whose intervals are alike but at no
+    /// period (a polling master's, each 20 ms give or take 5) pass for 32 reads about
+    /// never, and for 9 one time in 10,000; an adapter read within half a millisecond of
+    /// its ticks always passes, and one whose host is up to 2 ms late three times in four.
     pub(super) fn keeps_period(&self, period: u64) -> bool {
-        if self.kept < ENOUGH || period == 0 {
+        if period == 0 {
             return false;
         }
-        let tolerance = (period / 8).max(TOLERANCE_FLOOR_US);
-        let on_ticks = self.intervals[..self.kept]
+        // Each read's tick, counted from the read before it: a period told only to a host's
+        // lateness would miscount the ticks of reads far from their stretch's origin.
+        let mut previous = (0, 0, 0.0);
+        let ticked: SmallVec<[(usize, u64, f64); KEPT]> = self
+            .placed()
+            .map(|(stretch, offset)| {
+                let (last_stretch, last_offset, last_ticks) = previous;
+                let (from, counted) = if stretch == last_stretch {
+                    (last_offset, last_ticks)
+                } else {
+                    (0, 0.0)
+                };
+                let ticks = counted + (offset.saturating_sub(from) as f64 / period as f64).round();
+                previous = (stretch, offset, ticks);
+                (stretch, offset, ticks)
+            })
+            .collect();
+        // Least squares through the origin: the period that puts the reads nearest their
+        // ticks.
+        let (moments, squares) = ticked
             .iter()
-            .filter(|interval| {
-                let ticks = (**interval + period / 2) / period;
-                ticks >= 1 && interval.abs_diff(ticks * period) <= tolerance
+            .fold((0.0, 0.0), |(m, s), (_, offset, ticks)| {
+                (m + *offset as f64 * ticks, s + ticks * ticks)
+            });
+        let placed = ticked.len();
+        if placed < ENOUGH || squares == 0.0 {
+            return false;
+        }
+        let fitted = moments / squares;
+        let (share, needed) = if placed >= SETTLED {
+            (12.0, (placed * 3).div_ceil(4))
+        } else {
+            (32.0, placed)
+        };
+        let tolerance = (fitted / share).max(TOLERANCE_FLOOR_US as f64);
+        let mut last = (0, 0.0);
+        let on_ticks = ticked
+            .iter()
+            .filter(|(stretch, offset, ticks)| {
+                // No two reads of a stretch on one tick.
+                let new_tick = *stretch != last.0 || *ticks > last.1;
+                last = (*stretch, *ticks);
+                *ticks >= 1.0 && new_tick && (*offset as f64 - ticks * fitted).abs() <= tolerance
             })
             .count();
-        on_ticks * 4 >= self.kept * 3
+        on_ticks >= needed
     }
 }
 
@@ -80,11 +147,21 @@ mod tests {
     #[test]
     fn an_adapters_reads_keep_its_period_with_a_late_read_or_two() {
         // Ticks of 16 ms, some skipped (nothing came), two reads a millisecond late.
-        let ends = [0, 16, 32, 64, 80, 113, 128, 176, 192, 209, 224].map(|ms| 5_000 + ms * 1000);
+        let ticks = [
+            0, 1, 2, 4, 5, 7, 8, 11, 12, 13, 14, 16, 17, 18, 20, 21, 22, 24, 25,
+        ];
+        let late = |tick: u64| if tick == 7 || tick == 13 { 1_000 } else { 0 };
+        let ends = ticks.map(|tick| 5_000 + tick * 16_000 + late(tick));
         let reads = cadence(ends);
         assert!(reads.keeps_period(16_000));
-        assert!(reads.keeps_period(16_900));
+        assert!(
+            reads.keeps_period(16_900),
+            "the period is fitted to the reads"
+        );
         assert!(!reads.keeps_period(11_000));
+        // Before the reads are many, each must sit on its tick closely.
+        assert!(!cadence(ends[..10].iter().copied()).keeps_period(16_000));
+        assert!(cadence(ends[..5].iter().copied()).keeps_period(16_000));
     }
 
     #[test]
@@ -97,6 +174,45 @@ mod tests {
         for period in [4_300, 5_000, 7_100, 9_000, 16_000] {
             assert!(!reads.keeps_period(period), "{period}");
         }
+    }
+
+    #[test]
+    fn a_few_reads_of_a_polling_line_do_not_line_up_with_a_devices_pause() {
+        // A request, an answer whose last byte a device held back 20 ms, another answer,
+        // read where the bytes end: intervals of 22.0, 20.6 and 41.7 ms, each near a
+        // multiple of the pause's 20.6 ms, but not as closely as an adapter's ticks.
+        let reads = cadence([2_634_543, 2_656_538, 2_677_111, 2_718_785]);
+        assert!(!reads.keeps_period(20_573));
+        // An adapter's first reads, 16 ms apart within 300 us.
+        let reads = cadence([10_000, 26_120, 42_300, 74_050]);
+        assert!(reads.keeps_period(16_100));
+    }
+
+    #[test]
+    fn alike_intervals_at_no_period_drift_off_every_grid() {
+        // A polling line whose every interval is 20 ms give or take 5 (a frame and a
+        // turnaround each): each is near a multiple of a period about as long, but their
+        // differences add up.
+        let mut seed = 7u64;
+        let mut end = 1_000_000;
+        let ends: Vec<u64> = (0..KEPT)
+            .map(|_| {
+                seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+                end += 15_000 + (seed >> 33) % 10_000;
+                end
+            })
+            .collect();
+        let reads = cadence(ends.iter().copied());
+        for period in [17_000, 19_000, 20_000, 21_000, 23_000] {
+            assert!(!reads.keeps_period(period), "{period}");
+        }
+        // An adapter's ticks 20 ms apart, each read up to 1.5 ms late (not adding up): on
+        // the grid.
+        let ticks = ends
+            .iter()
+            .enumerate()
+            .map(|(i, end)| 1_000_000 + 20_000 * (i as u64 + 1) + end % 1_500);
+        assert!(cadence(ticks).keeps_period(20_500));
     }
 
     #[test]

@@ -27,7 +27,7 @@
 //! Frames that did (their CRC holding across the gap: of known layout, or the answer
 //! awaited when no frame starts right after the gap) show that the gaps lie, where the
 //! bytes come in bursts, the frame's two reads are one period apart on a line whose latest
-//! reads keep that period, and such frames are no rarity (one in 200 frames or more, the
+//! reads sit on that period's grid (`cadence`), and such frames are no rarity (one in 200 frames or more, the
 //! last within 2,000 frames): a USB adapter hands bytes over when its latency timer runs
 //! out, so its reads end on the timer's ticks and a frame straddling a tick arrives in two
 //! reads a whole period apart. A device that pauses inside its frame, read where the bytes
@@ -392,7 +392,7 @@ impl Framer {
 
     /// Whether this line's times do not tell its silences: frames have come whole across
     /// gaps its times showed as silence, where a USB adapter's latency timer makes them
-    /// (between two reads one period apart, on a line whose reads keep that period), more
+    /// (between two reads one period apart, on a line whose reads sit on its grid), more
     /// often than chance (one in 200 frames or more) and lately (within 2,000 frames). A
     /// device that paused inside a frame leaves a gap at no period; a CRC that held by
     /// chance costs the silences of the frames after it for a while at most.
@@ -500,7 +500,7 @@ impl Framer {
 
     /// Whether bytes over `at..end` run across a gap their times show as silence where an
     /// adapter's latency timer makes one: between two reads one period apart, on a line
-    /// whose latest reads keep that period. A device that paused inside its frame, read
+    /// whose latest reads sit on its grid. A device that paused inside its frame, read
     /// where the bytes end, leaves a gap at no period.
     fn crosses_a_tick(&self, at: usize, end: usize) -> bool {
         let Some(gap) = (at..end - 1).find(|i| self.timed_gap_after(*i)) else {
