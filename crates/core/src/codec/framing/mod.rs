@@ -214,6 +214,9 @@ pub struct Framer {
     quiet: bool,
     /// No more bytes will come.
     ended: bool,
+    /// The times told a silence after the last bytes before the stream ended: they are
+    /// ended by it, as bytes a silence ends before others come.
+    silent_at_end: bool,
     noise: Option<Noise>,
     /// The direction the next frame should travel in: a master alternates request and
     /// answer. It settles a frame that reads as valid at two lengths.
@@ -252,6 +255,7 @@ impl Framer {
             in_step: true,
             quiet: false,
             ended: false,
+            silent_at_end: false,
             noise: None,
             expect: None,
             awaiting: None,
@@ -318,6 +322,7 @@ impl Framer {
 
     /// The end of the stream: what is left is decided.
     pub fn finish(&mut self, out: &mut Vec<Event>) {
+        self.silent_at_end = self.quiet;
         self.quiet = true;
         self.ended = true;
         self.scan(out);
@@ -365,6 +370,7 @@ impl Framer {
         self.in_step = true;
         self.quiet = false;
         self.ended = false;
+        self.silent_at_end = false;
         self.lost = false;
     }
 
@@ -409,13 +415,20 @@ impl Framer {
 
     /// Where the first silence inside the bytes from `at` ends (the index of the byte
     /// after it), up to the longest frame's reach; the silence after the last byte is not
-    /// counted, since more bytes may still come to decide them.
+    /// counted, since more bytes may still come to decide them, unless the times told it
+    /// before the stream ended.
     fn silence_within(&self, at: usize) -> Option<usize> {
         if !self.times_tell_silence() {
             return None;
         }
         let last = self.buffer.len().min(at + MAX_RTU_ADU);
-        (at..last.saturating_sub(1))
+        let told_to_the_end = self.ended && self.silent_at_end && last == self.buffer.len();
+        let searched = if told_to_the_end {
+            last
+        } else {
+            last.saturating_sub(1)
+        };
+        (at..searched)
             .find(|i| self.silence_after(*i))
             .map(|i| i + 1)
     }
@@ -965,6 +978,30 @@ mod tests {
                 (request, None)
             ]
         );
+    }
+
+    #[test]
+    fn a_request_cut_short_by_silence_at_the_end_of_a_capture_is_cut_as_anywhere_else() {
+        // A transaction, then a request cut after four bytes and a silence the times told:
+        // the same [incomplete] as before a later frame. Without the silence told, the
+        // capture itself may have cut it: noise.
+        let ended = |silence_told: bool| {
+            let mut framer = framer(Mode::Rtu);
+            framer.end_cut_frames();
+            let mut out = Vec::new();
+            framer.push_at(&REQUEST, 10_000, &mut out);
+            framer.push_at(&ANSWER, 20_000, &mut out);
+            framer.push_at(&REQUEST[..4], 40_000, &mut out);
+            if silence_told {
+                assert!(framer.idle(140_000, &mut out));
+            }
+            framer.finish(&mut out);
+            out.into_iter().last()
+        };
+        assert!(
+            matches!(ended(true), Some(Event::Frame(f)) if f.bytes[..] == REQUEST[..4] && f.broken == Some(Broken::Incomplete))
+        );
+        assert!(matches!(ended(false), Some(Event::Noise(n)) if n.len == 4));
     }
 
     #[test]
