@@ -689,6 +689,23 @@ fn an_rtu_frame_from_slave_58_is_hex_in_json() {
     assert_eq!(lines[0]["slave"], 58);
 }
 
+#[test]
+fn low_latency_on_a_port_that_is_no_usb_adapter_says_so_and_sniffs_on() {
+    let request = rtu(&[0x11, 0x03, 0x00, 0x6B, 0x00, 0x03]);
+    let sniffed = sniff_live(
+        &[(request.clone(), Duration::from_millis(10))],
+        &["--low-latency"],
+    );
+    assert!(
+        sniffed.said.contains("is no USB serial adapter")
+            && sniffed.said.contains("leave out --low-latency"),
+        "{}",
+        sniffed.said
+    );
+    assert!(!sniffed.said.contains("latency_timer"), "{}", sniffed.said);
+    assert_eq!(frames_of(&sniffed.lines).len(), 1, "{:?}", sniffed.lines);
+}
+
 /// The notice that a line's gaps are not its silences, and the adapter setting that fixes it.
 const LATENCY_TIMER_NOTICE: &str = "bytes arrive in bursts";
 

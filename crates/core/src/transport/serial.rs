@@ -218,7 +218,14 @@ pub fn set_low_latency(path: &str) -> Result<(), String> {
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
-    let timer = format!("/sys/bus/usb-serial/devices/{name}/latency_timer");
+    let adapter = format!("/sys/bus/usb-serial/devices/{name}");
+    if !std::path::Path::new(&adapter).is_dir() {
+        return Err(format!(
+            "{path} is no USB serial adapter (there is no {adapter}), so it has no latency \
+             timer to set: leave out --low-latency"
+        ));
+    }
+    let timer = format!("{adapter}/latency_timer");
     std::fs::write(&timer, "1")
         .map_err(|e| format!("cannot set {timer} ({e}): run `echo 1 | sudo tee {timer}` once"))
 }
