@@ -983,11 +983,21 @@ fn a_timing_file_that_goes_back_or_falls_short_is_told() {
     assert!(output.status.success());
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(stderr.contains("first 8 bytes; the last 11"), "{stderr}");
-    let frames = json_lines(&output.stdout)
-        .into_iter()
-        .filter(|l| l["type"] == "frame")
-        .count();
-    assert_eq!(frames, 2);
+    let times = |stdout: &[u8]| -> Vec<f64> {
+        json_lines(stdout)
+            .into_iter()
+            .filter(|l| l["type"] == "frame")
+            .map(|l| l["time"].as_f64().unwrap())
+            .collect()
+    };
+    // The answer goes on from the request's time at the line's speed, never before it.
+    let shown = times(&output.stdout);
+    assert_eq!(shown.len(), 2);
+    assert!(shown[0] < shown[1] && shown[1] < 0.1, "{shown:?}");
+    // Two reads stamped alike: the second is placed after the first, not over it.
+    std::fs::write(&timing, "9000 8\n9000 11\n").unwrap();
+    let shown = times(&sniff().stdout);
+    assert!(shown.len() == 2 && shown[0] < shown[1], "{shown:?}");
     // Written by an editor: a byte order mark and a tab are read as the text they frame.
     std::fs::write(&timing, "\u{feff}9000\t8\n9600 11\n").unwrap();
     let output = sniff();

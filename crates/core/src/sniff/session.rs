@@ -270,6 +270,10 @@ pub struct Session {
     counts: Counts,
     char_us: f64,
     last_end: Option<u64>,
+    /// Where the last timed bytes stood, and when they came: bytes without a time after
+    /// them (a `.timing` file shorter than its capture) go on from there at the line's
+    /// speed, so that times never go back.
+    clock: Option<(u64, u64)>,
     numbered: u64,
     events: Vec<Event>,
     /// The line's reads come on a USB adapter's latency timer: its gaps are not its
@@ -290,6 +294,7 @@ impl Session {
             counts: Counts::default(),
             char_us,
             last_end: None,
+            clock: None,
             numbered: 0,
             events: Vec::new(),
             behind_latency_timer: false,
@@ -372,9 +377,19 @@ impl Session {
         }
     }
 
-    /// The time of bytes at `offset`: as they arrived, or at the line's speed.
-    fn at(&self, time: Option<u64>, offset: u64) -> u64 {
-        time.unwrap_or((offset as f64 * self.char_us).round() as u64)
+    /// The time of bytes at `offset`: as they arrived, or at the line's speed from the
+    /// last bytes that had a time (from the start, when none had).
+    fn at(&mut self, time: Option<u64>, offset: u64) -> u64 {
+        match (time, self.clock) {
+            (Some(time), _) => {
+                self.clock = Some((offset, time));
+                time
+            }
+            (None, Some((from, then))) if offset >= from => {
+                then + ((offset - from) as f64 * self.char_us).round() as u64
+            }
+            (None, _) => (offset as f64 * self.char_us).round() as u64,
+        }
     }
 
     fn unanswered(&mut self, unanswered: Unanswered, out: &mut Vec<Record>) {

@@ -192,6 +192,8 @@ pub struct Framer {
     crc_verdicts: CrcVerdicts,
     /// When the latest reads ended: whether they keep an adapter's period.
     cadence: ReadCadence,
+    /// The time of the latest byte placed.
+    latest_time: u64,
     /// How many valid frames had been taken when the last frame came whole across a gap
     /// its times showed as silence, on a line read in bursts, while such frames were more
     /// than chance: see [`Framer::gaps_lie`].
@@ -246,6 +248,7 @@ impl Framer {
             read_starts: Vec::new(),
             crc_verdicts: CrcVerdicts::default(),
             cadence: ReadCadence::default(),
+            latest_time: 0,
             lying_since: None,
             bursts: false,
             frames_taken: 0,
@@ -295,10 +298,13 @@ impl Framer {
         self.settle_before(first_time, out);
         self.times.resize(self.buffer.len(), UNTIMED);
         self.read_starts.resize(self.buffer.len(), true);
+        // A read placed back over the one before it (reads stamped alike, a clock that
+        // stepped) starts where that one ended: times never go back.
         for (i, byte) in bytes.iter().enumerate() {
             let back = ((last - i) as f64 * self.char_us) as u64;
+            self.latest_time = time.saturating_sub(back).max(self.latest_time);
             self.buffer.push(*byte);
-            self.times.push(time.saturating_sub(back));
+            self.times.push(self.latest_time);
             self.read_starts.push(i == 0);
         }
         self.scan(out);
