@@ -70,8 +70,9 @@ a user-defined function, whose length only the silence tells, is a CRC error whe
 fails there. This is decided when \
 the bytes after the silence come. A USB adapter hands bytes over when its latency timer runs \
 out (16 ms by default), so a frame can arrive in two reads a whole period apart that were \
-back to back on the wire: where a line's bytes come in bursts (several a read, as an adapter \
-gathers them), a frame whose CRC holds across the gap (of a known layout, or the answer \
+back to back on the wire: where a line's bytes come in bursts (several a read in a quarter or \
+more of its latest reads, as an adapter gathers them; a host late now and then does not make \
+a line read a byte at a time one read in bursts), a frame whose CRC holds across the gap (of a known layout, or the answer \
 awaited where no frame starts after the gap) is taken whole. An adapter's reads end on its \
 timer's ticks, so where the frame's two reads are one period apart and the line's latest \
 reads sit on that period's grid (each a whole number of periods after the first read of its \

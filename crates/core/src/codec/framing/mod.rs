@@ -27,19 +27,20 @@
 //! Frames that did (their CRC holding across the gap: of known layout, or the answer
 //! awaited when no frame starts right after the gap) show that the gaps lie, where the
 //! bytes come in bursts, the frame's two reads are one period apart on a line whose latest
-//! reads sit on that period's grid (`cadence`), and such frames are no rarity (one in 200 frames or more, the
-//! last within 2,000 frames): a USB adapter hands bytes over when its latency timer runs
-//! out, so its reads end on the timer's ticks and a frame straddling a tick arrives in two
+//! reads sit on that period's grid (`cadence`), and such frames are no rarity (one in 200
+//! frames or more, the last within 2,000 frames): a USB adapter hands bytes over when its
+//! latency timer runs out, so its reads end on the timer's ticks and a frame straddling a tick arrives in two
 //! reads a whole period apart. A device that pauses inside its frame, read where the bytes
 //! end, leaves a gap at no period; a CRC holding by chance across a real silence is far
 //! rarer; neither must cost the rest of a capture its silences. Meanwhile the
 //! times are not taken for silence (nor is the quiet they told), and a frame cut short is
 //! kept until bytes show it is no frame, as without timing. No frame runs across a gap
 //! longer than an adapter's reads explain (64 ms, `ADAPTER_GAP_MAX_US`), however the line
-//! is read. Bytes read one at a time come through no such adapter: a line's silences are
-//! its own, and one ends a frame as it does for every receiver on the bus, whatever CRC
-//! the bytes across it pass (a device that pauses inside its frame sends two pieces, a
-//! frame cut short and the rest).
+//! is read. Bytes read one at a time come through no such adapter (a host late now and then,
+//! reading two together, does not change that: bursts are a quarter or more of the latest
+//! reads): a line's silences are its own, and one ends a frame as it does for every
+//! receiver on the bus, whatever CRC the bytes across it pass (a device that pauses inside
+//! its frame sends two pieces, a frame cut short and the rest).
 //!
 //! ASCII: ':' starts a frame and CR LF ends it; up to a second may pass between characters.
 //! TCP: the MBAP length alone frames, however the bytes were segmented.
@@ -198,11 +199,10 @@ pub struct Framer {
     /// its times showed as silence, on a line read in bursts, while such frames were more
     /// than chance: see [`Framer::gaps_lie`].
     lying_since: Option<u64>,
-    /// A read brought several bytes at once: the line may be behind an adapter that
-    /// gathers what arrives until its latency timer runs out, whose reads make gaps that
-    /// are no silence. Read a byte at a time (a UART, a capture timed byte by byte), a
-    /// line's gaps are its own: no frame runs across a silence there.
-    bursts: bool,
+    /// Which of the latest reads (up to 64, the latest in the lowest bit) brought several
+    /// bytes at once, and how many reads there were: see [`Framer::read_in_bursts`].
+    several_a_read: u64,
+    reads: u32,
     /// Valid frames taken, and how many of them ran whole across a silence.
     frames_taken: u64,
     crossings: u64,
@@ -250,7 +250,8 @@ impl Framer {
             cadence: ReadCadence::default(),
             latest_time: 0,
             lying_since: None,
-            bursts: false,
+            several_a_read: 0,
+            reads: 0,
             frames_taken: 0,
             crossings: 0,
             ends_cut_frames: false,
@@ -292,7 +293,8 @@ impl Framer {
         let Some(last) = bytes.len().checked_sub(1) else {
             return;
         };
-        self.bursts |= last > 0;
+        self.several_a_read = self.several_a_read << 1 | u64::from(last > 0);
+        self.reads = self.reads.saturating_add(1);
         self.cadence.record(time);
         let first_time = time.saturating_sub((last as f64 * self.char_us) as u64);
         self.settle_before(first_time, out);
@@ -413,6 +415,17 @@ impl Framer {
             .is_some_and(|since| self.frames_taken - since < LYING_FOR_FRAMES)
     }
 
+    /// Whether the line is read several bytes at a time: a quarter or more of its latest
+    /// reads brought several bytes at once. It may be behind an adapter that gathers what
+    /// arrives until its latency timer runs out, whose reads make gaps that are no silence.
+    /// Read a byte at a time (a UART, a capture timed byte by byte), a line's gaps are its
+    /// own, and a host that now and then reads two bytes together, being late, does not
+    /// change that: no frame runs across a silence there.
+    fn read_in_bursts(&self) -> bool {
+        let latest = self.reads.min(u64::BITS);
+        self.several_a_read.count_ones() * 4 >= latest && latest > 0
+    }
+
     /// Whether the times of the bytes tell the line's silences, for a sniffer's rules: it
     /// has times, and no frame has come whole across a gap.
     fn times_tell_silence(&self) -> bool {
@@ -459,7 +472,7 @@ impl Framer {
         if !self.ends_cut_frames || self.times.is_empty() {
             return false;
         }
-        if !self.bursts && self.times_tell_silence() {
+        if !self.read_in_bursts() && self.times_tell_silence() {
             return self.silence_inside(at, end);
         }
         (at..end - 1).any(|i| match (self.time(i), self.time(i + 1)) {
@@ -590,7 +603,7 @@ impl Framer {
                         self.frames_taken += 1;
                         if self.ends_cut_frames
                             && self.mode == Mode::Rtu
-                            && self.bursts
+                            && self.read_in_bursts()
                             && self.crosses_a_tick(at, at + len)
                         {
                             self.crossings += 1;
@@ -982,6 +995,43 @@ mod tests {
                 (REQUEST.to_vec(), None),
                 (cut.to_vec(), Some(Broken::Incomplete)),
                 (request, None)
+            ]
+        );
+    }
+
+    #[test]
+    fn a_host_late_now_and_then_leaves_a_line_read_a_byte_at_a_time() {
+        // Read a byte a read, but the host once late: the request's first two bytes came in
+        // one read. A device then pauses 5 ms inside its answer: on this line that is a
+        // silence, and the answer is cut there, though its CRC holds across it.
+        let mut framer = framer(Mode::Rtu);
+        framer.end_cut_frames();
+        let mut out = Vec::new();
+        let mut time = 2 * 573;
+        framer.push_at(&REQUEST[..2], time, &mut out);
+        let mut bytes_at = |bytes: &[u8], silence_before: u64, out: &mut Vec<Event>| {
+            time += silence_before;
+            for byte in bytes {
+                time += 573;
+                framer.push_at(&[*byte], time, out);
+            }
+        };
+        bytes_at(&REQUEST[2..], 0, &mut out);
+        bytes_at(&ANSWER[..6], 5_000, &mut out);
+        bytes_at(&ANSWER[6..], 5_000, &mut out);
+        framer.finish(&mut out);
+        let frames: Vec<(Vec<u8>, Option<Broken>)> = out
+            .into_iter()
+            .filter_map(|event| match event {
+                Event::Frame(found) => Some((found.bytes.to_vec(), found.broken)),
+                Event::Noise(_) => None,
+            })
+            .collect();
+        assert_eq!(
+            frames,
+            [
+                (REQUEST.to_vec(), None),
+                (ANSWER[..6].to_vec(), Some(Broken::Incomplete))
             ]
         );
     }
