@@ -198,33 +198,35 @@ fn every_link_gives_the_same_frames_paired() {
     }
 }
 
+/// A FIN with no payload, client to server or back.
+fn fin(to_server: bool, sequence: u32, ack: u32) -> Vec<u8> {
+    let (source, destination) = if to_server {
+        (CLIENT_PORT, 502)
+    } else {
+        (502, CLIENT_PORT)
+    };
+    let (a, b) = if to_server {
+        (CLIENT, SERVER)
+    } else {
+        (SERVER, CLIENT)
+    };
+    let mut bytes = Vec::new();
+    PacketBuilder::ethernet2([1; 6], [2; 6])
+        .ipv4(a, b, 64)
+        .tcp(source, destination, sequence, 1024)
+        .fin()
+        .ack(ack)
+        .write(&mut bytes, &[])
+        .unwrap();
+    bytes
+}
+
 #[test]
 fn a_fin_acknowledged_is_no_byte_missing() {
     let exchanges: Vec<_> = (1..=2).map(|t| exchange(t, 2)).collect();
     let mut packets = conversation(Link::Ethernet, &exchanges);
     let sent: u32 = exchanges.iter().map(|(r, _)| r.len() as u32).sum();
     let answered: u32 = exchanges.iter().map(|(_, a)| a.len() as u32).sum();
-    let fin = |to_server: bool, sequence: u32, ack: u32| {
-        let (source, destination) = if to_server {
-            (CLIENT_PORT, 502)
-        } else {
-            (502, CLIENT_PORT)
-        };
-        let (a, b) = if to_server {
-            (CLIENT, SERVER)
-        } else {
-            (SERVER, CLIENT)
-        };
-        let mut bytes = Vec::new();
-        PacketBuilder::ethernet2([1; 6], [2; 6])
-            .ipv4(a, b, 64)
-            .tcp(source, destination, sequence, 1024)
-            .fin()
-            .ack(ack)
-            .write(&mut bytes, &[])
-            .unwrap();
-        bytes
-    };
     packets.push(fin(true, 1000 + sent, 5000 + answered));
     packets.push(fin(false, 5000 + answered, 1000 + sent + 1));
     packets.push(packet(
@@ -777,4 +779,35 @@ fn a_big_endian_pcapng_with_a_time_offset_reads_as_the_little_endian_one() {
     };
     assert_eq!(times(&file(false)), [7_500_000]);
     assert_eq!(times(&file(true)), [7_500_000]);
+}
+
+/// A request whose answer the capture does not hold: while its connection is still open at
+/// the end of the capture, the capture may be why; once the connection closed, the server
+/// never answered.
+#[test]
+fn a_request_left_waiting_tells_whether_the_capture_ended_or_the_connection_closed() {
+    let exchanges: Vec<_> = (1..=2).map(|t| exchange(t, 2)).collect();
+    let mut packets = conversation(Link::Ethernet, &exchanges);
+    packets.pop();
+    let unanswered = |packets: Vec<Vec<u8>>| -> Vec<(bool, Option<u64>)> {
+        let (records, _) = sniff(&pcap(1, &timed(packets)));
+        records
+            .into_iter()
+            .filter_map(|r| match r {
+                Record::Unanswered {
+                    capture_ended,
+                    waited,
+                    ..
+                } => Some((capture_ended, waited)),
+                _ => None,
+            })
+            .collect()
+    };
+    // The request is the capture's last packet: it waited no time the capture shows.
+    assert_eq!(unanswered(packets.clone()), [(true, None)]);
+    let sent: u32 = exchanges.iter().map(|(r, _)| r.len() as u32).sum();
+    let answered = exchanges[0].1.len() as u32;
+    packets.push(fin(false, 5000 + answered, 1000 + sent));
+    packets.push(fin(true, 1000 + sent, 5000 + answered + 1));
+    assert_eq!(unanswered(packets), [(false, Some(2000))]);
 }

@@ -29,10 +29,11 @@
 //! bytes come in bursts, the frame's two reads are one period apart on a line whose latest
 //! reads sit on that period's grid (`cadence`), and such frames are no rarity (one in 200
 //! frames or more, the last within 2,000 frames): a USB adapter hands bytes over when its
-//! latency timer runs out, so its reads end on the timer's ticks and a frame straddling a tick arrives in two
-//! reads a whole period apart. A device that pauses inside its frame, read where the bytes
-//! end, leaves a gap at no period; a CRC holding by chance across a real silence is far
-//! rarer; neither must cost the rest of a capture its silences. Meanwhile the
+//! latency timer runs out, so its reads end on the timer's ticks and a frame straddling a
+//! tick arrives in two reads a whole period apart. A device that pauses inside its frame,
+//! read where the bytes end, leaves a gap at no period; a CRC holding by chance across a
+//! real silence is far rarer; neither must cost the rest of a capture its silences.
+//! Meanwhile the
 //! times are not taken for silence (nor is the quiet they told), and a frame cut short is
 //! kept until bytes show it is no frame, as without timing. No frame runs across a gap
 //! longer than an adapter's reads explain (64 ms, `ADAPTER_GAP_MAX_US`), however the line
@@ -427,7 +428,7 @@ impl Framer {
     }
 
     /// Whether the times of the bytes tell the line's silences, for a sniffer's rules: it
-    /// has times, and no frame has come whole across a gap.
+    /// has times, and they are believed (see [`Framer::gaps_lie`]).
     fn times_tell_silence(&self) -> bool {
         self.ends_cut_frames && !self.times.is_empty() && !self.gaps_lie()
     }
@@ -1004,29 +1005,20 @@ mod tests {
         // Read a byte a read, but the host once late: the request's first two bytes came in
         // one read. A device then pauses 5 ms inside its answer: on this line that is a
         // silence, and the answer is cut there, though its CRC holds across it.
-        let mut framer = framer(Mode::Rtu);
-        framer.end_cut_frames();
-        let mut out = Vec::new();
         let mut time = 2 * 573;
-        framer.push_at(&REQUEST[..2], time, &mut out);
-        let mut bytes_at = |bytes: &[u8], silence_before: u64, out: &mut Vec<Event>| {
+        let mut reads: Vec<(&[u8], u64)> = vec![(&REQUEST[..2], time)];
+        for (bytes, silence_before) in [
+            (&REQUEST[2..], 0),
+            (&ANSWER[..6], 5_000),
+            (&ANSWER[6..], 5_000),
+        ] {
             time += silence_before;
             for byte in bytes {
                 time += 573;
-                framer.push_at(&[*byte], time, out);
+                reads.push((std::slice::from_ref(byte), time));
             }
-        };
-        bytes_at(&REQUEST[2..], 0, &mut out);
-        bytes_at(&ANSWER[..6], 5_000, &mut out);
-        bytes_at(&ANSWER[6..], 5_000, &mut out);
-        framer.finish(&mut out);
-        let frames: Vec<(Vec<u8>, Option<Broken>)> = out
-            .into_iter()
-            .filter_map(|event| match event {
-                Event::Frame(found) => Some((found.bytes.to_vec(), found.broken)),
-                Event::Noise(_) => None,
-            })
-            .collect();
+        }
+        let frames = timed_frames(&reads);
         assert_eq!(
             frames,
             [
