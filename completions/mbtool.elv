@@ -1109,7 +1109,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --rts-level 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]'
             cand -o 'Output format [default: table]; for dump, the file to write'
             cand --output 'Output format [default: table]; for dump, the file to write'
-            cand --input 'Read a capture instead of the port (''-'' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line. Standard input still open (another program''s capture piped in) ends on Ctrl-C or SIGTERM as a live capture does, its frames and the summary shown'
+            cand --input 'Read a capture instead of the port (''-'' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line. Standard input still open (another program''s capture piped in) ends on Ctrl-C or SIGTERM as a live capture does, its frames and the summary shown. A file of raw bytes without timing is framed on every core, with the frames found in order'
             cand --interface 'Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng'
             cand --tcp-port 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)'
             cand --save 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng'

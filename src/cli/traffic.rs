@@ -144,7 +144,8 @@ pub struct SniffArgs {
     /// Read a capture instead of the port ('-' for standard input): a pcap or pcapng file
     /// of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line.
     /// Standard input still open (another program's capture piped in) ends on Ctrl-C or
-    /// SIGTERM as a live capture does, its frames and the summary shown
+    /// SIGTERM as a live capture does, its frames and the summary shown. A file of raw bytes
+    /// without timing is framed on every core, with the frames found in order
     #[arg(long, value_name = "FILE")]
     pub input: Option<std::path::PathBuf>,
 

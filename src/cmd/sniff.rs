@@ -245,6 +245,12 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
             write_alongside(&mut sinks, |found| match &timing {
                 // The capture ended at its last read or idle, not at its last frame.
                 Some(timing) => replay_timed(input, timing, &mut session, found, &mut save),
+                // A file is read whole and can be framed on every core; a pipe may be a
+                // live line, whose frames are shown as they come.
+                None if mode != Mode::Tcp && std::fs::metadata(path).is_ok_and(|m| m.is_file()) => {
+                    replay_ahead(input, &mut session, found, &mut save)?;
+                    Ok(None)
+                }
                 None => {
                     replay(input, &mut session, found, &mut save)?;
                     Ok(None)
@@ -669,6 +675,93 @@ fn replay(
         session.push(&chunk[..n], &mut found.records);
         found.found()?;
     }
+}
+
+/// How many bytes of a capture file are framed ahead at a time on another core: large
+/// enough that starting a thread and catching up cost little beside them, small enough
+/// that the frames of the blocks in flight stay in the cores' caches.
+const AHEAD_BLOCK: usize = 1 << 16;
+
+/// A capture file without timing, framed on every core: each block after the first is
+/// framed ahead on a thread of its own while the session catches up with the blocks before
+/// it (see `Framer::catch_up`), finding the same frames as [`replay`] would. While most
+/// frames are shown, the writer needs a core of its own, and fewer blocks are framed ahead
+/// (none on two cores). Returns how many bytes it read.
+fn replay_ahead(
+    input: &mut dyn Read,
+    session: &mut Session,
+    found: &mut Batches,
+    save: &mut Option<Save>,
+) -> Result<u64> {
+    let cores = thread::available_parallelism().map_or(1, |n| n.get());
+    thread::scope(|scope| {
+        let mut in_flight = std::collections::VecDeque::new();
+        let mut read = 0u64;
+        let mut ended = false;
+        let mut writer_busy = false;
+        let mut events = Vec::new();
+        loop {
+            let blocks = if writer_busy { cores - 1 } else { cores };
+            while !ended && in_flight.len() < blocks.max(1) {
+                let block = read_block(input)?;
+                if block.is_empty() {
+                    ended = true;
+                    break;
+                }
+                if let Some(save) = save.as_mut() {
+                    save.bytes(&block, None)?;
+                }
+                let block: Arc<[u8]> = block.into();
+                // The first block, and any while nothing else is in flight, is framed in
+                // order: there is nothing before it to catch up with.
+                let ahead = (!in_flight.is_empty()).then(|| {
+                    let framer = session.framer_ahead(read);
+                    let bytes = Arc::clone(&block);
+                    scope.spawn(move || framer.frame_ahead(&bytes))
+                });
+                read += block.len() as u64;
+                in_flight.push_back((block, ahead));
+            }
+            let Some((block, ahead)) = in_flight.pop_front() else {
+                return Ok(read);
+            };
+            let mut shown = 0;
+            match ahead {
+                Some(ahead) => {
+                    let ahead = ahead
+                        .join()
+                        .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+                    session.catch_up(&block, ahead, &mut events);
+                    // A batch at a time, so that few records are alive at once.
+                    let mut framed = events.drain(..).peekable();
+                    while framed.peek().is_some() {
+                        let before = found.records.len();
+                        session.read_framed(framed.by_ref().take(BATCH), &mut found.records);
+                        shown += found.records.len() - before;
+                        found.found()?;
+                    }
+                }
+                None => {
+                    for piece in block.chunks(1 << 12) {
+                        let before = found.records.len();
+                        session.push(piece, &mut found.records);
+                        shown += found.records.len() - before;
+                        found.found()?;
+                    }
+                }
+            }
+            // A record in 16 bytes or more keeps a writer busy: every frame of a busy line.
+            writer_busy = shown * 16 > block.len();
+        }
+    })
+}
+
+/// The next block of a capture file, as long as [`AHEAD_BLOCK`] unless the file ends first
+/// (empty at its end).
+fn read_block(input: &mut dyn Read) -> io::Result<Vec<u8>> {
+    let mut block = Vec::with_capacity(AHEAD_BLOCK);
+    input.take(AHEAD_BLOCK as u64).read_to_end(&mut block)?;
+    Ok(block)
 }
 
 /// A capture with its timing: the bytes are given to the session exactly as the live

@@ -296,6 +296,69 @@ fn a_hundred_thousand_pairs_with_noise_lose_and_invent_nothing() {
     assert_eq!(session.counts().unanswered, 0);
 }
 
+/// A capture file is framed on every core, block by block; a pipe in order, as it comes.
+/// Both must give the same frames, noise, pairs and summary, byte for byte, whatever the
+/// traffic at the blocks' edges: frames of four slaves, glitch bytes, frames cut short and
+/// runs of a line held low.
+#[test]
+fn a_capture_file_framed_on_every_core_reads_as_the_same_bytes_piped() {
+    let mut rng = fastrand::Rng::with_seed(20261126);
+    let mut slave = Slave::new(&[1, 2, 17, 247], DataModel::manual_examples());
+    let mut stream = Vec::new();
+    while stream.len() < 1 << 20 {
+        let id = [1u8, 2, 17, 247][rng.usize(..4)];
+        let request = random_request(&mut rng);
+        let answer = slave.handle(id, &request).unwrap();
+        for pdu in [Pdu::Request(request), answer] {
+            let bytes = Frame {
+                mode: Mode::Rtu,
+                slave: id,
+                transaction: 0,
+                pdu,
+            }
+            .encode()
+            .unwrap();
+            let keep = match rng.u8(..50) {
+                0 => rng.usize(1..bytes.len()),
+                _ => bytes.len(),
+            };
+            stream.extend_from_slice(&bytes[..keep]);
+            match rng.u8(..20) {
+                0 => stream.extend(std::iter::repeat_n(0, rng.usize(1..300))),
+                1..=4 => stream.push(rng.u8(..)),
+                _ => {}
+            }
+        }
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let capture = dir.path().join("capture.bin");
+    std::fs::write(&capture, &stream).unwrap();
+    for filter in [&["--slave", "17"][..], &["--function", "16"], &[]] {
+        let from_file = mbtool()
+            .args(["sniff", "--json", "--input"])
+            .arg(&capture)
+            .args(filter)
+            .args(["--save"])
+            .arg(dir.path().join("saved.bin"))
+            .output()
+            .unwrap();
+        let piped = mbtool()
+            .args(["sniff", "--json", "--input", "-"])
+            .args(filter)
+            .write_stdin(stream.clone())
+            .output()
+            .unwrap();
+        assert_eq!(from_file.status.code(), Some(0), "{filter:?}");
+        assert!(from_file.stdout.len() > 1000, "{filter:?}");
+        assert!(
+            from_file.stdout == piped.stdout,
+            "{filter:?}: the file and the pipe differ"
+        );
+        assert_eq!(from_file.stderr, piped.stderr, "{filter:?}");
+        assert!(std::fs::read(dir.path().join("saved.bin")).unwrap() == stream);
+    }
+}
+
 #[test]
 fn csv_gives_the_time_json_gives_without_timing_too() {
     let glued: Vec<u8> = WORKED.concat();

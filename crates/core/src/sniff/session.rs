@@ -8,7 +8,7 @@ use std::net::SocketAddr;
 use serde::Serialize;
 
 use super::pairing::{Pairer, Role, Unanswered};
-use crate::codec::framing::{Broken, Event, Found, Framer, Noise, NoiseBytes};
+use crate::codec::framing::{Ahead, Broken, Event, Found, Framer, Noise, NoiseBytes};
 use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
 use crate::describe::{
     describe_as, describe_frame, describe_reading, locate_answer, FrameReport, Kind,
@@ -310,8 +310,27 @@ impl Session {
     pub fn push(&mut self, bytes: &[u8], out: &mut Vec<Record>) {
         let mut events = std::mem::take(&mut self.events);
         self.framer.push(bytes, &mut events);
-        self.read_events(&mut events, out);
+        self.read_events(events.drain(..), out);
         self.events = events;
+    }
+
+    /// A framer for the bytes of the capture from `offset` on, to frame them ahead on
+    /// another core (see [`Framer::frame_ahead`]) while this session reads what comes
+    /// before them.
+    pub fn framer_ahead(&self, offset: u64) -> Framer {
+        self.framer.starting_at(offset)
+    }
+
+    /// Bytes of a capture file without timing, the block after those pushed so far, which
+    /// `ahead` framed from its own start: their frames, the same as [`Session::push`]
+    /// would find, are added to `events`, to be read with [`Session::read_framed`].
+    pub fn catch_up(&mut self, block: &[u8], ahead: Ahead, events: &mut Vec<Event>) {
+        self.framer.catch_up(block, ahead, events);
+    }
+
+    /// Reads the frames and noise that [`Session::catch_up`] found.
+    pub fn read_framed(&mut self, events: impl IntoIterator<Item = Event>, out: &mut Vec<Record>) {
+        self.read_events(events, out);
     }
 
     /// Bytes read together from a port, the last at `time` microseconds.
@@ -319,7 +338,7 @@ impl Session {
         let mut events = std::mem::take(&mut self.events);
         self.framer.push_at(bytes, time, &mut events);
         self.behind_latency_timer |= self.framer.gaps_lie();
-        self.read_events(&mut events, out);
+        self.read_events(events.drain(..), out);
         self.events = events;
     }
 
@@ -327,7 +346,7 @@ impl Session {
     pub fn push_byte_at(&mut self, byte: u8, time: u64, out: &mut Vec<Record>) {
         let mut events = std::mem::take(&mut self.events);
         self.framer.push_byte_at(byte, time, &mut events);
-        self.read_events(&mut events, out);
+        self.read_events(events.drain(..), out);
         self.events = events;
     }
 
@@ -336,7 +355,7 @@ impl Session {
     pub fn idle(&mut self, now: u64, out: &mut Vec<Record>) -> bool {
         let mut events = std::mem::take(&mut self.events);
         let news = self.framer.idle(now, &mut events);
-        self.read_events(&mut events, out);
+        self.read_events(events.drain(..), out);
         self.events = events;
         news
     }
@@ -345,14 +364,14 @@ impl Session {
     pub fn finish(&mut self, now: Option<u64>, out: &mut Vec<Record>) {
         let mut events = std::mem::take(&mut self.events);
         self.framer.finish(&mut events);
-        self.read_events(&mut events, out);
+        self.read_events(events.drain(..), out);
         if let Some(unanswered) = self.pairer.finish(now.or(self.last_end)) {
             self.unanswered(unanswered, out);
         }
     }
 
-    fn read_events(&mut self, events: &mut Vec<Event>, out: &mut Vec<Record>) {
-        for event in events.drain(..) {
+    fn read_events(&mut self, events: impl IntoIterator<Item = Event>, out: &mut Vec<Record>) {
+        for event in events {
             match event {
                 Event::Noise(Noise {
                     kept,

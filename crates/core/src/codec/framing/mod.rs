@@ -50,9 +50,12 @@ use super::checksum::crc_holds;
 use super::function::EXCEPTION_FLAG;
 use super::limits::MAX_RTU_ADU;
 use super::{Direction, Mode};
+pub use ahead::Ahead;
+use ahead::Standing;
 use cadence::ReadCadence;
 use memo::CrcVerdicts;
 
+mod ahead;
 mod ascii;
 mod cadence;
 mod memo;
@@ -230,6 +233,9 @@ pub struct Framer {
     lost: bool,
     /// TCP seen from outside: look for the next header that reads instead of giving up.
     resync: bool,
+    /// Where the framer stood after each frame it handed out, while it frames a block
+    /// ahead or catches up with one (see `ahead`).
+    standings: Option<Vec<(usize, Standing)>>,
 }
 
 impl Framer {
@@ -266,6 +272,7 @@ impl Framer {
             awaiting: None,
             lost: false,
             resync: false,
+            standings: None,
         }
     }
 
@@ -617,6 +624,7 @@ impl Framer {
                         }
                     }
                     out.push(Event::Frame(found));
+                    self.note_standing(out.len() - 1);
                     at += len;
                     in_step = true;
                 }
