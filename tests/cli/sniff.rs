@@ -239,6 +239,24 @@ fn the_worked_frames_glued_together_come_out_paired() {
     assert_eq!(summary["noise_bytes"], 0);
 }
 
+/// A random request to one of the slaves 1, 2, 17 and 247 of `slave`, and its answer, as
+/// RTU frames.
+fn exchange(rng: &mut fastrand::Rng, slave: &mut Slave) -> [Vec<u8>; 2] {
+    let id = [1u8, 2, 17, 247][rng.usize(..4)];
+    let request = random_request(rng);
+    let answer = slave.handle(id, &request).unwrap();
+    [Pdu::Request(request), answer].map(|pdu| {
+        Frame {
+            mode: Mode::Rtu,
+            slave: id,
+            transaction: 0,
+            pdu,
+        }
+        .encode()
+        .unwrap()
+    })
+}
+
 #[test]
 fn a_hundred_thousand_pairs_with_noise_lose_and_invent_nothing() {
     let mut rng = fastrand::Rng::with_seed(20261122);
@@ -247,18 +265,7 @@ fn a_hundred_thousand_pairs_with_noise_lose_and_invent_nothing() {
     let mut frames = Vec::new();
     let mut noise = 0u64;
     for _ in 0..100_000 {
-        let id = [1u8, 2, 17, 247][rng.usize(..4)];
-        let request = random_request(&mut rng);
-        let answer = slave.handle(id, &request).unwrap();
-        for pdu in [Pdu::Request(request), answer] {
-            let bytes = Frame {
-                mode: Mode::Rtu,
-                slave: id,
-                transaction: 0,
-                pdu,
-            }
-            .encode()
-            .unwrap();
+        for bytes in exchange(&mut rng, &mut slave) {
             stream.extend_from_slice(&bytes);
             frames.push(bytes);
         }
@@ -306,18 +313,7 @@ fn a_capture_file_framed_on_every_core_reads_as_the_same_bytes_piped() {
     let mut slave = Slave::new(&[1, 2, 17, 247], DataModel::manual_examples());
     let mut stream = Vec::new();
     while stream.len() < 1 << 20 {
-        let id = [1u8, 2, 17, 247][rng.usize(..4)];
-        let request = random_request(&mut rng);
-        let answer = slave.handle(id, &request).unwrap();
-        for pdu in [Pdu::Request(request), answer] {
-            let bytes = Frame {
-                mode: Mode::Rtu,
-                slave: id,
-                transaction: 0,
-                pdu,
-            }
-            .encode()
-            .unwrap();
+        for bytes in exchange(&mut rng, &mut slave) {
             let keep = match rng.u8(..50) {
                 0 => rng.usize(1..bytes.len()),
                 _ => bytes.len(),
