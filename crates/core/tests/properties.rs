@@ -257,7 +257,7 @@ fn events_ahead(mode: Mode, stream: &[u8], cuts: &[usize]) -> (Vec<Event>, usize
 }
 
 /// A line's traffic: frames of both directions, some cut short, with noise between them:
-/// a glitch byte or two, random bytes, or a line held low or high.
+/// a glitch byte or two, random bytes, a line held low or high, or a long line of text.
 fn traffic(mode: Mode) -> impl Strategy<Value = Vec<u8>> {
     let piece = (
         prop_oneof![
@@ -270,6 +270,8 @@ fn traffic(mode: Mode) -> impl Strategy<Value = Vec<u8>> {
             8 => vec(any::<u8>(), 0..3),
             1 => vec(any::<u8>(), 0..120),
             1 => (prop_oneof![Just(0u8), Just(0xFF)], 0usize..300).prop_map(|(b, n)| vec![b; n]),
+            // A line of text as long as a frame may be, or longer.
+            1 => (400usize..700).prop_map(|n| [&b":"[..], &vec![b'0'; n], b"\r\n"].concat()),
         ],
         0usize..12,
     );

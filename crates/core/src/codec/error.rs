@@ -83,7 +83,7 @@ pub enum FrameError {
     #[error("frame of {0} bytes is too short to be a Modbus frame")]
     TooShort(usize),
     /// The frame exceeds the longest ADU of its mode.
-    #[error("frame of {actual} bytes is longer than the {max} bytes a {mode} frame may have")]
+    #[error("frame of {actual} bytes is longer than the {max} bytes {mode} allows a frame")]
     TooLong {
         /// The mode's name: "RTU", "ASCII" or "TCP".
         mode: &'static str,

@@ -15,7 +15,9 @@ impl Framer {
             broken: Some(Broken::Incomplete),
             direction: None,
         };
-        for i in 1..data.len() {
+        // The end is looked for within the longest frame only, so that how many bytes have
+        // come does not change where a frame ends.
+        for i in 1..data.len().min(MAX_ASCII_ADU) {
             // A pause longer than the character timeout cuts the frame off.
             if self.silence_after(at + i - 1) {
                 return incomplete(i);

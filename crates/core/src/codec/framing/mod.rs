@@ -727,7 +727,7 @@ pub fn split_glued(mode: Mode, bytes: &[u8]) -> Option<Vec<Vec<u8>>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::codec::limits::MAX_RTU_ADU;
+    use crate::codec::limits::{MAX_ASCII_ADU, MAX_RTU_ADU};
 
     #[test]
     fn frames_glued_on_one_line_are_split_and_nothing_else_is() {
@@ -1742,6 +1742,19 @@ mod tests {
             framer.idle(i as u64 * 500_000 + 499_000, &mut out);
         }
         assert!(matches!(out.as_slice(), [Event::Frame(f)] if f.broken.is_none()));
+    }
+
+    #[test]
+    fn an_ascii_line_longer_than_a_frame_is_cut_alike_however_it_comes() {
+        let mut stream = b":".to_vec();
+        stream.extend([b'0'; 1200]);
+        stream.extend(b"\r\n:1103006B00037E\r\n");
+        let whole = events(Mode::Ascii, &stream);
+        assert!(
+            matches!(&whole[0], Event::Frame(f) if f.broken == Some(Broken::Incomplete) && f.bytes.len() == MAX_ASCII_ADU)
+        );
+        assert!(matches!(whole.last(), Some(Event::Frame(f)) if f.broken.is_none()));
+        assert_eq!(events_byte_by_byte(Mode::Ascii, &stream), whole);
     }
 
     #[test]
