@@ -15,6 +15,7 @@ use mbtool::connection::{self, line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::output::{self, sniff::SniffWriter, Named};
 use mbtool::settings::Settings;
+use mbtool_core::codec::framing::{Ahead, Framer};
 use mbtool_core::codec::Mode;
 use mbtool_core::sniff::capture;
 use mbtool_core::sniff::pcap::{self, PcapWriter};
@@ -34,6 +35,8 @@ struct Sinks {
     /// Microseconds since 1970 of capture time 0, for pcap timestamps.
     epoch_us: u64,
     mode: Mode,
+    /// Records are flushed as they are written: a live line, or standard input, which may
+    /// be another program's live capture.
     live: bool,
     /// `--stats`: the tallies, kept from every record shown.
     stats: Option<Stats>,
@@ -235,7 +238,10 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         pcap,
         epoch_us: if args.input.is_some() { 0 } else { epoch_us },
         mode,
-        live: args.input.is_none(),
+        live: args
+            .input
+            .as_ref()
+            .is_none_or(|path| path.as_os_str() == "-"),
         stats: args.stats.then(Stats::default),
     };
     let mut records = Vec::new();
@@ -247,7 +253,10 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
                 Some(timing) => replay_timed(input, timing, &mut session, found, &mut save),
                 // A file is read whole and can be framed on every core; a pipe may be a
                 // live line, whose frames are shown as they come.
-                None if mode != Mode::Tcp && std::fs::metadata(path).is_ok_and(|m| m.is_file()) => {
+                None if mode != Mode::Tcp
+                    && path.as_os_str() != "-"
+                    && std::fs::metadata(path).is_ok_and(|m| m.is_file()) =>
+                {
                     replay_ahead(input, &mut session, found, &mut save)?;
                     Ok(None)
                 }
@@ -673,7 +682,13 @@ fn replay(
         }
         read += n as u64;
         session.push(&chunk[..n], &mut found.records);
-        found.found()?;
+        // A read short of the buffer is a pipe that had no more yet, maybe a live line:
+        // what it brought is shown now, not once a batch has gathered.
+        if n < chunk.len() {
+            found.hand_over(1)?;
+        } else {
+            found.found()?;
+        }
     }
 }
 
@@ -682,11 +697,14 @@ fn replay(
 /// that the frames of the blocks in flight stay in the cores' caches.
 const AHEAD_BLOCK: usize = 1 << 16;
 
-/// A capture file without timing, framed on every core: each block after the first is
-/// framed ahead on a thread of its own while the session catches up with the blocks before
-/// it (see `Framer::catch_up`), finding the same frames as [`replay`] would. While most
-/// frames are shown, the writer needs a core of its own, and fewer blocks are framed ahead
-/// (none on two cores). Returns how many bytes it read.
+/// A block of a capture file to frame ahead, with a framer that starts where it does, and
+/// where to hand what it found.
+type AheadJob = (Framer, Arc<[u8]>, mpsc::SyncSender<Ahead>);
+
+/// A capture file without timing, framed on every core: blocks are framed ahead by a
+/// worker on every other core while this thread catches up with them (see
+/// `Framer::catch_up`) and reads their frames, finding the same frames as [`replay`]
+/// would. Returns how many bytes it read.
 fn replay_ahead(
     input: &mut dyn Read,
     session: &mut Session,
@@ -694,66 +712,117 @@ fn replay_ahead(
     save: &mut Option<Save>,
 ) -> Result<u64> {
     let cores = thread::available_parallelism().map_or(1, |n| n.get());
+    if cores < 2 {
+        return replay(input, session, found, save);
+    }
+    let (jobs, queue) = mpsc::channel::<AheadJob>();
+    let queue = std::sync::Mutex::new(queue);
     thread::scope(|scope| {
-        let mut in_flight = std::collections::VecDeque::new();
-        let mut read = 0u64;
-        let mut ended = false;
-        let mut writer_busy = false;
-        let mut events = Vec::new();
-        loop {
-            let blocks = if writer_busy { cores - 1 } else { cores };
-            while !ended && in_flight.len() < blocks.max(1) {
-                let block = read_block(input)?;
-                if block.is_empty() {
-                    ended = true;
-                    break;
-                }
-                if let Some(save) = save.as_mut() {
-                    save.bytes(&block, None)?;
-                }
-                let block: Arc<[u8]> = block.into();
-                // The first block, and any while nothing else is in flight, is framed in
-                // order: there is nothing before it to catch up with.
-                let ahead = (!in_flight.is_empty()).then(|| {
-                    let framer = session.framer_ahead(read);
-                    let bytes = Arc::clone(&block);
-                    scope.spawn(move || framer.frame_ahead(&bytes))
-                });
-                read += block.len() as u64;
-                in_flight.push_back((block, ahead));
-            }
-            let Some((block, ahead)) = in_flight.pop_front() else {
-                return Ok(read);
-            };
-            let mut shown = 0;
-            match ahead {
-                Some(ahead) => {
-                    let ahead = ahead
-                        .join()
-                        .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-                    session.catch_up(&block, ahead, &mut events);
-                    // A batch at a time, so that few records are alive at once.
-                    let mut framed = events.drain(..).peekable();
-                    while framed.peek().is_some() {
-                        let before = found.records.len();
-                        session.read_framed(framed.by_ref().take(BATCH), &mut found.records);
-                        shown += found.records.len() - before;
-                        found.found()?;
-                    }
-                }
-                None => {
-                    for piece in block.chunks(1 << 12) {
-                        let before = found.records.len();
-                        session.push(piece, &mut found.records);
-                        shown += found.records.len() - before;
-                        found.found()?;
-                    }
-                }
-            }
-            // A record in 16 bytes or more keeps a writer busy: every frame of a busy line.
-            writer_busy = shown * 16 > block.len();
+        for _ in 1..cores {
+            let queue = &queue;
+            scope.spawn(move || loop {
+                // Whoever holds the queue waits for the next block; the others wait for it.
+                let job = queue.lock().map(|queue| queue.recv());
+                let Ok(Ok((framer, block, done))) = job else {
+                    return;
+                };
+                // This thread may have stopped (the output closed): then nobody waits.
+                let _ = done.send(framer.frame_ahead(&block));
+            });
         }
+        let replayed = read_ahead(input, session, found, save, &jobs, cores - 1);
+        // The workers end once no more blocks can come.
+        drop(jobs);
+        replayed
     })
+}
+
+/// The reading side of [`replay_ahead`]: blocks handed to `workers` workers through
+/// `jobs`, taken back in order. Of every few blocks this thread frames one itself, in
+/// order, so that it works while the workers do: reading a frame costs about a third of
+/// framing it, so with one worker it frames one block in three, with more fewer. While most
+/// frames are shown, the writer needs a core of its own, and one worker fewer frames ahead.
+/// Where a block framed ahead was never met (traffic whose frames read both ways, such as
+/// echoed writes, leaves a framer that started without the conversation out of its turn;
+/// garbage holds no frame to meet at), the next blocks are framed in order: one, then two,
+/// then four, up to 64 while it goes on.
+fn read_ahead(
+    input: &mut dyn Read,
+    session: &mut Session,
+    found: &mut Batches,
+    save: &mut Option<Save>,
+    jobs: &mpsc::Sender<AheadJob>,
+    workers: usize,
+) -> Result<u64> {
+    let mut in_flight = std::collections::VecDeque::new();
+    let mut read = 0u64;
+    let mut blocks = 0usize;
+    let mut ended = false;
+    let mut writer_busy = false;
+    let mut in_order_for = 0usize;
+    let mut missed = 0u32;
+    let mut events = Vec::new();
+    loop {
+        let framing_ahead = if writer_busy { workers - 1 } else { workers };
+        let cycle = framing_ahead * framing_ahead + 2;
+        while !ended && in_flight.len() < 2 * cycle {
+            let block = read_block(input)?;
+            if block.is_empty() {
+                ended = true;
+                break;
+            }
+            if let Some(save) = save.as_mut() {
+                save.bytes(&block, None)?;
+            }
+            let block: Arc<[u8]> = block.into();
+            // The first block is framed in order: there is nothing before it to catch up
+            // with.
+            let in_order = in_order_for > 0 || framing_ahead == 0 || blocks % cycle == 0;
+            in_order_for = in_order_for.saturating_sub(1);
+            let ahead = (!in_order).then(|| {
+                let (done, ahead) = mpsc::sync_channel(1);
+                let job = (session.framer_ahead(read), Arc::clone(&block), done);
+                // No worker left to take it (none can go, short of a panic): in order.
+                jobs.send(job).is_ok().then_some(ahead)
+            });
+            read += block.len() as u64;
+            blocks += 1;
+            in_flight.push_back((block, ahead.flatten()));
+        }
+        let Some((block, ahead)) = in_flight.pop_front() else {
+            return Ok(read);
+        };
+        let mut shown = 0;
+        // A block whose worker is gone (it cannot be, short of a panic) is framed here.
+        match ahead.and_then(|ahead| ahead.recv().ok()) {
+            Some(ahead) => {
+                if session.catch_up(&block, ahead, &mut events) {
+                    missed = 0;
+                } else {
+                    in_order_for = 1 << missed.min(6);
+                    missed += 1;
+                }
+                // A batch at a time, so that few records are alive at once.
+                let mut framed = events.drain(..).peekable();
+                while framed.peek().is_some() {
+                    let before = found.records.len();
+                    session.read_framed(framed.by_ref().take(BATCH), &mut found.records);
+                    shown += found.records.len() - before;
+                    found.found()?;
+                }
+            }
+            None => {
+                for piece in block.chunks(1 << 12) {
+                    let before = found.records.len();
+                    session.push(piece, &mut found.records);
+                    shown += found.records.len() - before;
+                    found.found()?;
+                }
+            }
+        }
+        // A record in 16 bytes or more keeps a writer busy: every frame of a busy line.
+        writer_busy = shown * 16 > block.len();
+    }
 }
 
 /// The next block of a capture file, as long as [`AHEAD_BLOCK`] unless the file ends first

@@ -1138,6 +1138,42 @@ fn with_timing_a_user_defined_answer_runs_to_the_silence_after_it() {
 }
 
 #[test]
+fn a_pipe_that_pauses_has_its_frames_shown_at_once_even_beside_a_file_named_dash() {
+    // `socat ... | mbtool sniff --input -`: the frames of a live line are shown as they
+    // come, not once a batch of them has gathered; a file that happens to be named `-` in
+    // the working directory changes nothing.
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("-"), WORKED.concat()).unwrap();
+    let mut child = crate::support::mbtool_process()
+        .args(["sniff", "--input", "-", "--json"])
+        .current_dir(dir.path())
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    let stdout = child.stdout.take().unwrap();
+    let (line, first_line) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let mut first = String::new();
+        let _ = std::io::BufRead::read_line(&mut std::io::BufReader::new(stdout), &mut first);
+        let _ = line.send(first);
+    });
+    let sent = Instant::now();
+    std::io::Write::write_all(&mut stdin, &WORKED.concat()).unwrap();
+    // The pipe stays open: the line may still be going.
+    let first = first_line.recv_timeout(Duration::from_secs(5));
+    let shown = sent.elapsed();
+    drop(stdin);
+    let output = child.wait_with_output().unwrap();
+    assert_eq!(output.status.code(), Some(0));
+    let first = first.expect("no frame shown while the pipe stayed open");
+    assert!(first.contains("\"type\":\"frame\""), "{first}");
+    assert!(shown < Duration::from_secs(1), "shown after {shown:?}");
+}
+
+#[test]
 fn standard_input_still_open_ends_on_sigterm_and_sigint_with_its_frames_and_the_summary() {
     // `socat ... | mbtool sniff --input -`: a line captured by another program, ended by
     // Ctrl-C or SIGTERM while the pipe is quiet, as a live capture ends.

@@ -324,8 +324,10 @@ impl Session {
     /// Bytes of a capture file without timing, the block after those pushed so far, which
     /// `ahead` framed from its own start: their frames, the same as [`Session::push`]
     /// would find, are added to `events`, to be read with [`Session::read_framed`].
-    pub fn catch_up(&mut self, block: &[u8], ahead: Ahead, events: &mut Vec<Event>) {
-        self.framer.catch_up(block, ahead, events);
+    /// Returns whether the frames found ahead were met (else the block was framed in
+    /// order, and framing ahead did not pay).
+    pub fn catch_up(&mut self, block: &[u8], ahead: Ahead, events: &mut Vec<Event>) -> bool {
+        self.framer.catch_up(block, ahead, events)
     }
 
     /// Reads the frames and noise that [`Session::catch_up`] found.

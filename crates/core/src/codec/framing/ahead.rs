@@ -10,8 +10,9 @@
 
 use super::{Direction, Event, Framer, Mode};
 
-/// How many bytes the catching-up framer takes at a time, looking for the frame where it
-/// meets the block framed ahead: it meets it within a frame or two on a sound line.
+/// How many bytes the catching-up framer takes first, looking for the frame where it meets
+/// the block framed ahead: it meets it within a frame or two on a sound line. Each piece
+/// after is twice as long, so that a block it never meets costs few looks.
 const CATCH_UP_PIECE: usize = 256;
 
 /// Where a framer stands in the conversation after a frame.
@@ -78,9 +79,12 @@ impl Framer {
         };
         let mut mine = Vec::new();
         self.standings = Some(Vec::new());
-        for piece in block.chunks(CATCH_UP_PIECE) {
+        let (mut from, mut piece) = (0, CATCH_UP_PIECE);
+        while from < block.len() {
+            let to = block.len().min(from + piece);
             let looked = self.standings.as_ref().map_or(0, Vec::len);
-            self.push(piece, &mut mine);
+            self.push(&block[from..to], &mut mine);
+            (from, piece) = (to, piece * 2);
             let standings = self.standings.as_deref().unwrap_or_default();
             let met = standings[looked..].iter().find_map(|(index, standing)| {
                 let Event::Frame(frame) = &mine[*index] else {
