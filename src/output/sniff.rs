@@ -488,9 +488,13 @@ impl SniffWriter {
         column(text, line, 87, Align::Left, kind_column(r));
         text.push(' ');
         write_frame_summary(text, r);
-        text.push_str("  [");
-        text.push_str(check_column(r));
-        text.push(']');
+        // A frame that could not be opened has no checksum to show: its error says why.
+        let check = check_column(r);
+        if !check.is_empty() {
+            text.push_str("  [");
+            text.push_str(check);
+            text.push(']');
+        }
         if let (true, Some(_)) = (self.colour, colour) {
             text.push_str(RESET);
         }

@@ -659,11 +659,18 @@ fn with_checksum(mut report: FrameReport, checksum: Checksum) -> FrameReport {
 }
 
 fn unreadable(mode: Mode, bytes: &[u8], error: FrameError) -> FrameReport {
-    let (slave, function) = match mode {
-        Mode::Tcp => (bytes.get(6), bytes.get(7)),
-        _ => (bytes.first(), bytes.get(1)),
+    // Where the frame's own slave and function would stand: an ASCII frame spells them in
+    // hex after its ':'.
+    let hex = |at: usize| {
+        let pair = std::str::from_utf8(bytes.get(at..at + 2)?).ok()?;
+        u8::from_str_radix(pair, 16).ok()
     };
-    let function = function.copied().unwrap_or_default();
+    let (slave, function) = match mode {
+        Mode::Tcp => (bytes.get(6).copied(), bytes.get(7).copied()),
+        Mode::Ascii => (hex(1), hex(3)),
+        Mode::Rtu => (bytes.first().copied(), bytes.get(1).copied()),
+    };
+    let function = function.unwrap_or_default();
     FrameReport {
         mode: mode.name(),
         kind: if function & EXCEPTION_FLAG != 0 {
@@ -671,7 +678,7 @@ fn unreadable(mode: Mode, bytes: &[u8], error: FrameError) -> FrameReport {
         } else {
             Kind::Request
         },
-        slave: slave.copied().unwrap_or_default(),
+        slave: slave.unwrap_or_default(),
         function,
         valid: false,
         transaction: None,
@@ -687,6 +694,16 @@ fn unreadable(mode: Mode, bytes: &[u8], error: FrameError) -> FrameReport {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_ascii_frame_too_long_to_open_names_the_slave_and_function_it_spells() {
+        let mut frame = b":113100".to_vec();
+        frame.extend([b'0'; 600]);
+        frame.extend(b"\r\n");
+        let report = describe_frame(&frame, Some(Mode::Ascii), None);
+        assert!(!report.valid);
+        assert_eq!((report.slave, report.function), (0x11, 0x31));
+    }
 
     #[test]
     fn a_request_is_described_with_its_reference() {
