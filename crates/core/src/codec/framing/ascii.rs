@@ -10,10 +10,25 @@ impl Framer {
         if data[0] != b':' {
             return Look::Noise;
         }
-        let incomplete = |len: usize| Look::Frame {
-            len,
-            broken: Some(Broken::Incomplete),
-            direction: None,
+        // Fewer than four characters after the ':' spell no slave and function: a glitch,
+        // as a lone byte is in RTU, and not a frame to book to a slave.
+        let spells_nothing = |end: usize| {
+            data[1..end]
+                .iter()
+                .filter(|b| !matches!(b, b'\r' | b'\n'))
+                .count()
+                < 4
+        };
+        let incomplete = |len: usize| {
+            if spells_nothing(len) {
+                Look::Noise
+            } else {
+                Look::Frame {
+                    len,
+                    broken: Some(Broken::Incomplete),
+                    direction: None,
+                }
+            }
         };
         // The end is looked for within the longest frame only, so that how many bytes have
         // come does not change where a frame ends.
@@ -24,6 +39,7 @@ impl Framer {
             }
             match data[i] {
                 b':' => return incomplete(i),
+                b'\n' if spells_nothing(i) => return Look::Noise,
                 b'\n' => {
                     let frame = &data[..=i];
                     return Look::Frame {

@@ -1745,6 +1745,15 @@ mod tests {
     }
 
     #[test]
+    fn an_ascii_frame_too_short_to_spell_a_slave_and_function_is_noise() {
+        let out = events(Mode::Ascii, b":F\r\n:11\r\n:1103006B00037E\r\n:1");
+        assert!(matches!(&out[0], Event::Noise(n) if n.len == 9), "{out:?}");
+        assert!(matches!(&out[1], Event::Frame(f) if f.broken.is_none()));
+        assert!(matches!(&out[2], Event::Noise(n) if n.len == 2));
+        assert_eq!(out.len(), 3);
+    }
+
+    #[test]
     fn an_ascii_line_longer_than_a_frame_is_cut_alike_however_it_comes() {
         let mut stream = b":".to_vec();
         stream.extend([b'0'; 1200]);
