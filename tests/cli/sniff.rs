@@ -7,8 +7,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command as Process, Stdio};
 use std::time::{Duration, Instant};
 
-use crate::support::{mbtool, random_request, rtu, write_all, Pty, WORKED_FRAMES as WORKED};
-use mbtool_core::codec::{Frame, Mode, Pdu};
+use crate::support::{mbtool, random_exchange, rtu, write_all, Pty, WORKED_FRAMES as WORKED};
+use mbtool_core::codec::Mode;
 use mbtool_core::slave::{DataModel, Slave};
 use mbtool_core::sniff::session::{Filter, Record, Session};
 use serialport::SerialPort;
@@ -239,22 +239,12 @@ fn the_worked_frames_glued_together_come_out_paired() {
     assert_eq!(summary["noise_bytes"], 0);
 }
 
-/// A random request to one of the slaves 1, 2, 17 and 247 of `slave`, and its answer, as
-/// RTU frames.
+/// The slaves whose traffic is generated.
+const IDS: [u8; 4] = [1, 2, 17, 247];
+
+/// A random exchange with one of [`IDS`].
 fn exchange(rng: &mut fastrand::Rng, slave: &mut Slave) -> [Vec<u8>; 2] {
-    let id = [1u8, 2, 17, 247][rng.usize(..4)];
-    let request = random_request(rng);
-    let answer = slave.handle(id, &request).unwrap();
-    [Pdu::Request(request), answer].map(|pdu| {
-        Frame {
-            mode: Mode::Rtu,
-            slave: id,
-            transaction: 0,
-            pdu,
-        }
-        .encode()
-        .unwrap()
-    })
+    random_exchange(rng, slave, &IDS)
 }
 
 #[test]

@@ -5,9 +5,8 @@
 
 use std::collections::HashSet;
 
-use crate::support::{mbtool, random_request, rtu};
+use crate::support::{mbtool, random_exchange, rtu};
 use mbtool_core::codec::checksum::crc_matches;
-use mbtool_core::codec::{Frame, Mode, Pdu};
 use mbtool_core::slave::{DataModel, Slave};
 
 /// What goes on the line between two real frames.
@@ -74,21 +73,12 @@ impl Capture {
     }
 }
 
-/// A request of the common functions and the answer a slave gives it.
+/// The slaves whose traffic is generated.
+const IDS: [u8; 5] = [1, 2, 17, 58, 247];
+
+/// A random exchange with one of [`IDS`].
 fn exchange(rng: &mut fastrand::Rng, slave: &mut Slave) -> [Vec<u8>; 2] {
-    let id = [1u8, 2, 17, 58, 247][rng.usize(..5)];
-    let request = random_request(rng);
-    let answer = slave.handle(id, &request).expect("the slave answers");
-    [Pdu::Request(request), answer].map(|pdu| {
-        Frame {
-            mode: Mode::Rtu,
-            slave: id,
-            transaction: 0,
-            pdu,
-        }
-        .encode()
-        .expect("generated frames keep the limits")
-    })
+    random_exchange(rng, slave, &IDS)
 }
 
 /// A request and answer of a user-defined function (65-72, 100-110), data of any length.

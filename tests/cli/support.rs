@@ -202,6 +202,28 @@ pub fn rtu(body: &[u8]) -> Vec<u8> {
     frame
 }
 
+/// A random request to one of `ids`, the slaves `slave` stands in for, and its answer, as
+/// RTU frames.
+pub fn random_exchange(
+    rng: &mut fastrand::Rng,
+    slave: &mut mbtool_core::slave::Slave,
+    ids: &[u8],
+) -> [Vec<u8>; 2] {
+    let id = ids[rng.usize(..ids.len())];
+    let request = random_request(rng);
+    let answer = slave.handle(id, &request).expect("the slave answers");
+    [mbtool_core::codec::Pdu::Request(request), answer].map(|pdu| {
+        Frame {
+            mode: Mode::Rtu,
+            slave: id,
+            transaction: 0,
+            pdu,
+        }
+        .encode()
+        .expect("generated frames keep the limits")
+    })
+}
+
 /// A request of the common functions, as a master polling a plant sends them.
 pub fn random_request(rng: &mut fastrand::Rng) -> Request {
     let address = rng.u16(..1000);
