@@ -221,6 +221,8 @@ pub(super) fn replay_ahead(
     let (jobs, queue) = mpsc::channel::<AheadJob>();
     let queue = std::sync::Mutex::new(queue);
     thread::scope(|scope| {
+        // Owned here, so that it goes, and the workers with it, however this thread stops.
+        let jobs = jobs;
         for _ in 1..cores {
             let queue = &queue;
             scope.spawn(move || loop {

@@ -310,7 +310,7 @@ impl Session {
     pub fn push(&mut self, bytes: &[u8], out: &mut Vec<Record>) {
         let mut events = std::mem::take(&mut self.events);
         self.framer.push(bytes, &mut events);
-        self.read_events(events.drain(..), out);
+        self.read_framed(events.drain(..), out);
         self.events = events;
     }
 
@@ -330,17 +330,12 @@ impl Session {
         self.framer.catch_up(block, ahead, events)
     }
 
-    /// Reads the frames and noise that [`Session::catch_up`] found.
-    pub fn read_framed(&mut self, events: impl IntoIterator<Item = Event>, out: &mut Vec<Record>) {
-        self.read_events(events, out);
-    }
-
     /// Bytes read together from a port, the last at `time` microseconds.
     pub fn push_at(&mut self, bytes: &[u8], time: u64, out: &mut Vec<Record>) {
         let mut events = std::mem::take(&mut self.events);
         self.framer.push_at(bytes, time, &mut events);
         self.behind_latency_timer |= self.framer.gaps_lie();
-        self.read_events(events.drain(..), out);
+        self.read_framed(events.drain(..), out);
         self.events = events;
     }
 
@@ -348,7 +343,7 @@ impl Session {
     pub fn push_byte_at(&mut self, byte: u8, time: u64, out: &mut Vec<Record>) {
         let mut events = std::mem::take(&mut self.events);
         self.framer.push_byte_at(byte, time, &mut events);
-        self.read_events(events.drain(..), out);
+        self.read_framed(events.drain(..), out);
         self.events = events;
     }
 
@@ -357,7 +352,7 @@ impl Session {
     pub fn idle(&mut self, now: u64, out: &mut Vec<Record>) -> bool {
         let mut events = std::mem::take(&mut self.events);
         let news = self.framer.idle(now, &mut events);
-        self.read_events(events.drain(..), out);
+        self.read_framed(events.drain(..), out);
         self.events = events;
         news
     }
@@ -366,13 +361,15 @@ impl Session {
     pub fn finish(&mut self, now: Option<u64>, out: &mut Vec<Record>) {
         let mut events = std::mem::take(&mut self.events);
         self.framer.finish(&mut events);
-        self.read_events(events.drain(..), out);
+        self.read_framed(events.drain(..), out);
         if let Some(unanswered) = self.pairer.finish(now.or(self.last_end)) {
             self.unanswered(unanswered, out);
         }
     }
 
-    fn read_events(&mut self, events: impl IntoIterator<Item = Event>, out: &mut Vec<Record>) {
+    /// Reads frames and noise the framer found: those of [`Session::catch_up`], and of
+    /// every push.
+    pub fn read_framed(&mut self, events: impl IntoIterator<Item = Event>, out: &mut Vec<Record>) {
         for event in events {
             match event {
                 Event::Noise(Noise {
