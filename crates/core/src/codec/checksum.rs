@@ -1,15 +1,77 @@
 //! The two checksums of serial Modbus: CRC-16/MODBUS for RTU, LRC for ASCII.
 
-use crc::{Crc, Table, CRC_16_MODBUS};
+/// CRC-16/MODBUS is reflected: its polynomial 0x8005 read from the low bit.
+const POLYNOMIAL: u16 = 0xA001;
 
-/// The slice-by-16 table is several times faster than a byte table on long frames, and a
-/// sniffer or a bulk `decode` checks a CRC per candidate frame.
-static MODBUS_CRC: Crc<u16, Table<16>> = Crc::<u16, Table<16>>::new(&CRC_16_MODBUS);
+/// `SLICES[k][b]`: what byte `b` followed by `k` more bytes adds to the CRC register,
+/// starting from zero. The CRC is linear, so a run of up to 16 bytes is the XOR of one
+/// lookup per byte, all independent: a frame's CRC is a handful of loads side by side
+/// rather than a chain of one dependent lookup per byte, and a sniffer checks a CRC for
+/// every candidate frame, most of them under 16 bytes.
+static SLICES: [[u16; 256]; 16] = slices();
+
+const fn slices() -> [[u16; 256]; 16] {
+    let mut tables = [[0u16; 256]; 16];
+    let mut byte = 0;
+    while byte < 256 {
+        let mut crc = byte as u16;
+        let mut bit = 0;
+        while bit < 8 {
+            crc = if crc & 1 != 0 {
+                (crc >> 1) ^ POLYNOMIAL
+            } else {
+                crc >> 1
+            };
+            bit += 1;
+        }
+        tables[0][byte] = crc;
+        byte += 1;
+    }
+    let mut distance = 1;
+    while distance < 16 {
+        let mut byte = 0;
+        while byte < 256 {
+            let before = tables[distance - 1][byte];
+            tables[distance][byte] = (before >> 8) ^ tables[0][(before & 0xFF) as usize];
+            byte += 1;
+        }
+        distance += 1;
+    }
+    tables
+}
+
+/// The register after 2 to 16 `bytes` from `crc`: the register folds into the first two
+/// bytes, and each byte adds its slice for the bytes after it.
+#[inline(always)]
+fn slice(crc: u16, bytes: &[u8]) -> u16 {
+    let last = bytes.len() - 1;
+    let mut out = SLICES[last][usize::from(bytes[0] ^ crc as u8)]
+        ^ SLICES[last - 1][usize::from(bytes[1] ^ (crc >> 8) as u8)];
+    for (i, byte) in bytes.iter().enumerate().skip(2) {
+        out ^= SLICES[last - i][usize::from(*byte)];
+    }
+    out
+}
+
+/// The register after one more byte.
+#[inline(always)]
+fn step(crc: u16, byte: u8) -> u16 {
+    (crc >> 8) ^ SLICES[0][usize::from(crc as u8 ^ byte)]
+}
 
 /// CRC-16/MODBUS of `bytes`. On the wire it is sent low byte first.
 #[inline]
 pub fn crc16(bytes: &[u8]) -> u16 {
-    MODBUS_CRC.checksum(bytes)
+    let mut crc = 0xFFFF;
+    let mut chunks = bytes.chunks_exact(16);
+    for chunk in &mut chunks {
+        crc = slice(crc, chunk);
+    }
+    match chunks.remainder() {
+        [] => crc,
+        [byte] => step(crc, *byte),
+        rest => slice(crc, rest),
+    }
 }
 
 /// Whether an RTU frame (address, PDU, CRC) ends in the CRC of what comes before it.
@@ -33,13 +95,12 @@ pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
     if min_len < 3 || min_len > max_len {
         return matches;
     }
-    let mut digest = MODBUS_CRC.digest();
-    digest.update(&bytes[..min_len - 2]);
+    let mut crc = crc16(&bytes[..min_len - 2]);
     for len in min_len..=max_len {
-        if digest.clone().finalize().to_le_bytes() == bytes[len - 2..len] {
+        if crc.to_le_bytes() == bytes[len - 2..len] {
             matches.push(len);
         }
-        digest.update(&bytes[len - 2..len - 1]);
+        crc = step(crc, bytes[len - 2]);
     }
     matches
 }
@@ -75,6 +136,30 @@ mod tests {
         frame.truncate(7);
         frame.extend_from_slice(&[0, 0, 0]);
         assert_eq!(crc_matches(&frame, 4, 256), vec![7, 8, 9, 10]);
+    }
+
+    /// The reference: the crc crate's CRC-16/MODBUS, a byte at a time.
+    fn reference(bytes: &[u8]) -> u16 {
+        crc::Crc::<u16, crc::Table<1>>::new(&crc::CRC_16_MODBUS).checksum(bytes)
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn the_sliced_crc_is_the_reference_crc(bytes in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..300)) {
+            proptest::prop_assert_eq!(crc16(&bytes), reference(&bytes));
+        }
+    }
+
+    #[test]
+    fn the_sliced_crc_is_the_reference_crc_at_every_length_around_the_slices() {
+        let bytes: Vec<u8> = (0u32..100).map(|i| (i * 37 + 11) as u8).collect();
+        for len in 0..bytes.len() {
+            assert_eq!(
+                crc16(&bytes[..len]),
+                reference(&bytes[..len]),
+                "{len} bytes"
+            );
+        }
     }
 
     #[test]
