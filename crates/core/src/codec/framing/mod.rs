@@ -685,16 +685,22 @@ impl Framer {
 
     /// Counts `count` bytes from `at` as noise, keeping the first of a run.
     fn add_noise(&mut self, at: usize, count: usize) {
-        let start = self.time(at);
-        let noise = self.noise.get_or_insert_with(|| Noise {
-            kept: NoiseBytes::new(),
-            len: 0,
-            offset: self.offset + at as u64,
-            start,
-        });
-        let room = NOISE_KEPT.saturating_sub(noise.kept.len()).min(count);
-        noise.kept.extend_from_slice(&self.buffer[at..at + room]);
-        noise.len += count as u64;
+        match &mut self.noise {
+            Some(noise) => {
+                let room = NOISE_KEPT.saturating_sub(noise.kept.len()).min(count);
+                noise.kept.extend_from_slice(&self.buffer[at..at + room]);
+                noise.len += count as u64;
+            }
+            // Most runs are a byte or two: made whole at once.
+            None => {
+                self.noise = Some(Noise {
+                    kept: NoiseBytes::from_slice(&self.buffer[at..at + count.min(NOISE_KEPT)]),
+                    len: count as u64,
+                    offset: self.offset + at as u64,
+                    start: self.time(at),
+                })
+            }
+        }
     }
 
     fn flush_noise(&mut self, out: &mut Vec<Event>) {
