@@ -9,9 +9,9 @@ use mbtool_core::model::address::AddressBase;
 use mbtool_core::model::choice::Choice;
 use mbtool_core::model::values::{ByteOrder, ValueType};
 use mbtool_core::transport::rs485::RtsLevel;
-use mbtool_core::transport::serial::Parity;
+use mbtool_core::transport::serial::{Parity, BAUDS, DATA_BITS, STOP_BITS};
 
-use super::values::{choice, positive_duration, switch, whole};
+use super::values::{choice, positive_duration, switch, whole, whole_in};
 
 #[derive(Clone, Debug, Args)]
 #[command(next_help_heading = "Connection")]
@@ -49,7 +49,7 @@ pub struct ConnectionArgs {
         env = "MBTOOL_BAUD", hide_env_values = true,
         default_value = "19200",
         value_delimiter = ',',
-        value_parser = whole::<u32>(50, 12_000_000)
+        value_parser = whole_in(BAUDS)
     )]
     pub baud: Vec<u32>,
 
@@ -58,11 +58,11 @@ pub struct ConnectionArgs {
     pub parity: Vec<Parity>,
 
     /// Serial data bits [default: 8, 7 in ASCII mode]
-    #[arg(long, global = true, env = "MBTOOL_DATA_BITS", hide_env_values = true, value_parser = whole::<u8>(7, 8))]
+    #[arg(long, global = true, env = "MBTOOL_DATA_BITS", hide_env_values = true, value_parser = whole_in(DATA_BITS))]
     pub data_bits: Option<u8>,
 
     /// Serial stop bits [default: 1 with parity, 2 without]
-    #[arg(long, global = true, env = "MBTOOL_STOP_BITS", hide_env_values = true, value_parser = whole::<u8>(1, 2))]
+    #[arg(long, global = true, env = "MBTOOL_STOP_BITS", hide_env_values = true, value_parser = whole_in(STOP_BITS))]
     pub stop_bits: Option<u8>,
 
     /// Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up
@@ -167,7 +167,7 @@ pub struct RedundancyArgs {
     pub secondary_port: Option<String>,
 
     /// Serial speed of the secondary path [default: --baud]
-    #[arg(long, global = true, env = "MBTOOL_SECONDARY_BAUD", hide_env_values = true, value_name = "BAUD", value_parser = whole::<u32>(50, 12_000_000))]
+    #[arg(long, global = true, env = "MBTOOL_SECONDARY_BAUD", hide_env_values = true, value_name = "BAUD", value_parser = whole_in(BAUDS))]
     pub secondary_baud: Option<u32>,
 
     /// Serial parity of the secondary path [default: --parity]
@@ -175,11 +175,11 @@ pub struct RedundancyArgs {
     pub secondary_parity: Option<Parity>,
 
     /// Serial data bits of the secondary path [default: --data-bits]
-    #[arg(long, global = true, env = "MBTOOL_SECONDARY_DATA_BITS", hide_env_values = true, value_name = "BITS", value_parser = whole::<u8>(7, 8))]
+    #[arg(long, global = true, env = "MBTOOL_SECONDARY_DATA_BITS", hide_env_values = true, value_name = "BITS", value_parser = whole_in(DATA_BITS))]
     pub secondary_data_bits: Option<u8>,
 
     /// Serial stop bits of the secondary path [default: --stop-bits]
-    #[arg(long, global = true, env = "MBTOOL_SECONDARY_STOP_BITS", hide_env_values = true, value_name = "BITS", value_parser = whole::<u8>(1, 2))]
+    #[arg(long, global = true, env = "MBTOOL_SECONDARY_STOP_BITS", hide_env_values = true, value_name = "BITS", value_parser = whole_in(STOP_BITS))]
     pub secondary_stop_bits: Option<u8>,
 
     /// Framing of the secondary path [default: --mode, tcp for tcp:// ports]

@@ -20,6 +20,16 @@ where
     }
 }
 
+/// [`whole`], in a range the core fixes (a serial line's speed, its data or stop bits).
+pub(super) fn whole_in<T>(
+    range: std::ops::RangeInclusive<T>,
+) -> impl Fn(&str) -> Result<T, String> + Clone + Send + Sync
+where
+    T: TryFrom<i128> + Into<i128> + Copy,
+{
+    whole((*range.start()).into(), (*range.end()).into())
+}
+
 /// A duration that must not be zero: a timeout of 0 would give up before a byte could come.
 pub(super) fn positive_duration(text: &str) -> Result<std::time::Duration, String> {
     match mbtool_core::model::duration::parse_duration(text)? {

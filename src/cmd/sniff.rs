@@ -11,7 +11,7 @@ use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 use anyhow::{Context, Result};
 
 use mbtool::cli::SniffArgs;
-use mbtool::connection::{self, line_settings, mode, Role};
+use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output::{self, sniff::SniffWriter, Named};
 use mbtool::settings::Settings;
@@ -21,13 +21,13 @@ use mbtool_core::sniff::pcap::{self, PcapWriter};
 use mbtool_core::sniff::session::{Filter, Record, Session};
 use mbtool_core::sniff::stats::Stats;
 use mbtool_core::sniff::tcp::{TcpSession, MODBUS_PORT};
-use mbtool_core::sniff::timing;
+use mbtool_core::sniff::timing::{self, RecordedLine};
 use mbtool_core::transport::rs485::DirectionControl;
 use mbtool_core::transport::serial::{self, LineSettings};
 use mbtool_core::transport::{Endpoint, Transport};
 
 mod replay;
-use replay::{replay, replay_ahead, replay_timed, replay_timing, write_alongside};
+use replay::{replay, replay_ahead, replay_timed, replay_timing, sniffed_line, write_alongside};
 
 /// Where the records go: the screen (or a pipe), and the pcap file.
 struct Sinks {
@@ -213,8 +213,11 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         }
         _ => {}
     }
-    let mode = mode(&settings.connection, None, Role::Sniff)?;
-    let line = line_settings(&settings.connection, mode);
+    let timing = match &args.input {
+        Some(path) => replay_timing(path)?,
+        None => None,
+    };
+    let (mode, line) = sniffed_line(settings, timing.as_ref())?;
     let filter = Filter {
         slaves: args.slaves.clone(),
         functions: args.functions.clone(),
@@ -227,7 +230,13 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         filter,
     );
     let mut save = match &args.save {
-        Some(path) => Some(Save::create(path, args.input.is_none())?),
+        Some(path) => {
+            let live = args.input.is_none();
+            Some(Save::create(
+                path,
+                live.then(|| RecordedLine::of(mode, &line)),
+            )?)
+        }
         None => None,
     };
     let pcap = pcap_file(args)?;
@@ -249,7 +258,6 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
     let mut records = Vec::new();
     let end = match (&args.input, input.as_mut()) {
         (Some(path), Some(input)) => {
-            let timing = replay_timing(path)?;
             write_alongside(&mut sinks, |found| match &timing {
                 // The capture ended at its last read or idle, not at its last frame.
                 Some(timing) => replay_timed(input, timing, &mut session, found, &mut save),
@@ -467,17 +475,19 @@ struct Save {
 }
 
 impl Save {
-    fn create(path: &Path, timed: bool) -> Result<Save> {
+    /// A capture of a port, on `line`, keeps its timing; a replay's does not.
+    fn create(path: &Path, line: Option<RecordedLine>) -> Result<Save> {
         let create = |path: &Path| {
             output::create_file(path, false)
                 .with_context(|| format!("cannot create {}", path.display()))
         };
-        let timing = if timed {
-            let mut file = create(&timing::beside(path))?;
-            writeln!(file, "{}", timing::HEADER)?;
-            Some(file)
-        } else {
-            None
+        let timing = match line {
+            Some(line) => {
+                let mut file = create(&timing::beside(path))?;
+                writeln!(file, "{}\n{}", timing::HEADER, line.as_comment())?;
+                Some(file)
+            }
+            None => None,
         };
         Ok(Save {
             bytes: create(path)?,

@@ -841,18 +841,36 @@ fn where_only_silence_tells_a_replay_of_save_agrees_with_the_live_session() {
         ]
         .map(|f| hex(f))
     );
-    assert!(
-        saved.with_extension("bin.timing").exists(),
-        "the timing is kept beside the bytes"
+    let timing = std::fs::read_to_string(saved.with_extension("bin.timing"))
+        .expect("the timing is kept beside the bytes");
+    assert_eq!(
+        timing.lines().nth(1),
+        Some("# line: rtu 9600 8N2"),
+        "the line the capture was taken on is kept with it"
     );
+    // Replayed without a word of the line's settings: the timing file gives them.
     let replay = mbtool()
-        .args([
-            "sniff", "--json", "-b", "9600", "--parity", "none", "--input",
-        ])
+        .args(["sniff", "--json", "--input"])
         .arg(&saved)
         .output()
         .unwrap();
+    assert_eq!(String::from_utf8_lossy(&replay.stderr), "");
     assert_eq!(frames_of(&json_lines(&replay.stdout)), live);
+    // Replayed at another speed on purpose: the options rule, and the difference is said.
+    let faster = mbtool()
+        .args(["sniff", "--json", "-b", "115200", "--input"])
+        .arg(&saved)
+        .output()
+        .unwrap();
+    assert!(faster.status.success());
+    assert_eq!(
+        String::from_utf8_lossy(&faster.stderr).trim_end(),
+        format!(
+            "mbtool: {} records the line as rtu 9600 8N2; replaying it as rtu 115200 8N2, as \
+             the options say",
+            saved.with_extension("bin.timing").display()
+        )
+    );
 }
 
 /// The peak resident memory of a running process, in kB.

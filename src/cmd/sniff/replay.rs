@@ -10,10 +10,14 @@ use std::thread;
 
 use anyhow::{Context, Result};
 
+use mbtool::connection::{line_settings, mode, Role};
 use mbtool::error::Error;
+use mbtool::settings::Settings;
 use mbtool_core::codec::framing::{Ahead, Framer};
+use mbtool_core::codec::Mode;
 use mbtool_core::sniff::session::{Record, Session};
 use mbtool_core::sniff::timing;
+use mbtool_core::transport::serial::LineSettings;
 
 use super::{Save, Sinks};
 
@@ -37,23 +41,70 @@ pub(super) fn replay_timing(path: &Path) -> Result<Option<TimingFile>> {
         ))
         .into());
     }
-    let timing = TimingFile {
+    let mut timing = TimingFile {
         // The reads may not add up to more than the capture holds: a count that does is
         // a file written by someone else, and must not make the replay allocate it.
         capture_len: std::fs::metadata(path)
             .with_context(|| format!("cannot read {}", path.display()))?
             .len(),
         path: beside,
+        line: None,
     };
     let mut events = timing.open()?;
     while timing.next(&mut events)?.is_some() {}
+    timing.line = events.recorded_line();
     Ok(Some(timing))
+}
+
+/// The mode and line the bytes were sent on: as the options give them, but for a capture
+/// whose `timing` file records the line it was taken on, which a replay takes (so that a
+/// silence is what it was live) save where an option is typed (or set in the
+/// environment), and then says so.
+pub(super) fn sniffed_line(
+    settings: &Settings,
+    timing: Option<&TimingFile>,
+) -> Result<(Mode, LineSettings)> {
+    let options = &settings.connection;
+    let Some((timing, recorded)) = timing.and_then(|timing| Some((timing, timing.line?))) else {
+        let mode = mode(options, None, Role::Sniff)?;
+        return Ok((mode, line_settings(options, mode)));
+    };
+    let mode = match options.mode {
+        Some(_) => mode(options, None, Role::Sniff)?,
+        None => recorded.mode,
+    };
+    let line = LineSettings {
+        baud: if options.baud_given {
+            options.baud()
+        } else {
+            recorded.baud
+        },
+        parity: if options.parity_given {
+            options.parity()
+        } else {
+            recorded.parity
+        },
+        data_bits: options.data_bits.unwrap_or(recorded.data_bits),
+        stop_bits: options.stop_bits.unwrap_or(recorded.stop_bits),
+        direction: options.direction,
+    };
+    let replayed = timing::RecordedLine::of(mode, &line);
+    if replayed != recorded {
+        mbtool::note!(
+            "mbtool: {} records the line as {recorded}; replaying it as {replayed}, as the \
+             options say",
+            timing.path.display()
+        );
+    }
+    Ok((mode, line))
 }
 
 /// A capture's timing file, and the length of the capture it times.
 pub(super) struct TimingFile {
     path: std::path::PathBuf,
     capture_len: u64,
+    /// The line the capture was taken on, when the file records it.
+    line: Option<timing::RecordedLine>,
 }
 
 impl TimingFile {

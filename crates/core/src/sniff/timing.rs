@@ -7,10 +7,15 @@
 //!   of them at `<us>`;
 //! - `<us> idle`: the line had been quiet until `<us>`.
 //!
-//! Lines starting with `#` are comments.
+//! Lines starting with `#` are comments, save one: `# line: rtu 9600 8N2`, the line the
+//! capture was taken on (its mode, speed, data bits, parity and stop bits), which sets what
+//! a silence is on the replay as it was live.
 
 use std::fmt;
 use std::io::{self, BufRead, Read};
+
+use crate::codec::Mode;
+use crate::transport::serial::{LineSettings, Parity, BAUDS, DATA_BITS, STOP_BITS};
 
 /// The first line of a timing file.
 pub const HEADER: &str = "# mbtool sniff timing: '<us> <count>' = count bytes read together, the last at <us>; '<us> idle' = quiet until <us>";
@@ -19,6 +24,108 @@ pub const HEADER: &str = "# mbtool sniff timing: '<us> <count>' = count bytes re
 /// to it is exact as the seconds shown. Later ones are no capture's, and the largest would
 /// read as a byte without a time.
 pub const MAX_TIME_US: u64 = 1 << 53;
+
+/// How the comment that records the line a capture was taken on starts.
+const LINE_RECORD: &str = "# line:";
+
+/// The line a capture was taken on, as its timing file records it: a character's time and
+/// the silence that ends a frame follow from it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RecordedLine {
+    /// RTU or ASCII.
+    pub mode: Mode,
+    /// Bits per second.
+    pub baud: u32,
+    /// 7 or 8.
+    pub data_bits: u8,
+    /// The parity bit, if any.
+    pub parity: Parity,
+    /// 1 or 2.
+    pub stop_bits: u8,
+}
+
+impl RecordedLine {
+    /// The line of a live session in `mode` on a port with `line`'s settings.
+    pub fn of(mode: Mode, line: &LineSettings) -> Self {
+        Self {
+            mode,
+            baud: line.baud,
+            data_bits: line.data_bits,
+            parity: line.parity,
+            stop_bits: line.stop_bits,
+        }
+    }
+
+    /// The line of a timing file that records it: `# line: rtu 9600 8N2`.
+    pub fn as_comment(&self) -> String {
+        format!("{LINE_RECORD} {self}")
+    }
+
+    /// Reads the text after `# line:`, as [`fmt::Display`] writes it.
+    fn parse(text: &str) -> Result<Self, String> {
+        let bad = || {
+            format!(
+                "{} is no line a capture was taken on, such as '{LINE_RECORD} rtu 9600 8E1'",
+                quoted(&format!("{LINE_RECORD}{text}"))
+            )
+        };
+        let mut words = text.split_ascii_whitespace();
+        let (Some(mode), Some(baud), Some(character), None) =
+            (words.next(), words.next(), words.next(), words.next())
+        else {
+            return Err(bad());
+        };
+        let mode = match mode {
+            "rtu" => Mode::Rtu,
+            "ascii" => Mode::Ascii,
+            _ => return Err(bad()),
+        };
+        let baud = baud
+            .parse::<u32>()
+            .ok()
+            .filter(|baud| BAUDS.contains(baud))
+            .ok_or_else(bad)?;
+        let [data_bits @ b'7'..=b'8', parity, stop_bits @ b'1'..=b'2'] = character.as_bytes()
+        else {
+            return Err(bad());
+        };
+        let parity = match parity {
+            b'N' => Parity::None,
+            b'E' => Parity::Even,
+            b'O' => Parity::Odd,
+            _ => return Err(bad()),
+        };
+        let (data_bits, stop_bits) = (data_bits - b'0', stop_bits - b'0');
+        debug_assert!(DATA_BITS.contains(&data_bits) && STOP_BITS.contains(&stop_bits));
+        Ok(Self {
+            mode,
+            baud,
+            data_bits,
+            parity,
+            stop_bits,
+        })
+    }
+}
+
+impl fmt::Display for RecordedLine {
+    /// `rtu 9600 8N2`: the mode, then the speed and the character as a serial line's
+    /// settings are written (8 data bits, no parity, 2 stop bits).
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let parity = match self.parity {
+            Parity::None => 'N',
+            Parity::Even => 'E',
+            Parity::Odd => 'O',
+        };
+        write!(
+            f,
+            "{} {} {}{parity}{}",
+            self.mode.name(),
+            self.baud,
+            self.data_bits,
+            self.stop_bits
+        )
+    }
+}
 
 /// The name of the timing file kept beside a capture.
 pub fn beside(capture: &std::path::Path) -> std::path::PathBuf {
@@ -123,6 +230,7 @@ pub struct Reader<R> {
     last_time: Option<u64>,
     covered: u64,
     capture_len: u64,
+    recorded: Option<RecordedLine>,
 }
 
 impl<R: BufRead> Reader<R> {
@@ -135,7 +243,13 @@ impl<R: BufRead> Reader<R> {
             last_time: None,
             covered: 0,
             capture_len,
+            recorded: None,
         }
+    }
+
+    /// The line the capture was taken on, once the line that records it has been read.
+    pub fn recorded_line(&self) -> Option<RecordedLine> {
+        self.recorded
     }
 
     /// How many bytes of the capture the reads so far cover.
@@ -178,6 +292,17 @@ impl<R: BufRead> Reader<R> {
                 1 => self.line.strip_prefix('\u{feff}').unwrap_or(&self.line),
                 _ => &self.line,
             };
+            if let Some(record) = text.trim_end().strip_prefix(LINE_RECORD) {
+                let line = RecordedLine::parse(record).map_err(fault)?;
+                if self.recorded.is_some_and(|before| before != line) {
+                    return Err(fault(format!(
+                        "{} records another line than the one above it",
+                        quoted(text.trim_end())
+                    )));
+                }
+                self.recorded = Some(line);
+                continue;
+            }
             let Some(event) = parse(text).map_err(fault)? else {
                 continue;
             };
@@ -296,6 +421,82 @@ mod tests {
             Err(TimingError::NotText)
         ));
         assert_eq!(read_all("\u{feff}12 1\n".as_bytes(), 1).unwrap().len(), 1);
+    }
+
+    fn recorded_line() -> impl proptest::strategy::Strategy<Value = RecordedLine> {
+        use proptest::prelude::*;
+        (
+            prop_oneof![Just(Mode::Rtu), Just(Mode::Ascii)],
+            BAUDS,
+            DATA_BITS,
+            prop_oneof![Just(Parity::None), Just(Parity::Even), Just(Parity::Odd)],
+            STOP_BITS,
+        )
+            .prop_map(|(mode, baud, data_bits, parity, stop_bits)| RecordedLine {
+                mode,
+                baud,
+                data_bits,
+                parity,
+                stop_bits,
+            })
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn a_recorded_line_reads_back_as_written(line in recorded_line()) {
+            let text = format!("{HEADER}\n{}\n10 1\n", line.as_comment());
+            let mut reader = Reader::new(text.as_bytes(), 1);
+            while reader.next_event().unwrap().is_some() {}
+            proptest::prop_assert_eq!(reader.recorded_line(), Some(line));
+        }
+
+        #[test]
+        fn any_text_after_the_line_mark_is_read_or_told_never_panicked_on(text in ".{0,40}") {
+            let _ = RecordedLine::parse(&text);
+        }
+    }
+
+    #[test]
+    fn a_line_record_that_is_no_line_or_says_another_is_told() {
+        let fault = |text: &str| {
+            let mut reader = Reader::new(text.as_bytes(), 1);
+            loop {
+                match reader.next_event() {
+                    Ok(Some(_)) => {}
+                    Ok(None) => panic!("{text:?} read without a fault"),
+                    Err(TimingError::Line { line, message }) => return (line, message),
+                    Err(other) => panic!("{other:?}"),
+                }
+            }
+        };
+        for bad in [
+            "# line: tcp 9600 8N1",
+            "# line: rtu 49 8N1",
+            "# line: rtu 9600 8X1",
+            "# line: rtu 9600 6N1",
+            "# line: rtu 9600 8N3",
+            "# line: rtu 9600",
+            "# line: rtu 9600 8N1 extra",
+        ] {
+            let (line, message) = fault(&format!("{bad}\n10 1\n"));
+            assert!(
+                line == 1 && message.contains("no line a capture"),
+                "{message}"
+            );
+        }
+        let (line, message) = fault("# line: rtu 9600 8N2\n# line: rtu 19200 8E1\n");
+        assert!(line == 2 && message.contains("another line"), "{message}");
+        // The same record twice, as a hand edit may leave it, is one record.
+        let mut reader = Reader::new(
+            "# line: rtu 9600 8N2\n# line:  rtu 9600 8N2 \n".as_bytes(),
+            0,
+        );
+        assert!(reader.next_event().unwrap().is_none());
+        assert_eq!(reader.recorded_line().map(|l| l.baud), Some(9600));
+        // Any other comment is a comment.
+        let mut reader = Reader::new("# lines: whatever\n".as_bytes(), 0);
+        assert!(reader.next_event().unwrap().is_none());
+        assert_eq!(reader.recorded_line(), None);
     }
 
     #[test]

@@ -9,6 +9,13 @@ use serialport::{ClearBuffer, SerialPort};
 use super::rs485::{DirectionControl, KernelMode, RtsTiming};
 use super::{time_left, Transport};
 
+/// The speeds a serial line is opened at, in bits per second.
+pub const BAUDS: std::ops::RangeInclusive<u32> = 50..=12_000_000;
+/// The data bits of a character: 8 in RTU, 7 or 8 in ASCII.
+pub const DATA_BITS: std::ops::RangeInclusive<u8> = 7..=8;
+/// The stop bits of a character.
+pub const STOP_BITS: std::ops::RangeInclusive<u8> = 1..=2;
+
 /// Line settings, as the connection options give them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LineSettings {

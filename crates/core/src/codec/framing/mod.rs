@@ -698,7 +698,7 @@ impl Framer {
                     len: count as u64,
                     offset: self.offset + at as u64,
                     start: self.time(at),
-                })
+                });
             }
         }
     }
