@@ -75,7 +75,7 @@ impl RecordedLine {
         else {
             return Err(bad());
         };
-        let mode = match mode {
+        let mode = match mode.to_ascii_lowercase().as_str() {
             "rtu" => Mode::Rtu,
             "ascii" => Mode::Ascii,
             _ => return Err(bad()),
@@ -89,7 +89,7 @@ impl RecordedLine {
         else {
             return Err(bad());
         };
-        let parity = match parity {
+        let parity = match parity.to_ascii_uppercase() {
             b'N' => Parity::None,
             b'E' => Parity::Even,
             b'O' => Parity::Odd,
@@ -292,7 +292,7 @@ impl<R: BufRead> Reader<R> {
                 1 => self.line.strip_prefix('\u{feff}').unwrap_or(&self.line),
                 _ => &self.line,
             };
-            if let Some(record) = text.trim_end().strip_prefix(LINE_RECORD) {
+            if let Some(record) = line_record(text) {
                 let line = RecordedLine::parse(record).map_err(fault)?;
                 if self.recorded.is_some_and(|before| before != line) {
                     return Err(fault(format!(
@@ -327,6 +327,15 @@ impl<R: BufRead> Reader<R> {
             return Ok(Some(event));
         }
     }
+}
+
+/// The text after `# line:` on a line that records the line a capture was taken on, in
+/// any case and indented as a hand edit may leave it.
+fn line_record(text: &str) -> Option<&str> {
+    let text = text.trim();
+    text.get(..LINE_RECORD.len())
+        .filter(|mark| mark.eq_ignore_ascii_case(LINE_RECORD))
+        .map(|_| &text[LINE_RECORD.len()..])
 }
 
 /// A line as a message quotes it: its start only, when it is too long for one line.
@@ -493,6 +502,13 @@ mod tests {
         );
         assert!(reader.next_event().unwrap().is_none());
         assert_eq!(reader.recorded_line().map(|l| l.baud), Some(9600));
+        // As a hand edit may leave it: indented, in capitals, ended CR LF.
+        let mut reader = Reader::new("  # LINE: RTU 19200 8e1\r\n".as_bytes(), 0);
+        assert!(reader.next_event().unwrap().is_none());
+        assert_eq!(
+            reader.recorded_line().map(|l| l.to_string()),
+            Some("rtu 19200 8E1".to_string())
+        );
         // Any other comment is a comment.
         let mut reader = Reader::new("# lines: whatever\n".as_bytes(), 0);
         assert!(reader.next_event().unwrap().is_none());
