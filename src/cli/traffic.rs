@@ -94,11 +94,13 @@ kept. The fix for gaps that are not real is the adapter's latency timer: \
 echo 1 | sudo tee /sys/bus/usb-serial/devices/ttyUSB0/latency_timer, or --low-latency.
 
 --save FILE keeps every byte as received; live, the times the bytes came go to FILE.timing \
-beside it (one line per read: '<us> <count>', or '<us> idle' when the line went quiet, and the \
-line itself as '# line: rtu 9600 8N2': mode, speed, data bits, parity, stop bits), and --input \
-FILE reads them back when they are there, so that a replay finds the frames the live session \
-found. The replay is on the line recorded there, unless an option (or its variable) says \
-otherwise, which mbtool then tells on stderr.
+beside it (one line per read: '<us> <count>'; '<us> idle' when the line went quiet; '<us> end' \
+when the capture ended; and the line itself as '# line: rtu 9600 8N2': mode, speed, data bits, \
+parity, stop bits), and --input FILE reads them back when they are there, so that a replay \
+finds the frames the live session found. The replay is on the line recorded there, unless an \
+option (or its variable) says otherwise (another parity or mode brings its own stop or data \
+bits, as on a port), which mbtool then tells on stderr, as it does when the file does not \
+record its line and no option gives it.
 
 Modbus TCP: --interface NAME captures live through libpcap (root, or cap_net_raw and \
 cap_net_admin), --save FILE keeping the packets as pcapng; --input also reads pcap and \

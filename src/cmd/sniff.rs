@@ -517,6 +517,14 @@ impl Save {
         }
     }
 
+    /// The capture ended at `time`: a request still waiting had waited until then.
+    fn end(&mut self, time: u64) -> io::Result<()> {
+        match self.timing.as_mut() {
+            Some(timing) => writeln!(timing, "{}", timing::Event::End { time }),
+            None => Ok(()),
+        }
+    }
+
     fn flush(&mut self) -> io::Result<()> {
         self.bytes.flush()?;
         match self.timing.as_mut() {
@@ -598,5 +606,9 @@ fn live(
             );
         }
     }
-    Ok(start.elapsed().as_micros() as u64)
+    let end = start.elapsed().as_micros() as u64;
+    if let Some(save) = save.as_mut() {
+        save.end(end)?;
+    }
+    Ok(end)
 }

@@ -819,6 +819,8 @@ fn where_only_silence_tells_a_replay_of_save_agrees_with_the_live_session() {
         (request[..5].to_vec(), quiet),
         (request.clone(), quiet),
         (WORKED[5].clone(), quiet),
+        // Still unanswered when the capture ends: it waited until then, live and replayed.
+        (request.clone(), quiet),
     ];
     let dir = tempfile::tempdir().unwrap();
     let saved = dir.path().join("bus.bin");
@@ -837,9 +839,23 @@ fn where_only_silence_tells_a_replay_of_save_agrees_with_the_live_session() {
             &request,
             &WORKED[5].clone(),
             &request,
-            &WORKED[5].clone()
+            &WORKED[5].clone(),
+            &request
         ]
         .map(|f| hex(f))
+    );
+    let unanswered = |lines: &[serde_json::Value]| -> Vec<serde_json::Value> {
+        lines
+            .iter()
+            .filter(|l| l["type"] == "unanswered")
+            .cloned()
+            .collect()
+    };
+    let waited_live = unanswered(&lines);
+    let last = waited_live.last().expect("the last request waits in vain");
+    assert!(
+        last["capture_ended"] == true && last["waited"].as_f64().unwrap() > 0.1,
+        "{last}"
     );
     let timing = std::fs::read_to_string(saved.with_extension("bin.timing"))
         .expect("the timing is kept beside the bytes");
@@ -855,7 +871,11 @@ fn where_only_silence_tells_a_replay_of_save_agrees_with_the_live_session() {
         .output()
         .unwrap();
     assert_eq!(String::from_utf8_lossy(&replay.stderr), "");
-    assert_eq!(frames_of(&json_lines(&replay.stdout)), live);
+    let replayed = json_lines(&replay.stdout);
+    assert_eq!(frames_of(&replayed), live);
+    // The timing ends where the capture did, so the last request waited as long.
+    assert!(timing.trim_end().ends_with(" end"), "{timing}");
+    assert_eq!(unanswered(&replayed), waited_live);
     // Replayed at another speed on purpose: the options rule, and the difference is said.
     let faster = mbtool()
         .args(["sniff", "--json", "-b", "115200", "--input"])
@@ -1006,6 +1026,57 @@ fn a_request_that_ends_the_capture_is_told_as_such_not_as_waiting_no_time() {
     assert_eq!(unanswered.len(), 1, "{lines:?}");
     assert_eq!(unanswered[0]["capture_ended"], true);
     assert!(unanswered[0].get("waited").is_none(), "{}", unanswered[0]);
+}
+
+#[test]
+fn a_replay_says_which_line_it_frames_on_where_the_timing_does_not_say_or_the_options_differ() {
+    let dir = tempfile::tempdir().unwrap();
+    let capture = dir.path().join("capture.bin");
+    std::fs::write(&capture, &WORKED[4]).unwrap();
+    let timing = dir.path().join("capture.bin.timing");
+    let said = |timing_text: &str, options: &[&str]| {
+        std::fs::write(&timing, timing_text).unwrap();
+        let output = mbtool()
+            .args(["sniff", "--json"])
+            .args(options)
+            .arg("--input")
+            .arg(&capture)
+            .output()
+            .unwrap();
+        assert!(output.status.success(), "{output:?}");
+        String::from_utf8(output.stderr).unwrap()
+    };
+    // A timing file from before the line was recorded: the defaults, and that is said,
+    // unless the options give the line.
+    let old = "10000 8\n";
+    assert_eq!(
+        said(old, &[]).trim_end(),
+        format!(
+            "mbtool: {} does not say which line the capture was taken on: replaying it as rtu \
+             19200 8E1; give -b and --parity if it was another",
+            timing.display()
+        )
+    );
+    assert_eq!(said(old, &["-b", "9600", "--parity", "none"]), "");
+    // Another parity given: the stop bits that go with it, as on a port, unless given too.
+    let recorded = "# line: rtu 9600 8N2\n10000 8\n";
+    assert_eq!(said(recorded, &[]), "");
+    for (options, replayed) in [
+        (&["--parity", "even"][..], "rtu 9600 8E1"),
+        (
+            &["--parity", "even", "--stop-bits", "2"][..],
+            "rtu 9600 8E2",
+        ),
+        (&["--mode", "ascii"][..], "ascii 9600 7N2"),
+    ] {
+        let told = said(recorded, options);
+        assert!(
+            told.contains(&format!(
+                "records the line as rtu 9600 8N2; replaying it as {replayed},"
+            )),
+            "{options:?}: {told}"
+        );
+    }
 }
 
 #[test]

@@ -10,7 +10,7 @@ use std::thread;
 
 use anyhow::{Context, Result};
 
-use mbtool::connection::{line_settings, mode, Role};
+use mbtool::connection::{line_at, line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::settings::Settings;
 use mbtool_core::codec::framing::{Ahead, Framer};
@@ -65,29 +65,44 @@ pub(super) fn sniffed_line(
     timing: Option<&TimingFile>,
 ) -> Result<(Mode, LineSettings)> {
     let options = &settings.connection;
-    let Some((timing, recorded)) = timing.and_then(|timing| Some((timing, timing.line?))) else {
+    let Some(timing) = timing else {
         let mode = mode(options, None, Role::Sniff)?;
         return Ok((mode, line_settings(options, mode)));
+    };
+    let Some(recorded) = timing.line else {
+        let mode = mode(options, None, Role::Sniff)?;
+        let line = line_settings(options, mode);
+        if !options.baud_given && !options.parity_given {
+            mbtool::note!(
+                "mbtool: {} does not say which line the capture was taken on: replaying it as \
+                 {}; give -b and --parity if it was another",
+                timing.path.display(),
+                timing::RecordedLine::of(mode, &line)
+            );
+        }
+        return Ok((mode, line));
     };
     let mode = match options.mode {
         Some(_) => mode(options, None, Role::Sniff)?,
         None => recorded.mode,
     };
-    let line = LineSettings {
-        baud: if options.baud_given {
-            options.baud()
-        } else {
-            recorded.baud
-        },
-        parity: if options.parity_given {
-            options.parity()
-        } else {
-            recorded.parity
-        },
-        data_bits: options.data_bits.unwrap_or(recorded.data_bits),
-        stop_bits: options.stop_bits.unwrap_or(recorded.stop_bits),
-        direction: options.direction,
+    let baud = match options.baud_given {
+        true => options.baud(),
+        false => recorded.baud,
     };
+    let parity = match options.parity_given {
+        true => options.parity(),
+        false => recorded.parity,
+    };
+    // The character as recorded, unless the mode or the parity given changes it: then the
+    // data and stop bits that go with those, as on a port.
+    let mut line = line_at(options, mode, baud, parity);
+    if options.data_bits.is_none() && mode == recorded.mode {
+        line.data_bits = recorded.data_bits;
+    }
+    if options.stop_bits.is_none() && parity == recorded.parity {
+        line.stop_bits = recorded.stop_bits;
+    }
     let replayed = timing::RecordedLine::of(mode, &line);
     if replayed != recorded {
         mbtool::note!(
@@ -418,6 +433,8 @@ pub(super) fn replay_timed(
             timing::Event::Idle { time } => {
                 session.idle(time, &mut found.records);
             }
+            // The capture ended there, as the live session was told: nothing else to do.
+            timing::Event::End { .. } => {}
         }
         found.found()?;
     }

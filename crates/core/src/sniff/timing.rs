@@ -5,7 +5,9 @@
 //! One line per event, times in microseconds from the start of the capture:
 //! - `<us> <count>`: the next `count` bytes of the capture were read together, the last
 //!   of them at `<us>`;
-//! - `<us> idle`: the line had been quiet until `<us>`.
+//! - `<us> idle`: the line had been quiet until `<us>`;
+//! - `<us> end`: the capture ended at `<us>` (Ctrl-C), the last line: a request still
+//!   waiting then had waited until there.
 //!
 //! Lines starting with `#` are comments, save one: `# line: rtu 9600 8N2`, the line the
 //! capture was taken on (its mode, speed, data bits, parity and stop bits), which sets what
@@ -18,7 +20,7 @@ use crate::codec::Mode;
 use crate::transport::serial::{LineSettings, Parity, BAUDS, DATA_BITS, STOP_BITS};
 
 /// The first line of a timing file.
-pub const HEADER: &str = "# mbtool sniff timing: '<us> <count>' = count bytes read together, the last at <us>; '<us> idle' = quiet until <us>";
+pub const HEADER: &str = "# mbtool sniff timing: '<us> <count>' = count bytes read together, the last at <us>; '<us> idle' = quiet until <us>; '<us> end' = the capture ended at <us>";
 
 /// The latest time a timing file may give: 2^53 microseconds, 285 years, and every time up
 /// to it is exact as the seconds shown. Later ones are no capture's, and the largest would
@@ -149,13 +151,18 @@ pub enum Event {
         /// Until when, in microseconds.
         time: u64,
     },
+    /// The capture ended: nothing follows.
+    End {
+        /// When, in microseconds.
+        time: u64,
+    },
 }
 
 impl Event {
     /// When it happened, in microseconds.
     pub fn time(&self) -> u64 {
         match *self {
-            Event::Bytes { time, .. } | Event::Idle { time } => time,
+            Event::Bytes { time, .. } | Event::Idle { time } | Event::End { time } => time,
         }
     }
 }
@@ -165,6 +172,7 @@ impl fmt::Display for Event {
         match self {
             Event::Bytes { time, count } => write!(f, "{time} {count}"),
             Event::Idle { time } => write!(f, "{time} idle"),
+            Event::End { time } => write!(f, "{time} end"),
         }
     }
 }
@@ -175,7 +183,12 @@ fn parse(line: &str) -> Result<Option<Event>, String> {
     if line.is_empty() || line.starts_with('#') {
         return Ok(None);
     }
-    let bad = || format!("{} is neither '<us> <count>' nor '<us> idle'", quoted(line));
+    let bad = || {
+        format!(
+            "{} is none of '<us> <count>', '<us> idle' and '<us> end'",
+            quoted(line)
+        )
+    };
     // Spaces or tabs between the two words, as a hand edit leaves them.
     let mut words = line.split_ascii_whitespace();
     let (Some(time), Some(what), None) = (words.next(), words.next(), words.next()) else {
@@ -189,6 +202,7 @@ fn parse(line: &str) -> Result<Option<Event>, String> {
     }
     match what {
         "idle" => Ok(Some(Event::Idle { time })),
+        "end" => Ok(Some(Event::End { time })),
         count => count
             .parse::<usize>()
             .map(|count| Some(Event::Bytes { time, count }))
@@ -231,6 +245,7 @@ pub struct Reader<R> {
     covered: u64,
     capture_len: u64,
     recorded: Option<RecordedLine>,
+    ended: bool,
 }
 
 impl<R: BufRead> Reader<R> {
@@ -244,6 +259,7 @@ impl<R: BufRead> Reader<R> {
             covered: 0,
             capture_len,
             recorded: None,
+            ended: false,
         }
     }
 
@@ -306,6 +322,13 @@ impl<R: BufRead> Reader<R> {
             let Some(event) = parse(text).map_err(fault)? else {
                 continue;
             };
+            if self.ended {
+                return Err(fault(format!(
+                    "{} comes after the line that ends the capture",
+                    quoted(text.trim())
+                )));
+            }
+            self.ended = matches!(event, Event::End { .. });
             if let Some(before) = self.last_time.filter(|before| event.time() < *before) {
                 return Err(fault(format!(
                     "{} us comes before the line above it ({before} us): the times must not go back",
@@ -332,10 +355,13 @@ impl<R: BufRead> Reader<R> {
 /// The text after `# line:` on a line that records the line a capture was taken on, in
 /// any case and indented as a hand edit may leave it.
 fn line_record(text: &str) -> Option<&str> {
-    let text = text.trim();
-    text.get(..LINE_RECORD.len())
-        .filter(|mark| mark.eq_ignore_ascii_case(LINE_RECORD))
-        .map(|_| &text[LINE_RECORD.len()..])
+    // `#line:` and `#  line:` too: a record that is mistyped must be told, not passed over
+    // as a comment.
+    let text = text.trim().strip_prefix('#')?.trim_start();
+    const MARK: &str = "line:";
+    text.get(..MARK.len())
+        .filter(|mark| mark.eq_ignore_ascii_case(MARK))
+        .map(|_| &text[MARK.len()..])
 }
 
 /// A line as a message quotes it: its start only, when it is too long for one line.
@@ -372,6 +398,7 @@ mod tests {
                 count: 8,
             },
             Event::Idle { time: 4100 },
+            Event::End { time: 5000 },
         ] {
             assert_eq!(parse(&event.to_string()), Ok(Some(event)));
         }
@@ -419,6 +446,11 @@ mod tests {
         let (line, message) = fault("9000 8\n1000 11\n", 19);
         assert!(
             line == 2 && message.contains("must not go back"),
+            "{message}"
+        );
+        let (line, message) = fault("9000 8\n9100 end\n9200 11\n", 19);
+        assert!(
+            line == 3 && message.contains("after the line that ends"),
             "{message}"
         );
         let (line, message) = fault("9000 8\n9500 18446744073709551615\n", 19);
@@ -502,13 +534,15 @@ mod tests {
         );
         assert!(reader.next_event().unwrap().is_none());
         assert_eq!(reader.recorded_line().map(|l| l.baud), Some(9600));
-        // As a hand edit may leave it: indented, in capitals, ended CR LF.
-        let mut reader = Reader::new("  # LINE: RTU 19200 8e1\r\n".as_bytes(), 0);
-        assert!(reader.next_event().unwrap().is_none());
-        assert_eq!(
-            reader.recorded_line().map(|l| l.to_string()),
-            Some("rtu 19200 8E1".to_string())
-        );
+        // As a hand edit may leave it: indented, in capitals, ended CR LF, without a space.
+        for text in ["  # LINE: RTU 19200 8e1\r\n", "#line:rtu 19200 8E1\n"] {
+            let mut reader = Reader::new(text.as_bytes(), 0);
+            assert!(reader.next_event().unwrap().is_none());
+            assert_eq!(
+                reader.recorded_line().map(|l| l.to_string()),
+                Some("rtu 19200 8E1".to_string())
+            );
+        }
         // Any other comment is a comment.
         let mut reader = Reader::new("# lines: whatever\n".as_bytes(), 0);
         assert!(reader.next_event().unwrap().is_none());
