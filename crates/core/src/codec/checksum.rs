@@ -44,11 +44,13 @@ const fn slices() -> [[u16; 256]; 16] {
 /// bytes, and each byte adds its slice for the bytes after it.
 #[inline(always)]
 fn slice(crc: u16, bytes: &[u8]) -> u16 {
-    let last = bytes.len() - 1;
-    let mut out = SLICES[last][usize::from(bytes[0] ^ crc as u8)]
-        ^ SLICES[last - 1][usize::from(bytes[1] ^ (crc >> 8) as u8)];
-    for (i, byte) in bytes.iter().enumerate().skip(2) {
-        out ^= SLICES[last - i][usize::from(*byte)];
+    let n = bytes.len();
+    let tables = &SLICES[..n];
+    let mut out = tables[n - 1][usize::from(bytes[0] ^ crc as u8)]
+        ^ tables[n - 2][usize::from(bytes[1] ^ (crc >> 8) as u8)];
+    // The third byte takes the table of distance n - 3, the last the table of distance 0.
+    for (byte, table) in bytes[2..].iter().zip(tables[..n - 2].iter().rev()) {
+        out ^= table[usize::from(*byte)];
     }
     out
 }
