@@ -213,6 +213,8 @@ fn check_column(report: &FrameReport) -> &'static str {
     use mbtool_core::codec::Checksum;
     match (&report.checksum, &report.error) {
         (_, Some(error)) if error.starts_with("incomplete") => "incomplete",
+        // An ASCII frame that broke with its LRC sound broke at its end.
+        (Checksum::Lrc { found, expected }, _) if found == expected && !report.valid => "no CR LF",
         (Checksum::Lrc { found, expected }, _) if found == expected => "LRC ok",
         (Checksum::Lrc { .. }, _) => "LRC BAD",
         (Checksum::Crc { found, expected }, _) if found == expected => "CRC ok",

@@ -361,6 +361,31 @@ fn csv_gives_the_time_json_gives_without_timing_too() {
 }
 
 #[test]
+fn an_ascii_frame_ending_in_lf_alone_is_shown_broken_at_its_end_not_with_its_lrc_ok() {
+    let capture = b":1103006B00037E\n:110306022B0000006455\r\n";
+    let run = |format: &str| {
+        mbtool()
+            .args(["sniff", "--mode", "ascii", "-o", format, "--input", "-"])
+            .write_stdin(&capture[..])
+            .output()
+            .unwrap()
+    };
+    let lines = json_lines(&run("json").stdout);
+    assert_eq!(lines[0]["valid"], false, "{}", lines[0]);
+    assert_eq!(
+        lines[0]["error"], "the frame ends in LF without the CR before it",
+        "{}",
+        lines[0]
+    );
+    let table = String::from_utf8(run("table").stdout).unwrap();
+    let first = table.lines().next().unwrap();
+    assert!(
+        first.contains("without the CR") && first.ends_with("[no CR LF]"),
+        "{table}"
+    );
+}
+
+#[test]
 fn an_ascii_capture_with_noise_and_a_cut_frame() {
     let capture = b"\x00:1103006B00037E\r\n\xFE:110306022B0000006455\r\n:1103006B:1103006B00037E\r\n:110306022B0000006455\r\n";
     let output = mbtool()

@@ -447,6 +447,9 @@ impl Session {
                 }
                 if broken == Broken::Incomplete {
                     report.error = Some("incomplete: the frame was cut off before its end".into());
+                } else if self.mode == Mode::Ascii && !found.bytes.ends_with(b"\r\n") {
+                    // Its LRC may hold, and the reading show it so: the end is what broke.
+                    report.error = Some("the frame ends in LF without the CR before it".into());
                 }
                 // A frame cut short fails its checksum as much as one that broke.
                 self.counts.crc_errors += 1;
