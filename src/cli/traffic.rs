@@ -100,7 +100,8 @@ parity, stop bits), and --input FILE reads them back when they are there, so tha
 finds the frames the live session found. The replay is on the line recorded there, unless an \
 option (or its variable) says otherwise (another parity or mode brings its own stop or data \
 bits, as on a port), which mbtool then tells on stderr, as it does when the file does not \
-record its line and no option gives it.
+record its line and no option gives it. A last line cut off before its end is passed over, \
+and said to be.
 
 Modbus TCP: --interface NAME captures live through libpcap (root, or cap_net_raw and \
 cap_net_admin), --save FILE keeping the packets as pcapng; --input also reads pcap and \

@@ -53,6 +53,13 @@ pub(super) fn replay_timing(path: &Path) -> Result<Option<TimingFile>> {
     let mut events = timing.open()?;
     while timing.next(&mut events)?.is_some() {}
     timing.line = events.recorded_line();
+    if let Some(line) = events.cut_off() {
+        mbtool::note!(
+            "mbtool: {}:{line} is cut off before its end (the capture was stopped as it was \
+             written): replaying the capture with the timing before it",
+            timing.path.display()
+        );
+    }
     Ok(Some(timing))
 }
 

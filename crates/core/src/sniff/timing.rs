@@ -194,12 +194,15 @@ fn parse(line: &str) -> Result<Option<Event>, String> {
     let (Some(time), Some(what), None) = (words.next(), words.next(), words.next()) else {
         return Err(bad());
     };
-    let time = time.parse::<u64>().map_err(|_| bad())?;
-    if time > MAX_TIME_US {
-        return Err(format!(
-            "{time} us is past any capture's times (at most 2^53 us, 285 years)"
-        ));
-    }
+    let past =
+        |time: &str| format!("{time} us is past any capture's times (at most 2^53 us, 285 years)");
+    let time = match time.parse::<u64>() {
+        Ok(time) if time > MAX_TIME_US => return Err(past(&time.to_string())),
+        Ok(time) => time,
+        // Digits all the same: a number too large for any time.
+        Err(_) if time.bytes().all(|b| b.is_ascii_digit()) => return Err(past(&quoted(time))),
+        Err(_) => return Err(bad()),
+    };
     match what {
         "idle" => Ok(Some(Event::Idle { time })),
         "end" => Ok(Some(Event::End { time })),
@@ -246,6 +249,7 @@ pub struct Reader<R> {
     capture_len: u64,
     recorded: Option<RecordedLine>,
     ended: bool,
+    cut_off: Option<usize>,
 }
 
 impl<R: BufRead> Reader<R> {
@@ -260,7 +264,13 @@ impl<R: BufRead> Reader<R> {
             capture_len,
             recorded: None,
             ended: false,
+            cut_off: None,
         }
+    }
+
+    /// The number of the last line, when it was cut off before its end and passed over.
+    pub fn cut_off(&self) -> Option<usize> {
+        self.cut_off
     }
 
     /// The line the capture was taken on, once the line that records it has been read.
@@ -319,8 +329,16 @@ impl<R: BufRead> Reader<R> {
                 self.recorded = Some(line);
                 continue;
             }
-            let Some(event) = parse(text).map_err(fault)? else {
-                continue;
+            let event = match parse(text) {
+                Ok(Some(event)) => event,
+                Ok(None) => continue,
+                // The last line, cut off before its end (the capture was killed as it
+                // wrote it): the events before it stand.
+                Err(_) if !self.line.ends_with('\n') => {
+                    self.cut_off = Some(self.number);
+                    return Ok(None);
+                }
+                Err(message) => return Err(fault(message)),
             };
             if self.ended {
                 return Err(fault(format!(
@@ -384,7 +402,11 @@ mod tests {
     #[test]
     fn a_time_past_285_years_is_refused() {
         assert!(parse(&format!("{MAX_TIME_US} 8")).is_ok());
-        for line in ["9007199254740993 8", "18446744073709551615 idle"] {
+        for line in [
+            "9007199254740993 8",
+            "18446744073709551615 idle",
+            "99999999999999999999 8",
+        ] {
             let error = parse(line).unwrap_err();
             assert!(error.contains("past any capture's times"), "{error}");
         }
@@ -457,6 +479,14 @@ mod tests {
         assert!(line == 2 && message.contains("come to more"), "{message}");
         let (line, _) = fault(&"9".repeat(10_000), 19);
         assert_eq!(line, 1);
+        // A last line cut off before its end is passed over, and said to be; one that ends
+        // is a fault all the same.
+        let mut reader = Reader::new("9000 8\n17".as_bytes(), 19);
+        assert!(reader.next_event().unwrap().is_some());
+        assert!(reader.next_event().unwrap().is_none());
+        assert_eq!(reader.cut_off(), Some(2));
+        let (line, _) = fault("9000 8\n17\n", 19);
+        assert_eq!(line, 2);
         assert!(matches!(
             read_all(&[0xFF, 0xFE, b'\n'], 19),
             Err(TimingError::NotText)
@@ -553,7 +583,11 @@ mod tests {
     fn a_long_bad_line_is_quoted_by_its_start() {
         let line = "7".repeat(100_000) + " x";
         let error = parse(&line).unwrap_err();
-        assert!(error.len() < 120, "{error}");
-        assert!(error.contains("100002 characters"), "{error}");
+        assert!(error.len() < 140, "{error}");
+        assert!(error.contains("100000 characters"), "{error}");
+        let line = "8 x".to_string() + &"7".repeat(100_000);
+        let error = parse(&line).unwrap_err();
+        assert!(error.len() < 140, "{error}");
+        assert!(error.contains("100003 characters"), "{error}");
     }
 }
