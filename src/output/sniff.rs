@@ -78,6 +78,13 @@ struct JsonSummary<'a> {
     packets: Option<&'a PacketCounts>,
 }
 
+/// The columns of a serial line's frames in CSV.
+const CSV_HEADER: &str = "number,time,gap,slave,function,kind,valid,summary";
+
+/// The columns of a TCP capture's frames in CSV.
+const TCP_CSV_HEADER: &str =
+    "number,time,client,server,packet,transaction,slave,function,kind,valid,response_time_us,summary";
+
 pub struct SniffWriter {
     format: Format,
     colour: bool,
@@ -372,7 +379,7 @@ impl SniffWriter {
             return self.tcp_csv(out, frame, place);
         }
         if !self.csv_header_written {
-            writeln!(out, "number,time,gap,slave,function,kind,valid,summary")?;
+            writeln!(out, "{CSV_HEADER}")?;
             self.csv_header_written = true;
         }
         let r = frame.report();
@@ -404,10 +411,7 @@ impl SniffWriter {
         place: &TcpPlace,
     ) -> io::Result<()> {
         if !self.csv_header_written {
-            writeln!(
-                out,
-                "number,time,client,server,packet,transaction,slave,function,kind,valid,response_time_us,summary"
-            )?;
+            writeln!(out, "{TCP_CSV_HEADER}")?;
             self.csv_header_written = true;
         }
         let r = frame.report();
@@ -650,6 +654,16 @@ impl SniffWriter {
                     )?;
                 }
                 Ok(())
+            }
+            // No frame, no header yet: the header alone, so that a script reading the
+            // columns finds them in an empty result too.
+            Format::Csv if !self.csv_header_written => {
+                self.csv_header_written = true;
+                let header = match packets {
+                    Some(_) => TCP_CSV_HEADER,
+                    None => CSV_HEADER,
+                };
+                writeln!(out, "{header}")
             }
             Format::Values | Format::Csv => Ok(()),
         }

@@ -386,6 +386,30 @@ fn an_ascii_frame_ending_in_lf_alone_is_shown_broken_at_its_end_not_with_its_lrc
 }
 
 #[test]
+fn csv_of_a_capture_without_a_frame_to_show_is_its_header() {
+    let dir = tempfile::tempdir().unwrap();
+    let empty = dir.path().join("empty.bin");
+    std::fs::write(&empty, b"").unwrap();
+    let csv = |capture: &Path, options: &[&str]| {
+        let output = mbtool()
+            .args(["sniff", "-o", "csv"])
+            .args(options)
+            .arg("--input")
+            .arg(capture)
+            .output()
+            .unwrap();
+        assert!(output.status.success(), "{output:?}");
+        String::from_utf8(output.stdout).unwrap()
+    };
+    let header = "number,time,gap,slave,function,kind,valid,summary\n";
+    assert_eq!(csv(&empty, &[]), header);
+    let recording = captures().join("wizmodbus.bin");
+    assert_eq!(csv(&recording, &["-b", "9600", "--slave", "9"]), header);
+    assert!(csv(&captures().join("modbus-tcp.pcap"), &["--slave", "9"])
+        .starts_with("number,time,client,server,"));
+}
+
+#[test]
 fn an_ascii_capture_with_noise_and_a_cut_frame() {
     let capture = b"\x00:1103006B00037E\r\n\xFE:110306022B0000006455\r\n:1103006B:1103006B00037E\r\n:110306022B0000006455\r\n";
     let output = mbtool()
