@@ -11,7 +11,7 @@ use super::{csv_field, request_summary, shown_values, write_fields_summary, writ
 use mbtool_core::codec::function;
 use mbtool_core::codec::ExceptionCode;
 use mbtool_core::describe::{describe_pdu, push_spaced_hex, FrameReport, Kind};
-use mbtool_core::sniff::session::{Counts, FrameRecord, Record, TcpPlace};
+use mbtool_core::sniff::session::{Counts, FrameRecord, Record, TcpPlace, ENDS_WITHOUT_CR};
 
 use super::columns::{column, pad_to, Align, Offset, Seconds};
 use mbtool_core::sniff::stats::{Stats, Times};
@@ -220,8 +220,7 @@ fn check_column(report: &FrameReport) -> &'static str {
     use mbtool_core::codec::Checksum;
     match (&report.checksum, &report.error) {
         (_, Some(error)) if error.starts_with("incomplete") => "incomplete",
-        // An ASCII frame that broke with its LRC sound broke at its end.
-        (Checksum::Lrc { found, expected }, _) if found == expected && !report.valid => "no CR LF",
+        (_, Some(error)) if error == ENDS_WITHOUT_CR => "no CR LF",
         (Checksum::Lrc { found, expected }, _) if found == expected => "LRC ok",
         (Checksum::Lrc { .. }, _) => "LRC BAD",
         (Checksum::Crc { found, expected }, _) if found == expected => "CRC ok",

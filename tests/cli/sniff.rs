@@ -383,6 +383,19 @@ fn an_ascii_frame_ending_in_lf_alone_is_shown_broken_at_its_end_not_with_its_lrc
         first.contains("without the CR") && first.ends_with("[no CR LF]"),
         "{table}"
     );
+    // A frame whose PDU reads neither way is not valid either, and its LRC still holds.
+    let malformed = b":1103006B0081\r\n";
+    let output = mbtool()
+        .args(["sniff", "--mode", "ascii", "--input", "-"])
+        .write_stdin(&malformed[..])
+        .output()
+        .unwrap();
+    let table = String::from_utf8(output.stdout).unwrap();
+    let first = table.lines().next().unwrap();
+    assert!(
+        first.contains("not a valid request") && first.ends_with("[LRC ok]"),
+        "{table}"
+    );
 }
 
 #[test]

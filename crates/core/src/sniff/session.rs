@@ -14,6 +14,10 @@ use crate::describe::{
     describe_as, describe_frame, describe_reading, locate_answer, FrameReport, Kind,
 };
 
+/// The error of an ASCII frame that ended in LF without its CR: its LRC may hold, so that
+/// only this tells why it is not valid.
+pub const ENDS_WITHOUT_CR: &str = "the frame ends in LF without the CR before it";
+
 /// What a session found in the bytes, in the order it happened.
 #[derive(Clone, Debug, PartialEq)]
 // A frame record is large beside the others, but not boxed: the records of a push are
@@ -449,7 +453,7 @@ impl Session {
                     report.error = Some("incomplete: the frame was cut off before its end".into());
                 } else if self.mode == Mode::Ascii && !found.bytes.ends_with(b"\r\n") {
                     // Its LRC may hold, and the reading show it so: the end is what broke.
-                    report.error = Some("the frame ends in LF without the CR before it".into());
+                    report.error = Some(ENDS_WITHOUT_CR.into());
                 }
                 // A frame cut short fails its checksum as much as one that broke.
                 self.counts.crc_errors += 1;
