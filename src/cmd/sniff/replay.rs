@@ -72,14 +72,10 @@ pub(super) fn sniffed_line(
     timing: Option<&TimingFile>,
 ) -> Result<(Mode, LineSettings)> {
     let options = &settings.connection;
-    let Some(timing) = timing else {
-        let mode = mode(options, None, Role::Sniff)?;
-        return Ok((mode, line_settings(options, mode)));
-    };
-    let Some(recorded) = timing.line else {
+    let Some((timing, recorded)) = timing.and_then(|timing| Some((timing, timing.line?))) else {
         let mode = mode(options, None, Role::Sniff)?;
         let line = line_settings(options, mode);
-        if !options.baud_given && !options.parity_given {
+        if let Some(timing) = timing.filter(|_| !options.baud_given && !options.parity_given) {
             mbtool::note!(
                 "mbtool: {} does not say which line the capture was taken on: replaying it as \
                  {}; give -b and --parity if it was another",

@@ -27,8 +27,8 @@ pub const HEADER: &str = "# mbtool sniff timing: '<us> <count>' = count bytes re
 /// read as a byte without a time.
 pub const MAX_TIME_US: u64 = 1 << 53;
 
-/// How the comment that records the line a capture was taken on starts.
-const LINE_RECORD: &str = "# line:";
+/// The word after `#` that makes a comment the record of the line a capture was taken on.
+const LINE_MARK: &str = "line:";
 
 /// The line a capture was taken on, as its timing file records it: a character's time and
 /// the silence that ends a frame follow from it.
@@ -60,15 +60,15 @@ impl RecordedLine {
 
     /// The line of a timing file that records it: `# line: rtu 9600 8N2`.
     pub fn as_comment(&self) -> String {
-        format!("{LINE_RECORD} {self}")
+        format!("# {LINE_MARK} {self}")
     }
 
     /// Reads the text after `# line:`, as [`fmt::Display`] writes it.
     fn parse(text: &str) -> Result<Self, String> {
         let bad = || {
             format!(
-                "{} is no line a capture was taken on, such as '{LINE_RECORD} rtu 9600 8E1'",
-                quoted(&format!("{LINE_RECORD}{text}"))
+                "{} is no line a capture was taken on, such as '# {LINE_MARK} rtu 9600 8E1'",
+                quoted(&format!("# {LINE_MARK}{text}"))
             )
         };
         let mut words = text.split_ascii_whitespace();
@@ -87,18 +87,22 @@ impl RecordedLine {
             .ok()
             .filter(|baud| BAUDS.contains(baud))
             .ok_or_else(bad)?;
-        let [data_bits @ b'7'..=b'8', parity, stop_bits @ b'1'..=b'2'] = character.as_bytes()
-        else {
+        let [data_bits, parity, stop_bits] = character.as_bytes() else {
             return Err(bad());
         };
+        let digit = |byte: &u8| byte.is_ascii_digit().then(|| byte - b'0');
+        let data_bits = digit(data_bits)
+            .filter(|bits| DATA_BITS.contains(bits))
+            .ok_or_else(bad)?;
+        let stop_bits = digit(stop_bits)
+            .filter(|bits| STOP_BITS.contains(bits))
+            .ok_or_else(bad)?;
         let parity = match parity.to_ascii_uppercase() {
             b'N' => Parity::None,
             b'E' => Parity::Even,
             b'O' => Parity::Odd,
             _ => return Err(bad()),
         };
-        let (data_bits, stop_bits) = (data_bits - b'0', stop_bits - b'0');
-        debug_assert!(DATA_BITS.contains(&data_bits) && STOP_BITS.contains(&stop_bits));
         Ok(Self {
             mode,
             baud,
@@ -318,8 +322,18 @@ impl<R: BufRead> Reader<R> {
                 1 => self.line.strip_prefix('\u{feff}').unwrap_or(&self.line),
                 _ => &self.line,
             };
+            // The last line, cut off before its end (the capture was stopped as it was
+            // written), is passed over if it does not read: the lines before it stand.
+            let cut_off = !self.line.ends_with('\n');
             if let Some(record) = line_record(text) {
-                let line = RecordedLine::parse(record).map_err(fault)?;
+                let line = match RecordedLine::parse(record) {
+                    Ok(line) => line,
+                    Err(_) if cut_off => {
+                        self.cut_off = Some(self.number);
+                        return Ok(None);
+                    }
+                    Err(message) => return Err(fault(message)),
+                };
                 if self.recorded.is_some_and(|before| before != line) {
                     return Err(fault(format!(
                         "{} records another line than the one above it",
@@ -332,9 +346,7 @@ impl<R: BufRead> Reader<R> {
             let event = match parse(text) {
                 Ok(Some(event)) => event,
                 Ok(None) => continue,
-                // The last line, cut off before its end (the capture was killed as it
-                // wrote it): the events before it stand.
-                Err(_) if !self.line.ends_with('\n') => {
+                Err(_) if cut_off => {
                     self.cut_off = Some(self.number);
                     return Ok(None);
                 }
@@ -376,10 +388,9 @@ fn line_record(text: &str) -> Option<&str> {
     // `#line:` and `#  line:` too: a record that is mistyped must be told, not passed over
     // as a comment.
     let text = text.trim().strip_prefix('#')?.trim_start();
-    const MARK: &str = "line:";
-    text.get(..MARK.len())
-        .filter(|mark| mark.eq_ignore_ascii_case(MARK))
-        .map(|_| &text[MARK.len()..])
+    text.get(..LINE_MARK.len())
+        .filter(|mark| mark.eq_ignore_ascii_case(LINE_MARK))
+        .map(|_| &text[LINE_MARK.len()..])
 }
 
 /// A line as a message quotes it: its start only, when it is too long for one line.
@@ -481,10 +492,12 @@ mod tests {
         assert_eq!(line, 1);
         // A last line cut off before its end is passed over, and said to be; one that ends
         // is a fault all the same.
-        let mut reader = Reader::new("9000 8\n17".as_bytes(), 19);
-        assert!(reader.next_event().unwrap().is_some());
-        assert!(reader.next_event().unwrap().is_none());
-        assert_eq!(reader.cut_off(), Some(2));
+        for cut in ["9000 8\n17", "9000 8\n# line: rtu 96"] {
+            let mut reader = Reader::new(cut.as_bytes(), 19);
+            assert!(reader.next_event().unwrap().is_some());
+            assert!(reader.next_event().unwrap().is_none());
+            assert_eq!(reader.cut_off(), Some(2));
+        }
         let (line, _) = fault("9000 8\n17\n", 19);
         assert_eq!(line, 2);
         assert!(matches!(
