@@ -145,7 +145,7 @@ impl FrameRecord {
                 // the same, from the bytes alone.
                 return describe_frame(bytes, None, None);
             };
-            let Ok(envelope) = Envelope::open(read.mode, bytes) else {
+            let Ok(envelope) = Envelope::open_sound(read.mode, bytes) else {
                 return describe_frame(bytes, Some(read.mode), None);
             };
             let mut report = describe_reading(read.mode, &envelope, read.reading);
@@ -383,6 +383,7 @@ impl Session {
                     start,
                 }) => {
                     self.counts.noise_bytes += len;
+                    self.note_time(start, offset);
                     if self.filter.is_empty() {
                         let at = self.at(start, offset);
                         out.push(Record::Noise {
@@ -399,14 +400,21 @@ impl Session {
         }
     }
 
-    /// The time of bytes at `offset`: as they arrived, or at the line's speed from the
-    /// last bytes that had a time (from the start, when none had).
-    fn at(&mut self, time: Option<u64>, offset: u64) -> u64 {
+    /// Bytes at `offset` came at `time`, when known: bytes after them without a time go on
+    /// from there. Noted for every frame and noise, shown or not, so that a filter does not
+    /// change the times of what it shows.
+    fn note_time(&mut self, time: Option<u64>, offset: u64) {
+        if let Some(time) = time {
+            self.clock = Some((offset, time));
+        }
+    }
+
+    /// The time of bytes at `offset`, noted with [`Session::note_time`]: as they arrived,
+    /// or at the line's speed from the last bytes that had a time (from the start, when
+    /// none had). Worked out only for what is shown.
+    fn at(&self, time: Option<u64>, offset: u64) -> u64 {
         match (time, self.clock) {
-            (Some(time), _) => {
-                self.clock = Some((offset, time));
-                time
-            }
+            (Some(time), _) => time,
             (None, Some((from, then))) if offset >= from => {
                 then + ((offset - from) as f64 * self.char_us).round() as u64
             }
@@ -438,7 +446,8 @@ impl Session {
         };
         self.last_end = found.end.or(self.last_end);
         self.numbered += 1;
-        let (number, at) = (self.numbered, self.at(found.start, found.offset));
+        self.note_time(found.start, found.offset);
+        let number = self.numbered;
         let shown = match found.broken {
             Some(broken) => {
                 // Read the way the framer found it travelling (a cut answer is an answer),
@@ -463,11 +472,12 @@ impl Session {
                     .or_default()
                     .crc_errors += 1;
                 self.counts.frame(&report);
-                self.filter
-                    .shows(report.slave, report.function)
-                    .then(|| FrameRecord::new(number, found, at, report))
+                self.filter.shows(report.slave, report.function).then(|| {
+                    let at = self.at(found.start, found.offset);
+                    FrameRecord::new(number, found, at, report)
+                })
             }
-            None => self.valid_frame(number, found, at, out),
+            None => self.valid_frame(number, found, out),
         };
         if let Some(mut record) = shown {
             record.gap = gap;
@@ -480,16 +490,15 @@ impl Session {
         &mut self,
         number: u64,
         found: Found,
-        at: u64,
         out: &mut Vec<Record>,
     ) -> Option<FrameRecord> {
-        let Ok(envelope) = Envelope::open(self.mode, &found.bytes) else {
+        let Ok(envelope) = Envelope::open_sound(self.mode, &found.bytes) else {
             let report = describe_frame(&found.bytes, Some(self.mode), None);
             self.counts.frame(&report);
-            return self
-                .filter
-                .shows(report.slave, report.function)
-                .then(|| FrameRecord::new(number, found, at, report));
+            return self.filter.shows(report.slave, report.function).then(|| {
+                let at = self.at(found.start, found.offset);
+                FrameRecord::new(number, found, at, report)
+            });
         };
         // The PDU is read once: to pair it, and then to describe that reading.
         let reading = Reading::infer(&envelope.pdu);
@@ -524,6 +533,7 @@ impl Session {
             Role::Malformed(reading) => (reading, None, false),
         };
         let mode = self.mode;
+        let at = self.at(found.start, found.offset);
         let mut record = FrameRecord::read(
             number,
             found,

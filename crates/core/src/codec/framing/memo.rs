@@ -4,6 +4,8 @@
 
 use std::cell::Cell;
 
+use crate::codec::Direction;
+
 /// How many verdicts are kept: a frame is asked about from a few positions at most before
 /// it is taken, so a handful of the latest are enough.
 const SLOTS: usize = 16;
@@ -41,5 +43,29 @@ impl CrcVerdicts {
             holds,
         });
         holds
+    }
+}
+
+/// The latest frame of known layout found sound, CRC and PDU, at its position in the
+/// stream: a glitch byte is told from the frame right after it by that frame's soundness,
+/// and the look at the frame itself then asks whether its PDU reads once more.
+#[derive(Default)]
+pub(super) struct LatestSound {
+    /// Position in the stream plus one (0: none), length, and the direction it read in.
+    frame: Cell<(u64, usize, Option<Direction>)>,
+}
+
+impl LatestSound {
+    pub(super) fn found(&self, position: u64, len: usize, direction: Direction) {
+        self.frame.set((position + 1, len, Some(direction)));
+    }
+
+    /// Whether the frame of `len` bytes at `position` is the latest found sound, in
+    /// `direction` (either, for `None`).
+    pub(super) fn is(&self, position: u64, len: usize, direction: Option<Direction>) -> bool {
+        let (at, sound_len, sound_direction) = self.frame.get();
+        at == position + 1
+            && sound_len == len
+            && direction.is_none_or(|direction| Some(direction) == sound_direction)
     }
 }

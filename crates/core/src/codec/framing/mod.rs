@@ -53,7 +53,7 @@ use super::{Direction, Mode};
 pub use ahead::Ahead;
 use ahead::Standing;
 use cadence::ReadCadence;
-use memo::CrcVerdicts;
+use memo::{CrcVerdicts, LatestSound};
 
 mod ahead;
 mod ascii;
@@ -195,6 +195,7 @@ pub struct Framer {
     read_starts: Vec<bool>,
     /// The CRCs checked lately.
     crc_verdicts: CrcVerdicts,
+    latest_sound: LatestSound,
     /// When the latest reads ended: whether they keep an adapter's period.
     cadence: ReadCadence,
     /// The time of the latest byte placed.
@@ -254,6 +255,7 @@ impl Framer {
             times: Vec::new(),
             read_starts: Vec::new(),
             crc_verdicts: CrcVerdicts::default(),
+            latest_sound: LatestSound::default(),
             cadence: ReadCadence::default(),
             latest_time: 0,
             lying_since: None,

@@ -41,7 +41,12 @@ impl Framer {
         if !in_step && frame.first().is_some_and(|slave| *slave > MAX_SLAVE) {
             return Tell::No;
         }
-        if candidate.known_layout && !pdu_reads(frame, candidate.direction, !in_step) {
+        // Found sound already, as the frame after a glitch byte is: its PDU reads.
+        let sound = candidate.known_layout
+            && self
+                .latest_sound
+                .is(self.offset + at as u64, candidate.len, candidate.direction);
+        if candidate.known_layout && !sound && !pdu_reads(frame, candidate.direction, !in_step) {
             return self.refused_right_after(end, self.asked_by(at, candidate));
         }
         let tell = self.followed_or_answered(at, candidate, depth, in_step);

@@ -354,6 +354,8 @@ impl Framer {
                         && self.crc_holds_at(at, len)
                         && pdu_reads(&data[..len], Some(direction), true) =>
                 {
+                    self.latest_sound
+                        .found(self.offset + at as u64, len, direction);
                     Some(len)
                 }
                 _ => None,
