@@ -26,61 +26,109 @@ fn counted(pdu: &[u8], index: usize, base: usize) -> Length {
     }
 }
 
-/// The length of the PDU that starts `pdu` (function code first).
-pub(crate) fn pdu_length(pdu: &[u8], direction: Direction) -> Length {
-    let Some(&function) = pdu.first() else {
-        return Length::AtLeast(1);
-    };
+/// How a function's PDU tells its length, in one direction.
+#[derive(Clone, Copy)]
+enum Layout {
+    /// Always this many bytes.
+    Fixed(u8),
+    /// `base` bytes, plus the byte count at `index`.
+    Counted { index: u8, base: u8 },
+    /// A FIFO queue's answer: 3 bytes, plus its two-byte count.
+    FifoCount,
+    /// Encapsulated interface: by the MEI type, read device identification alone known.
+    Mei,
+    /// Not known: only silence or a checksum can tell.
+    Unknown,
+    /// No frame in this direction starts with this function code.
+    Never,
+}
+
+/// The layout of `function`'s PDU travelling in `direction`.
+const fn layout(function: u8, direction: Direction) -> Layout {
     if function == 0 {
-        return Length::Never;
+        return Layout::Never;
     }
     match direction {
-        Direction::Request if function & EXCEPTION_FLAG != 0 => Length::Never,
+        Direction::Request if function & EXCEPTION_FLAG != 0 => Layout::Never,
         Direction::Request => match function {
-            READ_COILS..=WRITE_SINGLE_REGISTER | DIAGNOSTICS => Length::Known(5),
+            READ_COILS..=WRITE_SINGLE_REGISTER | DIAGNOSTICS => Layout::Fixed(5),
             READ_EXCEPTION_STATUS
             | GET_COMM_EVENT_COUNTER
             | GET_COMM_EVENT_LOG
-            | REPORT_SERVER_ID => Length::Known(1),
-            WRITE_MULTIPLE_COILS | WRITE_MULTIPLE_REGISTERS => counted(pdu, 5, 6),
-            READ_FILE_RECORD | WRITE_FILE_RECORD => counted(pdu, 1, 2),
-            MASK_WRITE_REGISTER => Length::Known(7),
-            READ_WRITE_MULTIPLE_REGISTERS => counted(pdu, 9, 10),
-            READ_FIFO_QUEUE => Length::Known(3),
-            ENCAPSULATED_INTERFACE => match pdu.get(1) {
-                Some(&MEI_READ_DEVICE_IDENTIFICATION) => Length::Known(4),
-                Some(_) => Length::Unknown,
-                None => Length::AtLeast(2),
-            },
-            _ => Length::Unknown,
+            | REPORT_SERVER_ID => Layout::Fixed(1),
+            WRITE_MULTIPLE_COILS | WRITE_MULTIPLE_REGISTERS => {
+                Layout::Counted { index: 5, base: 6 }
+            }
+            READ_FILE_RECORD | WRITE_FILE_RECORD => Layout::Counted { index: 1, base: 2 },
+            MASK_WRITE_REGISTER => Layout::Fixed(7),
+            READ_WRITE_MULTIPLE_REGISTERS => Layout::Counted { index: 9, base: 10 },
+            READ_FIFO_QUEUE => Layout::Fixed(3),
+            ENCAPSULATED_INTERFACE => Layout::Mei,
+            _ => Layout::Unknown,
         },
         Direction::Response => match function {
-            f if f & EXCEPTION_FLAG != 0 => Length::Known(2),
+            f if f & EXCEPTION_FLAG != 0 => Layout::Fixed(2),
             READ_COILS..=READ_INPUT_REGISTERS
             | GET_COMM_EVENT_LOG
             | REPORT_SERVER_ID
             | READ_FILE_RECORD
             | WRITE_FILE_RECORD
-            | READ_WRITE_MULTIPLE_REGISTERS => counted(pdu, 1, 2),
+            | READ_WRITE_MULTIPLE_REGISTERS => Layout::Counted { index: 1, base: 2 },
             WRITE_SINGLE_COIL
             | WRITE_SINGLE_REGISTER
             | DIAGNOSTICS
             | GET_COMM_EVENT_COUNTER
             | WRITE_MULTIPLE_COILS
-            | WRITE_MULTIPLE_REGISTERS => Length::Known(5),
-            READ_EXCEPTION_STATUS => Length::Known(2),
-            MASK_WRITE_REGISTER => Length::Known(7),
-            READ_FIFO_QUEUE => match pdu.get(1..3) {
-                Some([hi, lo]) => Length::Known(3 + usize::from(u16::from_be_bytes([*hi, *lo]))),
-                _ => Length::AtLeast(3),
-            },
-            ENCAPSULATED_INTERFACE => match pdu.get(1) {
-                Some(&MEI_READ_DEVICE_IDENTIFICATION) => device_identification_length(pdu),
-                Some(_) => Length::Unknown,
-                None => Length::AtLeast(2),
-            },
-            _ => Length::Unknown,
+            | WRITE_MULTIPLE_REGISTERS => Layout::Fixed(5),
+            READ_EXCEPTION_STATUS => Layout::Fixed(2),
+            MASK_WRITE_REGISTER => Layout::Fixed(7),
+            READ_FIFO_QUEUE => Layout::FifoCount,
+            ENCAPSULATED_INTERFACE => Layout::Mei,
+            _ => Layout::Unknown,
         },
+    }
+}
+
+/// The layouts of every function code, requests first, worked out when compiled: a
+/// sniffer asks for a length at every position it looks at, several times a byte.
+static LAYOUTS: [[Layout; 256]; 2] = {
+    let mut layouts = [[Layout::Never; 256]; 2];
+    let mut function = 0;
+    while function < 256 {
+        layouts[0][function] = layout(function as u8, Direction::Request);
+        layouts[1][function] = layout(function as u8, Direction::Response);
+        function += 1;
+    }
+    layouts
+};
+
+/// The length of the PDU that starts `pdu` (function code first).
+#[inline]
+pub(crate) fn pdu_length(pdu: &[u8], direction: Direction) -> Length {
+    let Some(&function) = pdu.first() else {
+        return Length::AtLeast(1);
+    };
+    let layouts = match direction {
+        Direction::Request => &LAYOUTS[0],
+        Direction::Response => &LAYOUTS[1],
+    };
+    match layouts[usize::from(function)] {
+        Layout::Fixed(len) => Length::Known(usize::from(len)),
+        Layout::Counted { index, base } => counted(pdu, usize::from(index), usize::from(base)),
+        Layout::FifoCount => match pdu.get(1..3) {
+            Some([hi, lo]) => Length::Known(3 + usize::from(u16::from_be_bytes([*hi, *lo]))),
+            _ => Length::AtLeast(3),
+        },
+        Layout::Mei => match (pdu.get(1), direction) {
+            (Some(&MEI_READ_DEVICE_IDENTIFICATION), Direction::Request) => Length::Known(4),
+            (Some(&MEI_READ_DEVICE_IDENTIFICATION), Direction::Response) => {
+                device_identification_length(pdu)
+            }
+            (Some(_), _) => Length::Unknown,
+            (None, _) => Length::AtLeast(2),
+        },
+        Layout::Unknown => Length::Unknown,
+        Layout::Never => Length::Never,
     }
 }
 
@@ -102,6 +150,7 @@ fn device_identification_length(pdu: &[u8]) -> Length {
 }
 
 /// The length of the RTU frame that starts `frame`: address, PDU, CRC.
+#[inline]
 pub(crate) fn rtu_frame_length(frame: &[u8], direction: Direction) -> Length {
     match frame.get(1..) {
         // The address byte before the PDU; the CRC after it is not needed to tell the length.
