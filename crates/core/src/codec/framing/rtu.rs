@@ -246,6 +246,7 @@ impl Framer {
 
     /// The readings of the bytes at `at` whose CRC holds, and the directions still waiting
     /// for bytes.
+    #[inline(always)]
     pub(super) fn candidates(&self, at: usize) -> Candidates {
         let data = &self.buffer[at..];
         let mut found = Candidates::default();
