@@ -249,7 +249,10 @@ fn events_ahead(mode: Mode, stream: &[u8], cuts: &[usize]) -> (Vec<Event>, usize
             framer.push(block, &mut events);
         } else {
             let ahead = framer.starting_at(pair[0] as u64).frame_ahead(block);
-            met += usize::from(framer.catch_up(block, ahead, &mut events));
+            if let Some(rest) = framer.catch_up(block, ahead, &mut events) {
+                met += 1;
+                events.extend(rest);
+            }
         }
     }
     framer.finish(&mut events);

@@ -370,14 +370,18 @@ fn read_ahead(
         // A block whose worker is gone (it cannot be, short of a panic) is framed here.
         match ahead.and_then(|ahead| ahead.recv().ok()) {
             Some(ahead) => {
-                if session.catch_up(&block, ahead, &mut events) {
+                let found_ahead = session.catch_up(&block, ahead, &mut events);
+                if found_ahead.is_some() {
                     missed = 0;
                 } else {
                     in_order_for = 1 << missed.min(6);
                     missed += 1;
                 }
                 // A batch at a time, so that few records are alive at once.
-                let mut framed = events.drain(..).peekable();
+                let mut framed = events
+                    .drain(..)
+                    .chain(found_ahead.into_iter().flatten())
+                    .peekable();
                 while framed.peek().is_some() {
                     let before = found.records.len();
                     session.read_framed(framed.by_ref().take(BATCH), &mut found.records);

@@ -327,10 +327,15 @@ impl Session {
 
     /// Bytes of a capture file without timing, the block after those pushed so far, which
     /// `ahead` framed from its own start: their frames, the same as [`Session::push`]
-    /// would find, are added to `events`, to be read with [`Session::read_framed`].
-    /// Returns whether the frames found ahead were met (else the block was framed in
-    /// order, and framing ahead did not pay).
-    pub fn catch_up(&mut self, block: &[u8], ahead: Ahead, events: &mut Vec<Event>) -> bool {
+    /// would find, are `events` and then those returned, to be read in that order with
+    /// [`Session::read_framed`]. `None` when the frames found ahead were never met: the
+    /// block was framed in order, and framing ahead did not pay.
+    pub fn catch_up(
+        &mut self,
+        block: &[u8],
+        ahead: Ahead,
+        events: &mut Vec<Event>,
+    ) -> Option<std::vec::IntoIter<Event>> {
         self.framer.catch_up(block, ahead, events)
     }
 

@@ -59,14 +59,20 @@ impl Framer {
 
     /// Frames `block`, the bytes that follow those given so far, which `ahead` framed from
     /// its own start: in order until this framer meets the frames found ahead, then as they
-    /// were found. The events are those [`Framer::push`] would give. Returns whether it met
-    /// them (else the block was framed in order).
-    pub fn catch_up(&mut self, block: &[u8], ahead: Ahead, out: &mut Vec<Event>) -> bool {
+    /// were found. The events, those [`Framer::push`] would give, are added to `out` up to
+    /// where the two met, and the rest, found ahead, returned to follow them: handed on as
+    /// they are, not copied. `None`: the two never met, and the block was framed in order.
+    pub fn catch_up(
+        &mut self,
+        block: &[u8],
+        ahead: Ahead,
+        out: &mut Vec<Event>,
+    ) -> Option<std::vec::IntoIter<Event>> {
         // Only bytes without times are framed alike however they are handed over; and a
         // TCP receiver that lost its step tells the rest as noise a piece at a time.
         if !self.times.is_empty() || self.mode == Mode::Tcp {
             self.push(block, out);
-            return false;
+            return None;
         }
         let Ahead {
             events: found_ahead,
@@ -100,14 +106,16 @@ impl Framer {
             if let Some((mine_to, ahead_from)) = met {
                 mine.truncate(mine_to + 1);
                 out.append(&mut mine);
-                out.extend(found_ahead.into_iter().skip(ahead_from + 1));
+                // The frame where they met is this framer's own, already in `out`.
+                let mut rest = found_ahead.into_iter();
+                rest.nth(ahead_from);
                 *self = ahead;
-                return true;
+                return Some(rest);
             }
         }
         self.standings = None;
         out.append(&mut mine);
-        false
+        None
     }
 
     /// Notes where the framer stands after the frame just handed out, when asked to.
