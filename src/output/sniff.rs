@@ -641,7 +641,7 @@ impl SniffWriter {
                     n(counts.crc_errors, "CRC error"),
                     n(counts.noise_bytes, "noise byte"),
                 )?;
-                for (slave, c) in &counts.slaves {
+                for (slave, c) in counts.slaves.iter() {
                     writeln!(
                         out,
                         "  slave {slave}: {}, {}, {}, {} unanswered, {}",

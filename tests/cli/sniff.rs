@@ -105,6 +105,14 @@ fn the_real_captures_come_out_as_listed() {
         );
         assert_eq!(summary["unanswered"], 0, "{name}");
         assert_eq!(summary["crc_errors"], 0, "{name}");
+        // The tally by slave: a map keyed by each address seen, adding up to the whole.
+        let slaves = summary["slaves"].as_object().expect("slaves is a map");
+        assert!(
+            slaves.keys().all(|slave| slave.parse::<u8>().is_ok()),
+            "{name}"
+        );
+        let by_slave: u64 = slaves.values().filter_map(|s| s["requests"].as_u64()).sum();
+        assert_eq!(Some(by_slave), summary["requests"].as_u64(), "{name}");
     }
 }
 

@@ -2,7 +2,6 @@
 //! counted. Pure, like the framer it drives.
 
 use std::cell::{OnceCell, RefCell};
-use std::collections::BTreeMap;
 use std::net::SocketAddr;
 
 use serde::Serialize;
@@ -170,7 +169,7 @@ impl PartialEq for FrameRecord {
 }
 
 /// The tally of one slave address.
-#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct SlaveCounts {
     /// Valid requests.
     pub requests: u64,
@@ -204,7 +203,54 @@ pub struct Counts {
     /// Bytes that belong to no frame.
     pub noise_bytes: u64,
     /// The same per slave address.
-    pub slaves: BTreeMap<u8, SlaveCounts>,
+    pub slaves: PerSlave,
+}
+
+/// Tallies by slave address, in a table the address indexes, so that counting a frame
+/// is no search; listed, and serialized, as a map of the addresses seen, lowest first.
+#[derive(Clone, PartialEq, Eq)]
+pub struct PerSlave {
+    seen: [bool; 256],
+    tallies: Box<[SlaveCounts; 256]>,
+}
+
+impl Default for PerSlave {
+    fn default() -> Self {
+        Self {
+            seen: [false; 256],
+            tallies: Box::new([SlaveCounts::default(); 256]),
+        }
+    }
+}
+
+impl PerSlave {
+    /// The tally of `slave`, which is now among those seen.
+    pub fn entry(&mut self, slave: u8) -> &mut SlaveCounts {
+        self.seen[usize::from(slave)] = true;
+        &mut self.tallies[usize::from(slave)]
+    }
+
+    /// The tally of `slave`, when seen.
+    pub fn get(&self, slave: u8) -> Option<&SlaveCounts> {
+        self.seen[usize::from(slave)].then(|| &self.tallies[usize::from(slave)])
+    }
+
+    /// The addresses seen, lowest first, with their tallies.
+    pub fn iter(&self) -> impl Iterator<Item = (u8, &SlaveCounts)> {
+        (0..=u8::MAX).filter_map(|slave| Some((slave, self.get(slave)?)))
+    }
+}
+
+impl std::fmt::Debug for PerSlave {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_map().entries(self.iter()).finish()
+    }
+}
+
+impl Serialize for PerSlave {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_map(self.iter())
+    }
 }
 
 impl Counts {
@@ -216,7 +262,7 @@ impl Counts {
     /// A frame of `slave`: what it is, or `None` when it is not valid.
     pub(super) fn tell(&mut self, slave: u8, kind: Option<Kind>) {
         self.frames += 1;
-        let slave = self.slaves.entry(slave).or_default();
+        let slave = self.slaves.entry(slave);
         let Some(kind) = kind else {
             return;
         };
@@ -241,7 +287,7 @@ impl Counts {
     /// A request of `slave` that got no answer.
     pub(super) fn unanswered(&mut self, slave: u8) {
         self.unanswered += 1;
-        self.slaves.entry(slave).or_default().unanswered += 1;
+        self.slaves.entry(slave).unanswered += 1;
     }
 }
 
@@ -471,11 +517,7 @@ impl Session {
                 }
                 // A frame cut short fails its checksum as much as one that broke.
                 self.counts.crc_errors += 1;
-                self.counts
-                    .slaves
-                    .entry(report.slave)
-                    .or_default()
-                    .crc_errors += 1;
+                self.counts.slaves.entry(report.slave).crc_errors += 1;
                 self.counts.frame(&report);
                 self.filter.shows(report.slave, report.function).then(|| {
                     let at = self.at(found.start, found.offset);
@@ -551,5 +593,31 @@ impl Session {
         );
         record.paired = paired;
         Some(record)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_tallies_by_slave_list_the_addresses_seen_lowest_first() {
+        let mut counts = Counts::default();
+        counts.tell(247, Some(Kind::Request));
+        counts.tell(0, Some(Kind::Request));
+        counts.unanswered(17);
+        counts.tell(247, Some(Kind::Exception));
+        let listed: Vec<u8> = counts.slaves.iter().map(|(slave, _)| slave).collect();
+        assert_eq!(listed, [0, 17, 247]);
+        assert_eq!(counts.slaves.get(5), None);
+        let high = counts.slaves.get(247).copied().unwrap_or_default();
+        assert_eq!((high.requests, high.answers, high.exceptions), (1, 1, 1));
+        assert_eq!(counts.slaves.get(17).map(|c| c.unanswered), Some(1));
+        assert_eq!(
+            format!("{:?}", counts.slaves)
+                .matches("SlaveCounts")
+                .count(),
+            3
+        );
     }
 }
