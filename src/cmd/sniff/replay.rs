@@ -13,7 +13,7 @@ use anyhow::{Context, Result};
 use mbtool::connection::{line_at, line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::settings::Settings;
-use mbtool_core::codec::framing::{Ahead, Framer};
+use mbtool_core::codec::framing::{Ahead, Event, Framer};
 use mbtool_core::codec::Mode;
 use mbtool_core::sniff::session::{Record, Session};
 use mbtool_core::sniff::timing;
@@ -377,16 +377,9 @@ fn read_ahead(
                     in_order_for = 1 << missed.min(6);
                     missed += 1;
                 }
-                // A batch at a time, so that few records are alive at once.
-                let mut framed = events
-                    .drain(..)
-                    .chain(found_ahead.into_iter().flatten())
-                    .peekable();
-                while framed.peek().is_some() {
-                    let before = found.records.len();
-                    session.read_framed(framed.by_ref().take(BATCH), &mut found.records);
-                    shown += found.records.len() - before;
-                    found.found()?;
+                shown += read_batches(session, found, events.drain(..))?;
+                if let Some(found_ahead) = found_ahead {
+                    shown += read_batches(session, found, found_ahead)?;
                 }
             }
             None => {
@@ -401,6 +394,23 @@ fn read_ahead(
         // A record in 16 bytes or more keeps a writer busy: every frame of a busy line.
         writer_busy = shown * 16 > block.len();
     }
+}
+
+/// Reads `events` a batch at a time, so that few records are alive at once. Returns how
+/// many records they gave.
+fn read_batches(
+    session: &mut Session,
+    found: &mut Batches,
+    mut events: impl ExactSizeIterator<Item = Event>,
+) -> io::Result<usize> {
+    let mut shown = 0;
+    while events.len() > 0 {
+        let before = found.records.len();
+        session.read_framed(events.by_ref().take(BATCH), &mut found.records);
+        shown += found.records.len() - before;
+        found.found()?;
+    }
+    Ok(shown)
 }
 
 /// The next block of a capture file, as long as [`AHEAD_BLOCK`] unless the file ends first
