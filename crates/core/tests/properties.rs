@@ -248,10 +248,12 @@ fn events_ahead(mode: Mode, stream: &[u8], cuts: &[usize]) -> (Vec<Event>, usize
         if i == 0 {
             framer.push(block, &mut events);
         } else {
-            let ahead = framer.starting_at(pair[0] as u64).frame_ahead(block);
-            if let Some(rest) = framer.catch_up(block, ahead, &mut events) {
+            let ahead = framer
+                .starting_at(pair[0] as u64)
+                .frame_ahead(block, Vec::new());
+            if let Some(mut rest) = framer.catch_up(block, ahead, &mut events) {
                 met += 1;
-                events.extend(rest);
+                events.extend(rest.events.drain(rest.from..));
             }
         }
     }

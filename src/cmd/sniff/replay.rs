@@ -13,7 +13,7 @@ use anyhow::{Context, Result};
 use mbtool::connection::{line_at, line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::settings::Settings;
-use mbtool_core::codec::framing::{Ahead, Event, Framer};
+use mbtool_core::codec::framing::{Ahead, Event, FoundAhead, Framer};
 use mbtool_core::codec::Mode;
 use mbtool_core::sniff::session::{Record, Session};
 use mbtool_core::sniff::timing;
@@ -269,9 +269,11 @@ pub(super) fn replay(
 /// that the frames of the blocks in flight stay in the cores' caches.
 const AHEAD_BLOCK: usize = 1 << 16;
 
-/// A block of a capture file to frame ahead, with a framer that starts where it does, and
+/// A block of a capture file to frame ahead, with a framer that starts where it does, a
+/// vector to put its frames in (one read before, its memory kept: a block's frames fill
+/// a megabyte, which would be mapped, zeroed and unmapped again for every block), and
 /// where to hand what it found.
-type AheadJob = (Framer, Arc<[u8]>, mpsc::SyncSender<Ahead>);
+type AheadJob = (Framer, Arc<[u8]>, Vec<Event>, mpsc::SyncSender<Ahead>);
 
 /// A capture file without timing, framed on every core: blocks are framed ahead by a
 /// worker on every other core while this thread catches up with them (see
@@ -297,11 +299,11 @@ pub(super) fn replay_ahead(
             scope.spawn(move || loop {
                 // Whoever holds the queue waits for the next block; the others wait for it.
                 let job = queue.lock().map(|queue| queue.recv());
-                let Ok(Ok((framer, block, done))) = job else {
+                let Ok(Ok((framer, block, events, done))) = job else {
                     return;
                 };
                 // This thread may have stopped (the output closed): then nobody waits.
-                let _ = done.send(framer.frame_ahead(&block));
+                let _ = done.send(framer.frame_ahead(&block, events));
             });
         }
         let replayed = read_ahead(input, session, found, save, &jobs, cores - 1);
@@ -336,6 +338,7 @@ fn read_ahead(
     let mut in_order_for = 0usize;
     let mut missed = 0u32;
     let mut events = Vec::new();
+    let mut read_already: Vec<Vec<Event>> = Vec::new();
     loop {
         let framing_ahead = if writer_busy { workers - 1 } else { workers };
         let cycle = framing_ahead * framing_ahead + 2;
@@ -355,7 +358,12 @@ fn read_ahead(
             in_order_for = in_order_for.saturating_sub(1);
             let ahead = (!in_order).then(|| {
                 let (done, ahead) = mpsc::sync_channel(1);
-                let job = (session.framer_ahead(read), Arc::clone(&block), done);
+                let job = (
+                    session.framer_ahead(read),
+                    Arc::clone(&block),
+                    read_already.pop().unwrap_or_default(),
+                    done,
+                );
                 // No worker left to take it (none can go, short of a panic): in order.
                 jobs.send(job).is_ok().then_some(ahead)
             });
@@ -378,8 +386,13 @@ fn read_ahead(
                     missed += 1;
                 }
                 shown += read_batches(session, found, events.drain(..))?;
-                if let Some(found_ahead) = found_ahead {
-                    shown += read_batches(session, found, found_ahead)?;
+                if let Some(FoundAhead {
+                    events: mut found_ahead,
+                    from,
+                }) = found_ahead
+                {
+                    shown += read_batches(session, found, found_ahead.drain(from..))?;
+                    read_already.push(found_ahead);
                 }
             }
             None => {

@@ -7,7 +7,7 @@ use std::net::SocketAddr;
 use serde::Serialize;
 
 use super::pairing::{Pairer, Role, Unanswered};
-use crate::codec::framing::{Ahead, Broken, Event, Found, Framer, Noise, NoiseBytes};
+use crate::codec::framing::{Ahead, Broken, Event, Found, FoundAhead, Framer, Noise, NoiseBytes};
 use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
 use crate::describe::{
     describe_as, describe_frame, describe_reading, locate_answer, FrameReport, Kind,
@@ -381,7 +381,7 @@ impl Session {
         block: &[u8],
         ahead: Ahead,
         events: &mut Vec<Event>,
-    ) -> Option<std::vec::IntoIter<Event>> {
+    ) -> Option<FoundAhead> {
         self.framer.catch_up(block, ahead, events)
     }
 

@@ -32,6 +32,15 @@ pub struct Ahead {
     framer: Framer,
 }
 
+/// The frames of a block framed ahead that follow where the catching-up framer met them:
+/// `events[from..]`. `events` is the vector the block was framed into, to be used again.
+pub struct FoundAhead {
+    /// The events framed ahead.
+    pub events: Vec<Event>,
+    /// The first of them that follows the meeting.
+    pub from: usize,
+}
+
 impl Framer {
     /// A framer for the bytes of the same stream from `offset` on, framed without the bytes
     /// before them, as after noise: to frame a block ahead with [`Framer::frame_ahead`].
@@ -45,9 +54,10 @@ impl Framer {
     }
 
     /// Frames `block`, the bytes from where this framer starts, ahead of the framer that
-    /// reads the stream in order (see [`Framer::catch_up`]).
-    pub fn frame_ahead(mut self, block: &[u8]) -> Ahead {
-        let mut events = Vec::new();
+    /// reads the stream in order (see [`Framer::catch_up`]). The events are put in
+    /// `events`, emptied first: a vector used before has its memory at hand.
+    pub fn frame_ahead(mut self, block: &[u8], mut events: Vec<Event>) -> Ahead {
+        events.clear();
         self.standings = Some(Vec::new());
         self.push(block, &mut events);
         Ahead {
@@ -67,7 +77,7 @@ impl Framer {
         block: &[u8],
         ahead: Ahead,
         out: &mut Vec<Event>,
-    ) -> Option<std::vec::IntoIter<Event>> {
+    ) -> Option<FoundAhead> {
         // Only bytes without times are framed alike however they are handed over; and a
         // TCP receiver that lost its step tells the rest as noise a piece at a time.
         if !self.times.is_empty() || self.mode == Mode::Tcp {
@@ -106,11 +116,12 @@ impl Framer {
             if let Some((mine_to, ahead_from)) = met {
                 mine.truncate(mine_to + 1);
                 out.append(&mut mine);
-                // The frame where they met is this framer's own, already in `out`.
-                let mut rest = found_ahead.into_iter();
-                rest.nth(ahead_from);
                 *self = ahead;
-                return Some(rest);
+                // The frame where they met is this framer's own, already in `out`.
+                return Some(FoundAhead {
+                    events: found_ahead,
+                    from: ahead_from + 1,
+                });
             }
         }
         self.standings = None;

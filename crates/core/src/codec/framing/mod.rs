@@ -50,8 +50,8 @@ use super::checksum::crc_holds;
 use super::function::EXCEPTION_FLAG;
 use super::limits::MAX_RTU_ADU;
 use super::{Direction, Mode};
-pub use ahead::Ahead;
 use ahead::Standing;
+pub use ahead::{Ahead, FoundAhead};
 use cadence::ReadCadence;
 use memo::{CrcVerdicts, LatestSound};
 
