@@ -1063,6 +1063,41 @@ fn a_timed_replay_says_how_long_the_last_request_waited_in_vain() {
 }
 
 #[test]
+fn a_filter_does_not_change_the_time_of_a_frame_it_shows() {
+    // A request of slave 1 at 10 ms and a glitch byte at 50 ms are timed; slave 2's request
+    // after them is not (the timing stopped short), so its time goes on from the glitch's.
+    let dir = tempfile::tempdir().unwrap();
+    let capture = dir.path().join("capture.bin");
+    let (first, second) = (rtu(&[1, 3, 0, 0, 0, 1]), rtu(&[2, 3, 0, 0, 0, 1]));
+    std::fs::write(&capture, [&first[..], &[0xFF], &second].concat()).unwrap();
+    std::fs::write(
+        dir.path().join("capture.bin.timing"),
+        "# line: rtu 9600 8N1\n10000 8\n50000 1\n",
+    )
+    .unwrap();
+    let time_of_slave_2 = |filter: &[&str]| {
+        let output = mbtool()
+            .args(["sniff", "--json", "--input"])
+            .arg(&capture)
+            .args(filter)
+            .output()
+            .unwrap();
+        assert!(output.status.success(), "{output:?}");
+        let lines = json_lines(&output.stdout);
+        let frame = lines
+            .iter()
+            .find(|l| l["type"] == "frame" && l["slave"] == 2)
+            .cloned()
+            .unwrap_or_else(|| panic!("slave 2's request is shown: {lines:?}"));
+        frame["time"].as_f64().unwrap()
+    };
+    let unfiltered = time_of_slave_2(&[]);
+    // One character after the glitch byte, at 9600 8N1.
+    assert!((0.0510..0.0511).contains(&unfiltered), "{unfiltered}");
+    assert_eq!(time_of_slave_2(&["--slave", "2"]), unfiltered);
+}
+
+#[test]
 fn a_request_that_ends_the_capture_is_told_as_such_not_as_waiting_no_time() {
     // The capture's last read is the request itself: it waited no time that the capture
     // shows, and its answer may have come after the capture ended.
