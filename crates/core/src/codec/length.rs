@@ -18,21 +18,17 @@ pub(crate) enum Length {
     Never,
 }
 
-/// `base` bytes, plus the byte count found at `index`.
-fn counted(pdu: &[u8], index: usize, base: usize) -> Length {
-    match pdu.get(index) {
-        Some(count) => Length::Known(base + usize::from(*count)),
-        None => Length::AtLeast(index + 1),
-    }
-}
-
 /// How a function's PDU tells its length, in one direction.
 #[derive(Clone, Copy)]
 enum Layout {
-    /// Always this many bytes.
-    Fixed(u8),
-    /// `base` bytes, plus the byte count at `index`.
-    Counted { index: u8, base: u8 },
+    /// `base` bytes, plus the byte count at `index` if `counted`.
+    Plain { base: u8, index: u8, counted: bool },
+    /// The rest, a length told by the PDU's own rules or not at all.
+    Other(Other),
+}
+
+#[derive(Clone, Copy)]
+enum Other {
     /// A FIFO queue's answer: 3 bytes, plus its two-byte count.
     FifoCount,
     /// Encapsulated interface: by the MEI type, read device identification alone known.
@@ -43,48 +39,65 @@ enum Layout {
     Never,
 }
 
+/// Always `len` bytes: its count's index is the function code's, always there, and not
+/// counted.
+const fn fixed(len: u8) -> Layout {
+    Layout::Plain {
+        base: len,
+        index: 0,
+        counted: false,
+    }
+}
+
+/// `base` bytes, plus the byte count at `index`.
+const fn counted(index: u8, base: u8) -> Layout {
+    Layout::Plain {
+        base,
+        index,
+        counted: true,
+    }
+}
+
 /// The layout of `function`'s PDU travelling in `direction`.
 const fn layout(function: u8, direction: Direction) -> Layout {
     if function == 0 {
-        return Layout::Never;
+        return Layout::Other(Other::Never);
     }
     match direction {
-        Direction::Request if function & EXCEPTION_FLAG != 0 => Layout::Never,
+        Direction::Request if function & EXCEPTION_FLAG != 0 => Layout::Other(Other::Never),
         Direction::Request => match function {
-            READ_COILS..=WRITE_SINGLE_REGISTER | DIAGNOSTICS => Layout::Fixed(5),
+            READ_COILS..=WRITE_SINGLE_REGISTER | DIAGNOSTICS => fixed(5),
             READ_EXCEPTION_STATUS
             | GET_COMM_EVENT_COUNTER
             | GET_COMM_EVENT_LOG
-            | REPORT_SERVER_ID => Layout::Fixed(1),
-            WRITE_MULTIPLE_COILS | WRITE_MULTIPLE_REGISTERS => {
-                Layout::Counted { index: 5, base: 6 }
-            }
-            READ_FILE_RECORD | WRITE_FILE_RECORD => Layout::Counted { index: 1, base: 2 },
-            MASK_WRITE_REGISTER => Layout::Fixed(7),
-            READ_WRITE_MULTIPLE_REGISTERS => Layout::Counted { index: 9, base: 10 },
-            READ_FIFO_QUEUE => Layout::Fixed(3),
-            ENCAPSULATED_INTERFACE => Layout::Mei,
-            _ => Layout::Unknown,
+            | REPORT_SERVER_ID => fixed(1),
+            WRITE_MULTIPLE_COILS | WRITE_MULTIPLE_REGISTERS => counted(5, 6),
+            READ_FILE_RECORD | WRITE_FILE_RECORD => counted(1, 2),
+            MASK_WRITE_REGISTER => fixed(7),
+            READ_WRITE_MULTIPLE_REGISTERS => counted(9, 10),
+            READ_FIFO_QUEUE => fixed(3),
+            ENCAPSULATED_INTERFACE => Layout::Other(Other::Mei),
+            _ => Layout::Other(Other::Unknown),
         },
         Direction::Response => match function {
-            f if f & EXCEPTION_FLAG != 0 => Layout::Fixed(2),
+            f if f & EXCEPTION_FLAG != 0 => fixed(2),
             READ_COILS..=READ_INPUT_REGISTERS
             | GET_COMM_EVENT_LOG
             | REPORT_SERVER_ID
             | READ_FILE_RECORD
             | WRITE_FILE_RECORD
-            | READ_WRITE_MULTIPLE_REGISTERS => Layout::Counted { index: 1, base: 2 },
+            | READ_WRITE_MULTIPLE_REGISTERS => counted(1, 2),
             WRITE_SINGLE_COIL
             | WRITE_SINGLE_REGISTER
             | DIAGNOSTICS
             | GET_COMM_EVENT_COUNTER
             | WRITE_MULTIPLE_COILS
-            | WRITE_MULTIPLE_REGISTERS => Layout::Fixed(5),
-            READ_EXCEPTION_STATUS => Layout::Fixed(2),
-            MASK_WRITE_REGISTER => Layout::Fixed(7),
-            READ_FIFO_QUEUE => Layout::FifoCount,
-            ENCAPSULATED_INTERFACE => Layout::Mei,
-            _ => Layout::Unknown,
+            | WRITE_MULTIPLE_REGISTERS => fixed(5),
+            READ_EXCEPTION_STATUS => fixed(2),
+            MASK_WRITE_REGISTER => fixed(7),
+            READ_FIFO_QUEUE => Layout::Other(Other::FifoCount),
+            ENCAPSULATED_INTERFACE => Layout::Other(Other::Mei),
+            _ => Layout::Other(Other::Unknown),
         },
     }
 }
@@ -92,7 +105,7 @@ const fn layout(function: u8, direction: Direction) -> Layout {
 /// The layouts of every function code, requests first, worked out when compiled: a
 /// sniffer asks for a length at every position it looks at, several times a byte.
 static LAYOUTS: [[Layout; 256]; 2] = {
-    let mut layouts = [[Layout::Never; 256]; 2];
+    let mut layouts = [[Layout::Other(Other::Never); 256]; 2];
     let mut function = 0;
     while function < 256 {
         layouts[0][function] = layout(function as u8, Direction::Request);
@@ -112,14 +125,33 @@ pub(crate) fn pdu_length(pdu: &[u8], direction: Direction) -> Length {
         Direction::Request => &LAYOUTS[0],
         Direction::Response => &LAYOUTS[1],
     };
+    // Fixed and counted lengths are one arm, told apart by arithmetic: which of the two
+    // comes next is the traffic's to say, and a branch on it (or a jump table over every
+    // layout) would be mispredicted as often. A sniffer asks at every position it looks at.
     match layouts[usize::from(function)] {
-        Layout::Fixed(len) => Length::Known(usize::from(len)),
-        Layout::Counted { index, base } => counted(pdu, usize::from(index), usize::from(base)),
-        Layout::FifoCount => match pdu.get(1..3) {
+        Layout::Plain {
+            base,
+            index,
+            counted,
+        } => match pdu.get(usize::from(index)) {
+            Some(&count) => {
+                Length::Known(usize::from(base) + usize::from(count) * usize::from(counted))
+            }
+            None => Length::AtLeast(usize::from(index) + 1),
+        },
+        Layout::Other(other) => other_length(other, pdu, direction),
+    }
+}
+
+/// The length of a PDU whose layout is not plain.
+#[inline(never)]
+fn other_length(layout: Other, pdu: &[u8], direction: Direction) -> Length {
+    match layout {
+        Other::FifoCount => match pdu.get(1..3) {
             Some([hi, lo]) => Length::Known(3 + usize::from(u16::from_be_bytes([*hi, *lo]))),
             _ => Length::AtLeast(3),
         },
-        Layout::Mei => match (pdu.get(1), direction) {
+        Other::Mei => match (pdu.get(1), direction) {
             (Some(&MEI_READ_DEVICE_IDENTIFICATION), Direction::Request) => Length::Known(4),
             (Some(&MEI_READ_DEVICE_IDENTIFICATION), Direction::Response) => {
                 device_identification_length(pdu)
@@ -127,8 +159,8 @@ pub(crate) fn pdu_length(pdu: &[u8], direction: Direction) -> Length {
             (Some(_), _) => Length::Unknown,
             (None, _) => Length::AtLeast(2),
         },
-        Layout::Unknown => Length::Unknown,
-        Layout::Never => Length::Never,
+        Other::Unknown => Length::Unknown,
+        Other::Never => Length::Never,
     }
 }
 
