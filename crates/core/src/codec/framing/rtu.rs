@@ -47,7 +47,8 @@ pub(super) fn frame_of(candidate: &Candidate) -> Look {
 
 impl Framer {
     pub(super) fn look_rtu(&self, at: usize, in_step: bool) -> Look {
-        let mut found = self.candidates(at);
+        let mut found = Candidates::default();
+        self.find_candidates(at, &mut found);
         // A reading across a silence is the times lying (a USB adapter's latency timer),
         // unless a whole frame starts right after the silence: then the silence was real
         // and the reading borrowed that frame's first bytes.
@@ -248,8 +249,18 @@ impl Framer {
     /// for bytes.
     #[inline(always)]
     pub(super) fn candidates(&self, at: usize) -> Candidates {
-        let data = &self.buffer[at..];
         let mut found = Candidates::default();
+        self.find_candidates(at, &mut found);
+        found
+    }
+
+    /// [`Self::candidates`], written where the caller keeps them. Returned, they were
+    /// copied from one place on the stack to another right after being written field by
+    /// field, and the copy's wide loads waited on those narrow stores: a quarter of the
+    /// time the framing ahead took.
+    #[inline(always)]
+    pub(super) fn find_candidates(&self, at: usize, found: &mut Candidates) {
+        let data = &self.buffer[at..];
         let mut unknown_done = false;
         for direction in [Direction::Request, Direction::Response] {
             match rtu_frame_length(data, direction) {
@@ -287,7 +298,6 @@ impl Framer {
                 .retain(|c| !self.crosses_silence(at, at + c.len));
         }
         found.valid.sort_unstable_by_key(|c| c.len);
-        found
     }
 
     /// A function without a known layout: every length whose CRC holds, save those that
