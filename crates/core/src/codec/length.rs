@@ -2,8 +2,8 @@
 //! complete, and a sniffer knows where to look for the next frame, without waiting for
 //! silence on the line.
 
+use super::direction::Direction;
 use super::function::*;
-use super::pdu::Direction;
 
 /// The predicted length of a PDU or a frame.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

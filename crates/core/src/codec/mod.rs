@@ -5,6 +5,7 @@ pub(crate) mod adu;
 pub(crate) mod answer;
 pub mod bits;
 pub mod checksum;
+mod direction;
 mod error;
 mod exception;
 pub mod framing;

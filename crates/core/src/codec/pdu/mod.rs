@@ -12,6 +12,7 @@ mod request;
 mod response;
 mod wire;
 
+pub use super::direction::Direction;
 pub use identification::{DeviceIdentification, DeviceObject};
 pub(crate) use wire::Values;
 
@@ -237,25 +238,6 @@ pub enum Pdu {
     Response(Response),
     /// An exception response: the function code with 0x80 set, then the exception code.
     Exception(Exception),
-}
-
-/// Which way a PDU travels.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Direction {
-    /// Master to slave.
-    Request,
-    /// Slave to master: a normal or an exception response.
-    Response,
-}
-
-impl Direction {
-    /// The other way.
-    pub fn opposite(self) -> Direction {
-        match self {
-            Direction::Request => Direction::Response,
-            Direction::Response => Direction::Request,
-        }
-    }
 }
 
 impl Pdu {
