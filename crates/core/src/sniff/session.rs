@@ -515,9 +515,13 @@ impl Session {
                     // Its LRC may hold, and the reading show it so: the end is what broke.
                     report.error = Some(ENDS_WITHOUT_CR.into());
                 }
-                // A frame cut short fails its checksum as much as one that broke.
-                self.counts.crc_errors += 1;
-                self.counts.slaves.entry(report.slave).crc_errors += 1;
+                if broken == Broken::Malformed {
+                    self.counts.malformed += 1;
+                } else {
+                    // A frame cut short fails its checksum as much as one that broke.
+                    self.counts.crc_errors += 1;
+                    self.counts.slaves.entry(report.slave).crc_errors += 1;
+                }
                 self.counts.frame(&report);
                 self.filter.shows(report.slave, report.function).then(|| {
                     let at = self.at(found.start, found.offset);
@@ -599,6 +603,29 @@ impl Session {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_malformed_answer_is_counted_so_whether_noise_came_before_it_or_not() {
+        let request = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
+        let mut malformed = vec![0x11, 0x03, 0x05, 0x01, 0x02, 0x03, 0x04, 0x05];
+        let crc = crate::codec::checksum::crc16(&malformed);
+        malformed.extend_from_slice(&crc.to_le_bytes());
+        for glitch in [&[][..], &[0xFF]] {
+            let mut session = Session::new(Mode::Rtu, 573.0, 2005, Filter::default());
+            let mut out = Vec::new();
+            session.push(
+                &[&request[..], glitch, &malformed, &request].concat(),
+                &mut out,
+            );
+            session.finish(None, &mut out);
+            let counts = session.counts();
+            assert_eq!(
+                (counts.frames, counts.malformed, counts.crc_errors),
+                (3, 1, 0),
+                "glitch {glitch:02X?}"
+            );
+        }
+    }
 
     #[test]
     fn the_tallies_by_slave_list_the_addresses_seen_lowest_first() {

@@ -111,6 +111,10 @@ pub enum Broken {
     /// A frame cut off before its end: an ASCII frame by a new ':' (or by silence) before
     /// its CR LF, an RTU frame by silence before its length was reached.
     Incomplete,
+    /// Where the conversation awaits a frame, one of the length its bytes predict whose
+    /// checksum holds but whose PDU does not follow its layout: a sender's mistake, not the
+    /// line's. The turn does not pass, as for a frame whose checksum fails.
+    Malformed,
 }
 
 /// Bytes that belong to no frame, in a run.
@@ -820,6 +824,69 @@ mod tests {
         assert_eq!(frames(&stream), [REQUEST.to_vec(), ANSWER.to_vec()]);
         let noise = out.iter().filter(|e| matches!(e, Event::Noise(_))).count();
         assert_eq!(noise, 2);
+    }
+
+    #[test]
+    fn the_answer_awaited_from_a_reserved_address_after_noise_is_taken() {
+        // A request to 250 (248-255 are reserved, but a device may use them), a glitch
+        // byte, then its answer with its CRC sound: the conversation vouches for it, and a
+        // frame whose CRC holds is never a CRC error.
+        let functions: [&[u8]; 4] = [
+            &[0xFA, 0x07],
+            &[0xFA, 0x03, 0x00, 0x00, 0x00, 0x01],
+            &[0xFA, 0x06, 0x00, 0x01, 0x12, 0x34],
+            &[0xFA, 0x41, 0x01, 0x02],
+        ];
+        let answers: [&[u8]; 4] = [
+            &[0xFA, 0x07, 0x29],
+            &[0xFA, 0x03, 0x02, 0x00, 0x2A],
+            &[0xFA, 0x06, 0x00, 0x01, 0x12, 0x34],
+            &[0xFA, 0x41, 0x07],
+        ];
+        for (request, answer) in functions.iter().zip(answers) {
+            // An echoed write, or a function without a known layout, reads both ways: only
+            // a conversation already followed tells that it is a request, and what answer
+            // it awaits.
+            let both_ways = request == &answer || resync::may_lack_layout(request);
+            let before: &[&[u8]] = if both_ways {
+                &[&[&REQUEST[..], &ANSWER].concat()]
+            } else {
+                &[&[], &[&REQUEST[..], &ANSWER].concat()]
+            };
+            for (before, glitch) in before
+                .iter()
+                .flat_map(|before| [(before, &[0xFF][..]), (before, &[0x55, 0x55])])
+            {
+                let stream = [before, &rtu(request)[..], glitch, &rtu(answer)].concat();
+                let mut expected = frames(before);
+                expected.extend([rtu(request), rtu(answer)]);
+                assert_eq!(frames(&stream), expected, "{stream:02X?}");
+                assert!(frames_that(&stream, false).is_empty(), "{stream:02X?}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_malformed_answer_after_noise_whose_crc_holds_is_no_crc_error() {
+        // Byte count 5 for function 3: a device's mistake, read as a frame with its CRC
+        // sound whether noise comes before it or not.
+        let malformed = rtu(&[0x11, 0x03, 0x05, 0x01, 0x02, 0x03, 0x04, 0x05]);
+        for glitch in [&[][..], &[0xFF]] {
+            let stream = [&REQUEST[..], glitch, &malformed, &REQUEST].concat();
+            let found: Vec<(Vec<u8>, Option<Broken>)> = events(Mode::Rtu, &stream)
+                .into_iter()
+                .filter_map(|e| match e {
+                    Event::Frame(f) => Some((f.bytes.to_vec(), f.broken)),
+                    Event::Noise(_) => None,
+                })
+                .collect();
+            assert_eq!(found.len(), 3, "{stream:02X?}: {found:02X?}");
+            assert_eq!(found[1].0, malformed, "{stream:02X?}");
+            assert!(
+                matches!(found[1].1, None | Some(Broken::Malformed)),
+                "{stream:02X?}: {found:02X?}"
+            );
+        }
     }
 
     #[test]

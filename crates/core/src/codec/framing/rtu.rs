@@ -527,9 +527,15 @@ impl Framer {
             return Look::Noise;
         }
         match self.broken(at, in_step) {
+            // Where its CRC holds after all, no rule above took it because its PDU does
+            // not read: a sender's mistake, and no CRC error (those are the line's faults).
             (Tell::Yes, Some((len, direction))) => Look::Frame {
                 len,
-                broken: Some(Broken::Checksum),
+                broken: Some(if self.crc_holds_at(at, len) {
+                    Broken::Malformed
+                } else {
+                    Broken::Checksum
+                }),
                 direction: Some(direction),
             },
             (Tell::NotYet, _) => Look::NeedMore,
