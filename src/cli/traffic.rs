@@ -61,7 +61,8 @@ supports it: 3.5 characters of silence on a live line, a frame right after it, t
 the input, or, for a request, its answer. A request whose CRC holds but whose PDU does not \
 read (a master's mistake, such as a coil value of 0004) is shown after noise only when its \
 slave's exception follows it at once. After noise, a frame from a reserved address \
-(248-255) is taken only as the answer a request to that address awaits. A frame whose CRC \
+(248-255) is taken only while a request to that address and function awaits its answer, \
+and is then read as a frame from any other address is. A frame whose CRC \
 fails is shown as a CRC error where the conversation expects a frame (a request in turn, \
 the answer a request awaits), and one whose CRC holds there but whose PDU does not read as \
 malformed; elsewhere its bytes are noise. On a live line (or a replay with its .timing), 3.5 \
