@@ -887,6 +887,29 @@ mod tests {
                 "{stream:02X?}: {found:02X?}"
             );
         }
+        // Write multiple coils answered with a quantity of 0: a glitch byte before it reads,
+        // with its first bytes, as a request in step (slave 9A, function 0F). It must not
+        // swallow the answer awaited into a CRC error.
+        let request = rtu(&[0x0F, 0x0F, 0xD3, 0xCF, 0x00, 0x10, 0x02, 0x11, 0x37]);
+        let answer = rtu(&[0x0F, 0x0F, 0xD3, 0xCF, 0x00, 0x00]);
+        for glitch in [0x9A, 0xFF] {
+            let stream = [&request[..], &[glitch], &answer].concat();
+            let found: Vec<(Vec<u8>, Option<Broken>)> = events(Mode::Rtu, &stream)
+                .into_iter()
+                .filter_map(|e| match e {
+                    Event::Frame(f) => Some((f.bytes.to_vec(), f.broken)),
+                    Event::Noise(_) => None,
+                })
+                .collect();
+            assert_eq!(
+                found,
+                [
+                    (request.clone(), None),
+                    (answer.clone(), Some(Broken::Malformed))
+                ],
+                "{stream:02X?}"
+            );
+        }
     }
 
     #[test]

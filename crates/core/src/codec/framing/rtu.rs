@@ -520,8 +520,12 @@ impl Framer {
         // hold that frame or run into it, and neither is taken. Far cheaper to ask than
         // the search, and the common case (a glitch byte at a turnaround). Not where the
         // times show a gap inside them, which the rules about silence decide.
+        // So does the answer awaited right after it, of its layout's length and its CRC
+        // sound, even where its PDU does not read: it is shown as the sender's mistake,
+        // not swallowed into a CRC error that starts at this byte.
         let sound_next = self
             .known_frame_len(at + 1, self.buffer.len())
+            .or_else(|| self.awaited_answer_len(at + 1))
             .is_some_and(|len| !(at..at + len).any(|i| self.timed_gap_after(i)));
         if sound_next {
             return Look::Noise;
@@ -540,6 +544,25 @@ impl Framer {
             },
             (Tell::NotYet, _) => Look::NeedMore,
             _ => Look::Noise,
+        }
+    }
+
+    /// The length of the answer awaited at `at`, when its layout tells it, its bytes are
+    /// all here and its CRC holds, whether or not its PDU reads.
+    fn awaited_answer_len(&self, at: usize) -> Option<usize> {
+        let data = self.buffer.get(at..)?;
+        if !self.answers_awaited(data, Some(Direction::Response)) {
+            return None;
+        }
+        match rtu_frame_length(data, Direction::Response) {
+            Length::Known(len)
+                if (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len)
+                    && len <= data.len()
+                    && self.crc_holds_at(at, len) =>
+            {
+                Some(len)
+            }
+            _ => None,
         }
     }
 
