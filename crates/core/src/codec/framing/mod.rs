@@ -866,6 +866,22 @@ mod tests {
         }
     }
 
+    /// Every frame of `stream`, valid or not, with why it is not.
+    fn frames_as_found(stream: &[u8]) -> Vec<(Vec<u8>, Option<Broken>)> {
+        frames_of(events(Mode::Rtu, stream))
+    }
+
+    /// The frames among `events`, valid or not, with why they are not.
+    fn frames_of(events: Vec<Event>) -> Vec<(Vec<u8>, Option<Broken>)> {
+        events
+            .into_iter()
+            .filter_map(|event| match event {
+                Event::Frame(found) => Some((found.bytes.to_vec(), found.broken)),
+                Event::Noise(_) => None,
+            })
+            .collect()
+    }
+
     #[test]
     fn a_malformed_answer_after_noise_whose_crc_holds_is_no_crc_error() {
         // Byte count 5 for function 3: a device's mistake, read as a frame with its CRC
@@ -873,13 +889,7 @@ mod tests {
         let malformed = rtu(&[0x11, 0x03, 0x05, 0x01, 0x02, 0x03, 0x04, 0x05]);
         for glitch in [&[][..], &[0xFF]] {
             let stream = [&REQUEST[..], glitch, &malformed, &REQUEST].concat();
-            let found: Vec<(Vec<u8>, Option<Broken>)> = events(Mode::Rtu, &stream)
-                .into_iter()
-                .filter_map(|e| match e {
-                    Event::Frame(f) => Some((f.bytes.to_vec(), f.broken)),
-                    Event::Noise(_) => None,
-                })
-                .collect();
+            let found = frames_as_found(&stream);
             assert_eq!(found.len(), 3, "{stream:02X?}: {found:02X?}");
             assert_eq!(found[1].0, malformed, "{stream:02X?}");
             assert!(
@@ -894,13 +904,7 @@ mod tests {
         let answer = rtu(&[0x0F, 0x0F, 0xD3, 0xCF, 0x00, 0x00]);
         for glitch in [0x9A, 0xFF] {
             let stream = [&request[..], &[glitch], &answer].concat();
-            let found: Vec<(Vec<u8>, Option<Broken>)> = events(Mode::Rtu, &stream)
-                .into_iter()
-                .filter_map(|e| match e {
-                    Event::Frame(f) => Some((f.bytes.to_vec(), f.broken)),
-                    Event::Noise(_) => None,
-                })
-                .collect();
+            let found = frames_as_found(&stream);
             assert_eq!(
                 found,
                 [
@@ -1079,12 +1083,7 @@ mod tests {
             framer.push_at(bytes, *time, &mut out);
         }
         framer.finish(&mut out);
-        out.into_iter()
-            .filter_map(|event| match event {
-                Event::Frame(found) => Some((found.bytes.to_vec(), found.broken)),
-                Event::Noise(_) => None,
-            })
-            .collect()
+        frames_of(out)
     }
 
     #[test]
