@@ -37,9 +37,9 @@ impl Framer {
         let frame = &self.buffer[at..at + candidate.len];
         let end = at + candidate.len;
         // After noise a frame must come from an address a serial line uses (1-247, or 0
-        // to broadcast; 248-255 are reserved), unless it is the answer awaited: the request
-        // taken before it used that address, and the conversation vouches for it. One of
-        // known layout must read as a PDU.
+        // to broadcast; 248-255 are reserved), unless a request to its address and function
+        // awaits an answer: the conversation vouches for the address. One of known layout
+        // must read as a PDU.
         if !in_step
             && frame.first().is_some_and(|slave| *slave > MAX_SLAVE)
             && !self.answers_awaited(frame, candidate.direction)
