@@ -109,7 +109,10 @@ fn parse() -> Result<(Settings, Command), u8> {
             2
         }
     })?;
-    match settings::resolve(&cli, &command, &matches) {
+    let resolved = settings::resolve(&cli, &command, &matches);
+    std::mem::forget(command);
+    std::mem::forget(matches);
+    match resolved {
         Ok(settings) => Ok((settings, cli.command)),
         Err(message) => {
             mbtool::note!("mbtool: {message}");

@@ -4,11 +4,11 @@ use std::io::{IsTerminal, Write};
 use std::time::{Duration, Instant};
 
 use anyhow::Result;
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use mbtool::cli::{ProbeArg, ScanArgs};
 use mbtool::connection::{self, Role};
 use mbtool::error::Error;
+use mbtool::output::progress::ProgressLine;
 use mbtool::output::scan::{write_scan, Where};
 use mbtool::output::{self, colour_wanted};
 use mbtool::settings::Settings;
@@ -16,21 +16,6 @@ use mbtool_core::codec::Mode;
 use mbtool_core::master::scan::{scan, sweep, Probe, Progress, ScanOptions, ScanReport};
 use mbtool_core::transport::serial::{self, LineSettings};
 use mbtool_core::transport::Endpoint;
-
-/// A progress bar on stderr, drawn only on a terminal.
-fn progress_bar(total: u64, shown: bool) -> ProgressBar {
-    if !shown {
-        return ProgressBar::hidden();
-    }
-    let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::stderr());
-    if let Ok(style) =
-        ProgressStyle::with_template("{bar:30} {pos}/{len} ids asked, {msg}, {eta} left")
-    {
-        bar.set_style(style);
-    }
-    bar.set_message("0 found");
-    bar
-}
 
 pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
     let endpoint = connection::endpoint(&settings.connection)?;
@@ -71,10 +56,13 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
         tell_unit_ids: mode == Mode::Tcp,
     };
     let total = (ids.len() * lines.len()) as u64;
-    let bar = progress_bar(
+    // On a terminal only; a trace on stderr (`--verbose`) would be drawn over.
+    let mut bar = ProgressLine::new(
         total,
+        "ids asked",
         std::io::stderr().is_terminal() && !settings.output.verbose,
     );
+    bar.set_message("0 found");
     let place = Where {
         mode,
         settings: &lines,
@@ -105,13 +93,12 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
             }
             Progress::Listening => bar.set_message("listening"),
             Progress::Asked(found) => {
-                bar.inc(1);
-                bar.set_message(format!("{found} found"));
+                bar.advance(format!("{found} found"));
             }
         },
         &stop,
     )?;
-    bar.finish_and_clear();
+    bar.clear();
     let mut out = output::stdout();
     write_scan(
         &mut out,

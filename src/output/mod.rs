@@ -10,6 +10,7 @@ pub mod gateway;
 pub mod json;
 pub mod map;
 pub mod ports;
+pub mod progress;
 pub mod read;
 pub mod scan;
 pub mod serve;
