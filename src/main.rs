@@ -110,6 +110,8 @@ fn parse() -> Result<(Settings, Command), u8> {
         }
     })?;
     let resolved = settings::resolve(&cli, &command, &matches);
+    // Freed by the exit: freeing them here is a twelfth of a one-shot command's
+    // instructions, and a trim of the heap.
     std::mem::forget(command);
     std::mem::forget(matches);
     match resolved {
