@@ -143,7 +143,11 @@ mod tests {
         let line = render(&at(100, "1 found", Some(185)), 200);
         assert_eq!(
             line,
-            format!("{}{} 100/247 ids asked, 1 found, 3m 05s left", "█".repeat(12), "░".repeat(18))
+            format!(
+                "{}{} 100/247 ids asked, 1 found, 3m 05s left",
+                "█".repeat(12),
+                "░".repeat(18)
+            )
         );
     }
 
