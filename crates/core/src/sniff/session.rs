@@ -501,14 +501,7 @@ impl Session {
         let number = self.numbered;
         let shown = match found.broken {
             Some(broken) => {
-                // Read the way the framer found it travelling (a cut answer is an answer),
-                // its CRC where the framer found it.
-                let mut report = describe_as(&found.bytes, self.mode, found.direction);
-                report.valid = false;
-                // Too short to read, it is still what the framer found it to be.
-                if let Some(direction) = found.direction {
-                    report.kind = Kind::travelling(direction, report.function);
-                }
+                let mut report = self.describe_invalid(&found);
                 if broken == Broken::Incomplete {
                     report.error = Some("incomplete: the frame was cut off before its end".into());
                 } else if self.mode == Mode::Ascii && !found.bytes.ends_with(b"\r\n") {
@@ -534,6 +527,18 @@ impl Session {
             record.gap = gap;
             out.push(Record::Frame(record));
         }
+    }
+
+    /// A frame that is not valid, read the way the framer found it travelling (a cut answer
+    /// is an answer, a malformed one too), its CRC where the framer found it.
+    fn describe_invalid(&self, found: &Found) -> FrameReport {
+        let mut report = describe_as(&found.bytes, self.mode, found.direction);
+        report.valid = false;
+        // Too short to read, it is still what the framer found it to be.
+        if let Some(direction) = found.direction {
+            report.kind = Kind::travelling(direction, report.function);
+        }
+        report
     }
 
     /// A frame whose checksum holds: paired and counted now, described when shown.
@@ -581,6 +586,13 @@ impl Session {
             Role::Unsettled { request, response } => {
                 (Reading::Both { request, response }, None, false)
             }
+            // Where the conversation tells which way it travels, it is read that way and
+            // told what is wrong with it as that, as it is after noise.
+            Role::Malformed(_) if found.direction.is_some() => {
+                let report = self.describe_invalid(&found);
+                let at = self.at(found.start, found.offset);
+                return Some(FrameRecord::new(number, found, at, report));
+            }
             Role::Malformed(reading) => (reading, None, false),
         };
         let mode = self.mode;
@@ -625,6 +637,42 @@ mod tests {
                 "glitch {glitch:02X?}"
             );
         }
+    }
+
+    #[test]
+    fn a_malformed_frame_is_told_as_the_way_it_travels_whether_noise_came_before_it_or_not() {
+        let request = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
+        let mut malformed = vec![0x11, 0x03, 0x05, 0x01, 0x02, 0x03, 0x04, 0x05];
+        let crc = crate::codec::checksum::crc16(&malformed);
+        malformed.extend_from_slice(&crc.to_le_bytes());
+        let told: Vec<_> = [&[][..], &[0xFF]]
+            .into_iter()
+            .map(|glitch| {
+                let mut session = Session::new(Mode::Rtu, 573.0, 2005, Filter::default());
+                let mut out = Vec::new();
+                session.push(
+                    &[&request[..], glitch, &malformed, &request].concat(),
+                    &mut out,
+                );
+                session.finish(None, &mut out);
+                let report = out
+                    .iter()
+                    .find_map(|record| match record {
+                        Record::Frame(frame) if !frame.report().valid => Some(frame.report()),
+                        _ => None,
+                    })
+                    .cloned();
+                report.map(|report| (report.kind, report.error))
+            })
+            .collect();
+        assert_eq!(
+            told[0],
+            Some((
+                Kind::Response,
+                Some("byte count 5 is not valid for function 3".to_string())
+            ))
+        );
+        assert_eq!(told[0], told[1]);
     }
 
     #[test]
