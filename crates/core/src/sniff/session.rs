@@ -616,21 +616,27 @@ impl Session {
 mod tests {
     use super::*;
 
-    #[test]
-    fn a_malformed_answer_is_counted_so_whether_noise_came_before_it_or_not() {
+    /// A read, an answer to it whose byte count is wrong but whose CRC holds, after
+    /// `glitch`, and the read again: the session's counts and records.
+    fn malformed_answer_after(glitch: &[u8]) -> (Counts, Vec<Record>) {
         let request = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
         let mut malformed = vec![0x11, 0x03, 0x05, 0x01, 0x02, 0x03, 0x04, 0x05];
         let crc = crate::codec::checksum::crc16(&malformed);
         malformed.extend_from_slice(&crc.to_le_bytes());
+        let mut session = Session::new(Mode::Rtu, 573.0, 2005, Filter::default());
+        let mut out = Vec::new();
+        session.push(
+            &[&request[..], glitch, &malformed, &request].concat(),
+            &mut out,
+        );
+        session.finish(None, &mut out);
+        (session.counts().clone(), out)
+    }
+
+    #[test]
+    fn a_malformed_answer_is_counted_so_whether_noise_came_before_it_or_not() {
         for glitch in [&[][..], &[0xFF]] {
-            let mut session = Session::new(Mode::Rtu, 573.0, 2005, Filter::default());
-            let mut out = Vec::new();
-            session.push(
-                &[&request[..], glitch, &malformed, &request].concat(),
-                &mut out,
-            );
-            session.finish(None, &mut out);
-            let counts = session.counts();
+            let (counts, _) = malformed_answer_after(glitch);
             assert_eq!(
                 (counts.frames, counts.malformed, counts.crc_errors),
                 (3, 1, 0),
@@ -641,28 +647,16 @@ mod tests {
 
     #[test]
     fn a_malformed_frame_is_told_as_the_way_it_travels_whether_noise_came_before_it_or_not() {
-        let request = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
-        let mut malformed = vec![0x11, 0x03, 0x05, 0x01, 0x02, 0x03, 0x04, 0x05];
-        let crc = crate::codec::checksum::crc16(&malformed);
-        malformed.extend_from_slice(&crc.to_le_bytes());
         let told: Vec<_> = [&[][..], &[0xFF]]
             .into_iter()
             .map(|glitch| {
-                let mut session = Session::new(Mode::Rtu, 573.0, 2005, Filter::default());
-                let mut out = Vec::new();
-                session.push(
-                    &[&request[..], glitch, &malformed, &request].concat(),
-                    &mut out,
-                );
-                session.finish(None, &mut out);
-                let report = out
-                    .iter()
-                    .find_map(|record| match record {
-                        Record::Frame(frame) if !frame.report().valid => Some(frame.report()),
-                        _ => None,
-                    })
-                    .cloned();
-                report.map(|report| (report.kind, report.error))
+                let (_, records) = malformed_answer_after(glitch);
+                records.iter().find_map(|record| match record {
+                    Record::Frame(frame) if !frame.report().valid => {
+                        Some((frame.report().kind, frame.report().error.clone()))
+                    }
+                    _ => None,
+                })
             })
             .collect();
         assert_eq!(
