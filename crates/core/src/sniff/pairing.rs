@@ -4,7 +4,7 @@
 //! 8-byte 01/02 frames), and saying so when neither settles it.
 
 use crate::codec::answer::check;
-use crate::codec::{Pdu, Reading, Request, Response};
+use crate::codec::{Direction, Pdu, Reading, Request, Response};
 
 /// A request still waiting for its answer.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -86,6 +86,22 @@ impl Pairer {
                 }
             }
             neither @ Reading::Neither { .. } => (Role::Malformed(neither), None),
+        }
+    }
+
+    /// Which way a frame of `slave` and `function` that reads neither way travels, where
+    /// its layout is the same both ways: an answer where a request of that slave and
+    /// function waits for one, the master's next request otherwise. `None` for the first
+    /// frame of a capture, which nothing before settles.
+    pub(super) fn way_of_malformed(&self, slave: u8, function: u8) -> Option<Direction> {
+        let answers = self
+            .pending
+            .as_ref()
+            .is_some_and(|p| p.slave == slave && p.request.function() == function & 0x7F);
+        match (self.seen, answers) {
+            (false, _) => None,
+            (true, true) => Some(Direction::Response),
+            (true, false) => Some(Direction::Request),
         }
     }
 

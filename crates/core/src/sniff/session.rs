@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use super::pairing::{Pairer, Role, Unanswered};
 use crate::codec::framing::{Ahead, Broken, Event, Found, FoundAhead, Framer, Noise, NoiseBytes};
-use crate::codec::{Envelope, Mode, Pdu, Reading, Request};
+use crate::codec::{Direction, Envelope, Mode, Pdu, Reading, Request};
 use crate::describe::{
     describe_as, describe_frame, describe_reading, locate_answer, FrameReport, Kind,
 };
@@ -501,7 +501,7 @@ impl Session {
         let number = self.numbered;
         let shown = match found.broken {
             Some(broken) => {
-                let mut report = self.describe_invalid(&found);
+                let mut report = self.describe_invalid(&found, found.direction);
                 if broken == Broken::Incomplete {
                     report.error = Some("incomplete: the frame was cut off before its end".into());
                 } else if self.mode == Mode::Ascii && !found.bytes.ends_with(b"\r\n") {
@@ -529,13 +529,13 @@ impl Session {
         }
     }
 
-    /// A frame that is not valid, read the way the framer found it travelling (a cut answer
-    /// is an answer, a malformed one too), its CRC where the framer found it.
-    fn describe_invalid(&self, found: &Found) -> FrameReport {
-        let mut report = describe_as(&found.bytes, self.mode, found.direction);
+    /// A frame that is not valid, read the way it travels (a cut answer is an answer, a
+    /// malformed one too), its CRC where the framer found it.
+    fn describe_invalid(&self, found: &Found, direction: Option<Direction>) -> FrameReport {
+        let mut report = describe_as(&found.bytes, self.mode, direction);
         report.valid = false;
         // Too short to read, it is still what the framer found it to be.
-        if let Some(direction) = found.direction {
+        if let Some(direction) = direction {
             report.kind = Kind::travelling(direction, report.function);
         }
         report
@@ -558,6 +558,16 @@ impl Session {
         };
         // The PDU is read once: to pair it, and then to describe that reading.
         let reading = Reading::infer(&envelope.pdu);
+        // A malformed frame is read the way it travels: as the framer found it, or, where
+        // its layout is the same both ways (a 05 or 06 echo), as the conversation before
+        // it has it.
+        let malformed_travels = match reading {
+            Reading::Neither { .. } => found.direction.or_else(|| {
+                let function = envelope.pdu.first().copied().unwrap_or_default();
+                self.pairer.way_of_malformed(envelope.slave, function)
+            }),
+            _ => None,
+        };
         let (role, unanswered) = self
             .pairer
             .read(envelope.slave, reading, found.start, found.end);
@@ -586,10 +596,10 @@ impl Session {
             Role::Unsettled { request, response } => {
                 (Reading::Both { request, response }, None, false)
             }
-            // Where the conversation tells which way it travels, it is read that way and
-            // told what is wrong with it as that, as it is after noise.
-            Role::Malformed(_) if found.direction.is_some() => {
-                let report = self.describe_invalid(&found);
+            // Where it is known which way it travels, it is read that way and told what is
+            // wrong with it as that, as it is after noise.
+            Role::Malformed(_) if malformed_travels.is_some() => {
+                let report = self.describe_invalid(&found, malformed_travels);
                 let at = self.at(found.start, found.offset);
                 return Some(FrameRecord::new(number, found, at, report));
             }
@@ -633,6 +643,16 @@ mod tests {
         (session.counts().clone(), out)
     }
 
+    /// The kind and error of the first frame among `records` that is not valid.
+    fn first_invalid(records: &[Record]) -> Option<(Kind, Option<String>)> {
+        records.iter().find_map(|record| match record {
+            Record::Frame(frame) if !frame.report().valid => {
+                Some((frame.report().kind, frame.report().error.clone()))
+            }
+            _ => None,
+        })
+    }
+
     #[test]
     fn a_malformed_answer_is_counted_so_whether_noise_came_before_it_or_not() {
         for glitch in [&[][..], &[0xFF]] {
@@ -651,12 +671,7 @@ mod tests {
             .into_iter()
             .map(|glitch| {
                 let (_, records) = malformed_answer_after(glitch);
-                records.iter().find_map(|record| match record {
-                    Record::Frame(frame) if !frame.report().valid => {
-                        Some((frame.report().kind, frame.report().error.clone()))
-                    }
-                    _ => None,
-                })
+                first_invalid(&records)
             })
             .collect();
         assert_eq!(
@@ -667,6 +682,50 @@ mod tests {
             ))
         );
         assert_eq!(told[0], told[1]);
+    }
+
+    #[test]
+    fn a_malformed_frame_of_the_same_layout_both_ways_is_read_as_the_conversation_has_it() {
+        let with_crc = |pdu: &[u8]| {
+            let crc = crate::codec::checksum::crc16(pdu);
+            [pdu, &crc.to_le_bytes()].concat()
+        };
+        let pair = [
+            with_crc(&[0x02, 0x03, 0x00, 0x00, 0x00, 0x01]),
+            with_crc(&[0x02, 0x03, 0x02, 0x00, 0x07]),
+        ]
+        .concat();
+        // A write of coil value 0004, refused with exception 03; then a read of two
+        // registers answered with a byte count of 3: eight bytes each, as a request and
+        // as an answer alike.
+        let cases = [
+            (
+                [
+                    pair.clone(),
+                    with_crc(&[0x01, 0x05, 0x00, 0x10, 0x00, 0x04]),
+                    with_crc(&[0x01, 0x85, 0x03]),
+                ]
+                .concat(),
+                Kind::Request,
+                "coil value 0004 is neither FF00 (on) nor 0000 (off)",
+            ),
+            (
+                [
+                    with_crc(&[0x01, 0x03, 0x00, 0x00, 0x00, 0x02]),
+                    with_crc(&[0x01, 0x03, 0x03, 0x00, 0x01, 0x02]),
+                ]
+                .concat(),
+                Kind::Response,
+                "byte count 3 is not valid for function 3",
+            ),
+        ];
+        for (capture, kind, error) in cases {
+            let mut session = Session::new(Mode::Rtu, 573.0, 2005, Filter::default());
+            let mut out = Vec::new();
+            session.push(&[capture, pair.clone()].concat(), &mut out);
+            session.finish(None, &mut out);
+            assert_eq!(first_invalid(&out), Some((kind, Some(error.to_string()))));
+        }
     }
 
     #[test]
