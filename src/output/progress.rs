@@ -4,8 +4,10 @@
 use std::io::{self, Write};
 use std::time::{Duration, Instant};
 
-/// Cells in the bar.
+/// Cells in the bar, where the terminal is wide enough.
 const BAR_WIDTH: usize = 30;
+/// The narrowest bar worth drawing.
+const MIN_BAR_WIDTH: usize = 8;
 /// Redrawn at most this often: a scan asks hundreds of ids a second over TCP.
 const REDRAW_EVERY: Duration = Duration::from_millis(50);
 
@@ -21,24 +23,27 @@ pub struct Progress<'a> {
     pub left: Option<Duration>,
 }
 
-/// The line for `progress`, cut to `width` characters.
+/// The line for `progress` in `width` characters: the bar narrows to leave the words
+/// room, and goes where even a short bar would not fit; words that do not fit are cut.
 pub fn render(progress: &Progress, width: usize) -> String {
-    let filled = match progress.total {
-        0 => BAR_WIDTH,
-        total => (progress.done.min(total) * BAR_WIDTH as u64 / total) as usize,
-    };
-    let mut line = "█".repeat(filled) + &"░".repeat(BAR_WIDTH - filled);
-    line += &format!(
-        " {}/{} {}, {}",
+    let mut words = format!(
+        "{}/{} {}, {}",
         progress.done, progress.total, progress.unit, progress.message
     );
     if let Some(left) = progress.left {
-        line += &format!(", {} left", human(left));
+        words += &format!(", {} left", human(left));
     }
-    match line.char_indices().nth(width) {
-        Some((cut, _)) => line[..cut].to_string(),
-        None => line,
+    let bar_width = width
+        .saturating_sub(words.chars().count() + 1)
+        .min(BAR_WIDTH);
+    if bar_width < MIN_BAR_WIDTH {
+        return words.chars().take(width).collect();
     }
+    let filled = match progress.total {
+        0 => bar_width,
+        total => (progress.done.min(total) * bar_width as u64 / total) as usize,
+    };
+    "█".repeat(filled) + &"░".repeat(bar_width - filled) + " " + &words
 }
 
 /// `7s`, `3m 05s`, `2h 10m`: whole seconds, as a glance at a terminal wants them.
@@ -115,11 +120,12 @@ impl ProgressLine {
             message: &self.message,
             left: time_left(self.done, self.total, now - self.started),
         };
-        // One column short of the width: a line that fills it would wrap on some
-        // terminals, and the next `\r` would then draw on the line below.
+        // Three columns short of the width: a line that fills it would wrap on some
+        // terminals, as would the `^C` the terminal echoes after it on Ctrl-C, and the
+        // next `\r` would then draw on the line below and leave this one standing.
         let width = terminal_size::terminal_size_of(io::stderr())
             .map_or(80, |(terminal_size::Width(width), _)| usize::from(width))
-            .saturating_sub(1);
+            .saturating_sub(3);
         let _ = write!(io::stderr(), "\r{}\x1b[K", render(&progress, width));
     }
 }
@@ -163,10 +169,25 @@ mod tests {
     }
 
     #[test]
-    fn the_line_is_cut_to_the_terminal_width() {
-        let line = render(&at(247, "at 19200 8E1", Some(0)), 40);
-        assert_eq!(line.chars().count(), 40);
-        assert!(line.starts_with(&"█".repeat(30)), "{line}");
+    fn the_bar_narrows_so_that_the_words_fit() {
+        let line = render(&at(100, "1 found", Some(185)), 57);
+        assert_eq!(
+            line,
+            format!(
+                "{}{} 100/247 ids asked, 1 found, 3m 05s left",
+                "█".repeat(6),
+                "░".repeat(11)
+            )
+        );
+        assert_eq!(line.chars().count(), 57);
+    }
+
+    #[test]
+    fn where_no_bar_fits_the_words_are_shown_alone_and_cut() {
+        let line = render(&at(12, "0 found", Some(9)), 40);
+        assert_eq!(line, "12/247 ids asked, 0 found, 9s left");
+        let line = render(&at(12, "at 19200 8E1", Some(9)), 20);
+        assert_eq!(line, "12/247 ids asked, at");
     }
 
     #[test]
