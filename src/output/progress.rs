@@ -130,6 +130,14 @@ impl ProgressLine {
     }
 }
 
+/// However the command ends (an error on the way, say), what it prints next starts on a
+/// clean line.
+impl Drop for ProgressLine {
+    fn drop(&mut self) {
+        self.clear();
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
