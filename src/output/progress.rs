@@ -24,26 +24,33 @@ pub struct Progress<'a> {
 }
 
 /// The line for `progress` in `width` characters: the bar narrows to leave the words
-/// room, and goes where even a short bar would not fit; words that do not fit are cut.
+/// room, and goes where even a short bar would not fit. Words that still do not fit go
+/// whole from the end (the time left, then the message), so that no number is shown cut;
+/// the count alone is cut only where it does not fit itself.
 pub fn render(progress: &Progress, width: usize) -> String {
-    let mut words = format!(
-        "{}/{} {}, {}",
-        progress.done, progress.total, progress.unit, progress.message
-    );
+    let mut parts = vec![
+        format!("{}/{} {}", progress.done, progress.total, progress.unit),
+        progress.message.to_string(),
+    ];
     if let Some(left) = progress.left {
-        words += &format!(", {} left", human(left));
+        parts.push(format!("{} left", human(left)));
     }
+    let mut words = parts.join(", ");
     let bar_width = width
         .saturating_sub(words.chars().count() + 1)
         .min(BAR_WIDTH);
-    if bar_width < MIN_BAR_WIDTH {
-        return words.chars().take(width).collect();
+    if bar_width >= MIN_BAR_WIDTH {
+        let filled = match progress.total {
+            0 => bar_width,
+            total => (progress.done.min(total) * bar_width as u64 / total) as usize,
+        };
+        return "█".repeat(filled) + &"░".repeat(bar_width - filled) + " " + &words;
     }
-    let filled = match progress.total {
-        0 => bar_width,
-        total => (progress.done.min(total) * bar_width as u64 / total) as usize,
-    };
-    "█".repeat(filled) + &"░".repeat(bar_width - filled) + " " + &words
+    while words.chars().count() > width && parts.len() > 1 {
+        parts.pop();
+        words = parts.join(", ");
+    }
+    words.chars().take(width).collect()
 }
 
 /// `7s`, `3m 05s`, `2h 10m`: whole seconds, as a glance at a terminal wants them.
@@ -191,11 +198,15 @@ mod tests {
     }
 
     #[test]
-    fn where_no_bar_fits_the_words_are_shown_alone_and_cut() {
+    fn where_no_bar_fits_the_words_are_shown_alone_and_what_does_not_fit_goes_whole() {
         let line = render(&at(12, "0 found", Some(9)), 40);
         assert_eq!(line, "12/247 ids asked, 0 found, 9s left");
+        let line = render(&at(6, "0 found", Some(10)), 27);
+        assert_eq!(line, "6/247 ids asked, 0 found");
         let line = render(&at(12, "at 19200 8E1", Some(9)), 20);
-        assert_eq!(line, "12/247 ids asked, at");
+        assert_eq!(line, "12/247 ids asked");
+        let line = render(&at(12, "0 found", None), 10);
+        assert_eq!(line, "12/247 ids");
     }
 
     #[test]
