@@ -94,15 +94,39 @@ impl Pairer {
     /// function waits for one, the master's next request otherwise. `None` for the first
     /// frame of a capture, which nothing before settles.
     pub(super) fn way_of_malformed(&self, slave: u8, function: u8) -> Option<Direction> {
-        let answers = self
-            .pending
-            .as_ref()
-            .is_some_and(|p| p.slave == slave && p.request.function() == function & 0x7F);
-        match (self.seen, answers) {
+        match (self.seen, self.awaits(slave, function)) {
             (false, _) => None,
             (true, true) => Some(Direction::Response),
             (true, false) => Some(Direction::Request),
         }
+    }
+
+    /// A malformed frame of `slave` and `function` that travels as `direction`, as it is
+    /// shown: an answer settles the request that waits for it (it was answered, if not
+    /// well); a request is the master's next, and the one still waiting got no answer.
+    pub(super) fn malformed(
+        &mut self,
+        slave: u8,
+        function: u8,
+        direction: Direction,
+        start: Option<u64>,
+    ) -> Option<Unanswered> {
+        self.seen = true;
+        match direction {
+            Direction::Response => {
+                if self.awaits(slave, function) {
+                    self.pending = None;
+                }
+                None
+            }
+            Direction::Request => self.give_up(start),
+        }
+    }
+
+    fn awaits(&self, slave: u8, function: u8) -> bool {
+        self.pending
+            .as_ref()
+            .is_some_and(|p| p.slave == slave && p.request.function() == function & 0x7F)
     }
 
     fn answer(&mut self, pdu: Pdu, slave: u8) -> Role {
@@ -122,7 +146,7 @@ impl Pairer {
         start: Option<u64>,
         end: Option<u64>,
     ) -> Option<Unanswered> {
-        let previous = self.pending.take();
+        let previous = self.give_up(start);
         // Broadcasts (slave 0) are never answered, and so never "unanswered".
         if slave != 0 {
             self.pending = Some(Pending {
@@ -131,7 +155,12 @@ impl Pairer {
                 time: end,
             });
         }
-        previous.map(|pending| Unanswered {
+        previous
+    }
+
+    /// The request still waiting, given up on as another request starts at `start`.
+    fn give_up(&mut self, start: Option<u64>) -> Option<Unanswered> {
+        self.pending.take().map(|pending| Unanswered {
             waited: match (pending.time, start) {
                 (Some(sent), Some(now)) => Some(now.saturating_sub(sent)),
                 _ => None,

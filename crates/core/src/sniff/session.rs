@@ -510,6 +510,9 @@ impl Session {
                 }
                 if broken == Broken::Malformed {
                     self.counts.malformed += 1;
+                    if let Some(direction) = found.direction {
+                        self.pair_malformed(report.slave, report.function, direction, &found, out);
+                    }
                 } else {
                     // A frame cut short fails its checksum as much as one that broke.
                     self.counts.crc_errors += 1;
@@ -539,6 +542,24 @@ impl Session {
             report.kind = Kind::travelling(direction, report.function);
         }
         report
+    }
+
+    /// A malformed frame in the conversation as it is shown: an answer settles the request
+    /// awaiting it, a request gives up on the one still waiting.
+    fn pair_malformed(
+        &mut self,
+        slave: u8,
+        function: u8,
+        direction: Direction,
+        found: &Found,
+        out: &mut Vec<Record>,
+    ) {
+        if let Some(unanswered) = self
+            .pairer
+            .malformed(slave, function, direction, found.start)
+        {
+            self.unanswered(unanswered, out);
+        }
     }
 
     /// A frame whose checksum holds: paired and counted now, described when shown.
@@ -573,6 +594,10 @@ impl Session {
             .read(envelope.slave, reading, found.start, found.end);
         if let Some(unanswered) = unanswered {
             self.unanswered(unanswered, out);
+        }
+        if let Some(direction) = malformed_travels {
+            let function = envelope.pdu.first().copied().unwrap_or_default();
+            self.pair_malformed(envelope.slave, function, direction, &found, out);
         }
         let kind = match &role {
             Role::Request(_) | Role::Unsettled { .. } => Some(Kind::Request),
@@ -726,6 +751,47 @@ mod tests {
             session.finish(None, &mut out);
             assert_eq!(first_invalid(&out), Some((kind, Some(error.to_string()))));
         }
+    }
+
+    #[test]
+    fn a_malformed_frame_takes_its_place_in_the_conversation_as_it_is_shown() {
+        let with_crc = |pdu: &[u8]| {
+            let crc = crate::codec::checksum::crc16(pdu);
+            [pdu, &crc.to_le_bytes()].concat()
+        };
+        let write_register = with_crc(&[0x11, 0x06, 0x00, 0x01, 0x00, 0x03]);
+        let bad_coil = with_crc(&[0x11, 0x05, 0x00, 0xAC, 0x00, 0x04]);
+        // For each request left unanswered: whether it was still waiting at the end.
+        let unanswered = |capture: &[Vec<u8>]| {
+            let mut session = Session::new(Mode::Rtu, 573.0, 2005, Filter::default());
+            let mut out = Vec::new();
+            session.push(&capture.concat(), &mut out);
+            session.finish(None, &mut out);
+            out.iter()
+                .filter_map(|record| match record {
+                    Record::Unanswered { capture_ended, .. } => Some(*capture_ended),
+                    _ => None,
+                })
+                .collect::<Vec<_>>()
+        };
+        // A malformed request: the write before it got no answer, and the write after it
+        // is answered by its echo, not taken for the first one's answer.
+        let request = [
+            write_register.clone(),
+            bad_coil.clone(),
+            with_crc(&[0x11, 0x85, 0x03]),
+            write_register.clone(),
+            write_register.clone(),
+        ];
+        assert_eq!(unanswered(&request), [false]);
+        // A malformed answer: the write it answers is answered.
+        let answer = [
+            with_crc(&[0x02, 0x03, 0x00, 0x00, 0x00, 0x01]),
+            with_crc(&[0x02, 0x03, 0x02, 0x00, 0x07]),
+            with_crc(&[0x11, 0x05, 0x00, 0xAC, 0xFF, 0x00]),
+            bad_coil,
+        ];
+        assert_eq!(unanswered(&answer), []);
     }
 
     #[test]
