@@ -68,7 +68,8 @@ the answer a request awaits), and one whose CRC holds there but whose PDU does n
 malformed; elsewhere its bytes are noise. A malformed frame is shown as the request or answer \
 it travels as, and what is wrong with it read that way: where its layout is the same both \
 ways (a 05 or 06 echo), it is the answer a request of its slave and function awaits, else \
-the master's next request. On a live line (or a replay with its .timing), 3.5 \
+the master's next request; it takes that place in the conversation (as an answer it answers \
+the request waiting, as a request it ends the wait of the one before). On a live line (or a replay with its .timing), 3.5 \
 characters of silence inside bytes that do not make a whole frame before it end them: they \
 are a frame cut short where the conversation expects a frame ([incomplete], counted as a CRC \
 error), noise elsewhere, and the frame after the silence starts clean; the answer awaited of \
