@@ -76,6 +76,12 @@ pub fn crc16(bytes: &[u8]) -> u16 {
     }
 }
 
+/// `body` with its CRC appended: an RTU frame, for the tests of the framer and the sniffer.
+#[cfg(test)]
+pub(crate) fn rtu(body: &[u8]) -> Vec<u8> {
+    [body, &crc16(body).to_le_bytes()].concat()
+}
+
 /// Whether an RTU frame (address, PDU, CRC) ends in the CRC of what comes before it.
 #[inline]
 pub fn crc_holds(frame: &[u8]) -> bool {

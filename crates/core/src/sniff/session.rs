@@ -577,16 +577,16 @@ impl Session {
                 FrameRecord::new(number, found, at, report)
             });
         };
+        let function = envelope.pdu.first().copied().unwrap_or_default();
         // The PDU is read once: to pair it, and then to describe that reading.
         let reading = Reading::infer(&envelope.pdu);
         // A malformed frame is read the way it travels: as the framer found it, or, where
         // its layout is the same both ways (a 05 or 06 echo), as the conversation before
         // it has it.
         let malformed_travels = match reading {
-            Reading::Neither { .. } => found.direction.or_else(|| {
-                let function = envelope.pdu.first().copied().unwrap_or_default();
-                self.pairer.way_of_malformed(envelope.slave, function)
-            }),
+            Reading::Neither { .. } => found
+                .direction
+                .or_else(|| self.pairer.way_of_malformed(envelope.slave, function)),
             _ => None,
         };
         let (role, unanswered) = self
@@ -596,7 +596,6 @@ impl Session {
             self.unanswered(unanswered, out);
         }
         if let Some(direction) = malformed_travels {
-            let function = envelope.pdu.first().copied().unwrap_or_default();
             self.pair_malformed(envelope.slave, function, direction, &found, out);
         }
         let kind = match &role {
@@ -606,7 +605,6 @@ impl Session {
         };
         self.counts.tell(envelope.slave, kind);
         self.counts.malformed += u64::from(kind.is_none());
-        let function = envelope.pdu.first().copied().unwrap_or_default();
         if !self.filter.shows(envelope.slave, function) {
             return None;
         }
@@ -650,22 +648,23 @@ impl Session {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::codec::checksum::rtu;
 
-    /// A read, an answer to it whose byte count is wrong but whose CRC holds, after
-    /// `glitch`, and the read again: the session's counts and records.
-    fn malformed_answer_after(glitch: &[u8]) -> (Counts, Vec<Record>) {
-        let request = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
-        let mut malformed = vec![0x11, 0x03, 0x05, 0x01, 0x02, 0x03, 0x04, 0x05];
-        let crc = crate::codec::checksum::crc16(&malformed);
-        malformed.extend_from_slice(&crc.to_le_bytes());
+    /// A session over the RTU `capture`, to its end: its counts and records.
+    fn sniffed(capture: &[u8]) -> (Counts, Vec<Record>) {
         let mut session = Session::new(Mode::Rtu, 573.0, 2005, Filter::default());
         let mut out = Vec::new();
-        session.push(
-            &[&request[..], glitch, &malformed, &request].concat(),
-            &mut out,
-        );
+        session.push(capture, &mut out);
         session.finish(None, &mut out);
         (session.counts().clone(), out)
+    }
+
+    /// A read, an answer to it whose byte count is wrong but whose CRC holds, after
+    /// `glitch`, and the read again.
+    fn malformed_answer_after(glitch: &[u8]) -> (Counts, Vec<Record>) {
+        let request = rtu(&[0x11, 0x03, 0x00, 0x6B, 0x00, 0x03]);
+        let malformed = rtu(&[0x11, 0x03, 0x05, 0x01, 0x02, 0x03, 0x04, 0x05]);
+        sniffed(&[&request[..], glitch, &malformed, &request].concat())
     }
 
     /// The kind and error of the first frame among `records` that is not valid.
@@ -711,13 +710,9 @@ mod tests {
 
     #[test]
     fn a_malformed_frame_of_the_same_layout_both_ways_is_read_as_the_conversation_has_it() {
-        let with_crc = |pdu: &[u8]| {
-            let crc = crate::codec::checksum::crc16(pdu);
-            [pdu, &crc.to_le_bytes()].concat()
-        };
         let pair = [
-            with_crc(&[0x02, 0x03, 0x00, 0x00, 0x00, 0x01]),
-            with_crc(&[0x02, 0x03, 0x02, 0x00, 0x07]),
+            rtu(&[0x02, 0x03, 0x00, 0x00, 0x00, 0x01]),
+            rtu(&[0x02, 0x03, 0x02, 0x00, 0x07]),
         ]
         .concat();
         // A write of coil value 0004, refused with exception 03; then a read of two
@@ -727,8 +722,8 @@ mod tests {
             (
                 [
                     pair.clone(),
-                    with_crc(&[0x01, 0x05, 0x00, 0x10, 0x00, 0x04]),
-                    with_crc(&[0x01, 0x85, 0x03]),
+                    rtu(&[0x01, 0x05, 0x00, 0x10, 0x00, 0x04]),
+                    rtu(&[0x01, 0x85, 0x03]),
                 ]
                 .concat(),
                 Kind::Request,
@@ -736,8 +731,8 @@ mod tests {
             ),
             (
                 [
-                    with_crc(&[0x01, 0x03, 0x00, 0x00, 0x00, 0x02]),
-                    with_crc(&[0x01, 0x03, 0x03, 0x00, 0x01, 0x02]),
+                    rtu(&[0x01, 0x03, 0x00, 0x00, 0x00, 0x02]),
+                    rtu(&[0x01, 0x03, 0x03, 0x00, 0x01, 0x02]),
                 ]
                 .concat(),
                 Kind::Response,
@@ -745,29 +740,23 @@ mod tests {
             ),
         ];
         for (capture, kind, error) in cases {
-            let mut session = Session::new(Mode::Rtu, 573.0, 2005, Filter::default());
-            let mut out = Vec::new();
-            session.push(&[capture, pair.clone()].concat(), &mut out);
-            session.finish(None, &mut out);
-            assert_eq!(first_invalid(&out), Some((kind, Some(error.to_string()))));
+            let (_, records) = sniffed(&[capture, pair.clone()].concat());
+            assert_eq!(
+                first_invalid(&records),
+                Some((kind, Some(error.to_string())))
+            );
         }
     }
 
     #[test]
     fn a_malformed_frame_takes_its_place_in_the_conversation_as_it_is_shown() {
-        let with_crc = |pdu: &[u8]| {
-            let crc = crate::codec::checksum::crc16(pdu);
-            [pdu, &crc.to_le_bytes()].concat()
-        };
-        let write_register = with_crc(&[0x11, 0x06, 0x00, 0x01, 0x00, 0x03]);
-        let bad_coil = with_crc(&[0x11, 0x05, 0x00, 0xAC, 0x00, 0x04]);
+        let write_register = rtu(&[0x11, 0x06, 0x00, 0x01, 0x00, 0x03]);
+        let bad_coil = rtu(&[0x11, 0x05, 0x00, 0xAC, 0x00, 0x04]);
         // For each request left unanswered: whether it was still waiting at the end.
         let unanswered = |capture: &[Vec<u8>]| {
-            let mut session = Session::new(Mode::Rtu, 573.0, 2005, Filter::default());
-            let mut out = Vec::new();
-            session.push(&capture.concat(), &mut out);
-            session.finish(None, &mut out);
-            out.iter()
+            let (_, records) = sniffed(&capture.concat());
+            records
+                .iter()
                 .filter_map(|record| match record {
                     Record::Unanswered { capture_ended, .. } => Some(*capture_ended),
                     _ => None,
@@ -779,16 +768,16 @@ mod tests {
         let request = [
             write_register.clone(),
             bad_coil.clone(),
-            with_crc(&[0x11, 0x85, 0x03]),
+            rtu(&[0x11, 0x85, 0x03]),
             write_register.clone(),
             write_register.clone(),
         ];
         assert_eq!(unanswered(&request), [false]);
         // A malformed answer: the write it answers is answered.
         let answer = [
-            with_crc(&[0x02, 0x03, 0x00, 0x00, 0x00, 0x01]),
-            with_crc(&[0x02, 0x03, 0x02, 0x00, 0x07]),
-            with_crc(&[0x11, 0x05, 0x00, 0xAC, 0xFF, 0x00]),
+            rtu(&[0x02, 0x03, 0x00, 0x00, 0x00, 0x01]),
+            rtu(&[0x02, 0x03, 0x02, 0x00, 0x07]),
+            rtu(&[0x11, 0x05, 0x00, 0xAC, 0xFF, 0x00]),
             bad_coil,
         ];
         assert_eq!(unanswered(&answer), []);

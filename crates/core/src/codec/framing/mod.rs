@@ -761,18 +761,12 @@ mod tests {
             None
         );
     }
-    use crate::codec::checksum::crc16;
+    use crate::codec::checksum::{crc16, rtu};
 
     const REQUEST: [u8; 8] = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
     const ANSWER: [u8; 11] = [
         0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64, 0xC8, 0xBA,
     ];
-
-    fn rtu(body: &[u8]) -> Vec<u8> {
-        let mut frame = body.to_vec();
-        frame.extend_from_slice(&crc16(body).to_le_bytes());
-        frame
-    }
 
     fn framer(mode: Mode) -> Framer {
         Framer::new(mode, 573.0, 2005)
