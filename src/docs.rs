@@ -357,7 +357,8 @@ fn examples_help(examples: &[Example]) -> String {
 /// The clap command, built: examples attached to each `--help`, and each command's help
 /// showing only the global options it takes.
 pub fn command() -> clap::Command {
-    let mut command = Cli::command().after_long_help(examples_help(examples_of("")));
+    let mut command = crate::cli::with_long_abouts(Cli::command())
+        .after_long_help(examples_help(examples_of("")));
     for (name, examples) in EXAMPLES.iter().filter(|(name, _)| !name.is_empty()) {
         let help = examples_help(examples);
         command = command.mut_subcommand(*name, |sub| sub.after_long_help(help));
@@ -368,21 +369,24 @@ pub fn command() -> clap::Command {
     hide_untaken_options(crate::cli::with_argument_help(command))
 }
 
-/// The definition `args` are parsed with first. A call for help gets all of [`command`].
-/// Any other command line is parsed with the common options and only the command it
-/// seems to name, or no command at all when it names none (`mbtool --version`). Every
+/// The definition `args` are parsed with first, and the words to give it. A call for help
+/// gets all of [`command`]. Any other command line is parsed with only the command it
+/// names, or with no command at all when it names none (`mbtool --version`). Every
 /// command's arguments are derived only when it is built (clap's `defer`), and before a
-/// parse clap copies every global option into every command: both cost each run more than
-/// most commands' own work. A command line this refuses is parsed again with
-/// [`whole_parser`], so the parse and its errors are the same either way; only help and
-/// errors show what [`command`] adds.
-pub fn parser(args: &[std::ffi::OsString]) -> clap::Command {
+/// parse clap copies every global option into every command, and after it copies each
+/// option's value between the levels of the matches: all of it costs a one-shot command
+/// more than its own work. So the command named is given the common options itself, not
+/// as globals, and those typed before its name are moved after it
+/// ([`options_after_command`]); where they cannot be, the options stay global on the top.
+/// A command line this refuses is parsed again with [`whole_parser`], so the parse and its
+/// errors are the same either way; only help and errors show what [`command`] adds.
+pub fn parser(args: &[std::ffi::OsString]) -> (clap::Command, Vec<std::ffi::OsString>) {
     let help = args
         .iter()
         .skip(1)
         .any(|arg| ["-h", "--help", "help"].iter().any(|word| arg == *word));
     if help {
-        return command();
+        return (command(), args.to_vec());
     }
     // The commands as derived: names, aliases and help, their arguments deferred.
     let commands = <crate::cli::Command as clap::Subcommand>::augment_subcommands(
@@ -390,11 +394,98 @@ pub fn parser(args: &[std::ffi::OsString]) -> clap::Command {
     );
     let named =
         named_command(&commands, args).and_then(|name| commands.find_subcommand(&name).cloned());
-    let top = <crate::cli::Common as clap::Args>::augment_args(top_of_parse());
-    match named {
-        Some(named) => top.subcommand(named),
-        None => top,
+    let Some(named) = named else {
+        return (
+            <crate::cli::Common as clap::Args>::augment_args(top_of_parse()),
+            args.to_vec(),
+        );
+    };
+    let mut with_options = <crate::cli::Common as clap::Args>::augment_args(named.clone());
+    // Global options at the command parsed are still copied between levels of the
+    // matches, 45 of them each time: they need be global only to reach the commands under.
+    if !crate::cli::COMMANDS_OF_COMMANDS.contains(&with_options.get_name()) {
+        with_options = with_options.mut_args(|arg| arg.global(false));
     }
+    match options_after_command(&with_options, args) {
+        Some(moved) => (top_of_parse().subcommand(with_options), moved),
+        None => (
+            <crate::cli::Common as clap::Args>::augment_args(top_of_parse()).subcommand(named),
+            args.to_vec(),
+        ),
+    }
+}
+
+/// `args` with the common options typed before the command moved after its name, so that
+/// clap finds them where the command defines them and has nothing to copy between levels;
+/// `None` where a word before the command is anything but a plainly spelt common option
+/// and its value, or an option typed before is typed after it too (clap keeps the later
+/// one; typed twice in one place, it refuses them or adds them up).
+fn options_after_command(
+    named: &clap::Command,
+    args: &[std::ffi::OsString],
+) -> Option<Vec<std::ffi::OsString>> {
+    let words: Vec<&str> = args.iter().map(|arg| arg.to_str()).collect::<Option<_>>()?;
+    let takes_value = |arg: &clap::Arg| arg.get_action().takes_values();
+    let mut moved: Vec<&clap::Arg> = Vec::new();
+    let mut at = 1;
+    while let Some(word) = words.get(at) {
+        let option = if let Some(long) = word.strip_prefix("--") {
+            let (name, value) = long
+                .split_once('=')
+                .map_or((long, false), |(name, _)| (name, true));
+            let arg = named
+                .get_arguments()
+                .find(|arg| arg.get_long() == Some(name))?;
+            (arg, if takes_value(arg) && !value { 2 } else { 1 })
+        } else if let Some(short) = word.strip_prefix('-') {
+            let mut chars = short.chars();
+            let letter = chars.next()?;
+            let arg = named
+                .get_arguments()
+                .find(|arg| arg.get_short() == Some(letter))?;
+            match (takes_value(arg), chars.as_str().is_empty()) {
+                (true, true) => (arg, 2),
+                (true, false) => (arg, 1),
+                (false, true) => (arg, 1),
+                // A cluster of flags (-vp).
+                (false, false) => return None,
+            }
+        } else {
+            break;
+        };
+        let (arg, length) = option;
+        if length == 2 && words.get(at + 1).is_none_or(|value| value.starts_with('-')) {
+            return None;
+        }
+        moved.push(arg);
+        at += length;
+    }
+    let command = words.get(at)?;
+    let mut names = std::iter::once(named.get_name()).chain(named.get_all_aliases());
+    if !names.any(|name| name == *command) {
+        return None;
+    }
+    let typed_again = words[at + 1..].iter().any(|word| {
+        moved.iter().any(|arg| {
+            let long = arg.get_long().is_some_and(|long| {
+                word.strip_prefix("--")
+                    .is_some_and(|rest| rest.split('=').next() == Some(long))
+            });
+            let short = arg.get_short().is_some_and(|short| {
+                !word.starts_with("--") && word.starts_with('-') && word.contains(short)
+            });
+            long || short
+        })
+    });
+    if typed_again {
+        return None;
+    }
+    let mut moved_args = Vec::with_capacity(args.len());
+    moved_args.push(args[0].clone());
+    moved_args.push(args[at].clone());
+    moved_args.extend_from_slice(&args[1..at]);
+    moved_args.extend_from_slice(&args[at + 1..]);
+    Some(moved_args)
 }
 
 /// The top of the command line as [`Cli`] derives it, less its commands and options: the

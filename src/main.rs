@@ -12,9 +12,8 @@ use std::io;
 use std::os::raw::{c_char, c_int};
 
 use clap::error::{ContextKind, ContextValue, ErrorKind};
-use clap::FromArgMatches;
 
-use mbtool::cli::{Cli, Command};
+use mbtool::cli::Command;
 use mbtool::settings::{self, Settings};
 
 /// The process's entry, called by the C runtime. The standard library's own start would
@@ -81,17 +80,13 @@ fn run() -> u8 {
 /// becomes one `mbtool: ` line. Both end with exit status 2.
 fn parse() -> Result<(Settings, Command), u8> {
     let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
-    let parse_with = |command: &mut clap::Command| {
-        let matches = command.try_get_matches_from_mut(args.iter());
-        matches.and_then(|m| Ok((Cli::from_arg_matches(&m)?, m)))
-    };
-    let mut command = mbtool::docs::parser(&args);
-    let mut parsed = parse_with(&mut command);
+    let (mut command, first_args) = mbtool::docs::parser(&args);
+    let mut parsed = settings::read(&mut command, &first_args);
     if parsed.as_ref().is_err_and(|error| !shown(error)) {
         command = mbtool::docs::whole_parser(&args);
-        parsed = parse_with(&mut command);
+        parsed = settings::read(&mut command, &args);
     }
-    let (cli, matches) = parsed.map_err(|error| match error.kind() {
+    let (cli, origins) = parsed.map_err(|error| match error.kind() {
         ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match error.print() {
             // `mbtool --help | head -3` is the reader's choice.
             Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
@@ -109,11 +104,10 @@ fn parse() -> Result<(Settings, Command), u8> {
             2
         }
     })?;
-    let resolved = settings::resolve(&cli, &command, &matches);
-    // Freed by the exit: freeing them here is a twelfth of a one-shot command's
-    // instructions, and a trim of the heap.
+    let resolved = settings::resolve(&cli, &command, &origins);
+    // Freed by the exit: freeing it here is a tenth of a one-shot command's instructions,
+    // and a trim of the heap.
     std::mem::forget(command);
-    std::mem::forget(matches);
     match resolved {
         Ok(settings) => Ok((settings, cli.command)),
         Err(message) => {

@@ -7,9 +7,10 @@
 use std::path::PathBuf;
 use std::time::Duration;
 
+use clap::parser::ValueSource;
 use clap::ValueEnum;
 
-use crate::cli::{takes_option, Cli, Command, OutputFormat};
+use crate::cli::{is_common_option, takes_option, Cli, Command, OutputFormat};
 use crate::output::{colour_wanted, Format, Style};
 use mbtool_core::codec::Mode;
 use mbtool_core::master::failover::{SwitchCondition, SwitchRule};
@@ -115,27 +116,96 @@ pub struct Poll {
     pub log: Option<PathBuf>,
 }
 
+/// The command line `args` parsed with `definition`: what it says, and where each value
+/// came from.
+pub fn read(
+    definition: &mut clap::Command,
+    args: &[std::ffi::OsString],
+) -> Result<(Cli, Origins), clap::Error> {
+    let mut matches = definition.try_get_matches_from_mut(args)?;
+    let origins = Origins::of(&matches);
+    let cli = Cli::take_from(&mut matches)?;
+    // What is left of the matches is freed by the exit: a one-shot command is mostly its
+    // start, and freeing is work it does not need.
+    std::mem::forget(matches);
+    Ok((cli, origins))
+}
+
+/// The command given and where each of its options' values came from, read from clap's
+/// matches before they are taken apart into a [`Cli`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Origins {
+    /// The names of the command given: `["read-holding"]`, `["encode", "write-coil"]`.
+    path: Vec<String>,
+    /// Each common option with a value, and whether it was typed, set in the environment
+    /// or is the default.
+    sources: Vec<(String, ValueSource)>,
+}
+
+impl Origins {
+    pub fn of(matches: &clap::ArgMatches) -> Origins {
+        let mut path = Vec::new();
+        let mut leaf = matches;
+        while let Some((name, sub)) = leaf.subcommand() {
+            path.push(name.to_string());
+            leaf = sub;
+        }
+        // The command's own matches hold every option, wherever on the line it was typed.
+        let mut sources: Vec<(String, ValueSource)> = leaf
+            .ids()
+            .filter(|id| is_common_option(id.as_str()))
+            .filter_map(|id| Some((id.to_string(), leaf.value_source(id.as_str())?)))
+            .collect();
+        // By name: the same however the line was parsed.
+        sources.sort_by(|a, b| a.0.cmp(&b.0));
+        Origins { path, sources }
+    }
+
+    /// The names of the command given: `["read-holding"]`, `["encode", "write-coil"]`.
+    pub fn path(&self) -> Vec<&str> {
+        self.path.iter().map(String::as_str).collect()
+    }
+
+    fn source(&self, id: &str) -> Option<ValueSource> {
+        self.sources
+            .iter()
+            .find_map(|(known, source)| (known == id).then_some(*source))
+    }
+
+    /// Whether option `id` was typed on the command line.
+    fn typed(&self, id: &str) -> bool {
+        self.source(id) == Some(ValueSource::CommandLine)
+    }
+
+    /// Whether option `id` was typed or set in the environment.
+    fn given(&self, id: &str) -> bool {
+        !matches!(self.source(id), None | Some(ValueSource::DefaultValue))
+    }
+
+    /// The options typed on the command line.
+    fn typed_ids(&self) -> impl Iterator<Item = &str> {
+        self.sources
+            .iter()
+            .filter(|(_, source)| *source == ValueSource::CommandLine)
+            .map(|(id, _)| id.as_str())
+    }
+}
+
 /// The settings of a parsed command line, or the one-line message that refuses it.
 pub fn resolve(
     cli: &Cli,
     definition: &clap::Command,
-    matches: &clap::ArgMatches,
+    origins: &Origins,
 ) -> Result<Settings, String> {
-    if let Some(message) = untaken_option(definition, matches)
-        .or_else(|| sweep_outside_scan(cli, matches))
+    if let Some(message) = untaken_option(definition, origins)
+        .or_else(|| sweep_outside_scan(cli, origins))
         .or_else(|| output_problem(cli))
     {
         return Err(message);
     }
     let c = &cli.common.connection;
-    let leaf = leaf(matches);
-    let given = |id: &str| {
-        !matches!(
-            leaf.value_source(id),
-            None | Some(clap::parser::ValueSource::DefaultValue)
-        )
-    };
-    let (direction, direction_typed) = direction(cli, leaf)?;
+    let given = |id: &str| origins.given(id);
+    let (direction, direction_typed) = direction(cli, origins)?;
     // scan asks many ids that are not there: its timeout is short.
     let default_timeout = match cli.command {
         Command::Scan(_) => Duration::from_millis(100),
@@ -172,7 +242,7 @@ pub fn resolve(
             },
             tls_typed: ["cert", "key", "ca", "tls_server_name"]
                 .iter()
-                .any(|id| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine)),
+                .any(|id| origins.typed(id)),
             tell_session: cli.common.output.verbose,
         },
         output: Output {
@@ -206,8 +276,8 @@ pub fn resolve(
         },
     };
     // A command that does not take a second path ignores one set in the environment.
-    if takes_option(&command_path(matches), "secondary_port") {
-        redundancy(cli, leaf, &mut settings.connection)?;
+    if takes_option(&origins.path(), "secondary_port") {
+        redundancy(cli, origins, &mut settings.connection)?;
     }
     Ok(settings)
 }
@@ -215,18 +285,16 @@ pub fn resolve(
 /// `--secondary-port` and its settings, each the primary's where not given, and the rule
 /// for changing paths. The other options typed without a secondary port are refused, as
 /// they would do nothing.
-fn redundancy(cli: &Cli, leaf: &clap::ArgMatches, primary: &mut Connection) -> Result<(), String> {
+fn redundancy(cli: &Cli, origins: &Origins, primary: &mut Connection) -> Result<(), String> {
     let r = &cli.common.redundancy;
     let Some(port) = r.secondary_port.clone().filter(|port| !port.is_empty()) else {
-        let typed = leaf.ids().find(|id| {
-            let id = id.as_str();
-            (id.starts_with("secondary_") || id.starts_with("switch_"))
-                && leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine)
-        });
+        let typed = origins
+            .typed_ids()
+            .find(|id| id.starts_with("secondary_") || id.starts_with("switch_"));
         return match typed {
             Some(id) => Err(format!(
                 "--{} needs --secondary-port: the other path to the device",
-                id.as_str().replace('_', "-")
+                id.replace('_', "-")
             )),
             None => Ok(()),
         };
@@ -280,32 +348,12 @@ fn redundancy(cli: &Cli, leaf: &clap::ArgMatches, primary: &mut Connection) -> R
     Ok(())
 }
 
-/// The names of the command given: `["read-holding"]`, `["encode", "write-coil"]`.
-fn command_path(matches: &clap::ArgMatches) -> Vec<&str> {
-    let mut path = Vec::new();
-    let mut leaf = matches;
-    while let Some((name, sub)) = leaf.subcommand() {
-        path.push(name);
-        leaf = sub;
-    }
-    path
-}
-
-/// The matches of the command itself, where its global options are found.
-fn leaf(matches: &clap::ArgMatches) -> &clap::ArgMatches {
-    let mut leaf = matches;
-    while let Some((_, sub)) = leaf.subcommand() {
-        leaf = sub;
-    }
-    leaf
-}
-
 /// `--rs485` or `--rts-toggle` with their timing, and whether one of them was typed. What
 /// is typed wins over the environment; the timing options typed alone are refused, as
 /// they would do nothing.
-fn direction(cli: &Cli, leaf: &clap::ArgMatches) -> Result<(DirectionControl, bool), String> {
+fn direction(cli: &Cli, origins: &Origins) -> Result<(DirectionControl, bool), String> {
     let c = &cli.common.connection;
-    let typed = |id: &str| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine);
+    let typed = |id: &str| origins.typed(id);
     let (kernel, toggle) = match (c.rs485 && c.rts_toggle, typed("rs485"), typed("rts_toggle")) {
         (false, ..) => (c.rs485, c.rts_toggle),
         (true, true, true) => {
@@ -369,9 +417,8 @@ fn output_problem(cli: &Cli) -> Option<String> {
 /// A list of baud rates or parities typed for a command that takes one, as a one-line
 /// message. A list from the environment (MBTOOL_BAUD=9600,19200, set for scans) gives
 /// the other commands its first value.
-fn sweep_outside_scan(cli: &Cli, matches: &clap::ArgMatches) -> Option<String> {
-    let leaf = leaf(matches);
-    let typed = |id: &str| leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine);
+fn sweep_outside_scan(cli: &Cli, origins: &Origins) -> Option<String> {
+    let typed = |id: &str| origins.typed(id);
     let several = match (
         cli.common.connection.baud.len(),
         cli.common.connection.parity.len(),
@@ -386,14 +433,16 @@ fn sweep_outside_scan(cli: &Cli, matches: &clap::ArgMatches) -> Option<String> {
 
 /// The first global option typed on the command line that the command given does not
 /// take, as a one-line message: `decode does not take --baud (see 'mbtool decode --help')`.
-fn untaken_option(command: &clap::Command, matches: &clap::ArgMatches) -> Option<String> {
-    let path = command_path(matches);
-    let leaf = leaf(matches);
-    let typed = command.get_arguments().find(|arg| {
+fn untaken_option(command: &clap::Command, origins: &Origins) -> Option<String> {
+    let path = origins.path();
+    // The command's own definition holds the common options, whether it defines them
+    // itself or clap copied them there in the parse.
+    let definition = path
+        .iter()
+        .try_fold(command, |command, name| command.find_subcommand(name))?;
+    let typed = definition.get_arguments().find(|arg| {
         let id = arg.get_id().as_str();
-        arg.is_global_set()
-            && !takes_option(&path, id)
-            && leaf.value_source(id) == Some(clap::parser::ValueSource::CommandLine)
+        is_common_option(id) && !takes_option(&path, id) && origins.typed(id)
     })?;
     let name = match (typed.get_long(), typed.get_short()) {
         (Some(long), _) => format!("--{long}"),

@@ -63,6 +63,22 @@ pub struct Cli {
     pub command: Command,
 }
 
+impl Cli {
+    /// The command line as clap's `matches` hold it, taken out of them. The common options
+    /// are read from the command's own matches: clap copies them there from wherever they
+    /// were typed, and where the command defines them itself (`docs::parser`) they are
+    /// nowhere else.
+    pub fn take_from(matches: &mut clap::ArgMatches) -> Result<Cli, clap::Error> {
+        let mut leaf = &*matches;
+        while let Some((_, sub)) = leaf.subcommand() {
+            leaf = sub;
+        }
+        let common = <Common as clap::FromArgMatches>::from_arg_matches(leaf)?;
+        let command = <Command as clap::FromArgMatches>::from_arg_matches_mut(matches)?;
+        Ok(Cli { common, command })
+    }
+}
+
 // The options every command shares (each takes those `takes_option` says), given before
 // the command or after it. A plain comment: a doc comment would become the about of the
 // top of the command line. A command line is parsed with these and the one command it
@@ -90,59 +106,72 @@ pub enum Command {
     Request(RequestCommand),
 
     /// Find the slaves on a line and the settings they use
-    #[command(long_about = SCAN_ABOUT)]
     Scan(ScanArgs),
 
     /// Watch values live, full screen: min, max, trend, changes
-    #[command(long_about = WATCH_ABOUT)]
     Watch(ReadByReferenceArgs),
 
     /// Ask a device who it is: identification and server id
-    #[command(long_about = INFO_ABOUT)]
     Info(InfoArgs),
 
     /// A device's health: round trips, counters, status
-    #[command(long_about = DIAG_ABOUT)]
     Diag(DiagArgs),
 
     /// Save a device's tables to a data file, holes left out
-    #[command(long_about = DUMP_ABOUT)]
     Dump(DumpArgs),
 
     /// Write a data file back to a device, and check it
-    #[command(long_about = RESTORE_ABOUT)]
     Restore(RestoreArgs),
 
     /// Decode frames given as arguments or on standard input
-    #[command(long_about = DECODE_ABOUT)]
     Decode(DecodeArgs),
 
     /// Print the frame a request command would send
-    #[command(long_about = ENCODE_ABOUT)]
     Encode {
         #[command(subcommand)]
         request: RequestCommand,
     },
 
     /// Watch a bus without transmitting; frames decoded, paired
-    #[command(long_about = SNIFF_ABOUT)]
     Sniff(SniffArgs),
 
     /// Stand in for a slave on a serial line or TCP
-    #[command(long_about = SERVE_ABOUT)]
     Serve(ServeArgs),
 
     /// Bridge Modbus TCP clients to a serial line, shown live
-    #[command(long_about = GATEWAY_ABOUT)]
     Gateway(GatewayArgs),
 
     /// The serial ports here, and which adapter each one is
-    #[command(long_about = PORTS_ABOUT)]
     Ports(PortsArgs),
 
     /// Write the shell completions and man pages (for packagers and the project's own tree)
     #[command(hide = true)]
     Generate(GenerateArgs),
+}
+
+/// Each command's long help, beside its one-line about. Only the definition that shows
+/// help and writes the man pages takes them (`docs::command`): the one a command line is
+/// parsed with would copy some 20 KB of text on every start, to show none of it.
+const LONG_ABOUTS: &[(&str, &str)] = &[
+    ("scan", SCAN_ABOUT),
+    ("watch", WATCH_ABOUT),
+    ("info", INFO_ABOUT),
+    ("diag", DIAG_ABOUT),
+    ("dump", DUMP_ABOUT),
+    ("restore", RESTORE_ABOUT),
+    ("decode", DECODE_ABOUT),
+    ("encode", ENCODE_ABOUT),
+    ("sniff", SNIFF_ABOUT),
+    ("serve", SERVE_ABOUT),
+    ("gateway", GATEWAY_ABOUT),
+    ("ports", PORTS_ABOUT),
+];
+
+/// `command` with each command's long help.
+pub fn with_long_abouts(command: clap::Command) -> clap::Command {
+    LONG_ABOUTS.iter().fold(command, |command, (name, about)| {
+        command.mut_subcommand(*name, |sub| sub.long_about(*about))
+    })
 }
 
 const PORTS_ABOUT: &str = "\
@@ -225,42 +254,56 @@ fn describe(sub: clap::Command) -> clap::Command {
     })
 }
 
+/// The commands that hold commands of their own (`encode read-holding`).
+pub const COMMANDS_OF_COMMANDS: &[&str] = &["encode"];
+
+// The common options by what they are for: a command takes whole groups of them.
+const LINE: &[&str] = &[
+    "port",
+    "mode",
+    "baud",
+    "parity",
+    "data_bits",
+    "stop_bits",
+    // sniff never sends: it takes them, so that one line's options serve every
+    // command, and leaves RTS alone.
+    "rs485",
+    "rs485_delay_before",
+    "rs485_delay_after",
+    "rts_level",
+    "rts_toggle",
+];
+const MASTER: &[&str] = &["timeout", "retries", "frame_gap", "verbose"];
+const FORMAT: &[&str] = &["output", "json"];
+const ADDRESSES: &[&str] = &["pdu_addresses", "address_base"];
+const SPLIT: &[&str] = &["max_per_request"];
+const REGISTERS: &[&str] = &["value_type", "order"];
+const POLL: &[&str] = &["poll", "poll_count", "log"];
+const TLS: &[&str] = &["cert", "key", "ca", "tls_server_name"];
+const REDUNDANCY: &[&str] = &[
+    "secondary_port",
+    "secondary_baud",
+    "secondary_parity",
+    "secondary_data_bits",
+    "secondary_stop_bits",
+    "secondary_mode",
+    "switch_on",
+    "switch_when",
+];
+const COMMON_GROUPS: &[&[&str]] = &[
+    LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS, POLL, TLS, REDUNDANCY,
+];
+
+/// Whether `id` is one of the options every command shares ([`Common`]), wherever clap
+/// holds it.
+pub fn is_common_option(id: &str) -> bool {
+    COMMON_GROUPS.iter().any(|group| group.contains(&id))
+}
+
 /// Whether the command at `path` (`["read-holding"]`, `["encode", "write-coil"]`) takes the
-/// global option `id`. The options a command does not take are hidden from its help and
+/// common option `id`. The options a command does not take are hidden from its help and
 /// refused when typed on its command line; a value from the environment is never refused.
 pub fn takes_option(path: &[&str], id: &str) -> bool {
-    const LINE: &[&str] = &[
-        "port",
-        "mode",
-        "baud",
-        "parity",
-        "data_bits",
-        "stop_bits",
-        // sniff never sends: it takes them, so that one line's options serve every
-        // command, and leaves RTS alone.
-        "rs485",
-        "rs485_delay_before",
-        "rs485_delay_after",
-        "rts_level",
-        "rts_toggle",
-    ];
-    const MASTER: &[&str] = &["timeout", "retries", "frame_gap", "verbose"];
-    const FORMAT: &[&str] = &["output", "json"];
-    const ADDRESSES: &[&str] = &["pdu_addresses", "address_base"];
-    const SPLIT: &[&str] = &["max_per_request"];
-    const REGISTERS: &[&str] = &["value_type", "order"];
-    const POLL: &[&str] = &["poll", "poll_count", "log"];
-    const TLS: &[&str] = &["cert", "key", "ca", "tls_server_name"];
-    const REDUNDANCY: &[&str] = &[
-        "secondary_port",
-        "secondary_baud",
-        "secondary_parity",
-        "secondary_data_bits",
-        "secondary_stop_bits",
-        "secondary_mode",
-        "switch_on",
-        "switch_when",
-    ];
     let groups: &[&[&str]] = match path {
         ["decode"] => &[&["mode"], FORMAT, REGISTERS],
         ["ports"] => &[FORMAT],
