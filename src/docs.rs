@@ -433,9 +433,7 @@ fn options_after_command(
             let (name, value) = long
                 .split_once('=')
                 .map_or((long, false), |(name, _)| (name, true));
-            let arg = named
-                .get_arguments()
-                .find(|arg| arg.get_long() == Some(name))?;
+            let arg = named.get_arguments().find(|arg| has_long(arg, name))?;
             (arg, if takes_value(arg) && !value { 2 } else { 1 })
         } else if let Some(short) = word.strip_prefix('-') {
             let mut chars = short.chars();
@@ -467,13 +465,17 @@ fn options_after_command(
     }
     let typed_again = words[at + 1..].iter().any(|word| {
         moved.iter().any(|arg| {
-            let long = arg.get_long().is_some_and(|long| {
-                word.strip_prefix("--")
-                    .is_some_and(|rest| rest.split('=').next() == Some(long))
-            });
-            let short = arg.get_short().is_some_and(|short| {
-                !word.starts_with("--") && word.starts_with('-') && word.contains(short)
-            });
+            let long = word
+                .strip_prefix("--")
+                .and_then(|rest| rest.split('=').next())
+                .is_some_and(|name| has_long(arg, name));
+            let mut shorts = arg
+                .get_short()
+                .into_iter()
+                .chain(arg.get_all_short_aliases().into_iter().flatten());
+            let short = !word.starts_with("--")
+                && word.starts_with('-')
+                && shorts.any(|short| word.contains(short));
             long || short
         })
     });
@@ -486,6 +488,16 @@ fn options_after_command(
     moved_args.extend_from_slice(&args[1..at]);
     moved_args.extend_from_slice(&args[at + 1..]);
     Some(moved_args)
+}
+
+/// Whether `--name` spells `arg`, by its name or an alias.
+fn has_long(arg: &clap::Arg, name: &str) -> bool {
+    arg.get_long() == Some(name)
+        || arg
+            .get_all_aliases()
+            .into_iter()
+            .flatten()
+            .any(|alias| alias == name)
 }
 
 /// The top of the command line as [`Cli`] derives it, less its commands and options: the

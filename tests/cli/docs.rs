@@ -235,7 +235,10 @@ fn a_command_line_is_parsed_without_building_every_command() {
     // Only the commands that hold commands keep the options global, to pass them on.
     let mut built = mbtool::cli::Cli::command();
     built.build();
-    for sub in built.get_subcommands().filter(|sub| sub.get_name() != "help") {
+    for sub in built
+        .get_subcommands()
+        .filter(|sub| sub.get_name() != "help")
+    {
         let holds = sub.get_subcommands().any(|sub| sub.get_name() != "help");
         let listed = mbtool::cli::COMMANDS_OF_COMMANDS.contains(&sub.get_name());
         assert_eq!(holds, listed, "{}", sub.get_name());
