@@ -369,9 +369,8 @@ pub fn command() -> clap::Command {
     hide_untaken_options(crate::cli::with_argument_help(command))
 }
 
-/// The definition `args` are parsed with first, and the words to give it. A call for help
-/// gets all of [`command`]. Any other command line is parsed with only the command it
-/// names, or with no command at all when it names none (`mbtool --version`). Every
+/// The definition `args` are parsed with first, and the words to give it: only the
+/// command it names, or with no command at all when it names none (`mbtool --version`). Every
 /// command's arguments are derived only when it is built (clap's `defer`), and before a
 /// parse clap copies every global option into every command, and after it copies each
 /// option's value between the levels of the matches: all of it costs a one-shot command
@@ -379,15 +378,8 @@ pub fn command() -> clap::Command {
 /// as globals, and those typed before its name are moved after it
 /// ([`options_after_command`]); where they cannot be, the options stay global on the top.
 /// A command line this refuses is parsed again with [`whole_parser`], so the parse and its
-/// errors are the same either way; only help and errors show what [`command`] adds.
+/// errors are the same either way, and a call for help with [`command`], which shows it.
 pub fn parser(args: &[std::ffi::OsString]) -> (clap::Command, Vec<std::ffi::OsString>) {
-    let help = args
-        .iter()
-        .skip(1)
-        .any(|arg| ["-h", "--help", "help"].iter().any(|word| arg == *word));
-    if help {
-        return (command(), args.to_vec());
-    }
     // The commands as derived: names, aliases and help, their arguments deferred.
     let commands = <crate::cli::Command as clap::Subcommand>::augment_subcommands(
         clap::Command::new("mbtool"),

@@ -82,8 +82,20 @@ fn parse() -> Result<(Settings, Command), u8> {
     let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
     let (mut command, first_args) = mbtool::docs::parser(&args);
     let mut parsed = settings::read(&mut command, &first_args);
-    if parsed.as_ref().is_err_and(|error| !shown(error)) {
-        command = mbtool::docs::whole_parser(&args);
+    // Read again, as the whole definition reads it: help, with every command built; an
+    // error, told with every command known; and an option typed over a variable of the
+    // environment, whose value the whole definition checks all the same.
+    let again = match &parsed {
+        Err(error) if error.kind() == ErrorKind::DisplayHelp => Some(mbtool::docs::command()),
+        Err(error) if error.kind() == ErrorKind::DisplayVersion => None,
+        Err(_) => Some(mbtool::docs::whole_parser(&args)),
+        Ok((_, origins)) if typed_over_environment(&command, origins) => {
+            Some(mbtool::docs::whole_parser(&args))
+        }
+        Ok(_) => None,
+    };
+    if let Some(whole) = again {
+        command = whole;
         parsed = settings::read(&mut command, &args);
     }
     let (cli, origins) = parsed.map_err(|error| match error.kind() {
@@ -117,12 +129,21 @@ fn parse() -> Result<(Settings, Command), u8> {
     }
 }
 
-/// Help or the version, which clap shows itself: no error to parse again for.
-fn shown(error: &clap::Error) -> bool {
-    matches!(
-        error.kind(),
-        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
-    )
+/// Whether an option typed on the command line has a variable of the environment set too.
+fn typed_over_environment(command: &clap::Command, origins: &settings::Origins) -> bool {
+    let mut leaf = command;
+    for name in origins.path() {
+        match leaf.find_subcommand(name) {
+            Some(sub) => leaf = sub,
+            None => return true,
+        }
+    }
+    leaf.get_arguments()
+        .filter(|arg| origins.typed_ids().any(|id| arg.get_id() == id))
+        .any(|arg| {
+            arg.get_env()
+                .is_some_and(|name| std::env::var_os(name).is_some())
+        })
 }
 
 /// A usage error on one line: what is wrong, clap's tips and the values allowed, and where
@@ -320,13 +341,21 @@ fn from_environment(error: &clap::Error, command: &clap::Command) -> Option<(Str
         .get_arguments()
         .find(|arg| arg.get_long() == Some(long))?;
     let variable = arg.get_env()?.to_string_lossy().into_owned();
-    std::env::var_os(&variable)?;
+    let set = std::env::var_os(&variable)?;
     let flag = format!("--{long}");
     let given = words().any(|word| word == flag || word.starts_with(&format!("{flag}=")))
         || arg
             .get_short()
             .is_some_and(|short| words().any(|word| word.starts_with(&format!("-{short}"))));
-    (!given).then(|| (variable, option.clone()))
+    // Typed over a bad variable, which is refused all the same: the value tells which.
+    let variable_says_it = match error.get(ContextKind::InvalidValue) {
+        Some(ContextValue::String(value)) => {
+            *set.to_string_lossy() == **value
+                && !words().any(|word| word == *value || word.ends_with(&format!("={value}")))
+        }
+        _ => false,
+    };
+    (!given || variable_says_it).then(|| (variable, option.clone()))
 }
 
 fn fail(error: &anyhow::Error) -> u8 {

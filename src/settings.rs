@@ -183,7 +183,7 @@ impl Origins {
     }
 
     /// The options typed on the command line.
-    fn typed_ids(&self) -> impl Iterator<Item = &str> {
+    pub fn typed_ids(&self) -> impl Iterator<Item = &str> {
         self.sources
             .iter()
             .filter(|(_, source)| *source == ValueSource::CommandLine)

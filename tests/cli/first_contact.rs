@@ -323,6 +323,25 @@ fn options_out_of_range_say_the_range_and_whose_value_it_was() {
         "mbtool: invalid value 'fast' in MBTOOL_BAUD (which sets --baud): give a whole number \
          from 50 to 12000000 (see 'mbtool read-holding --help')\n"
     );
+    // Typed over, before the command or after it, a bad variable is refused all the same,
+    // and named.
+    for line in [
+        "--port sim read-holding 17 1 --baud 9600",
+        "--baud 9600 --port sim read-holding 17 1",
+        "-b9600 --port sim read-holding 17 1",
+    ] {
+        let output = mbtool()
+            .env("MBTOOL_BAUD", "fast")
+            .args(line.split_whitespace())
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(2), "{line}");
+        assert!(
+            String::from_utf8_lossy(&output.stderr)
+                .starts_with("mbtool: invalid value 'fast' in MBTOOL_BAUD (which sets --baud)"),
+            "{line}: {output:?}"
+        );
+    }
 }
 
 #[test]
