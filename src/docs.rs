@@ -370,7 +370,7 @@ pub fn command() -> clap::Command {
 }
 
 /// The definition `args` are parsed with first, and the words to give it: only the
-/// command it names, or with no command at all when it names none (`mbtool --version`). Every
+/// command it names, or the top alone when it names none (`mbtool --version`). Every
 /// command's arguments are derived only when it is built (clap's `defer`), and before a
 /// parse clap copies every global option into every command, and after it copies each
 /// option's value between the levels of the matches: all of it costs a one-shot command
@@ -386,11 +386,9 @@ pub fn parser(args: &[std::ffi::OsString]) -> (clap::Command, Vec<std::ffi::OsSt
     );
     let named =
         named_command(&commands, args).and_then(|name| commands.find_subcommand(&name).cloned());
+    // No command: the version, or a line the whole definition tells what is wrong with.
     let Some(named) = named else {
-        return (
-            <crate::cli::Common as clap::Args>::augment_args(top_of_parse()),
-            args.to_vec(),
-        );
+        return (top_of_parse(), args.to_vec());
     };
     let mut with_options = <crate::cli::Common as clap::Args>::augment_args(named.clone());
     // Global options at the command parsed are still copied between levels of the

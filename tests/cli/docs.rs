@@ -266,13 +266,15 @@ fn a_command_line_is_parsed_without_building_every_command() {
         top.is_arg_required_else_help_set(),
         derived.is_arg_required_else_help_set()
     );
-    // An alias names its command too; no command (`--version`) builds none.
+    // An alias names its command too; no command (`--version`) builds none, nor the
+    // common options.
     let (parser, words) = mbtool::docs::parser(&args("mbtool -p sim read-holding-registers 17 1"));
     let names: Vec<&str> = parser.get_subcommands().map(|sub| sub.get_name()).collect();
     assert_eq!(names, ["read-holding"]);
     assert_eq!(words, args("mbtool read-holding-registers -p sim 17 1"));
     let (parser, _) = mbtool::docs::parser(&args("mbtool --version"));
     assert_eq!(parser.get_subcommands().count(), 0);
+    assert_eq!(parser.get_arguments().count(), 0);
     // A refused command line is told with every command, the one named described.
     let whole = mbtool::docs::whole_parser(&args("mbtool read-coils"));
     assert!(whole.get_subcommands().count() > 20);
