@@ -47,7 +47,8 @@ encode takes --port and --mode and no other connection option.";
 pub(super) const SNIFF_ABOUT: &str = "\
 Watch a bus without ever transmitting: every frame as it passes, with its time, the silence \
 before it, slave, function, request or answer, what it says, and its checksum; answers are \
-paired with their requests (400108 = 555), requests that get no answer are shown as such \
+paired with their requests (400108 = 555), an answer that does not fit the request awaiting it \
+(another count of values, a write's echo that differs) says how, requests that get no answer are shown as such \
 (one still waiting when the capture ends, as having none before the capture ended), \
 and bytes that are no frame are counted as noise. A summary ends the capture (Ctrl-C, or \
 the end of --input).

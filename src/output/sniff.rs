@@ -115,6 +115,10 @@ fn frame_json(line: &mut Vec<u8>, frame: &FrameRecord, hex: &str) -> io::Result<
     if frame.paired {
         object.field("paired", &true)?;
     }
+    object.field_if(
+        "mismatch",
+        frame.mismatch.as_ref().map(ToString::to_string).as_ref(),
+    )?;
     if let Some(place) = &frame.tcp {
         object.flatten(&JsonTcp::from(place))?;
     }
@@ -234,6 +238,16 @@ fn frame_summary(report: &FrameReport) -> String {
     let mut text = String::new();
     write_frame_summary(&mut text, report);
     text
+}
+
+/// What a frame of a serial line says, and how an answer does not fit the request it
+/// follows.
+fn write_serial_summary(out: &mut String, frame: &FrameRecord) {
+    use std::fmt::Write as _;
+    write_frame_summary(out, frame.report());
+    if let Some(mismatch) = &frame.mismatch {
+        let _ = write!(out, " (does not fit the request: {mismatch})");
+    }
 }
 
 /// [`frame_summary`], written into `out`.
@@ -397,7 +411,11 @@ impl SniffWriter {
             r.function,
             r.kind.name(),
             r.valid,
-            csv_field(&frame_summary(r)),
+            csv_field(&{
+                let mut summary = String::new();
+                write_serial_summary(&mut summary, frame);
+                summary
+            }),
         )
     }
 
@@ -456,7 +474,7 @@ impl SniffWriter {
         text.clear();
         let colour = if !r.valid {
             Some(RED)
-        } else if r.kind == Kind::Exception {
+        } else if r.kind == Kind::Exception || frame.mismatch.is_some() {
             Some(YELLOW)
         } else {
             None
@@ -492,7 +510,7 @@ impl SniffWriter {
         text.push(' ');
         column(text, line, 87, Align::Left, kind_column(r));
         text.push(' ');
-        write_frame_summary(text, r);
+        write_serial_summary(text, frame);
         // A frame that could not be opened has no checksum to show: its error says why.
         let check = check_column(r);
         if !check.is_empty() {
@@ -630,9 +648,13 @@ impl SniffWriter {
                     0 => String::new(),
                     count => format!(", {count} malformed"),
                 };
+                let mismatched = match counts.mismatched {
+                    0 => String::new(),
+                    count => format!(", {count} not fitting the request"),
+                };
                 writeln!(
                     out,
-                    "summary: {} ({}, {}, {}{malformed}), {} unanswered, {}, {}",
+                    "summary: {} ({}, {}, {}{malformed}), {} unanswered{mismatched}, {}, {}",
                     n(counts.frames, "frame"),
                     n(counts.requests, "request"),
                     n(counts.answers, "answer"),

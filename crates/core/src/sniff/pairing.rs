@@ -4,7 +4,7 @@
 //! 8-byte 01/02 frames), and saying so when neither settles it.
 
 use crate::codec::answer::check;
-use crate::codec::{Direction, Pdu, Reading, Request, Response};
+use crate::codec::{Direction, Mismatch, Pdu, Reading, Request, Response};
 
 /// A request still waiting for its answer.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -23,6 +23,9 @@ pub(super) enum Role {
     Answer {
         pdu: Pdu,
         to: Option<Request>,
+        /// How it does not fit the request of its slave and function that awaited it (a
+        /// count or an echo that differs): that request was answered, wrongly.
+        mismatch: Option<Mismatch>,
     },
     /// Reads both ways, and nothing before it settles which: the first frame of a capture.
     Unsettled {
@@ -130,13 +133,37 @@ impl Pairer {
     }
 
     fn answer(&mut self, pdu: Pdu, slave: u8) -> Role {
-        let to = match &self.pending {
-            Some(p) if p.slave == slave && check(&p.request, &pdu).is_ok() => {
-                self.pending.take().map(|p| p.request)
+        let fit = match &self.pending {
+            Some(p) if p.slave == slave => check(&p.request, &pdu),
+            _ => {
+                return Role::Answer {
+                    pdu,
+                    to: None,
+                    mismatch: None,
+                }
             }
-            _ => None,
         };
-        Role::Answer { pdu, to }
+        match fit {
+            Ok(()) => Role::Answer {
+                pdu,
+                to: self.pending.take().map(|p| p.request),
+                mismatch: None,
+            },
+            // Another function's answer is not this request's.
+            Err(Mismatch::Function { .. }) => Role::Answer {
+                pdu,
+                to: None,
+                mismatch: None,
+            },
+            Err(mismatch) => {
+                self.pending = None;
+                Role::Answer {
+                    pdu,
+                    to: None,
+                    mismatch: Some(mismatch),
+                }
+            }
+        }
     }
 
     fn wait_for(
@@ -215,6 +242,38 @@ mod tests {
         let answer = [0x01, 0x02, 0xFF, 0x03];
         let (role, _) = pairer.read(17, Reading::infer(&answer), None, None);
         assert!(matches!(role, Role::Answer { to: Some(_), .. }));
+    }
+
+    #[test]
+    fn an_answer_that_does_not_fit_the_request_awaiting_it_answers_it_and_says_how() {
+        let mut pairer = Pairer::default();
+        let read_two = [0x03, 0x00, 0x00, 0x00, 0x02];
+        pairer.read(17, Reading::infer(&read_two), None, None);
+        // Another function's answer is not its answer: it still waits.
+        let coils = [0x01, 0x01, 0x05];
+        let (role, _) = pairer.read(17, Reading::infer(&coils), None, None);
+        assert!(matches!(
+            role,
+            Role::Answer {
+                to: None,
+                mismatch: None,
+                ..
+            }
+        ));
+        // One register for two: its answer, which says so.
+        let one_register = [0x03, 0x02, 0x00, 0x05];
+        let (role, _) = pairer.read(17, Reading::infer(&one_register), None, None);
+        let Role::Answer { to, mismatch, .. } = role else {
+            panic!("{role:?}");
+        };
+        assert_eq!(to, None);
+        assert_eq!(
+            mismatch.map(|m| m.to_string()).as_deref(),
+            Some("answer carries 1 registers, the request asked for 2")
+        );
+        // Answered: the next request reports none waiting.
+        let (_, unanswered) = pairer.read(17, Reading::infer(&read_two), None, None);
+        assert_eq!(unanswered, None);
     }
 
     #[test]

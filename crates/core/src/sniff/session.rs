@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use super::pairing::{Pairer, Role, Unanswered};
 use crate::codec::framing::{Ahead, Broken, Event, Found, FoundAhead, Framer, Noise, NoiseBytes};
-use crate::codec::{Direction, Envelope, Mode, Pdu, Reading, Request};
+use crate::codec::{Direction, Envelope, Mismatch, Mode, Pdu, Reading, Request};
 use crate::describe::{
     describe_as, describe_frame, describe_reading, locate_answer, FrameReport, Kind,
 };
@@ -90,6 +90,9 @@ pub struct FrameRecord {
     pub gap: Option<u64>,
     /// An answer that follows its request.
     pub paired: bool,
+    /// An answer that follows a request of its slave and function but does not fit it:
+    /// how (a count or an echo that differs).
+    pub mismatch: Option<Mismatch>,
     /// In a TCP capture: where the frame was.
     pub tcp: Option<TcpPlace>,
 }
@@ -115,6 +118,7 @@ impl FrameRecord {
             reading: RefCell::new(None),
             gap: None,
             paired: false,
+            mismatch: None,
             tcp: None,
         }
     }
@@ -129,6 +133,7 @@ impl FrameRecord {
             reading: RefCell::new(Some(reading)),
             gap: None,
             paired: false,
+            mismatch: None,
             tcp: None,
         }
     }
@@ -163,6 +168,7 @@ impl PartialEq for FrameRecord {
             && self.at == other.at
             && self.gap == other.gap
             && self.paired == other.paired
+            && self.mismatch == other.mismatch
             && self.tcp == other.tcp
             && self.report() == other.report()
     }
@@ -196,6 +202,8 @@ pub struct Counts {
     pub exceptions: u64,
     /// Requests no answer followed.
     pub unanswered: u64,
+    /// Answers that do not fit the request they follow (a count or an echo that differs).
+    pub mismatched: u64,
     /// Frames whose checksum failed.
     pub crc_errors: u64,
     /// Frames with a good checksum whose PDU reads as no request or answer.
@@ -605,13 +613,26 @@ impl Session {
         };
         self.counts.tell(envelope.slave, kind);
         self.counts.malformed += u64::from(kind.is_none());
+        self.counts.mismatched += u64::from(matches!(
+            role,
+            Role::Answer {
+                mismatch: Some(_),
+                ..
+            }
+        ));
         if !self.filter.shows(envelope.slave, function) {
             return None;
         }
+        let mut mismatch = None;
         let (reading, answers, paired) = match role {
             Role::Request(request) => (Reading::One(Pdu::Request(request)), None, false),
-            Role::Answer { pdu, to } => {
+            Role::Answer {
+                pdu,
+                to,
+                mismatch: misfit,
+            } => {
                 let paired = to.is_some();
+                mismatch = misfit;
                 // Only a read's answer takes its addresses from the request.
                 let answers = to.filter(|_| matches!(pdu, Pdu::Response(_)));
                 (Reading::One(pdu), answers, paired)
@@ -641,6 +662,7 @@ impl Session {
             },
         );
         record.paired = paired;
+        record.mismatch = mismatch;
         Some(record)
     }
 }
@@ -781,6 +803,34 @@ mod tests {
             bad_coil,
         ];
         assert_eq!(unanswered(&answer), []);
+    }
+
+    #[test]
+    fn an_answer_that_does_not_fit_its_request_is_shown_counted_and_answers_it() {
+        let read_two = rtu(&[0x01, 0x03, 0x00, 0x00, 0x00, 0x02]);
+        let capture = [
+            read_two.clone(),
+            rtu(&[0x01, 0x03, 0x02, 0x00, 0x05]),
+            read_two,
+            rtu(&[0x01, 0x03, 0x04, 0x00, 0x05, 0x00, 0x06]),
+        ];
+        let (counts, records) = sniffed(&capture.concat());
+        assert_eq!((counts.mismatched, counts.unanswered), (1, 0));
+        let frames: Vec<&FrameRecord> = records
+            .iter()
+            .filter_map(|record| match record {
+                Record::Frame(frame) => Some(frame),
+                _ => None,
+            })
+            .collect();
+        let shown: Vec<(bool, bool)> = frames
+            .iter()
+            .map(|frame| (frame.paired, frame.mismatch.is_some()))
+            .collect();
+        assert_eq!(
+            shown,
+            [(false, false), (false, true), (false, false), (true, false)]
+        );
     }
 
     #[test]
