@@ -70,7 +70,8 @@ malformed; elsewhere its bytes are noise. A malformed frame is shown as the requ
 it travels as, and what is wrong with it read that way: where its layout is the same both \
 ways (a 05 or 06 echo), it is the answer a request of its slave and function awaits, else \
 the master's next request; it takes that place in the conversation (as an answer it answers \
-the request waiting, as a request it ends the wait of the one before). On a live line (or a replay with its .timing), 3.5 \
+the request waiting, as a request it ends the wait of the one before and waits for its own \
+answer, the exception a device refuses it with). On a live line (or a replay with its .timing), 3.5 \
 characters of silence inside bytes that do not make a whole frame before it end them: they \
 are a frame cut short where the conversation expects a frame ([incomplete], counted as a CRC \
 error), noise elsewhere, and the frame after the silence starts clean; the answer awaited of \

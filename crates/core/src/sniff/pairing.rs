@@ -104,17 +104,23 @@ impl Pairer {
         }
     }
 
-    /// A malformed frame of `slave` and `function` that travels as `direction`, as it is
+    /// A malformed frame of `slave`, its PDU `pdu`, that travels as `direction`, as it is
     /// shown: an answer settles the request that waits for it (it was answered, if not
-    /// well); a request is the master's next, and the one still waiting got no answer.
+    /// well); a request is the master's next, and the one still waiting got no answer. A
+    /// malformed request waits for its answer as any request does, kept byte for byte: a
+    /// device refuses it with an exception, which is paired with it.
     pub(super) fn malformed(
         &mut self,
         slave: u8,
-        function: u8,
+        pdu: &[u8],
         direction: Direction,
         start: Option<u64>,
+        end: Option<u64>,
     ) -> Option<Unanswered> {
         self.seen = true;
+        let Some((&function, data)) = pdu.split_first() else {
+            return self.give_up(start);
+        };
         match direction {
             Direction::Response => {
                 if self.awaits(slave, function) {
@@ -122,7 +128,13 @@ impl Pairer {
                 }
                 None
             }
-            Direction::Request => self.give_up(start),
+            Direction::Request => {
+                let request = Request::Other {
+                    function,
+                    data: data.to_vec(),
+                };
+                self.wait_for(slave, request, start, end)
+            }
         }
     }
 

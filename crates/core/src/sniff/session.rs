@@ -519,7 +519,7 @@ impl Session {
                 if broken == Broken::Malformed {
                     self.counts.malformed += 1;
                     if let Some(direction) = found.direction {
-                        self.pair_malformed(report.slave, report.function, direction, &found, out);
+                        self.pair_malformed(direction, &found, out);
                     }
                 } else {
                     // A frame cut short fails its checksum as much as one that broke.
@@ -553,19 +553,20 @@ impl Session {
     }
 
     /// A malformed frame in the conversation as it is shown: an answer settles the request
-    /// awaiting it, a request gives up on the one still waiting.
-    fn pair_malformed(
-        &mut self,
-        slave: u8,
-        function: u8,
-        direction: Direction,
-        found: &Found,
-        out: &mut Vec<Record>,
-    ) {
-        if let Some(unanswered) = self
-            .pairer
-            .malformed(slave, function, direction, found.start)
-        {
+    /// awaiting it, a request gives up on the one still waiting and waits in its place.
+    fn pair_malformed(&mut self, direction: Direction, found: &Found, out: &mut Vec<Record>) {
+        // Its checksum holds: it opens.
+        let Ok(envelope) = Envelope::open_sound(self.mode, &found.bytes) else {
+            return;
+        };
+        let unanswered = self.pairer.malformed(
+            envelope.slave,
+            &envelope.pdu,
+            direction,
+            found.start,
+            found.end,
+        );
+        if let Some(unanswered) = unanswered {
             self.unanswered(unanswered, out);
         }
     }
@@ -604,7 +605,7 @@ impl Session {
             self.unanswered(unanswered, out);
         }
         if let Some(direction) = malformed_travels {
-            self.pair_malformed(envelope.slave, function, direction, &found, out);
+            self.pair_malformed(direction, &found, out);
         }
         let kind = match &role {
             Role::Request(_) | Role::Unsettled { .. } => Some(Kind::Request),
@@ -795,6 +796,23 @@ mod tests {
             write_register.clone(),
         ];
         assert_eq!(unanswered(&request), [false]);
+        // Its exception is its answer, paired with it.
+        let (_, records) = sniffed(&request.concat());
+        let exception_paired = records.iter().any(|record| {
+            matches!(record, Record::Frame(frame) if frame.found.bytes[1] == 0x85 && frame.paired)
+        });
+        assert!(exception_paired);
+        // Unanswered, it is told as any request is.
+        let (_, records) =
+            sniffed(&[rtu(&[0x11, 0x03, 0x00, 0x00, 0x00, 0x01]), bad_coil.clone()].concat());
+        let told: Vec<u8> = records
+            .iter()
+            .filter_map(|record| match record {
+                Record::Unanswered { request, .. } => Some(request.function()),
+                _ => None,
+            })
+            .collect();
+        assert_eq!(told, [0x03, 0x05]);
         // A malformed answer: the write it answers is answered.
         let answer = [
             rtu(&[0x02, 0x03, 0x00, 0x00, 0x00, 0x01]),
