@@ -599,11 +599,13 @@ impl SniffWriter {
                 } else {
                     ""
                 };
+                // A request with nothing after its function code says nothing more.
+                let summary = request_summary(request);
+                let space = if summary.is_empty() { "" } else { " " };
                 let text = format!(
-                    "       no answer from slave {slave} to {} {} {}{ended}{waited}{on}",
+                    "       no answer from slave {slave} to {} {}{space}{summary}{ended}{waited}{on}",
                     request.function(),
                     function::name(request.function()),
-                    request_summary(request)
                 );
                 writeln!(out, "{}", self.paint(YELLOW, text))
             }
