@@ -313,10 +313,12 @@ impl Framer {
         // at every position, are looked for only where they can change the answer.
         let matches = crc_matches(data, MIN_RTU_FRAME, reach);
         let could_grow = data.len() < MAX_RTU_ADU && self.last_bytes_may_grow();
-        let inner_end = if matches.is_empty() && !could_grow {
-            None
-        } else {
-            self.inner_frame_end(at, at + reach)
+        // A frame inside that ends after the longest length whose CRC holds removes none of
+        // them: where no more bytes can give a length, none is looked for past it.
+        let inner_end = match (matches.last(), could_grow) {
+            (_, true) => self.inner_frame_end(at, at + reach),
+            (Some(longest), false) => self.inner_frame_end(at, at + longest),
+            (None, false) => None,
         };
         let limit = inner_end.map_or(reach, |end| end - at - 1);
         let lengths = matches
@@ -346,10 +348,20 @@ impl Framer {
     /// before `end` ends. Only whole frames count, so that the answer depends on the
     /// bytes and not on when they came.
     pub(super) fn inner_frame_end(&self, at: usize, end: usize) -> Option<usize> {
-        let end = end.min(self.buffer.len());
-        (at + 1..end.saturating_sub(MIN_RTU_FRAME - 1))
-            .filter_map(|inner| self.known_frame_len(inner, end).map(|len| inner + len))
-            .min()
+        let mut end = end.min(self.buffer.len());
+        let mut first_end = None;
+        let mut inner = at + 1;
+        // Once a frame is found, one that ends sooner must end by its end, and so start
+        // at least MIN_RTU_FRAME bytes before it: each CRC a user-defined frame's lengths
+        // cost here is one more per byte it holds.
+        while inner + MIN_RTU_FRAME <= end {
+            if let Some(len) = self.known_frame_len(inner, end) {
+                end = inner + len;
+                first_end = Some(end);
+            }
+            inner += 1;
+        }
+        first_end
     }
 
     /// The length of the whole frame of known layout, CRC and PDU sound, at `at` and ending
