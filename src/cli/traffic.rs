@@ -89,7 +89,7 @@ stretch of traffic: all within a thirty-second of a period while the reads are f
 four within a twelfth from 16 reads on), and while such \
 frames are more than chance (one in 200 frames or more, the last within 2,000 frames), that \
 line's gaps are not taken for silence (a frame cut short is kept until the bytes show it is \
-none, as without timing), and mbtool says so once. A device that pauses inside its frame, \
+none, as without timing), and on a live line mbtool says so once. A device that pauses inside its frame, \
 read where the bytes end, leaves a gap at no period: the line's silences are still believed. A gap longer than 64 ms is more than an adapter makes (reads one latency \
 period apart, 32 ms at the longest commonly set, with room for a late read): no frame runs \
 across it, however the line is read. Read a byte at a time, a line's gaps are its own: a silence ends a frame \
