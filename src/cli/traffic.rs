@@ -76,7 +76,8 @@ characters of silence inside bytes that do not make a whole frame before it end 
 are a frame cut short where the conversation expects a frame ([incomplete], counted as a CRC \
 error), noise elsewhere, and the frame after the silence starts clean; the answer awaited of \
 a user-defined function, whose length only the silence tells, is a CRC error when its CRC \
-fails there. This is decided when \
+fails there, and where a shorter reading of it passes its CRC inside a read that could have \
+hidden a gap, the reading that ends at the silence seen is taken. This is decided when \
 the bytes after the silence come. A USB adapter hands bytes over when its latency timer runs \
 out (16 ms by default), so a frame can arrive in two reads a whole period apart that were \
 back to back on the wire: where a line's bytes come in bursts (several a read in a quarter or \

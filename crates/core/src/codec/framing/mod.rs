@@ -1081,6 +1081,36 @@ mod tests {
     }
 
     #[test]
+    fn a_gap_a_read_may_hide_does_not_cut_the_answer_awaited_where_a_longer_reading_ends_at_silence(
+    ) {
+        // The answer to a user-defined request (function 41), 12 bytes whose first four
+        // pass a CRC too, read as 9 bytes and 3, back to back, then silence. The 9 came in a
+        // read long after the one before, which could have hidden a gap after the fourth
+        // byte; the silence seen after the twelfth tells the answer's length.
+        let answer = [
+            0xF7, 0x41, 0x87, 0xB0, 0x54, 0x98, 0x1E, 0xA7, 0xAF, 0x00, 0xE6, 0x33,
+        ];
+        assert!(crc_holds(&answer[..4]) && crc_holds(&answer));
+        let reads: [(&[u8], u64); 8] = [
+            (&[0x01, 0x01, 0x01, 0x5B, 0x10, 0x73], 10_000),
+            (&[0xF7, 0x41, 0xC0, 0xF0], 23_066),
+            (&[0x32], 23_639),
+            (&answer[..9], 43_862),
+            (&answer[9..], 45_581),
+            (&[0x2A, 0x05, 0x0F, 0x0A, 0x00], 63_389),
+            (&[0x00, 0xE8], 64_535),
+            (&[0xC7], 65_108),
+        ];
+        let frames = timed_frames(&reads);
+        assert_eq!(
+            frames.get(2),
+            Some(&(answer.to_vec(), None)),
+            "{frames:02X?}"
+        );
+        assert_eq!(frames.len(), 4, "{frames:02X?}");
+    }
+
+    #[test]
     fn silence_ends_a_frame_cut_short_and_the_next_starts_clean() {
         // The answer cut one byte short, then silence, then a request that starts with the
         // missing byte: read together, the cut answer and that byte pass the CRC.

@@ -2,6 +2,7 @@
 //! made none, since a CRC passes random bytes once in 65,536 tries and a noisy line makes
 //! many tries. Each rule answers one condition of a real bus.
 
+use crate::codec::checksum::crc_matches;
 use crate::codec::function::{
     self, ENCAPSULATED_INTERFACE, EXCEPTION_FLAG, MEI_READ_DEVICE_IDENTIFICATION,
 };
@@ -97,13 +98,23 @@ impl Framer {
         // or it runs across a gap after which no frame starts (`look_rtu` has dropped it
         // otherwise): then the gaps are an adapter's latency timer, and the bytes after it
         // tell nothing either.
-        let by_conversation = self.answers_awaited(frame, candidate.direction)
+        let awaited = self.answers_awaited(frame, candidate.direction);
+        let by_conversation = awaited
             && (candidate.known_layout
                 || !self.times_tell_silence()
-                || self.may_hide_silence_after(end - 1)
                 || self.silence_inside(at, end));
         if self.silence_after(end - 1) || by_conversation {
             return Tell::Yes;
+        }
+        // A gap the read may hide does not outweigh a silence seen: where a longer
+        // reading, its CRC holding, ends at one, that is the answer; while one still may,
+        // it is waited for, up to the longest frame.
+        if awaited && self.may_hide_silence_after(end - 1) {
+            match self.longer_reading_ends_at_silence(at, candidate.len) {
+                Tell::No => return Tell::Yes,
+                Tell::NotYet => return Tell::NotYet,
+                Tell::Yes => {}
+            }
         }
         if end == self.buffer.len() {
             return if self.ended { Tell::Yes } else { Tell::NotYet };
@@ -129,6 +140,23 @@ impl Framer {
                 _ => Tell::No,
             },
             tell => tell,
+        }
+    }
+
+    /// Whether the bytes at `at` read longer than `len`, their CRC holding, up to a byte
+    /// the line's times show silence after; not yet while the bytes may still give one.
+    fn longer_reading_ends_at_silence(&self, at: usize, len: usize) -> Tell {
+        let data = &self.buffer[at..];
+        let longer = crc_matches(data, len + 1, data.len().min(MAX_RTU_ADU));
+        if longer
+            .iter()
+            .any(|longer| self.silence_after(at + longer - 1))
+        {
+            Tell::Yes
+        } else if self.quiet || self.ended || data.len() >= MAX_RTU_ADU {
+            Tell::No
+        } else {
+            Tell::NotYet
         }
     }
 
