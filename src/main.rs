@@ -82,20 +82,28 @@ fn parse() -> Result<(Settings, Command), u8> {
     let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
     let (mut command, first_args) = mbtool::docs::parser(&args);
     let mut parsed = settings::read(&mut command, &first_args);
-    // Read again, as the whole definition reads it: help, with every command built; an
-    // error, told with every command known; and an option typed over a variable of the
-    // environment, whose value the whole definition checks all the same.
-    let again = match &parsed {
-        Err(error) if error.kind() == ErrorKind::DisplayHelp => Some(mbtool::docs::command()),
-        Err(error) if error.kind() == ErrorKind::DisplayVersion => None,
-        Err(_) => Some(mbtool::docs::whole_parser(&args)),
-        Ok((_, origins)) if typed_over_environment(&command, origins) => {
-            Some(mbtool::docs::whole_parser(&args))
-        }
-        Ok(_) => None,
-    };
-    if let Some(whole) = again {
-        command = whole;
+    // Read again, as the whole definition reads it: an error, told with every command
+    // known; an option typed over a variable of the environment, whose value the whole
+    // definition checks all the same; and help, however the line asks for it (`help`,
+    // `-vh`), with every command built and its examples.
+    let (mut whole, mut help) = (false, false);
+    loop {
+        command = match &parsed {
+            Err(error) if error.kind() == ErrorKind::DisplayHelp && !help => {
+                help = true;
+                mbtool::docs::command()
+            }
+            Err(error) if error.kind() == ErrorKind::DisplayVersion => break,
+            Err(_) if !whole && !help => {
+                whole = true;
+                mbtool::docs::whole_parser(&args)
+            }
+            Ok((_, origins)) if !whole && typed_over_environment(&command, origins) => {
+                whole = true;
+                mbtool::docs::whole_parser(&args)
+            }
+            _ => break,
+        };
         parsed = settings::read(&mut command, &args);
     }
     let (cli, origins) = parsed.map_err(|error| match error.kind() {

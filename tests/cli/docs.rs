@@ -466,6 +466,12 @@ fn help_is_the_same_however_it_is_asked_for() {
         let long = help(&format!("{command} --help"));
         assert_eq!(help(&format!("help {command}")), long, "{command}");
     }
+    // The top's too, with its examples.
+    assert_eq!(help("-vh"), help("-h"));
+    let long = help("--help");
+    assert!(long.contains("Examples:"), "{long}");
+    assert_eq!(help("help"), long);
+    assert_eq!(help("-v --help"), long);
     // What the whole definition shows: the command's own arguments under their heading,
     // and only the options it takes.
     let read = help("read-holding -vh");
