@@ -392,7 +392,8 @@ pub fn parser(args: &[std::ffi::OsString]) -> (clap::Command, Vec<std::ffi::OsSt
     };
     let mut with_options = <crate::cli::Common as clap::Args>::augment_args(named.clone());
     // Global options at the command parsed are still copied between levels of the
-    // matches, 45 of them each time: they need be global only to reach the commands under.
+    // matches, every one of them each time: they need be global only to reach the commands
+    // under.
     if !crate::cli::COMMANDS_OF_COMMANDS.contains(&with_options.get_name()) {
         with_options = with_options.mut_args(|arg| arg.global(false));
     }

@@ -139,13 +139,9 @@ fn parse() -> Result<(Settings, Command), u8> {
 
 /// Whether an option typed on the command line has a variable of the environment set too.
 fn typed_over_environment(command: &clap::Command, origins: &settings::Origins) -> bool {
-    let mut leaf = command;
-    for name in origins.path() {
-        match leaf.find_subcommand(name) {
-            Some(sub) => leaf = sub,
-            None => return true,
-        }
-    }
+    let Some(leaf) = origins.command_in(command) else {
+        return true;
+    };
     leaf.get_arguments()
         .filter(|arg| origins.typed_ids().any(|id| arg.get_id() == id))
         .any(|arg| {

@@ -166,6 +166,15 @@ impl Origins {
         self.path.iter().map(String::as_str).collect()
     }
 
+    /// The definition of the command given, in the `definition` the line was parsed
+    /// with: it holds the common options, whether it defines them itself or clap copied
+    /// them there in the parse.
+    pub fn command_in<'a>(&self, definition: &'a clap::Command) -> Option<&'a clap::Command> {
+        self.path
+            .iter()
+            .try_fold(definition, |command, name| command.find_subcommand(name))
+    }
+
     fn source(&self, id: &str) -> Option<ValueSource> {
         self.sources
             .iter()
@@ -435,12 +444,7 @@ fn sweep_outside_scan(cli: &Cli, origins: &Origins) -> Option<String> {
 /// take, as a one-line message: `decode does not take --baud (see 'mbtool decode --help')`.
 fn untaken_option(command: &clap::Command, origins: &Origins) -> Option<String> {
     let path = origins.path();
-    // The command's own definition holds the common options, whether it defines them
-    // itself or clap copied them there in the parse.
-    let definition = path
-        .iter()
-        .try_fold(command, |command, name| command.find_subcommand(name))?;
-    let typed = definition.get_arguments().find(|arg| {
+    let typed = origins.command_in(command)?.get_arguments().find(|arg| {
         let id = arg.get_id().as_str();
         is_common_option(id) && !takes_option(&path, id) && origins.typed(id)
     })?;

@@ -191,6 +191,24 @@ fn every_command_says_which_options_it_takes() {
     }
 }
 
+/// The options every command shares are known by name where they are read (which a
+/// command takes, where a value came from): the names are those of the definition.
+#[test]
+fn the_common_options_by_name_are_those_of_the_definition() {
+    let common = <mbtool::cli::Common as clap::Args>::augment_args(clap::Command::new("mbtool"));
+    let ids: Vec<&str> = common
+        .get_arguments()
+        .map(|arg| arg.get_id().as_str())
+        .collect();
+    assert!(ids.len() > 30, "{ids:?}");
+    for id in &ids {
+        assert!(mbtool::cli::is_common_option(id), "{id}");
+    }
+    for own in ["slave", "address", "count", "values", "pdu", "bogus"] {
+        assert!(!mbtool::cli::is_common_option(own), "{own}");
+    }
+}
+
 /// A command line is parsed without building every command's definition first: deriving
 /// every command's arguments, and copying every global option into every command, cost
 /// each run more than its work.
