@@ -518,8 +518,10 @@ impl Session {
                 }
                 if broken == Broken::Malformed {
                     self.counts.malformed += 1;
-                    if let Some(direction) = found.direction {
-                        self.pair_malformed(direction, &found, out);
+                    // Its checksum holds: it opens.
+                    let envelope = Envelope::open_sound(self.mode, &found.bytes);
+                    if let (Some(direction), Ok(envelope)) = (found.direction, envelope) {
+                        self.pair_malformed(&envelope, direction, &found, out);
                     }
                 } else {
                     // A frame cut short fails its checksum as much as one that broke.
@@ -554,11 +556,13 @@ impl Session {
 
     /// A malformed frame in the conversation as it is shown: an answer settles the request
     /// awaiting it, a request gives up on the one still waiting and waits in its place.
-    fn pair_malformed(&mut self, direction: Direction, found: &Found, out: &mut Vec<Record>) {
-        // Its checksum holds: it opens.
-        let Ok(envelope) = Envelope::open_sound(self.mode, &found.bytes) else {
-            return;
-        };
+    fn pair_malformed(
+        &mut self,
+        envelope: &Envelope,
+        direction: Direction,
+        found: &Found,
+        out: &mut Vec<Record>,
+    ) {
         let unanswered = self.pairer.malformed(
             envelope.slave,
             &envelope.pdu,
@@ -605,7 +609,7 @@ impl Session {
             self.unanswered(unanswered, out);
         }
         if let Some(direction) = malformed_travels {
-            self.pair_malformed(direction, &found, out);
+            self.pair_malformed(&envelope, direction, &found, out);
         }
         let kind = match &role {
             Role::Request(_) | Role::Unsettled { .. } => Some(Kind::Request),
