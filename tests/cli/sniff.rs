@@ -247,6 +247,46 @@ fn the_worked_frames_glued_together_come_out_paired() {
     assert_eq!(summary["noise_bytes"], 0);
 }
 
+/// An answer that does not fit the request awaiting it is told so in every format, and
+/// its request is not reported unanswered.
+#[test]
+fn an_answer_that_does_not_fit_its_request_says_so_in_every_format() {
+    let read_two = rtu(&[0x11, 0x03, 0x00, 0x6B, 0x00, 0x02]);
+    let capture = [read_two, rtu(&[0x11, 0x03, 0x02, 0x00, 0x05])].concat();
+    let sniffed = |format: &str| -> String {
+        let output = mbtool()
+            .env("NO_COLOR", "1")
+            .args(["sniff", "-o", format, "--input", "-"])
+            .write_stdin(capture.clone())
+            .output()
+            .unwrap();
+        assert!(output.status.success(), "{output:?}");
+        String::from_utf8(output.stdout).unwrap()
+    };
+    let told = "answer carries 1 registers, the request asked for 2";
+    let lines = json_lines(sniffed("json").as_bytes());
+    assert_eq!(lines[1]["mismatch"], told);
+    assert!(lines[1].get("paired").is_none());
+    let summary = lines.last().unwrap();
+    assert_eq!(
+        (
+            summary["mismatched"].as_u64(),
+            summary["unanswered"].as_u64()
+        ),
+        (Some(1), Some(0))
+    );
+    let table = sniffed("table");
+    assert!(
+        table.contains(&format!("(does not fit the request: {told})")),
+        "{table}"
+    );
+    assert!(
+        table.contains("0 unanswered, 1 not fitting the request"),
+        "{table}"
+    );
+    assert!(sniffed("csv").contains(&format!("(does not fit the request: {told})")));
+}
+
 /// The slaves whose traffic is generated.
 const IDS: [u8; 4] = [1, 2, 17, 247];
 
