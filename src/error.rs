@@ -129,7 +129,8 @@ impl Error {
             | Error::Plan(_)
             | Error::Endpoint(_) => 2,
             Error::Io(_) => 1,
-            Error::Master(MasterError::Timeout { .. }) | Error::NoAnswer { .. } => 3,
+            Error::Master(MasterError::Timeout { .. } | MasterError::OutOfStep { .. })
+            | Error::NoAnswer { .. } => 3,
             Error::Master(MasterError::BadFrame { .. }) => 4,
             Error::Master(MasterError::Encode(_)) => 2,
             Error::Master(MasterError::Io(_)) => 1,

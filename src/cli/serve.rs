@@ -66,6 +66,11 @@ pub struct RoleArgs {
     /// client is refused, when --role is given]
     #[arg(long, value_name = "NAME")]
     pub default_role: Option<String>,
+
+    /// The role of every client of a plain tcp:// listener, which has no certificate to
+    /// claim one: with --role, a plain listener is refused without it
+    #[arg(long, value_name = "NAME")]
+    pub plain_role: Option<String>,
 }
 
 #[derive(Clone, Debug, Args)]

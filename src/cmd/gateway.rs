@@ -57,14 +57,19 @@ fn listeners(settings: &Settings, args: &GatewayArgs) -> Result<Vec<(TcpListener
         }
         endpoints.push(endpoint);
     }
-    // The roles are for a tls:// listener; one is enough to take them.
+    // The roles are for a tls:// listener; one is enough to take them. A tcp:// one
+    // beside it gives its clients --plain-role.
     let secure = endpoints
         .iter()
         .find(|endpoint| matches!(endpoint, Endpoint::Tls { .. }));
+    let plain = endpoints
+        .iter()
+        .find(|endpoint| matches!(endpoint, Endpoint::Tcp { .. }));
     let security = match secure {
         Some(endpoint) => super::shared::security(settings, &args.roles, endpoint)?.map(Arc::new),
         None => super::shared::security(settings, &args.roles, &endpoints[0])?.map(Arc::new),
     };
+    let plain_role = super::shared::plain_role(&args.roles, plain, secure.is_some())?;
     let mut bound = Vec::new();
     for endpoint in endpoints {
         let (Endpoint::Tcp { host, port } | Endpoint::Tls { host, port }) = &endpoint else {
@@ -74,7 +79,7 @@ fn listeners(settings: &Settings, args: &GatewayArgs) -> Result<Vec<(TcpListener
             .with_context(|| format!("cannot listen on {endpoint}"))?;
         let listening = match (&endpoint, &security) {
             (Endpoint::Tls { .. }, Some(security)) => Listening::Secure(Arc::clone(security)),
-            _ => Listening::Plain,
+            _ => Listening::Plain(plain_role.clone()),
         };
         bound.push((listener, listening));
     }
@@ -183,9 +188,12 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
     let mut addresses = Vec::new();
     for (listener, listening) in listeners {
         let address = listener.local_addr()?;
-        addresses.push(match listening {
+        addresses.push(match &listening {
             Listening::Secure(_) => format!("tls://{address} (Modbus/TCP Security)"),
-            Listening::Plain => address.to_string(),
+            Listening::Plain(Some(role)) => {
+                format!("{address} (no certificate: role {})", role.name)
+            }
+            Listening::Plain(None) => address.to_string(),
         });
         let gateway = Arc::clone(&gateway);
         let on_error = Arc::clone(&report);

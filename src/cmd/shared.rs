@@ -140,8 +140,8 @@ pub fn stop_on_signal() -> Result<Arc<AtomicBool>> {
 }
 
 /// Modbus/TCP Security for a server on `endpoint` (serve's port, a gateway's --listen):
-/// the certificates read and the roles parsed before anything listens. The roles are
-/// refused for a port that is not tls://.
+/// the certificates read and the roles parsed before anything listens; `None` for a port
+/// that is not tls://.
 pub fn security(
     settings: &Settings,
     roles: &RoleArgs,
@@ -151,18 +151,58 @@ pub fn security(
         if settings.connection.tls_typed {
             return Err(connection::tls_options_unused(endpoint));
         }
-        if !roles.roles.is_empty() || roles.default_role.is_some() {
-            return Err(Error::usage(
-                "--role and --default-role are for clients known by their certificates: listen on a tls:// port",
-            ));
-        }
         return Ok(None);
     }
-    let rules = Roles::new(&roles.roles, roles.default_role.as_deref())
-        .map_err(|e| Error::usage(e.to_string()))?;
+    let rules = roles_given(roles)?;
     let tls = TlsServer::new(&settings.connection.tls)?;
     if let Some(out_of_date) = &tls.out_of_date {
         mbtool::note!("mbtool: warning: {out_of_date}");
     }
     Ok(Some(Security { tls, roles: rules }))
+}
+
+fn roles_given(roles: &RoleArgs) -> Result<Roles, Error> {
+    Roles::new(&roles.roles, roles.default_role.as_deref()).map_err(|e| Error::usage(e.to_string()))
+}
+
+/// The role of the clients of a plain `tcp://` listener where roles are checked
+/// (`--plain-role`): they have no certificate to claim one, and a listener that let them
+/// past the roles would undo them. `plain` is the first plain listener, if any; `secure`
+/// whether a tls:// one listens beside it.
+pub fn plain_role(
+    roles: &RoleArgs,
+    plain: Option<&Endpoint>,
+    secure: bool,
+) -> Result<Option<Arc<mbtool_core::listener::roles::Role>>, Error> {
+    let checked = !roles.roles.is_empty() || roles.default_role.is_some();
+    let Some(name) = &roles.plain_role else {
+        return match plain {
+            Some(plain) if checked && secure => Err(Error::usage(format!(
+                "--role is checked over tls:// only, and the clients of {plain} have no certificate: \
+                 give --plain-role NAME for the role they get, or listen on tls:// only"
+            ))),
+            Some(_) if checked => Err(Error::usage(
+                "--role and --default-role are for clients known by their certificates: listen on a tls:// port, \
+                 or give --plain-role NAME for the role every client gets",
+            )),
+            _ => Ok(None),
+        };
+    };
+    if plain.is_none() {
+        return Err(Error::usage(
+            "--plain-role is the role of the clients of a tcp:// listener, and there is none: leave it out",
+        ));
+    }
+    if roles.default_role.is_some() && !secure {
+        return Err(Error::usage(
+            "--default-role is for tls:// clients whose certificate claims no role: with tcp:// only, --plain-role is the role",
+        ));
+    }
+    let rules = roles_given(roles)?;
+    match rules.named(name) {
+        Some(role) => Ok(Some(Arc::new(role.clone()))),
+        None => Err(Error::usage(format!(
+            "--plain-role {name} is none of the roles given with --role: give one of them (--role {name}=read, say)"
+        ))),
+    }
 }

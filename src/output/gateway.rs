@@ -91,7 +91,7 @@ fn answer_summary(request: &Fields, answer: Option<&Pdu>) -> String {
 
 fn why(outcome: &Outcome) -> Option<&str> {
     match outcome {
-        Outcome::BadFrame(why) | Outcome::LineDown(why) => Some(why),
+        Outcome::BadFrame(why) | Outcome::LineDown(why) | Outcome::Refused(why) => Some(why),
         _ => None,
     }
 }
@@ -131,7 +131,7 @@ impl GatewayWriter {
         let colour = match t.outcome {
             _ if !self.colour => "",
             Outcome::Answer | Outcome::Broadcast => "",
-            Outcome::Exception => YELLOW,
+            Outcome::Exception | Outcome::Refused(_) => YELLOW,
             _ => RED,
         };
         let reset = if colour.is_empty() { "" } else { RESET };

@@ -24,6 +24,8 @@ struct JsonEntry<'a> {
     exception: Option<u8>,
     #[serde(skip_serializing_if = "Option::is_none")]
     fault: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    refused: Option<&'a str>,
 }
 
 fn answer_of(outcome: &Outcome) -> (&'static str, Option<u8>, Option<&'static str>) {
@@ -62,6 +64,7 @@ pub fn write_entry(out: &mut dyn Write, json: bool, entry: &LogEntry) -> io::Res
                 answer,
                 exception,
                 fault,
+                refused: entry.refusal,
             },
         )?;
         return writeln!(out);
@@ -74,13 +77,17 @@ pub fn write_entry(out: &mut dyn Write, json: bool, entry: &LogEntry) -> io::Res
         (other, _) => other.to_string(),
     };
     let fault = fault.map(|f| format!(" [{f}]")).unwrap_or_default();
+    let refused = entry
+        .refusal
+        .map(|why| format!(": {why}"))
+        .unwrap_or_default();
     let role = entry
         .role
         .map(|role| format!(" ({role})"))
         .unwrap_or_default();
     writeln!(
         out,
-        "[{:>12.6}] {}{role} slave {}: {} {} {} -> {result}{fault}",
+        "[{:>12.6}] {}{role} slave {}: {} {} {} -> {result}{refused}{fault}",
         entry.elapsed.as_secs_f64(),
         entry.peer,
         entry.slave,
@@ -108,6 +115,7 @@ mod tests {
             slave: 17,
             request: &request,
             outcome,
+            refusal: None,
         };
         let mut out = Vec::new();
         write_entry(&mut out, json, &entry).unwrap();

@@ -780,3 +780,54 @@ fn the_command_line_is_checked_before_anything_listens() {
         "the slave id is 0-255",
     );
 }
+
+#[test]
+fn a_slave_that_stalls_never_hands_a_client_another_requests_answer() {
+    let Some(pair) = PtyPair::new() else { return };
+    let (slave, gateway) = gateway_to_serve(&pair, &[], &["-q", "--timeout", "150ms"]);
+    // The slave stops for 300 ms of every 600 and then answers everything it missed, late:
+    // answers to requests the gateway has given up on, of the same shape as the next.
+    let pid = slave.0.id().to_string();
+    let until = Instant::now() + Duration::from_secs(4);
+    let staller = std::thread::spawn(move || {
+        while Instant::now() < until {
+            std::thread::sleep(Duration::from_millis(300));
+            Process::new("kill").args(["-STOP", &pid]).status().unwrap();
+            std::thread::sleep(Duration::from_millis(300));
+            Process::new("kill").args(["-CONT", &pid]).status().unwrap();
+        }
+    });
+    // Three clients read one register each, of the same shape: 555, 0 and 100.
+    let clients: Vec<_> = [(107u16, 555u16), (108, 0), (109, 100)]
+        .into_iter()
+        .map(|(address, value)| {
+            let mut client = gateway.client();
+            std::thread::spawn(move || {
+                let (mut right, mut wrong, mut refused) = (0, 0, 0);
+                let mut id = 0u16;
+                while Instant::now() < until {
+                    id = id.wrapping_add(1);
+                    match ask(&mut client, id, 17, &read_holding(address, 1)).1[..] {
+                        [3, 2, high, low] if u16::from_be_bytes([high, low]) == value => right += 1,
+                        [0x83, 0x0B] => refused += 1,
+                        ref other => {
+                            wrong += 1;
+                            eprintln!("{address}: {other:02X?}");
+                        }
+                    }
+                }
+                (right, wrong, refused)
+            })
+        })
+        .collect();
+    let counts: Vec<(u32, u32, u32)> = clients.into_iter().map(|c| c.join().unwrap()).collect();
+    staller.join().unwrap();
+    let wrong: u32 = counts.iter().map(|c| c.1).sum();
+    assert_eq!(wrong, 0, "answers that were not the request's: {counts:?}");
+    // The stalls cost time, not service: every client got its own values in between.
+    assert!(counts.iter().all(|c| c.0 >= 10), "{counts:?}");
+    assert!(
+        counts.iter().any(|c| c.2 > 0),
+        "no stall was seen: {counts:?}"
+    );
+}

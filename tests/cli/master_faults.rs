@@ -13,6 +13,8 @@ enum Act {
     Answer(Duration, Vec<u8>),
     /// Write these pieces, the pause before each: a slow slave, or a USB adapter.
     Pieces(Duration, Vec<Vec<u8>>),
+    /// Send the request back as it came: the answer to a diagnostic echo (08/00).
+    Echo,
     /// Say nothing.
     Silence,
 }
@@ -58,6 +60,7 @@ fn against_within(timeout: &str, acts: Vec<Act>, args: &[&str]) -> Outcome {
                         write_all(&mut port, &piece);
                     }
                 }
+                Act::Echo => write_all(&mut port, requests.last().unwrap()),
                 Act::Silence => {}
             }
         }
@@ -382,4 +385,23 @@ fn ascii_mode_on_a_serial_line() {
         "555\n0\n100\n",
         "{output:?}"
     );
+}
+
+#[test]
+fn a_late_answer_is_never_taken_for_the_next_requests() {
+    // The first answer comes after the timeout, with values the next read must not show;
+    // the next read is of the same shape, so the master checks the line with an echo
+    // (08/00) first, and the late answer is heard there for what it is.
+    let late = rtu(&[0x11, 0x03, 0x06, 0x00, 0x01, 0x00, 0x02, 0x00, 0x03]);
+    let acts = vec![
+        Act::Answer(Duration::from_millis(450), late),
+        Act::Echo,
+        now(&answer()),
+    ];
+    let outcome = against(acts, &[&READ[..], &["--poll", "0", "--count", "2"]].concat());
+    assert_eq!(outcome.code, 0, "{}", outcome.stderr);
+    assert_eq!(outcome.stdout, "555\n0\n100\n", "{}", outcome.stderr);
+    assert_eq!(outcome.requests.len(), 3, "{:02X?}", outcome.requests);
+    assert_eq!(outcome.requests[1][1..3], [0x08, 0x00, 0x00][..2]);
+    assert_eq!(outcome.requests[2], request());
 }

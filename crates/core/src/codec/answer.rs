@@ -126,6 +126,17 @@ pub(crate) fn check(request: &Request, answer: &Pdu) -> Result<(), Mismatch> {
             address == a && and_mask == and && or_mask == or,
             "address or masks differ",
         ),
+        // Return Query Data (00) echoes the query's data; the others answer with their own.
+        (
+            Request::Diagnostics {
+                sub_function: 0,
+                data,
+            },
+            Response::Diagnostics {
+                sub_function: s,
+                data: d,
+            },
+        ) => echo(*s == 0 && data == d, "the echo differs from the query"),
         (
             Request::Diagnostics { sub_function, .. },
             Response::Diagnostics {

@@ -104,14 +104,11 @@ impl Line {
                 return done(request, Some(answer), 0, Outcome::Exception);
             }
         };
-        if job
-            .rights
-            .as_ref()
-            .is_some_and(|rights| !rights.allows(&request))
-        {
-            // Not for this client's role: an illegal function to it, the line untouched.
+        if let Some(why) = job.rights.as_ref().and_then(|r| r.refusal(&request)) {
+            // Not for this client's role: an illegal function to it, as the specification
+            // has it, the line untouched.
             let answer = Pdu::refusal(&request, ExceptionCode::ILLEGAL_FUNCTION);
-            return done(request, Some(answer), 0, Outcome::Exception);
+            return done(request, Some(answer), 0, Outcome::Refused(why));
         }
         let broadcast = slave == 0 && self.broadcasts;
         if broadcast && !broadcastable(&request) {
@@ -146,7 +143,11 @@ impl Line {
             }
             // The gateway's master is given no stop, so no wait is cut short; one that
             // were would be no answer all the same.
-            Err(MasterError::Timeout { .. } | MasterError::Interrupted) => {
+            Err(
+                MasterError::Timeout { .. }
+                | MasterError::OutOfStep { .. }
+                | MasterError::Interrupted,
+            ) => {
                 let answer = failed(&request);
                 done(request, Some(answer), tries, Outcome::Timeout)
             }

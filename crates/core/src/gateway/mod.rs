@@ -84,8 +84,9 @@ pub struct GatewayOptions {
 /// checked.
 #[derive(Clone, Debug)]
 pub enum Listening {
-    /// Modbus TCP.
-    Plain,
+    /// Modbus TCP; where the secure listeners check roles, every client of this one has
+    /// the role given, having no certificate to claim one.
+    Plain(Option<Arc<Role>>),
     /// Modbus/TCP Security.
     Secure(Arc<Security>),
 }
@@ -98,6 +99,9 @@ pub enum Outcome {
     /// The slave answered with an exception, or the request did not read (told without
     /// touching the line).
     Exception,
+    /// The client's role may not make the request (why): it got exception 01, the line
+    /// untouched.
+    Refused(String),
     /// No answer after every try: the client got exception 0B.
     Timeout,
     /// Only bad answers (a CRC error, a cut frame, another slave) after every try: the
@@ -115,6 +119,7 @@ impl Outcome {
         match self {
             Outcome::Answer => "answer",
             Outcome::Exception => "exception",
+            Outcome::Refused(_) => "refused",
             Outcome::Timeout => "timeout",
             Outcome::BadFrame(_) => "bad-frame",
             Outcome::LineDown(_) => "line-down",
@@ -226,7 +231,7 @@ impl Tally {
         self.requests += 1;
         match transaction.outcome {
             Outcome::Answer => self.answers += 1,
-            Outcome::Exception => self.exceptions += 1,
+            Outcome::Exception | Outcome::Refused(_) => self.exceptions += 1,
             Outcome::Timeout => self.timeouts += 1,
             Outcome::BadFrame(_) => self.bad_frames += 1,
             Outcome::LineDown(_) => self.line_down += 1,
@@ -349,11 +354,11 @@ impl Gateway {
         let id = self.next_client.fetch_add(1, Ordering::Relaxed);
         let (mut transport, mut writing, role, rights): (Box<dyn Transport>, Writing, _, _) =
             match listening {
-                Listening::Plain => (
+                Listening::Plain(role) => (
                     Box::new(Tcp::from_stream(client.stream.try_clone()?, false)?),
                     Writing::Plain(client.stream),
-                    None,
-                    None,
+                    role.as_ref().map(|role| role.name.clone()),
+                    role.clone(),
                 ),
                 Listening::Secure(security) => {
                     let admitted = security.admit(client.stream, &client.peer)?;

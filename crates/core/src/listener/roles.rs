@@ -5,7 +5,7 @@
 use thiserror::Error;
 
 use crate::codec::Request;
-use crate::model::address::{parse_reference_span, Table};
+use crate::model::address::{parse_reference_span, reference, Table};
 
 /// What one right covers: everything, or some spans of the tables.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -118,66 +118,125 @@ impl Role {
         Ok(role)
     }
 
-    /// Whether this role may make `request`. Reads and writes of the tables need their
-    /// right over every address they touch; a diagnostic that only reads needs `read`
-    /// over everything, one that changes the device (restart, clear counters, listen
-    /// only) and the functions without addresses that write (file records) need `write`
-    /// over everything, and a function mbtool does not know needs both.
+    /// Whether this role may make `request`.
     pub fn allows(&self, request: &Request) -> bool {
+        self.refusal(request).is_none()
+    }
+
+    /// Why this role may not make `request` (`role viewer may not write 400001`), or
+    /// `None` when it may. Reads and writes of the tables need their right over every
+    /// address they touch; a diagnostic that only reads needs `read` over everything, one
+    /// that changes the device (restart, clear counters, listen only) and the functions
+    /// without addresses that write (file records) need `write` over everything, and a
+    /// function mbtool does not know needs both.
+    pub fn refusal(&self, request: &Request) -> Option<String> {
         use Request as R;
         let (read, write) = (&self.read, &self.write);
-        match request {
+        let span = |right: &Reach, verb: &str, table: Table, address: u16, count: usize| {
+            (!right.covers(table, address, count)).then(|| {
+                let first = reference(table, address);
+                match count {
+                    0 | 1 => format!("{verb} {}", first.as_str()),
+                    n => {
+                        let last = reference(table, address.saturating_add(n as u16 - 1));
+                        format!("{verb} {}-{}", first.as_str(), last.as_str())
+                    }
+                }
+            })
+        };
+        let whole = |needs_read: bool, needs_write: bool| {
+            let lacks_read = needs_read && !read.is_everything();
+            let lacks_write = needs_write && !write.is_everything();
+            let needs = match (lacks_read, lacks_write) {
+                (false, false) => return None,
+                (true, true) => "read and write",
+                (true, false) => "read",
+                (false, true) => "write",
+            };
+            Some(format!(
+                "use function {:02} ({}), which needs {needs} over every address",
+                request.function(),
+                crate::codec::function::name(request.function())
+            ))
+        };
+        let why = match request {
             R::ReadCoils { address, quantity } => {
-                read.covers(Table::Coils, *address, usize::from(*quantity))
+                span(read, "read", Table::Coils, *address, usize::from(*quantity))
             }
-            R::ReadDiscreteInputs { address, quantity } => {
-                read.covers(Table::DiscreteInputs, *address, usize::from(*quantity))
-            }
-            R::ReadHoldingRegisters { address, quantity } => {
-                read.covers(Table::HoldingRegisters, *address, usize::from(*quantity))
-            }
-            R::ReadInputRegisters { address, quantity } => {
-                read.covers(Table::InputRegisters, *address, usize::from(*quantity))
-            }
-            R::WriteSingleCoil { address, .. } => write.covers(Table::Coils, *address, 1),
+            R::ReadDiscreteInputs { address, quantity } => span(
+                read,
+                "read",
+                Table::DiscreteInputs,
+                *address,
+                usize::from(*quantity),
+            ),
+            R::ReadHoldingRegisters { address, quantity } => span(
+                read,
+                "read",
+                Table::HoldingRegisters,
+                *address,
+                usize::from(*quantity),
+            ),
+            R::ReadInputRegisters { address, quantity } => span(
+                read,
+                "read",
+                Table::InputRegisters,
+                *address,
+                usize::from(*quantity),
+            ),
+            R::WriteSingleCoil { address, .. } => span(write, "write", Table::Coils, *address, 1),
             R::WriteMultipleCoils { address, values } => {
-                write.covers(Table::Coils, *address, values.len())
+                span(write, "write", Table::Coils, *address, values.len())
             }
             R::WriteSingleRegister { address, .. } | R::MaskWriteRegister { address, .. } => {
-                write.covers(Table::HoldingRegisters, *address, 1)
+                span(write, "write", Table::HoldingRegisters, *address, 1)
             }
-            R::WriteMultipleRegisters { address, values } => {
-                write.covers(Table::HoldingRegisters, *address, values.len())
-            }
+            R::WriteMultipleRegisters { address, values } => span(
+                write,
+                "write",
+                Table::HoldingRegisters,
+                *address,
+                values.len(),
+            ),
             R::ReadWriteMultipleRegisters {
                 read_address,
                 read_quantity,
                 write_address,
                 values,
-            } => {
-                read.covers(
+            } => span(
+                read,
+                "read",
+                Table::HoldingRegisters,
+                *read_address,
+                usize::from(*read_quantity),
+            )
+            .or_else(|| {
+                span(
+                    write,
+                    "write",
                     Table::HoldingRegisters,
-                    *read_address,
-                    usize::from(*read_quantity),
-                ) && write.covers(Table::HoldingRegisters, *write_address, values.len())
-            }
+                    *write_address,
+                    values.len(),
+                )
+            }),
             // Return query data, and the counters: 00, 02, 0B-12.
             R::Diagnostics {
                 sub_function: 0x00 | 0x02 | 0x0B..=0x12,
                 ..
-            } => read.is_everything(),
-            R::Diagnostics { .. } => write.is_everything(),
+            } => whole(true, false),
+            R::Diagnostics { .. } => whole(false, true),
             R::ReadExceptionStatus | R::ReportServerId | R::ReadDeviceIdentification { .. } => {
-                read.is_everything()
+                whole(true, false)
             }
             R::Other { function, .. } => match function {
                 // Event counter and log, FIFO queue, file record read.
-                0x0B | 0x0C | 0x14 | 0x18 => read.is_everything(),
+                0x0B | 0x0C | 0x14 | 0x18 => whole(true, false),
                 // File record write.
-                0x15 => write.is_everything(),
-                _ => read.is_everything() && write.is_everything(),
+                0x15 => whole(false, true),
+                _ => whole(true, true),
             },
-        }
+        };
+        why.map(|why| format!("role {} may not {why}", self.name))
     }
 }
 
@@ -221,6 +280,11 @@ impl Roles {
         })
     }
 
+    /// The role called `name`, if one was given.
+    pub fn named(&self, name: &str) -> Option<&Role> {
+        self.roles.iter().find(|role| role.name == name)
+    }
+
     /// Whether roles are checked at all: without `--role`, every client may do anything.
     pub fn checked(&self) -> bool {
         !self.roles.is_empty()
@@ -241,7 +305,7 @@ impl Roles {
                 )
             }
         };
-        match self.roles.iter().find(|role| role.name == name) {
+        match self.named(name) {
             Some(role) => Ok(Some(role)),
             None => Err(format!(
                 "its role '{name}' is none of the roles given with --role"
@@ -298,6 +362,29 @@ mod tests {
             function: 0x41,
             data: vec![]
         }));
+    }
+
+    #[test]
+    fn a_refusal_says_which_role_and_what_it_may_not_do() {
+        let viewer = Role::parse("Viewer=read:400001-400010").unwrap();
+        assert_eq!(
+            viewer.refusal(&write(0, 1)).as_deref(),
+            Some("role Viewer may not write 400001")
+        );
+        assert_eq!(
+            viewer.refusal(&read(499, 2)).as_deref(),
+            Some("role Viewer may not read 400500-400501")
+        );
+        assert_eq!(
+            viewer
+                .refusal(&Request::Diagnostics {
+                    sub_function: 1,
+                    data: vec![0, 0]
+                })
+                .as_deref(),
+            Some("role Viewer may not use function 08 (Diagnostics), which needs write over every address")
+        );
+        assert_eq!(viewer.refusal(&read(0, 10)), None);
     }
 
     #[test]

@@ -126,7 +126,12 @@ pub fn identification(
     if (0x02..=0x03).contains(&level) {
         match stream(master, slave, level, &mut found) {
             Ok(None) => {}
-            Ok(Some(_)) | Err(MasterError::Timeout { .. } | MasterError::BadFrame { .. }) => {
+            Ok(Some(_))
+            | Err(
+                MasterError::Timeout { .. }
+                | MasterError::OutOfStep { .. }
+                | MasterError::BadFrame { .. },
+            ) => {
                 found.cut_short = true;
             }
             Err(error) => return Err(error),

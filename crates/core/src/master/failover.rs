@@ -173,7 +173,7 @@ pub enum Left {
 impl Left {
     fn of(outcome: &Result<Reply, MasterError>) -> Option<Left> {
         match outcome {
-            Err(MasterError::Timeout { .. }) => Some(Left::Timeout),
+            Err(MasterError::Timeout { .. } | MasterError::OutOfStep { .. }) => Some(Left::Timeout),
             Err(MasterError::BadFrame { .. }) => Some(Left::BadFrame),
             Err(MasterError::Io(_)) => Some(Left::Disconnected),
             Ok(Reply::Exception(_)) => Some(Left::Exception),
@@ -273,7 +273,7 @@ impl Failover {
                 *seen = Seen::default();
                 return None;
             }
-            Err(MasterError::Timeout { .. }) => seen.timeouts += 1,
+            Err(MasterError::Timeout { .. } | MasterError::OutOfStep { .. }) => seen.timeouts += 1,
             Err(MasterError::BadFrame { .. }) => seen.bad_frames += 1,
             Err(MasterError::Io(error)) => seen.disconnected = Some(error.to_string()),
             // Neither says anything of the path.

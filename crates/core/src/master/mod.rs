@@ -74,6 +74,21 @@ pub enum MasterError {
         /// What was wrong.
         reason: BadAnswer,
     },
+    /// On a line without transaction ids, a late answer to an earlier request of the same
+    /// function may still come, and the check that would have told it apart (08/00) got
+    /// no answer of its own: the request was not sent.
+    #[error(
+        "slave {slave} did not answer the check sent before the request (08/00, {why}): \
+         an earlier function {function} request's answer could still come and pass for this one's, so it was not sent"
+    )]
+    OutOfStep {
+        /// The slave asked.
+        slave: u8,
+        /// The function whose late answer could be taken for this request's.
+        function: u8,
+        /// What came of the check.
+        why: String,
+    },
     /// The request does not fit in a PDU.
     #[error("request cannot be encoded: {0}")]
     Encode(#[from] crate::codec::PduError),
@@ -159,6 +174,35 @@ pub struct Master {
     failover: Option<Box<failover::Failover>>,
     /// Set (by a signal handler) to end a wait for an answer at once.
     stop: Option<Arc<AtomicBool>>,
+    /// On a line without transaction ids (RTU, ASCII), the answers that may still be on
+    /// their way, by slave and function, one entry each: a try ended without its answer.
+    /// Such a late answer would pass every check for the next request of the same
+    /// function to the same slave, so that request waits until the slave is back in step;
+    /// one heard meanwhile is paid off.
+    owed: Vec<(u8, u8)>,
+}
+
+/// The tries of one request so far.
+#[derive(Default)]
+struct Tries {
+    /// How many times it went on the wire.
+    sent: u32,
+    /// A try ended without its answer, which may still come.
+    pending: bool,
+}
+
+/// Whether a try that failed so may still be answered: no answer came, or a frame that
+/// was not its answer came first (a late answer to an earlier request). A garbled or cut
+/// answer was the answer, spoilt: nothing more follows it.
+fn may_be_answered_late(error: &MasterError) -> bool {
+    match error {
+        MasterError::Timeout { .. } | MasterError::Interrupted => true,
+        MasterError::BadFrame { reason, .. } => matches!(
+            reason,
+            BadAnswer::Mismatch(_) | BadAnswer::OtherSlave(_) | BadAnswer::Request
+        ),
+        MasterError::OutOfStep { .. } | MasterError::Encode(_) | MasterError::Io(_) => false,
+    }
 }
 
 /// What the bytes received so far came to.
@@ -190,6 +234,7 @@ impl Master {
             in_step: false,
             failover: None,
             stop: None,
+            owed: Vec::new(),
         }
     }
 
@@ -294,6 +339,7 @@ impl Master {
                     };
                 let frame = Frame::decode(mode, &found.bytes, Direction::Response);
                 if let (true, Ok(frame)) = (answer, frame) {
+                    self.pay_off(frame.slave, &frame.pdu);
                     if !heard.contains(&frame.slave) {
                         heard.push(frame.slave);
                     }
@@ -321,42 +367,53 @@ impl Master {
         self.transact_counted(slave, request).0
     }
 
-    /// One request, with its retries, and how many times it was sent.
+    /// One request, with its retries, and how many times it was sent (0 when it never
+    /// was: the slave was not brought back in step).
     pub fn transact_counted(
         &mut self,
         slave: u8,
         request: &Request,
     ) -> (Result<Reply, MasterError>, u32) {
-        let (mut outcome, mut tries) = self.transact_here(slave, request);
+        let mut tries = Tries::default();
+        let mut outcome = self.transact_here(slave, request, &mut tries);
         let mut asked = 1;
         loop {
             match self.weigh(&outcome, true) {
                 // Asked again on the other path, as a retry would be; counted there, but
                 // no change back within one request.
                 failover::Weighed::Switched => {
-                    let (again, more) = self.transact_here(slave, request);
+                    // Nothing of the other path's can be late on this one.
+                    tries.pending = false;
+                    let again = self.transact_here(slave, request, &mut tries);
                     self.weigh(&again, false);
-                    return (again, tries + more);
+                    return (again, tries.sent);
                 }
                 failover::Weighed::Counted if self.asks_again(asked) => {
                     asked += 1;
-                    let (again, more) = self.transact_here(slave, request);
-                    (outcome, tries) = (again, tries + more);
+                    outcome = self.transact_here(slave, request, &mut tries);
                 }
-                _ => return (outcome, tries),
+                _ => return (outcome, tries.sent),
             }
         }
     }
 
     /// One request, with its retries, on the path in use.
-    fn transact_here(&mut self, slave: u8, request: &Request) -> (Result<Reply, MasterError>, u32) {
-        let mut tries = 0;
+    fn transact_here(
+        &mut self,
+        slave: u8,
+        request: &Request,
+        tries: &mut Tries,
+    ) -> Result<Reply, MasterError> {
+        let mut here = 0;
         loop {
-            tries += 1;
-            match self.attempt(slave, request) {
-                Err(MasterError::Timeout { .. } | MasterError::BadFrame { .. })
-                    if tries <= self.options.retries => {}
-                result => return (result, tries),
+            here += 1;
+            match self.attempt(slave, request, tries) {
+                Err(
+                    MasterError::Timeout { .. }
+                    | MasterError::BadFrame { .. }
+                    | MasterError::OutOfStep { .. },
+                ) if here <= self.options.retries => {}
+                result => return result,
             }
         }
     }
@@ -365,7 +422,90 @@ impl Master {
         slave == 0 && self.options.mode != Mode::Tcp
     }
 
-    fn attempt(&mut self, slave: u8, request: &Request) -> Result<Reply, MasterError> {
+    /// One try: the request sent, once the slave is in step, and its answer awaited.
+    fn attempt(
+        &mut self,
+        slave: u8,
+        request: &Request,
+        tries: &mut Tries,
+    ) -> Result<Reply, MasterError> {
+        let function = request.function();
+        // A retry needs no check: a late answer to an earlier try of this very request
+        // is its answer.
+        if tries.sent == 0 && self.owed.contains(&(slave, function)) {
+            self.bring_in_step(slave, function)?;
+        }
+        tries.sent += 1;
+        let reply = self.exchange(slave, request);
+        if self.is_broadcast(slave) || self.options.mode == Mode::Tcp {
+            return reply;
+        }
+        match &reply {
+            // An answer that may be an earlier try's leaves the later tries' to come.
+            Ok(_) if tries.pending => {}
+            Ok(_) => self.settle(slave),
+            Err(error) if may_be_answered_late(error) => {
+                tries.pending = true;
+                self.owed.push((slave, function));
+            }
+            Err(_) => {}
+        }
+        reply
+    }
+
+    /// Brings `slave` back in step after a try that ended without its answer: a
+    /// diagnostic echo (08/00) carrying fresh data, whose answer only it can be. A slave
+    /// answers in order, so once the echo (or the exception 88 of a slave that does not
+    /// do diagnostics) is in, no late answer of its can follow.
+    fn bring_in_step(&mut self, slave: u8, function: u8) -> Result<(), MasterError> {
+        let check = Request::Diagnostics {
+            sub_function: 0,
+            data: fastrand::u16(..).to_be_bytes().to_vec(),
+        };
+        match self.exchange(slave, &check) {
+            Ok(_) => {
+                self.settle(slave);
+                Ok(())
+            }
+            Err(
+                error @ (MasterError::Io(_) | MasterError::Encode(_) | MasterError::Interrupted),
+            ) => Err(error),
+            Err(error) => {
+                self.owed.push((slave, check.function()));
+                let why = match error {
+                    MasterError::Timeout { timeout, .. } => {
+                        format!("no answer within {}", show(timeout))
+                    }
+                    other => other.to_string(),
+                };
+                Err(MasterError::OutOfStep {
+                    slave,
+                    function,
+                    why,
+                })
+            }
+        }
+    }
+
+    fn settle(&mut self, slave: u8) {
+        self.owed.retain(|&(s, _)| s != slave);
+    }
+
+    /// An answer heard that was not the one awaited: a late one, if one was owed.
+    fn pay_off(&mut self, slave: u8, pdu: &Pdu) {
+        let function = match pdu {
+            Pdu::Request(_) => return,
+            Pdu::Response(response) => response.function(),
+            Pdu::Exception(exception) => exception.function,
+        };
+        if let Some(at) = self.owed.iter().position(|&owed| owed == (slave, function)) {
+            self.owed.swap_remove(at);
+        }
+    }
+
+    /// Sends a request, after the line's silence and with stale bytes thrown away, and
+    /// waits for its answer.
+    fn exchange(&mut self, slave: u8, request: &Request) -> Result<Reply, MasterError> {
         if self.transport.is_serial_line() {
             if let Some(last) = self.last_traffic {
                 let quiet_until = last + self.options.frame_gap;
@@ -428,7 +568,7 @@ impl Master {
     }
 
     /// Reads what the framer found, in order, until the answer.
-    fn hear(&self, events: &mut Vec<Event>, heard: &mut Heard, slave: u8, request: &Request) {
+    fn hear(&mut self, events: &mut Vec<Event>, heard: &mut Heard, slave: u8, request: &Request) {
         for event in events.drain(..) {
             if heard.answer.is_some() {
                 // Whatever follows the answer is for later transactions.
@@ -441,6 +581,7 @@ impl Master {
                             Ok(()) => heard.answer = Some(frame.pdu),
                             Err(None) => heard.stale_bytes += found.bytes.len(),
                             Err(Some(reason)) => {
+                                self.pay_off(frame.slave, &frame.pdu);
                                 heard.problem.get_or_insert(reason);
                             }
                         },

@@ -249,7 +249,9 @@ impl PollStats {
                 self.total += elapsed;
             }
             Err(RunError::Exception { .. }) => self.exceptions += 1,
-            Err(RunError::Master(MasterError::Timeout { .. })) => self.timeouts += 1,
+            Err(RunError::Master(MasterError::Timeout { .. } | MasterError::OutOfStep { .. })) => {
+                self.timeouts += 1
+            }
             Err(RunError::Master(MasterError::BadFrame { .. })) => self.bad_frames += 1,
             Err(_) => self.other_errors += 1,
         }

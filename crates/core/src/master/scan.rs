@@ -160,7 +160,9 @@ fn probe(master: &mut Master, slave: u8, request: &Request) -> Result<Outcome, M
             Outcome::Absent
         }
         Ok(Reply::Exception(exception)) => Outcome::Present(Answer::Exception(exception.code)),
-        Ok(Reply::Broadcast) | Err(MasterError::Timeout { .. }) => Outcome::Absent,
+        Ok(Reply::Broadcast) | Err(MasterError::Timeout { .. } | MasterError::OutOfStep { .. }) => {
+            Outcome::Absent
+        }
         Err(MasterError::BadFrame {
             reason: BadAnswer::OtherSlave(other),
             ..

@@ -66,6 +66,8 @@ pub struct LogEntry<'a> {
     pub request: &'a Request,
     /// What became of it.
     pub outcome: &'a Outcome,
+    /// Why the client's role may not make the request, when it was refused for that.
+    pub refusal: Option<&'a str>,
 }
 
 /// Told of every request the server handles, from any thread.
@@ -162,6 +164,7 @@ impl Server {
         rng: &mut fastrand::Rng,
     ) -> Option<Vec<u8>> {
         let mut slave_id = frame.slave;
+        let refusal = client.rights.and_then(|rights| rights.refusal(request));
         let outcome = {
             let mut slave = lock(&self.slave);
             // Over TCP, unit ids 0 and 255 mean "the device at this address".
@@ -176,10 +179,9 @@ impl Server {
             }
             let exception = |code| Some(Pdu::refusal(request, code));
             // A request the client's role does not allow is an illegal function to it.
-            let allowed = client.rights.is_none_or(|rights| rights.allows(request));
             let answer = match self.faults.exception_for(request) {
                 _ if !known => exception(ExceptionCode::GATEWAY_TARGET_FAILED),
-                _ if !allowed => exception(ExceptionCode::ILLEGAL_FUNCTION),
+                _ if refusal.is_some() => exception(ExceptionCode::ILLEGAL_FUNCTION),
                 Some(code) if slave_id != 0 => exception(code),
                 _ => slave.handle(slave_id, request),
             };
@@ -201,6 +203,7 @@ impl Server {
                 slave: frame.slave,
                 request,
                 outcome: &outcome,
+                refusal: refusal.as_deref(),
             });
         }
         let (pdu, corrupt) = match outcome {
