@@ -4,7 +4,7 @@ use std::io;
 
 use crate::error::{Error, Result};
 use crate::settings::Connection as Options;
-use mbtool_core::codec::Mode;
+use mbtool_core::codec::{ExceptionCode, Mode};
 use mbtool_core::master::failover::{Failover, PathName, Switch, SwitchRule};
 use mbtool_core::master::{Master, MasterOptions};
 use mbtool_core::model::map::MapConnection;
@@ -464,7 +464,18 @@ pub fn connect(options: &Options) -> Result<Connection> {
 impl Connection {
     /// `error`, a timeout told with where and how the master asked and what usually
     /// causes one there.
+    /// Exception 01 over TLS is told as what it may be: the server's role check.
     pub fn explain(&self, options: &Options, error: Error) -> Error {
+        if let (
+            Error::Exception {
+                code: ExceptionCode::ILLEGAL_FUNCTION,
+                ..
+            },
+            Endpoint::Tls { .. },
+        ) = (&error, &self.endpoint)
+        {
+            return Error::MaybeRole(Box::new(error));
+        }
         let (tried, advice) = tried_on(options, &self.endpoint, self.mode, self.master.path());
         error.tried(tried, advice)
     }

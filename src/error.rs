@@ -44,6 +44,12 @@ pub enum Error {
         function: u8,
         code: ExceptionCode,
     },
+    /// Exception 01 over Modbus/TCP Security, which may be the server's role check.
+    #[error(
+        "{0}: over Modbus/TCP Security this may be the server refusing what this certificate's role may do \
+         (mbtool serve and gateway with --role do so, and their log names the rule)"
+    )]
+    MaybeRole(Box<Error>),
 }
 
 /// A map that cannot be read is an I/O failure; one with faults in it is bad input.
@@ -137,6 +143,7 @@ impl Error {
             Error::Master(MasterError::Interrupted) => 130,
             // 10 + N; a code past 245 (none is defined) saturates at 255.
             Error::Exception { code, .. } => 10u8.saturating_add(code.0),
+            Error::MaybeRole(error) => error.exit_code(),
         }
     }
 }

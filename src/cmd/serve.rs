@@ -15,7 +15,7 @@ use mbtool::settings::Settings;
 use mbtool_core::listener::Link;
 use mbtool_core::model::address::parse_reference_span;
 use mbtool_core::slave::faults::Faults;
-use mbtool_core::slave::server::{Client, Logger, Server};
+use mbtool_core::slave::server::{Logger, Server};
 use mbtool_core::slave::{datafile, DataModel, Slave};
 use mbtool_core::transport::Endpoint;
 
@@ -67,6 +67,8 @@ pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
     let mode = mode(&settings.connection, Some(&endpoint), Role::Serve)?;
     direction_needs_serial(&settings.connection, &endpoint)?;
     let security = super::shared::security(settings, &args.roles, &endpoint)?;
+    let plain = security.is_none().then_some(&endpoint);
+    let plain_role = super::shared::plain_role(&args.roles, plain, security.is_some())?;
     let ids = if args.slaves.is_empty() {
         vec![mbtool_core::slave::EXAMPLE_SLAVE]
     } else {
@@ -100,7 +102,14 @@ pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
     ctrlc::set_handler(|| std::process::exit(0))
         .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
     let seed = args.seed.unwrap_or_else(|| fastrand::u64(..));
-    let server = Server::new(slave, faults, mode, seed, logger);
+    let mut server = Server::new(slave, faults, mode, seed, logger);
+    if let Some(role) = &plain_role {
+        mbtool::note!(
+            "mbtool: every client gets role {} (no certificate)",
+            role.name
+        );
+        server = server.with_plain_role(role.as_ref().clone());
+    }
     let ids_text = ids.iter().map(u8::to_string).collect::<Vec<_>>().join(", ");
     match &endpoint {
         Endpoint::Serial(path) => {
@@ -116,7 +125,7 @@ pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
                 silence: line.frame_gap(),
             };
             server
-                .serve_stream(&mut transport, Client::at(path), &link, &mut rng)
+                .serve_stream(&mut transport, server.plain_client(path), &link, &mut rng)
                 .with_context(|| format!("serving on {path}"))?;
             Ok(0)
         }

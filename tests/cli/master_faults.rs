@@ -398,7 +398,10 @@ fn a_late_answer_is_never_taken_for_the_next_requests() {
         Act::Echo,
         now(&answer()),
     ];
-    let outcome = against(acts, &[&READ[..], &["--poll", "0", "--count", "2"]].concat());
+    let outcome = against(
+        acts,
+        &[&READ[..], &["--poll", "0", "--count", "2"]].concat(),
+    );
     assert_eq!(outcome.code, 0, "{}", outcome.stderr);
     assert_eq!(outcome.stdout, "555\n0\n100\n", "{}", outcome.stderr);
     assert_eq!(outcome.requests.len(), 3, "{:02X?}", outcome.requests);

@@ -647,25 +647,39 @@ fn pymodbus_tls_client_reads_and_writes_serve_as_over_plain_tcp() {
 #[test]
 fn gateway_takes_tls_clients_with_their_roles() {
     let pki = Pki::new();
-    let port = free_port();
+    let (port, plain) = (free_port(), free_port());
     let rows = pki.dir.path().join("gateway.jsonl");
-    let gateway = Stopped(
+    let gateway = |extra: &[&str]| {
         mbtool_process()
             .args(["--port", "sim", "-o", "json"])
             .args(pki.client("server"))
             .args(["gateway", "--listen", &format!("tls://127.0.0.1:{port}")])
+            .args(["--listen", &format!("tcp://127.0.0.1:{plain}")])
             .args([
                 "--role",
                 "operator=read,write:400001-400010",
                 "--role",
                 "viewer=read",
             ])
+            .args(extra)
             .stdout(std::fs::File::create(&rows).unwrap())
-            .stderr(Stdio::null())
+            .stderr(Stdio::piped())
             .spawn()
-            .unwrap(),
-    );
+            .unwrap()
+    };
+    // A plain listener beside the secure one would let anyone past the roles.
+    let refused = gateway(&[]).wait_with_output().unwrap();
+    let said = String::from_utf8_lossy(&refused.stderr);
+    assert_eq!(refused.status.code(), Some(2), "{said}");
+    assert!(said.contains("give --plain-role NAME"), "{said}");
+    assert_eq!(said.lines().count(), 1, "{said}");
+    let mut started = gateway(&["--plain-role", "viewer"]);
+    let stderr = started.stderr.take().unwrap();
+    let gateway = Stopped(started);
     assert!(wait_for_listener(port, Duration::from_secs(10)));
+    let mut first = String::new();
+    std::io::BufRead::read_line(&mut std::io::BufReader::new(stderr), &mut first).unwrap();
+    assert!(first.contains("(no certificate: role viewer)"), "{first}");
     let url = format!("tls://localhost:{port}");
     let (viewer, operator) = (pki.client("viewer"), pki.client("operator"));
     let (code, out, err) = client(&url, &viewer, "read-holding 17 400108 3 -o values");
@@ -674,7 +688,10 @@ fn gateway_takes_tls_clients_with_their_roles() {
         (0, vec!["555", "0", "100"]),
         "{err}"
     );
-    assert_eq!(client(&url, &viewer, "write-register 17 400001 3").0, 11);
+    let (code, _, err) = client(&url, &viewer, "write-register 17 400001 3");
+    assert_eq!(code, 11, "{err}");
+    assert!(err.contains("may be the server refusing"), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
     assert_eq!(client(&url, &operator, "write-register 17 400011 3").0, 11);
     assert_eq!(client(&url, &operator, "write-register 17 400001 3").0, 0);
     let (_, out, _) = client(&url, &viewer, "read-holding 17 400001 -o values");
@@ -682,6 +699,11 @@ fn gateway_takes_tls_clients_with_their_roles() {
     // Without a client certificate: refused before anything reaches the line.
     let ca_only = vec!["--ca".to_string(), pki.path("ca.pem")];
     assert_eq!(client(&url, &ca_only, "read-holding 17 400001").0, 1);
+    // The plain listener's clients are viewers.
+    let plain_url = format!("127.0.0.1:{plain}");
+    assert_eq!(client(&plain_url, &[], "write-register 17 400001 4").0, 11);
+    let (_, out, _) = client(&plain_url, &[], "read-holding 17 400001 -o values");
+    assert_eq!(out.trim(), "3");
     drop(gateway);
     let rows: Vec<serde_json::Value> = std::fs::read_to_string(&rows)
         .unwrap()
@@ -689,16 +711,20 @@ fn gateway_takes_tls_clients_with_their_roles() {
         .filter_map(|line| serde_json::from_str(line).ok())
         .filter(|row: &serde_json::Value| row.get("client").is_some())
         .collect();
-    assert_eq!(rows.len(), 5, "{rows:#?}");
+    assert_eq!(rows.len(), 7, "{rows:#?}");
     let refused: Vec<_> = rows
         .iter()
-        .filter(|row| row["outcome"] == "exception")
+        .filter(|row| row["outcome"] == "refused")
         .collect();
-    assert_eq!(refused.len(), 2, "{rows:#?}");
-    for row in refused {
+    assert_eq!(refused.len(), 3, "{rows:#?}");
+    for row in &refused {
         // Answered by the gateway itself: the line was not asked.
         assert_eq!(row["tries"], 0, "{row}");
+        assert_eq!(row["answer"]["exception"], 1, "{row}");
     }
+    assert_eq!(refused[0]["why"], "role viewer may not write 400001");
+    assert_eq!(refused[1]["why"], "role operator may not write 400011");
+    assert_eq!(refused[2]["role"], "viewer", "{rows:#?}");
     assert_eq!(rows[1]["role"], "viewer", "{rows:#?}");
     assert_eq!(rows[3]["role"], "operator", "{rows:#?}");
     // The client is its address alone, as for plain clients.
@@ -923,4 +949,42 @@ fn a_role_with_control_characters_forges_no_log_line() {
     );
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("tls:// carries Modbus TCP frames"), "{err}");
+}
+
+#[test]
+fn a_plain_server_with_roles_gives_every_client_the_plain_role() {
+    let port = free_port();
+    let log = tempfile::NamedTempFile::new().unwrap();
+    let _server = Stopped(
+        mbtool_process()
+            .args(["--port", &format!("tcp://127.0.0.1:{port}"), "serve"])
+            .args([
+                "--role",
+                "viewer=read:400001-400010",
+                "--plain-role",
+                "viewer",
+            ])
+            .stdout(Stdio::null())
+            .stderr(log.reopen().unwrap())
+            .spawn()
+            .unwrap(),
+    );
+    assert!(wait_for_listener(port, Duration::from_secs(10)));
+    let url = format!("127.0.0.1:{port}");
+    let (code, out, err) = client(&url, &[], "read-holding 17 400001 2 -o values");
+    assert_eq!((code, out.as_str()), (0, "0\n0\n"), "{err}");
+    let (code, _, err) = client(&url, &[], "write-register 17 400001 5");
+    assert_eq!(code, 11, "{err}");
+    let (code, _, err) = client(&url, &[], "read-holding 17 400108");
+    assert_eq!(code, 11, "{err}");
+    let logged = logged_once(log.path(), &["may not read 400108"]);
+    assert!(logged.contains("every client gets role viewer"), "{logged}");
+    assert!(
+        logged.contains("(viewer) slave 17: 6 Write Single Register 400001 = 5 -> exception 01 illegal function: role viewer may not write 400001"),
+        "{logged}"
+    );
+    assert!(
+        logged.contains("-> exception 01 illegal function: role viewer may not read 400108"),
+        "{logged}"
+    );
 }

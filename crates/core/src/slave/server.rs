@@ -82,6 +82,7 @@ pub struct Server {
     started: Instant,
     logger: Option<Logger>,
     security: Option<Security>,
+    plain_role: Option<Role>,
 }
 
 impl Server {
@@ -101,6 +102,7 @@ impl Server {
             started: Instant::now(),
             logger,
             security: None,
+            plain_role: None,
         }
     }
 
@@ -108,6 +110,23 @@ impl Server {
     pub fn secured(mut self, security: Security) -> Self {
         self.security = Some(security);
         self
+    }
+
+    /// The server with every client of a plain listener (or of a serial line) holding
+    /// `role`: where roles are checked, one that none may escape.
+    pub fn with_plain_role(mut self, role: Role) -> Self {
+        self.plain_role = Some(role);
+        self
+    }
+
+    /// Who a client that comes without a certificate is: where it is, and the plain
+    /// role, if one was given.
+    pub fn plain_client<'a>(&'a self, peer: &'a str) -> Client<'a> {
+        Client {
+            peer,
+            role: self.plain_role.as_ref().map(|role| role.name.as_str()),
+            rights: self.plain_role.as_ref(),
+        }
     }
 
     /// The answer to a frame found on the wire, as bytes to send (`None`: stay silent):
@@ -263,7 +282,7 @@ impl Server {
                     fastrand::Rng::with_seed(self.seed.wrapping_add(client.number as u64));
                 let Some(security) = &self.security else {
                     let mut transport = Tcp::from_stream(client.stream, self.mode != Mode::Tcp)?;
-                    let who = Client::at(&client.peer);
+                    let who = self.plain_client(&client.peer);
                     return self.serve_stream(&mut transport, who, &client.link, &mut rng);
                 };
                 let mut admitted = security.admit(client.stream, &client.peer)?;
