@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_mbtool_global_optspecs
-    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= timeout= retries= frame-gap= rs485 rs485-delay-before= rs485-delay-after= rts-level= rts-toggle o/output= json v/verbose pdu-addresses address-base= t/type= order= max-per-request= poll= count= log= secondary-port= secondary-baud= secondary-parity= secondary-data-bits= secondary-stop-bits= secondary-mode= switch-on= switch-when= cert= key= ca= tls-server-name= h/help V/version
+    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= timeout= retries= retry-non-idempotent frame-gap= rs485 rs485-delay-before= rs485-delay-after= rts-level= rts-toggle o/output= json v/verbose pdu-addresses address-base= t/type= order= max-per-request= poll= count= log= secondary-port= secondary-baud= secondary-parity= secondary-data-bits= secondary-stop-bits= secondary-mode= switch-on= switch-when= cert= key= ca= tls-server-name= h/help V/version
 end
 
 function __fish_mbtool_needs_command
@@ -83,6 +83,7 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -l cert -d 'This end\'s cert
 complete -c mbtool -n "__fish_mbtool_needs_command" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_needs_command" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_needs_command" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l json -d 'The same as --output json'
@@ -713,6 +714,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l cert -d
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l json -d 'The same as --output json'
@@ -818,6 +820,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l function -d 'For
 6\t''
 15\t''
 16\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l json -d 'The same as --output json'
@@ -865,6 +868,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l cert -d 'This end\
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l json -d 'The same as --output json'
@@ -1296,6 +1300,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l exception -d 'An
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l seed -d 'Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l role -d 'Over tls://: what clients of role NAME may do, RULES being read and write, each alone or with a range (operator=read,write:400001-400100); repeatable. A request its role does not allow gets exception 01' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l default-role -d 'Over tls://: the role of a client whose certificate carries none [default: such a client is refused, when --role is given]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l plain-role -d 'The role of every client of a plain tcp:// listener, which has no certificate to claim one: with --role, a plain listener is refused without it' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l vendor -d 'Device identification: vendor name' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l product-code -d 'Device identification: product code' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l identity -d 'Device identification: any object, by name or id (VendorUrl=https://example.com, ProductName=Pump, 0x80=serial 4711); repeatable' -r
@@ -1336,6 +1341,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l listen -d 'Whe
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l unit-map -d 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l role -d 'Over tls://: what clients of role NAME may do, RULES being read and write, each alone or with a range (operator=read,write:400001-400100); repeatable. A request its role does not allow gets exception 01' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l default-role -d 'Over tls://: the role of a client whose certificate carries none [default: such a client is refused, when --role is given]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l plain-role -d 'The role of every client of a plain tcp:// listener, which has no certificate to claim one: with --role, a plain listener is refused without it' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l json -d 'The same as --output json'

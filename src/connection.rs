@@ -409,6 +409,7 @@ pub fn master_at(
             mode,
             timeout: answer.timeout,
             retries: answer.retries,
+            retry_non_idempotent: options.retry_non_idempotent,
             frame_gap: gap,
             character,
             silence,

@@ -44,6 +44,12 @@ pub enum Error {
         function: u8,
         code: ExceptionCode,
     },
+    /// A request that changes the device got no answer: it may have been carried out.
+    #[error(
+        "{error}; the request was sent {} and may have been carried out all the same: read back before writing again",
+        mbtool_core::master::run::times(*.sent)
+    )]
+    Unconfirmed { error: Box<Error>, sent: u32 },
     /// Exception 01 over Modbus/TCP Security, which may be the server's role check.
     #[error(
         "{0}: over Modbus/TCP Security this may be the server refusing what this certificate's role may do \
@@ -90,6 +96,10 @@ impl From<RunError> for Error {
     fn from(error: RunError) -> Self {
         match error {
             RunError::Master(error) => Error::Master(error),
+            RunError::Unconfirmed { error, sent } => Error::Unconfirmed {
+                error: Box::new(Error::Master(error)),
+                sent,
+            },
             RunError::Exception {
                 slave,
                 function,
@@ -122,6 +132,10 @@ impl Error {
                 tried,
                 advice,
             },
+            Error::Unconfirmed { error, sent } => Error::Unconfirmed {
+                error: Box::new(error.tried(tried, advice)),
+                sent,
+            },
             other => other,
         }
     }
@@ -143,7 +157,7 @@ impl Error {
             Error::Master(MasterError::Interrupted) => 130,
             // 10 + N; a code past 245 (none is defined) saturates at 255.
             Error::Exception { code, .. } => 10u8.saturating_add(code.0),
-            Error::MaybeRole(error) => error.exit_code(),
+            Error::MaybeRole(error) | Error::Unconfirmed { error, .. } => error.exit_code(),
         }
     }
 }

@@ -53,6 +53,8 @@ pub struct Connection {
     /// Whether `--timeout` (or its variable) gave it.
     pub timeout_given: bool,
     pub retries: u32,
+    /// `--retry-non-idempotent`: retries of requests that may do more when sent twice.
+    pub retry_non_idempotent: bool,
     pub frame_gap: Option<Duration>,
     /// Who switches an RS-485 transceiver: `--rs485`, `--rts-toggle` and their timing.
     pub direction: DirectionControl,
@@ -238,6 +240,7 @@ pub fn resolve(
             timeout: c.timeout.unwrap_or(default_timeout),
             timeout_given: c.timeout.is_some(),
             retries: c.retries,
+            retry_non_idempotent: c.retry_non_idempotent,
             frame_gap: c.frame_gap,
             direction,
             direction_typed,

@@ -274,6 +274,8 @@ const LINE: &[&str] = &[
     "rts_toggle",
 ];
 const MASTER: &[&str] = &["timeout", "retries", "frame_gap", "verbose"];
+/// For the commands that can send a request that may do more when sent twice.
+const REPEAT: &[&str] = &["retry_non_idempotent"];
 const FORMAT: &[&str] = &["output", "json"];
 const ADDRESSES: &[&str] = &["pdu_addresses", "address_base"];
 const SPLIT: &[&str] = &["max_per_request"];
@@ -291,7 +293,7 @@ const REDUNDANCY: &[&str] = &[
     "switch_when",
 ];
 const COMMON_GROUPS: &[&[&str]] = &[
-    LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS, POLL, TLS, REDUNDANCY,
+    LINE, MASTER, REPEAT, FORMAT, ADDRESSES, SPLIT, REGISTERS, POLL, TLS, REDUNDANCY,
 ];
 
 /// Whether `id` is one of the options every command shares ([`Common`]), wherever clap
@@ -310,7 +312,7 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
         ["encode"] => &[&["port", "mode"], FORMAT, ADDRESSES, SPLIT, REGISTERS],
         ["sniff"] => &[LINE, FORMAT],
         ["serve"] => &[LINE, FORMAT, TLS],
-        ["gateway"] => &[LINE, MASTER, FORMAT, &["log"], TLS],
+        ["gateway"] => &[LINE, MASTER, REPEAT, FORMAT, &["log"], TLS],
         ["info"] => &[LINE, MASTER, FORMAT, TLS],
         // watch draws the screen: no -v trace, no output format.
         ["watch"] => &[
@@ -342,10 +344,13 @@ pub fn takes_option(path: &[&str], id: &str) -> bool {
         ],
         ["write-coil"] => &[LINE, MASTER, FORMAT, ADDRESSES, TLS],
         ["write-coils"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, TLS],
-        ["write-register"] => &[LINE, MASTER, FORMAT, ADDRESSES, REGISTERS, TLS],
-        ["write-registers" | "write"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS, TLS],
+        ["write-register"] => &[LINE, MASTER, REPEAT, FORMAT, ADDRESSES, REGISTERS, TLS],
+        ["write-registers"] => &[LINE, MASTER, FORMAT, ADDRESSES, SPLIT, REGISTERS, TLS],
+        ["write"] => &[
+            LINE, MASTER, REPEAT, FORMAT, ADDRESSES, SPLIT, REGISTERS, TLS,
+        ],
         // raw decodes the answer: --type shows its registers.
-        ["raw"] => &[LINE, MASTER, FORMAT, REGISTERS, TLS],
+        ["raw"] => &[LINE, MASTER, REPEAT, FORMAT, REGISTERS, TLS],
         _ => &[],
     };
     groups.iter().any(|group| group.contains(&id))

@@ -74,6 +74,11 @@ pub struct ConnectionArgs {
     #[arg(long, global = true, env = "MBTOOL_RETRIES", hide_env_values = true, default_value_t = 0, value_name = "N", allow_negative_numbers = true, value_parser = whole::<u32>(0, 100))]
     pub retries: u32,
 
+    /// With --retries, retry a request that may do more when sent twice too: mask write
+    /// (22), read/write multiple (23), file record write (21), user-defined functions
+    #[arg(long, global = true)]
+    pub retry_non_idempotent: bool,
+
     /// Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200
     /// baud]; 0 for gateways and devices that need none
     #[arg(long, global = true, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]

@@ -30,18 +30,20 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
         .map_err(Error::from)?;
     if let Some(path) = &settings.output.file {
         // Found out before the device is read, which may take minutes.
-        can_write(path)
-            .map_err(|e| Error::usage(format!("cannot write {}: {e}", path.display())))?;
+        can_write(path).map_err(|e| {
+            std::io::Error::new(e.kind(), format!("cannot write {}: {e}", path.display()))
+        })?;
     }
     let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
     let stop = super::shared::stop_on_signal()?;
-    connection.master.stop_on(stop.clone());
+    connection.master.stop_on(stop.flag.clone());
+    let started = std::time::Instant::now();
     let dump = backup::dump(
         &mut connection.master,
         slave,
         &ranges,
         settings.data.max_per_request,
-        &stop,
+        &stop.flag,
     );
     super::shared::tell_switches(settings, &mut connection.master);
     let dump = dump.map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
@@ -51,7 +53,7 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
             "mbtool: dump interrupted after reading {values} addresses of slave {slave} in {}; nothing was written, since a part of a device is no backup",
             plural(dump.requests as usize, "request")
         );
-        return Ok(super::shared::INTERRUPTED);
+        return Ok(stop.exit_status());
     }
     if !dump.holes.is_empty() {
         let holes: Vec<String> = dump
@@ -98,8 +100,16 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
             "standard output".to_string()
         }
     };
+    // Requests one after another: another master's write meanwhile falls between them.
+    let not_at_once = match dump.requests {
+        0 | 1 => String::new(),
+        _ => format!(
+            " over {}, one after another: not a snapshot if another master wrote meanwhile",
+            mbtool_core::model::duration::show(started.elapsed())
+        ),
+    };
     mbtool::note!(
-        "mbtool: dumped {values} addresses of slave {slave} in {} to {target}",
+        "mbtool: dumped {values} addresses of slave {slave} to {target} in {}{not_at_once}",
         plural(dump.requests as usize, "request")
     );
     Ok(0)

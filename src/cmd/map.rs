@@ -295,6 +295,10 @@ impl ByMap {
                 interval,
             );
         }
+        if let ByMap::Write(writes, _) = self {
+            let requests: Vec<Request> = writes.iter().map(|w| w.request.clone()).collect();
+            super::shared::refuse_unsafe_retries(settings, &requests)?;
+        }
         let mut connection = connection::connect(&settings.connection)?;
         if settings.output.verbose {
             connection
@@ -303,7 +307,11 @@ impl ByMap {
         }
         match self {
             ByMap::Read(plan) => read(settings, plan, &mut connection),
-            ByMap::Write(writes, _) => write(settings, writes, &mut connection),
+            ByMap::Write(writes, _) => {
+                let written = write(settings, writes, &mut connection);
+                super::shared::tell_resent(&mut connection.master);
+                written
+            }
         }
     }
 

@@ -36,6 +36,7 @@ pub fn run(settings: &Settings, request: &RequestCommand) -> Result<u8> {
         return by_map.run(settings);
     }
     let plan = super::shared::plan_for(settings, request)?;
+    super::shared::refuse_unsafe_retries(settings, &plan.requests)?;
     let target = connection::target(&settings.connection)?;
     if let (Some(interval), Some((table, address))) = (settings.poll.interval, plan.reads) {
         return poll_reads(settings, &target, &plan, (table, address), interval);
@@ -53,6 +54,7 @@ pub fn run(settings: &Settings, request: &RequestCommand) -> Result<u8> {
         (_, None) => writes(settings, master, &plan, &mut out),
     };
     super::shared::tell_switches(settings, master);
+    super::shared::tell_resent(master);
     let code = code.map_err(|error| match error.downcast::<Error>() {
         Ok(error) => connection.explain(&settings.connection, error).into(),
         Err(error) => error,

@@ -58,16 +58,17 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
     }
     let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
     let stop = super::shared::stop_on_signal()?;
-    connection.master.stop_on(stop.clone());
+    connection.master.stop_on(stop.flag.clone());
     let master = &mut connection.master;
     let mut sent = 0;
     let outcome = requests
         .iter()
-        .take_while(|_| !stop.load(Ordering::SeqCst))
+        .take_while(|_| !stop.flag.load(Ordering::SeqCst))
         .try_for_each(|request| {
             sent += 1;
             let answered = master.answer(slave, request).map(|_| ());
             super::shared::tell_switches(settings, master);
+            super::shared::tell_resent(master);
             answered
         });
     if matches!(outcome, Err(RunError::Master(MasterError::Interrupted))) {
@@ -76,7 +77,7 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
             "mbtool: restore interrupted while request {sent} of {} waited for its answer (it may or may not have been written): slave {slave} may hold part of {file}; run restore again to write it all",
             requests.len()
         );
-        return Ok(super::shared::INTERRUPTED);
+        return Ok(stop.exit_status());
     }
     if outcome.is_ok() && sent < requests.len() {
         // Stopped between two writes: the device holds part of the file, and says so.
@@ -85,16 +86,17 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
             plural(sent, "request"),
             requests.len()
         );
-        return Ok(super::shared::INTERRUPTED);
+        return Ok(stop.exit_status());
     }
     let outcome = outcome.and_then(|()| verify(master, slave, &entries));
     if matches!(outcome, Err(RunError::Master(MasterError::Interrupted))) {
         mbtool::note!(
             "mbtool: restore interrupted while reading back: every value of {file} was written to slave {slave}, but not all were read back; run restore again to check them"
         );
-        return Ok(super::shared::INTERRUPTED);
+        return Ok(stop.exit_status());
     }
     super::shared::tell_switches(settings, master);
+    super::shared::tell_resent(master);
     let differences =
         outcome.map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
     let written: usize = entries

@@ -96,7 +96,7 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
                 bar.advance(format!("{found} found"));
             }
         },
-        &stop,
+        &stop.flag,
     )?;
     bar.clear();
     let mut out = output::stdout();
@@ -141,7 +141,7 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
             "mbtool: scan interrupted; so far {}",
             summary(&report, &place, started.elapsed())
         );
-        return Ok(super::shared::INTERRUPTED);
+        return Ok(stop.exit_status());
     }
     mbtool::note!("mbtool: {}", summary(&report, &place, started.elapsed()));
     if matches!(&endpoint, Endpoint::Serial(path) if serial::is_pseudo_terminal(path)) {

@@ -2,18 +2,19 @@
 //! the settings, the `-v` tracer, and what is said of a write done another way; and what
 //! the servers (serve, gateway) share: their Modbus/TCP Security.
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Arc;
 use std::time::Instant;
 
 use anyhow::Result;
+use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
 
 use mbtool::cli::{RequestCommand, RoleArgs};
 use mbtool::connection::{self, Connection, Role};
 use mbtool::error::Error;
 use mbtool::output::encode::frame_text;
 use mbtool::settings::Settings;
-use mbtool_core::codec::Mode;
+use mbtool_core::codec::{Mode, Request};
 use mbtool_core::listener::roles::Roles;
 use mbtool_core::listener::Security;
 use mbtool_core::master::failover::{PathName, Switch};
@@ -47,6 +48,26 @@ pub fn plan_options(settings: &Settings) -> PlanOptions {
 /// Checks the command line of a request command and plans its requests.
 pub fn plan_for(settings: &Settings, request: &RequestCommand) -> Result<Plan, Error> {
     Ok(plan(&request.operation(), plan_options(settings))?)
+}
+
+/// `--retries` on a request that may do more when sent twice (a mask write, a user
+/// function) is refused unless `--retry-non-idempotent` asks for it: the master would
+/// send it only once.
+pub fn refuse_unsafe_retries(settings: &Settings, requests: &[Request]) -> Result<(), Error> {
+    let connection = &settings.connection;
+    if connection.retries == 0 || connection.retry_non_idempotent {
+        return Ok(());
+    }
+    match requests.iter().find(|r| r.may_differ_when_repeated()) {
+        Some(request) => Err(Error::usage(format!(
+            "--retries {} would send function {:02} ({}) again after a lost answer, and the device may have \
+             carried it out already: give --retry-non-idempotent to retry it all the same, or --retries 0",
+            connection.retries,
+            request.function(),
+            mbtool_core::codec::function::name(request.function())
+        ))),
+        None => Ok(()),
+    }
 }
 
 /// Says that a bit was written without function 22.
@@ -115,6 +136,20 @@ pub fn tell_switches(settings: &Settings, master: &mut Master) {
     }
 }
 
+/// A line on stderr for each request that changes the device and was sent more than once:
+/// the answers to the earlier tries were lost, so the device may have carried out each.
+pub fn tell_resent(master: &mut Master) {
+    for resent in master.take_resent() {
+        mbtool::note!(
+            "mbtool: function {:02} ({}) was sent to slave {} {} before an answer came: the device may have carried it out each time",
+            resent.function,
+            mbtool_core::codec::function::name(resent.function),
+            resent.slave,
+            mbtool_core::master::run::times(resent.sent),
+        );
+    }
+}
+
 /// A line on stderr when the secondary path cannot be opened now.
 pub fn warn_if_secondary_unavailable(settings: &Settings) {
     if let Some(why) = connection::secondary_unavailable(&settings.connection) {
@@ -124,18 +159,39 @@ pub fn warn_if_secondary_unavailable(settings: &Settings) {
     }
 }
 
-/// The exit status of a command ended by Ctrl-C or SIGTERM, as a shell reports one killed
-/// by SIGINT.
-pub const INTERRUPTED: u8 = 130;
+/// What Ctrl-C (SIGINT), SIGTERM and SIGHUP set, for a long command to end with what it
+/// has: the flag the core watches, and which signal it was.
+pub struct Stop {
+    /// Set by any of the three.
+    pub flag: Arc<AtomicBool>,
+    signal: Arc<AtomicUsize>,
+}
 
-/// A flag that Ctrl-C (SIGINT), SIGTERM and SIGHUP set, for a long command to end with
-/// what it has. Installed in place of the default action, so a command started in the
-/// background of a script (where SIGINT is ignored) ends on it too.
-pub fn stop_on_signal() -> Result<Arc<AtomicBool>> {
-    let stop = Arc::new(AtomicBool::new(false));
-    let flag = Arc::clone(&stop);
-    ctrlc::set_handler(move || flag.store(true, Ordering::SeqCst))
-        .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
+impl Stop {
+    /// The exit status of a command the signal ended, as a shell reports one it killed:
+    /// 128 + N (130 for Ctrl-C, 143 for SIGTERM, 129 for SIGHUP).
+    pub fn exit_status(&self) -> u8 {
+        let signal = match self.signal.load(Ordering::SeqCst) {
+            0 => SIGINT,
+            n => n as i32,
+        };
+        128u8.saturating_add(u8::try_from(signal).unwrap_or(u8::MAX))
+    }
+}
+
+/// Installed in place of the default actions, so that a command started in the background
+/// of a script (where SIGINT is ignored) ends on them too.
+pub fn stop_on_signal() -> Result<Stop> {
+    let stop = Stop {
+        flag: Arc::new(AtomicBool::new(false)),
+        signal: Arc::new(AtomicUsize::new(0)),
+    };
+    for signal in [SIGINT, SIGTERM, SIGHUP] {
+        // The number first: the flag is what the command watches.
+        signal_hook::flag::register_usize(signal, Arc::clone(&stop.signal), signal as usize)
+            .and_then(|_| signal_hook::flag::register(signal, Arc::clone(&stop.flag)))
+            .map_err(|e| anyhow::anyhow!("cannot catch signal {signal}: {e}"))?;
+    }
     Ok(stop)
 }
 

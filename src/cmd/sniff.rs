@@ -72,7 +72,7 @@ type Input = io::BufReader<Box<dyn Read + Send>>;
 
 fn open_input(path: &Path) -> Result<Input> {
     let mut input: Box<dyn Read + Send> = if path.as_os_str() == "-" {
-        Box::new(StoppableStdin::new(super::shared::stop_on_signal()?))
+        Box::new(StoppableStdin::new(super::shared::stop_on_signal()?.flag))
     } else {
         Box::new(File::open(path).with_context(|| format!("cannot open {}", path.display()))?)
     };
@@ -424,7 +424,7 @@ fn capture_live(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         )?),
         None => None,
     };
-    let stop = super::shared::stop_on_signal()?;
+    let stop = super::shared::stop_on_signal()?.flag;
     mbtool::note!(
         "mbtool: capturing Modbus TCP on {interface} (ports {}); Ctrl-C ends with a summary",
         ports

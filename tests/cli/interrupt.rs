@@ -1,5 +1,6 @@
-//! Long commands ended by Ctrl-C, SIGINT or SIGTERM end with what they have: scan shows the
-//! slaves found so far, dump writes its file whole or not at all, and both exit 130. In a
+//! Long commands ended by Ctrl-C, SIGINT, SIGTERM or SIGHUP end with what they have: scan
+//! shows the slaves found so far, dump writes its file whole or not at all, and each exits
+//! as a shell reports a command the signal killed, 128 + N (130, 143, 129). In a
 //! real terminal (tmux) and in the background of a script, where SIGINT is ignored unless
 //! the program catches it.
 
@@ -55,16 +56,16 @@ fn words(port: &[String], args: &str) -> Vec<String> {
 }
 
 #[test]
-fn an_interrupted_scan_shows_the_slaves_found_so_far_and_exits_130() {
+fn an_interrupted_scan_shows_the_slaves_found_so_far_and_exits_128_and_the_signal() {
     let Some(pair) = PtyPair::new() else { return };
     let (_server, port) = serve_pty(&pair, &["--slave", "3", "--slave", "17"]);
-    for signal in ["INT", "TERM"] {
+    for (signal, status) in [("INT", 130), ("TERM", 143), ("HUP", 129)] {
         // 247 ids at 100 ms take 25 s; by 3 s ids 3 and 17 have been asked.
         let args = words(&port, "scan --ids 1-247 --timeout 100ms --json");
         let (output, took) = signalled(&args, Duration::from_secs(3), signal);
         let stdout = String::from_utf8_lossy(&output.stdout);
         let stderr = String::from_utf8_lossy(&output.stderr);
-        assert_eq!(output.status.code(), Some(130), "SIG{signal}: {stderr}");
+        assert_eq!(output.status.code(), Some(status), "SIG{signal}: {stderr}");
         assert!(
             took < Duration::from_secs(1),
             "SIG{signal}: ended {took:?} after"
@@ -121,7 +122,7 @@ fn an_interrupted_dump_writes_no_file_and_leaves_an_older_one_as_it_was() {
     // A dump that was there stays whole.
     std::fs::write(&file, "# an older dump\n400001 = 7\n").unwrap();
     let (output, _) = signalled(&args, Duration::from_secs(1), "TERM");
-    assert_eq!(output.status.code(), Some(130));
+    assert_eq!(output.status.code(), Some(143));
     assert_eq!(
         std::fs::read_to_string(&file).unwrap(),
         "# an older dump\n400001 = 7\n"
@@ -152,10 +153,10 @@ fn a_dump_or_a_restore_waiting_for_a_tcp_answer_ends_on_a_signal_not_at_its_time
         &port,
         &format!("--timeout 5s dump 17 400001-400200 -o {}", file.display()),
     );
-    for signal in ["INT", "TERM"] {
+    for (signal, status) in [("INT", 130), ("TERM", 143)] {
         let (output, took) = signalled(&args, Duration::from_millis(500), signal);
         let stderr = String::from_utf8_lossy(&output.stderr);
-        assert_eq!(output.status.code(), Some(130), "SIG{signal}: {stderr}");
+        assert_eq!(output.status.code(), Some(status), "SIG{signal}: {stderr}");
         assert!(
             took < Duration::from_secs(1),
             "SIG{signal}: ended {took:?} after"
@@ -169,9 +170,9 @@ fn a_dump_or_a_restore_waiting_for_a_tcp_answer_ends_on_a_signal_not_at_its_time
         &port,
         &format!("--timeout 5s restore 17 {}", file.display()),
     );
-    let (output, took) = signalled(&args, Duration::from_millis(500), "TERM");
+    let (output, took) = signalled(&args, Duration::from_millis(500), "HUP");
     let stderr = String::from_utf8_lossy(&output.stderr);
-    assert_eq!(output.status.code(), Some(130), "{stderr}");
+    assert_eq!(output.status.code(), Some(129), "{stderr}");
     assert!(took < Duration::from_secs(1), "ended {took:?} after");
     assert!(
         stderr.contains("mbtool: restore interrupted while request 1 of 1 waited for its answer"),

@@ -398,13 +398,48 @@ fn a_late_answer_is_never_taken_for_the_next_requests() {
         Act::Echo,
         now(&answer()),
     ];
-    let outcome = against(
-        acts,
-        &[&READ[..], &["--poll", "0", "--count", "2"]].concat(),
-    );
+    let outcome = against(acts, &[READ, &["--poll", "0", "--count", "2"]].concat());
     assert_eq!(outcome.code, 0, "{}", outcome.stderr);
     assert_eq!(outcome.stdout, "555\n0\n100\n", "{}", outcome.stderr);
     assert_eq!(outcome.requests.len(), 3, "{:02X?}", outcome.requests);
     assert_eq!(outcome.requests[1][1..3], [0x08, 0x00, 0x00][..2]);
     assert_eq!(outcome.requests[2], request());
+}
+
+#[test]
+fn a_write_is_told_as_it_happened_when_answers_are_lost() {
+    let write = ["write-register", "17", "400002", "3", "--retries", "2"];
+    let echo = rtu(&[0x11, 0x06, 0x00, 0x01, 0x00, 0x03]);
+    // The first answer is lost: written, and said to have been sent twice.
+    let outcome = against(vec![Act::Silence, now(&echo)], &write);
+    assert_eq!(outcome.code, 0, "{}", outcome.stderr);
+    assert_eq!(outcome.requests.len(), 2);
+    assert!(
+        outcome
+            .stderr
+            .contains("function 06 (Write Single Register) was sent to slave 17 2 times before an answer came"),
+        "{}",
+        outcome.stderr
+    );
+    // No answer at all: the write may have been carried out, and the message says so.
+    let outcome = against(vec![Act::Silence, Act::Silence, Act::Silence], &write);
+    assert_fails(
+        &outcome,
+        3,
+        "the request was sent 3 times and may have been carried out all the same",
+    );
+    assert_eq!(outcome.requests.len(), 3);
+}
+
+#[test]
+fn retries_of_a_request_that_may_do_more_when_sent_twice_are_asked_for_explicitly() {
+    // A bit of a register is written with one mask write (22).
+    let mask = ["write-register", "17", "400002.03", "1", "--retries", "1"];
+    let outcome = against(vec![], &mask);
+    assert_fails(&outcome, 2, "give --retry-non-idempotent");
+    assert!(outcome.requests.is_empty(), "{:02X?}", outcome.requests);
+    let explicit = [&mask[..], &["--retry-non-idempotent"]].concat();
+    let outcome = against(vec![Act::Silence, Act::Silence], &explicit);
+    assert_eq!(outcome.code, 3, "{}", outcome.stderr);
+    assert_eq!(outcome.requests.len(), 2, "{:02X?}", outcome.requests);
 }

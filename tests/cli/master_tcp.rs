@@ -119,6 +119,7 @@ fn a_duplicated_answer_is_skipped_by_the_next_transaction() {
             mode: Mode::Tcp,
             timeout: Duration::from_secs(2),
             retries: 0,
+            retry_non_idempotent: false,
             frame_gap: Duration::ZERO,
             character: Duration::ZERO,
             silence: Duration::ZERO,

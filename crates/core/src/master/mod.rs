@@ -32,6 +32,9 @@ pub struct MasterOptions {
     pub timeout: Duration,
     /// After a timeout or a bad answer; never after an exception.
     pub retries: u32,
+    /// Retries of a request that may do more when sent twice
+    /// ([`Request::may_differ_when_repeated`]) too; without it such a request is sent once.
+    pub retry_non_idempotent: bool,
     /// Silence kept between transactions on a serial line, counted from the last byte
     /// received.
     pub frame_gap: Duration,
@@ -76,9 +79,9 @@ pub enum MasterError {
     },
     /// On a line without transaction ids, a late answer to an earlier request of the same
     /// function may still come, and the check that would have told it apart (08/00) got
-    /// no answer of its own: the request was not sent.
+    /// something else than its answer: the request was not sent.
     #[error(
-        "slave {slave} did not answer the check sent before the request (08/00, {why}): \
+        "slave {slave} did not answer the check sent before the request (08/00: {why}): \
          an earlier function {function} request's answer could still come and pass for this one's, so it was not sent"
     )]
     OutOfStep {
@@ -180,6 +183,9 @@ pub struct Master {
     /// function to the same slave, so that request waits until the slave is back in step;
     /// one heard meanwhile is paid off.
     owed: Vec<(u8, u8)>,
+    /// The requests that change the device and were sent more than once, for the
+    /// command to tell.
+    resent: Vec<run::Resent>,
 }
 
 /// The tries of one request so far.
@@ -235,6 +241,7 @@ impl Master {
             failover: None,
             stop: None,
             owed: Vec::new(),
+            resent: Vec::new(),
         }
     }
 
@@ -352,6 +359,12 @@ impl Master {
         }
     }
 
+    /// The requests that change the device and were sent more than once since last
+    /// asked: each may have been carried out more than once.
+    pub fn take_resent(&mut self) -> Vec<run::Resent> {
+        std::mem::take(&mut self.resent)
+    }
+
     /// The time an answer is waited for.
     pub fn timeout(&self) -> Duration {
         self.options.timeout
@@ -404,6 +417,11 @@ impl Master {
         request: &Request,
         tries: &mut Tries,
     ) -> Result<Reply, MasterError> {
+        let retries = if request.may_differ_when_repeated() && !self.options.retry_non_idempotent {
+            0
+        } else {
+            self.options.retries
+        };
         let mut here = 0;
         loop {
             here += 1;
@@ -412,7 +430,7 @@ impl Master {
                     MasterError::Timeout { .. }
                     | MasterError::BadFrame { .. }
                     | MasterError::OutOfStep { .. },
-                ) if here <= self.options.retries => {}
+                ) if here <= retries => {}
                 result => return result,
             }
         }
@@ -467,21 +485,24 @@ impl Master {
                 self.settle(slave);
                 Ok(())
             }
+            // A slave silent to the check too is told as any silent slave: no answer.
             Err(
-                error @ (MasterError::Io(_) | MasterError::Encode(_) | MasterError::Interrupted),
-            ) => Err(error),
+                error @ (MasterError::Io(_)
+                | MasterError::Encode(_)
+                | MasterError::Interrupted
+                | MasterError::Timeout { .. }),
+            ) => {
+                if matches!(error, MasterError::Timeout { .. }) {
+                    self.owed.push((slave, check.function()));
+                }
+                Err(error)
+            }
             Err(error) => {
                 self.owed.push((slave, check.function()));
-                let why = match error {
-                    MasterError::Timeout { timeout, .. } => {
-                        format!("no answer within {}", show(timeout))
-                    }
-                    other => other.to_string(),
-                };
                 Err(MasterError::OutOfStep {
                     slave,
                     function,
-                    why,
+                    why: error.to_string(),
                 })
             }
         }

@@ -29,6 +29,35 @@ pub enum RunError {
         /// Why the slave refused.
         code: ExceptionCode,
     },
+    /// A request that changes the device was sent and no answer told whether it was
+    /// carried out.
+    #[error("{error}; the request was sent {} and may have been carried out all the same", times(*.sent))]
+    Unconfirmed {
+        /// Why no answer was taken.
+        error: MasterError,
+        /// How many times it went on the wire.
+        sent: u32,
+    },
+}
+
+/// `once`, `2 times`.
+pub fn times(n: u32) -> String {
+    match n {
+        1 => "once".to_string(),
+        n => format!("{n} times"),
+    }
+}
+
+/// A request that changes the device, sent more than once before an answer came: the
+/// answers to the earlier tries were lost, and the device may have carried out each.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Resent {
+    /// The slave asked.
+    pub slave: u8,
+    /// Its function code.
+    pub function: u8,
+    /// How many times it went on the wire.
+    pub sent: u32,
 }
 
 /// What one read returned, all requests of a split read put together.
@@ -88,7 +117,23 @@ impl Master {
     /// The answer to one request of `slave`, an exception as an error; `None` for a
     /// broadcast.
     pub fn answer(&mut self, slave: u8, request: &Request) -> Result<Option<Response>, RunError> {
-        match self.transact(slave, request)? {
+        let (outcome, sent) = self.transact_counted(slave, request);
+        let reply = match outcome {
+            Err(error @ (MasterError::Timeout { .. } | MasterError::BadFrame { .. }))
+                if sent > 0 && request.changes_device() && slave != 0 =>
+            {
+                return Err(RunError::Unconfirmed { error, sent });
+            }
+            outcome => outcome?,
+        };
+        if sent > 1 && request.changes_device() {
+            self.resent.push(Resent {
+                slave,
+                function: request.function(),
+                sent,
+            });
+        }
+        match reply {
             Reply::Response(response) => Ok(Some(response)),
             Reply::Broadcast => Ok(None),
             Reply::Exception(exception) => Err(RunError::Exception {
@@ -250,7 +295,7 @@ impl PollStats {
             }
             Err(RunError::Exception { .. }) => self.exceptions += 1,
             Err(RunError::Master(MasterError::Timeout { .. } | MasterError::OutOfStep { .. })) => {
-                self.timeouts += 1
+                self.timeouts += 1;
             }
             Err(RunError::Master(MasterError::BadFrame { .. })) => self.bad_frames += 1,
             Err(_) => self.other_errors += 1,

@@ -33,6 +33,37 @@ impl Request {
         }
     }
 
+    /// Whether it may change the device: a write of any kind, a diagnostic that restarts,
+    /// clears or silences it, and the functions mbtool has no layout for.
+    pub fn changes_device(&self) -> bool {
+        match self {
+            Request::WriteSingleCoil { .. }
+            | Request::WriteSingleRegister { .. }
+            | Request::WriteMultipleCoils { .. }
+            | Request::WriteMultipleRegisters { .. }
+            | Request::MaskWriteRegister { .. }
+            | Request::ReadWriteMultipleRegisters { .. } => true,
+            // Return query data and the counters only read.
+            Request::Diagnostics { sub_function, .. } => {
+                !matches!(sub_function, 0x00 | 0x02 | 0x0B..=0x12)
+            }
+            Request::Other { function, .. } => !matches!(function, 0x0B | 0x0C | 0x14 | 0x18),
+            _ => false,
+        }
+    }
+
+    /// Whether sending it a second time, after its answer was lost, may do more than
+    /// sending it once: file record writes, mask writes, read/write multiple, and the
+    /// functions mbtool has no layout for. A retry of one is asked for explicitly.
+    pub fn may_differ_when_repeated(&self) -> bool {
+        match self {
+            Request::MaskWriteRegister { .. } | Request::ReadWriteMultipleRegisters { .. } => true,
+            // File record reads, FIFO reads and the event counters only read.
+            Request::Other { function, .. } => !matches!(function, 0x0B | 0x0C | 0x14 | 0x18),
+            _ => false,
+        }
+    }
+
     /// How many coils or registers a read of one table (01-04) asks for; 0 for any other
     /// request.
     pub fn read_quantity(&self) -> u16 {
