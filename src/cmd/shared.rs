@@ -172,8 +172,8 @@ impl Stop {
     /// 128 + N (130 for Ctrl-C, 143 for SIGTERM, 129 for SIGHUP).
     pub fn exit_status(&self) -> u8 {
         let signal = match self.signal.load(Ordering::SeqCst) {
-            0 => SIGINT,
-            n => n as i32,
+            0 => SIGINT.unsigned_abs() as usize,
+            n => n,
         };
         128u8.saturating_add(u8::try_from(signal).unwrap_or(u8::MAX))
     }
