@@ -203,6 +203,9 @@ impl GatewayWriter {
             for (client, tally) in &summary.clients {
                 json_summary(out, "client", ("client", client.as_str().into()), tally)?;
             }
+            if let Some((count, tally)) = &summary.earlier {
+                json_summary(out, "earlier_clients", ("clients", (*count).into()), tally)?;
+            }
             for (unit, tally) in &summary.units {
                 json_summary(out, "unit", ("unit", (*unit).into()), tally)?;
             }
@@ -230,10 +233,15 @@ impl GatewayWriter {
             "p95",
             "max",
         ]);
+        let earlier = summary.earlier.as_ref().map(|(count, tally)| {
+            let name = format!("{} before", super::plural(*count as usize, "client"));
+            (name, tally)
+        });
         let rows = summary
             .clients
             .iter()
             .map(|(client, tally)| (format!("client {client}"), tally))
+            .chain(earlier)
             .chain(
                 summary
                     .units

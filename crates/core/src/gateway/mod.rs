@@ -6,7 +6,7 @@
 mod line;
 mod queue;
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, HashMap, VecDeque};
 use std::io::{self, Write};
 use std::net::{Shutdown, TcpListener};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -202,9 +202,43 @@ struct Times {
 }
 
 /// The most response times a tally keeps for its percentile.
-const TIMES_KEPT: usize = 10_000;
+const TIMES_KEPT: usize = 2_000;
+
+/// How many clients that left keep a row of their own in the summary; those that left
+/// before them are counted together, so that a gateway running for months holds and
+/// prints a bounded summary however many clients came and went.
+pub const RECENT_CLIENTS: usize = 32;
 
 impl Times {
+    /// `other`'s times added: exact counts and bounds, and a sample drawn from both in
+    /// proportion to how many times each stands for.
+    fn absorb(&mut self, other: &Times) {
+        if other.count == 0 {
+            return;
+        }
+        self.min = if self.count == 0 {
+            other.min
+        } else {
+            self.min.min(other.min)
+        };
+        self.max = self.max.max(other.max);
+        let (mine, theirs) = (self.count, other.count);
+        self.count += other.count;
+        self.sum = self.sum.saturating_add(other.sum);
+        let kept = TIMES_KEPT.min(self.sample.len() + other.sample.len());
+        let mut sample = Vec::with_capacity(kept);
+        for _ in 0..kept {
+            let take_mine = fastrand::u64(..mine + theirs) < mine;
+            let from = if (take_mine && !self.sample.is_empty()) || other.sample.is_empty() {
+                &self.sample
+            } else {
+                &other.sample
+            };
+            sample.push(from[fastrand::usize(..from.len())]);
+        }
+        self.sample = sample;
+    }
+
     fn add(&mut self, us: u64) {
         self.min = if self.count == 0 {
             us
@@ -227,6 +261,17 @@ impl Times {
 }
 
 impl Tally {
+    /// `other`'s counts added to these.
+    fn absorb(&mut self, other: &Tally) {
+        self.requests += other.requests;
+        self.answers += other.answers;
+        self.exceptions += other.exceptions;
+        self.timeouts += other.timeouts;
+        self.bad_frames += other.bad_frames;
+        self.line_down += other.line_down;
+        self.times.absorb(&other.times);
+    }
+
     fn add(&mut self, transaction: &Transaction) {
         self.requests += 1;
         match transaction.outcome {
@@ -260,12 +305,72 @@ impl Tally {
 /// What the gateway did, per client and per unit.
 #[derive(Clone, Debug, Default)]
 pub struct Summary {
-    /// By client address.
+    /// By client address: the connected clients, and the [`RECENT_CLIENTS`] that left
+    /// last.
     pub clients: BTreeMap<String, Tally>,
+    /// The clients that left before those: how many, and their transactions together.
+    pub earlier: Option<(u64, Tally)>,
     /// By unit id.
     pub units: BTreeMap<u8, Tally>,
     /// Clients closed for sending what is not Modbus TCP.
     pub bad_clients: u64,
+}
+
+/// The summary, and the order in which clients with a row left.
+#[derive(Default)]
+struct Records {
+    summary: Summary,
+    departed: VecDeque<String>,
+}
+
+impl Records {
+    /// A transaction counted against its client (whether it is still connected) and its
+    /// unit.
+    fn add(&mut self, transaction: &Transaction, connected: bool) {
+        let client = transaction.client.as_ref();
+        let summary = &mut self.summary;
+        match summary.clients.get_mut(client) {
+            Some(tally) => tally.add(transaction),
+            None if connected => summary
+                .clients
+                .entry(client.to_string())
+                .or_default()
+                .add(transaction),
+            // Finished after its client left and its row was folded: counted there.
+            None => summary
+                .earlier
+                .get_or_insert_with(|| (1, Tally::default()))
+                .1
+                .add(transaction),
+        }
+        summary
+            .units
+            .entry(transaction.unit)
+            .or_default()
+            .add(transaction);
+    }
+
+    /// A client left: its row stays among the recent ones, and the oldest of those is
+    /// folded into the earlier clients' row.
+    fn departed(&mut self, client: &str) {
+        if !self.summary.clients.contains_key(client) || self.departed.iter().any(|c| c == client) {
+            return;
+        }
+        self.departed.push_back(client.to_string());
+        while self.departed.len() > RECENT_CLIENTS {
+            let Some(oldest) = self.departed.pop_front() else {
+                break;
+            };
+            if let Some(tally) = self.summary.clients.remove(&oldest) {
+                let earlier = self
+                    .summary
+                    .earlier
+                    .get_or_insert_with(|| (0, Tally::default()));
+                earlier.0 += 1;
+                earlier.1.absorb(&tally);
+            }
+        }
+    }
 }
 
 /// A request waiting for the line.
@@ -308,7 +413,7 @@ pub struct Gateway {
     queue: FairQueue<Job>,
     /// Where each connected client's answers go: its writing thread.
     writers: Mutex<HashMap<ClientId, mpsc::Sender<Vec<u8>>>>,
-    summary: Mutex<Summary>,
+    summary: Mutex<Records>,
     report: Report,
     /// The id of the next client, whichever listener it comes to.
     next_client: AtomicUsize,
@@ -321,7 +426,7 @@ impl Gateway {
             options,
             queue: FairQueue::new(),
             writers: Mutex::new(HashMap::new()),
-            summary: Mutex::new(Summary::default()),
+            summary: Mutex::new(Records::default()),
             report,
             next_client: AtomicUsize::new(0),
         })
@@ -329,7 +434,7 @@ impl Gateway {
 
     /// What was done so far.
     pub fn summary(&self) -> Summary {
-        lock(&self.summary).clone()
+        lock(&self.summary).summary.clone()
     }
 
     /// Takes the clients of `listener`, each on its own threads, for ever; several
@@ -418,11 +523,14 @@ impl Gateway {
         }
         lock(&self.writers).remove(&id);
         self.queue.forget(id);
+        let mut records = lock(&self.summary);
+        records.departed(&peer);
         if let Err(error) = &received {
             if error.kind() == io::ErrorKind::InvalidData {
-                lock(&self.summary).bad_clients += 1;
+                records.summary.bad_clients += 1;
             }
         }
+        drop(records);
         received
     }
 
@@ -431,32 +539,25 @@ impl Gateway {
         loop {
             let (client, job) = self.queue.pop();
             let transaction = line.carry(&job, &self.options, &self.report);
-            let delivered = match (&transaction.answer, lock(&self.writers).get(&client)) {
-                (Some(answer), Some(writer)) => {
-                    let bytes = line::mbap(transaction.unit, transaction.transaction, answer);
-                    writer.send(bytes).is_ok()
-                }
-                (None, writer) => writer.is_some(),
-                (Some(_), None) => false,
+            let (delivered, connected) = {
+                let writers = lock(&self.writers);
+                let writer = writers.get(&client);
+                let delivered = match (&transaction.answer, writer) {
+                    (Some(answer), Some(writer)) => {
+                        let bytes = line::mbap(transaction.unit, transaction.transaction, answer);
+                        writer.send(bytes).is_ok()
+                    }
+                    (None, writer) => writer.is_some(),
+                    (Some(_), None) => false,
+                };
+                (delivered, writer.is_some())
             };
             self.queue.finished();
             let transaction = Transaction {
                 delivered,
                 ..transaction
             };
-            {
-                let mut summary = lock(&self.summary);
-                summary
-                    .clients
-                    .entry(transaction.client.to_string())
-                    .or_default()
-                    .add(&transaction);
-                summary
-                    .units
-                    .entry(transaction.unit)
-                    .or_default()
-                    .add(&transaction);
-            }
+            lock(&self.summary).add(&transaction, connected);
             (self.report)(Event::Transaction(&transaction));
         }
     }
@@ -476,6 +577,50 @@ mod tests {
         for bad in ["1", "1=300", "x=1", "1=2,1=3", "", "5=0", "1=248"] {
             assert!(UnitMap::parse(bad).is_err(), "{bad}");
         }
+    }
+
+    fn transaction(client: &str) -> Transaction {
+        Transaction {
+            client: Arc::from(client),
+            role: None,
+            unit: 1,
+            slave: 1,
+            transaction: 0,
+            request: Request::ReadHoldingRegisters {
+                address: 0,
+                quantity: 1,
+            },
+            answer: None,
+            queued: Duration::ZERO,
+            response_time: Duration::from_micros(500),
+            tries: 1,
+            outcome: Outcome::Answer,
+            delivered: true,
+        }
+    }
+
+    #[test]
+    fn clients_that_left_long_ago_are_one_row_and_nothing_is_lost() {
+        let mut records = Records::default();
+        for n in 0..10_000 {
+            let client = format!("127.0.0.1:{}", 1024 + n);
+            records.add(&transaction(&client), true);
+            records.add(&transaction(&client), true);
+            records.departed(&client);
+        }
+        // One that finishes after its client's row was folded counts there too.
+        records.add(&transaction("127.0.0.1:1024"), false);
+        let summary = &records.summary;
+        assert_eq!(summary.clients.len(), RECENT_CLIENTS);
+        let (count, earlier) = summary.earlier.as_ref().unwrap();
+        assert_eq!(*count, 10_000 - RECENT_CLIENTS as u64);
+        let total: u64 =
+            summary.clients.values().map(|t| t.requests).sum::<u64>() + earlier.requests;
+        assert_eq!(total, 20_001);
+        assert_eq!(summary.units[&1].requests, 20_001);
+        assert_eq!(earlier.times.count, earlier.answers);
+        assert!(earlier.times.sample.len() <= TIMES_KEPT);
+        assert_eq!(earlier.times().unwrap().p95, 500);
     }
 
     #[test]
