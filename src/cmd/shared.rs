@@ -214,7 +214,7 @@ pub fn security(
     if let Some(out_of_date) = &tls.out_of_date {
         mbtool::note!("mbtool: warning: {out_of_date}");
     }
-    Ok(Some(Security { tls, roles: rules }))
+    Ok(Some(Security::new(tls, rules)))
 }
 
 fn roles_given(roles: &RoleArgs) -> Result<Roles, Error> {

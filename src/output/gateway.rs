@@ -214,63 +214,18 @@ impl GatewayWriter {
                     serde_json::json!({ "summary": "bad_clients", "closed": summary.bad_clients });
                 writeln!(out, "{line}")?;
             }
+            if summary.refused > 0 {
+                let line =
+                    serde_json::json!({ "summary": "refused_clients", "refused": summary.refused });
+                writeln!(out, "{line}")?;
+            }
             return Ok(());
         }
         if summary.clients.is_empty() {
-            return writeln!(out, "no transactions");
+            writeln!(out, "no transactions")?;
+        } else {
+            summary_table(out, summary)?;
         }
-        let mut table = super::new_table(false);
-        table.set_header(vec![
-            "",
-            "requests",
-            "answers",
-            "exceptions",
-            "timeouts",
-            "bad frames",
-            "line down",
-            "min",
-            "mean",
-            "p95",
-            "max",
-        ]);
-        let earlier = summary.earlier.as_ref().map(|(count, tally)| {
-            let name = format!("{} before", super::plural(*count as usize, "client"));
-            (name, tally)
-        });
-        let rows = summary
-            .clients
-            .iter()
-            .map(|(client, tally)| (format!("client {client}"), tally))
-            .chain(earlier)
-            .chain(
-                summary
-                    .units
-                    .iter()
-                    .map(|(unit, tally)| (format!("unit {unit}"), tally)),
-            );
-        for (name, tally) in rows {
-            let mut row = vec![
-                name,
-                tally.requests.to_string(),
-                tally.answers.to_string(),
-                tally.exceptions.to_string(),
-                tally.timeouts.to_string(),
-                tally.bad_frames.to_string(),
-                tally.line_down.to_string(),
-            ];
-            let ms = |us: u64| show(Duration::from_micros(us));
-            match tally.times() {
-                Some(Spread {
-                    min,
-                    mean,
-                    p95,
-                    max,
-                }) => row.extend([min, mean, p95, max].map(ms)),
-                None => row.extend(["-", "-", "-", "-"].map(String::from)),
-            }
-            table.add_row(row);
-        }
-        writeln!(out, "{table}")?;
         if summary.bad_clients > 0 {
             writeln!(
                 out,
@@ -278,8 +233,72 @@ impl GatewayWriter {
                 super::plural(summary.bad_clients as usize, "client")
             )?;
         }
+        if summary.refused > 0 {
+            writeln!(
+                out,
+                "{} refused over TLS (handshake failed or not finished, or role not allowed)",
+                super::plural(summary.refused as usize, "client")
+            )?;
+        }
         Ok(())
     }
+}
+
+/// The summary's rows, a client or a unit each, as a table.
+fn summary_table(out: &mut dyn Write, summary: &Summary) -> io::Result<()> {
+    let mut table = super::new_table(false);
+    table.set_header(vec![
+        "",
+        "requests",
+        "answers",
+        "exceptions",
+        "timeouts",
+        "bad frames",
+        "line down",
+        "min",
+        "mean",
+        "p95",
+        "max",
+    ]);
+    let earlier = summary.earlier.as_ref().map(|(count, tally)| {
+        let name = format!("{} before", super::plural(*count as usize, "client"));
+        (name, tally)
+    });
+    let rows = summary
+        .clients
+        .iter()
+        .map(|(client, tally)| (format!("client {client}"), tally))
+        .chain(earlier)
+        .chain(
+            summary
+                .units
+                .iter()
+                .map(|(unit, tally)| (format!("unit {unit}"), tally)),
+        );
+    for (name, tally) in rows {
+        let mut row = vec![
+            name,
+            tally.requests.to_string(),
+            tally.answers.to_string(),
+            tally.exceptions.to_string(),
+            tally.timeouts.to_string(),
+            tally.bad_frames.to_string(),
+            tally.line_down.to_string(),
+        ];
+        let ms = |us: u64| show(Duration::from_micros(us));
+        match tally.times() {
+            Some(Spread {
+                min,
+                mean,
+                p95,
+                max,
+            }) => row.extend([min, mean, p95, max].map(ms)),
+            None => row.extend(["-", "-", "-", "-"].map(String::from)),
+        }
+        table.add_row(row);
+    }
+    writeln!(out, "{table}")?;
+    Ok(())
 }
 
 /// One line of the summary in JSON.

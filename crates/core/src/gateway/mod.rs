@@ -314,6 +314,8 @@ pub struct Summary {
     pub units: BTreeMap<u8, Tally>,
     /// Clients closed for sending what is not Modbus TCP.
     pub bad_clients: u64,
+    /// TLS clients refused: a failed or unfinished handshake, a role not allowed.
+    pub refused: u64,
 }
 
 /// The summary, and the order in which clients with a row left.
@@ -386,14 +388,14 @@ struct Job {
 
 /// Where a client's answers are written, by a thread of its own.
 enum Writing {
-    Plain(std::net::TcpStream),
+    Plain(Arc<std::net::TcpStream>),
     Secure(TlsWriter),
 }
 
 impl Writing {
     fn write_all(&mut self, answer: &[u8]) -> io::Result<()> {
         match self {
-            Writing::Plain(stream) => stream.write_all(answer),
+            Writing::Plain(stream) => (&**stream).write_all(answer),
             Writing::Secure(writer) => writer.write_all(answer),
         }
     }
@@ -460,14 +462,16 @@ impl Gateway {
         let (mut transport, mut writing, role, rights): (Box<dyn Transport>, Writing, _, _) =
             match listening {
                 Listening::Plain(role) => (
-                    Box::new(Tcp::from_stream(client.stream.try_clone()?, false)?),
+                    Box::new(Tcp::from_shared(Arc::clone(&client.stream), false)?),
                     Writing::Plain(client.stream),
                     role.as_ref().map(|role| role.name.clone()),
                     role.clone(),
                 ),
                 Listening::Secure(security) => {
-                    let admitted = security.admit(client.stream, &client.peer)?;
-                    let writing = Writing::Secure(admitted.stream.writer()?);
+                    let admitted = security
+                        .admit(client.stream, &client.peer)
+                        .inspect_err(|_| lock(&self.summary).summary.refused += 1)?;
+                    let writing = Writing::Secure(admitted.stream.writer());
                     let rights = admitted.rights.map(Arc::new);
                     (Box::new(admitted.stream), writing, admitted.role, rights)
                 }

@@ -23,14 +23,22 @@ pub const IDLE_FOR_ROOM: Duration = Duration::from_secs(10);
 /// A client that has not taken its answers within this time is dropped: it holds a
 /// thread and the answers that wait for it.
 pub const WRITE_DEADLINE: Duration = Duration::from_secs(5);
+/// Refusals (a TLS handshake failed, a role not allowed) are told in full a few at once
+/// ([`REFUSALS_AT_ONCE`]), then one in this time, those in between counted: a flood of
+/// clients is a line a second, not one each.
+pub const REFUSALS_TOLD_EVERY: Duration = Duration::from_secs(1);
+/// How many refusals are told in full before they are held to one in
+/// [`REFUSALS_TOLD_EVERY`]: a few misconfigured clients are each named.
+pub const REFUSALS_AT_ONCE: u32 = 5;
 
 /// Told of what goes wrong with a client or the listener, from any thread.
 pub type ErrorSink = Arc<dyn Fn(io::Error) + Send + Sync>;
 
 /// A client just accepted, handed to the code that serves it on its own thread.
 pub struct Accepted {
-    /// Its socket, with the write deadline set.
-    pub stream: TcpStream,
+    /// Its socket, with the write deadline set: the one descriptor of the connection,
+    /// shared with the registry that may close it to make room.
+    pub stream: Arc<TcpStream>,
     /// Its address, as logs show it.
     pub peer: String,
     /// How many clients were accepted before it.
@@ -45,14 +53,15 @@ pub type Serve = Arc<dyn Fn(Accepted) -> io::Result<()> + Send + Sync>;
 /// A connected TCP client, as the accepting thread sees it.
 struct Client {
     number: usize,
-    /// Another handle on the client's socket, to close it when it must give way.
-    handle: TcpStream,
+    /// The client's socket, to close it when it must give way.
+    handle: Arc<TcpStream>,
     activity: Arc<AtomicU64>,
 }
 
 /// Accepts clients on `listener` for ever, each served by `serve` on its own thread.
 pub fn accept_clients(listener: TcpListener, on_error: ErrorSink, serve: Serve) -> io::Result<()> {
     let clients: Arc<Mutex<Vec<Client>>> = Arc::new(Mutex::new(Vec::new()));
+    let refusals = Refusals::start(Arc::clone(&on_error))?;
     // When running out of file descriptors was last told: not at every refused accept.
     let mut told_out_of_descriptors: Option<Instant> = None;
     let mut tell_out_of_descriptors = |connected: usize| {
@@ -84,28 +93,21 @@ pub fn accept_clients(listener: TcpListener, on_error: ErrorSink, serve: Serve) 
             .peer_addr()
             .map_or_else(|_| "?".to_string(), |a| a.to_string());
         let activity = Arc::new(AtomicU64::new(now_ms()));
-        let registered = stream.try_clone().map(|handle| Client {
-            number,
-            handle,
-            activity: Arc::clone(&activity),
-        });
-        match registered {
-            Ok(client) => make_room_and_add(&clients, client, &on_error),
-            // Without a second handle the client cannot be closed to make room, but it
-            // is served all the same.
-            Err(error) if is_out_of_descriptors(&error) => {
-                let connected = lock(&clients).len();
-                tell_out_of_descriptors(connected);
-            }
-            Err(error) => {
-                on_error(error);
-                continue;
-            }
-        }
-        let (clients_left, on_error_there, serve) = (
+        let stream = Arc::new(stream);
+        make_room_and_add(
+            &clients,
+            Client {
+                number,
+                handle: Arc::clone(&stream),
+                activity: Arc::clone(&activity),
+            },
+            &on_error,
+        );
+        let (clients_left, on_error_there, serve, refusals) = (
             Arc::clone(&clients),
             Arc::clone(&on_error),
             Arc::clone(&serve),
+            Arc::clone(&refusals),
         );
         let spawned = std::thread::Builder::new().spawn(move || {
             let (clients, on_error) = (clients_left, on_error_there);
@@ -124,10 +126,12 @@ pub fn accept_clients(listener: TcpListener, on_error: ErrorSink, serve: Serve) 
                         link,
                     })
                 });
-            if let Err(error) = served {
-                if let Some(error) = worth_telling(error, &peer) {
-                    on_error(error);
+            match served.map_err(|error| worth_telling(error, &peer)) {
+                Err(Some(refusal)) if refusal.kind() == io::ErrorKind::PermissionDenied => {
+                    refusals.tell(refusal);
                 }
+                Err(Some(error)) => on_error(error),
+                _ => {}
             }
             lock(&clients).retain(|c| c.number != number);
         });
@@ -145,6 +149,72 @@ pub fn accept_clients(listener: TcpListener, on_error: ErrorSink, serve: Serve) 
         }
     }
     Ok(())
+}
+
+/// Refusals told in full while they are few (a bucket of [`REFUSALS_AT_ONCE`], one more
+/// every [`REFUSALS_TOLD_EVERY`]), the others counted and told as a number each time.
+struct Refusals {
+    on_error: ErrorSink,
+    state: Mutex<Told>,
+}
+
+struct Told {
+    /// How many may be told in full now.
+    allowed: u32,
+    /// When one was last added.
+    refilled: Instant,
+    /// Held back since the count was last told.
+    held: u64,
+}
+
+impl Refusals {
+    /// With a thread that tells the count of those held back.
+    fn start(on_error: ErrorSink) -> io::Result<Arc<Refusals>> {
+        let refusals = Arc::new(Refusals {
+            on_error,
+            state: Mutex::new(Told {
+                allowed: REFUSALS_AT_ONCE,
+                refilled: Instant::now(),
+                held: 0,
+            }),
+        });
+        let weak = Arc::downgrade(&refusals);
+        std::thread::Builder::new().spawn(move || loop {
+            std::thread::sleep(REFUSALS_TOLD_EVERY);
+            let Some(refusals) = weak.upgrade() else {
+                break;
+            };
+            refusals.tell_held();
+        })?;
+        Ok(refusals)
+    }
+
+    fn tell(&self, refusal: io::Error) {
+        let mut state = lock(&self.state);
+        if state.refilled.elapsed() >= REFUSALS_TOLD_EVERY {
+            state.refilled = Instant::now();
+            state.allowed = (state.allowed + 1).min(REFUSALS_AT_ONCE);
+        }
+        if state.allowed == 0 {
+            state.held += 1;
+            return;
+        }
+        state.allowed -= 1;
+        drop(state);
+        (self.on_error)(refusal);
+    }
+
+    fn tell_held(&self) {
+        let mut state = lock(&self.state);
+        let held = std::mem::take(&mut state.held);
+        if held > 0 {
+            drop(state);
+            (self.on_error)(io::Error::other(format!(
+                "{held} more clients refused in the last {} s (told one a second)",
+                REFUSALS_TOLD_EVERY.as_secs()
+            )));
+        }
+    }
 }
 
 /// What ended a client's connection, as it is told: nothing for a client that simply left.

@@ -3,6 +3,7 @@
 //! by the codec's framer, as every receiver of mbtool finds them.
 
 pub mod clients;
+pub mod handshakes;
 pub mod roles;
 
 use std::io;
@@ -15,18 +16,18 @@ use crate::codec::framing::{Found, Framer, ASCII_CHARACTER_TIMEOUT_US};
 use crate::codec::Mode;
 use crate::transport::tls::{RoleClaim, Tls, TlsServer};
 use crate::transport::Transport;
+use handshakes::Handshakes;
 use roles::{Role, Roles};
 
-/// How long a client that connects over TLS has for its handshake.
-const HANDSHAKE_TIMEOUT: Duration = Duration::from_secs(10);
-
-/// Modbus/TCP Security for a server: its TLS end, and what each client role may do.
+/// Modbus/TCP Security for a server: its TLS end, what each client role may do, and the
+/// handshakes under way.
 #[derive(Clone, Debug)]
 pub struct Security {
     /// The certificate, key and client CAs.
     pub tls: TlsServer,
     /// The roles given; without any, every client may do anything.
     pub roles: Roles,
+    handshakes: Arc<Handshakes>,
 }
 
 /// A client let in over TLS.
@@ -40,11 +41,40 @@ pub struct Admitted {
 }
 
 impl Security {
+    /// A server's TLS end with its roles.
+    pub fn new(tls: TlsServer, roles: Roles) -> Security {
+        Security {
+            tls,
+            roles,
+            handshakes: Arc::default(),
+        }
+    }
+
     /// Makes the handshake with a client just accepted and finds its role; a client
     /// without a certificate signed by the CAs, or without a role the roles allow, is
-    /// refused (`PermissionDenied`, saying why).
-    pub fn admit(&self, stream: std::net::TcpStream, peer: &str) -> io::Result<Admitted> {
-        let accepted = self.tls.accept(stream, HANDSHAKE_TIMEOUT)?;
+    /// refused (`PermissionDenied`, saying why). Handshakes under way are bounded
+    /// ([`handshakes`]): one cut short to make room is refused, saying so.
+    pub fn admit(&self, stream: Arc<std::net::TcpStream>, peer: &str) -> io::Result<Admitted> {
+        let ticket = self.handshakes.begin(&stream);
+        let accepted = self
+            .tls
+            .accept(stream, ticket.deadline, &ticket.progress.hello)
+            .map_err(|error| {
+                if ticket.progress.evicted.load(Ordering::Relaxed) {
+                    io::Error::new(
+                        io::ErrorKind::PermissionDenied,
+                        format!(
+                            "{peer} refused: its TLS handshake was cut short to make room for others \
+                             ({} may be under way at once, {} from one address)",
+                            handshakes::MAX_PENDING,
+                            handshakes::MAX_PENDING_PER_ADDRESS
+                        ),
+                    )
+                } else {
+                    error
+                }
+            })?;
+        drop(ticket);
         let refused = |why: String| {
             io::Error::new(
                 io::ErrorKind::PermissionDenied,

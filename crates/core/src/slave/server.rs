@@ -281,7 +281,7 @@ impl Server {
                 let mut rng =
                     fastrand::Rng::with_seed(self.seed.wrapping_add(client.number as u64));
                 let Some(security) = &self.security else {
-                    let mut transport = Tcp::from_stream(client.stream, self.mode != Mode::Tcp)?;
+                    let mut transport = Tcp::from_shared(client.stream, self.mode != Mode::Tcp)?;
                     let who = self.plain_client(&client.peer);
                     return self.serve_stream(&mut transport, who, &client.link, &mut rng);
                 };

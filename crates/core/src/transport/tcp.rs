@@ -2,6 +2,7 @@
 
 use std::io::{self, Read, Write};
 use std::net::{SocketAddr, TcpStream};
+use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use super::tls::looks_like_tls;
@@ -9,7 +10,9 @@ use super::{connect_first, receive_timed, TimedRead, Transport, IDLE_CHECK_AFTER
 
 /// A TCP connection as a transport.
 pub struct Tcp {
-    stream: TcpStream,
+    /// Shared with whoever else reads, writes or closes it (a server's writing thread, the
+    /// clients' registry), so that a connection holds one descriptor.
+    stream: Arc<TcpStream>,
     /// The read timeout last set, in whole milliseconds: setting it is a system call, and
     /// most transactions wait with the same one.
     read_timeout_ms: u64,
@@ -43,6 +46,11 @@ impl Tcp {
 
     /// A connected stream, as `connect` makes it or a server accepts it.
     pub fn from_stream(stream: TcpStream, serial_behind: bool) -> io::Result<Tcp> {
+        Tcp::from_shared(Arc::new(stream), serial_behind)
+    }
+
+    /// A connected stream that other handles share: a server's client.
+    pub fn from_shared(stream: Arc<TcpStream>, serial_behind: bool) -> io::Result<Tcp> {
         // Frames are small and each waits for an answer: send at once.
         stream.set_nodelay(true)?;
         let peer = stream
@@ -91,7 +99,7 @@ impl Tcp {
             )
         })?;
         stream.set_nodelay(true)?;
-        self.stream = stream;
+        self.stream = Arc::new(stream);
         self.read_timeout_ms = 0;
         self.heard = false;
         Ok(())
@@ -103,7 +111,7 @@ impl Transport for Tcp {
         self.stream.set_nonblocking(true)?;
         let mut scratch = [0u8; 512];
         let result = loop {
-            match self.stream.read(&mut scratch) {
+            match (&*self.stream).read(&mut scratch) {
                 Ok(0) => break Err(closed(&self.peer)),
                 Ok(_) => continue,
                 Err(e) if e.kind() == io::ErrorKind::WouldBlock => break Ok(()),
@@ -132,7 +140,7 @@ impl Transport for Tcp {
             self.connect_again()?;
         }
         self.last_used = Instant::now();
-        self.stream
+        (&*self.stream)
             .write_all(frame)
             .map_err(|e| lost(&self.peer, e))
     }
@@ -156,7 +164,9 @@ impl TimedRead for Tcp {
     }
 
     fn read_some(&mut self, chunk: &mut [u8]) -> io::Result<usize> {
-        let n = self.stream.read(chunk).map_err(|e| lost(&self.peer, e))?;
+        let n = (&*self.stream)
+            .read(chunk)
+            .map_err(|e| lost(&self.peer, e))?;
         let first = !self.heard && !self.serial_behind;
         if n == 0 && first {
             return Err(io::Error::new(

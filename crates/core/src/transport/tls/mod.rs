@@ -9,6 +9,7 @@ use std::fmt;
 use std::io::{self, Read, Write};
 use std::net::TcpStream;
 use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -251,15 +252,21 @@ impl TlsServer {
         })
     }
 
-    /// Makes the handshake with a client that has just connected, within `timeout`.
-    pub fn accept(&self, stream: TcpStream, timeout: Duration) -> io::Result<AcceptedTls> {
+    /// Makes the handshake with a client that has just connected, by `deadline`; `hello`
+    /// is set once the client's first flight (its ClientHello) is in whole and answered.
+    pub fn accept(
+        &self,
+        stream: Arc<TcpStream>,
+        deadline: Instant,
+        hello: &AtomicBool,
+    ) -> io::Result<AcceptedTls> {
         // Frames are small and each waits for an answer: send at once.
         stream.set_nodelay(true)?;
         let peer = peer_of(&stream);
         let connection = ServerConnection::new(Arc::clone(&self.config))
             .map_err(|e| io::Error::other(e.to_string()))?;
         let mut tls = Tls::new(stream, connection.into(), peer);
-        tls.handshake(Instant::now() + timeout, None)
+        tls.handshake(deadline, None, Some(hello))
             .map_err(|e| server_side(e, &tls.peer))?;
         let own = tls.peer_certificate();
         let (role, subject) = match own {
@@ -294,7 +301,8 @@ pub struct Session {
 /// writes a client from two threads takes a [`TlsWriter`] of it ([`Tls::writer`]): the TLS
 /// state is shared, and no thread holds it while it waits for the socket.
 pub struct Tls {
-    socket: TcpStream,
+    /// Shared with the connection's [`TlsWriter`]: one descriptor a connection.
+    socket: Arc<TcpStream>,
     connection: Arc<Mutex<Connection>>,
     peer: String,
     /// The read timeout last set, in whole milliseconds (as [`super::tcp::Tcp`] keeps it).
@@ -311,7 +319,7 @@ pub struct Tls {
 
 /// The sending side of a [`Tls`], for another thread.
 pub struct TlsWriter {
-    socket: TcpStream,
+    socket: Arc<TcpStream>,
     connection: Arc<Mutex<Connection>>,
 }
 
@@ -325,7 +333,7 @@ struct Master {
 }
 
 impl Tls {
-    fn new(socket: TcpStream, connection: Connection, peer: String) -> Tls {
+    fn new(socket: Arc<TcpStream>, connection: Connection, peer: String) -> Tls {
         Tls {
             socket,
             connection: Arc::new(Mutex::new(connection)),
@@ -381,7 +389,7 @@ impl Tls {
         socket.set_nodelay(true)?;
         let connection = ClientConnection::new(Arc::clone(&tls.config), server_name)
             .map_err(|e| io::Error::other(e.to_string()))?;
-        let mut stream = Tls::new(socket, connection.into(), address.to_string());
+        let mut stream = Tls::new(Arc::new(socket), connection.into(), address.to_string());
         stream.master = Some(Master {
             tls: tls.clone(),
             name,
@@ -393,7 +401,7 @@ impl Tls {
         // least HANDSHAKE_LEAST, whatever the answer timeout (a scan's is 100 ms).
         let budget = timeout.max(HANDSHAKE_LEAST);
         stream
-            .handshake(Instant::now() + budget, Some(budget))
+            .handshake(Instant::now() + budget, Some(budget), None)
             .map_err(|e| stream.explained(e))?;
         let (subject, not_after) = stream
             .peer_certificate()
@@ -416,15 +424,22 @@ impl Tls {
     }
 
     /// Where another thread sends on this connection.
-    pub fn writer(&self) -> io::Result<TlsWriter> {
-        Ok(TlsWriter {
-            socket: self.socket.try_clone()?,
+    pub fn writer(&self) -> TlsWriter {
+        TlsWriter {
+            socket: Arc::clone(&self.socket),
             connection: Arc::clone(&self.connection),
-        })
+        }
     }
 
-    /// Reads and writes until the handshake is done or `deadline` passes.
-    fn handshake(&mut self, deadline: Instant, timeout: Option<Duration>) -> io::Result<()> {
+    /// Reads and writes until the handshake is done or `deadline` passes; `answering` is
+    /// set once the other end has sent what a ClientHello takes at the least, or this end
+    /// has written (which a server does once the client's first flight is in whole).
+    fn handshake(
+        &mut self,
+        deadline: Instant,
+        timeout: Option<Duration>,
+        answering: Option<&AtomicBool>,
+    ) -> io::Result<()> {
         // A server's clients have a write deadline: it outlives the handshake's.
         let write_timeout = self.socket.write_timeout()?;
         let mut connection = lock(&self.connection);
@@ -438,14 +453,23 @@ impl Tls {
             };
             io::Error::new(kind, what)
         };
+        // What the other end has sent, over every round.
+        let mut heard = 0;
         while connection.is_handshaking() {
             let Some(left) = time_left(deadline) else {
                 return Err(handshake_timeout(timeout));
             };
             self.socket.set_read_timeout(Some(left))?;
             self.socket.set_write_timeout(Some(left))?;
-            match connection.complete_io(&mut self.socket) {
-                Ok((0, 0)) if connection.is_handshaking() => return Err(ended(answered)),
+            let mut watched = Watched {
+                socket: &self.socket,
+                read: &mut heard,
+                answering,
+            };
+            match connection.complete_io(&mut watched) {
+                Ok((0, 0)) if connection.is_handshaking() => {
+                    return Err(ended(answered || heard > 0))
+                }
                 Ok((read, _)) => answered |= read > 0,
                 Err(e)
                     if matches!(
@@ -453,7 +477,7 @@ impl Tls {
                         io::ErrorKind::ConnectionReset | io::ErrorKind::BrokenPipe
                     ) =>
                 {
-                    return Err(ended(answered))
+                    return Err(ended(answered || heard > 0))
                 }
                 Err(e)
                     if matches!(
@@ -465,7 +489,7 @@ impl Tls {
                 }
                 Err(e) => {
                     // The alert that tells the other end why, if it can still be sent.
-                    let _ = connection.write_tls(&mut self.socket);
+                    let _ = connection.write_tls(&mut &*self.socket);
                     return Err(e);
                 }
             }
@@ -513,7 +537,7 @@ impl Tls {
                 Err(e) if e.kind() == io::ErrorKind::UnexpectedEof => return Err(self.closed()),
                 Err(e) => return Err(e),
             }
-            let read = match self.socket.read(&mut records) {
+            let read = match (&*self.socket).read(&mut records) {
                 Ok(0) => return Err(self.closed()),
                 Ok(read) => read,
                 Err(e) if is_gone(&e) => return Err(self.closed()),
@@ -524,7 +548,7 @@ impl Tls {
             while !arrived.is_empty() {
                 connection.read_tls(&mut arrived)?;
                 if let Err(error) = connection.process_new_packets() {
-                    let _ = flush(&mut connection, &mut self.socket);
+                    let _ = flush(&mut connection, &self.socket);
                     drop(connection);
                     return Err(self.explained(io::Error::new(io::ErrorKind::InvalidData, error)));
                 }
@@ -534,15 +558,52 @@ impl Tls {
 }
 
 /// Sends what `connection` has queued.
-fn flush(connection: &mut Connection, socket: &mut TcpStream) -> io::Result<()> {
+/// A handshake's socket, telling `answering` as soon as the other end has sent a
+/// ClientHello's worth or this end writes: a handshake that has come that far is an
+/// honest one under way, not one stalled after a byte.
+struct Watched<'a> {
+    socket: &'a TcpStream,
+    read: &'a mut usize,
+    answering: Option<&'a AtomicBool>,
+}
+
+/// The fewest bytes a ClientHello takes: its record and handshake headers, version,
+/// random, and the shortest lists.
+const LEAST_HELLO: usize = 50;
+
+impl Read for Watched<'_> {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        let n = self.socket.read(buf)?;
+        *self.read += n;
+        if let (Some(answering), true) = (self.answering, *self.read >= LEAST_HELLO) {
+            answering.store(true, Ordering::Relaxed);
+        }
+        Ok(n)
+    }
+}
+
+impl Write for Watched<'_> {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        if let Some(answering) = self.answering {
+            answering.store(true, Ordering::Relaxed);
+        }
+        self.socket.write(buf)
+    }
+
+    fn flush(&mut self) -> io::Result<()> {
+        self.socket.flush()
+    }
+}
+
+fn flush(connection: &mut Connection, mut socket: &TcpStream) -> io::Result<()> {
     while connection.wants_write() {
-        connection.write_tls(socket)?;
+        connection.write_tls(&mut socket)?;
     }
     Ok(())
 }
 
 /// Encrypts `frame` and sends it.
-fn send(shared: &Mutex<Connection>, socket: &mut TcpStream, frame: &[u8]) -> io::Result<()> {
+fn send(shared: &Mutex<Connection>, socket: &TcpStream, frame: &[u8]) -> io::Result<()> {
     let mut connection = lock(shared);
     connection.writer().write_all(frame)?;
     flush(&mut connection, socket)
@@ -550,7 +611,7 @@ fn send(shared: &Mutex<Connection>, socket: &mut TcpStream, frame: &[u8]) -> io:
 
 impl Write for TlsWriter {
     fn write(&mut self, frame: &[u8]) -> io::Result<usize> {
-        send(&self.connection, &mut self.socket, frame)?;
+        send(&self.connection, &self.socket, frame)?;
         Ok(frame.len())
     }
 
@@ -599,7 +660,7 @@ impl Transport for Tls {
             self.discard_input()?;
         }
         self.last_used = Instant::now();
-        send(&self.connection, &mut self.socket, frame).map_err(|e| match is_gone(&e) {
+        send(&self.connection, &self.socket, frame).map_err(|e| match is_gone(&e) {
             true => self.closed(),
             false => e,
         })
@@ -635,7 +696,7 @@ impl Drop for Tls {
         if !connection.is_handshaking() {
             connection.send_close_notify();
             let _ = self.socket.set_nonblocking(true);
-            let _ = flush(&mut connection, &mut self.socket);
+            let _ = flush(&mut connection, &self.socket);
         }
     }
 }

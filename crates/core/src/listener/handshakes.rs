@@ -1,0 +1,161 @@
+//! The TLS handshakes under way, bounded: clients that connect and never finish theirs
+//! (one byte of a ClientHello, then nothing) must not hold every thread and descriptor
+//! while honest clients wait. Past a limit in all, or from one address, the handshake that
+//! has made the least progress gives way: one still waiting for its ClientHello before one
+//! already answered, the oldest first. Under pressure a handshake has less time.
+
+use std::net::{IpAddr, Shutdown, TcpStream};
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
+
+use super::clients::lock;
+
+/// The most handshakes under way at once.
+pub const MAX_PENDING: usize = 32;
+/// The most handshakes under way from one address.
+pub const MAX_PENDING_PER_ADDRESS: usize = 16;
+/// How long a client has for its handshake.
+pub const HANDSHAKE_TIMEOUT: Duration = Duration::from_secs(10);
+/// How long, once half the places are taken: an honest handshake takes milliseconds.
+pub const HANDSHAKE_UNDER_PRESSURE: Duration = Duration::from_secs(2);
+
+/// The handshakes under way.
+#[derive(Debug, Default)]
+pub struct Handshakes {
+    pending: Mutex<Vec<Pending>>,
+    next: AtomicU64,
+}
+
+#[derive(Debug)]
+struct Pending {
+    id: u64,
+    address: Option<IpAddr>,
+    started: Instant,
+    state: Arc<Progress>,
+    socket: Arc<TcpStream>,
+}
+
+/// How far one handshake has come, as the server's thread and the room-making see it.
+#[derive(Debug, Default)]
+pub struct Progress {
+    /// The client's first flight is in whole and answered.
+    pub hello: AtomicBool,
+    /// It was closed to make room for another.
+    pub evicted: AtomicBool,
+}
+
+/// A handshake's place among those under way; it gives the place up when dropped.
+pub struct Ticket<'a> {
+    handshakes: &'a Handshakes,
+    id: u64,
+    /// By when it must be done.
+    pub deadline: Instant,
+    /// How far it has come.
+    pub progress: Arc<Progress>,
+}
+
+impl Drop for Ticket<'_> {
+    fn drop(&mut self) {
+        lock(&self.handshakes.pending).retain(|pending| pending.id != self.id);
+    }
+}
+
+impl Handshakes {
+    /// A place for the handshake on `socket`, made by closing the handshake that has come
+    /// the least far when the places in all, or those of its address, are taken.
+    pub fn begin(&self, socket: &Arc<TcpStream>) -> Ticket<'_> {
+        let address = socket.peer_addr().ok().map(|a| a.ip());
+        let mut pending = lock(&self.pending);
+        let from_here = pending.iter().filter(|p| p.address == address).count();
+        if from_here >= MAX_PENDING_PER_ADDRESS {
+            evict(&mut pending, |p| p.address == address);
+        }
+        if pending.len() >= MAX_PENDING {
+            evict(&mut pending, |_| true);
+        }
+        let under_pressure = pending.len() >= MAX_PENDING / 2;
+        let id = self.next.fetch_add(1, Ordering::Relaxed);
+        let progress = Arc::new(Progress::default());
+        pending.push(Pending {
+            id,
+            address,
+            started: Instant::now(),
+            state: Arc::clone(&progress),
+            socket: Arc::clone(socket),
+        });
+        let time = match under_pressure {
+            true => HANDSHAKE_UNDER_PRESSURE,
+            false => HANDSHAKE_TIMEOUT,
+        };
+        Ticket {
+            handshakes: self,
+            id,
+            deadline: Instant::now() + time,
+            progress,
+        }
+    }
+
+    /// How many handshakes are under way.
+    pub fn pending(&self) -> usize {
+        lock(&self.pending).len()
+    }
+}
+
+/// Closes the handshake among those `chosen` that has come the least far: still without
+/// its ClientHello before answered, the oldest first.
+fn evict(pending: &mut Vec<Pending>, chosen: impl Fn(&Pending) -> bool) {
+    let victim = (0..pending.len())
+        .filter(|&i| chosen(&pending[i]))
+        .min_by_key(|&i| {
+            let p = &pending[i];
+            (p.state.hello.load(Ordering::Relaxed), p.started)
+        });
+    if let Some(index) = victim {
+        let victim = pending.swap_remove(index);
+        victim.state.evicted.store(true, Ordering::Relaxed);
+        let _ = victim.socket.shutdown(Shutdown::Both);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::net::TcpListener;
+
+    fn connection(listener: &TcpListener) -> Arc<TcpStream> {
+        let _client = TcpStream::connect(listener.local_addr().unwrap()).unwrap();
+        let (accepted, _) = listener.accept().unwrap();
+        // The client end may close: only the server's socket is looked at.
+        Arc::new(accepted)
+    }
+
+    #[test]
+    fn the_handshake_furthest_along_is_the_last_to_give_way() {
+        let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+        let handshakes = Handshakes::default();
+        let honest = handshakes.begin(&connection(&listener));
+        honest.progress.hello.store(true, Ordering::Relaxed);
+        let mut flood = Vec::new();
+        for _ in 0..MAX_PENDING * 4 {
+            flood.push(handshakes.begin(&connection(&listener)));
+            assert!(handshakes.pending() <= MAX_PENDING_PER_ADDRESS);
+        }
+        // Every one from the same address: the stalled ones made way for each other.
+        assert!(!honest.progress.evicted.load(Ordering::Relaxed));
+        let evicted = flood
+            .iter()
+            .filter(|t| t.progress.evicted.load(Ordering::Relaxed))
+            .count();
+        assert_eq!(evicted, MAX_PENDING * 4 - (MAX_PENDING_PER_ADDRESS - 1));
+        // Under pressure the time is short.
+        let last = flood.last().unwrap();
+        assert!(last.deadline <= Instant::now() + HANDSHAKE_UNDER_PRESSURE);
+        drop(flood);
+        assert_eq!(handshakes.pending(), 1);
+        drop(honest);
+        assert_eq!(handshakes.pending(), 0);
+        let calm = handshakes.begin(&connection(&listener));
+        assert!(calm.deadline > Instant::now() + HANDSHAKE_UNDER_PRESSURE);
+    }
+}
