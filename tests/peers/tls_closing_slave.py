@@ -26,8 +26,14 @@ def main():
     answered = 0
     while True:
         client, _ = server.accept()
+        tls = context.wrap_socket(client, server_side=True, do_handshake_on_connect=False)
         try:
-            with context.wrap_socket(client, server_side=True) as tls:
+            tls.do_handshake()
+        except (ssl.SSLError, OSError):
+            refuse(tls)
+            continue
+        try:
+            with tls:
                 request = tls.recv(260)
                 if len(request) < 8:
                     continue
@@ -37,6 +43,19 @@ def main():
                 answered += 1
         except (ssl.SSLError, OSError):
             pass
+
+
+def refuse(tls):
+    """Closes a connection whose handshake failed, once the alert is sent and the client's
+    flight read: a close with unread bytes would be a reset, which can overtake the alert."""
+    try:
+        tls.shutdown(socket.SHUT_WR)
+        tls.settimeout(1)
+        while tls.recv(4096):
+            pass
+    except OSError:
+        pass
+    tls.close()
 
 
 if __name__ == "__main__":
