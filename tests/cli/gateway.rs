@@ -831,3 +831,76 @@ fn a_slave_that_stalls_never_hands_a_client_another_requests_answer() {
         "no stall was seen: {counts:?}"
     );
 }
+
+/// What a process holds now: resident memory in KiB, open descriptors and threads.
+fn holds(pid: u32) -> (u64, usize, u64) {
+    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap();
+    let field = |name: &str| {
+        status
+            .lines()
+            .find_map(|line| line.strip_prefix(name))
+            .and_then(|rest| rest.split_whitespace().next())
+            .and_then(|n| n.parse::<u64>().ok())
+            .unwrap()
+    };
+    let descriptors = std::fs::read_dir(format!("/proc/{pid}/fd"))
+        .unwrap()
+        .count();
+    (field("VmRSS:"), descriptors, field("Threads:"))
+}
+
+/// `rounds` rounds of `per_round` clients that each connect, read once and leave.
+fn churn(gateway: &Gateway, rounds: usize, per_round: usize) -> Vec<(u64, usize, u64)> {
+    let pid = gateway.process.0.id();
+    let mut samples = Vec::new();
+    for _ in 0..rounds {
+        for id in 0..per_round {
+            let mut client = gateway.client();
+            assert_eq!(
+                ask(&mut client, id as u16, 17, &read_holding(107, 1)).1,
+                [3, 2, 2, 0x2B]
+            );
+        }
+        // The clients' threads end once they see the close.
+        std::thread::sleep(Duration::from_millis(200));
+        samples.push(holds(pid));
+    }
+    samples
+}
+
+#[test]
+fn thousands_of_clients_come_and_go_and_nothing_grows() {
+    if !std::path::Path::new("/proc/self/status").exists() {
+        eprintln!("skipped: no /proc to read a process's memory and descriptors from");
+        return;
+    }
+    let gateway = Gateway::start(&["--port", "sim", "-o", "json"]);
+    let samples = churn(&gateway, 6, 500);
+    let (first, last) = (samples[1], samples[samples.len() - 1]);
+    // Memory settles after the first rounds; 2,000 more clients leave it where it was.
+    assert!(
+        last.0 <= first.0 + 1024,
+        "resident memory grew from {} KiB to {} KiB: {samples:?}",
+        first.0,
+        last.0
+    );
+    // Every client's descriptor and thread are given back.
+    assert!(last.1 <= first.1, "descriptors: {samples:?}");
+    assert!(last.2 <= first.2, "threads: {samples:?}");
+    let (_, stdout, _) = gateway.stop();
+    let summary: Vec<serde_json::Value> = stdout
+        .lines()
+        .filter(|line| line.contains("\"summary\""))
+        .map(|line| serde_json::from_str(line).unwrap())
+        .collect();
+    // A row for each of the last 32 clients and one for the rest, and the unit's: all
+    // 3,000 requests counted.
+    assert_eq!(summary.len(), 32 + 1 + 1, "{stdout}");
+    let earlier = summary
+        .iter()
+        .find(|row| row["summary"] == "earlier_clients")
+        .unwrap();
+    assert_eq!(earlier["clients"], 3000 - 32);
+    let unit = summary.iter().find(|row| row["summary"] == "unit").unwrap();
+    assert_eq!(unit["requests"], 3000);
+}
