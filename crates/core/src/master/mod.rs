@@ -155,6 +155,13 @@ const SETTLE: Duration = Duration::from_millis(50);
 /// How often a wait for an answer looks whether a stop was asked (see [`Master::stop_on`]).
 const STOP_CHECK: Duration = Duration::from_millis(50);
 
+/// How long the line must be silent before a check is sent: longer than a USB adapter's
+/// 16 ms latency timer, so that an answer being received is not talked over.
+const QUIET_BEFORE_CHECK: Duration = Duration::from_millis(20);
+
+/// The most answers remembered as owed by one slave to one function.
+const MOST_OWED: usize = 8;
+
 /// The shortest timeout honoured: below it a deadline would pass before a byte could come.
 const MIN_TIMEOUT: Duration = Duration::from_millis(1);
 
@@ -451,7 +458,13 @@ impl Master {
         // A retry needs no check: a late answer to an earlier try of this very request
         // is its answer.
         if tries.sent == 0 && self.owed.contains(&(slave, function)) {
-            self.bring_in_step(slave, function)?;
+            // An answer on its way now is heard out (and its debt paid) rather than sent
+            // over; the check goes only if a late answer could still come.
+            let quiet = QUIET_BEFORE_CHECK.max(self.options.silence);
+            self.wait_quiet(quiet, self.options.timeout.max(quiet))?;
+            if self.owed.contains(&(slave, function)) {
+                self.bring_in_step(slave, function)?;
+            }
         }
         tries.sent += 1;
         let reply = self.exchange(slave, request);
@@ -464,7 +477,7 @@ impl Master {
             Ok(_) => self.settle(slave),
             Err(error) if may_be_answered_late(error) => {
                 tries.pending = true;
-                self.owed.push((slave, function));
+                self.owe(slave, function);
             }
             Err(_) => {}
         }
@@ -493,18 +506,31 @@ impl Master {
                 | MasterError::Timeout { .. }),
             ) => {
                 if matches!(error, MasterError::Timeout { .. }) {
-                    self.owed.push((slave, check.function()));
+                    self.owe(slave, check.function());
                 }
                 Err(error)
             }
             Err(error) => {
-                self.owed.push((slave, check.function()));
+                self.owe(slave, check.function());
                 Err(MasterError::OutOfStep {
                     slave,
                     function,
                     why: error.to_string(),
                 })
             }
+        }
+    }
+
+    /// One more answer owed by `slave` to a request of `function`; past a few, a dead
+    /// slave asked for ever adds none, since one check settles them all.
+    fn owe(&mut self, slave: u8, function: u8) {
+        let owed = self
+            .owed
+            .iter()
+            .filter(|&&o| o == (slave, function))
+            .count();
+        if owed < MOST_OWED {
+            self.owed.push((slave, function));
         }
     }
 
