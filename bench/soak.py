@@ -85,6 +85,7 @@ def main():
     context.load_cert_chain(path("client.pem"), path("client.key"))
     end = time.time() + SECONDS
     counts = {"plain": 0, "tls": 0, "flood": 0, "failed": 0}
+    failures = {}
 
     def plain_clients():
         n = 0
@@ -93,8 +94,9 @@ def main():
                 with socket.create_connection(("127.0.0.1", plain), timeout=5) as s:
                     read_once(s, n & 0xFFFF)
                 counts["plain"] += 1
-            except (OSError, ValueError):
+            except (OSError, ValueError) as e:
                 counts["failed"] += 1
+                failures[f"plain: {e}"] = failures.get(f"plain: {e}", 0) + 1
             n += 1
 
     def tls_clients():
@@ -105,8 +107,9 @@ def main():
                     with context.wrap_socket(raw, server_hostname="localhost") as s:
                         read_once(s, n & 0xFFFF)
                 counts["tls"] += 1
-            except (OSError, ValueError):
+            except (OSError, ValueError) as e:
                 counts["failed"] += 1
+                failures[f"TLS: {e}"] = failures.get(f"TLS: {e}", 0) + 1
             n += 1
 
     def flood():
@@ -139,6 +142,8 @@ def main():
     log = open(path("gateway.log")).read().splitlines()
     print(f"{SECONDS:.0f} s: {counts['plain']} plain clients, {counts['tls']} TLS clients, "
           f"{counts['flood']} slow-ClientHello connections closed, {counts['failed']} failed")
+    for failure, n in sorted(failures.items(), key=lambda f: -f[1])[:5]:
+        print(f"  {n} x {failure}")
     print("  time      RSS KiB  descriptors  threads")
     for t, rss, fds, threads in samples:
         print(f"  {t:6.1f} s  {rss:8d}  {fds:11d}  {threads:7d}")
@@ -147,7 +152,9 @@ def main():
     hours = max(t1 - t0, 1e-9) / 3600
     print(f"growth: RSS {rss1 - rss0:+d} KiB ({(rss1 - rss0) / hours:+.0f} KiB/hour), "
           f"descriptors {fds1 - fds0:+d}, threads {thr1 - thr0:+d}")
-    print(f"log lines: {len(log)} in {SECONDS:.0f} s (the summary included)")
+    print(f"log lines: {len(log)} in {SECONDS:.0f} s (the summary included); the first and last:")
+    for line in log[:4] + [l for l in log if "not Modbus" in l][:3] + ["..."] + log[-6:]:
+        print(f"  {line}")
 
 
 if __name__ == "__main__":

@@ -904,3 +904,19 @@ fn thousands_of_clients_come_and_go_and_nothing_grows() {
     let unit = summary.iter().find(|row| row["summary"] == "unit").unwrap();
     assert_eq!(unit["requests"], 3000);
 }
+
+#[test]
+fn a_first_request_whose_transaction_id_reads_as_a_tls_record_is_answered() {
+    let gateway = Gateway::start(&["--port", "sim", "-q"]);
+    // 0x1503 and 0x1603 begin a TLS alert and handshake record; MBAP's protocol id 00 00
+    // after them is no TLS version.
+    for id in [0x1503, 0x1603] {
+        let mut client = gateway.client();
+        assert_eq!(
+            ask(&mut client, id, 17, &read_holding(107, 1)).1,
+            [3, 2, 2, 0x2B]
+        );
+    }
+    let (_, _, messages) = gateway.stop();
+    assert!(!messages.contains("speaks TLS"), "{messages}");
+}

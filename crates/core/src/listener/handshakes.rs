@@ -1,11 +1,13 @@
 //! The TLS handshakes under way, bounded: clients that connect and never finish theirs
 //! (one byte of a ClientHello, then nothing) must not hold every thread and descriptor
 //! while honest clients wait. Past a limit in all, or from one address, the handshake that
-//! has made the least progress gives way: one still waiting for its ClientHello before one
-//! already answered, the oldest first. Under pressure a handshake has less time.
+//! has made the least progress gives way, the oldest first: one that sent a few bytes and
+//! stopped short of a ClientHello, then one not heard yet (its thread may not have read),
+//! then one under way. Once half the places in all or of its address are taken, a
+//! handshake has less time.
 
 use std::net::{IpAddr, Shutdown, TcpStream};
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -19,6 +21,9 @@ pub const MAX_PENDING_PER_ADDRESS: usize = 16;
 pub const HANDSHAKE_TIMEOUT: Duration = Duration::from_secs(10);
 /// How long, once half the places are taken: an honest handshake takes milliseconds.
 pub const HANDSHAKE_UNDER_PRESSURE: Duration = Duration::from_secs(2);
+/// The fewest bytes a ClientHello takes: its record and handshake headers, version,
+/// random, and the shortest lists. A client that has sent as many is under way.
+const LEAST_HELLO: usize = 50;
 
 /// The handshakes under way.
 #[derive(Debug, Default)]
@@ -39,10 +44,22 @@ struct Pending {
 /// How far one handshake has come, as the server's thread and the room-making see it.
 #[derive(Debug, Default)]
 pub struct Progress {
-    /// The client's first flight is in whole and answered.
-    pub hello: AtomicBool,
+    /// The bytes the client has sent.
+    pub heard: AtomicUsize,
     /// It was closed to make room for another.
     pub evicted: AtomicBool,
+}
+
+impl Progress {
+    /// Which handshakes give way first: a few bytes and then nothing (0), nothing heard
+    /// yet (1), under way (2).
+    fn standing(&self) -> u8 {
+        match self.heard.load(Ordering::Relaxed) {
+            0 => 1,
+            n if n < LEAST_HELLO => 0,
+            _ => 2,
+        }
+    }
 }
 
 /// A handshake's place among those under way; it gives the place up when dropped.
@@ -74,7 +91,9 @@ impl Handshakes {
         if pending.len() >= MAX_PENDING {
             evict(&mut pending, |_| true);
         }
-        let under_pressure = pending.len() >= MAX_PENDING / 2;
+        let from_here = pending.iter().filter(|p| p.address == address).count();
+        let under_pressure =
+            pending.len() >= MAX_PENDING / 2 || from_here >= MAX_PENDING_PER_ADDRESS / 2;
         let id = self.next.fetch_add(1, Ordering::Relaxed);
         let progress = Arc::new(Progress::default());
         pending.push(Pending {
@@ -102,14 +121,14 @@ impl Handshakes {
     }
 }
 
-/// Closes the handshake among those `chosen` that has come the least far: still without
-/// its ClientHello before answered, the oldest first.
+/// Closes the handshake among those `chosen` that has come the least far, the oldest
+/// first.
 fn evict(pending: &mut Vec<Pending>, chosen: impl Fn(&Pending) -> bool) {
     let victim = (0..pending.len())
         .filter(|&i| chosen(&pending[i]))
         .min_by_key(|&i| {
             let p = &pending[i];
-            (p.state.hello.load(Ordering::Relaxed), p.started)
+            (p.state.standing(), p.started)
         });
     if let Some(index) = victim {
         let victim = pending.swap_remove(index);
@@ -135,23 +154,29 @@ mod tests {
         let listener = TcpListener::bind("127.0.0.1:0").unwrap();
         let handshakes = Handshakes::default();
         let honest = handshakes.begin(&connection(&listener));
-        honest.progress.hello.store(true, Ordering::Relaxed);
+        honest.progress.heard.store(300, Ordering::Relaxed);
+        // One just accepted, its thread yet to read: it outlasts those that sent a byte.
+        let unheard = handshakes.begin(&connection(&listener));
         let mut flood = Vec::new();
         for _ in 0..MAX_PENDING * 4 {
-            flood.push(handshakes.begin(&connection(&listener)));
+            let ticket = handshakes.begin(&connection(&listener));
+            ticket.progress.heard.store(1, Ordering::Relaxed);
+            flood.push(ticket);
             assert!(handshakes.pending() <= MAX_PENDING_PER_ADDRESS);
         }
         // Every one from the same address: the stalled ones made way for each other.
         assert!(!honest.progress.evicted.load(Ordering::Relaxed));
+        assert!(!unheard.progress.evicted.load(Ordering::Relaxed));
         let evicted = flood
             .iter()
             .filter(|t| t.progress.evicted.load(Ordering::Relaxed))
             .count();
-        assert_eq!(evicted, MAX_PENDING * 4 - (MAX_PENDING_PER_ADDRESS - 1));
+        assert_eq!(evicted, MAX_PENDING * 4 - (MAX_PENDING_PER_ADDRESS - 2));
         // Under pressure the time is short.
         let last = flood.last().unwrap();
         assert!(last.deadline <= Instant::now() + HANDSHAKE_UNDER_PRESSURE);
         drop(flood);
+        drop(unheard);
         assert_eq!(handshakes.pending(), 1);
         drop(honest);
         assert_eq!(handshakes.pending(), 0);

@@ -58,7 +58,7 @@ impl Security {
         let ticket = self.handshakes.begin(&stream);
         let accepted = self
             .tls
-            .accept(stream, ticket.deadline, &ticket.progress.hello)
+            .accept(stream, ticket.deadline, &ticket.progress.heard)
             .map_err(|error| {
                 if ticket.progress.evicted.load(Ordering::Relaxed) {
                     io::Error::new(

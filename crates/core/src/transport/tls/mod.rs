@@ -9,7 +9,7 @@ use std::fmt;
 use std::io::{self, Read, Write};
 use std::net::TcpStream;
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
@@ -252,13 +252,13 @@ impl TlsServer {
         })
     }
 
-    /// Makes the handshake with a client that has just connected, by `deadline`; `hello`
-    /// is set once the client's first flight (its ClientHello) is in whole and answered.
+    /// Makes the handshake with a client that has just connected, by `deadline`; `heard`
+    /// counts the bytes the client has sent meanwhile, for whoever watches its progress.
     pub fn accept(
         &self,
         stream: Arc<TcpStream>,
         deadline: Instant,
-        hello: &AtomicBool,
+        heard: &AtomicUsize,
     ) -> io::Result<AcceptedTls> {
         // Frames are small and each waits for an answer: send at once.
         stream.set_nodelay(true)?;
@@ -266,7 +266,7 @@ impl TlsServer {
         let connection = ServerConnection::new(Arc::clone(&self.config))
             .map_err(|e| io::Error::other(e.to_string()))?;
         let mut tls = Tls::new(stream, connection.into(), peer);
-        tls.handshake(deadline, None, Some(hello))
+        tls.handshake(deadline, None, heard)
             .map_err(|e| server_side(e, &tls.peer))?;
         let own = tls.peer_certificate();
         let (role, subject) = match own {
@@ -401,7 +401,7 @@ impl Tls {
         // least HANDSHAKE_LEAST, whatever the answer timeout (a scan's is 100 ms).
         let budget = timeout.max(HANDSHAKE_LEAST);
         stream
-            .handshake(Instant::now() + budget, Some(budget), None)
+            .handshake(Instant::now() + budget, Some(budget), &AtomicUsize::new(0))
             .map_err(|e| stream.explained(e))?;
         let (subject, not_after) = stream
             .peer_certificate()
@@ -431,14 +431,13 @@ impl Tls {
         }
     }
 
-    /// Reads and writes until the handshake is done or `deadline` passes; `answering` is
-    /// set once the other end has sent what a ClientHello takes at the least, or this end
-    /// has written (which a server does once the client's first flight is in whole).
+    /// Reads and writes until the handshake is done or `deadline` passes, counting in
+    /// `heard` the bytes the other end sends.
     fn handshake(
         &mut self,
         deadline: Instant,
         timeout: Option<Duration>,
-        answering: Option<&AtomicBool>,
+        heard: &AtomicUsize,
     ) -> io::Result<()> {
         // A server's clients have a write deadline: it outlives the handshake's.
         let write_timeout = self.socket.write_timeout()?;
@@ -453,8 +452,6 @@ impl Tls {
             };
             io::Error::new(kind, what)
         };
-        // What the other end has sent, over every round.
-        let mut heard = 0;
         while connection.is_handshaking() {
             let Some(left) = time_left(deadline) else {
                 return Err(handshake_timeout(timeout));
@@ -463,12 +460,11 @@ impl Tls {
             self.socket.set_write_timeout(Some(left))?;
             let mut watched = Watched {
                 socket: &self.socket,
-                read: &mut heard,
-                answering,
+                heard,
             };
             match connection.complete_io(&mut watched) {
                 Ok((0, 0)) if connection.is_handshaking() => {
-                    return Err(ended(answered || heard > 0))
+                    return Err(ended(answered || heard.load(Ordering::Relaxed) > 0))
                 }
                 Ok((read, _)) => answered |= read > 0,
                 Err(e)
@@ -477,7 +473,7 @@ impl Tls {
                         io::ErrorKind::ConnectionReset | io::ErrorKind::BrokenPipe
                     ) =>
                 {
-                    return Err(ended(answered || heard > 0))
+                    return Err(ended(answered || heard.load(Ordering::Relaxed) > 0))
                 }
                 Err(e)
                     if matches!(
@@ -557,36 +553,23 @@ impl Tls {
     }
 }
 
-/// Sends what `connection` has queued.
-/// A handshake's socket, telling `answering` as soon as the other end has sent a
-/// ClientHello's worth or this end writes: a handshake that has come that far is an
-/// honest one under way, not one stalled after a byte.
+/// A handshake's socket, counting what the other end sends: a server tells an honest
+/// handshake under way from one stalled after a byte by it.
 struct Watched<'a> {
     socket: &'a TcpStream,
-    read: &'a mut usize,
-    answering: Option<&'a AtomicBool>,
+    heard: &'a AtomicUsize,
 }
-
-/// The fewest bytes a ClientHello takes: its record and handshake headers, version,
-/// random, and the shortest lists.
-const LEAST_HELLO: usize = 50;
 
 impl Read for Watched<'_> {
     fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
         let n = self.socket.read(buf)?;
-        *self.read += n;
-        if let (Some(answering), true) = (self.answering, *self.read >= LEAST_HELLO) {
-            answering.store(true, Ordering::Relaxed);
-        }
+        self.heard.fetch_add(n, Ordering::Relaxed);
         Ok(n)
     }
 }
 
 impl Write for Watched<'_> {
     fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
-        if let Some(answering) = self.answering {
-            answering.store(true, Ordering::Relaxed);
-        }
         self.socket.write(buf)
     }
 
@@ -595,6 +578,7 @@ impl Write for Watched<'_> {
     }
 }
 
+/// Sends what `connection` has queued.
 fn flush(connection: &mut Connection, mut socket: &TcpStream) -> io::Result<()> {
     while connection.wants_write() {
         connection.write_tls(&mut socket)?;
@@ -738,9 +722,11 @@ fn handshake_timeout(timeout: Option<Duration>) -> io::Error {
 }
 
 /// Whether `bytes`, the first a TCP peer sent, begin a TLS record (an alert or a
-/// handshake): a TLS port answering a plain Modbus TCP request.
+/// handshake): a TLS port answering a plain Modbus TCP request. The record's version
+/// (03 01 to 03 04) tells it from an MBAP header whose transaction id is 0x1503 or 0x1603,
+/// whose protocol id is 00 00.
 pub fn looks_like_tls(bytes: &[u8]) -> bool {
-    matches!(bytes, [0x15 | 0x16, 0x03, 0x00..=0x04, ..])
+    matches!(bytes, [0x15 | 0x16, 0x03, 0x01..=0x04, ..])
 }
 
 #[cfg(test)]
@@ -753,5 +739,12 @@ mod tests {
         assert!(looks_like_tls(&[0x16, 0x03, 0x01, 0x00]));
         assert!(!looks_like_tls(&[0x00, 0x01, 0x00, 0x00, 0x00, 0x05]));
         assert!(!looks_like_tls(&[0x15, 0x03]));
+        // Modbus TCP requests and answers whose transaction ids read as a record's type.
+        assert!(!looks_like_tls(&[
+            0x16, 0x03, 0x00, 0x00, 0x00, 0x06, 0x11, 0x03
+        ]));
+        assert!(!looks_like_tls(&[
+            0x15, 0x03, 0x00, 0x00, 0x00, 0x05, 0x11, 0x03
+        ]));
     }
 }
