@@ -152,7 +152,8 @@ pub fn accept_clients(listener: TcpListener, on_error: ErrorSink, serve: Serve) 
 }
 
 /// Refusals told in full while they are few (a bucket of [`REFUSALS_AT_ONCE`], one more
-/// every [`REFUSALS_TOLD_EVERY`]), the others counted and told as a number each time.
+/// every [`REFUSALS_TOLD_EVERY`]); past that, while they keep coming, one line every
+/// [`REFUSALS_TOLD_EVERY`] with their number and the last of them.
 struct Refusals {
     on_error: ErrorSink,
     state: Mutex<Told>,
@@ -163,8 +164,11 @@ struct Told {
     allowed: u32,
     /// When one was last added.
     refilled: Instant,
-    /// Held back since the count was last told.
+    /// Held back since the count was last told, and the last of them.
     held: u64,
+    last_held: Option<io::Error>,
+    /// When the count was last told: while refusals keep coming, the count is all.
+    counted: Option<Instant>,
 }
 
 impl Refusals {
@@ -176,6 +180,8 @@ impl Refusals {
                 allowed: REFUSALS_AT_ONCE,
                 refilled: Instant::now(),
                 held: 0,
+                last_held: None,
+                counted: None,
             }),
         });
         let weak = Arc::downgrade(&refusals);
@@ -191,12 +197,16 @@ impl Refusals {
 
     fn tell(&self, refusal: io::Error) {
         let mut state = lock(&self.state);
-        if state.refilled.elapsed() >= REFUSALS_TOLD_EVERY {
+        let flood = state
+            .counted
+            .is_some_and(|at| at.elapsed() < 2 * REFUSALS_TOLD_EVERY);
+        if !flood && state.refilled.elapsed() >= REFUSALS_TOLD_EVERY {
             state.refilled = Instant::now();
             state.allowed = (state.allowed + 1).min(REFUSALS_AT_ONCE);
         }
-        if state.allowed == 0 {
+        if flood || state.allowed == 0 {
             state.held += 1;
+            state.last_held = Some(refusal);
             return;
         }
         state.allowed -= 1;
@@ -207,13 +217,15 @@ impl Refusals {
     fn tell_held(&self) {
         let mut state = lock(&self.state);
         let held = std::mem::take(&mut state.held);
-        if held > 0 {
-            drop(state);
-            (self.on_error)(io::Error::other(format!(
-                "{held} more clients refused in the last {} s (told one a second)",
-                REFUSALS_TOLD_EVERY.as_secs()
-            )));
-        }
+        let Some(last) = state.last_held.take() else {
+            return;
+        };
+        state.counted = Some(Instant::now());
+        drop(state);
+        (self.on_error)(io::Error::other(format!(
+            "{held} more clients refused in the last {} s, the last: {last}",
+            REFUSALS_TOLD_EVERY.as_secs()
+        )));
     }
 }
 
