@@ -18,8 +18,12 @@ Requests go out one at a time, each client's in the order it sent them, the clie
 in turn: a client that pipelines a thousand requests delays another's single request by \
 one transaction at most. Each is sent as the master commands send it: the gap between \
 frames kept, stale bytes thrown away, the answer checked against the request (slave, \
-function, length, CRC), --timeout and --retries per transaction. The client gets its \
-answer with its own transaction id and unit id, or an exception from the gateway:
+function, length, CRC), --timeout and --retries per transaction. After a timeout the line \
+is brought back in step before a request that a late answer could pass for (a diagnostic \
+echo, 08/00, with a fresh value): a client never gets another request's answer. A request \
+that may do more when sent twice (22, 23, 21, a user function) is sent once unless \
+--retry-non-idempotent. The client gets its answer with its own transaction id and unit \
+id, or an exception from the gateway:
 
   0B  no good answer within the timeout, after the retries
   0A  the line cannot be used (a USB adapter unplugged): answered at once, while the port \
@@ -38,17 +42,21 @@ them: one silent 60 s is closed, past 64 clients one silent 10 s makes room, one
 not read its answers for 5 s is dropped.
 
 Every transaction is a row as it completes: time, client, unit, slave, function, the \
-request and answer, response time, tries and outcome (answer, exception, timeout, \
+request and answer, response time, tries and outcome (answer, exception, refused, timeout, \
 bad-frame, line-down, broadcast): a line on a terminal, JSON Lines or CSV with -o, \
 --log FILE appended as --poll writes it, none with --quiet. Clients closed by the gateway \
 and the line going down and up are told on stderr. Ctrl-C or SIGTERM ends it with a summary per \
-client and per unit on stderr (and as JSON lines with -o json), exit status 0. It needs no \
-terminal, so it runs as a service.
+client (the connected ones and the 32 that left last, the others in one row) and per unit \
+on stderr (and as JSON lines with -o json), exit status 0. It needs no terminal, so it \
+runs as a service.
 
 --listen tls://ADDRESS[:PORT] (port 802 when left out) takes clients over Modbus/TCP \
 Security, as serve does: --cert and --key are the gateway's, --ca signs its clients' \
 certificates, --role and --default-role decide what each role may do (exception 01 \
-otherwise, without touching the line), and each row shows the client's role. The line \
+otherwise, without touching the line; the row says why), and each row shows the client's \
+role. With --role, a tcp:// listener beside it needs --plain-role NAME, the role its \
+clients get. At most 32 TLS handshakes are under way (16 from one address): past that \
+the one least far along is closed, and refusals are told a line a second. The line \
 itself is not tls://.";
 
 #[derive(Clone, Debug, Args)]
