@@ -87,30 +87,21 @@ def main():
     counts = {"plain": 0, "tls": 0, "flood": 0, "failed": 0}
     failures = {}
 
-    def plain_clients():
+    def clients(kind, connect):
         n = 0
         while time.time() < end:
             try:
-                with socket.create_connection(("127.0.0.1", plain), timeout=5) as s:
+                with connect() as s:
                     read_once(s, n & 0xFFFF)
-                counts["plain"] += 1
+                counts[kind] += 1
             except (OSError, ValueError) as e:
                 counts["failed"] += 1
-                failures[f"plain: {e}"] = failures.get(f"plain: {e}", 0) + 1
+                failures[f"{kind}: {e}"] = failures.get(f"{kind}: {e}", 0) + 1
             n += 1
 
-    def tls_clients():
-        n = 0
-        while time.time() < end:
-            try:
-                with socket.create_connection(("127.0.0.1", secure), timeout=5) as raw:
-                    with context.wrap_socket(raw, server_hostname="localhost") as s:
-                        read_once(s, n & 0xFFFF)
-                counts["tls"] += 1
-            except (OSError, ValueError) as e:
-                counts["failed"] += 1
-                failures[f"TLS: {e}"] = failures.get(f"TLS: {e}", 0) + 1
-            n += 1
+    plain_connect = lambda: socket.create_connection(("127.0.0.1", plain), timeout=5)
+    tls_connect = lambda: context.wrap_socket(
+        socket.create_connection(("127.0.0.1", secure), timeout=5), server_hostname="localhost")
 
     def flood():
         while time.time() < end:
@@ -123,8 +114,8 @@ def main():
             except OSError:
                 pass
 
-    workers = [threading.Thread(target=plain_clients) for _ in range(2)]
-    workers += [threading.Thread(target=tls_clients)]
+    workers = [threading.Thread(target=clients, args=("plain", plain_connect)) for _ in range(2)]
+    workers += [threading.Thread(target=clients, args=("tls", tls_connect))]
     workers += [threading.Thread(target=flood) for _ in range(20)]
     for worker in workers:
         worker.start()

@@ -226,19 +226,18 @@ impl GatewayWriter {
         } else {
             summary_table(out, summary)?;
         }
-        if summary.bad_clients > 0 {
-            writeln!(
-                out,
-                "{} closed for sending what is not Modbus TCP",
-                super::plural(summary.bad_clients as usize, "client")
-            )?;
-        }
-        if summary.refused > 0 {
-            writeln!(
-                out,
-                "{} refused over TLS (handshake failed or not finished, or role not allowed)",
-                super::plural(summary.refused as usize, "client")
-            )?;
+        let closed = [
+            (
+                summary.bad_clients,
+                "closed for sending what is not Modbus TCP",
+            ),
+            (
+                summary.refused,
+                "refused over TLS (handshake failed or not finished, or role not allowed)",
+            ),
+        ];
+        for (count, why) in closed.into_iter().filter(|(count, _)| *count > 0) {
+            writeln!(out, "{} {why}", super::plural(count as usize, "client"))?;
         }
         Ok(())
     }
