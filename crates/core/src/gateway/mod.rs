@@ -543,6 +543,9 @@ impl Gateway {
         loop {
             let (client, job) = self.queue.pop();
             let transaction = line.carry(&job, &self.options, &self.report);
+            // The records are held from the look at the client's writer to the count, so
+            // that a client leaving meanwhile finds its row there to set aside.
+            let mut records = lock(&self.summary);
             let (delivered, connected) = {
                 let writers = lock(&self.writers);
                 let writer = writers.get(&client);
@@ -556,12 +559,13 @@ impl Gateway {
                 };
                 (delivered, writer.is_some())
             };
-            self.queue.finished();
             let transaction = Transaction {
                 delivered,
                 ..transaction
             };
-            lock(&self.summary).add(&transaction, connected);
+            records.add(&transaction, connected);
+            drop(records);
+            self.queue.finished();
             (self.report)(Event::Transaction(&transaction));
         }
     }
