@@ -22,6 +22,7 @@ pub mod poll;
 pub mod range;
 pub mod run;
 pub mod scan;
+mod step;
 
 /// How the master behaves; the connection options fill it in.
 #[derive(Clone, Copy, Debug)]
@@ -155,13 +156,6 @@ const SETTLE: Duration = Duration::from_millis(50);
 /// How often a wait for an answer looks whether a stop was asked (see [`Master::stop_on`]).
 const STOP_CHECK: Duration = Duration::from_millis(50);
 
-/// How long the line must be silent before a check is sent: longer than a USB adapter's
-/// 16 ms latency timer, so that an answer being received is not talked over.
-const QUIET_BEFORE_CHECK: Duration = Duration::from_millis(20);
-
-/// The most answers remembered as owed by one slave to one function.
-const MOST_OWED: usize = 8;
-
 /// The shortest timeout honoured: below it a deadline would pass before a byte could come.
 const MIN_TIMEOUT: Duration = Duration::from_millis(1);
 
@@ -189,33 +183,10 @@ pub struct Master {
     /// Such a late answer would pass every check for the next request of the same
     /// function to the same slave, so that request waits until the slave is back in step;
     /// one heard meanwhile is paid off.
-    owed: Vec<(u8, u8)>,
+    owed: step::Owed,
     /// The requests that change the device and were sent more than once, for the
     /// command to tell.
     resent: Vec<run::Resent>,
-}
-
-/// The tries of one request so far.
-#[derive(Default)]
-struct Tries {
-    /// How many times it went on the wire.
-    sent: u32,
-    /// A try ended without its answer, which may still come.
-    pending: bool,
-}
-
-/// Whether a try that failed so may still be answered: no answer came, or a frame that
-/// was not its answer came first (a late answer to an earlier request). A garbled or cut
-/// answer was the answer, spoilt: nothing more follows it.
-fn may_be_answered_late(error: &MasterError) -> bool {
-    match error {
-        MasterError::Timeout { .. } | MasterError::Interrupted => true,
-        MasterError::BadFrame { reason, .. } => matches!(
-            reason,
-            BadAnswer::Mismatch(_) | BadAnswer::OtherSlave(_) | BadAnswer::Request
-        ),
-        MasterError::OutOfStep { .. } | MasterError::Encode(_) | MasterError::Io(_) => false,
-    }
 }
 
 /// What the bytes received so far came to.
@@ -247,7 +218,7 @@ impl Master {
             in_step: false,
             failover: None,
             stop: None,
-            owed: Vec::new(),
+            owed: step::Owed::default(),
             resent: Vec::new(),
         }
     }
@@ -353,7 +324,7 @@ impl Master {
                     };
                 let frame = Frame::decode(mode, &found.bytes, Direction::Response);
                 if let (true, Ok(frame)) = (answer, frame) {
-                    self.pay_off(frame.slave, &frame.pdu);
+                    self.owed.pay_off(frame.slave, &frame.pdu);
                     if !heard.contains(&frame.slave) {
                         heard.push(frame.slave);
                     }
@@ -394,7 +365,7 @@ impl Master {
         slave: u8,
         request: &Request,
     ) -> (Result<Reply, MasterError>, u32) {
-        let mut tries = Tries::default();
+        let mut tries = step::Tries::default();
         let mut outcome = self.transact_here(slave, request, &mut tries);
         let mut asked = 1;
         loop {
@@ -422,7 +393,7 @@ impl Master {
         &mut self,
         slave: u8,
         request: &Request,
-        tries: &mut Tries,
+        tries: &mut step::Tries,
     ) -> Result<Reply, MasterError> {
         let retries = if request.may_differ_when_repeated() && !self.options.retry_non_idempotent {
             0
@@ -445,109 +416,6 @@ impl Master {
 
     fn is_broadcast(&self, slave: u8) -> bool {
         slave == 0 && self.options.mode != Mode::Tcp
-    }
-
-    /// One try: the request sent, once the slave is in step, and its answer awaited.
-    fn attempt(
-        &mut self,
-        slave: u8,
-        request: &Request,
-        tries: &mut Tries,
-    ) -> Result<Reply, MasterError> {
-        let function = request.function();
-        // A retry needs no check: a late answer to an earlier try of this very request
-        // is its answer.
-        if tries.sent == 0 && self.owed.contains(&(slave, function)) {
-            // An answer on its way now is heard out (and its debt paid) rather than sent
-            // over; the check goes only if a late answer could still come.
-            let quiet = QUIET_BEFORE_CHECK.max(self.options.silence);
-            self.wait_quiet(quiet, self.options.timeout.max(quiet))?;
-            if self.owed.contains(&(slave, function)) {
-                self.bring_in_step(slave, function)?;
-            }
-        }
-        tries.sent += 1;
-        let reply = self.exchange(slave, request);
-        if self.is_broadcast(slave) || self.options.mode == Mode::Tcp {
-            return reply;
-        }
-        match &reply {
-            // An answer that may be an earlier try's leaves the later tries' to come.
-            Ok(_) if tries.pending => {}
-            Ok(_) => self.settle(slave),
-            Err(error) if may_be_answered_late(error) => {
-                tries.pending = true;
-                self.owe(slave, function);
-            }
-            Err(_) => {}
-        }
-        reply
-    }
-
-    /// Brings `slave` back in step after a try that ended without its answer: a
-    /// diagnostic echo (08/00) carrying fresh data, whose answer only it can be. A slave
-    /// answers in order, so once the echo (or the exception 88 of a slave that does not
-    /// do diagnostics) is in, no late answer of its can follow.
-    fn bring_in_step(&mut self, slave: u8, function: u8) -> Result<(), MasterError> {
-        let check = Request::Diagnostics {
-            sub_function: 0,
-            data: fastrand::u16(..).to_be_bytes().to_vec(),
-        };
-        match self.exchange(slave, &check) {
-            Ok(_) => {
-                self.settle(slave);
-                Ok(())
-            }
-            // A slave silent to the check too is told as any silent slave: no answer.
-            Err(
-                error @ (MasterError::Io(_)
-                | MasterError::Encode(_)
-                | MasterError::Interrupted
-                | MasterError::Timeout { .. }),
-            ) => {
-                if matches!(error, MasterError::Timeout { .. }) {
-                    self.owe(slave, check.function());
-                }
-                Err(error)
-            }
-            Err(error) => {
-                self.owe(slave, check.function());
-                Err(MasterError::OutOfStep {
-                    slave,
-                    function,
-                    why: error.to_string(),
-                })
-            }
-        }
-    }
-
-    /// One more answer owed by `slave` to a request of `function`; past a few, a dead
-    /// slave asked for ever adds none, since one check settles them all.
-    fn owe(&mut self, slave: u8, function: u8) {
-        let owed = self
-            .owed
-            .iter()
-            .filter(|&&o| o == (slave, function))
-            .count();
-        if owed < MOST_OWED {
-            self.owed.push((slave, function));
-        }
-    }
-
-    fn settle(&mut self, slave: u8) {
-        self.owed.retain(|&(s, _)| s != slave);
-    }
-
-    /// An answer heard that was not the one awaited: a late one, if one was owed.
-    fn pay_off(&mut self, slave: u8, pdu: &Pdu) {
-        let function = match pdu {
-            Pdu::Request(_) => return,
-            Pdu::Response(response) => response.function(),
-            Pdu::Exception(exception) => exception.function,
-        };
-        if let Some(at) = self.owed.iter().position(|&owed| owed == (slave, function)) {
-            self.owed.swap_remove(at);
-        }
     }
 
     /// Sends a request, after the line's silence and with stale bytes thrown away, and
@@ -628,7 +496,7 @@ impl Master {
                             Ok(()) => heard.answer = Some(frame.pdu),
                             Err(None) => heard.stale_bytes += found.bytes.len(),
                             Err(Some(reason)) => {
-                                self.pay_off(frame.slave, &frame.pdu);
+                                self.owed.pay_off(frame.slave, &frame.pdu);
                                 heard.problem.get_or_insert(reason);
                             }
                         },
