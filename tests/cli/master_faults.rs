@@ -34,21 +34,21 @@ fn against(acts: Vec<Act>, args: &[&str]) -> Outcome {
 
 /// As `against`, with `--timeout timeout`.
 fn against_within(timeout: &str, acts: Vec<Act>, args: &[&str]) -> Outcome {
+    against_deaf_to(None, timeout, acts, args)
+}
+
+/// As `against_within`, the slave saying nothing to every request of function `deaf`,
+/// which takes no act: a device that ignores a function it does not do.
+fn against_deaf_to(deaf: Option<u8>, timeout: &str, acts: Vec<Act>, args: &[&str]) -> Outcome {
     let pty = Pty::new();
     let path = pty.path.clone();
     let mut port = pty.master.try_clone_native().expect("clone the pty master");
     let slave = thread::spawn(move || {
         let mut requests = Vec::new();
         for act in acts {
-            let Some((_, bytes)) = read_frame(
-                &mut port,
-                Mode::Rtu,
-                Direction::Request,
-                Duration::from_secs(5),
-            ) else {
+            if !next_request(&mut port, &mut requests, deaf) {
                 break;
-            };
-            requests.push(bytes);
+            }
             match act {
                 Act::Answer(delay, answer) => {
                     thread::sleep(delay);
@@ -91,6 +91,26 @@ fn against_within(timeout: &str, acts: Vec<Act>, args: &[&str]) -> Outcome {
 }
 
 const READ: &[&str] = &["read-holding", "17", "400108", "3", "-o", "values"];
+/// Reads requests into `requests` until one not of function `deaf`; false when none comes.
+fn next_request(
+    port: &mut serialport::TTYPort,
+    requests: &mut Vec<Vec<u8>>,
+    deaf: Option<u8>,
+) -> bool {
+    loop {
+        let Some((_, bytes)) =
+            read_frame(port, Mode::Rtu, Direction::Request, Duration::from_secs(8))
+        else {
+            return false;
+        };
+        let function = bytes.get(1).copied();
+        requests.push(bytes);
+        if function != deaf {
+            return true;
+        }
+    }
+}
+
 /// The manuals' read of 400108-400110 from slave 17, and its answer.
 fn request() -> Vec<u8> {
     WORKED_FRAMES[4].clone()
@@ -442,4 +462,29 @@ fn retries_of_a_request_that_may_do_more_when_sent_twice_are_asked_for_explicitl
     let outcome = against(vec![Act::Silence, Act::Silence], &explicit);
     assert_eq!(outcome.code, 3, "{}", outcome.stderr);
     assert_eq!(outcome.requests.len(), 2, "{:02X?}", outcome.requests);
+}
+
+#[test]
+fn a_slave_that_ignores_the_check_is_taken_back_in_step_after_seconds_of_silence() {
+    // One answer lost; the slave says nothing to 08 at all. Polled every 500 ms, the read
+    // waits while a late answer could still come, then goes on: one lost answer is not
+    // the loss of the function for good.
+    let mut acts = vec![now(&answer()), Act::Silence];
+    acts.extend((0..6).map(|_| now(&answer())));
+    let args = [READ, &["--poll", "500ms", "--count", "15"]].concat();
+    let outcome = against_deaf_to(Some(0x08), "300ms", acts, &args);
+    let answered = outcome.stdout.matches("555\n").count();
+    let reads: Vec<usize> = (0..outcome.requests.len())
+        .filter(|&i| outcome.requests[i][1] == 0x03)
+        .collect();
+    let checks = outcome.requests.len() - reads.len();
+    assert!(answered >= 2, "{}{}", outcome.stdout, outcome.stderr);
+    assert_eq!(reads.len(), answered + 1, "{:02X?}", outcome.requests);
+    assert!(
+        (6..=12).contains(&checks),
+        "{checks} checks: {:02X?}",
+        outcome.requests
+    );
+    // No read went between the checks: the reads after the lost one follow them all.
+    assert_eq!(reads[..3], [0, 1, 2 + checks], "{:02X?}", outcome.requests);
 }

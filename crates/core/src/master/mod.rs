@@ -495,8 +495,11 @@ impl Master {
                         Ok(frame) => match self.belongs(&frame, slave, request) {
                             Ok(()) => heard.answer = Some(frame.pdu),
                             Err(None) => heard.stale_bytes += found.bytes.len(),
+                            // A late answer that was owed is no fault of this request.
+                            Err(Some(_)) if self.owed.pay_off(frame.slave, &frame.pdu) => {
+                                heard.stale_bytes += found.bytes.len();
+                            }
                             Err(Some(reason)) => {
-                                self.owed.pay_off(frame.slave, &frame.pdu);
                                 heard.problem.get_or_insert(reason);
                             }
                         },

@@ -3,9 +3,11 @@
 //! function to the same slave; so the answers still owed are remembered, paid off when
 //! heard, and while one is owed such a request goes only after a diagnostic echo (08/00)
 //! with a fresh value has come back: a slave answers in order, so nothing late of its can
-//! follow that.
+//! follow that. A slave that has never answered a check (one that ignores 08, or one
+//! frozen since) is taken back in step once nothing has come from it for
+//! [`SILENCE_SETTLES`]: one that ignores 08 is not lost for good to one lost answer.
 
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use super::{Master, MasterError, Reply};
 use crate::codec::{Mode, Pdu, Request};
@@ -18,36 +20,81 @@ const QUIET_BEFORE_CHECK: Duration = Duration::from_millis(20);
 /// for ever adds none past them, and one check settles them all.
 const MOST_OWED: usize = 8;
 
-/// The answers owed, one entry each, by slave and function.
+/// How long a slave that has never answered a check must have owed an answer, nothing of
+/// it heard, before it is taken back in step without one: a late answer later than that
+/// would be from a slave frozen that long, which no master can tell from one that ignores
+/// the check.
+const SILENCE_SETTLES: Duration = Duration::from_secs(5);
+
+/// The answers owed, one entry each, by slave and function; since when each slave has
+/// owed, and the slaves that have answered a check.
 #[derive(Debug, Default)]
-pub(super) struct Owed(Vec<(u8, u8)>);
+pub(super) struct Owed {
+    owed: Vec<(u8, u8)>,
+    since: Vec<(u8, Instant)>,
+    answer_checks: Vec<u8>,
+}
 
 impl Owed {
     fn owes(&self, slave: u8, function: u8) -> bool {
-        self.0.contains(&(slave, function))
+        self.owed.contains(&(slave, function))
     }
 
     fn owe(&mut self, slave: u8, function: u8) {
-        let owed = self.0.iter().filter(|&&o| o == (slave, function)).count();
+        let owed = self
+            .owed
+            .iter()
+            .filter(|&&o| o == (slave, function))
+            .count();
         if owed < MOST_OWED {
-            self.0.push((slave, function));
+            self.owed.push((slave, function));
+        }
+        if !self.since.iter().any(|&(s, _)| s == slave) {
+            self.since.push((slave, Instant::now()));
         }
     }
 
     /// Nothing more is owed by `slave`: it answered a request sent after all the others.
     fn settle(&mut self, slave: u8) {
-        self.0.retain(|&(s, _)| s != slave);
+        self.owed.retain(|&(s, _)| s != slave);
+        self.since.retain(|&(s, _)| s != slave);
     }
 
-    /// An answer heard that was not the one awaited: a late one, if one was owed.
-    pub(super) fn pay_off(&mut self, slave: u8, pdu: &Pdu) {
+    /// `slave` answered a check: from now on only a check brings it back in step.
+    fn answered_check(&mut self, slave: u8) {
+        if !self.answer_checks.contains(&slave) {
+            self.answer_checks.push(slave);
+        }
+        self.settle(slave);
+    }
+
+    /// Whether `slave`, which has never answered a check, has owed long enough for its
+    /// silence to settle it.
+    fn settled_by_silence(&self, slave: u8) -> bool {
+        !self.answer_checks.contains(&slave)
+            && self
+                .since
+                .iter()
+                .any(|&(s, since)| s == slave && since.elapsed() >= SILENCE_SETTLES)
+    }
+
+    /// An answer heard that was not the one awaited: a late one, if one was owed; whether
+    /// it was.
+    pub(super) fn pay_off(&mut self, slave: u8, pdu: &Pdu) -> bool {
         let function = match pdu {
-            Pdu::Request(_) => return,
+            Pdu::Request(_) => return false,
             Pdu::Response(response) => response.function(),
             Pdu::Exception(exception) => exception.function,
         };
-        if let Some(at) = self.0.iter().position(|&owed| owed == (slave, function)) {
-            self.0.swap_remove(at);
+        match self.owed.iter().position(|&owed| owed == (slave, function)) {
+            Some(at) => {
+                self.owed.swap_remove(at);
+                if !self.owed.iter().any(|&(s, _)| s == slave) {
+                    self.since.retain(|&(s, _)| s != slave);
+                }
+                true
+            }
+            None => false,
         }
     }
 }
@@ -92,6 +139,9 @@ impl Master {
             // over; the check goes only if a late answer could still come.
             let quiet = QUIET_BEFORE_CHECK.max(self.options.silence);
             self.wait_quiet(quiet, self.options.timeout.max(quiet))?;
+            if self.owed.settled_by_silence(slave) {
+                self.owed.settle(slave);
+            }
             if self.owed.owes(slave, function) {
                 self.bring_in_step(slave, function)?;
             }
@@ -124,7 +174,7 @@ impl Master {
         };
         match self.exchange(slave, &check) {
             Ok(_) => {
-                self.owed.settle(slave);
+                self.owed.answered_check(slave);
                 Ok(())
             }
             // A slave silent to the check too is told as any silent slave: no answer.
@@ -196,13 +246,32 @@ mod tests {
     }
 
     #[test]
+    fn silence_settles_only_a_slave_that_never_answered_a_check() {
+        let mut owed = Owed::default();
+        owed.owe(17, 3);
+        owed.owe(18, 3);
+        owed.answered_check(18);
+        owed.owe(18, 3);
+        let long_ago = Instant::now() - SILENCE_SETTLES;
+        for since in &mut owed.since {
+            since.1 = long_ago;
+        }
+        assert!(owed.settled_by_silence(17));
+        assert!(!owed.settled_by_silence(18));
+        // A debt paid off ends the wait; a new one starts it again.
+        owed.pay_off(17, &answer(3));
+        owed.owe(17, 3);
+        assert!(!owed.settled_by_silence(17));
+    }
+
+    #[test]
     fn a_dead_slave_asked_for_ever_owes_a_bounded_number() {
         let mut owed = Owed::default();
         for _ in 0..10_000 {
             owed.owe(5, 3);
         }
-        assert_eq!(owed.0.len(), MOST_OWED);
+        assert_eq!(owed.owed.len(), MOST_OWED);
         owed.settle(5);
-        assert!(owed.0.is_empty());
+        assert!(owed.owed.is_empty() && owed.since.is_empty());
     }
 }
