@@ -24,8 +24,9 @@ unit id, and mbtool says so instead of listing them all.
 
 On a terminal a progress bar on stderr shows the ids tried, the slaves found and the time \
 left. The results are a table, or JSON Lines (one line per slave), then a summary line on \
-stderr. Exit status 0 when a slave was found, 3 when none answered. Ctrl-C or SIGTERM \
-ends the scan before the next id, with the slaves found so far, and exit status 130.";
+stderr. Exit status 0 when a slave was found, 3 when none answered. Ctrl-C, SIGTERM or \
+SIGHUP ends the scan before the next id, with the slaves found so far, and exit status \
+128 + the signal (130 for Ctrl-C, 143 for SIGTERM).";
 
 pub(super) const DUMP_ABOUT: &str = "\
 Read ranges of a device's tables (400001-400200 000001-000064) in as few requests as the \
@@ -40,7 +41,8 @@ holes included.
 
 The file is written whole or not at all: Ctrl-C or SIGTERM ends the dump with nothing \
 written (an older file of that name stays as it was), says how much was read, and exits \
-130.";
+128 + the signal (130 for Ctrl-C, 143 for SIGTERM). The requests go one after another: \
+another master writing meanwhile can make the dump a picture of several moments.";
 
 pub(super) const RESTORE_ABOUT: &str = "\
 Write every coil and holding register of a data file (as dump writes it, or as serve \

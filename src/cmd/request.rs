@@ -165,7 +165,7 @@ fn raw(
     let Some(request) = plan.requests.first() else {
         return Ok(0);
     };
-    let (pdu, code) = match master.transact(plan.slave, request).map_err(Error::from)? {
+    let (pdu, code) = match master.reply(plan.slave, request).map_err(Error::from)? {
         Reply::Broadcast => return Ok(0),
         Reply::Response(response) => (Pdu::Response(response), 0),
         Reply::Exception(exception) => {

@@ -449,6 +449,17 @@ fn a_write_is_told_as_it_happened_when_answers_are_lost() {
         "the request was sent 3 times and may have been carried out all the same",
     );
     assert_eq!(outcome.requests.len(), 3);
+    // raw is told the same way.
+    let raw = ["raw", "17", "06 00 01 00 03", "--retries", "2"];
+    let outcome = against(vec![Act::Silence, now(&echo)], &raw);
+    assert_eq!(outcome.code, 0, "{}", outcome.stderr);
+    assert!(
+        outcome.stderr.contains("was sent to slave 17 2 times"),
+        "{}",
+        outcome.stderr
+    );
+    let outcome = against(vec![Act::Silence, Act::Silence, Act::Silence], &raw);
+    assert_fails(&outcome, 3, "may have been carried out all the same");
 }
 
 #[test]

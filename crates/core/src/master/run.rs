@@ -114,9 +114,11 @@ impl ReadData {
 }
 
 impl Master {
-    /// The answer to one request of `slave`, an exception as an error; `None` for a
-    /// broadcast.
-    pub fn answer(&mut self, slave: u8, request: &Request) -> Result<Option<Response>, RunError> {
+    /// What `slave` gave back to one request, told as it happened: a request that changes
+    /// the device and got no answer is [`RunError::Unconfirmed`] (it may have been
+    /// carried out), and one sent more than once before its answer is kept for
+    /// [`Master::take_resent`].
+    pub fn reply(&mut self, slave: u8, request: &Request) -> Result<Reply, RunError> {
         let (outcome, sent) = self.transact_counted(slave, request);
         let reply = match outcome {
             Err(error @ (MasterError::Timeout { .. } | MasterError::BadFrame { .. }))
@@ -133,7 +135,13 @@ impl Master {
                 sent,
             });
         }
-        match reply {
+        Ok(reply)
+    }
+
+    /// The answer to one request of `slave`, an exception as an error; `None` for a
+    /// broadcast.
+    pub fn answer(&mut self, slave: u8, request: &Request) -> Result<Option<Response>, RunError> {
+        match self.reply(slave, request)? {
             Reply::Response(response) => Ok(Some(response)),
             Reply::Broadcast => Ok(None),
             Reply::Exception(exception) => Err(RunError::Exception {
