@@ -448,8 +448,13 @@ impl Gateway {
         on_error: ErrorSink,
     ) -> io::Result<()> {
         let gateway = Arc::clone(self);
+        let handshakes = match &listening {
+            Listening::Secure(security) => Some(security.handshakes()),
+            Listening::Plain(_) => None,
+        };
         accept_clients(
             listener,
+            handshakes,
             on_error,
             Arc::new(move |client: Accepted| gateway.serve_client(client, &listening)),
         )

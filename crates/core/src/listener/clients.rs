@@ -8,6 +8,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 
+use super::handshakes::Handshakes;
 use super::Link;
 pub(crate) use crate::transport::lock;
 
@@ -16,6 +17,10 @@ pub const CLIENT_IDLE: Duration = Duration::from_secs(60);
 /// Past this many clients, a new one takes the place of the one silent the longest, if
 /// that one is idle; a busy client is never closed, so a busy server serves any number.
 pub const MAX_CLIENTS: usize = 64;
+/// The listen queue asked for (the kernel holds it to net.core.somaxconn): std's 128 fills
+/// under a flood of connections that reconnect when closed, and a client whose SYN finds
+/// it full waits a second for its retransmission.
+const LISTEN_QUEUE: i32 = 4096;
 /// How often running out of file descriptors is told while it lasts.
 const RETELL_AFTER: Duration = Duration::from_secs(10);
 /// A client silent this long is idle: it may make room for a new one.
@@ -58,8 +63,16 @@ struct Client {
     activity: Arc<AtomicU64>,
 }
 
-/// Accepts clients on `listener` for ever, each served by `serve` on its own thread.
-pub fn accept_clients(listener: TcpListener, on_error: ErrorSink, serve: Serve) -> io::Result<()> {
+/// Accepts clients on `listener` for ever, each served by `serve` on its own thread. Over
+/// TLS, `handshakes` are those under way: when the descriptors run out, a stalled one
+/// gives its descriptor to the next client waiting.
+pub fn accept_clients(
+    listener: TcpListener,
+    handshakes: Option<Arc<Handshakes>>,
+    on_error: ErrorSink,
+    serve: Serve,
+) -> io::Result<()> {
+    socket2::SockRef::from(&listener).listen(LISTEN_QUEUE)?;
     let clients: Arc<Mutex<Vec<Client>>> = Arc::new(Mutex::new(Vec::new()));
     let refusals = Refusals::start(Arc::clone(&on_error))?;
     // When running out of file descriptors was last told: not at every refused accept.
@@ -75,13 +88,19 @@ pub fn accept_clients(listener: TcpListener, on_error: ErrorSink, serve: Serve) 
             Ok(stream) => stream,
             Err(error) if is_out_of_descriptors(&error) => {
                 let mut clients = lock(&clients);
-                if !close_idlest(&mut clients, &on_error, "no file descriptor was left") {
-                    let connected = clients.len();
-                    drop(clients);
-                    tell_out_of_descriptors(connected);
-                    // The waiting client stays in the listen queue; try again soon.
-                    std::thread::sleep(Duration::from_millis(20));
+                if close_idlest(&mut clients, &on_error, "no file descriptor was left") {
+                    continue;
                 }
+                let connected = clients.len();
+                drop(clients);
+                if handshakes.as_ref().is_some_and(|h| h.make_room()) {
+                    // Its descriptor comes back as its thread ends, in a moment.
+                    std::thread::sleep(Duration::from_millis(1));
+                    continue;
+                }
+                tell_out_of_descriptors(connected);
+                // The waiting client stays in the listen queue; try again soon.
+                std::thread::sleep(Duration::from_millis(20));
                 continue;
             }
             Err(error) => {

@@ -21,6 +21,10 @@ pub const MAX_PENDING_PER_ADDRESS: usize = 16;
 pub const HANDSHAKE_TIMEOUT: Duration = Duration::from_secs(10);
 /// How long, once half the places are taken: an honest handshake takes milliseconds.
 pub const HANDSHAKE_UNDER_PRESSURE: Duration = Duration::from_secs(2);
+/// A handshake that has sent nothing for this long has stalled: a client sends its
+/// ClientHello as soon as it has connected.
+const UNHEARD_STALLED: Duration = Duration::from_millis(200);
+
 /// The fewest bytes a ClientHello takes: its record and handshake headers, version,
 /// random, and the shortest lists. A client that has sent as many is under way.
 const LEAST_HELLO: usize = 50;
@@ -115,6 +119,23 @@ impl Handshakes {
         }
     }
 
+    /// Closes the handshake that has come the least far, if it has stalled (a few bytes
+    /// and then nothing, or nothing for [`UNHEARD_STALLED`]): room for another client when
+    /// the descriptors have run out. Whether one was closed.
+    pub fn make_room(&self) -> bool {
+        let mut pending = lock(&self.pending);
+        let stalled = |p: &Pending| match p.state.standing() {
+            0 => true,
+            1 => p.started.elapsed() >= UNHEARD_STALLED,
+            _ => false,
+        };
+        let any = pending.iter().any(stalled);
+        if any {
+            evict(&mut pending, stalled);
+        }
+        any
+    }
+
     /// How many handshakes are under way.
     pub fn pending(&self) -> usize {
         lock(&self.pending).len()
@@ -175,6 +196,10 @@ mod tests {
         // Under pressure the time is short.
         let last = flood.last().unwrap();
         assert!(last.deadline <= Instant::now() + HANDSHAKE_UNDER_PRESSURE);
+        // Room when the descriptors run out is made from the stalled ones alone.
+        while handshakes.make_room() {}
+        assert!(!unheard.progress.evicted.load(Ordering::Relaxed));
+        assert!(!honest.progress.evicted.load(Ordering::Relaxed));
         drop(flood);
         drop(unheard);
         assert_eq!(handshakes.pending(), 1);

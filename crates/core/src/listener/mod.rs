@@ -41,6 +41,11 @@ pub struct Admitted {
 }
 
 impl Security {
+    /// The handshakes under way, for the room-making of the listener.
+    pub fn handshakes(&self) -> Arc<Handshakes> {
+        Arc::clone(&self.handshakes)
+    }
+
     /// A server's TLS end with its roles.
     pub fn new(tls: TlsServer, roles: Roles) -> Security {
         Security {

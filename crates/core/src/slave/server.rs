@@ -274,8 +274,10 @@ impl Server {
         listener: TcpListener,
         on_error: ErrorSink,
     ) -> io::Result<()> {
+        let handshakes = self.security.as_ref().map(Security::handshakes);
         accept_clients(
             listener,
+            handshakes,
             on_error,
             Arc::new(move |client: Accepted| {
                 let mut rng =
