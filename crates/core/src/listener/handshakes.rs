@@ -11,7 +11,7 @@ use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
-use super::clients::lock;
+use crate::transport::lock;
 
 /// The most handshakes under way at once.
 pub const MAX_PENDING: usize = 32;

@@ -495,12 +495,16 @@ impl Master {
                         Ok(frame) => match self.belongs(&frame, slave, request) {
                             Ok(()) => heard.answer = Some(frame.pdu),
                             Err(None) => heard.stale_bytes += found.bytes.len(),
-                            // A late answer that was owed is no fault of this request.
-                            Err(Some(_)) if self.owed.pay_off(frame.slave, &frame.pdu) => {
-                                heard.stale_bytes += found.bytes.len();
-                            }
                             Err(Some(reason)) => {
-                                heard.problem.get_or_insert(reason);
+                                // A late answer the slave asked owed is no fault of this
+                                // request; another slave's is still told (a scan learns
+                                // of a late slave by it).
+                                let owed = self.owed.pay_off(frame.slave, &frame.pdu);
+                                if owed && frame.slave == slave {
+                                    heard.stale_bytes += found.bytes.len();
+                                } else {
+                                    heard.problem.get_or_insert(reason);
+                                }
                             }
                         },
                         Err(error) => {
