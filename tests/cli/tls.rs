@@ -995,8 +995,9 @@ fn a_flood_of_unfinished_handshakes_does_not_lock_out_a_certificate_holder() {
         return;
     }
     let pki = Pki::new();
-    // From the honest client's own address, and from 200 others.
-    for spread in [false, true] {
+    // A byte of a ClientHello from the honest client's own address, and from 200 others;
+    // whole ClientHellos, each stalled after the answer, from 200 others.
+    for (spread, whole) in [(false, false), (true, false), (true, true)] {
         let port = free_port();
         let log = pki.dir.path().join(format!("gateway-{port}.log"));
         // Few descriptors, as a small device or a strict service unit has.
@@ -1023,6 +1024,7 @@ fn a_flood_of_unfinished_handshakes_does_not_lock_out_a_certificate_holder() {
             ))
             .args([port.to_string(), "200".into(), "4".into()])
             .args(spread.then_some("spread"))
+            .args(whole.then_some("whole"))
             .stdout(Stdio::piped())
             .spawn()
             .unwrap();
@@ -1036,11 +1038,11 @@ fn a_flood_of_unfinished_handshakes_does_not_lock_out_a_certificate_holder() {
             assert_eq!(
                 (code, out.trim()),
                 (0, "555"),
-                "spread {spread}: {err}{logged}"
+                "spread {spread}, whole {whole}: {err}{logged}"
             );
             assert!(
                 asked.elapsed() < Duration::from_secs(1),
-                "spread {spread}: {:?}",
+                "spread {spread}, whole {whole}: {:?}",
                 asked.elapsed()
             );
             std::thread::sleep(Duration::from_millis(300));

@@ -2,21 +2,38 @@
 """Clients that never finish a TLS handshake: each connects, sends one byte of a
 ClientHello (16) and waits; when the server closes it, it connects again at once.
 
-    slow_hello_flood.py PORT CONNECTIONS SECONDS [SPREAD]
+    slow_hello_flood.py PORT CONNECTIONS SECONDS [spread] [whole]
 
-With SPREAD, the connections come from 127.0.0.2 to 127.0.0.201 (loopback addresses
-all), as from many machines; without, all from 127.0.0.1. Prints how many connections
-were made in all.
+With spread, the connections come from 127.0.0.2 to 127.0.0.201 (loopback addresses
+all), as from many machines; without, all from 127.0.0.1. With whole, each sends a whole
+ClientHello (Python's ssl) and stalls after the server's answer instead. Prints how many
+connections were made in all.
 """
 import selectors
 import socket
+import ssl
 import sys
 import time
 
 
+def client_hello():
+    """A whole ClientHello, as Python's ssl would send it."""
+    context = ssl.SSLContext(ssl.PROTOCOL_TLS_CLIENT)
+    context.check_hostname = False
+    context.verify_mode = ssl.CERT_NONE
+    incoming, outgoing = ssl.MemoryBIO(), ssl.MemoryBIO()
+    tls = context.wrap_bio(incoming, outgoing, server_hostname="localhost")
+    try:
+        tls.do_handshake()
+    except ssl.SSLWantReadError:
+        pass
+    return outgoing.read()
+
+
 def main():
     port, count, seconds = int(sys.argv[1]), int(sys.argv[2]), float(sys.argv[3])
-    spread = sys.argv[4:] == ["spread"]
+    spread, whole = "spread" in sys.argv[4:], "whole" in sys.argv[4:]
+    first = client_hello() if whole else b"\x16"
     selector = selectors.DefaultSelector()
     made = 0
 
@@ -44,7 +61,7 @@ def main():
             s, n = key.fileobj, key.data
             if events & selectors.EVENT_WRITE:
                 try:
-                    s.send(b"\x16")
+                    s.send(first)
                     selector.modify(s, selectors.EVENT_READ, n)
                     continue
                 except OSError:

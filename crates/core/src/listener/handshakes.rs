@@ -2,9 +2,10 @@
 //! (one byte of a ClientHello, then nothing) must not hold every thread and descriptor
 //! while honest clients wait. Past a limit in all, or from one address, the handshake that
 //! has made the least progress gives way, the oldest first: one that sent a few bytes and
-//! stopped short of a ClientHello, then one not heard yet (its thread may not have read),
-//! then one under way. Once half the places in all or of its address are taken, a
-//! handshake has less time.
+//! stopped short of a ClientHello (or nothing for a while), then one under way, and a
+//! newcomer whose thread has yet to read last; among those as far along, one from an
+//! address whose handshakes have had to give way lately, as a flood's have. Once half the places in all or of its
+//! address are taken, a handshake has less time.
 
 use std::net::{IpAddr, Shutdown, TcpStream};
 use std::sync::atomic::{AtomicBool, AtomicU64, AtomicUsize, Ordering};
@@ -29,11 +30,81 @@ const UNHEARD_STALLED: Duration = Duration::from_millis(200);
 /// random, and the shortest lists. A client that has sent as many is under way.
 const LEAST_HELLO: usize = 50;
 
+/// How long an address's handshakes that gave way are held against it.
+const MARKS_LAST: Duration = Duration::from_secs(10);
+/// The most addresses whose marks are kept.
+const MARKED_ADDRESSES: usize = 256;
+
 /// The handshakes under way.
 #[derive(Debug, Default)]
 pub struct Handshakes {
-    pending: Mutex<Vec<Pending>>,
+    state: Mutex<State>,
     next: AtomicU64,
+}
+
+#[derive(Debug, Default)]
+struct State {
+    pending: Vec<Pending>,
+    /// By address: how many of its handshakes gave way lately, and when the last did.
+    marks: Vec<(Option<IpAddr>, u32, Instant)>,
+}
+
+impl State {
+    fn marks_of(&self, address: Option<IpAddr>) -> u32 {
+        self.marks
+            .iter()
+            .find(|m| m.0 == address && m.2.elapsed() < MARKS_LAST)
+            .map_or(0, |m| m.1)
+    }
+
+    fn mark(&mut self, address: Option<IpAddr>) {
+        match self.marks.iter_mut().find(|m| m.0 == address) {
+            Some(mark) => {
+                mark.1 = if mark.2.elapsed() < MARKS_LAST {
+                    mark.1 + 1
+                } else {
+                    1
+                };
+                mark.2 = Instant::now();
+            }
+            None => {
+                if self.marks.len() >= MARKED_ADDRESSES {
+                    if let Some(oldest) = (0..self.marks.len()).min_by_key(|&i| self.marks[i].2) {
+                        self.marks.swap_remove(oldest);
+                    }
+                }
+                self.marks.push((address, 1, Instant::now()));
+            }
+        }
+    }
+
+    /// Which handshakes give way first (the least first): stalled ones (0); newcomers
+    /// whose threads have yet to read, from an address whose handshakes gave way lately
+    /// (1); those under way (2); newcomers from other addresses (3), not closed for another
+    /// before they could say anything. Then the address most marked, then the oldest.
+    fn rank(&self, p: &Pending) -> (u8, u32, Instant) {
+        let marks = self.marks_of(p.address);
+        let class = match () {
+            () if p.stalled() => 0,
+            () if p.under_way() => 2,
+            () if marks > 0 => 1,
+            () => 3,
+        };
+        (class, u32::MAX - marks, p.started)
+    }
+
+    /// Closes the handshake among those `chosen` that ranks first to give way.
+    fn evict(&mut self, chosen: impl Fn(&Pending) -> bool) {
+        let victim = (0..self.pending.len())
+            .filter(|&i| chosen(&self.pending[i]))
+            .min_by_key(|&i| self.rank(&self.pending[i]));
+        if let Some(index) = victim {
+            let victim = self.pending.swap_remove(index);
+            victim.state.evicted.store(true, Ordering::Relaxed);
+            let _ = victim.socket.shutdown(Shutdown::Both);
+            self.mark(victim.address);
+        }
+    }
 }
 
 #[derive(Debug)]
@@ -54,15 +125,18 @@ pub struct Progress {
     pub evicted: AtomicBool,
 }
 
-impl Progress {
-    /// Which handshakes give way first: a few bytes and then nothing (0), nothing heard
-    /// yet (1), under way (2).
-    fn standing(&self) -> u8 {
-        match self.heard.load(Ordering::Relaxed) {
-            0 => 1,
-            n if n < LEAST_HELLO => 0,
-            _ => 2,
+impl Pending {
+    /// Whether it has stalled: a few bytes and then nothing, or nothing for
+    /// [`UNHEARD_STALLED`].
+    fn stalled(&self) -> bool {
+        match self.state.heard.load(Ordering::Relaxed) {
+            0 => self.started.elapsed() >= UNHEARD_STALLED,
+            n => n < LEAST_HELLO,
         }
+    }
+
+    fn under_way(&self) -> bool {
+        self.state.heard.load(Ordering::Relaxed) >= LEAST_HELLO
     }
 }
 
@@ -78,7 +152,9 @@ pub struct Ticket<'a> {
 
 impl Drop for Ticket<'_> {
     fn drop(&mut self) {
-        lock(&self.handshakes.pending).retain(|pending| pending.id != self.id);
+        lock(&self.handshakes.state)
+            .pending
+            .retain(|pending| pending.id != self.id);
     }
 }
 
@@ -87,15 +163,21 @@ impl Handshakes {
     /// the least far when the places in all, or those of its address, are taken.
     pub fn begin(&self, socket: &Arc<TcpStream>) -> Ticket<'_> {
         let address = socket.peer_addr().ok().map(|a| a.ip());
-        let mut pending = lock(&self.pending);
-        let from_here = pending.iter().filter(|p| p.address == address).count();
-        if from_here >= MAX_PENDING_PER_ADDRESS {
-            evict(&mut pending, |p| p.address == address);
+        let mut state = lock(&self.state);
+        let from_here = |state: &State| {
+            state
+                .pending
+                .iter()
+                .filter(|p| p.address == address)
+                .count()
+        };
+        if from_here(&state) >= MAX_PENDING_PER_ADDRESS {
+            state.evict(|p| p.address == address);
         }
-        if pending.len() >= MAX_PENDING {
-            evict(&mut pending, |_| true);
+        if state.pending.len() >= MAX_PENDING {
+            state.evict(|_| true);
         }
-        let from_here = pending.iter().filter(|p| p.address == address).count();
+        let (from_here, pending) = (from_here(&state), &mut state.pending);
         let under_pressure =
             pending.len() >= MAX_PENDING / 2 || from_here >= MAX_PENDING_PER_ADDRESS / 2;
         let id = self.next.fetch_add(1, Ordering::Relaxed);
@@ -123,38 +205,18 @@ impl Handshakes {
     /// and then nothing, or nothing for [`UNHEARD_STALLED`]): room for another client when
     /// the descriptors have run out. Whether one was closed.
     pub fn make_room(&self) -> bool {
-        let mut pending = lock(&self.pending);
-        let stalled = |p: &Pending| match p.state.standing() {
-            0 => true,
-            1 => p.started.elapsed() >= UNHEARD_STALLED,
-            _ => false,
-        };
-        let any = pending.iter().any(stalled);
+        let mut state = lock(&self.state);
+        let stalled = |p: &Pending| p.stalled();
+        let any = state.pending.iter().any(stalled);
         if any {
-            evict(&mut pending, stalled);
+            state.evict(stalled);
         }
         any
     }
 
     /// How many handshakes are under way.
     pub fn pending(&self) -> usize {
-        lock(&self.pending).len()
-    }
-}
-
-/// Closes the handshake among those `chosen` that has come the least far, the oldest
-/// first.
-fn evict(pending: &mut Vec<Pending>, chosen: impl Fn(&Pending) -> bool) {
-    let victim = (0..pending.len())
-        .filter(|&i| chosen(&pending[i]))
-        .min_by_key(|&i| {
-            let p = &pending[i];
-            (p.state.standing(), p.started)
-        });
-    if let Some(index) = victim {
-        let victim = pending.swap_remove(index);
-        victim.state.evicted.store(true, Ordering::Relaxed);
-        let _ = victim.socket.shutdown(Shutdown::Both);
+        lock(&self.state).pending.len()
     }
 }
 
@@ -168,6 +230,39 @@ mod tests {
         let (accepted, _) = listener.accept().unwrap();
         // The client end may close: only the server's socket is looked at.
         Arc::new(accepted)
+    }
+
+    /// A connection accepted from `from`, a loopback address.
+    fn connection_from(listener: &TcpListener, from: &str) -> Arc<TcpStream> {
+        let client =
+            socket2::Socket::new(socket2::Domain::IPV4, socket2::Type::STREAM, None).unwrap();
+        let source: std::net::SocketAddr = format!("{from}:0").parse().unwrap();
+        client.bind(&source.into()).unwrap();
+        client
+            .connect(&listener.local_addr().unwrap().into())
+            .unwrap();
+        let (accepted, _) = listener.accept().unwrap();
+        Arc::new(accepted)
+    }
+
+    #[test]
+    fn among_those_as_far_along_an_address_whose_handshakes_gave_way_goes_first() {
+        let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+        let handshakes = Handshakes::default();
+        // A flood of whole ClientHellos, each then stalled, from 40 other addresses, and
+        // an honest client in the middle of it.
+        let stalled = |n: usize| {
+            let from = format!("127.0.0.{}", 2 + n % 40);
+            let ticket = handshakes.begin(&connection_from(&listener, &from));
+            ticket.progress.heard.store(300, Ordering::Relaxed);
+            ticket
+        };
+        let mut flood: Vec<Ticket<'_>> = (0..100).map(stalled).collect();
+        let honest = handshakes.begin(&connection_from(&listener, "127.0.0.1"));
+        honest.progress.heard.store(300, Ordering::Relaxed);
+        flood.extend((100..400).map(stalled));
+        assert!(!honest.progress.evicted.load(Ordering::Relaxed));
+        assert_eq!(handshakes.pending(), MAX_PENDING);
     }
 
     #[test]
