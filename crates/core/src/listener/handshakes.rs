@@ -202,7 +202,7 @@ impl Handshakes {
     }
 
     /// Closes the handshake that has come the least far, if it has stalled (a few bytes
-    /// and then nothing, or nothing for [`UNHEARD_STALLED`]): room for another client when
+    /// and then nothing, or nothing for 0.2 s): room for another client when
     /// the descriptors have run out. Whether one was closed.
     pub fn make_room(&self) -> bool {
         let mut state = lock(&self.state);
