@@ -4,7 +4,7 @@
 
 use thiserror::Error;
 
-use crate::codec::Request;
+use crate::codec::{diagnostic_only_reads, function_only_reads, Request};
 use crate::model::address::{parse_reference_span, reference, Table};
 
 /// What one right covers: everything, or some spans of the tables.
@@ -219,22 +219,17 @@ impl Role {
                     values.len(),
                 )
             }),
-            // Return query data, and the counters: 00, 02, 0B-12.
-            R::Diagnostics {
-                sub_function: 0x00 | 0x02 | 0x0B..=0x12,
-                ..
-            } => whole(true, false),
+            R::Diagnostics { sub_function, .. } if diagnostic_only_reads(*sub_function) => {
+                whole(true, false)
+            }
             R::Diagnostics { .. } => whole(false, true),
             R::ReadExceptionStatus | R::ReportServerId | R::ReadDeviceIdentification { .. } => {
                 whole(true, false)
             }
-            R::Other { function, .. } => match function {
-                // Event counter and log, FIFO queue, file record read.
-                0x0B | 0x0C | 0x14 | 0x18 => whole(true, false),
-                // File record write.
-                0x15 => whole(false, true),
-                _ => whole(true, true),
-            },
+            R::Other { function, .. } if function_only_reads(*function) => whole(true, false),
+            // File record write.
+            R::Other { function: 0x15, .. } => whole(false, true),
+            R::Other { .. } => whole(true, true),
         };
         why.map(|why| format!("role {} may not {why}", self.name))
     }

@@ -14,6 +14,7 @@ mod wire;
 
 pub use super::direction::Direction;
 pub use identification::{DeviceIdentification, DeviceObject};
+pub(crate) use request::{diagnostic_only_reads, function_only_reads};
 pub(crate) use wire::Values;
 
 /// A request as a master sends it.

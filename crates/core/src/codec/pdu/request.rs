@@ -11,6 +11,18 @@ use super::wire::{
 };
 use super::Request;
 
+/// Whether a diagnostic (08) sub-function only reads: return query data (00) and the
+/// counters (02, 0B-12); the others restart, clear or silence the device.
+pub(crate) fn diagnostic_only_reads(sub_function: u16) -> bool {
+    matches!(sub_function, 0x00 | 0x02 | 0x0B..=0x12)
+}
+
+/// Whether a function kept as opaque bytes only reads: the event counter and log (0B,
+/// 0C), file record read (14) and the FIFO queue (18).
+pub(crate) fn function_only_reads(function: u8) -> bool {
+    matches!(function, 0x0B | 0x0C | 0x14 | 0x18)
+}
+
 impl Request {
     /// The function code the request is sent with.
     pub fn function(&self) -> u8 {
@@ -34,7 +46,8 @@ impl Request {
     }
 
     /// Whether it may change the device: a write of any kind, a diagnostic that restarts,
-    /// clears or silences it, and the functions mbtool has no layout for.
+    /// clears or silences it, and the functions without a layout here that do not only
+    /// read.
     pub fn changes_device(&self) -> bool {
         match self {
             Request::WriteSingleCoil { .. }
@@ -43,11 +56,8 @@ impl Request {
             | Request::WriteMultipleRegisters { .. }
             | Request::MaskWriteRegister { .. }
             | Request::ReadWriteMultipleRegisters { .. } => true,
-            // Return query data and the counters only read.
-            Request::Diagnostics { sub_function, .. } => {
-                !matches!(sub_function, 0x00 | 0x02 | 0x0B..=0x12)
-            }
-            Request::Other { function, .. } => !matches!(function, 0x0B | 0x0C | 0x14 | 0x18),
+            Request::Diagnostics { sub_function, .. } => !diagnostic_only_reads(*sub_function),
+            Request::Other { function, .. } => !function_only_reads(*function),
             _ => false,
         }
     }
@@ -58,8 +68,7 @@ impl Request {
     pub fn may_differ_when_repeated(&self) -> bool {
         match self {
             Request::MaskWriteRegister { .. } | Request::ReadWriteMultipleRegisters { .. } => true,
-            // File record reads, FIFO reads and the event counters only read.
-            Request::Other { function, .. } => !matches!(function, 0x0B | 0x0C | 0x14 | 0x18),
+            Request::Other { function, .. } => !function_only_reads(*function),
             _ => false,
         }
     }
