@@ -149,17 +149,35 @@ impl Error {
             | Error::Plan(_)
             | Error::Endpoint(_) => 2,
             Error::Io(_) => 1,
-            Error::Master(MasterError::Timeout { .. } | MasterError::OutOfStep { .. })
-            | Error::NoAnswer { .. } => 3,
-            Error::Master(MasterError::BadFrame { .. }) => 4,
-            Error::Master(MasterError::Encode(_)) => 2,
-            Error::Master(MasterError::Io(_)) => 1,
-            Error::Master(MasterError::Interrupted) => 130,
-            // 10 + N; a code past 245 (none is defined) saturates at 255.
-            Error::Exception { code, .. } => 10u8.saturating_add(code.0),
+            Error::NoAnswer { .. } => 3,
+            Error::Master(error) => master_exit_code(error),
+            Error::Exception { code, .. } => exception_exit_code(*code),
             Error::MaybeRole(error) | Error::Unconfirmed { error, .. } => error.exit_code(),
         }
     }
+}
+
+/// The exit status for a request's failure, as [`Error::exit_code`] gives it.
+pub fn run_exit_code(error: &RunError) -> u8 {
+    match error {
+        RunError::Master(error) | RunError::Unconfirmed { error, .. } => master_exit_code(error),
+        RunError::Exception { code, .. } => exception_exit_code(*code),
+    }
+}
+
+fn master_exit_code(error: &MasterError) -> u8 {
+    match error {
+        MasterError::Timeout { .. } | MasterError::OutOfStep { .. } => 3,
+        MasterError::BadFrame { .. } => 4,
+        MasterError::Encode(_) => 2,
+        MasterError::Io(_) => 1,
+        MasterError::Interrupted => 130,
+    }
+}
+
+/// 10 + N; a code past 245 (none is defined) saturates at 255.
+fn exception_exit_code(code: ExceptionCode) -> u8 {
+    10u8.saturating_add(code.0)
 }
 
 pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -179,7 +179,16 @@ pub fn read(settings: &Settings, plan: &MapPlan, connection: &mut Connection) ->
     MapWriter::new(settings.output.format, output::colour_wanted())
         .write(&mut out, plan.slave, &points, &read)?;
     out.flush()?;
-    Ok(0)
+    let Some((index, error)) = read.first_failure() else {
+        return Ok(0);
+    };
+    mbtool::note!(
+        "mbtool: {}: {error} ({} of {} points without a value)",
+        points[index].name,
+        read.failed_points(),
+        points.len()
+    );
+    Ok(mbtool::error::run_exit_code(error))
 }
 
 /// Writes the points, then says what was written.

@@ -102,7 +102,7 @@ pub fn run<W: PollRows>(
                 if let Some(log) = log.as_mut() {
                     log.rows.row(&mut log.file, &item, &time)?;
                 }
-                last_status = 0;
+                last_status = screen.status(&item);
                 None
             }
             Tick::Failed(error) => {

@@ -266,19 +266,23 @@ fn poll_thread(
         wait,
         |tick| {
             let update = match tick {
-                // An address the device does not have is said so in its row.
-                Tick::Read((read, took)) => Update::Values(
-                    read.values
-                        .into_iter()
-                        .map(|v| (v.point, v.value))
-                        .chain(
-                            read.missing
-                                .into_iter()
-                                .map(|index| (index, Value::Text("no such address".into()))),
-                        )
-                        .collect(),
-                    took,
-                ),
+                // An address the device does not have, or a point that failed, is said so
+                // in its row.
+                Tick::Read((read, took)) => {
+                    let failed = read.failed.iter().flat_map(|failure| {
+                        let error = Value::Text(failure.error.to_string());
+                        failure
+                            .points
+                            .iter()
+                            .map(move |index| (*index, error.clone()))
+                    });
+                    let missing = read
+                        .missing
+                        .iter()
+                        .map(|index| (*index, Value::Text("no such address".into())));
+                    let values = read.values.into_iter().map(|v| (v.point, v.value));
+                    Update::Values(values.chain(missing).chain(failed).collect(), took)
+                }
                 Tick::Failed(error) => Update::Failed(error),
                 Tick::Disconnected(why) => Update::Disconnected(why),
                 Tick::Switched(switch) => Update::Switched(

@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::Format;
 use super::{csv_field, new_table};
-use mbtool_core::master::map::MapRead;
+use mbtool_core::master::map::{MapRead, PointValue};
 use mbtool_core::model::map::Point;
 use mbtool_core::model::values::Value;
 
@@ -25,7 +25,8 @@ struct JsonPoint<'a> {
     name: &'a str,
     #[serde(rename = "ref")]
     reference: String,
-    value: &'a Value,
+    /// `null` for a point that failed.
+    value: Option<&'a Value>,
     unit: &'a str,
     raw: &'a [u16],
     #[serde(skip_serializing_if = "str::is_empty")]
@@ -33,6 +34,9 @@ struct JsonPoint<'a> {
     /// The point's own slave, where the map gives it one other than the command's.
     #[serde(skip_serializing_if = "Option::is_none")]
     slave: Option<u8>,
+    /// Why the point has no value.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    error: Option<String>,
 }
 
 pub struct MapWriter {
@@ -70,6 +74,11 @@ impl super::PollRows for MapRows<'_> {
         }
     }
 
+    fn status(&self, item: &MapRead) -> u8 {
+        item.first_failure()
+            .map_or(0, |(_, error)| crate::error::run_exit_code(error))
+    }
+
     fn continuing(&mut self) {
         self.writer.csv_header_written = true;
     }
@@ -102,8 +111,7 @@ impl MapWriter {
     fn header(&mut self, out: &mut dyn Write, timed: bool) -> io::Result<()> {
         if !self.csv_header_written {
             let time = if timed { "time," } else { "" };
-            let error = if timed { ",error" } else { "" };
-            writeln!(out, "{time}name,ref,value,unit,raw{error}")?;
+            writeln!(out, "{time}name,ref,value,unit,raw,error")?;
             self.csv_header_written = true;
         }
         Ok(())
@@ -119,7 +127,8 @@ impl MapWriter {
         self.write_at(out, slave, points, read, None)
     }
 
-    /// A read, its rows starting with `time` when it is one of a poll's.
+    /// A read, its rows starting with `time` when it is one of a poll's. Every point has
+    /// its row, in the order of the points: its value, or why it has none.
     pub fn write_at(
         &mut self,
         out: &mut dyn Write,
@@ -128,21 +137,24 @@ impl MapWriter {
         read: &MapRead,
         time: Option<&str>,
     ) -> io::Result<()> {
-        let rows = read
-            .values
+        let rows: Vec<(&Point, Reading)> = points
             .iter()
-            .filter_map(|value| Some((points.get(value.point)?, value)));
+            .enumerate()
+            .filter_map(|(index, point)| Some((*point, reading(read, index)?)))
+            .collect();
         match self.format {
             Format::Json => {
                 let points = rows
-                    .map(|(point, value)| JsonPoint {
+                    .iter()
+                    .map(|(point, reading)| JsonPoint {
                         name: &point.name,
                         reference: point.reference(),
-                        value: &value.value,
+                        value: reading.value(),
                         unit: &point.unit,
-                        raw: &value.raw,
+                        raw: reading.raw(),
                         description: &point.description,
                         slave: point.slave.filter(|own| *own != slave),
+                        error: reading.error(),
                     })
                     .collect();
                 serde_json::to_writer(
@@ -156,26 +168,29 @@ impl MapWriter {
                 writeln!(out)
             }
             Format::Values => {
-                for (point, value) in rows {
-                    writeln!(out, "{}={}", point.name, value.value)?;
+                for (point, reading) in &rows {
+                    match reading {
+                        Reading::Value(value) => writeln!(out, "{}={}", point.name, value.value)?,
+                        // A script reading `name=value` lines finds no value for the point.
+                        Reading::Failed(_) => {}
+                    }
                 }
                 Ok(())
             }
             Format::Csv => {
                 self.header(out, time.is_some())?;
-                for (point, value) in rows {
-                    let (time, error) = match time {
-                        Some(time) => (format!("{time},"), ","),
-                        None => (String::new(), ""),
-                    };
+                let time = time.map(|time| format!("{time},")).unwrap_or_default();
+                for (point, reading) in &rows {
+                    let value = reading.value().map(Value::to_string).unwrap_or_default();
                     writeln!(
                         out,
-                        "{time}{},{},{},{},{}{error}",
+                        "{time}{},{},{},{},{},{}",
                         csv_field(&point.name),
                         point.reference(),
-                        csv_field(&value.value.to_string()),
+                        csv_field(&value),
                         csv_field(&point.unit),
-                        raw_text(point, &value.raw)
+                        raw_text(point, reading.raw()),
+                        csv_field(&reading.error().unwrap_or_default())
                     )?;
                 }
                 Ok(())
@@ -183,20 +198,63 @@ impl MapWriter {
             Format::Table => {
                 let mut table = new_table(self.colour);
                 table.set_header(["name", "ref", "value", "raw"]);
-                for (point, value) in rows {
-                    let shown = match point.unit.as_str() {
-                        "" => value.value.to_string(),
-                        unit => format!("{} {unit}", value.value),
+                for (point, reading) in &rows {
+                    let shown = match (reading, point.unit.as_str()) {
+                        (Reading::Failed(error), _) => error.clone(),
+                        (Reading::Value(value), "") => value.value.to_string(),
+                        (Reading::Value(value), unit) => format!("{} {unit}", value.value),
                     };
                     table.add_row(vec![
                         point.name.clone(),
                         point.reference(),
                         shown,
-                        raw_text(point, &value.raw),
+                        raw_text(point, reading.raw()),
                     ]);
                 }
                 writeln!(out, "{table}")
             }
         }
     }
+}
+
+/// What became of one point of a read.
+enum Reading<'a> {
+    Value(&'a PointValue),
+    Failed(String),
+}
+
+impl Reading<'_> {
+    fn value(&self) -> Option<&Value> {
+        match self {
+            Reading::Value(value) => Some(&value.value),
+            Reading::Failed(_) => None,
+        }
+    }
+
+    fn raw(&self) -> &[u16] {
+        match self {
+            Reading::Value(value) => &value.raw,
+            Reading::Failed(_) => &[],
+        }
+    }
+
+    fn error(&self) -> Option<String> {
+        match self {
+            Reading::Value(_) => None,
+            Reading::Failed(error) => Some(error.clone()),
+        }
+    }
+}
+
+/// Point `index`'s value, or why it has none; `None` for a point the read did not ask.
+fn reading(read: &MapRead, index: usize) -> Option<Reading<'_>> {
+    if let Some(value) = read.values.iter().find(|value| value.point == index) {
+        return Some(Reading::Value(value));
+    }
+    if let Some(error) = read.failure_of(index) {
+        return Some(Reading::Failed(error.to_string()));
+    }
+    read.missing
+        .contains(&index)
+        .then(|| Reading::Failed("no such address".to_string()))
 }

@@ -286,6 +286,10 @@ pub trait PollRows {
     fn row(&mut self, out: &mut dyn Write, item: &Self::Item, time: &str) -> io::Result<()>;
     /// A poll that gave no result: a row with its error where the format has rows.
     fn failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()>;
+    /// The exit status a poll's result gives: 0, or that of a point that failed in it.
+    fn status(&self, _item: &Self::Item) -> u8 {
+        0
+    }
     /// The rows go on a file that has its CSV header already.
     fn continuing(&mut self);
     /// The format the rows are written in.

@@ -149,12 +149,120 @@ fn every_kind_of_point_reads_the_same_from_csv_and_from_home_assistant_yaml() {
     );
     assert_eq!(
         csv,
-        "name,ref,value,unit,raw\ntemperature,400004,-21.5,°C,FF29\nlabel,400020,PUMP 1,,5055 4D50 2031 0000\n"
+        "name,ref,value,unit,raw,error\ntemperature,400004,-21.5,°C,FF29,\nlabel,400020,PUMP 1,,5055 4D50 2031 0000,\n"
     );
     let (_, table, _) = run(&port, &["read", "17", "--map", &paths[1], "inlet"]);
     assert!(
         table.contains("│ inlet ┆ 300001 ┆ 12.5 °C ┆ 002D │"),
         "{table}"
+    );
+}
+
+#[test]
+fn one_points_failure_leaves_the_others_their_values() {
+    let dir = tempfile::tempdir().unwrap();
+    // The device has the second register of a run of two, and no slave 5 answers.
+    let paths = files(
+        &dir,
+        &[
+            ("device.txt", "400002 = 5\n400010 = 7\n400108 = 0\n"),
+            (
+                "map.csv",
+                "name,ref,slave\nfirst,400001,\nsecond,400002,\nelsewhere,400001,5\nlast,400010,\n",
+            ),
+        ],
+    );
+    let Some(pair) = PtyPair::new() else { return };
+    let (_device, port) = serve_pty(&pair, &["--data", &paths[0]]);
+    let read = |format: &str| {
+        let started = std::time::Instant::now();
+        let got = run(
+            &port,
+            &[
+                "read",
+                "17",
+                "--map",
+                &paths[1],
+                "-o",
+                format,
+                "--timeout",
+                "300ms",
+            ],
+        );
+        (got, started.elapsed())
+    };
+    let ((code, json, stderr), took) = read("json");
+    // The first point that failed gives the status: exception 02.
+    assert_eq!(code, 12, "{stderr}");
+    assert!(
+        stderr.contains("mbtool: first: slave 17 answered exception 02")
+            && stderr.contains("(2 of 4 points without a value)"),
+        "{stderr}"
+    );
+    // One timeout, not one a point, and no wait on the points that answer.
+    assert!(took < std::time::Duration::from_secs(3), "{took:?}");
+    let json: serde_json::Value = serde_json::from_str(json.trim()).unwrap();
+    let points = json["points"].as_array().unwrap();
+    let by_name = |name: &str| points.iter().find(|p| p["name"] == name).unwrap().clone();
+    assert_eq!(by_name("second")["value"], 5);
+    assert_eq!(by_name("last")["value"], 7);
+    assert!(by_name("first")["value"].is_null());
+    assert!(by_name("first")["error"]
+        .as_str()
+        .unwrap()
+        .contains("exception 02 illegal data address"));
+    assert!(by_name("elsewhere")["error"]
+        .as_str()
+        .unwrap()
+        .starts_with("no answer from slave 5"));
+    let ((code, csv, _), _) = read("csv");
+    assert_eq!(code, 12);
+    let rows: Vec<&str> = csv.lines().collect();
+    assert_eq!(rows[0], "name,ref,value,unit,raw,error");
+    assert!(rows.contains(&"second,400002,5,,0005,"), "{csv}");
+    assert!(
+        rows.iter()
+            .any(|r| r.starts_with("first,400001,,,,slave 17 answered exception 02")),
+        "{csv}"
+    );
+    let ((_, table, _), _) = read("table");
+    assert!(table.contains("│ second    ┆ 400002 ┆ 5 "), "{table}");
+    // A poll logs a row for every point, each naming its point, and goes on.
+    let (code, rows, _) = run(
+        &port,
+        &[
+            "read",
+            "17",
+            "--map",
+            &paths[1],
+            "-o",
+            "csv",
+            "--poll",
+            "100ms",
+            "--count",
+            "2",
+            "--timeout",
+            "300ms",
+        ],
+    );
+    assert_eq!(code, 12);
+    let named: Vec<&str> = rows
+        .lines()
+        .skip(1)
+        .map(|row| row.split(',').nth(1).unwrap())
+        .collect();
+    assert_eq!(
+        named,
+        [
+            "first",
+            "second",
+            "elsewhere",
+            "last",
+            "first",
+            "second",
+            "elsewhere",
+            "last"
+        ]
     );
 }
 

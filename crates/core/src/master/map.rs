@@ -4,11 +4,15 @@
 //! `max_per_request` N, every point from the lowest unread address to N registers (or bits)
 //! further on, holes included. A request that spans holes and is refused with 02 or 0B is
 //! read again one run at a time.
+//!
+//! One point's failure is that point's alone: a run the device refuses is read again in
+//! halves down to the point it refuses, and a request that gets no answer fails the points
+//! it carries, while every other request is still asked.
 
 use std::collections::VecDeque;
 
 use super::run::RunError;
-use super::Master;
+use super::{Master, MasterError};
 use crate::codec::{limits, ExceptionCode, Request, Response};
 use crate::model::address::Table;
 use crate::model::choice::Choice;
@@ -95,16 +99,50 @@ pub struct PointValue {
     pub value: Value,
 }
 
+/// Points that could not be read, and why.
+#[derive(Debug)]
+pub struct PointFailure {
+    /// The points, as indices into the points read.
+    pub points: Vec<usize>,
+    /// What the request that carried them got.
+    pub error: RunError,
+}
+
 /// What a map read gave.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Debug, Default)]
 pub struct MapRead {
-    /// Every point's value, in the order of the points.
+    /// The value of every point read, in the order of the points.
     pub values: Vec<PointValue>,
+    /// The points that failed, each request's failure once.
+    pub failed: Vec<PointFailure>,
     /// A request that spanned holes was refused, and its points read again run by run.
     pub fell_back: bool,
     /// The points the device says it does not have (exception 02), when read around
     /// holes: indexes into the points read.
     pub missing: Vec<usize>,
+}
+
+impl MapRead {
+    /// Why point `index` could not be read, if it could not.
+    pub fn failure_of(&self, index: usize) -> Option<&RunError> {
+        self.failed
+            .iter()
+            .find(|failure| failure.points.contains(&index))
+            .map(|failure| &failure.error)
+    }
+
+    /// The first point, in the order of the points, that failed, and why.
+    pub fn first_failure(&self) -> Option<(usize, &RunError)> {
+        self.failed
+            .iter()
+            .filter_map(|failure| Some((*failure.points.iter().min()?, &failure.error)))
+            .min_by_key(|(index, _)| *index)
+    }
+
+    /// How many points failed.
+    pub fn failed_points(&self) -> usize {
+        self.failed.iter().map(|failure| failure.points.len()).sum()
+    }
 }
 
 /// What a run of points the device refuses with exception 02 is.
@@ -118,7 +156,9 @@ pub enum Refused {
 }
 
 /// Reads `points` in the requests [`groups`] gives; `refused` says what a run the device
-/// refuses is.
+/// refuses is. A request without a usable answer (an exception, a timeout, a bad answer)
+/// fails its points, which are in `failed`; only a failure that ends the conversation
+/// (the port gone, a stop asked) is an error.
 pub fn read_points(
     master: &mut Master,
     points: &[&Point],
@@ -171,13 +211,9 @@ pub fn read_points(
                 }
             }
             Err(RunError::Exception { code, .. })
-                if refused == Refused::Around && code == ExceptionCode::ILLEGAL_DATA_ADDRESS =>
+                if group.points.len() > 1 && refuses_some_points(code) =>
             {
-                if let [index] = group.points[..] {
-                    read.missing.push(index);
-                    continue;
-                }
-                // Halves, the first read first, until the holes are single points.
+                // Halves, the first read first, down to the points refused.
                 let (first, second) = group.points.split_at(group.points.len() / 2);
                 for half in [second, first] {
                     let members: Vec<&Point> = half.iter().map(|i| points[*i]).collect();
@@ -189,11 +225,37 @@ pub fn read_points(
                     }
                 }
             }
-            Err(error) => return Err(error),
+            Err(RunError::Exception { code, .. })
+                if refused == Refused::Around && code == ExceptionCode::ILLEGAL_DATA_ADDRESS =>
+            {
+                read.missing.extend(group.points);
+            }
+            Err(RunError::Master(MasterError::Io(error))) => {
+                return Err(RunError::Master(MasterError::Io(error)))
+            }
+            Err(RunError::Master(MasterError::Interrupted)) => {
+                return Err(RunError::Master(MasterError::Interrupted))
+            }
+            Err(error) => read.failed.push(PointFailure {
+                points: group.points,
+                error,
+            }),
         }
     }
     read.values = values.into_iter().flatten().collect();
     Ok(read)
+}
+
+/// Whether an exception may be about some of a request's points only: an address the
+/// device lacks, a value it cannot give, or a failure reading one of them. A function the
+/// device lacks, or a gateway's word that the device is not there, is about all of them.
+fn refuses_some_points(code: ExceptionCode) -> bool {
+    matches!(
+        code,
+        ExceptionCode::ILLEGAL_DATA_ADDRESS
+            | ExceptionCode::ILLEGAL_DATA_VALUE
+            | ExceptionCode::SERVER_DEVICE_FAILURE
+    )
 }
 
 /// Whether a group reads addresses no point takes.

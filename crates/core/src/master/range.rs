@@ -90,6 +90,10 @@ pub fn read_range(
             items.max_per_request,
             Refused::Around,
         )?;
+        // A range is one read: a part of it that failed otherwise than by a hole fails it.
+        if let Some(failure) = read.failed.into_iter().next() {
+            return Err(failure.error);
+        }
         values.extend(read.values.into_iter().map(|mut value| {
             value.point += offset;
             value
