@@ -33,6 +33,16 @@ if ! python3 -c 'import pymodbus, serial' 2>/dev/null; then
     python3 -m pip install --quiet pymodbus pyserial
 fi
 
+# Home Assistant (PyPI), the reference reader of its own modbus configurations, in a
+# virtual environment of its own: it pins its own pymodbus.
+home_assistant=target/home-assistant
+if ! "$home_assistant/bin/python" -c 'import homeassistant.components.modbus' 2>/dev/null; then
+    echo "installing Home Assistant"
+    rm -rf "$home_assistant"
+    python3 -m venv "$home_assistant"
+    "$home_assistant/bin/pip" install --quiet homeassistant==2024.3.3 pymodbus==3.6.6
+fi
+
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets --quiet -- -D warnings
 cargo test --workspace --all-targets

@@ -22,6 +22,40 @@ pub struct MapPlan {
     pub points: Vec<Point>,
     /// Where the device is, as the map's file says.
     pub connection: Option<MapConnection>,
+    /// Why the file's place for the device is not known, where it has one.
+    pub unknown_place: Option<String>,
+    /// The map's file.
+    pub path: std::path::PathBuf,
+}
+
+/// The map at `path`, what its reader warns of told on stderr.
+pub fn load_map(path: &std::path::Path) -> Result<RegisterMap, Error> {
+    let map = load(path)?;
+    for warning in &map.warnings {
+        mbtool::note!("mbtool: warning: {warning}");
+    }
+    Ok(map)
+}
+
+/// The settings with the device where the map's file says, unless the command line says
+/// otherwise; a place the file keeps in a secret not found is an error only when the
+/// command line gives none.
+pub fn with_place(
+    settings: &Settings,
+    path: &std::path::Path,
+    connection: Option<&MapConnection>,
+    unknown_place: Option<&str>,
+) -> Result<Settings, Error> {
+    if let (None, Some(why)) = (&settings.connection.port, unknown_place) {
+        return Err(Error::usage(format!(
+            "{}: where the device is is not known: {why}; give --port",
+            path.display()
+        )));
+    }
+    Ok(Settings {
+        connection: connection::with_map_connection(&settings.connection, connection),
+        ..settings.clone()
+    })
 }
 
 /// Loads the map and picks the points named (every point when none is).
@@ -33,7 +67,7 @@ pub fn plan(
     tcp: bool,
     access: Access,
 ) -> Result<MapPlan, Error> {
-    let map = load(path)?;
+    let map = load_map(path)?;
     // A read goes to one slave; only a write may broadcast.
     let slave = parse_slave(slave, access == Access::WriteOne, tcp)?;
     let points = pick(&map, names, path)?;
@@ -68,6 +102,8 @@ pub fn plan(
         slave,
         points,
         connection: map.connection,
+        unknown_place: map.unknown_place,
+        path: path.to_path_buf(),
     })
 }
 
@@ -249,7 +285,7 @@ pub fn poll(
 /// A read or write by register map, checked whole; `None` for a command without `--map`.
 pub enum ByMap {
     Read(MapPlan),
-    Write(Vec<MapWrite>, Option<MapConnection>),
+    Write(Vec<MapWrite>, MapPlan),
 }
 
 /// The map work of `read --map` or `write --map`, with nothing opened yet.
@@ -277,7 +313,7 @@ pub fn by_map(settings: &Settings, request: &RequestCommand) -> Result<Option<By
             Some(path) => {
                 let plan = plan(settings, path, &args.slave, &[], tcp(), Access::WriteOne)?;
                 let writes = plan.writes(&args.assignments(), path)?;
-                Ok(Some(ByMap::Write(writes, plan.connection)))
+                Ok(Some(ByMap::Write(writes, plan)))
             }
             None => Ok(None),
         },
@@ -288,14 +324,13 @@ pub fn by_map(settings: &Settings, request: &RequestCommand) -> Result<Option<By
 impl ByMap {
     pub fn run(&self, settings: &Settings) -> Result<u8> {
         // The device is where the map's file says, unless the command line says otherwise.
-        let from_file = match self {
-            ByMap::Read(plan) => plan.connection.as_ref(),
-            ByMap::Write(_, connection) => connection.as_ref(),
-        };
-        let settings = &Settings {
-            connection: connection::with_map_connection(&settings.connection, from_file),
-            ..settings.clone()
-        };
+        let (ByMap::Read(plan) | ByMap::Write(_, plan)) = self;
+        let settings = &with_place(
+            settings,
+            &plan.path,
+            plan.connection.as_ref(),
+            plan.unknown_place.as_deref(),
+        )?;
         if let (ByMap::Read(plan), Some(interval)) = (self, settings.poll.interval) {
             return poll(
                 settings,

@@ -116,17 +116,18 @@ pub fn run(settings: &Settings, args: &ReadByReferenceArgs) -> Result<u8> {
         .into());
     }
     // A map's file may say where its device is, where the command line does not.
-    let from_file = match &args.map {
+    let settings = &match &args.map {
         Some(path) => {
-            mbtool_core::model::map_file::load(path)
-                .map_err(Error::from)?
-                .connection
+            // Its warnings are told once, when its points are planned.
+            let map = mbtool_core::model::map_file::load(path).map_err(Error::from)?;
+            super::map::with_place(
+                settings,
+                path,
+                map.connection.as_ref(),
+                map.unknown_place.as_deref(),
+            )?
         }
-        None => None,
-    };
-    let settings = &Settings {
-        connection: connection::with_map_connection(&settings.connection, from_file.as_ref()),
-        ..settings.clone()
+        None => settings.clone(),
     };
     let target = connection::target(&settings.connection)?;
     let (slave, points) = points(settings, args, &target)?;

@@ -39,7 +39,7 @@ fn number(value: &Value) -> Option<f64> {
         Value::Unsigned(v) => Some(*v as f64),
         Value::Signed(v) => Some(*v as f64),
         Value::Float32(v) => Some(f64::from(*v)),
-        Value::Float(v) => Some(*v),
+        Value::Float(v) | Value::Decimal(v, _) => Some(*v),
         Value::Text(_) => None,
     }
 }

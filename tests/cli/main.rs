@@ -16,6 +16,7 @@ mod first_contact;
 mod full_disk;
 mod gateway;
 mod golden;
+mod home_assistant;
 mod interrupt;
 mod map;
 mod master_faults;

@@ -105,21 +105,30 @@ fn every_kind_of_point_reads_the_same_from_csv_and_from_home_assistant_yaml() {
         "voltage=230.5\ncount=1234\ntemperature=-21.5\nenergy=70000\nflow=2.5\nbalance=-5\n\
          ratio=0.125\nlabel=PUMP 1\nalarm=1\npump=1\ndoor=1\ninlet=12.5\n"
     );
-    // The same points from the Home Assistant configuration (no bit of a register there).
+    // The same points from the Home Assistant configuration (no bit of a register there),
+    // shown as Home Assistant shows them: whole-number types without decimals unless
+    // `precision` says, floats with two.
     let (code, yaml_values, stderr) =
         run(&port, &["read", "17", "--map", &paths[2], "-o", "values"]);
     assert_eq!(code, 0, "{stderr}");
-    let without_alarm: String = values
-        .lines()
-        .filter(|l| !l.starts_with("alarm="))
-        .map(|l| format!("{l}\n"))
-        .collect();
     let mut yaml_sorted: Vec<&str> = yaml_values.lines().collect();
-    let mut csv_sorted: Vec<&str> = without_alarm.lines().collect();
     yaml_sorted.sort_unstable();
-    csv_sorted.sort_unstable();
-    assert_eq!(yaml_sorted, csv_sorted);
-
+    assert_eq!(
+        yaml_sorted,
+        [
+            "balance=-5",
+            "count=1234",
+            "door=1",
+            "energy=70000",
+            "flow=2.50",
+            "inlet=12",
+            "label=PUMP 1",
+            "pump=1",
+            "ratio=0.12",
+            "temperature=-22",
+            "voltage=230.50"
+        ]
+    );
     let (_, json, _) = run(
         &port,
         &[
@@ -474,7 +483,7 @@ fn every_malformed_map_names_its_file_and_line() {
         (
             "nan.yaml",
             "modbus:\n  - sensors:\n      - {name: f, address: 0, scale: .nan}\n",
-            ":3: f: scale NaN: give a finite number",
+            ":3: f: scale '.nan' is not a number",
         ),
         (
             "nan.csv",
@@ -489,12 +498,12 @@ fn every_malformed_map_names_its_file_and_line() {
         (
             "switch.yaml",
             "modbus:\n  - switches:\n      - {name: h, address: 0, write_type: input}\n",
-            ":3: h: write_type 'input': a switch writes",
+            ":3: h: write_type 'input': give holding, holdings, coil, coils",
         ),
         (
             "coil.yaml",
-            "modbus:\n  - binary_sensors:\n      - {name: i, address: 0, data_type: float32}\n",
-            ":3: i: type f32 does not fit in a coil",
+            "modbus:\n  - binary_sensors:\n      - {name: i, address: 0, input_type: sideways}\n",
+            ":3: i: input_type 'sideways': give coil, discrete_input, holding, input",
         ),
     ] {
         let path = files(&dir, &[(name, text)]).remove(0);
@@ -695,12 +704,23 @@ fn a_home_assistant_hub_says_where_the_device_is() {
     let (code, _, stderr) = run(&[], &["read", "17", "--map", &path_two]);
     assert_eq!(code, 2, "{stderr}");
     assert!(stderr.contains("no --port"), "{stderr}");
-    // A place kept in Home Assistant's secrets is not in the file: --port is asked for.
+    // A place kept in Home Assistant's secrets is found in the secrets.yaml beside the
+    // file, or above it; where there is none, the message names the key, the secret and
+    // where it looked, and --port is asked for.
     let secret = yaml.replace("host: 127.0.0.1", "host: !secret pump_host");
-    let path = files(&dir, &[("secret.yaml", &secret)]).remove(0);
+    std::fs::create_dir(dir.path().join("packages")).unwrap();
+    let path = files(&dir, &[("packages/secret.yaml", &secret)]).remove(0);
     let (code, _, stderr) = run(&[], &["read", "17", "--map", &path]);
     assert_eq!(code, 2, "{stderr}");
-    assert!(stderr.contains("no --port"), "{stderr}");
+    assert!(
+        stderr.contains(": where the device is is not known: host is !secret pump_host, and no secrets.yaml was found in ")
+            && stderr.ends_with("; give --port\n"),
+        "{stderr}"
+    );
+    files(&dir, &[("secrets.yaml", "pump_host: 127.0.0.1\n")]);
+    let (code, json, stderr) = run(&[], &["read", "5", "--map", &path, "voltage", "--json"]);
+    assert_eq!(code, 0, "{stderr}");
+    assert!(json.contains("\"slave\":17"), "{json}");
 }
 
 #[test]

@@ -292,6 +292,7 @@ fn point_value(
         (Kind::Bool, None) => Value::Unsigned(u64::from(coil(bits, offset))),
         (Kind::Number(value_type), _) => scaled(point, value_type.read(&raw, point.order)),
         (Kind::Text(_), _) => text(&raw, point.order),
+        (Kind::Packed(_), _) => packed(point, &raw),
     };
     PointValue {
         point: index,
@@ -307,22 +308,44 @@ fn coil(bits: &[bool], offset: usize) -> bool {
     bits.get(offset).copied().unwrap_or_default()
 }
 
-/// A raw value as the map shows it: raw x scale + offset.
+/// A raw value as the map shows it: raw x scale + offset, then as its file says it is
+/// shown.
 fn scaled(point: &Point, raw: Value) -> Value {
-    if point.is_unscaled() {
-        return raw;
-    }
     let number = match raw {
         Value::Unsigned(v) => v as f64,
         Value::Signed(v) => v as f64,
         Value::Float32(v) => f64::from(v),
-        Value::Float(v) => v,
+        Value::Float(v) | Value::Decimal(v, _) => v,
         Value::Text(_) => return raw,
     };
+    if let Some(shown) = &point.shown {
+        return shown.number(point.scale, point.offset, number);
+    }
+    if point.is_unscaled() {
+        return raw;
+    }
     Value::Float(round_to(
         number * point.scale + point.offset,
         decimals(point),
     ))
+}
+
+/// The values of a point packed as its structure says, byte order applied to the registers
+/// first as Home Assistant applies `swap`.
+fn packed(point: &Point, raw: &[u16]) -> Value {
+    let mut bytes: Vec<u8> = raw.iter().flat_map(|r| r.to_be_bytes()).collect();
+    crate::model::values::reorder(&mut bytes, point.order);
+    let values = point
+        .structure
+        .as_ref()
+        .and_then(|structure| structure.unpack(&bytes));
+    match (values, &point.shown) {
+        (Some(values), Some(shown)) => shown.unpacked(point.scale, point.offset, &values),
+        (Some(values), None) => {
+            crate::model::shown::Shown::default().unpacked(point.scale, point.offset, &values)
+        }
+        (None, _) => Value::Text(crate::model::shown::UNKNOWN.into()),
+    }
 }
 
 /// The decimals a scaled value has: those of its scale and offset (0.1 has one), so that
@@ -392,6 +415,13 @@ pub fn write_request(point: &Point, text: &str) -> Result<Request, String> {
             let raw = unscaled(point, value_type, text).map_err(named)?;
             let registers = value_type.parse(&raw, point.order).map_err(named)?;
             registers_request(address, registers)
+        }
+        (Kind::Packed(_), _) => {
+            return Err(format!(
+                "{} ({}) is values packed by a structure, which are read only",
+                point.name,
+                point.reference()
+            ))
         }
         (Kind::Text(count), _) => {
             let mut registers = ValueType::Ascii.parse(text, point.order).map_err(named)?;

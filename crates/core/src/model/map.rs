@@ -11,6 +11,8 @@ use thiserror::Error;
 use super::address::{bit_reference, parse_reference, reference, split_bit, Table};
 use super::choice::Choice;
 use super::faults::{told, Faults};
+use super::shown::Shown;
+use super::structure::Structure;
 use super::values::{ByteOrder, ValueType};
 
 /// What a point holds.
@@ -22,6 +24,9 @@ pub enum Kind {
     Number(ValueType),
     /// Text in N registers, two characters each.
     Text(u16),
+    /// Values packed in N registers as the point's `structure` says (Home Assistant's
+    /// `data_type: custom`); read-only.
+    Packed(u16),
 }
 
 impl Kind {
@@ -30,7 +35,7 @@ impl Kind {
         match self {
             Kind::Bool => 1,
             Kind::Number(value_type) => value_type.width() as u16,
-            Kind::Text(registers) => registers,
+            Kind::Text(registers) | Kind::Packed(registers) => registers,
         }
     }
 
@@ -39,6 +44,7 @@ impl Kind {
             Kind::Bool => "bool".into(),
             Kind::Number(value_type) => value_type.name().into(),
             Kind::Text(registers) => format!("string:{registers}"),
+            Kind::Packed(registers) => format!("custom:{registers}"),
         }
     }
 }
@@ -72,6 +78,11 @@ pub struct Point {
     pub description: String,
     /// The line of the file it was read from.
     pub line: usize,
+    /// How its value is shown, where its file says as Home Assistant does (precision,
+    /// limits, a marker of no value); `None` shows raw x scale + offset as it is.
+    pub shown: Option<Shown>,
+    /// For `Kind::Packed`, the layout of its values.
+    pub structure: Option<Structure>,
 }
 
 impl Point {
@@ -102,6 +113,12 @@ pub struct RegisterMap {
     pub points: Vec<Point>,
     /// Where the device is, when the file says (a Home Assistant hub).
     pub connection: Option<MapConnection>,
+    /// Why the file's place for the device is not known (a secret not found), for a
+    /// command that needs it.
+    pub unknown_place: Option<String>,
+    /// What a reader of the file would warn of (`file:line: ...`): entries left out as
+    /// their own tool leaves them out.
+    pub warnings: Vec<String>,
 }
 
 /// Where a map's device is, as its file says; what the command line gives wins.
@@ -157,7 +174,7 @@ pub enum MapError {
     },
 }
 
-pub(super) fn at(file: &str, line: usize, error: impl fmt::Display) -> MapError {
+pub(crate) fn at(file: &str, line: usize, error: impl fmt::Display) -> MapError {
     MapError::At {
         file: file.to_string(),
         line: line.max(1),
@@ -240,7 +257,7 @@ fn too_long(text: &str, most: usize) -> bool {
 
 /// A point's name as every map must give it, checked before anything else of its line so
 /// that no message repeats a name that is not one.
-pub(super) fn check_name(name: &str) -> Result<(), String> {
+pub(crate) fn check_name(name: &str) -> Result<(), String> {
     if name.is_empty() {
         return Err("a point needs a name".into());
     }
@@ -260,7 +277,7 @@ pub(super) fn check_name(name: &str) -> Result<(), String> {
 /// length, a kind that fits its table, a value that ends by the last address, and a scale
 /// and offset that are numbers (a scale not 0). The message leaves out the point's name;
 /// the reader puts it in front.
-pub(super) fn checked(point: Point) -> Result<Point, String> {
+pub(crate) fn checked(point: Point) -> Result<Point, String> {
     if too_long(&point.unit, LONGEST_UNIT) {
         return Err(format!(
             "a unit of {} characters: give one of at most {LONGEST_UNIT}",
@@ -269,7 +286,7 @@ pub(super) fn checked(point: Point) -> Result<Point, String> {
     }
     let bits = point.table.is_bits() || point.bit.is_some();
     match (point.kind, bits) {
-        (Kind::Bool, true) | (Kind::Number(_) | Kind::Text(_), false) => {}
+        (Kind::Bool, true) | (Kind::Number(_) | Kind::Text(_) | Kind::Packed(_), false) => {}
         (Kind::Bool, false) => {
             return Err(format!(
                 "type bool is for coils, discrete inputs and bits of registers, not {}s",
@@ -386,6 +403,8 @@ fn csv_point(columns: &[usize], fields: &[String], line: usize) -> Result<Point,
         slave,
         description: field("description").to_string(),
         line,
+        shown: None,
+        structure: None,
     })
     .map_err(|error| format!("{name}: {error}"))
 }
@@ -452,8 +471,29 @@ pub fn parse_csv(file: &str, text: &str) -> Result<RegisterMap, MapError> {
     }
     let mut map = RegisterMap::default();
     let mut faults = Faults::default();
+    // Names are checked on every row that gives one, whatever else is wrong with it.
+    let name_column = columns.iter().position(|c| COLUMNS[*c] == "name");
+    let mut names: HashMap<String, usize> = HashMap::new();
     for (number, line) in lines {
-        let point = csv_fields(line).and_then(|mut fields| {
+        let fields = csv_fields(line);
+        let name = fields
+            .as_ref()
+            .ok()
+            .and_then(|fields| fields.get(name_column?))
+            .filter(|name| !name.is_empty());
+        if let Some(name) = name {
+            match names.get(name) {
+                Some(first) => faults.add(at(
+                    file,
+                    number,
+                    format!("the name '{name}' is taken already, on line {first}"),
+                )),
+                None => {
+                    names.insert(name.clone(), number);
+                }
+            }
+        }
+        let point = fields.and_then(|mut fields| {
             while fields.len() > columns.len() && fields.last().is_some_and(String::is_empty) {
                 fields.pop();
             }
@@ -494,6 +534,8 @@ pub fn range_points(
         slave: None,
         description: String::new(),
         line: 0,
+        shown: None,
+        structure: None,
     };
     (0..count)
         .map_while(|i| match bit {
@@ -510,32 +552,13 @@ pub fn range_points(
         .collect()
 }
 
-/// Checks a map as a whole: names unique, no two points on the same addresses (bits of
-/// one register apart). `faults`: those its lines had already; all are told at once, in
-/// the order of the file.
-pub(super) fn check(
-    file: &str,
-    map: RegisterMap,
-    faults: Faults<MapError>,
-) -> Result<RegisterMap, MapError> {
+/// Checks a CSV map as a whole: no two points on the same addresses (bits of one register
+/// apart). `faults`: those its lines had already; all are told at once, in the order of
+/// the file.
+fn check(file: &str, map: RegisterMap, faults: Faults<MapError>) -> Result<RegisterMap, MapError> {
     let mut faults = faults;
     if map.points.is_empty() && faults.is_empty() {
         return Err(at(file, 1, "the map names no point"));
-    }
-    let mut names: HashMap<&str, usize> = HashMap::new();
-    for point in &map.points {
-        if let Some(first) = names.get(point.name.as_str()) {
-            faults.add(at(
-                file,
-                point.line,
-                format!(
-                    "the name '{}' is taken already, on line {first}",
-                    point.name
-                ),
-            ));
-        } else {
-            names.insert(&point.name, point.line);
-        }
     }
     let mut by_place: Vec<&Point> = map.points.iter().collect();
     by_place.sort_by_key(|p| (p.slave, p.table.digit(), p.address, p.bit));
@@ -613,6 +636,11 @@ running,000001,,,,,,
         assert_eq!(
             fails("name,ref\na,400001\na,400002\n"),
             "m.csv:3: the name 'a' is taken already, on line 2"
+        );
+        // A name given twice is told even when its first row has a fault of its own.
+        assert_eq!(
+            fails("name,ref\na,499999x\na,400002\n").lines().nth(1),
+            Some("m.csv:3: the name 'a' is taken already, on line 2")
         );
         assert_eq!(
             fails("name,ref,type\na,400001,f32\nb,400002\n"),

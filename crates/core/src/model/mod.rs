@@ -10,5 +10,7 @@ pub mod home_assistant;
 pub mod map;
 pub mod map_file;
 pub mod number;
+pub mod shown;
 pub mod spread;
+pub mod structure;
 pub mod values;

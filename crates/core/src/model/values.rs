@@ -132,8 +132,24 @@ pub enum Value {
     Float32(f32),
     /// A double.
     Float(f64),
+    /// A number shown with this many decimals (`230.50`), a number in JSON.
+    #[serde(serialize_with = "decimal")]
+    Decimal(f64, u8),
     /// Hex, binary or ASCII text.
     Text(String),
+}
+
+// serde's `serialize_with` hands a variant's fields by reference.
+#[allow(clippy::trivially_copy_pass_by_ref)]
+fn decimal<S: serde::Serializer>(
+    value: &f64,
+    places: &u8,
+    serializer: S,
+) -> Result<S::Ok, S::Error> {
+    let rounded: f64 = format!("{value:.*}", usize::from(*places))
+        .parse()
+        .unwrap_or(*value);
+    serializer.serialize_f64(rounded)
 }
 
 impl fmt::Display for Value {
@@ -143,6 +159,7 @@ impl fmt::Display for Value {
             Value::Signed(v) => write!(f, "{v}"),
             Value::Float32(v) => show_float(f, f64::from(*v), *v),
             Value::Float(v) => show_float(f, *v, *v),
+            Value::Decimal(v, places) => write!(f, "{v:.*}", usize::from(*places)),
             Value::Text(v) => f.write_str(v),
         }
     }
@@ -331,7 +348,8 @@ fn out_of_range(text: &str, value_type: ValueType) -> String {
 
 /// Puts bytes in wire order `order` into big-endian order, or back: each order is its own
 /// inverse. One register is never reordered by the word orders.
-fn reorder(bytes: &mut [u8], order: ByteOrder) {
+/// Puts `bytes`, registers high byte first, in `order`.
+pub fn reorder(bytes: &mut [u8], order: ByteOrder) {
     match order {
         ByteOrder::Abcd => {}
         ByteOrder::Dcba => bytes.reverse(),

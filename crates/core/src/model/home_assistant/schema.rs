@@ -1,0 +1,180 @@
+//! The keys of a Home Assistant modbus configuration mbtool reads, as YAML gives them.
+//! Every scalar is kept as its text with its tag (`!secret pump_host`), so that a secret
+//! or an include is told where it stands; the keys not named here are Home Assistant's
+//! own (`scan_interval`, `device_class`, ...) and passed over.
+
+use std::fmt;
+use std::marker::PhantomData;
+
+use serde::de::value::{MapAccessDeserializer, SeqAccessDeserializer};
+use serde::de::{Deserializer, MapAccess, SeqAccess, Visitor};
+use serde::Deserialize;
+use serde_saphyr::{Spanned, Tagged};
+
+/// A scalar as written, with its tag.
+pub(super) type Field = Option<Tagged<String>>;
+
+/// A list of items written in place (one item alone is a list of one, as Home Assistant's
+/// `ensure_list` takes it), or the file or folder a tag names (`!include sensors.yaml`).
+pub(super) enum Included<T> {
+    Items(Vec<T>),
+    Named(String),
+}
+
+/// Where a list came from: written in place, or named by a tag.
+pub(super) type List<T> = Option<Tagged<Included<T>>>;
+
+impl<'de, T: Deserialize<'de>> Deserialize<'de> for Included<T> {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Items<T>(PhantomData<T>);
+        impl<'de, T: Deserialize<'de>> Visitor<'de> for Items<T> {
+            type Value = Included<T>;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a list, a mapping or an !include")
+            }
+            fn visit_str<E: serde::de::Error>(self, name: &str) -> Result<Self::Value, E> {
+                Ok(Included::Named(name.to_string()))
+            }
+            fn visit_unit<E: serde::de::Error>(self) -> Result<Self::Value, E> {
+                Ok(Included::Items(Vec::new()))
+            }
+            fn visit_none<E: serde::de::Error>(self) -> Result<Self::Value, E> {
+                Ok(Included::Items(Vec::new()))
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Self::Value, A::Error> {
+                Vec::<T>::deserialize(SeqAccessDeserializer::new(seq)).map(Included::Items)
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Self::Value, A::Error> {
+                T::deserialize(MapAccessDeserializer::new(map))
+                    .map(|one| Included::Items(vec![one]))
+            }
+        }
+        deserializer.deserialize_any(Items(PhantomData))
+    }
+}
+
+/// A mapping at the top of a file, or in a list of hubs: a configuration with `modbus:`,
+/// or a hub.
+#[derive(Default, Deserialize)]
+pub(super) struct Hub {
+    pub modbus: List<Hub>,
+    pub name: Option<Spanned<String>>,
+    #[serde(rename = "type")]
+    pub kind: Field,
+    pub host: Field,
+    pub port: Field,
+    pub baudrate: Field,
+    pub parity: Field,
+    pub bytesize: Field,
+    pub stopbits: Field,
+    pub method: Field,
+    pub sensors: List<Entity>,
+    pub binary_sensors: List<Entity>,
+    pub switches: List<Entity>,
+    pub lights: List<Entity>,
+    pub fans: List<Entity>,
+    pub covers: List<Entity>,
+    pub climates: List<Entity>,
+}
+
+/// What a file holds at its top: a mapping, or a list (of hubs or of entities).
+pub(super) enum Top {
+    One(Probe),
+    Many(Vec<Probe>),
+}
+
+/// The keys that tell a hub from an entity.
+#[derive(Default, Deserialize)]
+pub(super) struct Probe {
+    pub modbus: Option<serde::de::IgnoredAny>,
+    pub address: Option<serde::de::IgnoredAny>,
+    #[serde(rename = "type")]
+    pub kind: Option<serde::de::IgnoredAny>,
+    pub host: Option<serde::de::IgnoredAny>,
+    pub sensors: Option<serde::de::IgnoredAny>,
+    pub binary_sensors: Option<serde::de::IgnoredAny>,
+    pub switches: Option<serde::de::IgnoredAny>,
+    pub lights: Option<serde::de::IgnoredAny>,
+    pub fans: Option<serde::de::IgnoredAny>,
+    pub covers: Option<serde::de::IgnoredAny>,
+    pub climates: Option<serde::de::IgnoredAny>,
+}
+
+impl Probe {
+    /// Whether it is a hub (or a configuration), not an entity.
+    pub(super) fn is_hub(&self) -> bool {
+        self.address.is_none()
+            && [
+                &self.modbus,
+                &self.kind,
+                &self.host,
+                &self.sensors,
+                &self.binary_sensors,
+                &self.switches,
+                &self.lights,
+                &self.fans,
+                &self.covers,
+                &self.climates,
+            ]
+            .iter()
+            .any(|key| key.is_some())
+    }
+}
+
+impl<'de> Deserialize<'de> for Top {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Shape;
+        impl<'de> Visitor<'de> for Shape {
+            type Value = Top;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a mapping or a list")
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Top, A::Error> {
+                Vec::<Probe>::deserialize(SeqAccessDeserializer::new(seq)).map(Top::Many)
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Top, A::Error> {
+                Probe::deserialize(MapAccessDeserializer::new(map)).map(Top::One)
+            }
+        }
+        deserializer.deserialize_any(Shape)
+    }
+}
+
+/// An entity of any platform: the keys of each that say where its state is and how it
+/// is shown.
+#[derive(Deserialize)]
+pub(super) struct Entity {
+    pub name: Spanned<String>,
+    pub address: Field,
+    pub slave: Field,
+    pub device_address: Field,
+    pub input_type: Field,
+    pub write_type: Field,
+    pub data_type: Field,
+    pub swap: Field,
+    pub count: Field,
+    pub structure: Field,
+    pub scale: Field,
+    pub offset: Field,
+    pub precision: Field,
+    pub min_value: Field,
+    pub max_value: Field,
+    pub nan_value: Field,
+    pub zero_suppress: Field,
+    pub unit_of_measurement: Field,
+    pub slave_count: Field,
+    pub virtual_count: Field,
+    pub verify: Option<Option<Verify>>,
+    pub status_register: Field,
+    pub status_register_type: Field,
+    pub command_on: Field,
+    pub target_temp_register: Option<serde::de::IgnoredAny>,
+    pub state_open: Option<serde::de::IgnoredAny>,
+}
+
+/// A switch's `verify:`, where its state is read back.
+#[derive(Deserialize)]
+pub(super) struct Verify {
+    pub address: Field,
+    pub input_type: Field,
+}
