@@ -189,19 +189,42 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
             if capture::is_capture(start) {
                 return replay_capture(settings, args, path, reader);
             }
-            if !args.tcp_ports.is_empty() || named_as_capture(path) {
-                let why = match args.tcp_ports.is_empty() {
-                    true => {
-                        "; a raw serial capture is read as one when its name does not end .pcap"
-                    }
-                    false => "; a raw serial capture takes no --tcp-port",
-                };
+            // A file is what its bytes are, whatever its name: `--save bus.cap` is read
+            // back as the raw serial capture it is.
+            if !args.tcp_ports.is_empty() {
                 return Err(Error::usage(format!(
                     "{} is neither a pcap nor a pcapng file: give a capture written by \
-                     tcpdump, dumpcap or Wireshark{why}",
+                     tcpdump, dumpcap or Wireshark; a raw serial capture takes no --tcp-port",
                     path.display()
                 ))
                 .into());
+            }
+            if named_as_capture(path) && !timing::beside(path).exists() {
+                // Text is no line's bytes: a log or a paste given the wrong name.
+                let what = match start {
+                    [] => Some("empty"),
+                    _ if start
+                        .iter()
+                        .take(512)
+                        .all(|b| b.is_ascii_graphic() || b.is_ascii_whitespace()) =>
+                    {
+                        Some("text")
+                    }
+                    _ => None,
+                };
+                if let Some(what) = what {
+                    return Err(Error::usage(format!(
+                        "{} is neither a pcap nor a pcapng file ({what}): give a capture \
+                         written by tcpdump, dumpcap or Wireshark; mbtool decode reads the \
+                         frames of a log",
+                        path.display()
+                    ))
+                    .into());
+                }
+                mbtool::note!(
+                    "mbtool: {} is no pcap or pcapng file: read as the bytes of a serial line",
+                    path.display()
+                );
             }
         }
         _ if args.interface.is_some() => return capture_live(settings, args),
@@ -358,6 +381,11 @@ fn end_tcp(mut session: TcpSession, mut sinks: Sinks) -> Result<()> {
     sinks
         .writer
         .summary(&mut sinks.out, session.counts(), Some(&packets))?;
+    if let (0, Some((port, count))) = (packets.modbus, session.modbus_elsewhere()) {
+        mbtool::note!(
+            "mbtool: {count} packets on TCP port {port} carry Modbus TCP headers: give --tcp-port {port} to read them"
+        );
+    }
     if let Some(stats) = &sinks.stats {
         sinks.writer.stats(&mut sinks.out, stats)?;
     }

@@ -253,15 +253,22 @@ fn write_serial_summary(out: &mut String, frame: &FrameRecord) {
 /// [`frame_summary`], written into `out`.
 fn write_frame_summary(out: &mut String, report: &FrameReport) {
     use std::fmt::Write as _;
-    if let Some(error) = &report.error {
-        out.push_str(error);
-        return;
-    }
     let f = &report.fields;
-    if let Some(code) = f.exception {
+    match (f.exception, &report.error) {
         // The kind column already says "exception".
-        let _ = write!(out, "{}", ExceptionCode(code));
-        return;
+        (Some(code), None) => {
+            let _ = write!(out, "{}", ExceptionCode(code));
+            return;
+        }
+        (Some(code), Some(error)) => {
+            let _ = write!(out, "{} ({error})", ExceptionCode(code));
+            return;
+        }
+        (None, Some(error)) => {
+            out.push_str(error);
+            return;
+        }
+        (None, None) => {}
     }
     let table = mbtool_core::model::address::Table::of_function(report.function);
     match (report.kind, &f.values, f.address, f.count) {
@@ -634,9 +641,13 @@ impl SniffWriter {
             }
             Format::Table => {
                 if let Some(p) = packets {
+                    let jumps = match p.sequence_jumps {
+                        0 => String::new(),
+                        count => format!(", {} passed over", n(count, "corrupt sequence number")),
+                    };
                     writeln!(
                         out,
-                        "capture: {} ({} of Modbus connections, {} passed over), {} repeated, {} missing",
+                        "capture: {} ({} of Modbus connections, {} passed over), {} repeated, {} missing{jumps}",
                         n(p.packets, "packet"),
                         p.modbus,
                         p.other,

@@ -173,7 +173,7 @@ fn nasty_frames_are_reported_not_trusted() {
         (
             "exception with extra bytes",
             rtu(&[0x11, 0x83, 0x02, 0x00]),
-            "carries 2 PDU bytes",
+            "1 byte after the exception code: 00",
         ),
         (
             "MBAP length too short",

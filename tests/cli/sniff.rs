@@ -1448,3 +1448,29 @@ fn standard_input_still_open_ends_on_sigterm_and_sigint_with_its_frames_and_the_
         );
     }
 }
+
+/// A file is read as what its bytes are, whatever its name: the bytes `--save bus.cap`
+/// kept of a serial line are read back from bus.cap, with a word that it is no pcap.
+#[test]
+fn a_serial_capture_named_as_a_pcap_is_read_as_what_it_holds() {
+    let dir = tempfile::tempdir().unwrap();
+    let named = dir.path().join("bus.cap");
+    std::fs::copy(captures().join("wizmodbus.bin"), &named).unwrap();
+    let read = |path: &Path| {
+        mbtool()
+            .args(["sniff", "-b", "9600", "--json", "--input"])
+            .arg(path)
+            .output()
+            .unwrap()
+    };
+    let (as_cap, as_bin) = (read(&named), read(&captures().join("wizmodbus.bin")));
+    assert!(as_cap.status.success(), "{as_cap:?}");
+    assert_eq!(as_cap.stdout, as_bin.stdout);
+    assert_eq!(
+        String::from_utf8_lossy(&as_cap.stderr),
+        format!(
+            "mbtool: {} is no pcap or pcapng file: read as the bytes of a serial line\n",
+            named.display()
+        )
+    );
+}

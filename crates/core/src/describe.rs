@@ -547,6 +547,9 @@ pub(crate) fn describe_as(bytes: &[u8], mode: Mode, direction: Option<Direction>
                 report.kind = Kind::travelling(direction, report.function);
                 report.valid = false;
                 report.error = Some(error.to_string());
+                if report.kind == Kind::Exception {
+                    with_trailing_bytes(&mut report, &envelope.pdu);
+                }
                 return with_checksum(report, envelope.checksum);
             }
         },
@@ -621,9 +624,33 @@ pub fn describe_reading(mode: Mode, envelope: &Envelope, reading: Reading) -> Fr
             report.kind = kind;
             report.valid = false;
             report.error = Some(error);
+            if kind == Kind::Exception {
+                with_trailing_bytes(&mut report, &envelope.pdu);
+            }
         }
     }
     with_checksum(report, envelope.checksum)
+}
+
+/// An exception with bytes after its code still says why: its code is kept, and what
+/// follows it told.
+fn with_trailing_bytes(report: &mut FrameReport, pdu: &[u8]) {
+    if let [function, code, after @ ..] = pdu {
+        report.fields = exception_fields(Exception {
+            function: function & !EXCEPTION_FLAG,
+            code: crate::codec::ExceptionCode(*code),
+        });
+        if !after.is_empty() {
+            report.error = Some(format!(
+                "{} after the exception code: {}",
+                match after.len() {
+                    1 => "1 byte".to_string(),
+                    n => format!("{n} bytes"),
+                },
+                spaced_hex(after)
+            ));
+        }
+    }
 }
 
 impl Kind {

@@ -13,6 +13,15 @@ const MOST_WAITING: usize = 256 * 1024;
 /// acknowledgements to tell a lost segment by.
 const MOST_SEGMENTS_WAITING: usize = 64;
 
+/// The most bytes a sender may have in flight that the capture has not seen: an
+/// acknowledgement further ahead of what was seen is a corrupt number, and a hole wider is
+/// a jump of the sequence numbers, not bytes that were sent.
+const MOST_UNSEEN: u64 = 64 * 1024;
+
+/// How long, in capture time, a segment waits for the hole before it to fill: a
+/// retransmission comes within it, and a corrupt sequence number holds nothing back longer.
+const PATIENCE_US: u64 = 2_000_000;
+
 /// When and in which packet a segment was captured: microseconds since 1970, and the
 /// packet's number.
 pub type At = (u64, u64);
@@ -46,6 +55,10 @@ pub struct Stream {
     pub repeated: u64,
     /// Bytes that never came.
     pub missing: u64,
+    /// Jumps of the sequence numbers wider than a sender could have in flight (a corrupt
+    /// number, or a capture that lost much), and acknowledgements of bytes never sent:
+    /// passed over, and no bytes counted missing for them.
+    pub jumps: u64,
     /// Where the sender's FIN stands: the other side acknowledges it as one more
     /// sequence number, which is no byte.
     fin: Option<u64>,
@@ -85,11 +98,33 @@ impl Stream {
             out.push(Piece::Gap(u64::from(cut)));
             self.missing += u64::from(cut);
             self.next = Some(end + u64::from(cut));
-            self.release(at, out);
+            self.release(Some(at), out);
         }
         while self.waiting_bytes > MOST_WAITING || self.waiting.len() > MOST_SEGMENTS_WAITING {
             self.skip_hole(out);
         }
+        self.expire(at.0, out);
+    }
+
+    /// Holes that segments have waited behind for longer than [`PATIENCE_US`] by `now` are
+    /// taken as lost.
+    fn expire(&mut self, now: u64, out: &mut Vec<Piece>) {
+        while self
+            .waiting
+            .first_key_value()
+            .is_some_and(|(_, (_, at))| now.saturating_sub(at.0) > PATIENCE_US)
+        {
+            self.skip_hole(out);
+        }
+    }
+
+    /// Where the sender has sent up to, as far as the capture saw.
+    fn seen_end(&self) -> u64 {
+        let waiting = self
+            .waiting
+            .last_key_value()
+            .map_or(0, |(at, (data, _))| at + data.len() as u64);
+        self.next.unwrap_or(0).max(waiting)
     }
 
     /// The sender is done: its FIN has sequence number `sequence`.
@@ -109,6 +144,11 @@ impl Stream {
             return;
         };
         let until = self.fin.map_or(until, |fin| until.min(fin));
+        if until > self.seen_end() + MOST_UNSEEN {
+            // More than could be in flight unseen: a corrupt number, not lost bytes.
+            self.jumps += 1;
+            return;
+        }
         while self
             .waiting
             .first_key_value()
@@ -118,10 +158,21 @@ impl Stream {
         }
         let next = self.next.unwrap_or(0);
         if until > next {
-            out.push(Piece::Gap(until - next));
-            self.missing += until - next;
+            self.hole(until - next, out);
             self.next = Some(until);
-            self.release(now, out);
+            self.release(Some(now), out);
+        }
+        self.expire(now.0, out);
+    }
+
+    /// A hole of `size` bytes the framer is told of: missing bytes, or a jump when wider
+    /// than a sender could have in flight.
+    fn hole(&mut self, size: u64, out: &mut Vec<Piece>) {
+        out.push(Piece::Gap(size));
+        if size > MOST_UNSEEN {
+            self.jumps += 1;
+        } else {
+            self.missing += size;
         }
     }
 
@@ -142,14 +193,29 @@ impl Stream {
         }
     }
 
+    /// A segment that waited behind a hole now taken as lost: it, and those that waited
+    /// behind it, come out as they came.
+    fn take_as_came(&mut self, position: u64, payload: &[u8], at: At, out: &mut Vec<Piece>) {
+        if self.put(position, payload, at, out) {
+            self.release(None, out);
+        }
+    }
+
     /// Bytes at `position`: those in order go out, with what waited behind them; those
     /// ahead wait; those already out are counted as repeated.
     fn take(&mut self, position: u64, payload: &[u8], at: At, out: &mut Vec<Piece>) {
+        if self.put(position, payload, at, out) {
+            self.release(Some(at), out);
+        }
+    }
+
+    /// `take` but for what waited: whether bytes went out.
+    fn put(&mut self, position: u64, payload: &[u8], at: At, out: &mut Vec<Piece>) -> bool {
         let next = self.next.unwrap_or(0);
         let end = position + payload.len() as u64;
         if end <= next {
             self.repeated += payload.len() as u64;
-            return;
+            return false;
         }
         if position > next {
             let kept = self
@@ -163,7 +229,7 @@ impl Stream {
             } else {
                 self.repeated += payload.len() as u64;
             }
-            return;
+            return false;
         }
         let skip = (next - position) as usize;
         self.repeated += skip as u64;
@@ -172,19 +238,20 @@ impl Stream {
             at,
         });
         self.next = Some(end);
-        self.release(at, out);
+        true
     }
 
     /// What waited behind the bytes out so far, now that they reach it: it comes out
-    /// `now`, with the segment that let it.
-    fn release(&mut self, now: At, out: &mut Vec<Piece>) {
+    /// `now`, with the segment that let it; or, after a hole taken as lost, each segment
+    /// as it came (`None`).
+    fn release(&mut self, now: Option<At>, out: &mut Vec<Piece>) {
         while let Some(entry) = self.waiting.first_entry() {
             if *entry.key() > self.next.unwrap_or(0) {
                 break;
             }
-            let (position, (data, _)) = entry.remove_entry();
+            let (position, (data, came)) = entry.remove_entry();
             self.waiting_bytes -= data.len();
-            self.take(position, &data, now, out);
+            self.take(position, &data, now.unwrap_or(came), out);
         }
     }
 
@@ -197,11 +264,10 @@ impl Stream {
         self.waiting_bytes -= data.len();
         let next = self.next.unwrap_or(0);
         if position > next {
-            out.push(Piece::Gap(position - next));
-            self.missing += position - next;
+            self.hole(position - next, out);
             self.next = Some(position);
         }
-        self.take(position, &data, at, out);
+        self.take_as_came(position, &data, at, out);
     }
 }
 
@@ -246,5 +312,47 @@ mod tests {
         );
         assert_eq!(stream.missing, 11);
         assert_eq!(stream.repeated, 6);
+    }
+
+    #[test]
+    fn corrupt_numbers_hold_back_nothing_for_long_and_claim_no_bytes() {
+        let mut stream = Stream::default();
+        let mut out = Vec::new();
+        stream.segment(1000, false, (b"abc", 0), (0, 1), &mut out);
+        // An acknowledgement a billion bytes ahead is a corrupt number: the next segment
+        // in order is still taken, and nothing is counted missing.
+        stream.acknowledged(1_001_000_000, (1, 2), &mut out);
+        stream.segment(1003, false, (b"de", 0), (2, 3), &mut out);
+        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcde");
+        assert_eq!((stream.missing, stream.jumps), (0, 1));
+        // A segment whose number jumps far ahead waits no longer than the patience, then
+        // is a jump, not missing bytes; what follows it comes in order after it.
+        stream.segment(900_000, false, (b"x", 0), (3_000_000, 4), &mut out);
+        stream.segment(900_001, false, (b"y", 0), (3_500_000, 5), &mut out);
+        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcde");
+        stream.segment(1005, false, (b"f", 0), (6_000_000, 6), &mut out);
+        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcdef|xy");
+        assert_eq!((stream.missing, stream.jumps), (0, 2));
+        // A hole a retransmission could fill waits, and is then lost, as it came.
+        let mut stream = Stream::default();
+        let mut out = Vec::new();
+        stream.segment(0, false, (b"a", 0), (0, 1), &mut out);
+        stream.segment(5, false, (b"f", 0), (10, 2), &mut out);
+        stream.segment(6, false, (b"g", 0), (20, 3), &mut out);
+        stream.segment(1, false, (b"bcde", 0), (30, 4), &mut out);
+        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcdefg");
+        stream.segment(9, false, (b"j", 0), (40, 5), &mut out);
+        stream.segment(10, false, (b"k", 0), (2_000_050, 6), &mut out);
+        let times: Vec<u64> = out
+            .iter()
+            .filter_map(|p| match p {
+                Piece::Bytes { at, .. } => Some(at.1),
+                Piece::Gap(_) => None,
+            })
+            .collect();
+        // j waited past the patience: the hole before it is lost, and j came in packet 5.
+        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcdefg|jk");
+        assert_eq!(times[times.len() - 2..], [5, 6]);
+        assert_eq!(stream.missing, 2);
     }
 }

@@ -11,10 +11,26 @@ use serde::Serialize;
 use super::capture::{segment, Packet};
 use super::reassembly::{At, Piece, Stream};
 use super::session::{Counts, Filter, FrameRecord, Record, TcpPlace};
-use crate::codec::answer::check;
+use crate::codec::answer::{check, Mismatch};
 use crate::codec::framing::{Broken, Event, Found, Framer};
-use crate::codec::{Direction, Envelope, Mode, Pdu, Reading, Request};
+use crate::codec::{Direction, Envelope, Mode, Pdu, Reading, Request, Response};
 use crate::describe::{describe_frame, describe_reading, locate_answer, Kind};
+
+/// At most this many requests of one connection wait on one transaction and unit id: a
+/// client may pipeline requests that reuse an id, but one whose requests are never
+/// answered holds no more than this.
+const MOST_WAITING_ON_ONE_ID: usize = 16;
+
+/// Whether a TCP payload reads as MBAP: protocol id 0, a length that the payload holds
+/// (one ADU, or one followed by another header), a function code that exists.
+fn looks_like_mbap(payload: &[u8]) -> bool {
+    let [_, _, 0, 0, hi, lo, _, function, ..] = payload else {
+        return false;
+    };
+    let end = 6 + usize::from(u16::from_be_bytes([*hi, *lo]));
+    let adu = (8..=260).contains(&end) && !matches!(function, 0 | 0x80);
+    adu && (payload.len() == end || payload.get(end + 2..end + 4) == Some(&[0, 0]))
+}
 
 /// The port Modbus TCP servers listen on, unless told otherwise.
 pub const MODBUS_PORT: u16 = 502;
@@ -32,6 +48,9 @@ pub struct PacketCounts {
     pub repeated_bytes: u64,
     /// Bytes that never came (lost segments, packets the snap length cut).
     pub missing_bytes: u64,
+    /// Jumps of sequence numbers, and acknowledgements of bytes never sent, passed over:
+    /// corrupt numbers, or more lost than a sender has in flight.
+    pub sequence_jumps: u64,
 }
 
 /// One direction of a connection: its bytes in order, and the frames in them.
@@ -108,6 +127,8 @@ pub struct TcpSession {
     last_time: u64,
     pieces: Vec<Piece>,
     found: Vec<Completed>,
+    /// Packets on other ports whose payload reads as MBAP, by port.
+    elsewhere: BTreeMap<u16, u64>,
 }
 
 impl TcpSession {
@@ -126,7 +147,19 @@ impl TcpSession {
             last_time: 0,
             pieces: Vec::new(),
             found: Vec::new(),
+            elsewhere: BTreeMap::new(),
         }
+    }
+
+    /// The port not asked for that most packets with MBAP headers were on, and how many:
+    /// Modbus TCP served on a port of its own.
+    pub fn modbus_elsewhere(&self) -> Option<(u16, u64)> {
+        // A server's port is in every connection to it, each client's in its own: the
+        // port of the most packets, the lower of two alike.
+        self.elsewhere
+            .iter()
+            .max_by_key(|(port, count)| (**count, std::cmp::Reverse(**port)))
+            .map(|(port, count)| (*port, *count))
     }
 
     /// The first packet's time, in microseconds since 1970: frames are timed from it.
@@ -146,6 +179,7 @@ impl TcpSession {
             for side in [&connection.to_server, &connection.to_client] {
                 counts.repeated_bytes += side.stream.repeated;
                 counts.missing_bytes += side.stream.missing;
+                counts.sequence_jumps += side.stream.jumps;
             }
         }
         counts
@@ -166,6 +200,11 @@ impl TcpSession {
             (segment.destination, segment.source, false)
         } else {
             self.packets.other += 1;
+            if looks_like_mbap(segment.payload) {
+                for port in [segment.source.port(), segment.destination.port()] {
+                    *self.elsewhere.entry(port).or_default() += 1;
+                }
+            }
             return;
         };
         self.packets.modbus += 1;
@@ -285,6 +324,7 @@ impl TcpSession {
         for side in [&connection.to_server, &connection.to_client] {
             self.packets.repeated_bytes += side.stream.repeated;
             self.packets.missing_bytes += side.stream.missing;
+            self.packets.sequence_jumps += side.stream.jumps;
         }
         for pending in connection.pending {
             self.unanswered(pending, key, capture_ended, out);
@@ -355,25 +395,53 @@ impl TcpSession {
             false => Direction::Response,
         };
         let key = (place.client, place.server);
+        let mut mismatch = None;
         let report = match (found.broken, Envelope::open(self.mode, &found.bytes)) {
             (None, Ok(envelope)) => {
                 let decoded = Pdu::decode(&envelope.pdu, direction);
                 // A request that breaks its function's rules is still answered, with an
-                // exception: it waits for that answer all the same.
-                let broken_request = match (&decoded, direction) {
+                // exception: it waits for that answer all the same. A malformed answer
+                // still answers its request, which its header names.
+                let broken = match (&decoded, direction) {
                     (Err(_), Direction::Request) => envelope.pdu.split_first().map(|(f, data)| {
                         Pdu::Request(Request::Other {
                             function: *f,
                             data: data.to_vec(),
                         })
                     }),
+                    (Err(_), _) if self.mode == Mode::Tcp => {
+                        envelope.pdu.split_first().map(|(f, data)| {
+                            Pdu::Response(Response::Other {
+                                function: *f,
+                                data: data.to_vec(),
+                            })
+                        })
+                    }
                     _ => None,
                 };
-                let request = decoded
-                    .as_ref()
-                    .ok()
-                    .or(broken_request.as_ref())
-                    .and_then(|pdu| self.pair(&envelope, pdu, key, time, &mut place, out));
+                let request = match (decoded.as_ref().ok(), &broken) {
+                    (Some(pdu), _) => self.pair(
+                        &envelope,
+                        pdu,
+                        false,
+                        key,
+                        time,
+                        &mut place,
+                        &mut mismatch,
+                        out,
+                    ),
+                    (None, Some(pdu)) => self.pair(
+                        &envelope,
+                        pdu,
+                        true,
+                        key,
+                        time,
+                        &mut place,
+                        &mut mismatch,
+                        out,
+                    ),
+                    (None, None) => None,
+                };
                 match decoded {
                     Ok(pdu) => {
                         let answer_to_read = matches!(pdu, Pdu::Response(_));
@@ -410,25 +478,34 @@ impl TcpSession {
                 report
             }
         };
-        self.counts.frame(&report);
+        // Over TCP the direction tells a request from an answer, whatever its PDU holds:
+        // every frame is counted as what its record says it is.
+        self.counts.tell(report.slave, Some(report.kind));
+        self.counts.mismatched += u64::from(mismatch.is_some());
         self.numbered += 1;
         if self.filter.shows(report.slave, report.function) {
             let mut record = FrameRecord::new(self.numbered, found, self.at(Some(time)), report);
             record.paired = place.request_packet.is_some();
+            record.mismatch = mismatch;
             record.tcp = Some(place);
             out.push(Record::Frame(record));
         }
     }
 
     /// A request waits for its answer; an answer is paired with its request, which it
-    /// returns, and `place` learns the request's packet and the response time.
+    /// returns, and `place` learns the request's packet and the response time. A
+    /// `malformed` answer (its PDU does not read) is paired by its header alone; one that
+    /// does not fit the request it answers is told in `mismatch`.
+    #[allow(clippy::too_many_arguments)]
     fn pair(
         &mut self,
         envelope: &Envelope,
         pdu: &Pdu,
+        malformed: bool,
         key: (SocketAddr, SocketAddr),
         time: u64,
         place: &mut TcpPlace,
+        mismatch: &mut Option<Mismatch>,
         out: &mut Vec<Record>,
     ) -> Option<Request> {
         let by_transaction = self.mode == Mode::Tcp;
@@ -437,10 +514,16 @@ impl TcpSession {
         let transaction = envelope.transaction;
         match pdu {
             Pdu::Request(request) => {
-                // A transaction id used again while its request waits: that one got no answer.
-                let reused = connection.pending.iter().position(|p| {
-                    by_transaction && p.transaction == transaction && p.slave == slave
-                });
+                // A client may send requests with one transaction id before the first is
+                // answered (pipelined): they wait in order. Past a bound, the oldest of them
+                // is taken as unanswered, so that a client that never gets an answer holds
+                // no more than that.
+                let same: Vec<usize> = (0..connection.pending.len())
+                    .filter(|i| {
+                        let p = &connection.pending[*i];
+                        by_transaction && p.transaction == transaction && p.slave == slave
+                    })
+                    .collect();
                 let pending = Pending {
                     slave,
                     transaction,
@@ -449,27 +532,43 @@ impl TcpSession {
                     packet: place.packet,
                 };
                 connection.pending.push(pending);
-                if let Some(index) = reused {
-                    let old = connection.pending.remove(index);
+                if same.len() >= MOST_WAITING_ON_ONE_ID {
+                    let old = connection.pending.remove(same[0]);
                     self.unanswered(old, key, false, out);
                 }
                 None
             }
             answer => {
-                // MBAP pairs by transaction and unit id alone, as Wireshark does; RTU by
-                // unit, function and an answer that fits the request, oldest first.
-                let index = connection
-                    .pending
-                    .iter()
-                    .position(|p| match by_transaction {
-                        true => p.transaction == transaction && p.slave == slave,
-                        false => {
-                            p.slave == slave
-                                && p.request.function() == answer.function() & 0x7F
-                                && (matches!(answer, Pdu::Exception(_))
-                                    || check(&p.request, answer).is_ok())
+                // MBAP pairs by transaction and unit id, RTU by unit and function: with the
+                // oldest request waiting that the answer fits (a write's echo, a read's
+                // count); over MBAP, one that fits none still answers the oldest of its
+                // transaction, and is told as not fitting it.
+                let fits = |p: &Pending| {
+                    p.request.function() == answer.function() & 0x7F
+                        && (matches!(answer, Pdu::Exception(_))
+                            || check(&p.request, answer).is_ok())
+                };
+                let waiting: Vec<usize> = (0..connection.pending.len())
+                    .filter(|i| {
+                        let p = &connection.pending[*i];
+                        match by_transaction {
+                            true => p.transaction == transaction && p.slave == slave,
+                            false => p.slave == slave,
                         }
-                    })?;
+                    })
+                    .collect();
+                let fitting = waiting
+                    .iter()
+                    .copied()
+                    .find(|i| fits(&connection.pending[*i]));
+                let index = match (fitting, by_transaction) {
+                    (Some(index), _) => index,
+                    (None, true) => *waiting.first()?,
+                    (None, false) => return None,
+                };
+                if fitting.is_none() && !malformed {
+                    *mismatch = check(&connection.pending[index].request, answer).err();
+                }
                 let pending = connection.pending.remove(index);
                 place.request_packet = Some(pending.packet);
                 place.response_time = Some(time.saturating_sub(pending.time));

@@ -15,8 +15,10 @@ enum Header {
 }
 
 /// Protocol id 0, and a length that holds a unit id and a function at least and at most a
-/// whole PDU. Seen from outside, also a function code that exists (1-127, or an
-/// exception's 129-255); a server still frames a function 00, to answer it exception 01.
+/// whole PDU. Out of step, seen from outside, also a function code that exists (1-127, or
+/// an exception's 129-255), so that data is not taken for a header; in step, the MBAP
+/// header frames whatever function follows it, 00 included, as a server frames it to
+/// answer it exception 01.
 fn header(data: &[u8], outside: bool) -> Header {
     if let Some([hi, lo]) = data.get(2..4) {
         if [*hi, *lo] != [0, 0] {
@@ -53,7 +55,7 @@ impl Framer {
             broken: None,
             direction: None,
         };
-        match header(data, self.resync) {
+        match header(data, self.resync && !in_step) {
             Header::Not if self.resync => Look::Noise,
             Header::Not => Look::Lost,
             Header::Reads(Some(len)) if len <= data.len() => {
