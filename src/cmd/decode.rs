@@ -13,6 +13,7 @@ use mbtool::settings::Settings;
 use mbtool_core::codec::framing::split_glued;
 use mbtool_core::codec::{limits, Direction, Mode};
 use mbtool_core::describe::{describe_frame, pair_answer, request_made, Asked, FrameReport};
+use mbtool_core::model::hexdump::dump_line;
 use mbtool_core::model::hexinput::{read_line, HexError};
 
 /// Longer lines cannot be a frame: even spaced hex of the longest ASCII frame is shorter.
@@ -31,15 +32,37 @@ struct Decoder {
     /// The request of the frame just shown: the frame after it may be its answer, and then
     /// reads with the request's addresses and quantity.
     asked: Option<Asked>,
+    /// The bytes of a hex dump (Wireshark, hexdump -C, xxd, od) so far: its lines make one
+    /// frame while each line's offset is the count of bytes before it.
+    dump: Option<Vec<u8>>,
 }
 
 impl Decoder {
     /// Decodes one line (or argument); `place` names it in error messages. `in_log`: a
     /// line of standard input, where a log's own messages are passed over.
     fn line(&mut self, text: &[u8], in_log: bool, place: impl Fn() -> String) -> io::Result<()> {
-        let frame = match read_line(text) {
-            Ok(Some(frame)) => frame,
-            Ok(None) => return Ok(()),
+        if let Some(line) = dump_line(text) {
+            let open = self.dump.as_ref().map(Vec::len);
+            match (open, line.offset) {
+                (_, 0) if !line.bytes.is_empty() => {
+                    self.end_dump()?;
+                    self.dump = Some(line.bytes);
+                    return Ok(());
+                }
+                (Some(len), offset) if offset == len as u64 => {
+                    match self.dump.as_mut() {
+                        Some(bytes) if !line.bytes.is_empty() => bytes.extend(line.bytes),
+                        // The dump's length, on its last line: it is whole.
+                        _ => self.end_dump()?,
+                    }
+                    return Ok(());
+                }
+                _ => {}
+            }
+        }
+        self.end_dump()?;
+        let frames = match read_line(text) {
+            Ok(frames) => frames,
             Err(HexError::Message) if in_log => {
                 self.messages += 1;
                 return Ok(());
@@ -50,12 +73,28 @@ impl Decoder {
                 return Ok(());
             }
         };
-        let direction = self.direction.or(frame.direction);
-        let mut report = describe_frame(&frame.bytes, self.mode, direction);
+        for frame in frames {
+            self.frame(&frame.bytes, frame.direction)?;
+        }
+        Ok(())
+    }
+
+    /// The frame of a dump, once its lines are read.
+    fn end_dump(&mut self) -> io::Result<()> {
+        match self.dump.take() {
+            Some(bytes) => self.frame(&bytes, None),
+            None => Ok(()),
+        }
+    }
+
+    /// A frame's bytes, with the way the log says it went.
+    fn frame(&mut self, bytes: &[u8], marked: Option<Direction>) -> io::Result<()> {
+        let direction = self.direction.or(marked);
+        let mut report = describe_frame(bytes, self.mode, direction);
         // A log's mark is the logger's point of view (Modbus Slave marks what it receives
         // Rx): where the bytes read only the other way, they decide.
-        if let (None, Some(marked), false) = (self.direction, frame.direction, report.valid) {
-            let other = describe_frame(&frame.bytes, self.mode, Some(marked.opposite()));
+        if let (None, Some(marked), false) = (self.direction, marked, report.valid) {
+            let other = describe_frame(bytes, self.mode, Some(marked.opposite()));
             if other.valid {
                 report = other;
             }
@@ -68,7 +107,7 @@ impl Decoder {
             };
             if let Some((mode, frames)) = modes
                 .into_iter()
-                .find_map(|mode| split_glued(mode, &frame.bytes).map(|frames| (mode, frames)))
+                .find_map(|mode| split_glued(mode, bytes).map(|frames| (mode, frames)))
             {
                 // A mark before the line tells the first frame's way; the others are read
                 // for what they are (the answer glued to its request, say).
@@ -79,7 +118,7 @@ impl Decoder {
                 return Ok(());
             }
         }
-        self.show(&frame.bytes, report)
+        self.show(bytes, report)
     }
 
     fn show(&mut self, bytes: &[u8], mut report: FrameReport) -> io::Result<()> {
@@ -159,9 +198,15 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
         unreadable: 0,
         messages: 0,
         asked: None,
+        dump: None,
     };
     if args.frames.is_empty() {
         let stdin = io::stdin();
+        if std::io::IsTerminal::is_terminal(&stdin) {
+            mbtool::note!(
+                "mbtool: decode reads frames from standard input, one a line (hex, a log, a hex dump); Ctrl-D ends, or give the frame: mbtool decode 11 03 00 6B 00 03 76 87"
+            );
+        }
         let mut lines = Lines::new(stdin.lock(), MAX_LINE);
         let mut line = Vec::with_capacity(MAX_LINE);
         let mut number = 0u64;
@@ -211,6 +256,7 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
             .into());
         }
     }
+    decoder.end_dump()?;
     decoder.out.flush()?;
     if decoder.messages > 0 {
         mbtool::note!(

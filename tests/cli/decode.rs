@@ -991,3 +991,61 @@ fn mbpoll_verbose_output_and_pymodbus_2_logs_pipe_into_decode() {
     assert_eq!(frames[1]["values"], serde_json::json!([555, 0, 100]));
     assert!(run.stderr.contains("9 lines passed over"), "{}", run.stderr);
 }
+
+/// Hex dumps as people paste them: the offsets and the characters are set aside, and the
+/// lines of one dump are one frame, however many lines it takes.
+#[test]
+fn hex_dumps_of_every_tool_are_their_frames() {
+    let request = "11 03 00 6B 00 03 76 87";
+    for dump in [
+        // Wireshark, Copy as Hex Dump.
+        "0000   11 03 00 6b 00 03 76 87                           ...k..v.\n",
+        // hexdump -C: the answer glued after the request, over two lines and its length.
+        "00000000  11 03 00 6b 00 03 76 87  11 03 06 02 2b 00 00 00  |...k..v.....+...|\n\
+         00000010  64 c8 ba                                          |d..|\n00000013\n",
+        // xxd.
+        "00000000: 1103 006b 0003 7687                      ...k..v.\n",
+        // od -A x -t x1.
+        "000000 11 03 00 6b 00 03 76 87\n000008\n",
+    ] {
+        let run = decode(&["--json"], dump.as_bytes());
+        assert_eq!(run.code, 0, "{dump}: {}", run.stderr);
+        let lines = json_lines(&run.stdout);
+        assert_eq!(lines[0]["ref"], "400108", "{dump}");
+        assert_eq!(lines[0]["valid"], true, "{dump}");
+        if dump.contains("00000013") {
+            assert_eq!(lines[1]["values"], serde_json::json!([555, 0, 100]));
+        }
+    }
+    // A log line holding a request and its answer is two frames.
+    let run = decode(
+        &["--json"],
+        format!("12:00:01 TX: {request} RX: 11 03 06 02 2B 00 00 00 64 C8 BA\n").as_bytes(),
+    );
+    assert_eq!(run.code, 0, "{}", run.stderr);
+    let kinds: Vec<_> = json_lines(&run.stdout)
+        .iter()
+        .map(|l| l["kind"].as_str().unwrap().to_string())
+        .collect();
+    assert_eq!(kinds, ["request", "response"]);
+}
+
+/// `decode` alone on a terminal says that it reads standard input and how to end it.
+#[test]
+fn decode_on_a_terminal_says_what_it_waits_for() {
+    let Some(terminal) = crate::support::Terminal::run("decode", 120, 10) else {
+        return;
+    };
+    let screen = terminal.wait_for(std::time::Duration::from_secs(10), |screen| {
+        screen.iter().any(|line| line.contains("Ctrl-D ends"))
+    });
+    assert!(
+        screen
+            .iter()
+            .any(|l| l.contains("decode reads frames from standard input")),
+        "{screen:?}"
+    );
+    terminal.keys(&["11 03 00 6B 00 03 76 87", "Enter", "C-d"]);
+    let screen = terminal.wait_for(std::time::Duration::from_secs(10), |_| terminal.done());
+    assert!(screen.iter().any(|l| l.contains("400108")), "{screen:?}");
+}

@@ -452,16 +452,40 @@ proptest! {
         let direction = direction.or((spelling == 2).then_some(Direction::Request));
         let text = format!("2026-11-23 08:15:02.125 {word} {spelled}  CRC ok  # from the panel");
         let frame = read_line(text.as_bytes()).map_err(|e| TestCaseError::fail(format!("{text}: {e}")))?;
-        let frame = frame.ok_or_else(|| TestCaseError::fail(text.clone()))?;
+        prop_assert_eq!(frame.len(), 1, "{}", text);
+        let frame = frame.into_iter().next().ok_or_else(|| TestCaseError::fail(text.clone()))?;
         prop_assert_eq!(frame.bytes, bytes, "{}", text);
         prop_assert_eq!(frame.direction, direction);
     }
 
     #[test]
     fn arbitrary_text_never_panics(text in ".{0,300}") {
-        if let Ok(Some(frame)) = read_line(text.as_bytes()) {
+        for frame in read_line(text.as_bytes()).unwrap_or_default() {
             let _ = describe_frame(&frame.bytes, None, frame.direction);
         }
+        let _ = mbtool_core::model::hexdump::dump_line(text.as_bytes());
+    }
+
+    /// A frame dumped as each tool dumps it reads back, line by line, the offsets counting.
+    #[test]
+    fn a_dump_reads_back_as_its_bytes(bytes in vec(any::<u8>(), 1..100), tool in 0..4usize) {
+        let mut read = Vec::new();
+        for (i, line) in bytes.chunks(16).enumerate() {
+            let hex: Vec<String> = line.iter().map(|b| format!("{b:02x}")).collect();
+            let chars: String = line.iter().map(|b| if b.is_ascii_graphic() { *b as char } else { '.' }).collect();
+            let offset = i * 16;
+            let text = match tool {
+                0 => format!("{offset:04x}   {:<47}   {chars}", hex.join(" ")),
+                1 => format!("{offset:08x}  {:<48} |{chars}|", hex.join(" ")),
+                2 => format!("{offset:08x}: {:<39}  {chars}", hex.chunks(2).map(|p| p.concat()).collect::<Vec<_>>().join(" ")),
+                _ => format!("{offset:06x} {}", hex.join(" ")),
+            };
+            let line = mbtool_core::model::hexdump::dump_line(text.as_bytes())
+                .ok_or_else(|| TestCaseError::fail(text.clone()))?;
+            prop_assert_eq!(line.offset, offset as u64, "{}", text);
+            read.extend(line.bytes);
+        }
+        prop_assert_eq!(read, bytes);
     }
 }
 

@@ -151,6 +151,8 @@ struct Run {
     bytes: Vec<u8>,
     spelling: Option<Spelling>,
     direction: Option<Direction>,
+    /// Its direction was named by a word (`TX`, `RX`), not a symbol.
+    named: bool,
     ascii: bool,
 }
 
@@ -260,39 +262,40 @@ fn ascii_frames(word: &[u8]) -> Option<Vec<u8>> {
 /// given, and one that starts with ':' an ASCII frame. On any other line the frame is the
 /// longest run of hex bytes (or an ASCII frame), and what stands around it, a time stamp,
 /// `CRC ok`, a `#` comment, is set aside; a direction mark before it says which way it
-/// went. `Ok(None)`: a blank line, or a comment (`#` first).
-pub fn read_line(line: &[u8]) -> Result<Option<LineFrame>, HexError> {
+/// went; a line with a frame after each of two marks of different ways (`TX: ... RX: ...`)
+/// holds both. Empty: a blank line, or a comment (`#` first).
+pub fn read_line(line: &[u8]) -> Result<Vec<LineFrame>, HexError> {
     let line = line.trim_ascii();
     if line.is_empty() || line.starts_with(b"#") {
-        return Ok(None);
+        return Ok(Vec::new());
     }
     let before_comment = line
         .split(|b| *b == b'#')
         .next()
         .unwrap_or_default()
         .trim_ascii();
-    match frame_of(before_comment) {
+    match frames_of(before_comment) {
         // A '#' that did not start a comment (`frame #1: 11 03 ...`).
-        Err(_) if before_comment.len() < line.len() => frame_of(line).map(Some),
-        found => found.map(Some),
+        Err(_) if before_comment.len() < line.len() => frames_of(line),
+        found => found,
     }
 }
 
-/// The frame of a line without its comment.
-fn frame_of(line: &[u8]) -> Result<LineFrame, HexError> {
+/// The frames of a line without its comment.
+fn frames_of(line: &[u8]) -> Result<Vec<LineFrame>, HexError> {
     if line.starts_with(b":") {
-        return Ok(LineFrame {
+        return Ok(vec![LineFrame {
             bytes: ascii_frames(line).unwrap_or_else(|| line.to_vec()),
             direction: None,
-        });
+        }]);
     }
     let mut strict = Vec::new();
     let strict_error = match parse_hex(line, &mut strict) {
         Ok(()) => {
-            return Ok(LineFrame {
+            return Ok(vec![LineFrame {
                 bytes: strict,
                 direction: None,
-            })
+            }])
         }
         Err(error) => error,
     };
@@ -301,7 +304,17 @@ fn frame_of(line: &[u8]) -> Result<LineFrame, HexError> {
     if contains_ignoring_case(line, b"getting frame") {
         return Err(HexError::Message);
     }
-    let run = longest_run(line);
+    let mut runs = frames_of_line(line);
+    if runs.len() > 1 {
+        return Ok(runs
+            .into_iter()
+            .map(|run| LineFrame {
+                bytes: run.bytes,
+                direction: run.direction,
+            })
+            .collect());
+    }
+    let run = runs.pop();
     let frame = run
         .as_ref()
         .is_some_and(|run| run.ascii || run.bytes.len() >= SHORTEST_FRAME);
@@ -314,10 +327,10 @@ fn frame_of(line: &[u8]) -> Result<LineFrame, HexError> {
         return Err(strict_error);
     }
     match run {
-        Some(run) if frame => Ok(LineFrame {
+        Some(run) if frame => Ok(vec![LineFrame {
             bytes: run.bytes,
             direction: run.direction,
-        }),
+        }]),
         Some(run) => Err(HexError::TooShort(crate::describe::spaced_hex(&run.bytes))),
         None => Err(strict_error),
     }
@@ -370,19 +383,41 @@ fn mistyped_byte(word: &[u8]) -> bool {
         && !word.iter().all(u8::is_ascii_hexdigit)
 }
 
-/// The longest run of hex bytes on a log line, or its ASCII frame, with the direction
+/// The frames of a log line: the longest run of hex bytes (or its ASCII frame), or, where
+/// the line holds a frame after each of two direction marks of different ways (`TX: ...
+/// RX: ...`), each of them.
+fn frames_of_line(line: &[u8]) -> Vec<Run> {
+    let mut runs = runs(line);
+    let marked: Vec<usize> = (0..runs.len())
+        .filter(|i| runs[*i].named && (runs[*i].ascii || runs[*i].bytes.len() >= SHORTEST_FRAME))
+        .collect();
+    let ways = |i: &usize| runs[*i].direction;
+    if marked.len() >= 2 && marked.iter().any(|i| ways(i) != ways(&marked[0])) {
+        let mut kept = Vec::new();
+        for i in marked.into_iter().rev() {
+            kept.push(runs.swap_remove(i));
+        }
+        kept.reverse();
+        return kept;
+    }
+    // The first of the longest.
+    let longest = runs.iter().map(|run| run.bytes.len()).max().unwrap_or(0);
+    runs.into_iter()
+        .find(|run| run.bytes.len() == longest)
+        .into_iter()
+        .collect()
+}
+
+/// Every run of hex bytes on a log line, and its ASCII frames, each with the direction
 /// mark last seen before it.
-fn longest_run(line: &[u8]) -> Option<Run> {
-    let mut best: Option<Run> = None;
+fn runs(line: &[u8]) -> Vec<Run> {
+    let mut best: Vec<Run> = Vec::new();
     let mut run = Run::default();
     let mut mark: Option<(Direction, bool)> = None;
-    let keep = |run: &mut Run, best: &mut Option<Run>| {
+    let keep = |run: &mut Run, best: &mut Vec<Run>| {
         let run = std::mem::take(run);
-        let longer = best
-            .as_ref()
-            .is_none_or(|b| run.bytes.len() > b.bytes.len());
-        if !run.bytes.is_empty() && longer {
-            *best = Some(run);
+        if !run.bytes.is_empty() {
+            best.push(run);
         }
     };
     for word in line
@@ -404,6 +439,7 @@ fn longest_run(line: &[u8]) -> Option<Run> {
                 bytes,
                 spelling: None,
                 direction: mark.map(|(direction, _)| direction),
+                named: mark.is_some_and(|(_, named)| named),
                 ascii: true,
             };
             keep(&mut run, &mut best);
@@ -433,6 +469,7 @@ fn longest_run(line: &[u8]) -> Option<Run> {
                         run.direction = mark
                             .map(|(direction, _)| direction)
                             .or(bracket_direction.filter(|_| spelling == Spelling::Bracketed));
+                        run.named = mark.is_some_and(|(_, named)| named);
                     }
                     run.spelling = Some(spelling);
                     run.bytes.extend_from_slice(&bytes);
@@ -475,8 +512,39 @@ mod tests {
     }
     const REQUEST: [u8; 8] = [0x11, 0x03, 0x00, 0x6B, 0x00, 0x03, 0x76, 0x87];
 
+    /// The one frame of a line.
     fn line(text: &str) -> Result<Option<LineFrame>, HexError> {
-        read_line(text.as_bytes())
+        read_line(text.as_bytes()).map(|frames| {
+            assert!(frames.len() <= 1, "{text}: {frames:?}");
+            frames.into_iter().next()
+        })
+    }
+
+    #[test]
+    fn a_request_and_its_answer_on_one_line_are_two_frames() {
+        let answer = [
+            0x11, 0x03, 0x06, 0x02, 0x2B, 0x00, 0x00, 0x00, 0x64, 0xC8, 0xBA,
+        ];
+        for text in [
+            "12:00:01.123 TX: 11 03 00 6B 00 03 76 87 RX: 11 03 06 02 2B 00 00 00 64 C8 BA",
+            "[TX] 1103006B00037687 [RX] 1103 0602 2B00 0000 64C8 BA",
+        ] {
+            let frames = read_line(text.as_bytes()).unwrap();
+            assert_eq!(
+                frames,
+                [
+                    LineFrame {
+                        bytes: REQUEST.to_vec(),
+                        direction: Some(Direction::Request)
+                    },
+                    LineFrame {
+                        bytes: answer.to_vec(),
+                        direction: Some(Direction::Response)
+                    }
+                ],
+                "{text}"
+            );
+        }
     }
 
     fn frame(bytes: &[u8], direction: Option<Direction>) -> Result<Option<LineFrame>, HexError> {

@@ -5,6 +5,7 @@ pub mod address;
 pub mod choice;
 pub mod duration;
 pub mod faults;
+pub mod hexdump;
 pub mod hexinput;
 pub mod home_assistant;
 pub mod map;
