@@ -26,21 +26,54 @@ pub fn mbpoll_habit(typed: &str, args: &[String]) -> Option<String> {
     let mut message = format!("{option} is mbpoll's {what}: {here}");
     if let Some(command) = equivalent(args) {
         message.push_str(&format!("; the line given is {command}"));
+    } else if let Some((table, shown)) = (*option == "-t")
+        .then(|| value_of(args, "-t"))
+        .flatten()
+        .and_then(|t| mbpoll_type(&t))
+    {
+        message.push_str(&format!("; -t {table}:... is {shown} here"));
     }
     Some(message)
 }
 
+/// What mbpoll's `-t 4:float` reads, as mbtool says it: its table and `--type`.
+fn mbpoll_type(value: &str) -> Option<(String, String)> {
+    let (table, kind) = value.split_once(':').unwrap_or((value, ""));
+    let command = match table {
+        "0" => "read-coils",
+        "1" => "read-inputs",
+        "3" => "read-input-registers",
+        "4" => "read-holding",
+        _ => return None,
+    };
+    // mbpoll's int and float are 32 bits; its hex one register.
+    let shown = match kind {
+        "" => String::new(),
+        "int" => " --type i32".into(),
+        "float" => " --type f32".into(),
+        "hex" => " --type hex".into(),
+        _ => return None,
+    };
+    Some((
+        table.to_string(),
+        format!("{command} SLAVE REFERENCE COUNT{shown}"),
+    ))
+}
+
+/// The value typed after `name`, or glued to it (`-t4:float`).
+fn value_of(args: &[String], name: &str) -> Option<String> {
+    args.iter()
+        .enumerate()
+        .find_map(|(i, word)| match word.strip_prefix(name) {
+            Some("") => args.get(i + 1).cloned(),
+            Some(glued) if !glued.starts_with('-') => Some(glued.to_string()),
+            _ => None,
+        })
+}
+
 /// `mbtool read-holding 17 400001 2` for `-a 17 -r 1 -c 2`, when `-a` is there.
 fn equivalent(args: &[String]) -> Option<String> {
-    let value = |name: &str| {
-        args.iter()
-            .enumerate()
-            .find_map(|(i, word)| match word.strip_prefix(name) {
-                Some("") => args.get(i + 1).cloned(),
-                Some(glued) if !glued.starts_with('-') => Some(glued.to_string()),
-                _ => None,
-            })
-    };
+    let value = |name: &str| value_of(args, name);
     let slave = value("-a")?;
     // mbpoll's -r counts from 1, or from 0 after -0.
     let zero_based = args.iter().any(|word| word == "-0");
@@ -93,5 +126,10 @@ mod tests {
             Some("mbtool read-holding 17 400108 3")
         );
         assert_eq!(mbpoll_habit("-x", &words("mbtool -x")), None);
+        assert!(
+            mbpoll_habit("-t", &words("mbtool read-holding 1 400001 -t 4:float"))
+                .is_some_and(|m| m
+                    .ends_with("; -t 4:... is read-holding SLAVE REFERENCE COUNT --type f32 here"))
+        );
     }
 }

@@ -217,9 +217,12 @@ pub fn resolve(
     let c = &cli.common.connection;
     let given = |id: &str| origins.given(id);
     let (direction, direction_typed) = direction(cli, origins)?;
-    // scan asks many ids that are not there: its timeout is short.
+    // scan asks many ids that are not there: its timeout is short. A gateway answers 0B
+    // for a device that is silent before its client's own timeout (mbpoll's and most
+    // masters' is 1 s) runs out.
     let default_timeout = match cli.command {
         Command::Scan(_) => Duration::from_millis(100),
+        Command::Gateway(_) => Duration::from_millis(800),
         _ => Duration::from_secs(1),
     };
     let format = match (&cli.common.output.output, cli.common.output.json) {

@@ -18,7 +18,8 @@ Requests go out one at a time, each client's in the order it sent them, the clie
 in turn: a client that pipelines a thousand requests delays another's single request by \
 one transaction at most. Each is sent as the master commands send it: the gap between \
 frames kept, stale bytes thrown away, the answer checked against the request (slave, \
-function, length, CRC), --timeout and --retries per transaction. After a timeout the line \
+function, length, CRC), --timeout (0.8 s unless given: a client that waits 1 s, as \
+mbpoll does, gets its 0B) and --retries per transaction. After a timeout the line \
 is brought back in step before a request that a late answer could pass for (a diagnostic \
 echo, 08/00, with a fresh value): a client never gets another request's answer. A request \
 that may do more when sent twice (22, 23, 21, a user function) is sent once unless \

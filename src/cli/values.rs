@@ -44,7 +44,7 @@ pub(super) fn choice<T: Choice + Clone + Send + Sync>(
 ) -> impl clap::builder::TypedValueParser<Value = T> {
     use clap::builder::{PossibleValue, PossibleValuesParser, TypedValueParser};
     PossibleValuesParser::new(T::ALL.iter().map(|choice| {
-        let value = PossibleValue::new(choice.name());
+        let value = PossibleValue::new(choice.name()).aliases(choice.aliases().iter().copied());
         match choice.help() {
             Some(help) => value.help(help),
             None => value,

@@ -204,8 +204,10 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
             }
         })?;
     }
+    // The line as it was opened: a client's timeouts are often a wrong baud or parity.
+    let (serial_line, _) = connection::tried(&settings.connection, &endpoint, mode);
     mbtool::note!(
-        "mbtool: gateway on {} to {endpoint} ({mode}); Ctrl-C ends",
+        "mbtool: gateway on {} to the line {serial_line}; Ctrl-C ends",
         addresses.join(", ")
     );
     line.open(&report);

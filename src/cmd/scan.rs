@@ -127,6 +127,13 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
             if late.len() == 1 { "it" } else { "them" },
         );
     }
+    if let Some(took) = report.waited_longer {
+        mbtool::note!(
+            "mbtool: answers came after the timeout, the slowest after {} ms (a gateway waiting for unit ids it lacks): the scan waited as long from then on; give --timeout {}ms to wait so from the start",
+            took.as_millis(),
+            (took + took / 2).as_millis()
+        );
+    }
     if let Some(first) = report.reconnected.first() {
         mbtool::note!(
             "mbtool: the device closed the connection after unit id {first} ({} times in all), and it was opened again",

@@ -920,3 +920,64 @@ fn a_first_request_whose_transaction_id_reads_as_a_tls_record_is_answered() {
     let (_, _, messages) = gateway.stop();
     assert!(!messages.contains("speaks TLS"), "{messages}");
 }
+
+/// `scan` through a gateway that waits longer for an id it lacks than the scan does: the
+/// device behind it is found, and the scan says it waited as long as the gateway; mbpoll,
+/// waiting its own 1 s, gets the gateway's 0B for a silent id; the start line says the
+/// line's settings.
+#[test]
+fn a_scan_through_a_slow_gateway_finds_the_device_behind_it() {
+    let Some(pair) = PtyPair::new() else { return };
+    let (_slave, gateway) = gateway_to_serve(&pair, &["--slave", "17", "--slave", "5"], &["-q"]);
+    assert!(
+        gateway.messages().contains(" to the line on ") && gateway.messages().contains(" baud, "),
+        "{}",
+        gateway.messages()
+    );
+    let output = crate::support::mbtool()
+        .args(gateway.master())
+        .args(["scan", "--ids", "1-6", "-o", "json"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(0), "{stderr}");
+    let found: Vec<u64> = String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .filter_map(|line| serde_json::from_str::<serde_json::Value>(line).ok()?["slave"].as_u64())
+        .collect();
+    assert_eq!(found, [5], "{stderr}");
+    assert!(
+        stderr.contains("answers came after the timeout"),
+        "{stderr}"
+    );
+    if peer_available("mbpoll", command_exists("mbpoll")) {
+        let port = gateway.port.to_string();
+        let output = Process::new("mbpoll")
+            .args([
+                "-m",
+                "tcp",
+                "-p",
+                &port,
+                "-a",
+                "9",
+                "-r",
+                "1",
+                "-c",
+                "1",
+                "-1",
+                "127.0.0.1",
+            ])
+            .output()
+            .unwrap();
+        let said = format!(
+            "{}{}",
+            String::from_utf8_lossy(&output.stdout),
+            String::from_utf8_lossy(&output.stderr)
+        );
+        assert!(
+            said.to_ascii_lowercase()
+                .contains("target device failed to respond"),
+            "{said}"
+        );
+    }
+}

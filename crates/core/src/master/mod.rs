@@ -187,7 +187,29 @@ pub struct Master {
     /// The requests that change the device and were sent more than once, for the
     /// command to tell.
     resent: Vec<run::Resent>,
+    /// Over TCP, the latest transactions sent and when: an answer that comes after its
+    /// request timed out is told with how long it took.
+    sent: std::collections::VecDeque<(u16, Instant)>,
+    /// The last transaction ended on its timeout with nothing else received: over TCP its
+    /// answer may still come, whole, and is heard rather than thrown away.
+    timed_out: bool,
+    /// Answers heard after their request timed out, over TCP, not yet taken.
+    late: Vec<LateAnswer>,
 }
+
+/// An answer that came over TCP after its request had timed out.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LateAnswer {
+    /// The unit id that answered.
+    pub slave: u8,
+    /// A device answered (a response, or an exception other than a gateway's 0A or 0B).
+    pub present: bool,
+    /// How long after its request it came.
+    pub after: Duration,
+}
+
+/// How many transactions sent are remembered for [`LateAnswer::after`].
+const TRANSACTIONS_REMEMBERED: usize = 64;
 
 /// What the bytes received so far came to.
 #[derive(Default)]
@@ -220,7 +242,15 @@ impl Master {
             stop: None,
             owed: step::Owed::default(),
             resent: Vec::new(),
+            sent: std::collections::VecDeque::new(),
+            timed_out: false,
+            late: Vec::new(),
         }
+    }
+
+    /// The answers heard over TCP after their request had timed out, since last asked.
+    pub fn take_late_answers(&mut self) -> Vec<LateAnswer> {
+        std::mem::take(&mut self.late)
     }
 
     /// Ends a wait for an answer as soon as `stop` is set, with
@@ -325,7 +355,12 @@ impl Master {
                 let frame = Frame::decode(mode, &found.bytes, Direction::Response);
                 if let (true, Ok(frame)) = (answer, frame) {
                     self.owed.pay_off(frame.slave, &frame.pdu);
-                    if !heard.contains(&frame.slave) {
+                    // Over TCP, a gateway's word that it has no such device is no one heard.
+                    let present = match mode {
+                        Mode::Tcp => self.heard_late(&frame),
+                        _ => true,
+                    };
+                    if present && !heard.contains(&frame.slave) {
                         heard.push(frame.slave);
                     }
                 }
@@ -430,13 +465,22 @@ impl Master {
             }
         }
         // On a serial line noise can arrive at any time; over TCP a late answer can only
-        // follow a transaction that failed (and would be told by its transaction id).
-        if self.transport.is_serial_line() || !self.in_step {
+        // follow a transaction that failed (and would be told by its transaction id):
+        // after a plain timeout it is whole and heard, after anything else thrown away.
+        let tcp_late_whole = self.options.mode == Mode::Tcp && self.timed_out;
+        if self.transport.is_serial_line() || (!self.in_step && !tcp_late_whole) {
             self.transport.discard_input()?;
             self.framer.clear();
         }
         self.in_step = false;
+        self.timed_out = false;
         self.transaction = self.transaction.wrapping_add(1);
+        if self.options.mode == Mode::Tcp {
+            if self.sent.len() == TRANSACTIONS_REMEMBERED {
+                self.sent.pop_front();
+            }
+            self.sent.push_back((self.transaction, Instant::now()));
+        }
         let frame = Frame {
             mode: self.options.mode,
             slave,
@@ -462,6 +506,31 @@ impl Master {
                 reason: BadAnswer::Request,
             }),
         }
+    }
+
+    /// A frame over TCP with an earlier transaction id: an answer that came after its
+    /// request timed out. Whether a device answered it (not a gateway's 0A or 0B).
+    fn heard_late(&mut self, frame: &Frame) -> bool {
+        let gateway_has_none = matches!(
+            &frame.pdu,
+            Pdu::Exception(e) if matches!(
+                e.code,
+                crate::codec::ExceptionCode::GATEWAY_PATH_UNAVAILABLE
+                    | crate::codec::ExceptionCode::GATEWAY_TARGET_FAILED
+            )
+        );
+        if let Some((_, sent)) = self
+            .sent
+            .iter()
+            .find(|(transaction, _)| *transaction == frame.transaction)
+        {
+            self.late.push(LateAnswer {
+                slave: frame.slave,
+                present: !gateway_has_none,
+                after: sent.elapsed(),
+            });
+        }
+        !gateway_has_none
     }
 
     /// Whether a whole, valid frame is the answer to this request.
@@ -494,7 +563,10 @@ impl Master {
                     match Frame::decode(self.options.mode, &found.bytes, Direction::Response) {
                         Ok(frame) => match self.belongs(&frame, slave, request) {
                             Ok(()) => heard.answer = Some(frame.pdu),
-                            Err(None) => heard.stale_bytes += found.bytes.len(),
+                            Err(None) => {
+                                heard.stale_bytes += found.bytes.len();
+                                self.heard_late(&frame);
+                            }
                             Err(Some(reason)) => {
                                 // A late answer the slave asked owed is no fault of this
                                 // request; another slave's is still told (a scan learns
@@ -626,10 +698,13 @@ impl Master {
                             },
                         }
                     }
-                    None => MasterError::Timeout {
-                        slave,
-                        timeout: self.options.timeout,
-                    },
+                    None => {
+                        self.timed_out = unexplained == 0;
+                        MasterError::Timeout {
+                            slave,
+                            timeout: self.options.timeout,
+                        }
+                    }
                 })
             }
         }

@@ -6,7 +6,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
 use super::{BadAnswer, Master, MasterError, Reply};
-use crate::codec::{ExceptionCode, Request};
+use crate::codec::{ExceptionCode, Mode, Request};
 use crate::transport::serial::Parity;
 
 /// What each id is asked.
@@ -106,6 +106,10 @@ pub struct ScanReport {
     pub reconnected: Vec<u8>,
     /// Why the scan stopped before its end, when it did: what it found so far stands.
     pub interrupted: Option<String>,
+    /// Over TCP, answers came after the timeout (a gateway that waits longer for a unit id
+    /// it lacks than the scan did): the longest they took. From then on the scan waited as
+    /// long, so that no answer passed it by.
+    pub waited_longer: Option<Duration>,
 }
 
 /// What the scan is doing, for a progress display.
@@ -131,6 +135,11 @@ enum Outcome {
 /// How many times an id is asked again when its answer was lost: garbled, or crowded out
 /// by another slave's late answer.
 const ASK_AGAIN: usize = 2;
+
+/// How long the first id that times out over TCP is given when asked again: a gateway
+/// waits this long or less for a unit id behind it that does not answer (mbusd and
+/// mbtool's gateway 1 s, most others less).
+const GATEWAY_PATIENCE: Duration = Duration::from_secs(3);
 
 /// How long a slave heard answering late is given when it is asked again: ten timeouts,
 /// and a second at least.
@@ -252,6 +261,7 @@ where
         let probing = report.hits.len() == found_before;
         // Whether the last id asked was silent: its answer may still be on its way.
         let mut last_silent = false;
+        let mut gateway_asked = false;
         for slave in options.ids.iter().filter(|_| probing) {
             if stop.load(Ordering::SeqCst) {
                 report.stopped = true;
@@ -278,6 +288,40 @@ where
                 Err(error) => return Err(error.into()),
                 Ok(outcome) => outcome,
             };
+            // Over TCP, the first id that times out is asked once more with the patience
+            // of a gateway, which may wait longer for a unit id it lacks than the scan
+            // does: its answer, or its 0B, tells how long it takes.
+            let outcome = match outcome {
+                Outcome::Absent
+                    if master.options.mode == Mode::Tcp && master.timed_out && !gateway_asked =>
+                {
+                    gateway_asked = true;
+                    report.requests += 1;
+                    let timeout = master.timeout();
+                    master.set_timeout(timeout.max(GATEWAY_PATIENCE));
+                    let again = probe(&mut master, *slave, &request);
+                    master.set_timeout(timeout);
+                    match again {
+                        Ok(outcome) => outcome,
+                        Err(MasterError::Io(_)) => Outcome::Absent,
+                        Err(error) => return Err(error.into()),
+                    }
+                }
+                outcome => outcome,
+            };
+            // Over TCP an answer after the timeout is told by its transaction id: its id
+            // is there when a device answered it, and the scan waits as long as it took
+            // from then on (half as long again), as the gateway does.
+            for answer in master.take_late_answers() {
+                if answer.present {
+                    late.push(answer.slave);
+                }
+                report.waited_longer = report.waited_longer.max(Some(answer.after));
+                let needed = answer.after + answer.after / 2;
+                if needed > master.timeout() {
+                    master.set_timeout(needed);
+                }
+            }
             last_silent = matches!(outcome, Outcome::Absent | Outcome::Other(_));
             match outcome {
                 Outcome::Present(answer) => {

@@ -15,11 +15,19 @@ pub trait Choice: Copy + Sized + 'static {
         None
     }
 
+    /// Other tools' names for it (`float` for `f32`), taken as well.
+    fn aliases(self) -> &'static [&'static str] {
+        &[]
+    }
+
     /// The choice a name stands for, in any case.
     fn from_name(name: &str) -> Option<Self> {
-        Self::ALL
-            .iter()
-            .copied()
-            .find(|choice| choice.name().eq_ignore_ascii_case(name))
+        Self::ALL.iter().copied().find(|choice| {
+            choice.name().eq_ignore_ascii_case(name)
+                || choice
+                    .aliases()
+                    .iter()
+                    .any(|alias| alias.eq_ignore_ascii_case(name))
+        })
     }
 }

@@ -80,6 +80,23 @@ impl Choice for ValueType {
             ValueType::Ascii => "ascii",
         }
     }
+
+    /// The names of other tools: Home Assistant's and pymodbus's (`float32`, `int16`), the
+    /// IEC 61131 types of PLCs (`REAL`, `DINT`, `WORD`), C's and mbpoll's (`float`, `int`).
+    fn aliases(self) -> &'static [&'static str] {
+        match self {
+            ValueType::U16 => &["uint16", "uint", "word", "ushort", "unsigned"],
+            ValueType::I16 => &["int16", "int", "short", "signed"],
+            ValueType::U32 => &["uint32", "dword", "udint", "ulong"],
+            ValueType::I32 => &["int32", "dint", "long"],
+            ValueType::F32 => &["float32", "float", "real", "single"],
+            ValueType::U64 => &["uint64", "ulint"],
+            ValueType::I64 => &["int64", "lint"],
+            ValueType::F64 => &["float64", "double", "lreal"],
+            ValueType::Ascii => &["string", "text"],
+            ValueType::Hex | ValueType::Bin => &[],
+        }
+    }
 }
 
 impl Choice for ByteOrder {
