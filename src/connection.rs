@@ -502,7 +502,7 @@ pub fn tried_on(
 /// ports that are (`/dev/ttyUSB0, /dev/ttyS0`), or that there is none.
 fn with_ports_here(path: &str, error: io::Error) -> io::Error {
     if std::path::Path::new(path).exists() {
-        return error;
+        return with_holders(path, error);
     }
     let mut ports: Vec<String> = mbtool_core::transport::serial::ports_here();
     ports.retain(|port| port != path);
@@ -511,6 +511,29 @@ fn with_ports_here(path: &str, error: io::Error) -> io::Error {
         ports => format!("the serial ports here are {}", ports.join(", ")),
     };
     io::Error::new(error.kind(), format!("{error} ({here})"))
+}
+
+/// A port that another process has open is named with the process, so that it can be
+/// closed (a terminal program, a forgotten `mbtool watch`, ModemManager).
+fn with_holders(path: &str, error: io::Error) -> io::Error {
+    let holders = mbtool_core::transport::ports::holders_of(std::path::Path::new("/"), path);
+    if holders.is_empty() {
+        return error;
+    }
+    let named: Vec<String> = holders
+        .iter()
+        .map(|holder| match &holder.command {
+            Some(command) => format!("{command} (pid {})", holder.pid),
+            None => format!("pid {}", holder.pid),
+        })
+        .collect();
+    io::Error::new(
+        error.kind(),
+        format!(
+            "{error}: {path} is open in {}; close it there first",
+            named.join(", ")
+        ),
+    )
 }
 
 /// The connection settings with what a map's file says of its device (a Home Assistant

@@ -295,3 +295,26 @@ fn a_port_this_test_holds_open_is_busy_with_its_pid() {
         "{row}"
     );
 }
+
+/// A port another process holds is refused with that process named, so that it can be
+/// closed: here `mbtool serve`, on one end of a pseudo-terminal pair.
+#[test]
+fn a_busy_port_names_the_process_that_holds_it() {
+    let Some(pair) = crate::support::PtyPair::new() else {
+        return;
+    };
+    let (server, _) = crate::support::serve_pty(&pair, &[]);
+    let held = pair.a.display().to_string();
+    let output = mbtool()
+        .args(["--port", &held, "read-holding", "17", "400108"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains(&format!("mbtool (pid {})", server.0.id()))
+            && stderr.ends_with("close it there first\n"),
+        "{stderr}"
+    );
+    assert_eq!(stderr.lines().count(), 1);
+}

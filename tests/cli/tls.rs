@@ -14,8 +14,8 @@ use rcgen::{
 };
 
 use crate::support::{
-    free_port, mbtool, mbtool_process, peer_available, python_has, wait_for_listener,
-    writes_read_back, Stopped,
+    command_exists, free_port, mbtool, mbtool_process, peer_available, python_has,
+    wait_for_listener, writes_read_back, Stopped,
 };
 
 /// The role extension of MB/TCP Security.
@@ -55,6 +55,8 @@ impl Pki {
             always,
         );
         pki.leaf(&ca, "plc", "plc.example", &["plc.example"], None, always);
+        // A device's certificate from before subjectAltName: its name in the CN alone.
+        pki.leaf(&ca, "cn-only", "localhost", &[], None, always);
         // A role that would forge a line in a log.
         let forged = Some("op\u{1b}[31m\nfake line");
         pki.leaf(&ca, "forger", "forger", &[], forged, always);
@@ -383,6 +385,10 @@ fn every_failure_is_one_line_saying_what_to_do() {
         (
             "plc",
             "the device's certificate is not for 'localhost' but for plc.example",
+        ),
+        (
+            "cn-only",
+            "the device's certificate has no subjectAltName: its name 'localhost' is only in its subject CN",
         ),
     ] {
         let (_server, port, _) = serve_tls(&pki, server, &[]);
@@ -1065,4 +1071,30 @@ fn a_flood_of_unfinished_handshakes_does_not_lock_out_a_certificate_holder() {
         );
         assert!(logged.contains("more clients refused"), "{logged}");
     }
+}
+
+/// A client that speaks TLS 1.1 is told in the server's log as what it is, not by the
+/// name of the TLS extension its hello lacks.
+#[test]
+fn a_client_of_an_older_tls_is_told_so() {
+    if !peer_available("openssl", command_exists("openssl")) {
+        return;
+    }
+    let pki = Pki::new();
+    let (_server, port, log) =
+        serve_tls(&pki, "server", &["--role", "x=read", "--default-role", "x"]);
+    let _ = std::process::Command::new("openssl")
+        .args(["s_client", "-connect", &format!("127.0.0.1:{port}")])
+        .args(["-tls1_1", "-cipher", "DEFAULT@SECLEVEL=0"])
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .stderr(Stdio::null())
+        .status()
+        .unwrap();
+    let said = "refused: it speaks a TLS older than 1.2";
+    assert!(
+        logged_once(&log, &[said]).contains(said),
+        "{}",
+        std::fs::read_to_string(&log).unwrap()
+    );
 }

@@ -59,6 +59,27 @@ pub fn list(root: &Path) -> Vec<PortInfo> {
     ports
 }
 
+/// The processes that have the serial port at `path` open (a link such as
+/// `/dev/serial/by-id/...` followed to its device), as far as this user may see.
+#[cfg(target_os = "linux")]
+pub fn holders_of(root: &Path, path: &str) -> Vec<Holder> {
+    let device = std::fs::canonicalize(path)
+        .ok()
+        .and_then(|device| device.to_str().map(str::to_string))
+        .unwrap_or_else(|| path.to_string());
+    holders(root)
+        .into_iter()
+        .filter(|(_, held)| *held == device)
+        .map(|(holder, _)| holder)
+        .collect()
+}
+
+/// The processes that have a port open, where the system does not tell.
+#[cfg(not(target_os = "linux"))]
+pub fn holders_of(_root: &Path, _path: &str) -> Vec<Holder> {
+    Vec::new()
+}
+
 /// The device names of the serial ports under `root`, as [`list`] orders them, without
 /// the look through every process that finds who holds them.
 #[cfg(target_os = "linux")]
@@ -166,7 +187,7 @@ fn holders(root: &Path) -> Vec<(Holder, String)> {
             .flatten()
             .filter_map(|fd| std::fs::read_link(fd.path()).ok())
             .filter_map(|target| target.to_str().map(str::to_string))
-            .filter(|target| target.starts_with("/dev/tty"))
+            .filter(|target| target.starts_with("/dev/tty") || target.starts_with("/dev/pts/"))
             .collect();
         devices.sort();
         devices.dedup();

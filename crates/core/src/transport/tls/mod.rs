@@ -22,6 +22,7 @@ use super::{
 };
 
 mod files;
+mod names;
 mod refusals;
 
 pub use files::certificate_role;
@@ -148,10 +149,13 @@ impl ClientTls {
             "tls:// needs --ca FILE, the CA certificates that sign the device's certificate",
         ))?;
         let roots = root_store(&ca)?;
+        let verifier = names::NamingVerifier::new(roots, provider())
+            .map_err(|e| TlsError::Handshake(e.to_string()))?;
         let builder = ClientConfig::builder_with_provider(provider())
             .with_protocol_versions(rustls::DEFAULT_VERSIONS)
             .map_err(|e| TlsError::Handshake(e.to_string()))?
-            .with_root_certificates(roots);
+            .dangerous()
+            .with_custom_certificate_verifier(Arc::new(verifier));
         let (config, role) = match (&files.cert, &files.key) {
             (Some(cert), Some(key)) => {
                 let chain = certificates(cert)?;

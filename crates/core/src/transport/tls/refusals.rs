@@ -5,6 +5,7 @@ use std::io;
 
 use rustls::{AlertDescription, CertificateError};
 
+use super::names::NameOnlyInCn;
 use super::{ClientTls, MODBUS_TLS_PORT};
 
 /// What a device that speaks an older TLS is told.
@@ -43,6 +44,13 @@ pub(super) fn client_side(error: io::Error, port: u16, name: &str, tls: &ClientT
             CertificateError::InvalidPurpose | CertificateError::InvalidPurposeContext { .. } => {
                 "the device's certificate is not one for a server (its extended key usage lacks serverAuth): the device needs a server certificate".into()
             }
+            CertificateError::Other(other) => match other.0.downcast_ref::<NameOnlyInCn>() {
+                Some(cn) => format!(
+                    "the device's certificate has no subjectAltName: its name '{}' is only in its subject CN, which TLS clients no longer read (RFC 6125): issue it again with subjectAltName DNS:{name} (or IP:{name})",
+                    cn.common_name
+                ),
+                None => format!("the device's certificate was refused: {}", plainly(other)),
+            },
             other => format!("the device's certificate was refused: {}", plainly(other)),
         },
         Some(rustls::Error::AlertReceived(alert)) => match alert {
@@ -124,6 +132,11 @@ pub(super) fn server_side(error: io::Error, peer: &str) -> io::Error {
         }
         Some(rustls::Error::AlertReceived(alert)) => format!(
             "ended the handshake with the alert {alert:?}: it may not trust this server's certificate, or speak only an older TLS"
+        ),
+        // A hello of TLS 1.1 or older has no signature algorithms, nor a version this
+        // server speaks.
+        Some(rustls::Error::PeerIncompatible(why)) => format!(
+            "refused: it speaks a TLS older than 1.2 ({why:?}), and Modbus/TCP Security needs TLS 1.2 or 1.3: update the client or its TLS settings"
         ),
         Some(other) => format!("TLS handshake failed: {other}"),
         None if error.kind() == io::ErrorKind::TimedOut => {
