@@ -55,7 +55,7 @@ impl RequestCommand {
             C::ReadHolding(a) => read(a, Some(Table::HoldingRegisters)),
             C::ReadInputRegisters(a) => read(a, Some(Table::InputRegisters)),
             C::Read(a) => Operation::Read {
-                slave: &a.slave,
+                slave: a.slave(),
                 address: a.reference.as_deref().unwrap_or_default(),
                 table: None,
                 count: a.count.as_deref(),
@@ -149,8 +149,11 @@ pub struct WriteArgs {
 
 #[derive(Clone, Debug, Args)]
 pub struct ReadByReferenceArgs {
-    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
-    pub slave: String,
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP; with --map, left out
+    /// where the map gives every point's slave (Home Assistant's entities are slave 1 where
+    /// they give none)
+    #[arg(required_unless_present = "map", value_name = "SLAVE")]
+    pub slave: Option<String>,
     /// A reference, 1-based, whose first digit picks the table (000020 coils, 100197
     /// discrete inputs, 300009 input registers, 400108 holding registers), an inclusive range
     /// (400108-400110), or a bit of a register (400108.05), COUNT then counting bits;
@@ -169,14 +172,26 @@ pub struct ReadByReferenceArgs {
 }
 
 impl ReadByReferenceArgs {
-    /// The names of the points to read by map: every word after SLAVE.
-    pub fn point_names(&self) -> Vec<&str> {
-        self.reference
-            .iter()
-            .chain(&self.count)
-            .chain(&self.names)
-            .map(String::as_str)
-            .collect()
+    /// With --map: the slave typed, and the names of the points to read (every word after
+    /// SLAVE). A first word that is no slave id is a point's name, SLAVE left out.
+    pub fn map_words(&self) -> (Option<&str>, Vec<&str>) {
+        let is_slave = |word: &str| mbtool_core::model::number::parse_int(word).is_ok();
+        let (slave, first) = match self.slave.as_deref() {
+            Some(word) if is_slave(word) => (Some(word), None),
+            word => (None, word),
+        };
+        let names = first
+            .into_iter()
+            .chain(self.reference.as_deref())
+            .chain(self.count.as_deref())
+            .chain(self.names.iter().map(String::as_str))
+            .collect();
+        (slave, names)
+    }
+
+    /// The slave typed, for a read by reference (which needs it: clap asks for it).
+    pub fn slave(&self) -> &str {
+        self.slave.as_deref().unwrap_or_default()
     }
 }
 

@@ -62,15 +62,30 @@ pub fn with_place(
 pub fn plan(
     settings: &Settings,
     path: &std::path::Path,
-    slave: &str,
+    slave: Option<&str>,
     names: &[&str],
     tcp: bool,
     access: Access,
 ) -> Result<MapPlan, Error> {
     let map = load_map(path)?;
-    // A read goes to one slave; only a write may broadcast.
-    let slave = parse_slave(slave, access == Access::WriteOne, tcp)?;
     let points = pick(&map, names, path)?;
+    // A read goes to one slave; only a write may broadcast. Without SLAVE, the map's own:
+    // every point's, or the slave its format gives a point without one.
+    let slave = match (slave, map.default_slave) {
+        (Some(slave), _) => parse_slave(slave, access == Access::WriteOne, tcp)?,
+        (None, Some(default)) => default,
+        (None, None) => match points.iter().find(|p| p.slave.is_none()) {
+            Some(point) => {
+                return Err(Error::usage(format!(
+                    "{} gives {} no slave: give SLAVE (read SLAVE --map {} ...)",
+                    path.display(),
+                    point.name,
+                    path.display()
+                )))
+            }
+            None => points.iter().find_map(|p| p.slave).unwrap_or_default(),
+        },
+    };
     if let Some(max) = settings.data.max_per_request {
         if let Some(wide) = points.iter().find(|p| p.kind.width() > max) {
             return Err(Error::usage(format!(
@@ -294,8 +309,8 @@ pub fn by_map(settings: &Settings, request: &RequestCommand) -> Result<Option<By
     match request {
         RequestCommand::Read(args) => match &args.map {
             Some(path) => {
-                let names = args.point_names();
-                let plan = plan(settings, path, &args.slave, &names, tcp(), Access::Read)?;
+                let (slave, names) = args.map_words();
+                let plan = plan(settings, path, slave, &names, tcp(), Access::Read)?;
                 Ok(Some(ByMap::Read(plan)))
             }
             None if !args.names.is_empty() => Err(Error::usage(format!(
@@ -311,7 +326,7 @@ pub fn by_map(settings: &Settings, request: &RequestCommand) -> Result<Option<By
             )
             .into()),
             Some(path) => {
-                let plan = plan(settings, path, &args.slave, &[], tcp(), Access::WriteOne)?;
+                let plan = plan(settings, path, Some(&args.slave), &[], tcp(), Access::WriteOne)?;
                 let writes = plan.writes(&args.assignments(), path)?;
                 Ok(Some(ByMap::Write(writes, plan)))
             }

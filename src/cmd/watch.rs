@@ -33,15 +33,8 @@ fn points(
     target: &Target,
 ) -> Result<(u8, Vec<Point>), Error> {
     if let Some(path) = &args.map {
-        let names = args.point_names();
-        let plan = super::map::plan(
-            settings,
-            path,
-            &args.slave,
-            &names,
-            target.is_tcp(),
-            Access::Read,
-        )?;
+        let (slave, names) = args.map_words();
+        let plan = super::map::plan(settings, path, slave, &names, target.is_tcp(), Access::Read)?;
         return Ok((plan.slave, plan.points));
     }
     if !args.names.is_empty() {
@@ -50,7 +43,7 @@ fn points(
         ));
     }
     let operation = Operation::Read {
-        slave: &args.slave,
+        slave: args.slave(),
         address: args.reference.as_deref().unwrap_or_default(),
         table: None,
         count: args.count.as_deref(),

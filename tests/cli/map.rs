@@ -275,6 +275,34 @@ fn one_points_failure_leaves_the_others_their_values() {
     );
 }
 
+/// A Home Assistant map gives every entity its slave (1 where it gives none) and where its
+/// device is: `read --map FILE [NAME...]` needs neither SLAVE nor --port. A CSV map whose
+/// points give no slave asks for SLAVE.
+#[test]
+fn a_map_that_gives_the_slave_needs_none_typed() {
+    let dir = tempfile::tempdir().unwrap();
+    let (_device, _, port) = serve_tcp(&[
+        "--slave",
+        "1",
+        "--data",
+        &files(&dir, &[("d.txt", "400001 = 11\n400002 = 22\n")])[0],
+    ]);
+    let yaml = format!(
+        "modbus:\n  - name: h\n    type: tcp\n    host: 127.0.0.1\n    port: {port}\n    sensors:\n      - {{name: a, address: 0}}\n      - {{name: b, address: 1}}\n"
+    );
+    let paths = files(
+        &dir,
+        &[("h.yaml", &yaml), ("m.csv", "name,ref\na,400001\n")],
+    );
+    let (code, values, stderr) = run(&[], &["read", "--map", &paths[0], "-o", "values"]);
+    assert_eq!((code, values.as_str()), (0, "a=11\nb=22\n"), "{stderr}");
+    let (code, values, stderr) = run(&[], &["read", "--map", &paths[0], "b", "-o", "values"]);
+    assert_eq!((code, values.as_str()), (0, "b=22\n"), "{stderr}");
+    let (code, _, stderr) = run(&[], &["read", "--map", &paths[1]]);
+    assert_eq!(code, 2);
+    assert!(stderr.contains("gives a no slave: give SLAVE"), "{stderr}");
+}
+
 /// How many requests `read --map` sends for `refs`, counted in its `-v` trace.
 fn requests_for(
     port: &[String],

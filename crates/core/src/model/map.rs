@@ -119,6 +119,9 @@ pub struct RegisterMap {
     /// What a reader of the file would warn of (`file:line: ...`): entries left out as
     /// their own tool leaves them out.
     pub warnings: Vec<String>,
+    /// The slave of a point that gives none, where the file's format says one (Home
+    /// Assistant's 1) and the command line gives none.
+    pub default_slave: Option<u8>,
 }
 
 /// Where a map's device is, as its file says; what the command line gives wins.

@@ -396,6 +396,8 @@ impl Reader<'_> {
                 connection,
                 unknown_place,
                 warnings: self.warnings,
+                // Home Assistant asks slave 1 of an entity without slave or device_address.
+                default_slave: Some(1),
             },
             |errors, more| MapError::Several { errors, more },
         )
