@@ -186,15 +186,23 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
         mode,
     );
     let mut addresses = Vec::new();
-    for (listener, listening) in listeners {
+    for (listener, listening) in &listeners {
         let address = listener.local_addr()?;
-        addresses.push(match &listening {
+        addresses.push(match listening {
             Listening::Secure(_) => format!("tls://{address} (Modbus/TCP Security)"),
             Listening::Plain(Some(role)) => {
                 format!("{address} (no certificate: role {})", role.name)
             }
             Listening::Plain(None) => address.to_string(),
         });
+    }
+    // Said before the first client is taken, so that it is the first line.
+    let (serial_line, _) = connection::tried(&settings.connection, &endpoint, mode);
+    mbtool::note!(
+        "mbtool: gateway on {} to the line {serial_line}; Ctrl-C ends",
+        addresses.join(", ")
+    );
+    for (listener, listening) in listeners {
         let gateway = Arc::clone(&gateway);
         let on_error = Arc::clone(&report);
         std::thread::Builder::new().spawn(move || {
@@ -204,12 +212,6 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
             }
         })?;
     }
-    // The line as it was opened: a client's timeouts are often a wrong baud or parity.
-    let (serial_line, _) = connection::tried(&settings.connection, &endpoint, mode);
-    mbtool::note!(
-        "mbtool: gateway on {} to the line {serial_line}; Ctrl-C ends",
-        addresses.join(", ")
-    );
     line.open(&report);
     let working = Arc::clone(&gateway);
     std::thread::Builder::new().spawn(move || working.run(&mut line))?;

@@ -6,6 +6,7 @@ use std::io::{self, Write};
 use serde::Serialize;
 
 use super::json::JsonObject;
+use super::sniff_json::{frame_json, json_line, seconds, JsonSummary, JsonTcp, JsonUnanswered};
 use super::Format;
 use super::{csv_field, request_summary, shown_values, write_fields_summary, write_value};
 use mbtool_core::codec::function;
@@ -20,63 +21,6 @@ use mbtool_core::sniff::tcp::PacketCounts;
 const RED: &str = "\x1b[31m";
 const YELLOW: &str = "\x1b[33m";
 const RESET: &str = "\x1b[0m";
-
-fn seconds(us: u64) -> f64 {
-    us as f64 / 1e6
-}
-
-/// Where a frame of a TCP capture was, as JSON says it.
-#[derive(Serialize)]
-struct JsonTcp {
-    client: String,
-    server: String,
-    packet: u64,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    request_packet: Option<u64>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    response_time_us: Option<u64>,
-}
-
-impl From<&TcpPlace> for JsonTcp {
-    fn from(place: &TcpPlace) -> Self {
-        Self {
-            client: place.client.to_string(),
-            server: place.server.to_string(),
-            packet: place.packet,
-            request_packet: place.request_packet,
-            response_time_us: place.response_time,
-        }
-    }
-}
-
-#[derive(Serialize)]
-struct JsonUnanswered {
-    #[serde(rename = "type")]
-    kind: &'static str,
-    slave: u8,
-    function: u8,
-    #[serde(flatten)]
-    request: mbtool_core::describe::Fields,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    waited: Option<f64>,
-    /// The capture ended while the request waited.
-    #[serde(skip_serializing_if = "std::ops::Not::not")]
-    capture_ended: bool,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    transaction: Option<u16>,
-    #[serde(flatten, skip_serializing_if = "Option::is_none")]
-    tcp: Option<JsonTcp>,
-}
-
-#[derive(Serialize)]
-struct JsonSummary<'a> {
-    #[serde(rename = "type")]
-    kind: &'static str,
-    #[serde(flatten)]
-    counts: &'a Counts,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    packets: Option<&'a PacketCounts>,
-}
 
 /// The columns of a serial line's frames in CSV.
 const CSV_HEADER: &str = "number,time,gap,slave,function,kind,valid,summary";
@@ -95,119 +39,6 @@ pub struct SniffWriter {
     /// One line of the table or one field of JSON, put together here: no allocation per
     /// frame.
     text: String,
-}
-
-/// A frame as one JSON object: the record's place and bytes, then the report's fields in
-/// the order `FrameReport` serializes them (a unit test holds the two equal), then the
-/// pairing and the TCP place.
-/// `hex`: the frame's bytes as spaced hex.
-fn frame_json(line: &mut Vec<u8>, frame: &FrameRecord, hex: &str) -> io::Result<()> {
-    let report = frame.report();
-    let mut object = JsonObject::open(line);
-    object.plain("type", "frame");
-    object.field("number", &frame.number)?;
-    object.field("time", &seconds(frame.at))?;
-    object.field_if("gap", frame.gap.map(seconds).as_ref())?;
-    object.field("offset", &frame.found.offset)?;
-    // Always hex, whatever the mode: a JSON reader gets the bytes as they were.
-    object.plain("bytes", hex);
-    report_fields(&mut object, report)?;
-    if frame.paired {
-        object.field("paired", &true)?;
-    }
-    object.field_if(
-        "mismatch",
-        frame.mismatch.as_ref().map(ToString::to_string).as_ref(),
-    )?;
-    if let Some(place) = &frame.tcp {
-        object.flatten(&JsonTcp::from(place))?;
-    }
-    object.close();
-    Ok(())
-}
-
-/// The fields of a `FrameReport`, as its `Serialize` gives them.
-fn report_fields(object: &mut JsonObject, report: &FrameReport) -> io::Result<()> {
-    object.plain("mode", report.mode);
-    object.plain("kind", report.kind.name());
-    object.field("slave", &report.slave)?;
-    object.field("function", &report.function)?;
-    object.field("valid", &report.valid)?;
-    object.field_if("transaction", report.transaction.as_ref())?;
-    object.plain("function_name", report.function_name);
-    pdu_fields(object, &report.fields)?;
-    object.field_if("error", report.error.as_ref())?;
-    if report.ambiguous {
-        object.field("ambiguous", &true)?;
-    }
-    object.field_if("alternative", report.alternative.as_ref())
-}
-
-/// The fields of a PDU, as `Fields` serializes them. Those of reads, writes and exceptions,
-/// nearly every frame on a line, are written by hand: serde's machinery for a struct of
-/// optional fields cost a sniffer's JSON an eighth of its time. A frame with any other
-/// field goes through serde whole, so that the order of the fields stays the struct's.
-fn pdu_fields(object: &mut JsonObject, fields: &mbtool_core::describe::Fields) -> io::Result<()> {
-    use mbtool_core::describe::{Fields, Values};
-    let Fields {
-        address,
-        reference,
-        count,
-        max_count,
-        values,
-        last_packed: _,
-        exception,
-        exception_name,
-        read_address: None,
-        read_count: None,
-        and_mask: None,
-        or_mask: None,
-        sub_function: None,
-        status: None,
-        read_code: None,
-        object_id: None,
-        conformity: None,
-        more_follows: None,
-        next_object_id: None,
-        objects: None,
-        data: None,
-        text: None,
-    } = fields
-    else {
-        return object.flatten(fields);
-    };
-    if let Some(address) = address {
-        object.number("address", *address);
-    }
-    if let Some(reference) = reference {
-        object.plain("ref", reference);
-    }
-    if let Some(count) = count {
-        object.number("count", *count);
-    }
-    if let Some(max_count) = max_count {
-        object.number("max_count", *max_count);
-    }
-    match values {
-        Some(Values::Registers(registers)) => object.numbers("values", registers.iter().copied()),
-        Some(Values::Bits(bits)) => object.numbers("values", bits.iter().copied()),
-        None => {}
-    }
-    if let Some(exception) = exception {
-        object.number("exception", *exception);
-    }
-    if let Some(name) = exception_name {
-        object.plain("exception_name", name);
-    }
-    Ok(())
-}
-
-/// Serializes `value` as one line into `line`, then writes it.
-fn json_line(out: &mut dyn Write, line: &mut Vec<u8>, value: &impl Serialize) -> io::Result<()> {
-    line.clear();
-    serde_json::to_writer(&mut *line, value)?;
-    line.push(b'\n');
-    out.write_all(line)
 }
 
 /// The kind column: an answer, or a frame that reads both ways as a request with a doubt.
@@ -254,21 +85,15 @@ fn write_serial_summary(out: &mut String, frame: &FrameRecord) {
 fn write_frame_summary(out: &mut String, report: &FrameReport) {
     use std::fmt::Write as _;
     let f = &report.fields;
-    match (f.exception, &report.error) {
-        // The kind column already says "exception".
-        (Some(code), None) => {
-            let _ = write!(out, "{}", ExceptionCode(code));
-            return;
-        }
-        (Some(code), Some(error)) => {
-            let _ = write!(out, "{} ({error})", ExceptionCode(code));
-            return;
-        }
-        (None, Some(error)) => {
-            out.push_str(error);
-            return;
-        }
-        (None, None) => {}
+    // The kind column already says "exception".
+    let _ = match (f.exception, &report.error) {
+        (Some(code), None) => write!(out, "{}", ExceptionCode(code)),
+        (Some(code), Some(error)) => write!(out, "{} ({error})", ExceptionCode(code)),
+        (None, Some(error)) => write!(out, "{error}"),
+        (None, None) => Ok(()),
+    };
+    if f.exception.is_some() || report.error.is_some() {
+        return;
     }
     let table = mbtool_core::model::address::Table::of_function(report.function);
     match (report.kind, &f.values, f.address, f.count) {
@@ -813,6 +638,7 @@ fn duration(us: u64) -> String {
 mod tests {
     use super::*;
     use crate::output::columns::ColumnText;
+    use crate::output::sniff_json::report_fields;
     use mbtool_core::codec::Mode;
     use mbtool_core::sniff::session::{Filter, Session};
 
