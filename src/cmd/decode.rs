@@ -43,13 +43,13 @@ impl Decoder {
     fn line(&mut self, text: &[u8], in_log: bool, place: impl Fn() -> String) -> io::Result<()> {
         if let Some(line) = dump_line(text) {
             let open = self.dump.as_ref().map(Vec::len);
-            match (open, line.offset) {
-                (_, 0) if !line.bytes.is_empty() => {
+            match open {
+                _ if line.is_at(0) && !line.bytes.is_empty() => {
                     self.end_dump()?;
                     self.dump = Some(line.bytes);
                     return Ok(());
                 }
-                (Some(len), offset) if offset == len as u64 => {
+                Some(len) if line.is_at(len) => {
                     match self.dump.as_mut() {
                         Some(bytes) if !line.bytes.is_empty() => bytes.extend(line.bytes),
                         // The dump's length, on its last line: it is whole.
@@ -100,6 +100,11 @@ impl Decoder {
             }
         }
         if !report.valid {
+            // A whole packet copied from Wireshark (Ethernet, IP and TCP headers before the
+            // Modbus bytes): its TCP payload is the frame.
+            if let Some(payload) = tcp_payload(bytes) {
+                return self.frame(payload, marked);
+            }
             // Frames glued together on one line are shown one by one, as sniff finds them.
             let modes = match self.mode {
                 Some(mode) => vec![mode],
@@ -281,6 +286,24 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
         4
     } else {
         0
+    })
+}
+
+/// The TCP payload of a packet given whole, from its Ethernet (or IP) header on.
+fn tcp_payload(bytes: &[u8]) -> Option<&[u8]> {
+    use mbtool_core::sniff::capture::{segment, Packet};
+    const ETHERNET: u32 = 1;
+    const RAW_IP: u32 = 101;
+    [ETHERNET, RAW_IP].into_iter().find_map(|link| {
+        let packet = Packet {
+            number: 1,
+            time_us: 0,
+            link,
+            data: bytes,
+            original_len: u32::try_from(bytes.len()).ok()?,
+        };
+        let payload = segment(&packet).ok()?.payload;
+        (!payload.is_empty()).then_some(payload)
     })
 }
 

@@ -482,7 +482,7 @@ proptest! {
             };
             let line = mbtool_core::model::hexdump::dump_line(text.as_bytes())
                 .ok_or_else(|| TestCaseError::fail(text.clone()))?;
-            prop_assert_eq!(line.offset, offset as u64, "{}", text);
+            prop_assert!(line.is_at(offset), "{}", text);
             read.extend(line.bytes);
         }
         prop_assert_eq!(read, bytes);

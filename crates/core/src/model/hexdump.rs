@@ -6,10 +6,20 @@
 /// One line of a dump.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct DumpLine {
-    /// Where its bytes stand in the dump.
-    pub offset: u64,
+    /// Its offset as written: hex, or for `od` octal (its default) or decimal (`-A d`).
+    pub offset: String,
     /// Its bytes; none on the line of `hexdump` and `od` that gives the length at the end.
     pub bytes: Vec<u8>,
+}
+
+impl DumpLine {
+    /// Whether its offset is `count`, the bytes of the dump before it, in any of the bases
+    /// dumps write offsets in.
+    pub fn is_at(&self, count: usize) -> bool {
+        [16, 8, 10].into_iter().any(|radix| {
+            u64::from_str_radix(&self.offset, radix).is_ok_and(|at| at == count as u64)
+        })
+    }
 }
 
 /// The most bytes a dump line holds (`xxd -c 32`).
@@ -25,7 +35,7 @@ pub fn dump_line(line: &[u8]) -> Option<DumpLine> {
     if !(4..=8).contains(&digits) {
         return None;
     }
-    let offset = u64::from_str_radix(std::str::from_utf8(&line[..digits]).ok()?, 16).ok()?;
+    let offset = std::str::from_utf8(&line[..digits]).ok()?.to_string();
     let mut rest = &line[digits..];
     let xxd = rest.first() == Some(&b':');
     if xxd {
@@ -55,7 +65,8 @@ pub fn dump_line(line: &[u8]) -> Option<DumpLine> {
             .take_while(|b| matches!(b, b' ' | b'\t'))
             .count();
         at += gap;
-        if at >= rest.len() || rest[at] == b'|' || (!first && gap >= column_gap) {
+        // `hexdump -C` puts its characters in |...|, `od -t x1z` in >...<.
+        if at >= rest.len() || matches!(rest[at], b'|' | b'>') || (!first && gap >= column_gap) {
             break;
         }
         let end = at
@@ -97,24 +108,20 @@ mod tests {
             "00000000: 1103 006b 0003 7687                      ...k..v.",
             "00000000: 11 03 00 6b 00 03 76 87                          ...k..v.",
             "000000 11 03 00 6b 00 03 76 87",
+            "0000000 11 03 00 6b 00 03 76 87",
+            "000000 11 03 00 6b 00 03 76 87  >...k..v.<",
         ] {
-            assert_eq!(
-                dump_line(line.as_bytes()),
-                Some(DumpLine {
-                    offset: 0,
-                    bytes: FRAME.to_vec()
-                }),
-                "{line}"
-            );
+            let read = dump_line(line.as_bytes()).unwrap();
+            assert!(read.is_at(0), "{line}");
+            assert_eq!(read.bytes, FRAME, "{line}");
         }
         // The character column may look like hex; the gap before it tells it apart.
-        assert_eq!(
-            dump_line(b"0010   41 42 43 44                                       ABCD"),
-            Some(DumpLine {
-                offset: 16,
-                bytes: vec![0x41, 0x42, 0x43, 0x44]
-            })
-        );
+        let line =
+            dump_line(b"0010   41 42 43 44                                       ABCD").unwrap();
+        assert_eq!(line.bytes, [0x41, 0x42, 0x43, 0x44]);
+        assert!(line.is_at(16));
+        // od's default offsets are octal: 0000020 is 16.
+        assert!(dump_line(b"0000020 41 42").unwrap().is_at(16));
         // A full line, with hexdump's gap in the middle.
         let full = "00000010  00 01 02 03 04 05 06 07  08 09 0a 0b 0c 0d 0e 0f  |................|";
         assert_eq!(
@@ -122,13 +129,8 @@ mod tests {
             (0..16).collect::<Vec<u8>>()
         );
         // The length at the end of hexdump's and od's dumps.
-        assert_eq!(
-            dump_line(b"00000008"),
-            Some(DumpLine {
-                offset: 8,
-                bytes: Vec::new()
-            })
-        );
+        let end = dump_line(b"00000008").unwrap();
+        assert!(end.bytes.is_empty() && end.is_at(8));
     }
 
     #[test]

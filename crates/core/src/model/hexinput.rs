@@ -151,8 +151,8 @@ struct Run {
     bytes: Vec<u8>,
     spelling: Option<Spelling>,
     direction: Option<Direction>,
-    /// Its direction was named by a word (`TX`, `RX`), not a symbol.
-    named: bool,
+    /// A direction mark stands between it and the run before it.
+    after_mark: bool,
     ascii: bool,
 }
 
@@ -160,14 +160,17 @@ struct Run {
 /// `<`). `Some((direction, named))`; a named mark is not overridden by a symbol after it,
 /// as in QModMaster's `[RTU]>Rx > 10:33:38:374`.
 fn direction_mark(word: &[u8]) -> Option<(Direction, bool)> {
-    let word = word.strip_suffix(b":").unwrap_or(word);
+    let word = word
+        .strip_suffix(b":")
+        .or_else(|| word.strip_suffix(b"="))
+        .unwrap_or(word);
     let word = word
         .strip_prefix(b"[")
         .and_then(|w| w.strip_suffix(b"]"))
         .unwrap_or(word);
     match word.to_ascii_uppercase().as_slice() {
-        b">" => Some((Direction::Request, false)),
-        b"<" => Some((Direction::Response, false)),
+        b">" | b">>" | b"->" | b"=>" => Some((Direction::Request, false)),
+        b"<" | b"<<" | b"<-" | b"<=" => Some((Direction::Response, false)),
         b"TX" | b"SEND" | b"SENT" => Some((Direction::Request, true)),
         b"RX" | b"RECV" | b"RECEIVED" => Some((Direction::Response, true)),
         _ => None,
@@ -194,7 +197,7 @@ fn split_glued_mark(word: &[u8]) -> Vec<&[u8]> {
     let Some((at, end)) = found else {
         return vec![word];
     };
-    let end = if word.get(end) == Some(&b':') {
+    let end = if matches!(word.get(end), Some(b':' | b'=')) {
         end + 1
     } else {
         end
@@ -384,20 +387,29 @@ fn mistyped_byte(word: &[u8]) -> bool {
 }
 
 /// The frames of a log line: the longest run of hex bytes (or its ASCII frame), or, where
-/// the line holds a frame after each of two direction marks of different ways (`TX: ...
-/// RX: ...`), each of them.
+/// the line holds frames that direction marks of different ways part (`TX: ... RX: ...`,
+/// `> ... < ...`, `... <- ...`), each of them; a first frame without a mark went the other
+/// way from the one after it.
 fn frames_of_line(line: &[u8]) -> Vec<Run> {
     let mut runs = runs(line);
-    let marked: Vec<usize> = (0..runs.len())
-        .filter(|i| runs[*i].named && (runs[*i].ascii || runs[*i].bytes.len() >= SHORTEST_FRAME))
+    let framed: Vec<usize> = (0..runs.len())
+        .filter(|i| runs[*i].ascii || runs[*i].bytes.len() >= SHORTEST_FRAME)
         .collect();
     let ways = |i: &usize| runs[*i].direction;
-    if marked.len() >= 2 && marked.iter().any(|i| ways(i) != ways(&marked[0])) {
+    let parted = framed.len() >= 2
+        && framed[1..]
+            .iter()
+            .all(|i| runs[*i].after_mark && ways(i).is_some())
+        && framed.iter().any(|i| ways(i) != ways(&framed[1]));
+    if parted {
         let mut kept = Vec::new();
-        for i in marked.into_iter().rev() {
+        for i in framed.into_iter().rev() {
             kept.push(runs.swap_remove(i));
         }
         kept.reverse();
+        if kept[0].direction.is_none() {
+            kept[0].direction = kept[1].direction.map(Direction::opposite);
+        }
         return kept;
     }
     // The first of the longest.
@@ -414,6 +426,7 @@ fn runs(line: &[u8]) -> Vec<Run> {
     let mut best: Vec<Run> = Vec::new();
     let mut run = Run::default();
     let mut mark: Option<(Direction, bool)> = None;
+    let mut fresh_mark = false;
     let keep = |run: &mut Run, best: &mut Vec<Run>| {
         let run = std::mem::take(run);
         if !run.bytes.is_empty() {
@@ -427,6 +440,7 @@ fn runs(line: &[u8]) -> Vec<Run> {
     {
         if let Some(found) = direction_mark(word) {
             keep(&mut run, &mut best);
+            fresh_mark = true;
             let named_before = mark.is_some_and(|(_, named)| named) && run.bytes.is_empty();
             if found.1 || !named_before {
                 mark = Some(found);
@@ -439,7 +453,7 @@ fn runs(line: &[u8]) -> Vec<Run> {
                 bytes,
                 spelling: None,
                 direction: mark.map(|(direction, _)| direction),
-                named: mark.is_some_and(|(_, named)| named),
+                after_mark: std::mem::take(&mut fresh_mark),
                 ascii: true,
             };
             keep(&mut run, &mut best);
@@ -469,7 +483,7 @@ fn runs(line: &[u8]) -> Vec<Run> {
                         run.direction = mark
                             .map(|(direction, _)| direction)
                             .or(bracket_direction.filter(|_| spelling == Spelling::Bracketed));
-                        run.named = mark.is_some_and(|(_, named)| named);
+                        run.after_mark = std::mem::take(&mut fresh_mark);
                     }
                     run.spelling = Some(spelling);
                     run.bytes.extend_from_slice(&bytes);
@@ -528,6 +542,10 @@ mod tests {
         for text in [
             "12:00:01.123 TX: 11 03 00 6B 00 03 76 87 RX: 11 03 06 02 2B 00 00 00 64 C8 BA",
             "[TX] 1103006B00037687 [RX] 1103 0602 2B00 0000 64C8 BA",
+            "11 03 00 6B 00 03 76 87 < 11 03 06 02 2B 00 00 00 64 C8 BA",
+            "> 11 03 00 6B 00 03 76 87 < 11 03 06 02 2B 00 00 00 64 C8 BA",
+            "-> 11 03 00 6B 00 03 76 87 <- 11 03 06 02 2B 00 00 00 64 C8 BA",
+            "TX=1103006B00037687 RX=110306022B00000064C8BA",
         ] {
             let frames = read_line(text.as_bytes()).unwrap();
             assert_eq!(

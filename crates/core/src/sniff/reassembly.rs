@@ -59,6 +59,12 @@ pub struct Stream {
     /// number, or a capture that lost much), and acknowledgements of bytes never sent:
     /// passed over, and no bytes counted missing for them.
     pub jumps: u64,
+    /// Where the last segment framed on its own, for a number far off, ended: the next
+    /// that starts there shows the stream has moved.
+    far_end: Option<u32>,
+    /// Bytes of segments framed on their own that may be the stream's next, their number
+    /// alone corrupt: what comes after them, or an acknowledgement of them, is no hole.
+    unplaced: u64,
     /// Where the sender's FIN stands: the other side acknowledges it as one more
     /// sequence number, which is no byte.
     fin: Option<u64>,
@@ -87,11 +93,42 @@ impl Stream {
         if payload.is_empty() {
             return;
         }
-        let position = self.position(start, next);
-        let Some(position) = position else {
-            self.repeated += payload.len() as u64;
-            return;
+        // A number further from the stream than a sender could have in flight is corrupt,
+        // or the capture lost much: the segment is framed on its own, the stream left as
+        // it is, until a second segment follows it on, and the stream goes on from there.
+        let near = self
+            .position(start, next)
+            .filter(|position| position.abs_diff(self.seen_end()) <= MOST_UNSEEN);
+        let position = match near {
+            Some(position) => position,
+            None if self.far_end == Some(start) => {
+                self.finish(out);
+                self.first = start.wrapping_sub(self.next.unwrap_or(0) as u32);
+                self.jumps += 1;
+                self.next.unwrap_or(0)
+            }
+            None => {
+                self.jumps += 1;
+                out.extend([
+                    Piece::Gap(0),
+                    Piece::Bytes {
+                        data: payload.to_vec(),
+                        at,
+                    },
+                    Piece::Gap(0),
+                ]);
+                self.far_end = Some(start.wrapping_add(payload.len() as u32));
+                self.unplaced += payload.len() as u64;
+                return;
+            }
         };
+        self.far_end = None;
+        // The stream goes on after bytes framed on their own: they were its next.
+        if self.unplaced > 0 && position > next && position - next <= self.unplaced {
+            self.next = Some(position);
+            self.release(Some(at), out);
+        }
+        self.unplaced = 0;
         let end = position + payload.len() as u64;
         self.take(position, payload, at, out);
         if cut > 0 && self.next == Some(end) {
@@ -158,7 +195,12 @@ impl Stream {
         }
         let next = self.next.unwrap_or(0);
         if until > next {
-            self.hole(until - next, out);
+            // Bytes framed on their own for a corrupt number are those acknowledged.
+            let placed = (until - next).min(self.unplaced);
+            self.unplaced -= placed;
+            if until - next > placed {
+                self.hole(until - next - placed, out);
+            }
             self.next = Some(until);
             self.release(Some(now), out);
         }
@@ -325,14 +367,43 @@ mod tests {
         stream.segment(1003, false, (b"de", 0), (2, 3), &mut out);
         assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcde");
         assert_eq!((stream.missing, stream.jumps), (0, 1));
-        // A segment whose number jumps far ahead waits no longer than the patience, then
-        // is a jump, not missing bytes; what follows it comes in order after it.
-        stream.segment(900_000, false, (b"x", 0), (3_000_000, 4), &mut out);
-        stream.segment(900_001, false, (b"y", 0), (3_500_000, 5), &mut out);
-        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcde");
-        stream.segment(1005, false, (b"f", 0), (6_000_000, 6), &mut out);
-        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcdef|xy");
-        assert_eq!((stream.missing, stream.jumps), (0, 2));
+        // A segment whose number is corrupt (a bit flipped, 2^31 off) is framed on its own,
+        // and the stream goes on in order after it.
+        stream.segment(1005 ^ (1 << 30), false, (b"X", 0), (3, 4), &mut out);
+        stream.segment(
+            1005u32.wrapping_sub(1 << 31),
+            false,
+            (b"Y", 0),
+            (4, 5),
+            &mut out,
+        );
+        stream.segment(1005, false, (b"f", 0), (5, 6), &mut out);
+        assert_eq!(String::from_utf8(bytes_of(&out)).unwrap(), "abcde|X||Y|f");
+        assert_eq!((stream.missing, stream.jumps), (0, 3));
+        // Bytes framed on their own for a corrupt number are the stream's next: their
+        // acknowledgement, or the segment after them, is no hole.
+        let mut lone = Stream::default();
+        let mut pieces = Vec::new();
+        lone.segment(0, false, (b"ab", 0), (0, 1), &mut pieces);
+        lone.segment(2 ^ (1 << 30), false, (b"cd", 0), (1, 2), &mut pieces);
+        lone.acknowledged(4, (2, 3), &mut pieces);
+        lone.segment(4 ^ (1 << 29), false, (b"ef", 0), (3, 4), &mut pieces);
+        lone.segment(6, false, (b"gh", 0), (4, 5), &mut pieces);
+        assert_eq!(
+            String::from_utf8(bytes_of(&pieces)).unwrap(),
+            "ab|cd||ef|gh"
+        );
+        assert_eq!(lone.missing, 0);
+        // Numbers that jump and go on from there are a stream that moved (a capture that
+        // lost much): it goes on from the second segment.
+        stream.segment(900_000, false, (b"p", 0), (6, 7), &mut out);
+        stream.segment(900_001, false, (b"q", 0), (7, 8), &mut out);
+        stream.segment(900_002, false, (b"r", 0), (8, 9), &mut out);
+        assert_eq!(
+            String::from_utf8(bytes_of(&out)).unwrap(),
+            "abcde|X||Y|f|p|qr"
+        );
+        assert_eq!((stream.missing, stream.jumps), (0, 5));
         // A hole a retransmission could fill waits, and is then lost, as it came.
         let mut stream = Stream::default();
         let mut out = Vec::new();

@@ -88,10 +88,12 @@ struct Reader<'a> {
 }
 
 /// A document read as YAML; `.nan` and `.inf` kept as text, so that the key that holds
-/// them is told.
+/// them is told; comments passed over unread, however many lines of entities a user has
+/// commented out.
 fn yaml<T: DeserializeOwned>(text: &str) -> Result<T, serde_saphyr::Error> {
     let options = serde_saphyr::options! {
         reject_non_finite_typeless_float: false,
+        emit_comments: false,
     };
     serde_saphyr::from_str_with_options(text, options)
 }
