@@ -731,7 +731,11 @@ fn a_home_assistant_hub_says_where_the_device_is() {
     let path_two = files(&dir, &[("two.yaml", &two)]).remove(0);
     let (code, _, stderr) = run(&[], &["read", "17", "--map", &path_two]);
     assert_eq!(code, 2, "{stderr}");
-    assert!(stderr.contains("no --port"), "{stderr}");
+    assert!(
+        stderr.contains("its hubs are several devices (pump station at tcp://127.0.0.1:")
+            && stderr.ends_with("; give --port\n"),
+        "{stderr}"
+    );
     // A place kept in Home Assistant's secrets is found in the secrets.yaml beside the
     // file, or above it; where there is none, the message names the key, the secret and
     // where it looked, and --port is asked for.

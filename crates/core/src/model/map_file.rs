@@ -25,6 +25,28 @@ fn is_yaml(path: &Path) -> bool {
         .is_some_and(|ext| ext.eq_ignore_ascii_case("yaml") || ext.eq_ignore_ascii_case("yml"))
 }
 
+/// The YAML files in `folder` and the folders in it, as Home Assistant walks them for the
+/// `!include_dir_*` tags: hidden files and folders passed over, and no deeper than a
+/// configuration is kept.
+fn yaml_files(folder: &Path, found: &mut Vec<PathBuf>, depth: usize) {
+    let Ok(entries) = std::fs::read_dir(folder) else {
+        return;
+    };
+    for path in entries.filter_map(Result::ok).map(|entry| entry.path()) {
+        let hidden = path
+            .file_name()
+            .is_some_and(|name| name.to_string_lossy().starts_with('.'));
+        if hidden {
+            continue;
+        }
+        if path.is_dir() && depth < 8 {
+            yaml_files(&path, found, depth + 1);
+        } else if is_yaml(&path) {
+            found.push(path);
+        }
+    }
+}
+
 /// The files beside a configuration, as Home Assistant reads them.
 struct Folder;
 
@@ -51,19 +73,10 @@ impl Sources for Folder {
         if tag == "!include" {
             return read(&target).map(|one| vec![one]);
         }
-        let entries = std::fs::read_dir(&target)
+        std::fs::read_dir(&target)
             .map_err(|e| format!("cannot read the folder {}: {e}", target.display()))?;
-        let mut paths: Vec<PathBuf> = entries
-            .filter_map(Result::ok)
-            .map(|entry| entry.path())
-            // Home Assistant passes over hidden files and takes YAML only.
-            .filter(|path| {
-                is_yaml(path)
-                    && !path
-                        .file_name()
-                        .is_some_and(|n| n.to_string_lossy().starts_with('.'))
-            })
-            .collect();
+        let mut paths = Vec::new();
+        yaml_files(&target, &mut paths, 0);
         paths.sort();
         paths.iter().map(|path| read(path)).collect()
     }

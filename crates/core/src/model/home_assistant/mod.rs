@@ -19,7 +19,7 @@ use serde::de::DeserializeOwned;
 use serde_saphyr::Tagged;
 
 use self::entity::{Platform, Values};
-use self::schema::{Entity, Field, Hub, Included, List, Top};
+use self::schema::{Entity, Field, Hub, Included, List, Packages, Top};
 use super::faults::Faults;
 use super::map::{at, check_name, MapConnection, MapError, Point, RegisterMap};
 
@@ -125,7 +125,7 @@ impl Reader<'_> {
             Err(e) => return self.faults.add(unreadable(file, &e)),
         };
         let hubs = match &top {
-            Top::One(probe) => probe.modbus.is_some() || probe.is_hub(),
+            Top::One(probe) => probe.is_hub(),
             Top::Many(probes) => probes.iter().any(schema::Probe::is_hub),
         };
         if !hubs {
@@ -141,16 +141,79 @@ impl Reader<'_> {
             Err(e) => return self.faults.add(unreadable(file, &e)),
         };
         for hub in hubs {
-            match hub.modbus {
-                // A configuration: its hubs, wherever they are written.
-                Some(_) => {
-                    for (file, hub) in self.list(file, hub.modbus, depth) {
-                        self.hub(&file, hub, depth);
-                    }
-                }
-                None => self.hub(file, hub, depth),
+            self.configuration(file, hub, depth);
+        }
+    }
+
+    /// A configuration (its hubs, wherever they are written, and its packages'), or a hub.
+    fn configuration(&mut self, file: &str, mut hub: Hub, depth: usize) {
+        let packages = hub.homeassistant.take().and_then(|core| core.packages);
+        let configuration = hub.modbus.is_some() || packages.is_some();
+        if let Some(packages) = packages {
+            for (file, package) in self.packages(file, packages, depth) {
+                self.configuration(&file, package, depth + 1);
             }
         }
+        if !configuration {
+            return self.hub(file, hub, depth);
+        }
+        for (file, hub) in self.list(file, hub.modbus, depth) {
+            self.hub(&file, hub, depth);
+        }
+    }
+
+    /// The packages of a configuration, each with the file it is written in: in place, a
+    /// file of them (`!include`), a folder of one a file (`!include_dir_named`) or of
+    /// several a file (`!include_dir_merge_named`).
+    fn packages(
+        &mut self,
+        file: &str,
+        packages: Tagged<Packages>,
+        depth: usize,
+    ) -> Vec<(String, Hub)> {
+        let Tagged(packages, tag) = packages;
+        let spec = match packages {
+            Packages::Inline(packages) => {
+                return packages
+                    .into_values()
+                    .map(|hub| (file.to_string(), hub))
+                    .collect()
+            }
+            Packages::Named(spec) => spec,
+        };
+        let tag = tag.unwrap_or_default();
+        if depth >= DEEPEST_INCLUDE || !tag.starts_with("!include") {
+            self.faults.add(at(
+                file,
+                1,
+                format!(
+                    "packages: {tag} {spec}: give the packages in place or with !include_dir_named"
+                ),
+            ));
+            return Vec::new();
+        }
+        let files = match self.sources.include(file, &tag, &spec) {
+            Ok(files) => files,
+            Err(why) => {
+                self.faults.add(at(file, 1, format!("{tag} {spec}: {why}")));
+                return Vec::new();
+            }
+        };
+        let mut found = Vec::new();
+        for (name, text) in files {
+            let read: Result<Vec<Hub>, _> = match tag.as_str() {
+                "!include_dir_named" => {
+                    yaml::<Option<Hub>>(&text).map(|hub| hub.into_iter().collect())
+                }
+                _ => yaml::<Option<std::collections::BTreeMap<String, Hub>>>(&text)
+                    .map(|packages| packages.unwrap_or_default().into_values().collect()),
+            };
+            match read {
+                Ok(hubs) => found.extend(hubs.into_iter().map(|hub| (name.clone(), hub))),
+                Err(e) => self.faults.add(unreadable(&name, &e)),
+            }
+        }
+        found
     }
 
     /// The items of a list, each with the file it is written in.
@@ -390,7 +453,22 @@ impl Reader<'_> {
         let (connection, unknown_place) = match places.as_slice() {
             [Ok(one)] => (one.clone(), None),
             [Err(why)] => (None, Some(why.clone())),
-            _ => (None, None),
+            [] => (None, None),
+            several => {
+                let at: Vec<String> = several
+                    .iter()
+                    .map(|place| match place {
+                        Ok(Some(connection)) => {
+                            format!("{} at {}", connection.hub, connection.port)
+                        }
+                        _ => "one whose place is not in the file".to_string(),
+                    })
+                    .collect();
+                (
+                    None,
+                    Some(format!("its hubs are several devices ({})", at.join(", "))),
+                )
+            }
         };
         faults.or(
             RegisterMap {

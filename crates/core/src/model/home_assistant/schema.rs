@@ -53,10 +53,47 @@ impl<'de, T: Deserialize<'de>> Deserialize<'de> for Included<T> {
     }
 }
 
-/// A mapping at the top of a file, or in a list of hubs: a configuration with `modbus:`,
-/// or a hub.
+/// A configuration's `homeassistant:` section: its packages, each a configuration of its
+/// own whose `modbus:` hubs Home Assistant merges with the others.
+#[derive(Default, Deserialize)]
+pub(super) struct Core {
+    pub packages: Option<Tagged<Packages>>,
+}
+
+/// Packages by name, written in place, or the file or folder a tag names
+/// (`!include_dir_named packages`).
+pub(super) enum Packages {
+    Inline(std::collections::BTreeMap<String, Hub>),
+    Named(String),
+}
+
+impl<'de> Deserialize<'de> for Packages {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct ByName;
+        impl<'de> Visitor<'de> for ByName {
+            type Value = Packages;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("packages by name, or an !include_dir_named")
+            }
+            fn visit_str<E: serde::de::Error>(self, name: &str) -> Result<Packages, E> {
+                Ok(Packages::Named(name.to_string()))
+            }
+            fn visit_unit<E: serde::de::Error>(self) -> Result<Packages, E> {
+                Ok(Packages::Inline(Default::default()))
+            }
+            fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<Packages, A::Error> {
+                Deserialize::deserialize(MapAccessDeserializer::new(map)).map(Packages::Inline)
+            }
+        }
+        deserializer.deserialize_any(ByName)
+    }
+}
+
+/// A mapping at the top of a file, or in a list of hubs: a configuration with `modbus:`
+/// (or packages that have one), or a hub.
 #[derive(Default, Deserialize)]
 pub(super) struct Hub {
+    pub homeassistant: Option<Core>,
     pub modbus: List<Hub>,
     pub name: Option<Spanned<String>>,
     #[serde(rename = "type")]
@@ -86,6 +123,7 @@ pub(super) enum Top {
 /// The keys that tell a hub from an entity.
 #[derive(Default, Deserialize)]
 pub(super) struct Probe {
+    pub homeassistant: Option<serde::de::IgnoredAny>,
     pub modbus: Option<serde::de::IgnoredAny>,
     pub address: Option<serde::de::IgnoredAny>,
     #[serde(rename = "type")]
@@ -105,6 +143,7 @@ impl Probe {
     pub(super) fn is_hub(&self) -> bool {
         self.address.is_none()
             && [
+                &self.homeassistant,
                 &self.modbus,
                 &self.kind,
                 &self.host,

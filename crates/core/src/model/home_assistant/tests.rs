@@ -296,3 +296,15 @@ fn a_bad_entry_names_its_line() {
         .to_string()
         .starts_with("ha.yaml:1: the map names no point"));
 }
+
+#[test]
+fn the_modbus_of_packages_is_read_as_home_assistant_merges_it() {
+    let mut files = Files::default();
+    files.files.insert("packages/vent.yaml".into(), "modbus:\n  - name: vent\n    type: tcp\n    host: h\n    port: 502\n    sensors:\n      - {name: fan, address: 3}\n".into());
+    let text = "homeassistant:\n  packages: !include_dir_named packages\n";
+    let map = parse("configuration.yaml", text, &mut files).unwrap();
+    assert_eq!(names(&map), ["fan"]);
+    let inline = "homeassistant:\n  name: Home\n  packages:\n    pump:\n      modbus:\n        - name: pump\n          type: tcp\n          host: p\n          port: 502\n          sensors:\n            - {name: flow, address: 1}\nmodbus:\n  - name: main\n    type: tcp\n    host: m\n    port: 502\n    sensors:\n      - {name: level, address: 2}\n";
+    let map = read(inline).unwrap();
+    assert_eq!(names(&map), ["flow", "level"]);
+}
