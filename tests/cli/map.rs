@@ -275,6 +275,54 @@ fn one_points_failure_leaves_the_others_their_values() {
     );
 }
 
+/// A device silent for an address it lacks (no exception, no answer): the run of points
+/// that holds it is read again in halves, and only that point has no value.
+#[test]
+fn a_point_the_device_is_silent_for_is_that_points_alone() {
+    let device = crate::support::scripted_tcp_device(|_, pdu| {
+        let [3, hi, lo, qh, ql] = pdu[..] else {
+            return crate::support::Act::Silent;
+        };
+        let (start, count) = (u16::from_be_bytes([hi, lo]), u16::from_be_bytes([qh, ql]));
+        if (start..start + count).contains(&1) {
+            return crate::support::Act::Silent;
+        }
+        let mut answer = vec![3, (count * 2) as u8];
+        for address in start..start + count {
+            answer.extend((address + 100).to_be_bytes());
+        }
+        crate::support::Act::Answer(answer)
+    });
+    let dir = tempfile::tempdir().unwrap();
+    let map = files(
+        &dir,
+        &[(
+            "m.csv",
+            "name,ref\na,400001\nb,400002\nc,400003\nd,400004\n",
+        )],
+    );
+    let port = vec!["--port".to_string(), format!("127.0.0.1:{device}")];
+    let (code, values, stderr) = run(
+        &port,
+        &[
+            "read",
+            "1",
+            "--map",
+            &map[0],
+            "-o",
+            "values",
+            "--timeout",
+            "200ms",
+        ],
+    );
+    assert_eq!(code, 3, "{stderr}");
+    assert_eq!(values, "a=100\nc=102\nd=103\n");
+    assert!(
+        stderr.contains("mbtool: b: no answer from slave 1"),
+        "{stderr}"
+    );
+}
+
 /// A Home Assistant map gives every entity its slave (1 where it gives none) and where its
 /// device is: `read --map FILE [NAME...]` needs neither SLAVE nor --port. A CSV map whose
 /// points give no slave asks for SLAVE.

@@ -169,8 +169,50 @@ pub fn read_points(
     let mut read = MapRead::default();
     let mut values: Vec<Option<PointValue>> = vec![None; points.len()];
     let mut pending: VecDeque<Group> = groups(points, slave, max).into();
-    while let Some(group) = pending.pop_front() {
-        match master.answer(group.slave, &group.request()) {
+    // The slaves that answered some request: a request of theirs that got no answer may
+    // have been about one of its points (a device that is silent for an address it lacks).
+    let mut answered: Vec<u8> = Vec::new();
+    // Requests of several points without an answer, split once it is known that their
+    // slave answers others.
+    let mut unanswered: Vec<(Group, RunError)> = Vec::new();
+    // The slaves none of whose requests got an answer, one of which was read again in
+    // halves to learn whether they answer at all: a silent device costs one more request.
+    let mut tried_halves: Vec<u8> = Vec::new();
+    loop {
+        let Some(group) = pending.pop_front() else {
+            // What got no answer from a slave that answers is read again in halves. Of a
+            // slave not heard from, one request is halved, to learn whether it answers at
+            // all; when it does not, its requests fail.
+            let mut waiting = Vec::new();
+            for (group, error) in std::mem::take(&mut unanswered) {
+                if answered.contains(&group.slave) {
+                    read_again_in_halves(&mut pending, &group, points, slave);
+                } else if !tried_halves.contains(&group.slave) {
+                    tried_halves.push(group.slave);
+                    read_again_in_halves(&mut pending, &group, points, slave);
+                } else {
+                    waiting.push((group, error));
+                }
+            }
+            if pending.is_empty() {
+                for (group, error) in waiting {
+                    read.failed.push(PointFailure {
+                        points: group.points,
+                        error,
+                    });
+                }
+                break;
+            }
+            unanswered = waiting;
+            continue;
+        };
+        let outcome = master.answer(group.slave, &group.request());
+        if matches!(outcome, Ok(_) | Err(RunError::Exception { .. }))
+            && !answered.contains(&group.slave)
+        {
+            answered.push(group.slave);
+        }
+        match outcome {
             Ok(response) => {
                 let (registers, bits) = match response {
                     Some(
@@ -201,29 +243,24 @@ pub fn read_points(
             {
                 // Read this group's points again, one run at a time.
                 read.fell_back = true;
-                let members: Vec<&Point> = group.points.iter().map(|i| points[*i]).collect();
-                // Next in line, in address order, before the groups still to read.
-                for mut run in groups(&members, slave, None).into_iter().rev() {
-                    for index in &mut run.points {
-                        *index = group.points[*index];
-                    }
-                    pending.push_front(run);
-                }
+                read_again(&mut pending, &group.points, points, slave);
             }
+            // An exception about some of the points, or an answer that does not read:
+            // the device is there, and the points it fails on are found by halves.
             Err(RunError::Exception { code, .. })
                 if group.points.len() > 1 && refuses_some_points(code) =>
             {
-                // Halves, the first read first, down to the points refused.
-                let (first, second) = group.points.split_at(group.points.len() / 2);
-                for half in [second, first] {
-                    let members: Vec<&Point> = half.iter().map(|i| points[*i]).collect();
-                    for mut run in groups(&members, slave, None).into_iter().rev() {
-                        for index in &mut run.points {
-                            *index = half[*index];
-                        }
-                        pending.push_front(run);
-                    }
-                }
+                read_again_in_halves(&mut pending, &group, points, slave);
+            }
+            Err(RunError::Master(MasterError::BadFrame { .. })) if group.points.len() > 1 => {
+                read_again_in_halves(&mut pending, &group, points, slave);
+            }
+            Err(
+                error @ RunError::Master(
+                    MasterError::Timeout { .. } | MasterError::OutOfStep { .. },
+                ),
+            ) if group.points.len() > 1 => {
+                unanswered.push((group, error));
             }
             Err(RunError::Exception { code, .. })
                 if refused == Refused::Around && code == ExceptionCode::ILLEGAL_DATA_ADDRESS =>
@@ -244,6 +281,31 @@ pub fn read_points(
     }
     read.values = values.into_iter().flatten().collect();
     Ok(read)
+}
+
+/// The points `members` (indices into `points`) read again next, a run at a time, in
+/// address order, before the groups still to read.
+fn read_again(pending: &mut VecDeque<Group>, members: &[usize], points: &[&Point], slave: u8) {
+    let chosen: Vec<&Point> = members.iter().map(|i| points[*i]).collect();
+    for mut run in groups(&chosen, slave, None).into_iter().rev() {
+        for index in &mut run.points {
+            *index = members[*index];
+        }
+        pending.push_front(run);
+    }
+}
+
+/// A group's points read again in two halves, the first read first.
+fn read_again_in_halves(
+    pending: &mut VecDeque<Group>,
+    group: &Group,
+    points: &[&Point],
+    slave: u8,
+) {
+    let (first, second) = group.points.split_at(group.points.len() / 2);
+    for half in [second, first] {
+        read_again(pending, half, points, slave);
+    }
 }
 
 /// Whether an exception may be about some of a request's points only: an address the
