@@ -381,9 +381,27 @@ fn end_tcp(mut session: TcpSession, mut sinks: Sinks) -> Result<()> {
     sinks
         .writer
         .summary(&mut sinks.out, session.counts(), Some(&packets))?;
-    if let (0, Some((port, count))) = (packets.modbus, session.modbus_elsewhere()) {
+    // Two packets at least, so that a stray one of another protocol is no Modbus port.
+    let elsewhere: Vec<(u16, u64)> = session
+        .modbus_elsewhere()
+        .into_iter()
+        .filter(|(_, count)| *count >= 2)
+        .collect();
+    if !elsewhere.is_empty() {
+        let ports: Vec<String> = elsewhere
+            .iter()
+            .take(4)
+            .map(|(port, count)| format!("{port} ({count} packets)"))
+            .collect();
+        let options: Vec<String> = elsewhere
+            .iter()
+            .take(4)
+            .map(|(port, _)| format!("--tcp-port {port}"))
+            .collect();
         mbtool::note!(
-            "mbtool: {count} packets on TCP port {port} carry Modbus TCP headers: give --tcp-port {port} to read them"
+            "mbtool: packets on TCP port {} carry Modbus TCP headers: give {} to read them",
+            ports.join(", "),
+            options.join(" ")
         );
     }
     if let Some(stats) = &sinks.stats {

@@ -364,8 +364,14 @@ impl SniffWriter {
                     return out.write_all(self.text.as_bytes());
                 };
                 let r = frame.report();
+                // An answer that does not fit its request, or answers none seen, says so.
+                let note = match (&frame.mismatch, r.kind, place.request_packet) {
+                    (Some(mismatch), ..) => format!(" (does not fit the request: {mismatch})"),
+                    (None, Kind::Response | Kind::Exception, None) => " (no request seen)".into(),
+                    _ => String::new(),
+                };
                 let mut text = format!(
-                    "#{:<6}{} {}  tid {:<5} unit {:<3} {:>2} {:<30} {:<9} {}{}",
+                    "#{:<6}{} {}  tid {:<5} unit {:<3} {:>2} {:<30} {:<9} {}{note}{}",
                     frame.number,
                     Self::when(Some(frame.at), frame.found.offset),
                     connection(place),

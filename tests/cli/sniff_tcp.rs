@@ -789,7 +789,7 @@ fn modbus_on_another_port_is_named_and_an_exception_keeps_its_code() {
         .unwrap();
     assert!(output.status.success());
     assert!(String::from_utf8_lossy(&output.stderr).contains(
-        "mbtool: 4 packets on TCP port 502 carry Modbus TCP headers: give --tcp-port 502 to read them"
+        "mbtool: packets on TCP port 502 (4 packets) carry Modbus TCP headers: give --tcp-port 502 to read them"
     ));
     let output = mbtool()
         .args(["sniff", "--json", "--input"])

@@ -1098,3 +1098,100 @@ fn a_client_of_an_older_tls_is_told_so() {
         std::fs::read_to_string(&log).unwrap()
     );
 }
+
+/// A device whose certificate is X.509 version 1 (openssl x509 -req without -extfile),
+/// which has no subjectAltName, is told so, with how to make one that serves.
+#[test]
+fn a_device_certificate_of_version_one_is_told_as_such() {
+    if !peer_available("openssl", command_exists("openssl")) {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let path = |name: &str| dir.path().join(name).display().to_string();
+    let openssl = |args: &[&str]| {
+        let status = std::process::Command::new("openssl")
+            .args(args)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .status()
+            .unwrap();
+        assert!(status.success(), "openssl {args:?}");
+    };
+    let ec = [
+        "-newkey",
+        "ec",
+        "-pkeyopt",
+        "ec_paramgen_curve:prime256v1",
+        "-nodes",
+    ];
+    openssl(
+        &[
+            &["req", "-x509"],
+            &ec[..],
+            &[
+                "-keyout",
+                &path("ca.key"),
+                "-out",
+                &path("ca.pem"),
+                "-subj",
+                "/CN=ca",
+                "-days",
+                "5",
+            ],
+        ]
+        .concat(),
+    );
+    openssl(
+        &[
+            &["req"],
+            &ec[..],
+            &[
+                "-keyout",
+                &path("d.key"),
+                "-out",
+                &path("d.csr"),
+                "-subj",
+                "/CN=localhost",
+            ],
+        ]
+        .concat(),
+    );
+    openssl(&[
+        "x509",
+        "-req",
+        "-in",
+        &path("d.csr"),
+        "-CA",
+        &path("ca.pem"),
+        "-CAkey",
+        &path("ca.key"),
+        "-CAcreateserial",
+        "-out",
+        &path("d.pem"),
+        "-days",
+        "5",
+    ]);
+    let port = free_port();
+    let _device = Stopped(
+        std::process::Command::new("openssl")
+            .args(["s_server", "-quiet", "-accept", &port.to_string()])
+            .args(["-cert", &path("d.pem"), "-key", &path("d.key")])
+            .stdin(Stdio::piped())
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    assert!(wait_for_listener(port, Duration::from_secs(10)));
+    let (code, _, err) = client(
+        &format!("tls://localhost:{port}"),
+        &["--ca".to_string(), path("ca.pem")],
+        "read-holding 17 400108",
+    );
+    assert_eq!(code, 1, "{err}");
+    assert!(
+        err.contains("the device's certificate is X.509 version 1")
+            && err.contains("subjectAltName=DNS:localhost"),
+        "{err}"
+    );
+}

@@ -151,15 +151,12 @@ impl TcpSession {
         }
     }
 
-    /// The port not asked for that most packets with MBAP headers were on, and how many:
-    /// Modbus TCP served on a port of its own.
-    pub fn modbus_elsewhere(&self) -> Option<(u16, u64)> {
-        // A server's port is in every connection to it, each client's in its own: the
-        // port of the most packets, the lower of two alike.
-        self.elsewhere
-            .iter()
-            .max_by_key(|(port, count)| (**count, std::cmp::Reverse(**port)))
-            .map(|(port, count)| (*port, *count))
+    /// The server ports not asked for whose packets carry MBAP headers, and how many, the
+    /// most first: Modbus TCP served on ports of its own.
+    pub fn modbus_elsewhere(&self) -> Vec<(u16, u64)> {
+        let mut ports: Vec<(u16, u64)> = self.elsewhere.iter().map(|(p, n)| (*p, *n)).collect();
+        ports.sort_by_key(|(port, count)| (std::cmp::Reverse(*count), *port));
+        ports
     }
 
     /// The first packet's time, in microseconds since 1970: frames are timed from it.
@@ -201,9 +198,9 @@ impl TcpSession {
         } else {
             self.packets.other += 1;
             if looks_like_mbap(segment.payload) {
-                for port in [segment.source.port(), segment.destination.port()] {
-                    *self.elsewhere.entry(port).or_default() += 1;
-                }
+                // A server's port is nearly always the lower: clients' are ephemeral.
+                let server = segment.source.port().min(segment.destination.port());
+                *self.elsewhere.entry(server).or_default() += 1;
             }
             return;
         };

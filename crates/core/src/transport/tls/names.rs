@@ -29,6 +29,25 @@ impl std::fmt::Display for NameOnlyInCn {
 
 impl std::error::Error for NameOnlyInCn {}
 
+/// A certificate of X.509 version 1, which has no extensions (no subjectAltName): what
+/// `openssl x509 -req` makes without `-extfile`.
+#[derive(Debug)]
+pub(super) struct VersionOne;
+
+impl std::fmt::Display for VersionOne {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("an X.509 version 1 certificate")
+    }
+}
+
+impl std::error::Error for VersionOne {}
+
+/// Whether a certificate is of X.509 version 1.
+fn is_version_one(certificate: &[u8]) -> bool {
+    x509_parser::parse_x509_certificate(certificate)
+        .is_ok_and(|(_, parsed)| parsed.version() == x509_parser::x509::X509Version::V1)
+}
+
 /// webpki's verifier, with a CN-only certificate told apart.
 #[derive(Debug)]
 pub(super) struct NamingVerifier {
@@ -68,6 +87,11 @@ impl ServerCertVerifier for NamingVerifier {
         self.inner
             .verify_server_cert(end_entity, intermediates, server_name, ocsp_response, now)
             .map_err(|error| match &error {
+                rustls::Error::InvalidCertificate(_) if is_version_one(end_entity) => {
+                    rustls::Error::InvalidCertificate(CertificateError::Other(OtherError(
+                        Arc::new(VersionOne),
+                    )))
+                }
                 rustls::Error::InvalidCertificate(
                     CertificateError::NotValidForName
                     | CertificateError::NotValidForNameContext { .. },

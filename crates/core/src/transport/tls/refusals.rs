@@ -5,7 +5,7 @@ use std::io;
 
 use rustls::{AlertDescription, CertificateError};
 
-use super::names::NameOnlyInCn;
+use super::names::{NameOnlyInCn, VersionOne};
 use super::{ClientTls, MODBUS_TLS_PORT};
 
 /// What a device that speaks an older TLS is told.
@@ -44,13 +44,20 @@ pub(super) fn client_side(error: io::Error, port: u16, name: &str, tls: &ClientT
             CertificateError::InvalidPurpose | CertificateError::InvalidPurposeContext { .. } => {
                 "the device's certificate is not one for a server (its extended key usage lacks serverAuth): the device needs a server certificate".into()
             }
-            CertificateError::Other(other) => match other.0.downcast_ref::<NameOnlyInCn>() {
-                Some(cn) => format!(
-                    "the device's certificate has no subjectAltName: its name '{}' is only in its subject CN, which TLS clients no longer read (RFC 6125): issue it again with subjectAltName DNS:{name} (or IP:{name})",
-                    cn.common_name
-                ),
-                None => format!("the device's certificate was refused: {}", plainly(other)),
-            },
+            CertificateError::Other(other) => {
+                if let Some(cn) = other.0.downcast_ref::<NameOnlyInCn>() {
+                    format!(
+                        "the device's certificate has no subjectAltName: its name '{}' is only in its subject CN, which TLS clients no longer read (RFC 6125): issue it again with subjectAltName DNS:{name} (or IP:{name})",
+                        cn.common_name
+                    )
+                } else if other.0.downcast_ref::<VersionOne>().is_some() {
+                    format!(
+                        "the device's certificate is X.509 version 1, which holds no extensions and so no subjectAltName: issue it again as version 3 with subjectAltName DNS:{name} (openssl x509 -req ... -extfile with subjectAltName=DNS:{name})"
+                    )
+                } else {
+                    format!("the device's certificate was refused: {}", plainly(other))
+                }
+            }
             other => format!("the device's certificate was refused: {}", plainly(other)),
         },
         Some(rustls::Error::AlertReceived(alert)) => match alert {
