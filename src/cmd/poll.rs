@@ -94,6 +94,8 @@ pub fn run<W: PollRows>(
         )
     };
     let mut path = None;
+    // Polls read whole but for some points (a map's): the tally counts them as answered.
+    let mut failing_polls = 0u64;
     let stats = poll(connect, read, options, wait, |tick| {
         let time = now();
         let failure = match tick {
@@ -103,6 +105,7 @@ pub fn run<W: PollRows>(
                     log.rows.row(&mut log.file, &item, &time)?;
                 }
                 last_status = screen.status(&item);
+                failing_polls += u64::from(last_status != 0);
                 None
             }
             Tick::Failed(error) => {
@@ -143,6 +146,13 @@ pub fn run<W: PollRows>(
         }
         Ok(())
     })?;
-    mbtool::note!("mbtool: {}", stats.summary());
+    let failing = match failing_polls {
+        0 => String::new(),
+        n => format!(
+            "; in {} some points failed (their rows say why)",
+            output::plural(n as usize, "poll")
+        ),
+    };
+    mbtool::note!("mbtool: {}{failing}", stats.summary());
     Ok(last_status)
 }
