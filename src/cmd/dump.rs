@@ -112,7 +112,32 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
         "mbtool: dumped {values} addresses of slave {slave} to {target} in {}{not_at_once}",
         plural(dump.requests as usize, "request")
     );
-    Ok(0)
+    // Addresses the device has and could not give are no holes: the dump lacks them, and
+    // its status is the first one's exception.
+    let Some((_, first)) = dump.unreadable.first() else {
+        return Ok(0);
+    };
+    let told: Vec<String> = dump
+        .unreadable
+        .iter()
+        .map(|(range, code)| {
+            format!(
+                "{} ({code})",
+                output::backup::range_text(range.table, range.address, range.count)
+            )
+        })
+        .collect();
+    mbtool::note!(
+        "mbtool: slave {slave} could not give {}: {}; they are left out of the dump",
+        plural(told.len(), "address"),
+        told.join(", ")
+    );
+    let first = RunError::Exception {
+        slave,
+        function: dump.unreadable[0].0.table.read_function(),
+        code: *first,
+    };
+    Ok(mbtool::error::run_exit_code(&first))
 }
 
 /// The file a dump is written into before it is renamed to `path`: hidden, beside it.

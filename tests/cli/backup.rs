@@ -321,3 +321,43 @@ fn a_dump_to_a_folder_that_does_not_exist_is_refused_before_reading() {
         "{stderr}"
     );
 }
+
+/// An address the device has but fails to give (exception 04 for it alone) is that
+/// address's alone: the dump holds the others, names it, and exits 14.
+#[test]
+fn an_address_the_device_fails_on_is_left_out_and_named() {
+    let tcp = scripted_tcp_device(|_, pdu| {
+        let word = |i: usize| u16::from_be_bytes([pdu[i], pdu[i + 1]]);
+        let (address, quantity) = (word(1), word(3));
+        if (address..address + quantity).contains(&3) {
+            return Act::Answer(vec![0x83, 0x04]);
+        }
+        let mut answer = vec![0x03, (quantity * 2) as u8];
+        for register in address..address + quantity {
+            answer.extend_from_slice(&(register + 100).to_be_bytes());
+        }
+        Act::Answer(answer)
+    });
+    let output = mbtool()
+        .args([
+            "--port",
+            &format!("127.0.0.1:{tcp}"),
+            "dump",
+            "1",
+            "400001-400006",
+        ])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(14), "{stderr}");
+    let dumped: Vec<String> = String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .filter(|line| !line.starts_with('#'))
+        .map(String::from)
+        .collect();
+    assert_eq!(dumped, ["400001 = 100 101 102", "400005 = 104 105"]);
+    assert!(
+        stderr.contains("could not give 1 address: 400004 (04 slave device failure)"),
+        "{stderr}"
+    );
+}

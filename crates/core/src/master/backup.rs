@@ -30,6 +30,9 @@ pub struct Dump {
     pub entries: Vec<Entry>,
     /// The runs of addresses the device refused with exception 02.
     pub holes: Vec<Range>,
+    /// Addresses the device has but could not give (exception 03 or 04 for them alone),
+    /// left out, with the exception.
+    pub unreadable: Vec<(Range, ExceptionCode)>,
     /// How many requests it took.
     pub requests: u64,
     /// It was stopped before every range was read: what it holds is a part.
@@ -121,7 +124,29 @@ fn read_splitting(
     dump.requests += 1;
     match read_one(master, slave, table, address, count) {
         Ok(values) => append(&mut dump.entries, table, address, values),
-        Err(RunError::Exception { code, .. }) if code == ExceptionCode::ILLEGAL_DATA_ADDRESS => {
+        Err(RunError::Exception { code, .. })
+            if count == 1
+                && matches!(
+                    code,
+                    ExceptionCode::ILLEGAL_DATA_VALUE | ExceptionCode::SERVER_DEVICE_FAILURE
+                ) =>
+        {
+            let range = Range {
+                table,
+                address,
+                count: 1,
+            };
+            dump.unreadable.push((range, code));
+        }
+        // One address's refusal is that address's alone: the run is read in halves.
+        Err(RunError::Exception { code, .. })
+            if matches!(
+                code,
+                ExceptionCode::ILLEGAL_DATA_ADDRESS
+                    | ExceptionCode::ILLEGAL_DATA_VALUE
+                    | ExceptionCode::SERVER_DEVICE_FAILURE
+            ) =>
+        {
             if count == 1 {
                 add_hole(&mut dump.holes, table, address, 1);
             } else {
