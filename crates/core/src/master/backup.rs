@@ -139,14 +139,13 @@ fn read_splitting(
             dump.unreadable.push((range, code));
         }
         // One address's refusal is that address's alone: the run is read in halves.
-        Err(RunError::Exception { code, .. })
-            if matches!(
-                code,
+        Err(RunError::Exception {
+            code:
                 ExceptionCode::ILLEGAL_DATA_ADDRESS
-                    | ExceptionCode::ILLEGAL_DATA_VALUE
-                    | ExceptionCode::SERVER_DEVICE_FAILURE
-            ) =>
-        {
+                | ExceptionCode::ILLEGAL_DATA_VALUE
+                | ExceptionCode::SERVER_DEVICE_FAILURE,
+            ..
+        }) => {
             if count == 1 {
                 add_hole(&mut dump.holes, table, address, 1);
             } else {
