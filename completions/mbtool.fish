@@ -34,7 +34,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_needs_command" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -129,7 +129,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -180,7 +180,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -231,7 +231,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -282,7 +282,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -348,7 +348,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -414,7 +414,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -480,7 +480,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -546,7 +546,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -613,7 +613,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -647,7 +647,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -682,7 +682,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -732,7 +732,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -782,7 +782,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -838,7 +838,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -885,7 +885,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
@@ -920,7 +920,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -979,7 +979,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -1010,7 +1010,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -1043,7 +1043,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -1087,7 +1087,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
@@ -1321,7 +1321,7 @@ even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r

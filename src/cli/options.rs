@@ -66,7 +66,7 @@ pub struct ConnectionArgs {
     pub stop_bits: Option<u8>,
 
     /// Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up
-    /// to 60) [default: 1s; 100ms for scan]
+    /// to 60) [default: 1s; 100ms for scan, 800ms for gateway]
     #[arg(long, global = true, env = "MBTOOL_TIMEOUT", hide_env_values = true, value_parser = positive_duration)]
     pub timeout: Option<std::time::Duration>,
 

@@ -127,8 +127,10 @@ pub struct TcpSession {
     last_time: u64,
     pieces: Vec<Piece>,
     found: Vec<Completed>,
-    /// Packets on other ports whose payload reads as MBAP, by port.
+    /// Packets on other ports whose payload reads as MBAP, by their server's port.
     elsewhere: BTreeMap<u16, u64>,
+    /// The servers of connections on other ports, as their SYNs tell (bounded).
+    servers_elsewhere: std::collections::HashSet<SocketAddr>,
 }
 
 impl TcpSession {
@@ -148,6 +150,7 @@ impl TcpSession {
             pieces: Vec::new(),
             found: Vec::new(),
             elsewhere: BTreeMap::new(),
+            servers_elsewhere: std::collections::HashSet::new(),
         }
     }
 
@@ -197,9 +200,22 @@ impl TcpSession {
             (segment.destination, segment.source, false)
         } else {
             self.packets.other += 1;
+            // A connection's server is the end its SYN went to; where the capture has no
+            // SYN, the lower port (clients' are ephemeral).
+            if segment.syn
+                && segment.acknowledgement.is_none()
+                && self.servers_elsewhere.len() < 4096
+            {
+                self.servers_elsewhere.insert(segment.destination);
+            }
             if looks_like_mbap(segment.payload) {
-                // A server's port is nearly always the lower: clients' are ephemeral.
-                let server = segment.source.port().min(segment.destination.port());
+                let server = if self.servers_elsewhere.contains(&segment.source) {
+                    segment.source.port()
+                } else if self.servers_elsewhere.contains(&segment.destination) {
+                    segment.destination.port()
+                } else {
+                    segment.source.port().min(segment.destination.port())
+                };
                 *self.elsewhere.entry(server).or_default() += 1;
             }
             return;
