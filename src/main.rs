@@ -1,5 +1,5 @@
 //! The `mbtool` binary: parses the command line, runs the command, and turns every outcome
-//! into one line on stderr and the exit status of CLI.md.
+//! into one line on stderr and the exit status the README gives it.
 
 // The C runtime calls `main` below directly, not through the standard library's start: see
 // `main`. A test build keeps the test harness's own `main`, and leaves the rest unused.

@@ -1,5 +1,5 @@
 //! The master against a strict scripted slave on a pseudo-terminal, which plays exact bytes:
-//! every fault a real bus produces gets the exit status and message CLI.md promises.
+//! every fault a real bus produces gets the exit status and message the README promises.
 
 use std::thread;
 use std::time::Duration;
