@@ -81,6 +81,10 @@ impl Sources for Folder {
         paths.iter().map(|path| read(path)).collect()
     }
 
+    fn env(&mut self, name: &str) -> Option<String> {
+        std::env::var(name).ok()
+    }
+
     /// The `secrets.yaml` beside the file, then in each folder above it, the first that
     /// has the name, as Home Assistant looks up from an included file to its configuration.
     fn secret(&mut self, from: &str, name: &str) -> Result<String, String> {

@@ -37,6 +37,10 @@ pub trait Sources {
     /// The value of secret `name` for file `from`, found as Home Assistant finds it; or
     /// where it was looked for.
     fn secret(&mut self, from: &str, name: &str) -> Result<String, String>;
+    /// The environment variable `name`, for `!env_var`; none where there is no environment.
+    fn env(&mut self, _name: &str) -> Option<String> {
+        None
+    }
 }
 
 /// Text with no files around it: includes and secrets are not found.
@@ -503,6 +507,19 @@ impl Values for FileValues<'_> {
                 .secret(self.file, value)
                 .map(Some)
                 .map_err(|looked| format!("{key} is !secret {value}, and {looked}")),
+            // `!env_var NAME [DEFAULT]`, as Home Assistant reads it.
+            Some("!env_var") => {
+                let (name, default) = value
+                    .split_once(char::is_whitespace)
+                    .map_or((value.as_str(), None), |(name, default)| {
+                        (name, Some(default.trim()))
+                    });
+                match (self.sources.env(name), default) {
+                    (Some(set), _) => Ok(Some(set)),
+                    (None, Some(default)) => Ok(Some(default.to_string())),
+                    (None, None) => Err(format!("{key} is !env_var {name}, which is not set")),
+                }
+            }
             Some(tag) => Err(format!(
                 "{key} is {tag} {value}, which is not read here: give the value"
             )),

@@ -308,3 +308,17 @@ fn the_modbus_of_packages_is_read_as_home_assistant_merges_it() {
     let map = read(inline).unwrap();
     assert_eq!(names(&map), ["flow", "level"]);
 }
+
+#[test]
+fn an_environment_variable_is_read_or_its_default_taken() {
+    let text = |port: &str| {
+        format!("name: a\ntype: tcp\nhost: h\nport: {port}\nsensors:\n  - name: x\n    address: !env_var MBTOOL_TEST_UNSET_ADDRESS 7\n")
+    };
+    let map = read(&text("502")).unwrap();
+    assert_eq!(map.points[0].address, 7);
+    let unknown = read(&text("!env_var MBTOOL_TEST_UNSET_PORT")).unwrap();
+    assert_eq!(
+        unknown.unknown_place.as_deref(),
+        Some("port is !env_var MBTOOL_TEST_UNSET_PORT, which is not set")
+    );
+}
