@@ -520,20 +520,45 @@ fn with_holders(path: &str, error: io::Error) -> io::Error {
     if holders.is_empty() {
         return error;
     }
-    let named: Vec<String> = holders
+    io::Error::new(
+        error.kind(),
+        format!(
+            "{error}: {path} is open in {}; close it there first",
+            processes(&holders)
+        ),
+    )
+}
+
+/// Processes as a message names them: `minicom (pid 4242), pid 77`.
+pub fn processes(holders: &[mbtool_core::transport::ports::Holder]) -> String {
+    holders
         .iter()
         .map(|holder| match &holder.command {
             Some(command) => format!("{command} (pid {})", holder.pid),
             None => format!("pid {}", holder.pid),
         })
-        .collect();
-    io::Error::new(
-        error.kind(),
-        format!(
-            "{error}: {path} is open in {}; close it there first",
-            named.join(", ")
-        ),
-    )
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// A TCP listener on `host:port` for `endpoint`; a port another process listens on is
+/// named with that process.
+pub fn listen(endpoint: &Endpoint, host: &str, port: u16) -> anyhow::Result<std::net::TcpListener> {
+    std::net::TcpListener::bind((host, port)).map_err(|error| {
+        let holders = match error.kind() {
+            io::ErrorKind::AddrInUse => {
+                mbtool_core::transport::ports::listeners_of(std::path::Path::new("/"), port)
+            }
+            _ => Vec::new(),
+        };
+        match holders.as_slice() {
+            [] => anyhow::anyhow!("cannot listen on {endpoint}: {error}"),
+            held => anyhow::anyhow!(
+                "cannot listen on {endpoint}: {error}: port {port} is taken by {}; stop it, or give another port",
+                processes(held)
+            ),
+        }
+    })
 }
 
 /// The connection settings with what a map's file says of its device (a Home Assistant

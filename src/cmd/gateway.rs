@@ -4,7 +4,7 @@ use std::io::{self, Write};
 use std::net::TcpListener;
 use std::sync::{mpsc, Arc, Mutex};
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 
 use mbtool::cli::GatewayArgs;
 use mbtool::connection::{self, Role};
@@ -75,8 +75,7 @@ fn listeners(settings: &Settings, args: &GatewayArgs) -> Result<Vec<(TcpListener
         let (Endpoint::Tcp { host, port } | Endpoint::Tls { host, port }) = &endpoint else {
             continue;
         };
-        let listener = TcpListener::bind((host.as_str(), *port))
-            .with_context(|| format!("cannot listen on {endpoint}"))?;
+        let listener = connection::listen(&endpoint, host, *port)?;
         let listening = match (&endpoint, &security) {
             (Endpoint::Tls { .. }, Some(security)) => Listening::Secure(Arc::clone(security)),
             _ => Listening::Plain(plain_role.clone()),

@@ -1,7 +1,6 @@
 //! `mbtool serve`: a simulated slave on a serial line or TCP.
 
 use std::io::Write;
-use std::net::TcpListener;
 use std::sync::Arc;
 
 use anyhow::{Context, Result};
@@ -132,8 +131,7 @@ pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
         Endpoint::Tcp { host, port }
         | Endpoint::RtuOverTcp { host, port }
         | Endpoint::Tls { host, port } => {
-            let listener = TcpListener::bind((host.as_str(), *port))
-                .with_context(|| format!("cannot listen on {endpoint}"))?;
+            let listener = connection::listen(&endpoint, host, *port)?;
             let address = listener.local_addr()?;
             let over = match security {
                 Some(_) => "Modbus TCP over TLS".to_string(),

@@ -401,3 +401,36 @@ fn address_base_one_counts_as_mbpoll_does() {
         .expect("mbtool runs");
     assert_eq!(String::from_utf8_lossy(&output.stdout), "1\n0\n1\n");
 }
+
+/// A port another process listens on is refused with that process named, for serve and
+/// for the gateway.
+#[test]
+fn a_taken_port_names_the_process_that_listens_on_it() {
+    let (first, port_args, port) = crate::support::serve_tcp(&[]);
+    for args in [
+        vec![
+            port_args[0].clone(),
+            port_args[1].clone(),
+            "serve".to_string(),
+        ],
+        vec![
+            "--port".to_string(),
+            "sim".to_string(),
+            "gateway".to_string(),
+            "--listen".to_string(),
+            format!("tcp://127.0.0.1:{port}"),
+        ],
+    ] {
+        let output = crate::support::mbtool().args(&args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(1), "{stderr}");
+        assert!(
+            stderr.contains(&format!(
+                "port {port} is taken by mbtool (pid {})",
+                first.0.id()
+            )),
+            "{stderr}"
+        );
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    }
+}

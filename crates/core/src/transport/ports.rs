@@ -59,6 +59,94 @@ pub fn list(root: &Path) -> Vec<PortInfo> {
     ports
 }
 
+/// Every file that every process whose descriptors this user may read has open, and that
+/// `keep` takes (by the target of its descriptor: `/dev/ttyUSB0`, `socket:[1234]`), each
+/// once per process; this process's own left out.
+#[cfg(target_os = "linux")]
+fn open_files(root: &Path, keep: impl Fn(&str) -> bool) -> Vec<(Holder, String)> {
+    let mut found = Vec::new();
+    let own = std::process::id();
+    let processes = std::fs::read_dir(root.join("proc"))
+        .into_iter()
+        .flatten()
+        .flatten();
+    for process in processes {
+        let Some(pid) = process
+            .file_name()
+            .to_str()
+            .and_then(|n| n.parse::<u32>().ok())
+        else {
+            continue;
+        };
+        if pid == own {
+            continue;
+        }
+        let Ok(fds) = std::fs::read_dir(process.path().join("fd")) else {
+            continue;
+        };
+        let mut files: Vec<String> = fds
+            .flatten()
+            .filter_map(|fd| std::fs::read_link(fd.path()).ok())
+            .filter_map(|target| target.to_str().map(str::to_string))
+            .filter(|target| keep(target))
+            .collect();
+        files.sort();
+        files.dedup();
+        let command = read_text(&process.path().join("comm"));
+        for file in files {
+            found.push((
+                Holder {
+                    pid,
+                    command: command.clone(),
+                },
+                file,
+            ));
+        }
+    }
+    found
+}
+
+/// The processes listening on TCP port `port` (any address), as far as this user may see:
+/// the sockets of `/proc/net/tcp` and `tcp6` in state LISTEN, and who holds them.
+#[cfg(target_os = "linux")]
+pub fn listeners_of(root: &Path, port: u16) -> Vec<Holder> {
+    let mut sockets = Vec::new();
+    for table in ["proc/net/tcp", "proc/net/tcp6"] {
+        let text = std::fs::read_to_string(root.join(table)).unwrap_or_default();
+        for line in text.lines().skip(1) {
+            let fields: Vec<&str> = line.split_whitespace().collect();
+            let (Some(local), Some(state), Some(inode)) =
+                (fields.get(1), fields.get(3), fields.get(9))
+            else {
+                continue;
+            };
+            let listening = *state == "0A";
+            let on_port = local
+                .rsplit_once(':')
+                .and_then(|(_, hex)| u16::from_str_radix(hex, 16).ok())
+                == Some(port);
+            if listening && on_port {
+                sockets.push(format!("socket:[{inode}]"));
+            }
+        }
+    }
+    if sockets.is_empty() {
+        return Vec::new();
+    }
+    let mut holders: Vec<Holder> = open_files(root, |target| sockets.iter().any(|s| s == target))
+        .into_iter()
+        .map(|(holder, _)| holder)
+        .collect();
+    holders.dedup();
+    holders
+}
+
+/// Who listens on a port, where the system does not tell.
+#[cfg(not(target_os = "linux"))]
+pub fn listeners_of(_root: &Path, _port: u16) -> Vec<Holder> {
+    Vec::new()
+}
+
 /// The processes that have the serial port at `path` open (a link such as
 /// `/dev/serial/by-id/...` followed to its device), as far as this user may see.
 #[cfg(target_os = "linux")]
@@ -163,45 +251,9 @@ fn stable_names(root: &Path) -> Vec<(String, String)> {
 /// file (`/var/lock/LCK..ttyUSB0`, as minicom and many older tools leave).
 #[cfg(target_os = "linux")]
 fn holders(root: &Path) -> Vec<(Holder, String)> {
-    let mut found = Vec::new();
-    let own = std::process::id();
-    let processes = std::fs::read_dir(root.join("proc"))
-        .into_iter()
-        .flatten()
-        .flatten();
-    for process in processes {
-        let Some(pid) = process
-            .file_name()
-            .to_str()
-            .and_then(|n| n.parse::<u32>().ok())
-        else {
-            continue;
-        };
-        if pid == own {
-            continue;
-        }
-        let Ok(fds) = std::fs::read_dir(process.path().join("fd")) else {
-            continue;
-        };
-        let mut devices: Vec<String> = fds
-            .flatten()
-            .filter_map(|fd| std::fs::read_link(fd.path()).ok())
-            .filter_map(|target| target.to_str().map(str::to_string))
-            .filter(|target| target.starts_with("/dev/tty") || target.starts_with("/dev/pts/"))
-            .collect();
-        devices.sort();
-        devices.dedup();
-        let command = read_text(&process.path().join("comm"));
-        for device in devices {
-            found.push((
-                Holder {
-                    pid,
-                    command: command.clone(),
-                },
-                device,
-            ));
-        }
-    }
+    let mut found = open_files(root, |target| {
+        target.starts_with("/dev/tty") || target.starts_with("/dev/pts/")
+    });
     for folder in ["var/lock", "run/lock"] {
         let locks = std::fs::read_dir(root.join(folder))
             .into_iter()
