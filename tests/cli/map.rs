@@ -118,12 +118,12 @@ fn every_kind_of_point_reads_the_same_from_csv_and_from_home_assistant_yaml() {
         [
             "balance=-5",
             "count=1234",
-            "door=1",
+            "door=on",
             "energy=70000",
             "flow=2.50",
             "inlet=12",
             "label=PUMP 1",
-            "pump=1",
+            "pump=on",
             "ratio=0.12",
             "temperature=-22",
             "voltage=230.50"
@@ -746,14 +746,14 @@ fn a_home_assistant_hub_says_where_the_device_is() {
     let path = files(&dir, &[("ha.yaml", &yaml)]).remove(0);
     let (code, values, stderr) = run(&[], &["read", "17", "--map", &path, "-o", "values"]);
     assert_eq!(code, 0, "{stderr}");
-    assert_eq!(values, "voltage=230\nflow=7\nvalve=0\n");
+    assert_eq!(values, "voltage=230\nflow=7\nvalve=off\n");
     let (code, _, stderr) = run(&[], &["write", "17", "--map", &path, "valve=1"]);
     assert_eq!(code, 0, "{stderr}");
     let (_, values, _) = run(
         &[],
         &["read", "17", "--map", &path, "valve", "-o", "values"],
     );
-    assert_eq!(values, "valve=1\n");
+    assert_eq!(values, "valve=on\n");
     // The command line wins: its port is the one asked.
     let (code, _, stderr) = run(
         &["--port".into(), "127.0.0.1:9".into()],

@@ -97,7 +97,7 @@ def states(platform, entity):
                 on = bit(table, address + i)
             else:
                 on = register(table, address + i) & 1 == 1
-            out.append((name, table, address + i, "1" if on else "0"))
+            out.append((name, table, address + i, "on" if on else "off"))
         return out
     return [(entity["name"], None, address, None)]
 

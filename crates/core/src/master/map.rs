@@ -346,15 +346,24 @@ fn point_value(
         .get(offset..offset + width)
         .unwrap_or_default()
         .to_vec();
+    let states = point.shown.as_ref().and_then(|shown| shown.states.as_ref());
     let value = match (point.kind, point.bit) {
         (Kind::Bool, Some(bit)) => {
             let register = raw.first().copied().unwrap_or_default();
             Value::Unsigned(u64::from(register >> bit & 1))
         }
         (Kind::Bool, None) => Value::Unsigned(u64::from(coil(bits, offset))),
+        // A register that stands for states (a switch's, a cover's) is named by them.
+        (Kind::Number(_), _) if states.is_some() => {
+            Value::Unsigned(u64::from(raw.first().copied().unwrap_or_default()))
+        }
         (Kind::Number(value_type), _) => scaled(point, value_type.read(&raw, point.order)),
         (Kind::Text(_), _) => text(&raw, point.order),
         (Kind::Packed(_), _) => packed(point, &raw),
+    };
+    let value = match (states, &value) {
+        (Some(states), Value::Unsigned(raw)) => states.state(*raw),
+        _ => value,
     };
     PointValue {
         point: index,

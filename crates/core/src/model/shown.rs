@@ -19,6 +19,45 @@ pub struct Shown {
     pub nan: Option<i128>,
     /// A value at most this far from 0 is shown as 0.
     pub zero_suppress: Option<f64>,
+    /// The states a raw value stands for, for an entity that is on or off, open or closed.
+    pub states: Option<States>,
+}
+
+/// What Home Assistant names the states of an entity that has states, not a number.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum States {
+    /// A binary sensor, switch, light or fan: on for one of `on`, off for one of `off`.
+    OnOff {
+        /// The values that are on.
+        on: Vec<i64>,
+        /// The values that are off.
+        off: Vec<i64>,
+    },
+    /// A cover: open, closed, opening, closing for these values.
+    Cover {
+        /// The values of open, closed, opening and closing, in that order.
+        values: [i64; 4],
+    },
+}
+
+impl States {
+    /// The state a raw value stands for; `unknown` for one that stands for none.
+    pub fn state(&self, raw: u64) -> Value {
+        let raw = i64::try_from(raw).unwrap_or(i64::MAX);
+        let name = match self {
+            States::OnOff { on, .. } if on.contains(&raw) => "on",
+            States::OnOff { off, .. } if off.contains(&raw) => "off",
+            States::Cover { values } => match values.iter().position(|value| *value == raw) {
+                Some(0) => "open",
+                Some(1) => "closed",
+                Some(2) => "opening",
+                Some(3) => "closing",
+                _ => UNKNOWN,
+            },
+            States::OnOff { .. } => UNKNOWN,
+        };
+        Value::Text(name.into())
+    }
 }
 
 /// What a value the device marks as none is shown as: Home Assistant's state for it.
@@ -111,5 +150,20 @@ mod tests {
         assert_eq!(marked.number(1.0, 0.0, -32767.0).to_string(), UNKNOWN);
         assert_eq!(marked.number(0.1, 0.0, 3.0).to_string(), "0");
         assert_eq!(plain.number(1.0, 0.0, f64::NAN).to_string(), UNKNOWN);
+    }
+
+    #[test]
+    fn states_as_home_assistant_names_them() {
+        let switch = States::OnOff {
+            on: vec![1, 2, 3],
+            off: vec![0],
+        };
+        let named: Vec<String> = (0..5).map(|raw| switch.state(raw).to_string()).collect();
+        assert_eq!(named, ["off", "on", "on", "on", UNKNOWN]);
+        let cover = States::Cover {
+            values: [1, 0, 2, 3],
+        };
+        let named: Vec<String> = (0..5).map(|raw| cover.state(raw).to_string()).collect();
+        assert_eq!(named, ["closed", "open", "opening", "closing", UNKNOWN]);
     }
 }

@@ -4,13 +4,21 @@
 //! `min_value`, `max_value`, `nan_value`, `zero_suppress`), `slave_count` and
 //! `virtual_count` expanded into the entities Home Assistant adds (`name 1`, `name 2`, ...).
 
-use super::schema::{Entity, Field};
+use super::schema::{Entity, Field, Numbers};
 use crate::model::address::Table;
 use crate::model::map::{checked, Kind, Point};
 use crate::model::number::parse_int;
-use crate::model::shown::Shown;
+use crate::model::shown::{Shown, States};
 use crate::model::structure::Structure;
 use crate::model::values::{ByteOrder, ValueType};
+
+/// How a value is shown that stands for these states.
+fn with_states(states: States) -> Shown {
+    Shown {
+        states: Some(states),
+        ..Shown::default()
+    }
+}
 
 /// The platforms of the modbus integration, in the order Home Assistant sets them up.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -165,6 +173,10 @@ pub(super) fn points<V: Values>(
                 // Home Assistant takes bit 0 of a register.
                 point.bit = Some(0);
             }
+            point.shown = Some(with_states(States::OnOff {
+                on: vec![1],
+                off: vec![0],
+            }));
             count_of(&mut keys, entity)?
         }
         Platform::Switch | Platform::Light | Platform::Fan => {
@@ -196,6 +208,28 @@ pub(super) fn points<V: Values>(
             point.table = read_table;
             point.writable = read_at == address && read_table == written;
             point.kind = state_kind(read_table);
+            // A bit is on or off; a register is on for `state_on` (the command that turns
+            // it on, 1 unless given) and off for `state_off`.
+            let on = keys
+                .whole(&entity.command_on, "command_on", 0, 65535)?
+                .unwrap_or(1) as i64;
+            let off = keys
+                .whole(&entity.command_off, "command_off", 0, 65535)?
+                .unwrap_or(0) as i64;
+            let verify = entity.verify.as_ref().and_then(Option::as_ref);
+            let listed = |numbers: Option<&Numbers>, command: i64| {
+                numbers.map_or_else(|| vec![command], |numbers| numbers.0.clone())
+            };
+            point.shown = Some(with_states(match read_table.is_bits() {
+                true => States::OnOff {
+                    on: vec![1],
+                    off: vec![0],
+                },
+                false => States::OnOff {
+                    on: listed(verify.and_then(|v| v.state_on.as_ref()), on),
+                    off: listed(verify.and_then(|v| v.state_off.as_ref()), off),
+                },
+            }));
             0
         }
         Platform::Cover => {
@@ -220,6 +254,25 @@ pub(super) fn points<V: Values>(
                 None => point.table = moved,
             }
             point.kind = state_kind(point.table);
+            let mut value = |field: &Field, key: &str, default: i64| -> Result<i64, String> {
+                Ok(keys
+                    .whole(field, key, 0, 65535)?
+                    .map_or(default, |v| v as i64))
+            };
+            point.shown = Some(with_states(match point.table.is_bits() {
+                // A coil that is set is an open cover.
+                true => States::Cover {
+                    values: [1, 0, -1, -1],
+                },
+                false => States::Cover {
+                    values: [
+                        value(&entity.state_open, "state_open", 1)?,
+                        value(&entity.state_closed, "state_closed", 0)?,
+                        value(&entity.state_opening, "state_opening", 2)?,
+                        value(&entity.state_closing, "state_closing", 3)?,
+                    ],
+                },
+            }));
             0
         }
     };
@@ -370,6 +423,7 @@ fn valued<V: Values>(
         max: keys.number(&entity.max_value, "max_value")?,
         nan: keys.whole(&entity.nan_value, "nan_value", -(1 << 64), 1 << 64)?,
         zero_suppress: keys.number(&entity.zero_suppress, "zero_suppress")?,
+        states: None,
     });
     Ok(extra)
 }

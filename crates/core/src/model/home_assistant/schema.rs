@@ -207,8 +207,12 @@ pub(super) struct Entity {
     pub status_register: Field,
     pub status_register_type: Field,
     pub command_on: Field,
+    pub command_off: Field,
     pub target_temp_register: Option<serde::de::IgnoredAny>,
-    pub state_open: Option<serde::de::IgnoredAny>,
+    pub state_open: Field,
+    pub state_closed: Field,
+    pub state_opening: Field,
+    pub state_closing: Field,
 }
 
 /// A switch's `verify:`, where its state is read back.
@@ -216,4 +220,37 @@ pub(super) struct Entity {
 pub(super) struct Verify {
     pub address: Field,
     pub input_type: Field,
+    pub state_on: Option<Numbers>,
+    pub state_off: Option<Numbers>,
+}
+
+/// A number or a list of them (`state_on: 1`, `state_on: [1, 2]`).
+pub(super) struct Numbers(pub Vec<i64>);
+
+impl<'de> Deserialize<'de> for Numbers {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct OneOrMany;
+        impl<'de> Visitor<'de> for OneOrMany {
+            type Value = Numbers;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a number or a list of numbers")
+            }
+            fn visit_i64<E: serde::de::Error>(self, n: i64) -> Result<Numbers, E> {
+                Ok(Numbers(vec![n]))
+            }
+            fn visit_u64<E: serde::de::Error>(self, n: u64) -> Result<Numbers, E> {
+                i64::try_from(n)
+                    .map(|n| Numbers(vec![n]))
+                    .map_err(E::custom)
+            }
+            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Numbers, A::Error> {
+                let mut numbers = Vec::new();
+                while let Some(n) = seq.next_element::<i64>()? {
+                    numbers.push(n);
+                }
+                Ok(Numbers(numbers))
+            }
+        }
+        deserializer.deserialize_any(OneOrMany)
+    }
 }

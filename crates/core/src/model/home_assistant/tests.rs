@@ -322,3 +322,41 @@ fn an_environment_variable_is_read_or_its_default_taken() {
         Some("port is !env_var MBTOOL_TEST_UNSET_PORT, which is not set")
     );
 }
+
+#[test]
+fn switches_and_covers_are_named_by_their_states() {
+    use crate::model::shown::States;
+    let text = "
+- name: h
+  type: tcp
+  host: h
+  port: 502
+  switches:
+    - name: heat
+      address: 4
+      command_on: 5
+      verify:
+        state_on: [5, 6]
+  covers:
+    - name: shutter
+      address: 8
+      status_register: 9
+      state_open: 10
+";
+    let map = read(text).unwrap();
+    let states = |i: usize| map.points[i].shown.clone().unwrap().states.unwrap();
+    assert_eq!(
+        states(0),
+        States::OnOff {
+            on: vec![5, 6],
+            off: vec![0]
+        }
+    );
+    assert_eq!(
+        states(1),
+        States::Cover {
+            values: [10, 0, 2, 3]
+        }
+    );
+    assert_eq!(map.points[1].address, 9);
+}
