@@ -754,6 +754,14 @@ fn a_home_assistant_hub_says_where_the_device_is() {
         &["read", "17", "--map", &path, "valve", "-o", "values"],
     );
     assert_eq!(values, "valve=on\n");
+    // Off, as a word, is the switch's command_off (0 unless given).
+    let (code, _, stderr) = run(&[], &["write", "17", "--map", &path, "valve=off"]);
+    assert_eq!(code, 0, "{stderr}");
+    let (_, values, _) = run(
+        &[],
+        &["read", "17", "--map", &path, "valve", "-o", "values"],
+    );
+    assert_eq!(values, "valve=off\n");
     // The command line wins: its port is the one asked.
     let (code, _, stderr) = run(
         &["--port".into(), "127.0.0.1:9".into()],

@@ -469,6 +469,9 @@ pub fn write_request(point: &Point, text: &str) -> Result<Request, String> {
     }
     let address = point.address;
     let named = |e: String| format!("{}: {e}", point.name);
+    if let Some(value) = switch_command(point, text) {
+        return Ok(Request::WriteSingleRegister { address, value });
+    }
     Ok(match (point.kind, point.bit) {
         (Kind::Bool, Some(bit)) => {
             let on = parse_coil(text).map_err(named)?;
@@ -507,6 +510,18 @@ pub fn write_request(point: &Point, text: &str) -> Result<Request, String> {
             registers_request(address, registers)
         }
     })
+}
+
+/// For a switch kept in a register, the command `on` or `off` (`true`, `false`) is written
+/// as; a number is written as it is.
+fn switch_command(point: &Point, text: &str) -> Option<u16> {
+    let [on, off] = point.shown.as_ref()?.commands?;
+    if text.trim().parse::<f64>().is_ok() {
+        return None;
+    }
+    parse_coil(text)
+        .ok()
+        .map(|state| if state { on } else { off })
 }
 
 fn registers_request(address: u16, registers: Vec<u16>) -> Request {

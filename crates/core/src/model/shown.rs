@@ -21,6 +21,9 @@ pub struct Shown {
     pub zero_suppress: Option<f64>,
     /// The states a raw value stands for, for an entity that is on or off, open or closed.
     pub states: Option<States>,
+    /// What a switch kept in a register is written to turn it on and off
+    /// (`command_on`, `command_off`).
+    pub commands: Option<[u16; 2]>,
 }
 
 /// What Home Assistant names the states of an entity that has states, not a number.

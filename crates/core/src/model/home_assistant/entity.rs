@@ -220,16 +220,20 @@ pub(super) fn points<V: Values>(
             let listed = |numbers: Option<&Numbers>, command: i64| {
                 numbers.map_or_else(|| vec![command], |numbers| numbers.0.clone())
             };
-            point.shown = Some(with_states(match read_table.is_bits() {
-                true => States::OnOff {
-                    on: vec![1],
-                    off: vec![0],
-                },
-                false => States::OnOff {
-                    on: listed(verify.and_then(|v| v.state_on.as_ref()), on),
-                    off: listed(verify.and_then(|v| v.state_off.as_ref()), off),
-                },
-            }));
+            point.shown = Some(Shown {
+                // `on` and `off` are written as the commands.
+                commands: Some([on as u16, off as u16]).filter(|_| !written.is_bits()),
+                ..with_states(match read_table.is_bits() {
+                    true => States::OnOff {
+                        on: vec![1],
+                        off: vec![0],
+                    },
+                    false => States::OnOff {
+                        on: listed(verify.and_then(|v| v.state_on.as_ref()), on),
+                        off: listed(verify.and_then(|v| v.state_off.as_ref()), off),
+                    },
+                })
+            });
             0
         }
         Platform::Cover => {
@@ -424,6 +428,7 @@ fn valued<V: Values>(
         nan: keys.whole(&entity.nan_value, "nan_value", -(1 << 64), 1 << 64)?,
         zero_suppress: keys.number(&entity.zero_suppress, "zero_suppress")?,
         states: None,
+        commands: None,
     });
     Ok(extra)
 }
