@@ -36,7 +36,7 @@ struct JsonPoint<'a> {
     slave: Option<u8>,
     /// Why the point has no value.
     #[serde(skip_serializing_if = "Option::is_none")]
-    error: Option<String>,
+    error: Option<&'a str>,
 }
 
 pub struct MapWriter {
@@ -139,8 +139,8 @@ impl MapWriter {
     ) -> io::Result<()> {
         let rows: Vec<(&Point, Reading)> = points
             .iter()
-            .enumerate()
-            .filter_map(|(index, point)| Some((*point, reading(read, index)?)))
+            .zip(readings(read, points.len()))
+            .filter_map(|(point, reading)| Some((*point, reading?)))
             .collect();
         match self.format {
             Format::Json => {
@@ -190,7 +190,7 @@ impl MapWriter {
                         csv_field(&value),
                         csv_field(&point.unit),
                         raw_text(point, reading.raw()),
-                        csv_field(&reading.error().unwrap_or_default())
+                        csv_field(reading.error().unwrap_or_default())
                     )?;
                 }
                 Ok(())
@@ -238,23 +238,37 @@ impl Reading<'_> {
         }
     }
 
-    fn error(&self) -> Option<String> {
+    fn error(&self) -> Option<&str> {
         match self {
             Reading::Value(_) => None,
-            Reading::Failed(error) => Some(error.clone()),
+            Reading::Failed(error) => Some(error),
         }
     }
 }
 
-/// Point `index`'s value, or why it has none; `None` for a point the read did not ask.
-fn reading(read: &MapRead, index: usize) -> Option<Reading<'_>> {
-    if let Some(value) = read.values.iter().find(|value| value.point == index) {
-        return Some(Reading::Value(value));
+/// Each of `count` points' value, or why it has none, by the point's index; `None` for a
+/// point the read did not ask. One pass over the read, however many points a map has.
+fn readings(read: &MapRead, count: usize) -> Vec<Option<Reading<'_>>> {
+    let mut readings: Vec<Option<Reading<'_>>> = (0..count).map(|_| None).collect();
+    let failed = read.failed.iter().flat_map(|failure| {
+        let error = failure.error.to_string();
+        failure
+            .points
+            .iter()
+            .map(move |index| (*index, Reading::Failed(error.clone())))
+    });
+    let missing = read
+        .missing
+        .iter()
+        .map(|index| (*index, Reading::Failed("no such address".to_string())));
+    let values = read
+        .values
+        .iter()
+        .map(|value| (value.point, Reading::Value(value)));
+    for (index, reading) in failed.chain(missing).chain(values) {
+        if let Some(slot) = readings.get_mut(index) {
+            *slot = Some(reading);
+        }
     }
-    if let Some(error) = read.failure_of(index) {
-        return Some(Reading::Failed(error.to_string()));
-    }
-    read.missing
-        .contains(&index)
-        .then(|| Reading::Failed("no such address".to_string()))
+    readings
 }

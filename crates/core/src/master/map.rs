@@ -5,9 +5,9 @@
 //! further on, holes included. A request that spans holes and is refused with 02 or 0B is
 //! read again one run at a time.
 //!
-//! One point's failure is that point's alone: a run the device refuses is read again in
-//! halves down to the point it refuses, and a request that gets no answer fails the points
-//! it carries, while every other request is still asked.
+//! One point's failure is that point's alone: a run the device refuses, answers garbled,
+//! or does not answer while it answers others, is read again in halves down to the point
+//! it fails on, and every other request is still asked.
 
 use std::collections::VecDeque;
 
@@ -123,14 +123,6 @@ pub struct MapRead {
 }
 
 impl MapRead {
-    /// Why point `index` could not be read, if it could not.
-    pub fn failure_of(&self, index: usize) -> Option<&RunError> {
-        self.failed
-            .iter()
-            .find(|failure| failure.points.contains(&index))
-            .map(|failure| &failure.error)
-    }
-
     /// The first point, in the order of the points, that failed, and why.
     pub fn first_failure(&self) -> Option<(usize, &RunError)> {
         self.failed
@@ -156,9 +148,9 @@ pub enum Refused {
 }
 
 /// Reads `points` in the requests [`groups`] gives; `refused` says what a run the device
-/// refuses is. A request without a usable answer (an exception, a timeout, a bad answer)
-/// fails its points, which are in `failed`; only a failure that ends the conversation
-/// (the port gone, a stop asked) is an error.
+/// refuses is. The points of a request without a usable answer (an exception, a timeout,
+/// a bad answer), found down to the points it is about, are in `failed`; only a failure
+/// that ends the conversation (the port gone, a stop asked) is an error.
 pub fn read_points(
     master: &mut Master,
     points: &[&Point],
@@ -410,12 +402,10 @@ fn packed(point: &Point, raw: &[u16]) -> Value {
         .structure
         .as_ref()
         .and_then(|structure| structure.unpack(&bytes));
+    // Packed values come from Home Assistant's maps, which always say how they are shown.
     match (values, &point.shown) {
         (Some(values), Some(shown)) => shown.unpacked(point.scale, point.offset, &values),
-        (Some(values), None) => {
-            crate::model::shown::Shown::default().unpacked(point.scale, point.offset, &values)
-        }
-        (None, _) => Value::Text(crate::model::shown::UNKNOWN.into()),
+        _ => Value::Text(crate::model::shown::UNKNOWN.into()),
     }
 }
 
