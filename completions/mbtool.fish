@@ -1,6 +1,6 @@
 # Print an optspec for argparse to handle cmd's options that are independent of any subcommand.
 function __fish_mbtool_global_optspecs
-    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= timeout= retries= retry-non-idempotent frame-gap= rs485 rs485-delay-before= rs485-delay-after= rts-level= rts-toggle o/output= json v/verbose pdu-addresses address-base= t/type= order= max-per-request= poll= count= log= secondary-port= secondary-baud= secondary-parity= secondary-data-bits= secondary-stop-bits= secondary-mode= switch-on= switch-when= cert= key= ca= tls-server-name= h/help V/version
+    string join \n p/port= m/mode= b/baud= parity= data-bits= stop-bits= rs485 rs485-delay-before= rs485-delay-after= rts-level= rts-toggle timeout= frame-gap= retries= v/verbose cert= key= ca= tls-server-name= retry-non-idempotent o/output= json pdu-addresses address-base= max-per-request= t/type= order= poll= count= log= secondary-port= secondary-baud= secondary-parity= secondary-data-bits= secondary-stop-bits= secondary-mode= switch-on= switch-when= h/help V/version
 end
 
 function __fish_mbtool_needs_command
@@ -24,30 +24,35 @@ function __fish_mbtool_using_subcommand
     contains -- $cmd[1] $argv
 end
 
-complete -c mbtool -n "__fish_mbtool_needs_command" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_needs_command" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_needs_command" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_needs_command" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_needs_command" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_needs_command" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_needs_command" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_needs_command" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_needs_command" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_needs_command" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_needs_command" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
+complete -c mbtool -n "__fish_mbtool_needs_command" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_needs_command" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+complete -c mbtool -n "__fish_mbtool_needs_command" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
 i32\t''
@@ -58,14 +63,13 @@ f64\t''
 hex\t''
 bin\t''
 ascii\t''"
-complete -c mbtool -n "__fish_mbtool_needs_command" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+complete -c mbtool -n "__fish_mbtool_needs_command" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_needs_command" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_needs_command" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_needs_command" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -79,16 +83,12 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_needs_command" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_needs_command" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_needs_command" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_needs_command" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_needs_command" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_needs_command" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_needs_command" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_needs_command" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_needs_command" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_needs_command" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_needs_command" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_needs_command" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_needs_command" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-coils" -d 'Read coils (function 01)'
@@ -119,33 +119,30 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "gateway" -d 'Bridge M
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "ports" -d 'The serial ports here, and which adapter each one is'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -159,44 +156,44 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -210,44 +207,44 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -261,59 +258,44 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -327,41 +309,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
-low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
 i32\t''
@@ -372,14 +323,45 @@ f64\t''
 hex\t''
 bin\t''
 ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -393,41 +375,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
-low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
 i32\t''
@@ -438,14 +389,45 @@ f64\t''
 hex\t''
 bin\t''
 ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -459,41 +441,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
-low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
 i32\t''
@@ -504,14 +455,45 @@ f64\t''
 hex\t''
 bin\t''
 ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -525,41 +507,10 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
-low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
 i32\t''
@@ -570,14 +521,46 @@ f64\t''
 hex\t''
 bin\t''
 ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l poll -d 'Repeat a read every INTERVAL (0 for back to back) until Ctrl-C or --count, showing what changed, with a summary on stderr at the end; a failed read is a row of its own, a range with holes is read around them (each hole a "no such address" row), and a connection that drops is opened again' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l map -d 'The points of a register map (CSV, or Home Assistant YAML), by name' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l log -d 'With --poll: also append every row, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -591,211 +574,179 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l map -d 'Read the points of a register map (CSV, or Home Assistant YAML), by name' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l retries -d 'Retries after a timeout or a bad answer' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coil" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l retries -d 'Retries after a timeout or a bad answer' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l retries -d 'Retries after a timeout or a bad answer' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-register" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
-1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
-i16\t''
-u32\t''
-i32\t''
-f32\t''
-u64\t''
-i64\t''
-f64\t''
-hex\t''
-bin\t''
-ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
-CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
-BADC\t'High word first, bytes swapped within each word'
-DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l retries -d 'Retries after a timeout or a bad answer' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
-low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
 i32\t''
@@ -806,50 +757,51 @@ f64\t''
 hex\t''
 bin\t''
 ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l map -d 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers' -r -f -a "5\t''
 6\t''
 15\t''
 16\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
 i32\t''
@@ -860,38 +812,90 @@ f64\t''
 hex\t''
 bin\t''
 ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l retries -d 'Retries after a timeout or a bad answer' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l ids -d 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l probe -d 'What each id is asked: read (03, one register at address 0) or id (17)' -r -f -a "read\t'Read one holding register at protocol address 0 (function 03)'
+id\t'Report server id (function 17)'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l listen -d 'Listen this long at each setting before sending anything: slaves heard answering another master are found without adding traffic' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
@@ -899,37 +903,36 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l cert -d 'This end
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l ids -d 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l probe -d 'What each id is asked: read (03, one register at address 0) or id (17)' -r -f -a "read\t'Read one holding register at protocol address 0 (function 03)'
-id\t'Report server id (function 17)'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l listen -d 'Listen this long at each setting before sending anything: slaves heard answering another master are found without adding traffic' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l all -d 'Try every setting of the sweep, not only up to the first where a slave answers'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l all -d 'Try every setting of the sweep, not only up to the first where a slave answers'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l map -d 'The points of a register map (CSV, or Home Assistant YAML), by name' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l poll -d 'How often to read [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
 i32\t''
@@ -940,12 +943,10 @@ f64\t''
 hex\t''
 bin\t''
 ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l poll -d 'How often to read [default: 1s]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -963,98 +964,98 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l cert -d 'This en
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l map -d 'Watch the points of a register map (CSV, or Home Assistant YAML)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand watch" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l retries -d 'Retries after a timeout or a bad answer' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand info" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand info" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l count -d 'How many round trips of return query data to time [default: 5]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l count -d 'How many round trips of return query data to time [default: 5]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l retries -d 'Retries after a timeout or a bad answer' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l clear -d 'After reading them, clear the device\'s counters (08/0A)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l clear -d 'After reading them, clear the device\'s counters (08/0A)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand diag" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s o -l output -d 'The data file to write [default: standard output]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s o -l output -d 'The data file to write [default: standard output]' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -1068,33 +1069,33 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand dump" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -1108,24 +1109,22 @@ tcp\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l switch-on -d 'When to change paths, counted since the path\'s last good answer: timeout:N, bad-frame:N, exception:CODE (hex), disconnect [default: timeout:3,disconnect]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l switch-when -d 'Whether any of the --switch-on conditions changes paths, or only all of them together [default: any]' -r -f -a "any\t'switch as soon as one condition holds'
 all\t'switch when every condition has held since the last good answer'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l dry-run -d 'Print the frames that would be sent, and send nothing'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -l dry-run -d 'Print the frames that would be sent, and send nothing'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand restore" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l direction -d 'Read every frame as a request or as a response instead of inferring it' -r -f -a "request\t''
+response\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s m -l mode -d 'Framing: rtu, ascii or tcp [default: detected from each frame]' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
 i32\t''
@@ -1136,26 +1135,25 @@ f64\t''
 hex\t''
 bin\t''
 ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l direction -d 'Read every frame as a request or as a response instead of inferring it' -r -f -a "request\t''
-response\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l address-base -d 'What a bare address number counts from, in what is typed and in the address column shown: 0, the protocol address (107 is 400108), or 1, the register number as manuals and mbpoll count (108 is 400108). References (400108) are the same either way; decode, sniff and serve show a frame\'s address field as it is on the wire' -r -f -a "0\t'Protocol addresses, 0-65535'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s t -l type -d 'Register value type, for showing values read and for converting values to write' -r -f -a "u16\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
 i32\t''
@@ -1166,13 +1164,12 @@ f64\t''
 hex\t''
 bin\t''
 ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l order -d 'Byte order of values wider than 16 bits: A is the most significant byte' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers, for devices that take fewer than the protocol allows' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference: 40001 is then protocol address 40001 (register number 40001 with --address-base 1)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-coils" -d 'Read coils (function 01)'
@@ -1190,39 +1187,353 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_see
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "raw" -d 'Send any PDU and decode the answer'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-discrete-inputs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-holding-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-registers" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l map -d 'Read the points of a register map (CSV, or Home Assistant YAML), by name' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l map -d 'The points of a register map (CSV, or Home Assistant YAML), by name' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coil" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-coils" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-register" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l map -d 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers' -r -f -a "5\t''
 6\t''
 15\t''
 16\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s h -l help -d 'Print help'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-coils" -d 'Read coils (function 01)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
@@ -1236,12 +1547,19 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "raw" -d 'Send any PDU and decode the answer'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a capture (pcap, pcapng, a line\'s raw bytes; - for stdin) instead of the port' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l interface -d 'Capture Modbus TCP live from a network interface (eth0, lo)' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l tcp-port -d 'The TCP port of the Modbus servers in a capture [default: 502]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep every byte seen, to replay it later with --input' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pcap -d 'Also write the frames shown to a pcap file for Wireshark' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l slave -d 'Show only the frames of this slave; repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l function -d 'Show only the frames of this function code (3, 0x10); repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
@@ -1250,46 +1568,17 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rs485-delay-befo
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a capture instead of the port (\'-\' for standard input): a pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line. Standard input still open (another program\'s capture piped in) ends on Ctrl-C or SIGTERM as a live capture does, its frames and the summary shown. A file of raw bytes without timing is framed on every core, with the frames found in order' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l interface -d 'Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l tcp-port -d 'In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502]; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l save -d 'Keep every byte seen, exactly as received, to replay it later with --input; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l pcap -d 'Also write the frames shown to a pcap file for Wireshark (link type 147, see above)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l slave -d 'Show only the frames of this slave; repeatable' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l function -d 'Show only the frames of this function code (3, 0x10); repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stats -d 'At the end, statistics per server and unit'
+complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l low-latency -d 'Ask the USB serial driver for its lowest latency'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l stats -d 'At the end, a table (or JSON lines of "type":"stats") per server and unit: requests, answers, exceptions by code, unanswered, and response time min, mean, p95 and max'
-complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l low-latency -d 'Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so that gaps between frames can be seen'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
-ascii\t''
-tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
-even\t''
-odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
-low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
-json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l slave -d 'Answer as this slave id; repeat for several [default: 17]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data -d 'Initial data and the addresses that exist (see above for the format)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l read-only -d 'Addresses that may not be written (exception 02): a reference or a range; repeatable' -r
@@ -1304,58 +1593,80 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l plain-role -d 'T
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l vendor -d 'Device identification: vendor name' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l product-code -d 'Device identification: product code' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l identity -d 'Device identification: any object, by name or id (VendorUrl=https://example.com, ProductName=Pump, 0x80=serial 4711); repeatable' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l garbage -d 'Send a few noise bytes (00, FE) before each answer, as a bus being handed over does'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s q -l quiet -d 'No log line per request'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s p -l port -d 'Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802), rtu+tcp://HOST:PORT, or sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s m -l mode -d 'Framing: rtu or ascii on a serial line, tcp for MBAP [default: rtu, tcp for tcp:// ports; decode detects it]' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s b -l baud -d 'Serial speed; scan takes a list to sweep (9600,19200,38400), else tries this one' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l parity -d 'Serial parity; scan takes a list to sweep (none,even,odd), else tries this one' -r -f -a "none\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
 even\t''
 odd\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l timeout -d 'Response timeout for a whole answer: 500ms, 1s, 2.5s (a bare number is seconds, up to 60) [default: 1s; 100ms for scan, 800ms for gateway]' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l retries -d 'Retries after a timeout or a bad answer (never after an exception)' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
 low\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l log -d 'Also append every transaction, with its time, to FILE: CSV for a .csv name, JSON Lines for any other' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l garbage -d 'Send a few noise bytes (00, FE) before each answer, as a bus being handed over does'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s q -l quiet -d 'No log line per request'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l listen -d 'Where clients connect: tcp://ADDRESS[:PORT], or tls://ADDRESS[:PORT] for Modbus/TCP Security; repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l unit-map -d 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l role -d 'Over tls://: what clients of role NAME may do, RULES being read and write, each alone or with a range (operator=read,write:400001-400100); repeatable. A request its role does not allow gets exception 01' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l default-role -d 'Over tls://: the role of a client whose certificate carries none [default: such a client is refused, when --role is given]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l plain-role -d 'The role of every client of a plain tcp:// listener, which has no certificate to claim one: with --role, a plain listener is refused without it' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l broadcast-reply -d 'Answer a broadcast (unit 0) as a slave answers a write, for clients that wait for one'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s q -l quiet -d 'No row per transaction (stderr still tells the line and the clients)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -s o -l output -d 'Output format [default: table]; for dump, the file to write' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l log -d 'Also append every transaction, with its time, to FILE' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l broadcast-reply -d 'Answer a broadcast (unit 0) as a slave answers a write, for clients that wait for one'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s q -l quiet -d 'No row per transaction (stderr still tells the line and the clients)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -l root -d 'Read sys, dev and proc under DIR instead of / (a copy taken from another machine)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -s V -l version -d 'Print version'

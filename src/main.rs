@@ -1,77 +1,25 @@
 //! The `mbtool` binary: parses the command line, runs the command, and turns every outcome
 //! into one line on stderr and the exit status the README gives it.
 
-// The C runtime calls `main` below directly, not through the standard library's start: see
-// `main`. A test build keeps the test harness's own `main`, and leaves the rest unused.
-#![cfg_attr(not(test), no_main)]
-#![cfg_attr(test, allow(dead_code, unused_imports))]
-
 mod cmd;
 
 use std::io;
-use std::os::raw::{c_char, c_int};
+use std::process::ExitCode;
 
 use clap::error::{ContextKind, ContextValue, ErrorKind};
 
 use mbtool::cli::Command;
 use mbtool::settings::{self, Settings};
 
-/// The process's entry, called by the C runtime. The standard library's own start would
-/// also find the main thread's stack by reading `/proc/self/maps`, to name a stack overflow
-/// in its message: a tenth of a millisecond, which a one-shot `read-holding` in a script's
-/// loop pays every time (the kernel's guard gap below the stack stops an overflow all the
-/// same). What mbtool relies on from that start is done here: SIGPIPE ignored, so that
-/// writing to a closed pipe is an error the command ends on quietly; descriptors 0 to 2
-/// open, so that no file the command opens (a serial port) takes one of their places; a
-/// panic's message and exit status 101; and standard output flushed on exit.
-#[cfg(not(test))]
-#[allow(unsafe_code)]
-#[no_mangle]
-extern "C" fn main(_argc: c_int, _argv: *const *const c_char) -> c_int {
-    // SAFETY: both run before any other thread exists, and touch only process-wide state
-    // the standard library's start would set up the same way.
-    unsafe {
-        libc::signal(libc::SIGPIPE, libc::SIG_IGN);
-        open_standard_descriptors();
-    }
-    let code = std::panic::catch_unwind(run).unwrap_or(101);
-    // `exit` flushes standard output, as a return from the standard library's start does.
-    std::process::exit(code.into())
-}
-
-/// Opens /dev/null in the place of a closed standard descriptor.
-///
-/// # Safety
-/// Must run before other threads open files.
-#[cfg(not(test))]
-#[allow(unsafe_code)]
-unsafe fn open_standard_descriptors() {
-    let mut fds = [0, 1, 2].map(|fd| libc::pollfd {
-        fd,
-        events: 0,
-        revents: 0,
-    });
-    if libc::poll(fds.as_mut_ptr(), 3, 0) < 0 {
-        return;
-    }
-    for fd in fds.iter().filter(|fd| fd.revents & libc::POLLNVAL != 0) {
-        // The lowest free descriptor is the one closed.
-        if libc::open(c"/dev/null".as_ptr(), libc::O_RDWR) != fd.fd {
-            libc::abort();
-        }
-    }
-}
-
-/// Parses, runs the command, and gives the exit status.
-fn run() -> u8 {
-    let (settings, command) = match parse() {
-        Ok(parsed) => parsed,
-        Err(code) => return code,
+fn main() -> ExitCode {
+    let code = match parse() {
+        Ok((settings, command)) => match cmd::run(&settings, command) {
+            Ok(code) => code,
+            Err(error) => fail(&error),
+        },
+        Err(code) => code,
     };
-    match cmd::run(&settings, command) {
-        Ok(code) => code,
-        Err(error) => fail(&error),
-    }
+    ExitCode::from(code)
 }
 
 /// Parses the command line and resolves it into settings and the command to run. Help
@@ -79,75 +27,34 @@ fn run() -> u8 {
 /// the commands; every other usage error, including an option the command does not take,
 /// becomes one `mbtool: ` line. Both end with exit status 2.
 fn parse() -> Result<(Settings, Command), u8> {
-    let args: Vec<std::ffi::OsString> = std::env::args_os().collect();
-    let (mut command, first_args) = mbtool::docs::parser(&args);
-    let mut parsed = settings::read(&mut command, &first_args);
-    // Read again, as the whole definition reads it: an error, told with every command
-    // known; an option typed over a variable of the environment, whose value the whole
-    // definition checks all the same; and help, however the line asks for it (`help`,
-    // `-vh`), with every command built and its examples.
-    let (mut whole, mut help) = (false, false);
-    loop {
-        command = match &parsed {
-            Err(error) if error.kind() == ErrorKind::DisplayHelp && !help => {
-                help = true;
-                mbtool::docs::command()
+    let mut definition = mbtool::cli::definition();
+    let (cli, origins) = settings::read(&mut definition, std::env::args_os()).map_err(|error| {
+        match error.kind() {
+            ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match error.print() {
+                // `mbtool --help | head -3` is the reader's choice.
+                Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
+                    mbtool::note!("mbtool: cannot write standard output: {e}");
+                    1
+                }
+                _ => 0,
+            },
+            ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
+                mbtool::note!("{}", mbtool::docs::short_usage(&definition));
+                2
             }
-            Err(error) if error.kind() == ErrorKind::DisplayVersion => break,
-            Err(_) if !whole && !help => {
-                whole = true;
-                mbtool::docs::whole_parser(&args)
+            _ => {
+                mbtool::note!("mbtool: {}", usage_error(&error, &definition));
+                2
             }
-            Ok((_, origins)) if !whole && typed_over_environment(&command, origins) => {
-                whole = true;
-                mbtool::docs::whole_parser(&args)
-            }
-            _ => break,
-        };
-        parsed = settings::read(&mut command, &args);
-    }
-    let (cli, origins) = parsed.map_err(|error| match error.kind() {
-        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match error.print() {
-            // `mbtool --help | head -3` is the reader's choice.
-            Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
-                mbtool::note!("mbtool: cannot write standard output: {e}");
-                1
-            }
-            _ => 0,
-        },
-        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-            mbtool::note!("{}", mbtool::docs::short_usage(&command));
-            2
-        }
-        _ => {
-            mbtool::note!("mbtool: {}", usage_error(&error, &command));
-            2
         }
     })?;
-    let resolved = settings::resolve(&cli, &command, &origins);
-    // Freed by the exit: freeing it here is a tenth of a one-shot command's instructions,
-    // and a trim of the heap.
-    std::mem::forget(command);
-    match resolved {
+    match settings::resolve(&cli, &origins) {
         Ok(settings) => Ok((settings, cli.command)),
         Err(message) => {
             mbtool::note!("mbtool: {message}");
             Err(2)
         }
     }
-}
-
-/// Whether an option typed on the command line has a variable of the environment set too.
-fn typed_over_environment(command: &clap::Command, origins: &settings::Origins) -> bool {
-    let Some(leaf) = origins.command_in(command) else {
-        return true;
-    };
-    leaf.get_arguments()
-        .filter(|arg| origins.typed_ids().any(|id| arg.get_id() == id))
-        .any(|arg| {
-            arg.get_env()
-                .is_some_and(|name| std::env::var_os(name).is_some())
-        })
 }
 
 /// A usage error on one line: what is wrong, clap's tips and the values allowed, and where
@@ -171,6 +78,13 @@ fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
         .get(1..)
         .map(|words| words.join(" "))
         .unwrap_or_default();
+    let typed_path = typed
+        .get(1..)
+        .map(|words| words.join(" "))
+        .unwrap_or_default();
+    if let Some(message) = untaken(error, command, &typed_path) {
+        return message;
+    }
     let mut message = match error.kind() {
         ErrorKind::MissingRequiredArgument => missing(error, &subcommand),
         ErrorKind::InvalidSubcommand => unknown_command(error, command, &path),
@@ -186,6 +100,40 @@ fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
     };
     message.push_str(&format!(" (see '{see} --help')"));
     message
+}
+
+/// An option of another command typed after a command that does not take it, which
+/// clap knows only as an argument it did not expect: `decode does not take --baud`. One
+/// typed before the command's name is told so by `settings`, in the same words.
+fn untaken(error: &clap::Error, command: &clap::Command, subcommand: &str) -> Option<String> {
+    if error.kind() != ErrorKind::UnknownArgument || subcommand.is_empty() {
+        return None;
+    }
+    if mbpoll_habit(error).is_some() {
+        return None;
+    }
+    let Some(ContextValue::String(typed)) = error.get(ContextKind::InvalidArg) else {
+        return None;
+    };
+    let word = typed.split('=').next().unwrap_or(typed);
+    // After `--`, a word that looks like an option is an argument.
+    if !words()
+        .take_while(|w| w != "--")
+        .any(|w| w.starts_with(word))
+    {
+        return None;
+    }
+    let option = command.get_arguments().find(|arg| {
+        let long = word
+            .strip_prefix("--")
+            .is_some_and(|long| arg.get_long() == Some(long));
+        let short = word.strip_prefix('-').is_some_and(|short| {
+            let mut letters = short.chars();
+            letters.next() == arg.get_short() && letters.next().is_none()
+        });
+        long || short
+    })?;
+    Some(settings::refusal(subcommand, option))
 }
 
 /// An option of mbpoll or modpoll typed out of habit (`-a 17 -r 1 -c 2`, or `-t 4`, which
@@ -245,8 +193,11 @@ fn words() -> impl Iterator<Item = String> {
 
 /// `mbtool` and the command names on the command line: `["mbtool", "encode", "raw"]`.
 fn typed_commands(command: &clap::Command) -> Vec<String> {
+    // Every command built: a line refused before the command it names was reached.
+    let mut whole = command.clone();
+    whole.build();
     let mut path = vec!["mbtool".to_string()];
-    let mut level = command;
+    let mut level = &whole;
     for word in words().skip(1) {
         if let Some(sub) = level.find_subcommand(&word) {
             path.push(sub.get_name().to_string());

@@ -10,7 +10,10 @@ use std::time::Duration;
 use clap::parser::ValueSource;
 use clap::ValueEnum;
 
-use crate::cli::{is_common_option, takes_option, Cli, Command, OutputFormat};
+use crate::cli::{
+    AddressBaseArg, Before, Cli, Command, FormatArgs, Options, OutputFormat, RedundancyArgs,
+    Rs485Args, Taken,
+};
 use crate::output::{colour_wanted, Format, Style};
 use mbtool_core::codec::Mode;
 use mbtool_core::master::failover::{SwitchCondition, SwitchRule};
@@ -118,18 +121,17 @@ pub struct Poll {
     pub log: Option<PathBuf>,
 }
 
-/// The command line `args` parsed with `definition`: what it says, and where each value
-/// came from.
+/// The command line `args` parsed with the [`definition`](crate::cli::definition): what
+/// it says, the values typed before the command's name handed to the command, and where
+/// each value came from.
 pub fn read(
     definition: &mut clap::Command,
-    args: &[std::ffi::OsString],
+    args: impl IntoIterator<Item = std::ffi::OsString>,
 ) -> Result<(Cli, Origins), clap::Error> {
     let mut matches = definition.try_get_matches_from_mut(args)?;
-    let origins = Origins::of(&matches);
-    let cli = Cli::take_from(&mut matches)?;
-    // What is left of the matches is freed by the exit: a one-shot command is mostly its
-    // start, and freeing is work it does not need.
-    std::mem::forget(matches);
+    let origins = Origins::of(&matches, definition);
+    let mut cli = <Cli as clap::FromArgMatches>::from_arg_matches_mut(&mut matches)?;
+    origins.hand_down(&mut cli);
     Ok((cli, origins))
 }
 
@@ -139,42 +141,91 @@ pub fn read(
 pub struct Origins {
     /// The names of the command given: `["read-holding"]`, `["encode", "write-coil"]`.
     path: Vec<String>,
-    /// Each common option with a value, and whether it was typed, set in the environment
-    /// or is the default.
+    /// Each of the command's options with a value, and whether it was typed (before the
+    /// command's name or after it), set in the environment or is the default.
     sources: Vec<(String, ValueSource)>,
+    /// At each level before the command (the top, then `encode`), the options typed there
+    /// that the command takes and does not type itself.
+    before: Vec<Vec<String>>,
+    /// The refusal of the first option typed before the command that it does not take.
+    untaken: Option<String>,
 }
 
 impl Origins {
-    pub fn of(matches: &clap::ArgMatches) -> Origins {
+    fn of(matches: &clap::ArgMatches, definition: &clap::Command) -> Origins {
+        let mut levels = vec![(matches, definition)];
         let mut path = Vec::new();
-        let mut leaf = matches;
-        while let Some((name, sub)) = leaf.subcommand() {
+        while let Some(&(matches, command)) = levels.last() {
+            let Some((name, sub)) = matches.subcommand() else {
+                break;
+            };
+            let Some(command) = command.find_subcommand(name) else {
+                break;
+            };
             path.push(name.to_string());
-            leaf = sub;
+            levels.push((sub, command));
         }
-        // The command's own matches hold every option, wherever on the line it was typed.
-        let mut sources: Vec<(String, ValueSource)> = leaf
-            .ids()
-            .filter(|id| is_common_option(id.as_str()))
-            .filter_map(|id| Some((id.to_string(), leaf.value_source(id.as_str())?)))
+        let (leaf, command) = levels.pop().unwrap_or((matches, definition));
+        let typed = |matches: &clap::ArgMatches, id: &str| {
+            matches.value_source(id) == Some(ValueSource::CommandLine)
+        };
+        let mut sources: Vec<(String, ValueSource)> = command
+            .get_arguments()
+            .filter_map(|arg| {
+                let id = arg.get_id().as_str();
+                Some((id.to_string(), leaf.value_source(id)?))
+            })
             .collect();
-        // By name: the same however the line was parsed.
+        let mut untaken = None;
+        let mut before = Vec::new();
+        for (matches, level) in levels {
+            let mut handed = Vec::new();
+            for arg in level.get_arguments() {
+                let id = arg.get_id().as_str();
+                if !typed(matches, id) {
+                    continue;
+                }
+                if command.get_arguments().all(|own| own.get_id() != id) {
+                    untaken = untaken.or_else(|| Some(refusal(&path.join(" "), arg)));
+                } else if !typed(leaf, id) {
+                    handed.push(id.to_string());
+                    sources.retain(|(known, _)| known != id);
+                    sources.push((id.to_string(), ValueSource::CommandLine));
+                }
+            }
+            before.push(handed);
+        }
+        // By name: the first of several is told the same however the line was typed.
         sources.sort_by(|a, b| a.0.cmp(&b.0));
-        Origins { path, sources }
+        Origins {
+            path,
+            sources,
+            before,
+            untaken,
+        }
+    }
+
+    /// The values typed before the command's name, handed to the command's groups that
+    /// take them and did not have them typed.
+    fn hand_down(&self, cli: &mut Cli) {
+        let mut levels = Vec::new();
+        let mut top = Taken::default();
+        cli.before.gather(&mut top);
+        levels.push((top, self.before.first().cloned().unwrap_or_default()));
+        match &mut cli.command {
+            Command::Encode { shared, request } => {
+                let mut encode = Taken::default();
+                shared.gather(&mut encode);
+                levels.push((encode, self.before.get(1).cloned().unwrap_or_default()));
+                request.options_mut().take_before(&Before { levels });
+            }
+            command => command.options_mut().take_before(&Before { levels }),
+        }
     }
 
     /// The names of the command given: `["read-holding"]`, `["encode", "write-coil"]`.
     pub fn path(&self) -> Vec<&str> {
         self.path.iter().map(String::as_str).collect()
-    }
-
-    /// The definition of the command given, in the `definition` the line was parsed
-    /// with: it holds the common options, whether it defines them itself or clap copied
-    /// them there in the parse.
-    pub fn command_in<'a>(&self, definition: &'a clap::Command) -> Option<&'a clap::Command> {
-        self.path
-            .iter()
-            .try_fold(definition, |command, name| command.find_subcommand(name))
     }
 
     fn source(&self, id: &str) -> Option<ValueSource> {
@@ -188,13 +239,8 @@ impl Origins {
         self.source(id) == Some(ValueSource::CommandLine)
     }
 
-    /// Whether option `id` was typed or set in the environment.
-    fn given(&self, id: &str) -> bool {
-        !matches!(self.source(id), None | Some(ValueSource::DefaultValue))
-    }
-
     /// The options typed on the command line.
-    pub fn typed_ids(&self) -> impl Iterator<Item = &str> {
+    fn typed_ids(&self) -> impl Iterator<Item = &str> {
         self.sources
             .iter()
             .filter(|(_, source)| *source == ValueSource::CommandLine)
@@ -202,21 +248,31 @@ impl Origins {
     }
 }
 
+/// The one line that refuses `option` to the command at `path` (`encode write-coil`),
+/// which does not take it.
+pub fn refusal(path: &str, option: &clap::Arg) -> String {
+    let name = match (option.get_long(), option.get_short()) {
+        (Some(long), _) => format!("--{long}"),
+        (None, Some(short)) => format!("-{short}"),
+        (None, None) => option.get_id().to_string(),
+    };
+    format!("{path} does not take {name} (see 'mbtool {path} --help' for the options it takes)")
+}
+
 /// The settings of a parsed command line, or the one-line message that refuses it.
-pub fn resolve(
-    cli: &Cli,
-    definition: &clap::Command,
-    origins: &Origins,
-) -> Result<Settings, String> {
-    if let Some(message) = untaken_option(definition, origins)
-        .or_else(|| sweep_outside_scan(cli, origins))
-        .or_else(|| output_problem(cli))
+pub fn resolve(cli: &Cli, origins: &Origins) -> Result<Settings, String> {
+    let mut taken = Taken::default();
+    cli.command.options().gather(&mut taken);
+    if let Some(message) = untaken_option(origins)
+        .or_else(|| sweep_outside_scan(cli, &taken, origins))
+        .or_else(|| output_problem(&taken))
     {
         return Err(message);
     }
-    let c = &cli.common.connection;
-    let given = |id: &str| origins.given(id);
-    let (direction, direction_typed) = direction(cli, origins)?;
+    // Set in the environment, the RS-485 options are checked for every command, as the
+    // environment holds them for every command.
+    let rs485 = taken.rs485.unwrap_or(&cli.before.master.line.rs485);
+    let (direction, direction_typed) = direction(rs485, origins)?;
     // scan asks many ids that are not there: its timeout is short. A gateway answers 0B
     // for a device that is silent before its client's own timeout (mbpoll's and most
     // masters' is 1 s) runs out.
@@ -225,74 +281,90 @@ pub fn resolve(
         Command::Gateway(_) => Duration::from_millis(800),
         _ => Duration::from_secs(1),
     };
-    let format = match (&cli.common.output.output, cli.common.output.json) {
-        (_, true) => Format::Json,
-        (Some(name), false) => OutputFormat::from_str(name, true).map_or(Format::Table, format_of),
-        (None, false) => Format::Table,
+    let timeout = taken.exchange.and_then(|e| e.timeout);
+    let format = match taken.format {
+        Some(FormatArgs { json: true, .. }) => Format::Json,
+        Some(FormatArgs {
+            output: Some(name), ..
+        }) => OutputFormat::from_str(name, true).map_or(Format::Table, format_of),
+        _ => Format::Table,
     };
+    let serial = taken.serial;
+    let bauds = serial.map_or_else(Vec::new, |s| s.baud.clone());
+    let parities = serial.map_or_else(Vec::new, |s| s.parity.clone());
+    let tls = taken.tls;
+    let registers = taken.registers;
+    let value_type = registers.map_or_else(ValueType::default, |r| r.value_type);
+    let order = registers.map_or_else(ByteOrder::default, |r| r.order);
+    let address_base = taken
+        .addresses
+        .map_or(AddressBaseArg::Zero, |a| a.address_base)
+        .into();
+    let verbose = taken.trace.is_some_and(|t| t.verbose);
     let mut settings = Settings {
         connection: Connection {
-            port: c.port.clone(),
-            mode: c.mode.map(Mode::from),
-            bauds: c.baud.clone(),
-            baud_given: given("baud"),
-            parities: c.parity.clone(),
-            parity_given: given("parity"),
-            data_bits: c.data_bits,
-            stop_bits: c.stop_bits,
-            timeout: c.timeout.unwrap_or(default_timeout),
-            timeout_given: c.timeout.is_some(),
-            retries: c.retries,
-            retry_non_idempotent: c.retry_non_idempotent,
-            frame_gap: c.frame_gap,
+            port: taken.port.map(str::to_string),
+            mode: taken.mode.map(Mode::from),
+            baud_given: !bauds.is_empty(),
+            bauds: if bauds.is_empty() { vec![19200] } else { bauds },
+            parity_given: !parities.is_empty(),
+            parities: if parities.is_empty() {
+                vec![Parity::Even]
+            } else {
+                parities
+            },
+            data_bits: serial.and_then(|s| s.data_bits),
+            stop_bits: serial.and_then(|s| s.stop_bits),
+            timeout: timeout.unwrap_or(default_timeout),
+            timeout_given: timeout.is_some(),
+            retries: taken.retries.and_then(|r| r.retries).unwrap_or(0),
+            retry_non_idempotent: taken.repeat.is_some_and(|r| r.retry_non_idempotent),
+            frame_gap: taken.exchange.and_then(|e| e.frame_gap),
             direction,
             direction_typed,
             secondary: None,
             switch: SwitchRule::default(),
             tls: TlsFiles {
-                cert: cli.common.tls.cert.clone(),
-                key: cli.common.tls.key.clone(),
-                ca: cli.common.tls.ca.clone(),
-                server_name: cli.common.tls.tls_server_name.clone(),
+                cert: tls.and_then(|t| t.cert.clone()),
+                key: tls.and_then(|t| t.key.clone()),
+                ca: tls.and_then(|t| t.ca.clone()),
+                server_name: tls.and_then(|t| t.tls_server_name.clone()),
             },
             tls_typed: ["cert", "key", "ca", "tls_server_name"]
                 .iter()
                 .any(|id| origins.typed(id)),
-            tell_session: cli.common.output.verbose,
+            tell_session: verbose,
         },
         output: Output {
             style: Style {
                 format,
-                value_type: cli.common.data.value_type,
-                order: cli.common.data.order,
-                address_base: cli.common.data.address_base.into(),
+                value_type,
+                order,
+                address_base,
                 colour: colour_wanted(),
             },
             format,
-            verbose: cli.common.output.verbose,
-            file: match cli.command {
-                Command::Dump(_) => cli.common.output.output.as_ref().map(PathBuf::from),
-                _ => None,
-            },
+            verbose,
+            file: taken.file.map(PathBuf::from),
         },
         data: Data {
             numbering: Numbering {
-                references: !cli.common.data.pdu_addresses,
-                base: cli.common.data.address_base.into(),
+                references: !taken.addresses.is_some_and(|a| a.pdu_addresses),
+                base: address_base,
             },
-            value_type: cli.common.data.value_type,
-            order: cli.common.data.order,
-            max_per_request: cli.common.data.max_per_request,
+            value_type,
+            order,
+            max_per_request: taken.split.and_then(|s| s.max_per_request),
         },
         poll: Poll {
-            interval: cli.common.poll.poll,
-            count: cli.common.poll.count,
-            log: cli.common.poll.log.clone(),
+            interval: taken.poll,
+            count: taken.count,
+            log: taken.log.map(PathBuf::from),
         },
     };
     // A command that does not take a second path ignores one set in the environment.
-    if takes_option(&origins.path(), "secondary_port") {
-        redundancy(cli, origins, &mut settings.connection)?;
+    if let Some(redundancy) = taken.redundancy {
+        redundancy_of(redundancy, origins, &mut settings.connection)?;
     }
     Ok(settings)
 }
@@ -300,8 +372,11 @@ pub fn resolve(
 /// `--secondary-port` and its settings, each the primary's where not given, and the rule
 /// for changing paths. The other options typed without a secondary port are refused, as
 /// they would do nothing.
-fn redundancy(cli: &Cli, origins: &Origins, primary: &mut Connection) -> Result<(), String> {
-    let r = &cli.common.redundancy;
+fn redundancy_of(
+    r: &RedundancyArgs,
+    origins: &Origins,
+    primary: &mut Connection,
+) -> Result<(), String> {
     let Some(port) = r.secondary_port.clone().filter(|port| !port.is_empty()) else {
         let typed = origins
             .typed_ids()
@@ -366,8 +441,7 @@ fn redundancy(cli: &Cli, origins: &Origins, primary: &mut Connection) -> Result<
 /// `--rs485` or `--rts-toggle` with their timing, and whether one of them was typed. What
 /// is typed wins over the environment; the timing options typed alone are refused, as
 /// they would do nothing.
-fn direction(cli: &Cli, origins: &Origins) -> Result<(DirectionControl, bool), String> {
-    let c = &cli.common.connection;
+fn direction(c: &Rs485Args, origins: &Origins) -> Result<(DirectionControl, bool), String> {
     let typed = |id: &str| origins.typed(id);
     let (kernel, toggle) = match (c.rs485 && c.rts_toggle, typed("rs485"), typed("rts_toggle")) {
         (false, ..) => (c.rs485, c.rts_toggle),
@@ -415,29 +489,25 @@ fn format_of(format: OutputFormat) -> Format {
 
 /// An `--output` that names no format, where a format is what it takes; for dump, a
 /// format's name, which would name a file by mistake.
-fn output_problem(cli: &Cli) -> Option<String> {
-    let name = cli.common.output.output.as_deref()?;
-    let is_format = OutputFormat::from_str(name, true).is_ok();
-    match (&cli.command, is_format) {
-        (Command::Dump(_), true) => Some(format!(
+fn output_problem(taken: &Taken) -> Option<String> {
+    if let Some(name) = taken.file {
+        return OutputFormat::from_str(name, true).is_ok().then(|| format!(
             "dump writes a data file: -o {name} would name the file '{name}'; give ./{name} if that is meant"
-        )),
-        (Command::Dump(_), false) | (_, true) => None,
-        (_, false) => Some(format!(
-            "--output {name}: give a format: table, json, values or csv"
-        )),
+        ));
     }
+    let name = taken.format?.output.as_deref()?;
+    OutputFormat::from_str(name, true)
+        .is_err()
+        .then(|| format!("--output {name}: give a format: table, json, values or csv"))
 }
 
 /// A list of baud rates or parities typed for a command that takes one, as a one-line
 /// message. A list from the environment (MBTOOL_BAUD=9600,19200, set for scans) gives
 /// the other commands its first value.
-fn sweep_outside_scan(cli: &Cli, origins: &Origins) -> Option<String> {
+fn sweep_outside_scan(cli: &Cli, taken: &Taken, origins: &Origins) -> Option<String> {
+    let serial = taken.serial?;
     let typed = |id: &str| origins.typed(id);
-    let several = match (
-        cli.common.connection.baud.len(),
-        cli.common.connection.parity.len(),
-    ) {
+    let several = match (serial.baud.len(), serial.parity.len()) {
         _ if matches!(cli.command, Command::Scan(_)) => return None,
         (2.., _) if typed("baud") => "baud rates",
         (_, 2..) if typed("parity") => "parities",
@@ -446,21 +516,8 @@ fn sweep_outside_scan(cli: &Cli, origins: &Origins) -> Option<String> {
     Some(format!("only scan sweeps several {several}: give one"))
 }
 
-/// The first global option typed on the command line that the command given does not
-/// take, as a one-line message: `decode does not take --baud (see 'mbtool decode --help')`.
-fn untaken_option(command: &clap::Command, origins: &Origins) -> Option<String> {
-    let path = origins.path();
-    let typed = origins.command_in(command)?.get_arguments().find(|arg| {
-        let id = arg.get_id().as_str();
-        is_common_option(id) && !takes_option(&path, id) && origins.typed(id)
-    })?;
-    let name = match (typed.get_long(), typed.get_short()) {
-        (Some(long), _) => format!("--{long}"),
-        (None, Some(short)) => format!("-{short}"),
-        (None, None) => typed.get_id().to_string(),
-    };
-    let path = path.join(" ");
-    Some(format!(
-        "{path} does not take {name} (see 'mbtool {path} --help' for the options it takes)"
-    ))
+/// The first option typed before the command's name that the command does not take, as
+/// a one-line message: `decode does not take --baud (see 'mbtool decode --help')`.
+fn untaken_option(origins: &Origins) -> Option<String> {
+    origins.untaken.clone()
 }

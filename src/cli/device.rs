@@ -2,6 +2,14 @@
 
 use clap::{Args, ValueEnum};
 
+use super::options::{left_out::*, more_in_long_help};
+use super::options::{
+    ExchangeArgs, FormatArgs, LineArgs, MasterArgs, RedundancyArgs, RetriesArgs, SplitArgs,
+    TlsArgs, TraceArgs,
+};
+use super::requests::{ReadByReferenceArgs, RegisterData};
+use super::taken::{holds, Before, Options, Taken};
+
 pub(super) const SCAN_ABOUT: &str = "\
 Find the slaves on a line: each id is asked once (--probe read: function 03, one register at \
 protocol address 0; --probe id: function 17), with the scan's own timeout (--timeout, 100ms \
@@ -89,6 +97,7 @@ exception status (07). A counter the device does not keep is shown as such.
 Exit status 3 when the device does not answer.";
 
 #[derive(Clone, Debug, Args)]
+#[command(after_help = more_in_long_help(&[&[CONNECTION, RS485, TLS]]))]
 pub struct ScanArgs {
     /// The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200
     #[arg(long, value_name = "IDS", default_value = "1-247", value_parser = parse_ids)]
@@ -103,6 +112,66 @@ pub struct ScanArgs {
     /// Try every setting of the sweep, not only up to the first where a slave answers
     #[arg(long)]
     pub all: bool,
+    #[command(flatten)]
+    pub line: LineArgs,
+    #[command(flatten)]
+    pub exchange: ExchangeArgs,
+    #[command(flatten)]
+    pub trace: TraceArgs,
+    #[command(flatten)]
+    pub format: FormatArgs,
+    #[command(flatten)]
+    pub tls: TlsArgs,
+}
+
+holds!(ScanArgs: line, exchange, trace, format, tls);
+
+// watch: a range or a map's points, on a screen of its own. A plain comment: a doc
+// comment would become the about of watch.
+#[derive(Clone, Debug, Args)]
+#[command(after_help = more_in_long_help(&[&[CONNECTION, RS485, TLS, REDUNDANCY, ADDRESSES]]))]
+pub struct WatchArgs {
+    #[command(flatten)]
+    pub read: ReadByReferenceArgs,
+    /// How often to read [default: 1s]
+    #[arg(long, value_name = "INTERVAL", value_parser = mbtool_core::model::duration::parse_duration)]
+    pub poll: Option<std::time::Duration>,
+    #[command(flatten)]
+    pub line: LineArgs,
+    #[command(flatten)]
+    pub exchange: ExchangeArgs,
+    #[command(flatten)]
+    pub retries: RetriesArgs,
+    #[command(flatten)]
+    pub data: RegisterData,
+    #[command(flatten)]
+    pub redundancy: RedundancyArgs,
+    #[command(flatten)]
+    pub tls: TlsArgs,
+}
+
+impl Options for WatchArgs {
+    fn take_before(&mut self, before: &Before) {
+        if let Some(poll) = before.poll() {
+            self.poll = Some(poll);
+        }
+        self.line.take_before(before);
+        self.exchange.take_before(before);
+        self.retries.take_before(before);
+        self.data.take_before(before);
+        self.redundancy.take_before(before);
+        self.tls.take_before(before);
+    }
+
+    fn gather<'a>(&'a self, taken: &mut Taken<'a>) {
+        taken.poll = self.poll;
+        self.line.gather(taken);
+        self.exchange.gather(taken);
+        self.retries.gather(taken);
+        self.data.gather(taken);
+        self.redundancy.gather(taken);
+        self.tls.gather(taken);
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -139,15 +208,44 @@ fn parse_ids(text: &str) -> Result<Ids, String> {
 }
 
 #[derive(Clone, Debug, Args)]
+#[command(after_help = more_in_long_help(&[&[CONNECTION, RS485, TLS, REDUNDANCY, ADDRESSES]]))]
 pub struct DumpArgs {
     /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
     pub slave: String,
     /// References or ranges of references to read (400001-400200 000001-000064)
     #[arg(required = true, value_name = "RANGE")]
     pub ranges: Vec<String>,
+    /// The data file to write [default: standard output]
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<String>,
+    #[command(flatten)]
+    pub master: MasterArgs,
+    #[command(flatten)]
+    pub split: SplitArgs,
+    #[command(flatten)]
+    pub redundancy: RedundancyArgs,
+}
+
+impl Options for DumpArgs {
+    fn take_before(&mut self, before: &Before) {
+        if let Some(file) = before.output() {
+            self.output = Some(file.to_string());
+        }
+        self.master.take_before(before);
+        self.split.take_before(before);
+        self.redundancy.take_before(before);
+    }
+
+    fn gather<'a>(&'a self, taken: &mut Taken<'a>) {
+        taken.file = self.output.as_deref();
+        self.master.gather(taken);
+        self.split.gather(taken);
+        self.redundancy.gather(taken);
+    }
 }
 
 #[derive(Clone, Debug, Args)]
+#[command(after_help = more_in_long_help(&[&[CONNECTION, RS485, TLS, REDUNDANCY, ADDRESSES]]))]
 pub struct RestoreArgs {
     /// Slave address: 1-247, or a unit id over TCP
     pub slave: String,
@@ -156,13 +254,27 @@ pub struct RestoreArgs {
     /// Print the frames that would be sent, and send nothing
     #[arg(long)]
     pub dry_run: bool,
+    #[command(flatten)]
+    pub master: MasterArgs,
+    #[command(flatten)]
+    pub split: SplitArgs,
+    #[command(flatten)]
+    pub redundancy: RedundancyArgs,
 }
+
+holds!(RestoreArgs: master, split, redundancy);
 
 #[derive(Clone, Debug, Args)]
 pub struct InfoArgs {
     /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
     pub slave: String,
+    #[command(flatten)]
+    pub master: MasterArgs,
+    #[command(flatten)]
+    pub format: FormatArgs,
 }
+
+holds!(InfoArgs: master, format);
 
 #[derive(Clone, Debug, Args)]
 pub struct DiagArgs {
@@ -171,4 +283,27 @@ pub struct DiagArgs {
     /// After reading them, clear the device's counters (08/0A)
     #[arg(long)]
     pub clear: bool,
+    /// How many round trips of return query data to time [default: 5]
+    #[arg(long = "count", id = "poll_count", value_name = "N", value_parser = super::values::whole::<u64>(1, i128::from(u64::MAX)))]
+    pub poll_count: Option<u64>,
+    #[command(flatten)]
+    pub master: MasterArgs,
+    #[command(flatten)]
+    pub format: FormatArgs,
+}
+
+impl Options for DiagArgs {
+    fn take_before(&mut self, before: &Before) {
+        if let Some(count) = before.count() {
+            self.poll_count = Some(count);
+        }
+        self.master.take_before(before);
+        self.format.take_before(before);
+    }
+
+    fn gather<'a>(&'a self, taken: &mut Taken<'a>) {
+        taken.count = self.poll_count;
+        self.master.gather(taken);
+        self.format.gather(taken);
+    }
 }

@@ -2,6 +2,10 @@
 
 use clap::Args;
 
+use super::options::{left_out::*, more_in_long_help};
+use super::options::{FormatArgs, MasterArgs, RepeatArgs};
+use super::taken::{Before, Options, Taken};
+
 use mbtool_core::gateway::UnitMap;
 
 pub(super) const GATEWAY_ABOUT: &str = "\
@@ -61,6 +65,7 @@ the one least far along is closed, and refusals are told a line a second. The li
 itself is not tls://.";
 
 #[derive(Clone, Debug, Args)]
+#[command(after_help = more_in_long_help(&[&[CONNECTION, RS485, TLS, ROLES]]))]
 pub struct GatewayArgs {
     /// Where clients connect: tcp://ADDRESS[:PORT], or tls://ADDRESS[:PORT] for
     /// Modbus/TCP Security; repeatable
@@ -81,4 +86,35 @@ pub struct GatewayArgs {
 
     #[command(flatten)]
     pub roles: super::RoleArgs,
+
+    /// Also append every transaction, with its time, to FILE
+    ///
+    /// CSV for a .csv name, JSON Lines for any other
+    #[arg(long, value_name = "FILE")]
+    pub log: Option<std::path::PathBuf>,
+
+    #[command(flatten)]
+    pub master: MasterArgs,
+    #[command(flatten)]
+    pub repeat: RepeatArgs,
+    #[command(flatten)]
+    pub format: FormatArgs,
+}
+
+impl Options for GatewayArgs {
+    fn take_before(&mut self, before: &Before) {
+        if let Some(log) = before.log() {
+            self.log = Some(log.to_path_buf());
+        }
+        self.master.take_before(before);
+        self.repeat.take_before(before);
+        self.format.take_before(before);
+    }
+
+    fn gather<'a>(&'a self, taken: &mut Taken<'a>) {
+        taken.log = self.log.as_deref();
+        self.master.gather(taken);
+        self.repeat.gather(taken);
+        self.format.gather(taken);
+    }
 }

@@ -2,6 +2,10 @@
 
 use clap::Args;
 
+use super::options::{left_out::*, more_in_long_help};
+use super::options::{FormatArgs, LineArgs, TlsArgs};
+use super::taken::holds;
+
 pub(super) const SERVE_ABOUT: &str = "\
 Answer as a simulated slave, for testing masters and HMIs before the device arrives.
 
@@ -59,21 +63,37 @@ pub struct RoleArgs {
     /// Over tls://: what clients of role NAME may do, RULES being read and write, each
     /// alone or with a range (operator=read,write:400001-400100); repeatable. A request
     /// its role does not allow gets exception 01
-    #[arg(long = "role", value_name = "NAME=RULES")]
+    #[arg(
+        long = "role",
+        help_heading = "Roles (tls://)",
+        hide_short_help = true,
+        value_name = "NAME=RULES"
+    )]
     pub roles: Vec<String>,
 
     /// Over tls://: the role of a client whose certificate carries none [default: such a
     /// client is refused, when --role is given]
-    #[arg(long, value_name = "NAME")]
+    #[arg(
+        long,
+        help_heading = "Roles (tls://)",
+        hide_short_help = true,
+        value_name = "NAME"
+    )]
     pub default_role: Option<String>,
 
     /// The role of every client of a plain tcp:// listener, which has no certificate to
     /// claim one: with --role, a plain listener is refused without it
-    #[arg(long, value_name = "NAME")]
+    #[arg(
+        long,
+        help_heading = "Roles (tls://)",
+        hide_short_help = true,
+        value_name = "NAME"
+    )]
     pub plain_role: Option<String>,
 }
 
 #[derive(Clone, Debug, Args)]
+#[command(after_help = more_in_long_help(&[&[FAULTS, ROLES, IDENTIFICATION, CONNECTION, RS485, TLS]]))]
 pub struct ServeArgs {
     /// Answer as this slave id; repeat for several [default: 17]
     #[arg(long = "slave", value_name = "ID", value_parser = clap::value_parser!(u8).range(1..=247))]
@@ -88,28 +108,33 @@ pub struct ServeArgs {
     pub read_only: Vec<String>,
 
     /// Wait this long before each answer
-    #[arg(long, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]
+    #[arg(long, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration, help_heading = "Faults", hide_short_help = true)]
     pub delay: Option<std::time::Duration>,
 
     /// Leave this share of requests unanswered: 0 to 1, or 5%
-    #[arg(long, value_name = "RATE", value_parser = mbtool_core::slave::faults::parse_rate)]
+    #[arg(long, help_heading = "Faults", hide_short_help = true, value_name = "RATE", value_parser = mbtool_core::slave::faults::parse_rate)]
     pub drop: Option<f64>,
 
     /// Corrupt this share of answers (a bad checksum; over TCP a wrong function): 0 to 1, or 5%
-    #[arg(long, value_name = "RATE", value_parser = mbtool_core::slave::faults::parse_rate)]
+    #[arg(long, help_heading = "Faults", hide_short_help = true, value_name = "RATE", value_parser = mbtool_core::slave::faults::parse_rate)]
     pub corrupt: Option<f64>,
 
     /// Answer exception CODE to every request, or to those touching RANGE (CODE@RANGE, as in
     /// 2@400100-400120); repeatable
-    #[arg(long, value_name = "CODE[@RANGE]", value_parser = mbtool_core::slave::faults::InjectedException::parse)]
+    #[arg(long, help_heading = "Faults", hide_short_help = true, value_name = "CODE[@RANGE]", value_parser = mbtool_core::slave::faults::InjectedException::parse)]
     pub exception: Vec<mbtool_core::slave::faults::InjectedException>,
 
     /// Send a few noise bytes (00, FE) before each answer, as a bus being handed over does
-    #[arg(long)]
+    #[arg(long, help_heading = "Faults", hide_short_help = true)]
     pub garbage: bool,
 
     /// Seed for the random choices of --drop, --corrupt and --garbage, to repeat a run
-    #[arg(long, value_name = "N")]
+    #[arg(
+        long,
+        help_heading = "Faults",
+        hide_short_help = true,
+        value_name = "N"
+    )]
     pub seed: Option<u64>,
 
     /// No log line per request
@@ -120,15 +145,29 @@ pub struct ServeArgs {
     pub roles: RoleArgs,
 
     /// Device identification: vendor name
-    #[arg(long, default_value = mbtool_core::slave::DEFAULT_VENDOR)]
+    #[arg(long, help_heading = "Identification", hide_short_help = true, default_value = mbtool_core::slave::DEFAULT_VENDOR)]
     pub vendor: String,
 
     /// Device identification: product code
-    #[arg(long, default_value = "mbtool-sim")]
+    #[arg(
+        long,
+        help_heading = "Identification",
+        hide_short_help = true,
+        default_value = "mbtool-sim"
+    )]
     pub product_code: String,
 
     /// Device identification: any object, by name or id (VendorUrl=https://example.com,
     /// ProductName=Pump, 0x80=serial 4711); repeatable
-    #[arg(long, value_name = "NAME=VALUE", value_parser = mbtool_core::slave::parse_object)]
+    #[arg(long, help_heading = "Identification", hide_short_help = true, value_name = "NAME=VALUE", value_parser = mbtool_core::slave::parse_object)]
     pub identity: Vec<(u8, Vec<u8>)>,
+
+    #[command(flatten)]
+    pub line: LineArgs,
+    #[command(flatten)]
+    pub format: FormatArgs,
+    #[command(flatten)]
+    pub tls: TlsArgs,
 }
+
+holds!(ServeArgs: line, format, tls);

@@ -4,6 +4,9 @@ use clap::{Args, ValueEnum};
 
 use mbtool_core::codec::Direction;
 
+use super::options::{FormatArgs, LineArgs, ModeArg, RegisterArgs};
+use super::taken::{holds, Before, Options, Taken};
+
 pub(super) const DECODE_ABOUT: &str = "\
 Decode Modbus frames given as arguments, or one per line on standard input.
 
@@ -137,6 +140,29 @@ pub struct DecodeArgs {
     /// Read every frame as a request or as a response instead of inferring it
     #[arg(long, value_enum)]
     pub direction: Option<DirectionArg>,
+    /// Framing: rtu, ascii or tcp [default: detected from each frame]
+    #[arg(short, long, env = "MBTOOL_MODE", hide_env_values = true, value_enum)]
+    pub mode: Option<ModeArg>,
+    #[command(flatten)]
+    pub format: FormatArgs,
+    #[command(flatten)]
+    pub registers: RegisterArgs,
+}
+
+impl Options for DecodeArgs {
+    fn take_before(&mut self, before: &Before) {
+        if let Some(mode) = before.mode() {
+            self.mode = Some(mode);
+        }
+        self.format.take_before(before);
+        self.registers.take_before(before);
+    }
+
+    fn gather<'a>(&'a self, taken: &mut Taken<'a>) {
+        taken.mode = self.mode;
+        self.format.gather(taken);
+        self.registers.gather(taken);
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -156,35 +182,42 @@ impl From<DirectionArg> for Direction {
 
 #[derive(Clone, Debug, Args)]
 pub struct SniffArgs {
-    /// Read a capture instead of the port ('-' for standard input): a pcap or pcapng file
-    /// of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line.
+    /// Read a capture (pcap, pcapng, a line's raw bytes; - for stdin) instead of the port
+    ///
+    /// A pcap or pcapng file of Modbus TCP (tcpdump, dumpcap, Wireshark), or the raw bytes of a serial line.
     /// Standard input still open (another program's capture piped in) ends on Ctrl-C or
     /// SIGTERM as a live capture does, its frames and the summary shown. A file of raw bytes
     /// without timing is framed on every core, with the frames found in order
     #[arg(long, value_name = "FILE")]
     pub input: Option<std::path::PathBuf>,
 
-    /// Capture Modbus TCP live from a network interface (eth0, lo) through libpcap; needs
-    /// capture privileges. With --save FILE the packets are kept as pcapng
+    /// Capture Modbus TCP live from a network interface (eth0, lo)
+    ///
+    /// Through libpcap; needs capture privileges. With --save FILE the packets are kept as pcapng
     #[arg(long, value_name = "NAME", conflicts_with = "input")]
     pub interface: Option<String>,
 
-    /// In a pcap or pcapng capture: the TCP port of the Modbus servers [default: 502];
-    /// repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)
+    /// The TCP port of the Modbus servers in a capture [default: 502]
+    ///
+    /// In a pcap or pcapng capture; repeatable. With --mode rtu the streams carry RTU frames (a transparent gateway)
     #[arg(long = "tcp-port", value_name = "PORT", value_parser = clap::value_parser!(u16).range(1..))]
     pub tcp_ports: Vec<u16>,
 
-    /// Keep every byte seen, exactly as received, to replay it later with --input; live,
-    /// their times go to FILE.timing beside it. With --interface, the packets, as pcapng
+    /// Keep every byte seen, to replay it later with --input
+    ///
+    /// Exactly as received; live, their times go to FILE.timing beside it. With --interface, the packets, as pcapng
     #[arg(long, value_name = "FILE")]
     pub save: Option<std::path::PathBuf>,
 
-    /// Also write the frames shown to a pcap file for Wireshark (link type 147, see above)
+    /// Also write the frames shown to a pcap file for Wireshark
+    ///
+    /// Link type 147, see above
     #[arg(long, value_name = "FILE")]
     pub pcap: Option<std::path::PathBuf>,
 
-    /// At the end, a table (or JSON lines of "type":"stats") per server and unit: requests,
-    /// answers, exceptions by code, unanswered, and response time min, mean, p95 and max
+    /// At the end, statistics per server and unit
+    ///
+    /// A table (or JSON lines of "type":"stats") per server and unit: requests, answers, exceptions by code, unanswered, and response time min, mean, p95 and max
     #[arg(long)]
     pub stats: bool,
 
@@ -196,11 +229,18 @@ pub struct SniffArgs {
     #[arg(long = "function", value_name = "CODE", value_parser = parse_function)]
     pub functions: Vec<u8>,
 
-    /// Ask the USB serial driver for its lowest latency (the FTDI latency timer to 1 ms), so
-    /// that gaps between frames can be seen
+    /// Ask the USB serial driver for its lowest latency
+    ///
+    /// The FTDI latency timer to 1 ms, so that gaps between frames can be seen
     #[arg(long)]
     pub low_latency: bool,
+    #[command(flatten)]
+    pub line: LineArgs,
+    #[command(flatten)]
+    pub format: FormatArgs,
 }
+
+holds!(SniffArgs: line, format);
 
 fn parse_function(text: &str) -> Result<u8, String> {
     mbtool_core::model::number::parse_in_range(text, 1, 127, "function code").map(|f| f as u8)

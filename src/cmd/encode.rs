@@ -2,13 +2,13 @@
 
 use anyhow::Result;
 
-use mbtool::cli::RequestCommand;
+use mbtool::cli::{Encoded, RequestCommand};
 use mbtool::error::Error;
 use mbtool::output::{self, encode::write_frame};
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Pdu, Request};
 
-pub fn run(settings: &Settings, request: &RequestCommand) -> Result<u8> {
+pub fn run(settings: &Settings, request: &RequestCommand<Encoded>) -> Result<u8> {
     let mode = super::shared::mode(settings);
     let requests: Vec<(u8, Request)> = match super::map::by_map(settings, request)? {
         Some(by_map) => by_map.requests(settings),

@@ -4,7 +4,7 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::cli::RequestCommand;
+use mbtool::cli::{RequestArgs, RequestCommand, Wire};
 use mbtool::connection::{self, Connection};
 use mbtool::error::Error;
 use mbtool::output::{self, map::MapRows, map::MapWriter};
@@ -304,10 +304,10 @@ pub enum ByMap {
 }
 
 /// The map work of `read --map` or `write --map`, with nothing opened yet.
-pub fn by_map(settings: &Settings, request: &RequestCommand) -> Result<Option<ByMap>> {
+pub fn by_map<W: Wire>(settings: &Settings, request: &RequestCommand<W>) -> Result<Option<ByMap>> {
     let tcp = || super::shared::mode(settings) == Mode::Tcp;
     match request {
-        RequestCommand::Read(args) => match &args.map {
+        RequestCommand::Read(RequestArgs { args, .. }) => match &args.map {
             Some(path) => {
                 let (slave, names) = args.map_words();
                 let plan = plan(settings, path, slave, &names, tcp(), Access::Read)?;
@@ -320,7 +320,7 @@ pub fn by_map(settings: &Settings, request: &RequestCommand) -> Result<Option<By
             .into()),
             None => Ok(None),
         },
-        RequestCommand::Write(args) => match &args.map {
+        RequestCommand::Write(RequestArgs { args, .. }) => match &args.map {
             Some(_) if args.function.is_some() => Err(Error::usage(
                 "--function chooses how values are written by reference; a map writes each point as its type needs",
             )

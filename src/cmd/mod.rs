@@ -26,13 +26,13 @@ use mbtool::settings::Settings;
 pub fn run(settings: &Settings, command: Command) -> Result<u8> {
     match &command {
         Command::Scan(args) => scan::run(settings, args),
-        Command::Watch(args) => watch::run(settings, args),
+        Command::Watch(args) => watch::run(settings, &args.read),
         Command::Info(args) => info::run(settings, args),
         Command::Dump(args) => dump::run(settings, args),
         Command::Restore(args) => restore::run(settings, args),
         Command::Diag(args) => diag::run(settings, args),
         Command::Decode(args) => decode::run(settings, args),
-        Command::Encode { request } => encode::run(settings, request),
+        Command::Encode { request, .. } => encode::run(settings, request),
         Command::Request(request) => request::run(settings, request),
         Command::Serve(args) => serve::run(settings, args),
         Command::Gateway(args) => gateway::run(settings, args),

@@ -4,7 +4,7 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::cli::RequestCommand;
+use mbtool::cli::{OnTheBus, RequestCommand};
 use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output;
@@ -18,7 +18,7 @@ use mbtool_core::master::range::{read_range, Items};
 use mbtool_core::master::{Master, Reply};
 use mbtool_core::model::address::{bit_reference, reference, Table};
 
-pub fn run(settings: &Settings, request: &RequestCommand) -> Result<u8> {
+pub fn run(settings: &Settings, request: &RequestCommand<OnTheBus>) -> Result<u8> {
     // The whole command line is checked before a port is opened.
     if settings.poll.count.is_some() && settings.poll.interval.is_none() {
         return Err(Error::usage(

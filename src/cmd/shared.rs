@@ -9,7 +9,7 @@ use std::time::Instant;
 use anyhow::Result;
 use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
 
-use mbtool::cli::{RequestCommand, RoleArgs};
+use mbtool::cli::{RequestCommand, RoleArgs, Wire};
 use mbtool::connection::{self, Connection, Role};
 use mbtool::error::Error;
 use mbtool::output::encode::frame_text;
@@ -46,7 +46,7 @@ pub fn plan_options(settings: &Settings) -> PlanOptions {
 }
 
 /// Checks the command line of a request command and plans its requests.
-pub fn plan_for(settings: &Settings, request: &RequestCommand) -> Result<Plan, Error> {
+pub fn plan_for<W: Wire>(settings: &Settings, request: &RequestCommand<W>) -> Result<Plan, Error> {
     Ok(plan(&request.operation(), plan_options(settings))?)
 }
 

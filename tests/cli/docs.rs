@@ -8,7 +8,7 @@ use crate::support::mbtool;
 
 #[test]
 fn the_clap_definition_is_consistent() {
-    mbtool::docs::command().debug_assert();
+    mbtool::cli::definition().debug_assert();
 }
 
 fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
@@ -105,11 +105,11 @@ fn every_help_example_is_one_the_command_accepts() {
         // `decode --json < frames.txt` reads standard input, here empty.
         let line = example.command.split(" < ").next().unwrap();
         let words: Vec<&str> = line.split_whitespace().collect();
-        let mut definition = mbtool::docs::command();
+        let mut definition = mbtool::cli::definition();
         let os_words: Vec<std::ffi::OsString> = words.iter().map(Into::into).collect();
-        let (cli, origins) = mbtool::settings::read(&mut definition, &os_words)
+        let (cli, origins) = mbtool::settings::read(&mut definition, os_words)
             .unwrap_or_else(|e| panic!("{line}: {e}"));
-        let resolved = mbtool::settings::resolve(&cli, &definition, &origins);
+        let resolved = mbtool::settings::resolve(&cli, &origins);
         assert_eq!(resolved.err(), None, "{line}");
         let path = origins.path();
         let name = path[0];
@@ -168,143 +168,61 @@ fn completion_offers_only_the_options_a_command_takes() {
     assert!(!coils.contains(&"--type".to_string()), "{coils:?}");
 }
 
-/// A command added without saying which global options it takes would take none.
+/// A command added without the options of its kind takes none: each takes a port, a
+/// framing or an output format as its own.
 #[test]
 fn every_command_says_which_options_it_takes() {
-    let command = mbtool::docs::command();
-    let commands = command.get_subcommands();
-    for sub in commands.filter(|sub| !sub.is_hide_set() && sub.get_name() != "help") {
-        let leaves: Vec<Vec<&str>> = if sub.has_subcommands() {
+    let mut command = mbtool::cli::definition();
+    command.build();
+    for sub in command
+        .get_subcommands()
+        .filter(|sub| !sub.is_hide_set() && sub.get_name() != "help")
+    {
+        let leaves: Vec<&clap::Command> = if sub.has_subcommands() {
             sub.get_subcommands()
                 .filter(|leaf| leaf.get_name() != "help")
-                .map(|leaf| vec![sub.get_name(), leaf.get_name()])
                 .collect()
         } else {
-            vec![vec![sub.get_name()]]
+            vec![sub]
         };
-        for path in &leaves {
-            let takes = ["port", "mode", "output"]
-                .iter()
-                .any(|id| mbtool::cli::takes_option(path, id));
-            assert!(takes, "{path:?}");
+        for leaf in leaves {
+            let takes = leaf.get_arguments().any(|arg| {
+                !arg.is_global_set() && ["port", "mode", "output"].contains(&arg.get_id().as_str())
+            });
+            assert!(takes, "{}", leaf.get_name());
         }
     }
 }
 
-/// The options every command shares are known by name where they are read (which a
-/// command takes, where a value came from): the names are those of the definition.
+/// Help a person reads: `mbtool -h` and every command's `-h` fit on a screen; `--help`
+/// keeps everything.
 #[test]
-fn the_common_options_by_name_are_those_of_the_definition() {
-    let common = <mbtool::cli::Common as clap::Args>::augment_args(clap::Command::new("mbtool"));
-    let ids: Vec<&str> = common
-        .get_arguments()
-        .map(|arg| arg.get_id().as_str())
-        .collect();
-    assert!(ids.len() > 30, "{ids:?}");
-    for id in &ids {
-        assert!(mbtool::cli::is_common_option(id), "{id}");
-    }
-    for own in ["slave", "address", "count", "values", "pdu", "bogus"] {
-        assert!(!mbtool::cli::is_common_option(own), "{own}");
-    }
-}
-
-/// A command line is parsed without building every command's definition first: deriving
-/// every command's arguments, and copying every global option into every command, cost
-/// each run more than its work.
-#[test]
-fn a_command_line_is_parsed_without_building_every_command() {
-    use clap::CommandFactory;
-    let args = |line: &str| -> Vec<std::ffi::OsString> {
-        line.split_whitespace().map(Into::into).collect()
+fn short_help_fits_on_a_screen() {
+    let lines = |words: &[&str]| -> usize {
+        let output = mbtool().env("NO_COLOR", "1").args(words).output().unwrap();
+        assert!(output.status.success(), "{words:?}: {output:?}");
+        String::from_utf8(output.stdout).unwrap().lines().count()
     };
-    // The definition as derived names every command, and derives none's arguments.
-    let derived = mbtool::cli::Cli::command();
-    assert!(derived.get_subcommands().count() > 20);
-    assert!(derived
+    assert!(lines(&["-h"]) <= 50);
+    let mut command = mbtool::cli::definition();
+    command.build();
+    for sub in command
         .get_subcommands()
-        .all(|sub| sub.get_arguments().next().is_none()));
-    // A command line is parsed with the command it names alone, its own arguments still
-    // not derived: the parse derives what it goes through. The command takes the common
-    // options itself, not as globals, and those typed before its name are moved after it.
-    let (parser, words) = mbtool::docs::parser(&args("mbtool --port sim read-coils 17 1"));
-    assert_eq!(words, args("mbtool read-coils --port sim 17 1"));
-    let names: Vec<&str> = parser.get_subcommands().map(|sub| sub.get_name()).collect();
-    assert_eq!(names, ["read-coils"]);
-    assert_eq!(parser.get_arguments().count(), 0);
-    let named = parser.find_subcommand("read-coils").unwrap();
-    assert!(named.get_arguments().all(|arg| !arg.is_global_set()));
-    let ids = |command: &clap::Command| -> Vec<String> {
-        command
-            .get_arguments()
-            .map(|arg| arg.get_id().to_string())
-            .collect()
-    };
-    assert_eq!(ids(named), ids(&derived));
-    let matches = parser
-        .clone()
-        .try_get_matches_from(args("mbtool read-coils --port sim 17 1 --timeout 1s"))
-        .unwrap();
-    let (_, leaf) = matches.subcommand().unwrap();
-    assert_eq!(
-        leaf.get_one::<String>("address").map(String::as_str),
-        Some("1")
-    );
-    // Only the commands that hold commands keep the options global, to pass them on.
-    let mut built = mbtool::cli::Cli::command();
-    built.build();
-    for sub in built
-        .get_subcommands()
-        .filter(|sub| sub.get_name() != "help")
+        .filter(|sub| !sub.is_hide_set() && sub.get_name() != "help")
     {
-        let holds = sub.get_subcommands().any(|sub| sub.get_name() != "help");
-        let listed = mbtool::cli::COMMANDS_OF_COMMANDS.contains(&sub.get_name());
-        assert_eq!(holds, listed, "{}", sub.get_name());
+        let mut paths = vec![vec![sub.get_name()]];
+        paths.extend(
+            sub.get_subcommands()
+                .filter(|leaf| leaf.get_name() != "help")
+                .map(|leaf| vec![sub.get_name(), leaf.get_name()]),
+        );
+        for path in paths {
+            let short = lines(&[path.as_slice(), &["-h"]].concat());
+            assert!(short <= 40, "{path:?}: {short} lines");
+            let long = lines(&[path.as_slice(), &["--help"]].concat());
+            assert!(long > short, "{path:?}");
+        }
     }
-    // Where the words before the command cannot be moved for sure (a cluster of flags),
-    // the common options stay global, on the top, as derived.
-    let (parser, words) = mbtool::docs::parser(&args("mbtool -vp sim read-coils 17 1"));
-    assert_eq!(words, args("mbtool -vp sim read-coils 17 1"));
-    assert_eq!(ids(&parser), ids(&derived));
-    assert!(parser.get_arguments().all(|arg| arg.is_global_set()));
-    let named = parser.find_subcommand("read-coils").unwrap();
-    assert!(named.get_arguments().next().is_none());
-    // The parser's top is the derived top: the same settings.
-    let top = mbtool::docs::top_of_parse();
-    assert_eq!(top.get_version(), derived.get_version());
-    assert_eq!(
-        top.is_propagate_version_set(),
-        derived.is_propagate_version_set()
-    );
-    assert_eq!(
-        top.is_subcommand_required_set(),
-        derived.is_subcommand_required_set()
-    );
-    assert_eq!(
-        top.is_arg_required_else_help_set(),
-        derived.is_arg_required_else_help_set()
-    );
-    // An alias names its command too; no command (`--version`) builds none, nor the
-    // common options.
-    let (parser, words) = mbtool::docs::parser(&args("mbtool -p sim read-holding-registers 17 1"));
-    let names: Vec<&str> = parser.get_subcommands().map(|sub| sub.get_name()).collect();
-    assert_eq!(names, ["read-holding"]);
-    assert_eq!(words, args("mbtool read-holding-registers -p sim 17 1"));
-    let (parser, _) = mbtool::docs::parser(&args("mbtool --version"));
-    assert_eq!(parser.get_subcommands().count(), 0);
-    assert_eq!(parser.get_arguments().count(), 0);
-    // A refused command line is told with every command, the one named described.
-    let whole = mbtool::docs::whole_parser(&args("mbtool read-coils"));
-    assert!(whole.get_subcommands().count() > 20);
-    let address = whole
-        .find_subcommand("read-coils")
-        .and_then(|sub| sub.get_arguments().find(|a| a.get_id() == "address"))
-        .unwrap();
-    assert!(address
-        .get_help()
-        .unwrap()
-        .to_string()
-        .starts_with("First coil"));
 }
 
 #[test]
@@ -325,139 +243,6 @@ fn an_option_value_that_is_a_command_name_is_no_command() {
     assert!(stderr.contains("read-holding"), "{stderr}");
 }
 
-/// The first parse of a command line (the command named alone, the options typed before
-/// its name moved after it) reads every line as the whole definition does: what it
-/// accepts, with the same values from the same places and the same settings, and what it
-/// refuses. A line it refuses is read again with the whole definition, so refusing more
-/// costs time, never a different answer; accepting one the whole definition refuses
-/// would be a different answer.
-#[test]
-fn the_first_parse_reads_every_command_line_as_the_whole_definition_does() {
-    use proptest::prelude::*;
-    use proptest::test_runner::{Config, TestRunner};
-    const OPTIONS: &[&str] = &[
-        "-p sim",
-        "--port=sim",
-        "-psim",
-        "--port tcp://127.0.0.1:1502",
-        "-b 9600",
-        "--baud 9600,19200",
-        "-b9600",
-        "--parity=odd",
-        "--parity none",
-        "-t f32",
-        "--type u16",
-        "-tu32",
-        "--order CDAB",
-        "-v",
-        "--verbose",
-        "--json",
-        "-o csv",
-        "-o=json",
-        "--output values",
-        "-o info",
-        "--timeout 2s",
-        "--timeout=0",
-        "--retries 2",
-        "--retries -1",
-        "--rs485",
-        "--rs485-delay-before 3",
-        "--rts-toggle",
-        "--rts-level low",
-        "--address-base 1",
-        "--pdu-addresses",
-        "--secondary-port tcp://127.0.0.1:1",
-        "--switch-on timeout:2",
-        "--poll 1s",
-        "--count 3",
-        "-m ascii",
-        "--mode=tcp",
-        "--cert x.pem",
-        "--frame-gap 0",
-        "--max-per-request 10",
-        "--data-bits 7",
-        "--stop-bits 2",
-        "--bogus",
-        "-x",
-        "-vp sim",
-        "-pv",
-        "--json=1",
-        "--port",
-        "--",
-        "-V",
-        "read-holding",
-        "17",
-    ];
-    const COMMANDS: &[&str] = &[
-        "read-holding 17 108 3",
-        "read-holding-registers 17 400108",
-        "read-coils 1 0 8",
-        "read-inputs 1 10",
-        "read-input-registers 1 300001-300004",
-        "read 17 400108 2",
-        "write-register 17 108 5",
-        "write-registers 17 108 1 2 3",
-        "write-coil 17 5 on",
-        "write-coils 17 0 1 0 1",
-        "write 17 400108 7",
-        "raw 17 0300000001",
-        "info 17",
-        "diag 17",
-        "scan",
-        "decode 11 03 00 6B 00 03 76 87",
-        "sniff",
-        "dump 17 400108-400110",
-        "ports",
-        "encode read-holding 17 1",
-        "encode write-coil 1 2 on",
-        "watch 17 400001",
-        "serve --slave 17",
-        "restore 17 x.csv",
-        "gateway --listen 127.0.0.1:1502",
-    ];
-    fn outcome(definition: &mut clap::Command, words: &[std::ffi::OsString]) -> String {
-        match mbtool::settings::read(definition, words) {
-            Ok((cli, origins)) => {
-                let settings = mbtool::settings::resolve(&cli, definition, &origins);
-                format!("{cli:?}\n{origins:?}\n{settings:?}")
-            }
-            Err(error) => format!("refused: {:?}", error.kind()),
-        }
-    }
-    let moved = std::cell::Cell::new(0);
-    let line = (
-        prop::collection::vec(prop::sample::select(OPTIONS), 0..4),
-        prop::sample::select(COMMANDS),
-        prop::collection::vec(prop::sample::select(OPTIONS), 0..3),
-    );
-    let mut runner = TestRunner::new(Config {
-        cases: 400,
-        failure_persistence: None,
-        ..Config::default()
-    });
-    runner
-        .run(&line, |(before, command, after)| {
-            let text = format!("mbtool {} {command} {}", before.join(" "), after.join(" "));
-            let words: Vec<std::ffi::OsString> = text.split_whitespace().map(Into::into).collect();
-            let (mut first, first_words) = mbtool::docs::parser(&words);
-            let first = outcome(&mut first, &first_words);
-            let whole = outcome(&mut mbtool::docs::whole_parser(&words), &words);
-            if !first.starts_with("refused") {
-                prop_assert_eq!(&first, &whole, "{}", text);
-                if first_words != words {
-                    moved.set(moved.get() + 1);
-                }
-            } else {
-                // Refused first, read again whole: only help and the version are final.
-                prop_assert!(!first.contains("Display") || whole == first, "{}", text);
-            }
-            Ok(())
-        })
-        .unwrap();
-    // The lines above are mostly plain ones: most of them must take the short way.
-    assert!(moved.get() > 100, "{} of 400 lines moved", moved.get());
-}
-
 /// Help is the whole definition's however it is asked for: `-h` alone or in a cluster of
 /// flags, before the command's arguments or after them; `--help` or `help COMMAND`.
 #[test]
@@ -471,14 +256,21 @@ fn help_is_the_same_however_it_is_asked_for() {
         assert!(output.status.success(), "{line}: {output:?}");
         String::from_utf8(output.stdout).unwrap()
     };
-    for command in ["read-holding", "decode", "ports", "encode read-coils"] {
+    // Clustered with a flag the command takes: -v, or --json for those that take no -v.
+    for (command, flag) in [
+        ("read-holding", "-v"),
+        ("decode", "--json"),
+        ("ports", "--json"),
+        ("encode read-coils", "--json"),
+    ] {
         let short = help(&format!("{command} -h"));
-        for line in [
-            format!("{command} -vh"),
-            format!("{command} -hv"),
-            format!("-v {command} -h"),
-            format!("{command} -hp sim"),
-        ] {
+        let lines = [
+            format!("{command} {flag} -h"),
+            format!("{command} -h {flag}"),
+            format!("{flag} {command} -h"),
+            format!("{command} -h -p sim"),
+        ];
+        for line in lines {
             assert_eq!(help(&line), short, "{line}");
         }
         let long = help(&format!("{command} --help"));
@@ -492,11 +284,11 @@ fn help_is_the_same_however_it_is_asked_for() {
     assert_eq!(help("-v --help"), long);
     // What the whole definition shows: the command's own arguments under their heading,
     // and only the options it takes.
-    let read = help("read-holding -vh");
+    let read = help("read-holding -h");
     assert!(
         read.starts_with("Read holding registers (function 03)"),
         "{read}"
     );
     assert!(read.contains("Arguments:\n  <SLAVE>"), "{read}");
-    assert!(!help("decode -vh").contains("--port"));
+    assert!(!help("decode -h").contains("--port"));
 }
