@@ -953,6 +953,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --order 'Byte order of values wider than 16 bits (A: the most significant byte)'
             cand --json 'The same as --output json'
             cand --pdu-addresses 'Take every address as a plain number, never as a Modicon reference'
+            cand --retry-non-idempotent 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
             cand -V 'Print version'

@@ -534,4 +534,6 @@ pub struct EncodeOptions {
     pub split: SplitArgs,
     #[command(flatten)]
     pub registers: RegisterArgs,
+    #[command(flatten)]
+    pub repeat: RepeatArgs,
 }

@@ -124,7 +124,7 @@ group! {
 holds!(LineArgs: endpoint, serial, rs485);
 holds!(MasterArgs: line, exchange, retries, trace, tls);
 holds!(EveryOption: master, repeat, format, addresses, split, registers, poll, redundancy);
-holds!(EncodeOptions: endpoint, format, addresses, split, registers);
+holds!(EncodeOptions: endpoint, format, addresses, split, registers, repeat);
 
 impl Options for EndpointArgs {
     fn gather<'a>(&'a self, taken: &mut Taken<'a>) {

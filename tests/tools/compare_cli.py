@@ -351,8 +351,10 @@ def random_timing(rng, size):
 
 
 class LineRandom(random.Random):
-    """The random source of one line; a clean line makes no mistakes on purpose."""
+    """The random source of one line; a clean line makes no mistakes on purpose, and
+    `ports` are the TCP ports the line may listen on."""
     clean = False
+    ports = ()
 
 
 def pick(rng, good, bad=(), p_bad=0.05):
@@ -363,14 +365,14 @@ def pick(rng, good, bad=(), p_bad=0.05):
 
 
 # Ports a master may be pointed at: nothing beyond 127.0.0.1, no real serial device.
-# 127.0.0.1:1 and :502 have nothing listening (listening lines never run beside others).
+# 127.0.0.1:1 and :502 have nothing listening: serve and gateway never listen there.
 MASTER_PORTS_GOOD = ["sim"] * 14 + ["tcp://127.0.0.1:1", "127.0.0.1:1", "rtu+tcp://127.0.0.1:1",
                                     "tls://127.0.0.1:1", "/dev/ttyNOPE", "tcp://127.0.0.1"]
 MASTER_PORTS_BAD = ["", "COM3", "tcp://127.0.0.1:99999", "tcp://127.0.0.1:x", "udp://127.0.0.1:1",
                     "tcp://", "sim:1", "tls://127.0.0.1:1:2", "rtu+tcp://127.0.0.1"]
-# Ports serve and gateway listen on: 127.0.0.1 only.
-# (Uncommon ones, below the ephemeral range: another test suite may be using 5020.)
-LISTEN_PORTS = ["21502", "25020", "31502"]
+# serve and gateway listen on 127.0.0.1 only, on two ports of their line's own
+# (LineRandom.ports): two lines that run at once never want the same port, so they need
+# not run alone. Below the ephemeral range, and not 5020, which other tests may be using.
 
 DURATIONS_BAD = ["500", "fast", "0", "-1s", "61", "1h", "ms", "1.5.2s", ""]
 TYPES = ["u16", "i16", "u32", "i32", "f32", "u64", "i64", "f64", "hex", "bin", "ascii"]
@@ -380,15 +382,17 @@ ORDERS_BAD = ["abcd", "XYZW", "AB", "DCAB"]
 
 
 def v_port(rng, cmd):
+    if cmd == "serve":  # where serve listens
+        return v_listen_port(rng, cmd)
     return pick(rng, MASTER_PORTS_GOOD, MASTER_PORTS_BAD)
 
 
 def v_listen_port(rng, cmd):
     if rng.random() < 0.85:
-        return "tcp://:" + rng.choice(LISTEN_PORTS)
-    return rng.choice(["tcp://127.0.0.1:" + rng.choice(LISTEN_PORTS), "sim", "/dev/ttyNOPE",
-                       "tls://127.0.0.1:8802", "rtu+tcp://127.0.0.1:" + rng.choice(LISTEN_PORTS),
-                       "tcp://:99999", "udp://:1502", ""])
+        return "tcp://:" + rng.choice(rng.ports)
+    return rng.choice(["tcp://127.0.0.1:" + rng.choice(rng.ports), "sim", "/dev/ttyNOPE",
+                       "tls://127.0.0.1:" + rng.choice(rng.ports), "rtu+tcp://127.0.0.1:" + rng.choice(rng.ports),
+                       "tcp://:99999", "udp://:" + rng.choice(rng.ports), ""])
 
 
 def v_mode(rng, cmd):
@@ -479,9 +483,9 @@ def v_listen(rng, cmd):
     if cmd == "scan":
         return pick(rng, ["100ms", "1s", "50ms"], ["x", "-1"])
     if rng.random() < 0.8:
-        return "tcp://:" + rng.choice(LISTEN_PORTS)
-    return rng.choice(["tls://:8802", "tcp://127.0.0.1:" + rng.choice(LISTEN_PORTS), "udp://:1502",
-                       "tcp://:99999", "sim", "", ":1502"])
+        return "tcp://:" + rng.choice(rng.ports)
+    return rng.choice(["tls://:" + rng.choice(rng.ports), "tcp://127.0.0.1:" + rng.choice(rng.ports), "udp://:1502",
+                       "tcp://:99999", "sim", "", ":" + rng.choice(rng.ports)])
 
 
 def v_input(rng, cmd):
@@ -786,7 +790,7 @@ class Case:
     stdin: bytes = None  # None: /dev/null
     files: dict = field(default_factory=dict)  # extra files for the working directory
     help: bool = False  # asks for help or the version: not run
-    exclusive: bool = False  # listens: runs alone
+    exclusive: bool = False  # runs alone (sniff --interface lo would hear the others)
     forever: bool = False  # meant to run until stopped
     clean: bool = False  # no mistakes made on purpose
 
@@ -831,6 +835,8 @@ class Generator:
 
     def case(self, index):
         rng = LineRandom(f"{self.seed}:{index}")
+        base = 20000 + index % 5000 * 2
+        rng.ports = [str(base), str(base + 1)]
         case = Case(index=index, argv=[], env={})
         r = rng.random()
         rng.clean = case.clean = rng.random() < 0.4
@@ -936,8 +942,7 @@ class Generator:
                 options.append(["--count", rng.choice(["1", "2", "3"])])
             elif "--count" not in chosen:
                 case.forever = True
-        if command in ("serve", "gateway") or (command == "sniff" and "--interface" in chosen):
-            case.exclusive = True
+        if command in ("serve", "gateway"):
             case.forever = True
 
         # Where each option goes: before the command name, after it, or among the arguments.
@@ -966,6 +971,9 @@ class Generator:
         if not rng.clean and rng.random() < 0.015:  # the command name itself mistyped
             argv[argv.index(name)] = typo(rng, name)
         case.argv = argv
+        if command == "sniff" and any(w in ("lo", "--interface=lo") for w in argv):
+            case.exclusive = True  # a live capture on lo would hear the other lines
+            case.forever = True
 
     def spell(self, rng, opt, value):
         """--name value, --name=value, -x value or -xvalue."""
@@ -1009,7 +1017,7 @@ class Generator:
             if rng.random() < 0.8:
                 fault = rng.choice([
                     ["--unit-map", rng.choice(["x", "1=300", "1:17"])], ["--role", "viewer=read"],
-                    ["--listen", "udp://:1502"], ["--listen", "tls://:8802"], ["--timeout", "500"],
+                    ["--listen", "udp://:1502"], ["--listen", "tls://:" + rng.ports[1]], ["--timeout", "500"],
                     ["--log", "sub/gw.csv"], ["--interface", "lo"], ["--retries", "-1"],
                     ["--default-role", ""], ["--baud", "fast"], ["--map", "pump3.csv"],
                 ])
@@ -1107,16 +1115,18 @@ class Generator:
 
     def environment(self, rng, case):
         p = 0.1 if rng.random() < 0.3 else 0.0
+        listens = any(w in ("serve", "gateway") for w in case.argv)
         for name, good, bad in ENVIRONMENT:
             chance = p * (3 if name == "MBTOOL_PORT" else 1)
             if rng.random() < chance:
+                if name == "MBTOOL_PORT" and listens:  # never where masters connect
+                    good = [g for g in good if "127.0.0.1" not in g]
                 case.env[name] = pick(rng, good, bad, 0.15)
         # A bus command without --port that would find none: now and then give it sim.
         if "--port" not in " ".join(case.argv) and rng.random() < 0.5 and "MBTOOL_PORT" not in case.env:
             if any(c in case.argv for c in BUS_COMMANDS):
                 case.env["MBTOOL_PORT"] = "sim"
-        if any(w in ("serve", "gateway") for w in case.argv):
-            case.exclusive = True
+        if listens:
             case.forever = True
         # dump and restore wait for a slave that does not answer in real time, each retry
         # and each try on a path with a secondary again: with retries or a secondary, keep
