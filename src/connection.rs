@@ -7,9 +7,10 @@ use crate::settings::Connection as Options;
 use mbtool_core::codec::{ExceptionCode, Mode};
 use mbtool_core::master::failover::{Failover, PathName, Switch, SwitchRule};
 use mbtool_core::master::{Master, MasterOptions};
+use mbtool_core::model::line::DirectionControl;
+use mbtool_core::model::line::{LineSettings, Parity};
 use mbtool_core::model::map::MapConnection;
-use mbtool_core::transport::rs485::DirectionControl;
-use mbtool_core::transport::serial::{LineSettings, Parity, Serial};
+use mbtool_core::transport::serial::Serial;
 use mbtool_core::transport::tcp::Tcp;
 use mbtool_core::transport::tls::{ClientTls, Session, Tls};
 use mbtool_core::transport::{Endpoint, Transport};
@@ -191,9 +192,7 @@ pub fn open_at(
         Endpoint::RtuOverTcp { host, port } => {
             Tcp::connect(host, *port, timeout, true).map(|t| Box::new(t) as Box<dyn Transport>)
         }
-        Endpoint::Sim => Ok(Box::new(mbtool_core::transport::sim::SimTransport::new(
-            mode,
-        ))),
+        Endpoint::Sim => Ok(Box::new(mbtool_core::slave::sim::SimTransport::new(mode))),
     };
     opened.map_err(|e| {
         Error::Io(io::Error::new(

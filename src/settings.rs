@@ -18,9 +18,9 @@ use crate::output::{colour_wanted, Format, Style};
 use mbtool_core::codec::Mode;
 use mbtool_core::master::failover::{SwitchCondition, SwitchRule};
 use mbtool_core::model::address::Numbering;
+use mbtool_core::model::line::Parity;
+use mbtool_core::model::line::{DirectionControl, RtsTiming};
 use mbtool_core::model::values::{ByteOrder, ValueType};
-use mbtool_core::transport::rs485::{DirectionControl, RtsTiming};
-use mbtool_core::transport::serial::Parity;
 use mbtool_core::transport::tls::TlsFiles;
 use mbtool_core::transport::Endpoint;
 

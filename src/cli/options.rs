@@ -11,9 +11,9 @@ use mbtool_core::codec::Mode;
 use mbtool_core::master::failover::{SwitchCondition, SwitchWhen};
 use mbtool_core::model::address::AddressBase;
 use mbtool_core::model::choice::Choice;
+use mbtool_core::model::line::RtsLevel;
+use mbtool_core::model::line::{Parity, BAUDS, DATA_BITS, STOP_BITS};
 use mbtool_core::model::values::{ByteOrder, ValueType};
-use mbtool_core::transport::rs485::RtsLevel;
-use mbtool_core::transport::serial::{Parity, BAUDS, DATA_BITS, STOP_BITS};
 
 use super::values::{choice, positive_duration, switch, whole, whole_in};
 

@@ -12,7 +12,7 @@ use mbtool::settings::Settings;
 use mbtool_core::codec::function;
 use mbtool_core::master::device::{clear_counters, counters, exception_status, round_trips, Asked};
 
-use super::info::outcome;
+use super::shared::outcome;
 
 /// Round trips timed when `--count` does not say.
 const ROUND_TRIPS: u64 = 5;

@@ -10,18 +10,10 @@ use mbtool::output::device::{write_info, InfoReport, Outcome};
 use mbtool::output::{self, colour_wanted};
 use mbtool::settings::Settings;
 use mbtool_core::codec::function;
-use mbtool_core::master::device::{identification, server_id, Asked};
+use mbtool_core::master::device::{identification, server_id};
 use mbtool_core::master::MasterError;
 
-/// One function's outcome; a timeout is kept as "no answer" so that the other function
-/// still has its say, any other failure ends the command.
-pub fn outcome<T>(asked: Result<Asked<T>, MasterError>) -> Result<Outcome<T>, MasterError> {
-    match asked {
-        Ok(asked) => Ok(asked.into()),
-        Err(error @ MasterError::Timeout { .. }) => Ok(Outcome::NoAnswer(error.to_string())),
-        Err(error) => Err(error),
-    }
-}
+use super::shared::outcome;
 
 pub fn run(settings: &Settings, args: &InfoArgs) -> Result<u8> {
     let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;

@@ -14,7 +14,8 @@ use mbtool::output::{self, colour_wanted};
 use mbtool::settings::Settings;
 use mbtool_core::codec::Mode;
 use mbtool_core::master::scan::{scan, sweep, Probe, Progress, ScanOptions, ScanReport};
-use mbtool_core::transport::serial::{self, LineSettings};
+use mbtool_core::model::line::LineSettings;
+use mbtool_core::transport::serial;
 use mbtool_core::transport::Endpoint;
 
 pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {

@@ -12,14 +12,16 @@ use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
 use mbtool::cli::{RequestCommand, RoleArgs, Wire};
 use mbtool::connection::{self, Connection, Role};
 use mbtool::error::Error;
+use mbtool::output::device::Outcome;
 use mbtool::output::encode::frame_text;
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Mode, Request};
 use mbtool_core::listener::roles::Roles;
 use mbtool_core::listener::Security;
+use mbtool_core::master::device::Asked;
 use mbtool_core::master::failover::{PathName, Switch};
 use mbtool_core::master::plan::{parse_slave, plan, Plan, PlanOptions};
-use mbtool_core::master::{Master, Traffic};
+use mbtool_core::master::{Master, MasterError, Traffic};
 use mbtool_core::transport::tls::TlsServer;
 use mbtool_core::transport::Endpoint;
 
@@ -260,5 +262,15 @@ pub fn plain_role(
         None => Err(Error::usage(format!(
             "--plain-role {name} is none of the roles given with --role: give one of them (--role {name}=read, say)"
         ))),
+    }
+}
+
+/// One function's outcome; a timeout is kept as "no answer" so that the other function
+/// still has its say, any other failure ends the command.
+pub fn outcome<T>(asked: Result<Asked<T>, MasterError>) -> Result<Outcome<T>, MasterError> {
+    match asked {
+        Ok(asked) => Ok(asked.into()),
+        Err(error @ MasterError::Timeout { .. }) => Ok(Outcome::NoAnswer(error.to_string())),
+        Err(error) => Err(error),
     }
 }

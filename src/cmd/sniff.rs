@@ -16,14 +16,15 @@ use mbtool::error::Error;
 use mbtool::output::{self, sniff::SniffWriter, Named};
 use mbtool::settings::Settings;
 use mbtool_core::codec::Mode;
+use mbtool_core::model::line::DirectionControl;
+use mbtool_core::model::line::LineSettings;
 use mbtool_core::sniff::capture;
 use mbtool_core::sniff::pcap::{self, PcapWriter};
 use mbtool_core::sniff::session::{Filter, Record, Session};
 use mbtool_core::sniff::stats::Stats;
 use mbtool_core::sniff::tcp::{TcpSession, MODBUS_PORT};
 use mbtool_core::sniff::timing::{self, RecordedLine};
-use mbtool_core::transport::rs485::DirectionControl;
-use mbtool_core::transport::serial::{self, LineSettings};
+use mbtool_core::transport::serial;
 use mbtool_core::transport::{Endpoint, Transport};
 
 mod replay;

@@ -8,8 +8,9 @@ use comfy_table::{Cell, Color};
 use super::Format;
 use super::{csv_field, new_table, Style};
 use mbtool_core::codec::{Checksum, ExceptionCode, Mode};
-use mbtool_core::describe::{spaced_hex, Fields, FrameReport, Values};
+use mbtool_core::describe::{Fields, FrameReport, Values};
 use mbtool_core::model::address::{reference, Table};
+use mbtool_core::model::hexdump::spaced_hex;
 use mbtool_core::model::values::{ByteOrder, ValueType};
 
 pub struct DecodeWriter {

@@ -6,7 +6,7 @@ use serde::Serialize;
 
 use super::Format;
 use mbtool_core::codec::Mode;
-use mbtool_core::describe::spaced_hex;
+use mbtool_core::model::hexdump::spaced_hex;
 
 #[derive(Serialize)]
 struct EncodedFrame<'a> {

@@ -9,8 +9,9 @@ use serde::Serialize;
 use super::Format;
 use super::{csv_field, new_table, Style};
 use mbtool_core::master::range::RangeRead;
-use mbtool_core::master::run::{ReadData, ReadResult};
+use mbtool_core::master::run::ReadResult;
 use mbtool_core::model::address::{bit_reference, reference};
+use mbtool_core::model::values::ReadData;
 use mbtool_core::model::values::{text, Value, ValueType};
 
 #[derive(Serialize)]

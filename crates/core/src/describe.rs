@@ -14,6 +14,7 @@ use crate::codec::{
     Response,
 };
 use crate::model::address::{reference, Reference, Table};
+use crate::model::hexdump::spaced_hex;
 use crate::model::values::escape_text;
 
 /// Which kind of PDU a frame carries.
@@ -287,26 +288,6 @@ fn mode_named(name: &str) -> Option<Mode> {
     [Mode::Rtu, Mode::Ascii, Mode::Tcp]
         .into_iter()
         .find(|mode| mode.name() == name)
-}
-
-/// Formats bytes as spaced upper-case hex, the way mbtool prints every frame.
-pub fn spaced_hex(bytes: &[u8]) -> String {
-    let mut out = String::with_capacity(bytes.len() * 3);
-    push_spaced_hex(&mut out, bytes);
-    out
-}
-
-/// [`spaced_hex`], appended to `out`.
-pub fn push_spaced_hex(out: &mut String, bytes: &[u8]) {
-    const HEX: &[u8; 16] = b"0123456789ABCDEF";
-    out.reserve(bytes.len() * 3);
-    for (i, byte) in bytes.iter().enumerate() {
-        if i > 0 {
-            out.push(' ');
-        }
-        out.push(char::from(HEX[usize::from(byte >> 4)]));
-        out.push(char::from(HEX[usize::from(byte & 0x0F)]));
-    }
 }
 
 fn with_reference(function: u8, address: u16) -> (Option<u16>, Option<Reference>) {

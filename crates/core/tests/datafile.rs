@@ -3,8 +3,8 @@
 //! give a value, and no text panics the reader.
 #![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
-use mbtool_core::master::run::ReadData;
 use mbtool_core::model::address::{reference, Table};
+use mbtool_core::model::values::ReadData;
 use mbtool_core::slave::datafile::DataFileError;
 use mbtool_core::slave::datafile::{entries, parse, render, Entry, EntryError};
 use proptest::collection::vec;

@@ -337,7 +337,7 @@ proptest! {
                 _ => None,
             })
             .collect();
-        prop_assert_eq!(found, vec![bytes.as_slice()], "{}", mbtool_core::describe::spaced_hex(&bytes));
+        prop_assert_eq!(found, vec![bytes.as_slice()], "{}", mbtool_core::model::hexdump::spaced_hex(&bytes));
     }
 
     #[test]

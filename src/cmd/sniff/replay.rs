@@ -15,9 +15,9 @@ use mbtool::error::Error;
 use mbtool::settings::Settings;
 use mbtool_core::codec::framing::{Ahead, Event, FoundAhead, Framer};
 use mbtool_core::codec::Mode;
+use mbtool_core::model::line::LineSettings;
 use mbtool_core::sniff::session::{Record, Session};
 use mbtool_core::sniff::timing;
-use mbtool_core::transport::serial::LineSettings;
 
 use super::{Save, Sinks};
 

@@ -181,7 +181,9 @@ pub fn receive_frames(
                         io::ErrorKind::InvalidData,
                         format!(
                             "{peer} sent what is not Modbus TCP ({}): connection closed",
-                            crate::describe::spaced_hex(&noise.kept[..noise.kept.len().min(12)])
+                            crate::model::hexdump::spaced_hex(
+                                &noise.kept[..noise.kept.len().min(12)]
+                            )
                         ),
                     ));
                 }

@@ -6,10 +6,11 @@
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use super::run::{ReadData, RunError};
+use super::run::RunError;
 use super::{Master, MasterError};
 use crate::codec::{limits, ExceptionCode, Request, Response};
 use crate::model::address::Table;
+use crate::model::values::ReadData;
 use crate::slave::datafile::Entry;
 
 /// A range to dump: `count` addresses of `table` from `address`.

@@ -587,7 +587,9 @@ impl Master {
                 Event::Noise(noise) if self.options.mode == Mode::Tcp => {
                     heard.problem.get_or_insert(BadAnswer::NotTcp {
                         len: noise.len,
-                        shown: crate::describe::spaced_hex(&noise.kept[..noise.kept.len().min(12)]),
+                        shown: crate::model::hexdump::spaced_hex(
+                            &noise.kept[..noise.kept.len().min(12)],
+                        ),
                     });
                 }
                 // Noise on a serial line: the answer may still stand after it.
@@ -685,7 +687,7 @@ impl Master {
                     Some(reason) => MasterError::BadFrame { slave, reason },
                     None if unexplained > 0 => {
                         let shown =
-                            crate::describe::spaced_hex(&received[..received.len().min(32)]);
+                            crate::model::hexdump::spaced_hex(&received[..received.len().min(32)]);
                         MasterError::BadFrame {
                             slave,
                             reason: BadAnswer::Incomplete {

@@ -4,11 +4,12 @@
 
 use super::map::{read_points, Refused};
 use super::plan::Plan;
-use super::run::{ReadData, ReadResult, RunError};
+use super::run::{ReadResult, RunError};
 use super::Master;
 use crate::codec::ExceptionCode;
 use crate::model::address::Table;
 use crate::model::map::{range_points, Kind, Point};
+use crate::model::values::ReadData;
 use crate::model::values::{ByteOrder, ValueType};
 
 /// What a range read around its holes gave.

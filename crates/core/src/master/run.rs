@@ -12,6 +12,7 @@ use crate::codec::function;
 use crate::codec::{ExceptionCode, Request, Response};
 use crate::model::address::Table;
 use crate::model::duration::show;
+use crate::model::values::ReadData;
 
 /// Why a request of a plan got no answer to use.
 #[derive(Debug, Error)]
@@ -86,30 +87,6 @@ impl ReadResult {
             self.first_bit = Some(bits.first);
         }
         self
-    }
-}
-
-/// The coils or registers a read returned.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum ReadData {
-    /// Register values, as received.
-    Registers(Vec<u16>),
-    /// Coil or discrete input states, exactly as many as asked for.
-    Bits(Vec<bool>),
-}
-
-impl ReadData {
-    /// How many coils or registers were read.
-    pub fn len(&self) -> usize {
-        match self {
-            ReadData::Registers(registers) => registers.len(),
-            ReadData::Bits(bits) => bits.len(),
-        }
-    }
-
-    /// Nothing was read.
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
     }
 }
 

@@ -7,7 +7,7 @@ use std::time::Duration;
 
 use super::{BadAnswer, Master, MasterError, Reply};
 use crate::codec::{ExceptionCode, Mode, Request};
-use crate::transport::serial::Parity;
+use crate::model::line::Parity;
 
 /// What each id is asked.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

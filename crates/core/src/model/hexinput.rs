@@ -334,7 +334,9 @@ fn frames_of(line: &[u8]) -> Result<Vec<LineFrame>, HexError> {
             bytes: run.bytes,
             direction: run.direction,
         }]),
-        Some(run) => Err(HexError::TooShort(crate::describe::spaced_hex(&run.bytes))),
+        Some(run) => Err(HexError::TooShort(crate::model::hexdump::spaced_hex(
+            &run.bytes,
+        ))),
         None => Err(strict_error),
     }
 }

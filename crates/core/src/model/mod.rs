@@ -8,6 +8,7 @@ pub mod faults;
 pub mod hexdump;
 pub mod hexinput;
 pub mod home_assistant;
+pub mod line;
 pub mod map;
 pub mod map_file;
 pub mod number;

@@ -414,6 +414,30 @@ pub fn escape_text(bytes: &[u8]) -> String {
     out
 }
 
+/// The coils or registers a read returned.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ReadData {
+    /// Register values, as received.
+    Registers(Vec<u16>),
+    /// Coil or discrete input states, exactly as many as asked for.
+    Bits(Vec<bool>),
+}
+
+impl ReadData {
+    /// How many coils or registers were read.
+    pub fn len(&self) -> usize {
+        match self {
+            ReadData::Registers(registers) => registers.len(),
+            ReadData::Bits(bits) => bits.len(),
+        }
+    }
+
+    /// Nothing was read.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

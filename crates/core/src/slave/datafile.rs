@@ -22,10 +22,10 @@ use std::path::Path;
 
 use thiserror::Error;
 
-use crate::master::run::ReadData;
 use crate::model::address::{parse_reference_span, reference, AddressError, Table};
 use crate::model::choice::Choice;
 use crate::model::faults::{told, Faults};
+use crate::model::values::ReadData;
 use crate::model::values::{parse_coil, ByteOrder, ValueType};
 use crate::slave::DataModel;
 

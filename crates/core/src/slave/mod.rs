@@ -6,6 +6,7 @@ pub mod faults;
 mod identity;
 mod model;
 pub mod server;
+pub mod sim;
 
 use std::collections::BTreeMap;
 

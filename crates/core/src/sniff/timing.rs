@@ -17,7 +17,7 @@ use std::fmt;
 use std::io::{self, BufRead, Read};
 
 use crate::codec::Mode;
-use crate::transport::serial::{LineSettings, Parity, BAUDS, DATA_BITS, STOP_BITS};
+use crate::model::line::{LineSettings, Parity, BAUDS, DATA_BITS, STOP_BITS};
 
 /// The first line of a timing file.
 pub const HEADER: &str = "# mbtool sniff timing: '<us> <count>' = count bytes read together, the last at <us>; '<us> idle' = quiet until <us>; '<us> end' = the capture ended at <us>";

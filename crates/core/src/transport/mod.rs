@@ -5,7 +5,6 @@ pub mod endpoint;
 pub mod ports;
 pub mod rs485;
 pub mod serial;
-pub mod sim;
 pub mod tcp;
 pub mod tls;
 

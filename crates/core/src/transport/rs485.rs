@@ -11,67 +11,7 @@ use std::io;
 use std::time::Duration;
 
 use crate::model::choice::Choice;
-
-/// How the transceiver is switched between driving the line and listening.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum DirectionControl {
-    /// Nothing to do: the adapter switches its driver itself, or the line is RS-232.
-    #[default]
-    Automatic,
-    /// The kernel's RS-485 mode (the TIOCSRS485 ioctl), set when the port is opened and
-    /// put back as it was when it is closed.
-    Kernel(RtsTiming),
-    /// RTS set before each frame is written and reset once its last byte has left the
-    /// UART (tcdrain), for drivers without RS-485 mode.
-    Toggle(RtsTiming),
-}
-
-impl DirectionControl {
-    /// Whether the host leaves the transceiver alone.
-    pub fn is_automatic(self) -> bool {
-        self == DirectionControl::Automatic
-    }
-}
-
-/// When and how RTS moves around a frame sent.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct RtsTiming {
-    /// From RTS set to the first byte.
-    pub before: Duration,
-    /// From the last byte gone to RTS reset.
-    pub after: Duration,
-    /// The level of RTS while sending; the other one while listening.
-    pub sending: RtsLevel,
-}
-
-/// A logical level of RTS, as the kernel's `SER_RS485_RTS_ON_SEND` names it: `High` is
-/// RTS asserted.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum RtsLevel {
-    /// RTS asserted while sending (the usual wiring: RTS to the driver enable, DE).
-    #[default]
-    High,
-    /// RTS released while sending, for a transceiver wired the other way.
-    Low,
-}
-
-impl RtsLevel {
-    /// Whether RTS is asserted at this level.
-    pub fn asserted(self) -> bool {
-        self == RtsLevel::High
-    }
-}
-
-impl Choice for RtsLevel {
-    const ALL: &'static [Self] = &[RtsLevel::High, RtsLevel::Low];
-
-    fn name(self) -> &'static str {
-        match self {
-            RtsLevel::High => "high",
-            RtsLevel::Low => "low",
-        }
-    }
-}
+use crate::model::line::{RtsLevel, RtsTiming};
 
 /// The kernel's RS-485 mode on an open port, with its settings as they were before, to be
 /// put back.
