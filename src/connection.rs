@@ -3,7 +3,7 @@
 use std::io;
 
 use crate::error::{Error, Result};
-use crate::settings::Connection as Options;
+use crate::settings::ConnectionSettings;
 use mbtool_core::codec::{ExceptionCode, Mode};
 use mbtool_core::master::failover::{Failover, PathName, Switch, SwitchRule};
 use mbtool_core::master::{Master, MasterOptions};
@@ -12,7 +12,7 @@ use mbtool_core::model::line::{LineSettings, Parity};
 use mbtool_core::model::map::MapConnection;
 use mbtool_core::transport::serial::Serial;
 use mbtool_core::transport::tcp::Tcp;
-use mbtool_core::transport::tls::{ClientTls, Session, Tls};
+use mbtool_core::transport::tls::{ClientTls, Tls, TlsSession};
 use mbtool_core::transport::{Endpoint, Transport};
 
 /// After a broadcast, the slaves need time to act before the next request (the Modbus
@@ -20,7 +20,7 @@ use mbtool_core::transport::{Endpoint, Transport};
 const BROADCAST_TURNAROUND: std::time::Duration = std::time::Duration::from_millis(100);
 
 /// The endpoint of `--port`; a missing port says what to give.
-pub fn endpoint(options: &Options) -> Result<Endpoint> {
+pub fn endpoint(options: &ConnectionSettings) -> Result<Endpoint> {
     let port = options.port.as_deref().ok_or_else(|| {
         Error::usage(
             "no --port: give a serial device (/dev/ttyUSB0), tcp://HOST[:PORT], tls://HOST[:PORT], rtu+tcp://HOST:PORT, or sim to try the built-in slave",
@@ -34,7 +34,7 @@ pub fn endpoint(options: &Options) -> Result<Endpoint> {
 /// The certificate options against the port: for tls://, read and checked now, so that a
 /// poll or a watch does not start on files that cannot work; typed for another port (and
 /// no tls:// second path), refused, since they would do nothing.
-pub fn tls_fits(options: &Options, endpoint: &Endpoint) -> Result<()> {
+pub fn tls_fits(options: &ConnectionSettings, endpoint: &Endpoint) -> Result<()> {
     let secondary_tls = options
         .secondary
         .as_deref()
@@ -68,7 +68,7 @@ pub enum Role {
 
 /// The framing on the wire: TCP for tcp://, otherwise --mode (RTU by default). `endpoint`
 /// is `None` where the command has no port to go by.
-pub fn mode(options: &Options, endpoint: Option<&Endpoint>, role: Role) -> Result<Mode> {
+pub fn mode(options: &ConnectionSettings, endpoint: Option<&Endpoint>, role: Role) -> Result<Mode> {
     let tcp_port = matches!(endpoint, Some(Endpoint::Tcp { .. } | Endpoint::Tls { .. }));
     match (tcp_port, options.mode, role) {
         (_, Some(mode), Role::Encode) => Ok(mode),
@@ -104,13 +104,18 @@ fn scheme(endpoint: Option<&Endpoint>) -> &'static str {
 }
 
 /// The serial line settings, defaults filled in as the README gives them.
-pub fn line_settings(options: &Options, mode: Mode) -> LineSettings {
+pub fn line_settings(options: &ConnectionSettings, mode: Mode) -> LineSettings {
     line_at(options, mode, options.baud(), options.parity())
 }
 
 /// The serial line settings at `baud` and `parity` (a step of a scan's sweep), the data
 /// and stop bits as the options give them.
-pub fn line_at(options: &Options, mode: Mode, baud: u32, parity: Parity) -> LineSettings {
+pub fn line_at(
+    options: &ConnectionSettings,
+    mode: Mode,
+    baud: u32,
+    parity: Parity,
+) -> LineSettings {
     LineSettings {
         baud,
         parity,
@@ -126,7 +131,7 @@ pub fn line_at(options: &Options, mode: Mode, baud: u32, parity: Parity) -> Line
 
 /// `--rs485` or `--rts-toggle` typed for a port that has no RTS to drive. From the
 /// environment they are left to the serial commands of the same shell.
-pub fn direction_needs_serial(options: &Options, endpoint: &Endpoint) -> Result<()> {
+pub fn direction_needs_serial(options: &ConnectionSettings, endpoint: &Endpoint) -> Result<()> {
     // With two paths, the options are for the one that is a serial line.
     let secondary_serial = options
         .secondary
@@ -161,13 +166,17 @@ pub fn open_serial(path: &str, line: &LineSettings) -> Result<Serial> {
 }
 
 /// Opens the transport of `endpoint`, a serial line with the options' settings.
-pub fn open(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<Box<dyn Transport>> {
+pub fn open(
+    options: &ConnectionSettings,
+    endpoint: &Endpoint,
+    mode: Mode,
+) -> Result<Box<dyn Transport>> {
     open_at(options, endpoint, mode, &line_settings(options, mode))
 }
 
 /// Opens the transport of `endpoint`, a serial line with `line`.
 pub fn open_at(
-    options: &Options,
+    options: &ConnectionSettings,
     endpoint: &Endpoint,
     mode: Mode,
     line: &LineSettings,
@@ -203,7 +212,7 @@ pub fn open_at(
 }
 
 /// `-v` on a TLS connection: what was agreed, whom it is with, and the role sent.
-fn tell_session(session: &Session) {
+fn tell_session(session: &TlsSession) {
     let role = session
         .role_sent
         .as_deref()
@@ -218,7 +227,11 @@ fn tell_session(session: &Session) {
 }
 
 /// Where and how a master asked, for a timeout's message, and what usually causes one there.
-pub fn tried(options: &Options, endpoint: &Endpoint, mode: Mode) -> (String, &'static str) {
+pub fn tried(
+    options: &ConnectionSettings,
+    endpoint: &Endpoint,
+    mode: Mode,
+) -> (String, &'static str) {
     match endpoint {
         Endpoint::Serial(path) => {
             let line = line_settings(options, mode);
@@ -259,14 +272,14 @@ pub fn tried(options: &Options, endpoint: &Endpoint, mode: Mode) -> (String, &'s
 /// `--secondary-port`, one that changes paths as `--switch-on` says.
 /// A command that ends at a failure (a dump, a single read) has a failed request asked
 /// again on its path until the rule decides.
-pub fn master(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
+pub fn master(options: &ConnectionSettings, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
     open_master(options, endpoint, mode, None, true)
 }
 
 /// [`master`] for a poll, which counts a failure and asks again at its next interval,
 /// starting on the path `first` where there are two (the primary if `None`).
 pub fn master_on(
-    options: &Options,
+    options: &ConnectionSettings,
     endpoint: &Endpoint,
     mode: Mode,
     first: Option<PathName>,
@@ -275,7 +288,7 @@ pub fn master_on(
 }
 
 fn open_master(
-    options: &Options,
+    options: &ConnectionSettings,
     endpoint: &Endpoint,
     mode: Mode,
     first: Option<PathName>,
@@ -296,8 +309,8 @@ fn open_master(
 }
 
 /// A master on one path.
-fn single_master(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
-    let answer = Answer {
+fn single_master(options: &ConnectionSettings, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
+    let answer = Patience {
         timeout: options.timeout,
         retries: options.retries,
     };
@@ -313,7 +326,7 @@ fn single_master(options: &Options, endpoint: &Endpoint, mode: Mode) -> Result<M
 /// Why the secondary path cannot be opened now, if it cannot: for a long command to say
 /// at its start that the path it may need is not there (a typo, an unplugged adapter),
 /// rather than when it is needed.
-pub fn secondary_unavailable(options: &Options) -> Option<String> {
+pub fn secondary_unavailable(options: &ConnectionSettings) -> Option<String> {
     let (secondary, target) = secondary_target(options).ok()??;
     single_master(secondary, &target.endpoint, target.mode)
         .err()
@@ -321,7 +334,7 @@ pub fn secondary_unavailable(options: &Options) -> Option<String> {
 }
 
 /// The secondary path's settings and where they point, checked as `--port` is.
-fn secondary_target(options: &Options) -> Result<Option<(&Options, Target)>> {
+fn secondary_target(options: &ConnectionSettings) -> Result<Option<(&ConnectionSettings, Target)>> {
     let Some(secondary) = options.secondary.as_deref() else {
         return Ok(None);
     };
@@ -338,7 +351,7 @@ fn secondary_target(options: &Options) -> Result<Option<(&Options, Target)>> {
 /// transceiver as asked is a setting to correct, told as without a second path, not a
 /// path that is down.
 fn redundant_master(
-    paths: [(Options, Endpoint, Mode); 2],
+    paths: [(ConnectionSettings, Endpoint, Mode); 2],
     rule: SwitchRule,
     first: PathName,
 ) -> Result<Master> {
@@ -377,7 +390,7 @@ fn redundant_master(
 
 /// How long a master waits for an answer, and how often it asks again.
 #[derive(Clone, Copy, Debug)]
-pub struct Answer {
+pub struct Patience {
     pub timeout: std::time::Duration,
     pub retries: u32,
 }
@@ -385,11 +398,11 @@ pub struct Answer {
 /// A master on `endpoint` with the serial settings `line` and `answer`, the rest as the
 /// options resolved them.
 pub fn master_at(
-    options: &Options,
+    options: &ConnectionSettings,
     endpoint: &Endpoint,
     mode: Mode,
     line: &LineSettings,
-    answer: Answer,
+    answer: Patience,
 ) -> Result<Master> {
     let transport = open_at(options, endpoint, mode, line)?;
     let serial_line = matches!(endpoint, Endpoint::Serial(_) | Endpoint::RtuOverTcp { .. });
@@ -432,7 +445,7 @@ pub struct Target {
 }
 
 /// The target of the options; a secondary path is checked too, before anything is sent.
-pub fn target(options: &Options) -> Result<Target> {
+pub fn target(options: &ConnectionSettings) -> Result<Target> {
     let endpoint = endpoint(options)?;
     let mode = mode(options, Some(&endpoint), Role::Master)?;
     secondary_target(options)?;
@@ -446,7 +459,7 @@ impl Target {
     }
 
     /// A master on the target.
-    pub fn connect(self, options: &Options) -> Result<Connection> {
+    pub fn connect(self, options: &ConnectionSettings) -> Result<Connection> {
         let master = master(options, &self.endpoint, self.mode)?;
         Ok(Connection {
             master,
@@ -457,7 +470,7 @@ impl Target {
 }
 
 /// Connects as the options say.
-pub fn connect(options: &Options) -> Result<Connection> {
+pub fn connect(options: &ConnectionSettings) -> Result<Connection> {
     target(options)?.connect(options)
 }
 
@@ -465,7 +478,7 @@ impl Connection {
     /// `error`, a timeout told with where and how the master asked and what usually
     /// causes one there.
     /// Exception 01 over TLS is told as what it may be: the server's role check.
-    pub fn explain(&self, options: &Options, error: Error) -> Error {
+    pub fn explain(&self, options: &ConnectionSettings, error: Error) -> Error {
         if let (
             Error::Exception {
                 code: ExceptionCode::ILLEGAL_FUNCTION,
@@ -484,7 +497,7 @@ impl Connection {
 /// [`tried`] on the path `path` of the options, where there are two: the secondary's
 /// port and line when the master is there.
 pub fn tried_on(
-    options: &Options,
+    options: &ConnectionSettings,
     endpoint: &Endpoint,
     mode: Mode,
     path: Option<PathName>,
@@ -562,7 +575,10 @@ pub fn listen(endpoint: &Endpoint, host: &str, port: u16) -> anyhow::Result<std:
 
 /// The connection settings with what a map's file says of its device (a Home Assistant
 /// hub's host and port, or serial device and line) where the command line says nothing.
-pub fn with_map_connection(options: &Options, from_map: Option<&MapConnection>) -> Options {
+pub fn with_map_connection(
+    options: &ConnectionSettings,
+    from_map: Option<&MapConnection>,
+) -> ConnectionSettings {
     let mut options = options.clone();
     let Some(from_map) = from_map.filter(|_| options.port.is_none()) else {
         return options;

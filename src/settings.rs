@@ -27,7 +27,7 @@ use mbtool_core::transport::Endpoint;
 /// Everything the options say, resolved.
 #[derive(Clone, Debug)]
 pub struct Settings {
-    pub connection: Connection,
+    pub connection: ConnectionSettings,
     pub output: Output,
     pub data: Data,
     pub poll: Poll,
@@ -35,7 +35,7 @@ pub struct Settings {
 
 /// Where the slave is and how to talk to it.
 #[derive(Clone, Debug)]
-pub struct Connection {
+pub struct ConnectionSettings {
     /// `--port` as given; what it names is read when a command needs it, so that a
     /// missing port is told only to commands that use one.
     pub port: Option<String>,
@@ -65,7 +65,7 @@ pub struct Connection {
     /// port that is no serial line refuses it then, and ignores the variable.
     pub direction_typed: bool,
     /// `--secondary-port` with its line settings: the other path to the same device.
-    pub secondary: Option<Box<Connection>>,
+    pub secondary: Option<Box<ConnectionSettings>>,
     /// When to change between the paths.
     pub switch: SwitchRule,
     /// The certificates for a tls:// port.
@@ -78,13 +78,13 @@ pub struct Connection {
     pub tell_session: bool,
 }
 
-impl Connection {
+impl ConnectionSettings {
     /// The serial speed; only scan sweeps several, and a list elsewhere is refused.
     pub fn baud(&self) -> u32 {
         self.bauds.first().copied().unwrap_or(19200)
     }
 
-    /// The serial parity, as [`Connection::baud`].
+    /// The serial parity, as [`ConnectionSettings::baud`].
     pub fn parity(&self) -> Parity {
         self.parities.first().copied().unwrap_or(Parity::Even)
     }
@@ -302,7 +302,7 @@ pub fn resolve(cli: &Cli, origins: &Origins) -> Result<Settings, String> {
         .into();
     let verbose = taken.trace.is_some_and(|t| t.verbose);
     let mut settings = Settings {
-        connection: Connection {
+        connection: ConnectionSettings {
             port: taken.port.map(str::to_string),
             mode: taken.mode.map(Mode::from),
             baud_given: !bauds.is_empty(),
@@ -375,7 +375,7 @@ pub fn resolve(cli: &Cli, origins: &Origins) -> Result<Settings, String> {
 fn redundancy_of(
     r: &RedundancyArgs,
     origins: &Origins,
-    primary: &mut Connection,
+    primary: &mut ConnectionSettings,
 ) -> Result<(), String> {
     let Some(port) = r.secondary_port.clone().filter(|port| !port.is_empty()) else {
         let typed = origins
@@ -414,7 +414,7 @@ fn redundancy_of(
         None if tcp => None,
         None => primary.mode,
     };
-    let secondary = Connection {
+    let secondary = ConnectionSettings {
         port: Some(port),
         mode,
         bauds: vec![r.secondary_baud.unwrap_or_else(|| primary.baud())],

@@ -107,7 +107,7 @@ pub struct ScanArgs {
     pub probe: ProbeArg,
     /// Listen this long at each setting before sending anything: slaves heard answering
     /// another master are found without adding traffic
-    #[arg(long, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]
+    #[arg(long, value_name = "DURATION", value_parser = mbtool_core::input::duration::parse_duration)]
     pub listen: Option<std::time::Duration>,
     /// Try every setting of the sweep, not only up to the first where a slave answers
     #[arg(long)]
@@ -134,7 +134,7 @@ pub struct WatchArgs {
     #[command(flatten)]
     pub read: ReadByReferenceArgs,
     /// How often to read [default: 1s]
-    #[arg(long, value_name = "INTERVAL", value_parser = mbtool_core::model::duration::parse_duration)]
+    #[arg(long, value_name = "INTERVAL", value_parser = mbtool_core::input::duration::parse_duration)]
     pub poll: Option<std::time::Duration>,
     #[command(flatten)]
     pub line: LineArgs,
@@ -192,7 +192,7 @@ fn parse_ids(text: &str) -> Result<Ids, String> {
     for part in text.split(',').map(str::trim) {
         let (first, last) = part.split_once('-').unwrap_or((part, part));
         let id = |t: &str| {
-            mbtool_core::model::number::parse_in_range(t.trim(), 0, 255, "id").map(|id| id as u8)
+            mbtool_core::input::number::parse_in_range(t.trim(), 0, 255, "id").map(|id| id as u8)
         };
         let (first, last) = (id(first)?, id(last)?);
         if first > last {

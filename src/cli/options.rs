@@ -8,9 +8,9 @@
 use clap::{Args, ValueEnum};
 
 use mbtool_core::codec::Mode;
+use mbtool_core::input::choice::Choice;
 use mbtool_core::master::failover::{SwitchCondition, SwitchWhen};
 use mbtool_core::model::address::AddressBase;
-use mbtool_core::model::choice::Choice;
 use mbtool_core::model::line::RtsLevel;
 use mbtool_core::model::line::{Parity, BAUDS, DATA_BITS, STOP_BITS};
 use mbtool_core::model::values::{ByteOrder, ValueType};
@@ -160,7 +160,7 @@ pub struct ExchangeArgs {
 
     /// Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200
     /// baud]; 0 for gateways and devices that need none
-    #[arg(long, hide_short_help = true, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration)]
+    #[arg(long, hide_short_help = true, value_name = "DURATION", value_parser = mbtool_core::input::duration::parse_duration)]
     pub frame_gap: Option<std::time::Duration>,
 }
 
@@ -465,7 +465,7 @@ pub struct PollArgs {
     /// 0 for back to back. What changed is shown, with a summary on stderr at the end; a
     /// failed read is a row of its own, a range with holes is read around them (each hole
     /// a "no such address" row), and a connection that drops is opened again
-    #[arg(long, hide_short_help = true, value_name = "INTERVAL", value_parser = mbtool_core::model::duration::parse_duration)]
+    #[arg(long, hide_short_help = true, value_name = "INTERVAL", value_parser = mbtool_core::input::duration::parse_duration)]
     pub poll: Option<std::time::Duration>,
 
     /// With --poll: stop after N reads

@@ -479,7 +479,7 @@ impl ReadByReferenceArgs {
     /// With --map: the slave typed, and the names of the points to read (every word after
     /// SLAVE). A first word that is no slave id is a point's name, SLAVE left out.
     pub fn map_words(&self) -> (Option<&str>, Vec<&str>) {
-        let is_slave = |word: &str| mbtool_core::model::number::parse_int(word).is_ok();
+        let is_slave = |word: &str| mbtool_core::input::number::parse_int(word).is_ok();
         let (slave, first) = match self.slave.as_deref() {
             Some(word) if is_slave(word) => (Some(word), None),
             word => (None, word),

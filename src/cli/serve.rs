@@ -108,7 +108,7 @@ pub struct ServeArgs {
     pub read_only: Vec<String>,
 
     /// Wait this long before each answer
-    #[arg(long, value_name = "DURATION", value_parser = mbtool_core::model::duration::parse_duration, help_heading = "Faults", hide_short_help = true)]
+    #[arg(long, value_name = "DURATION", value_parser = mbtool_core::input::duration::parse_duration, help_heading = "Faults", hide_short_help = true)]
     pub delay: Option<std::time::Duration>,
 
     /// Leave this share of requests unanswered: 0 to 1, or 5%

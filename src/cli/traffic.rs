@@ -243,5 +243,5 @@ pub struct SniffArgs {
 holds!(SniffArgs: line, format);
 
 fn parse_function(text: &str) -> Result<u8, String> {
-    mbtool_core::model::number::parse_in_range(text, 1, 127, "function code").map(|f| f as u8)
+    mbtool_core::input::number::parse_in_range(text, 1, 127, "function code").map(|f| f as u8)
 }

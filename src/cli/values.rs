@@ -1,6 +1,6 @@
 //! The parsers of option values: whole numbers in a range, durations, names the core offers.
 
-use mbtool_core::model::choice::Choice;
+use mbtool_core::input::choice::Choice;
 
 /// The parser of a whole number option: any spelling users type (19200, 0x4B00), in
 /// `min..=max`, the range said when it is not.
@@ -12,7 +12,7 @@ where
     T: TryFrom<i128>,
 {
     move |text| {
-        mbtool_core::model::number::parse_int(text)
+        mbtool_core::input::number::parse_int(text)
             .ok()
             .filter(|value| (min..=max).contains(value))
             .and_then(|value| T::try_from(value).ok())
@@ -32,7 +32,7 @@ where
 
 /// A duration that must not be zero: a timeout of 0 would give up before a byte could come.
 pub(super) fn positive_duration(text: &str) -> Result<std::time::Duration, String> {
-    match mbtool_core::model::duration::parse_duration(text)? {
+    match mbtool_core::input::duration::parse_duration(text)? {
         std::time::Duration::ZERO => Err("give a timeout above zero, as 500ms or 1s".into()),
         duration => Ok(duration),
     }

@@ -13,8 +13,8 @@ use mbtool::settings::Settings;
 use mbtool_core::codec::framing::split_glued;
 use mbtool_core::codec::{limits, Direction, Mode};
 use mbtool_core::describe::{describe_frame, pair_answer, request_made, Asked, FrameReport};
-use mbtool_core::model::hexdump::dump_line;
-use mbtool_core::model::hexinput::{read_line, HexError};
+use mbtool_core::input::hexdump::dump_line;
+use mbtool_core::input::hexinput::{read_line, HexError};
 
 /// Longer lines cannot be a frame: even spaced hex of the longest ASCII frame is shorter.
 const MAX_LINE: usize = 4 * limits::MAX_ASCII_ADU;

@@ -105,7 +105,7 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
         0 | 1 => String::new(),
         _ => format!(
             " over {}, one after another: not a snapshot if another master wrote meanwhile",
-            mbtool_core::model::duration::show(started.elapsed())
+            mbtool_core::input::duration::show(started.elapsed())
         ),
     };
     mbtool::note!(

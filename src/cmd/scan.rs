@@ -75,7 +75,7 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
         &lines,
         &options,
         |line| {
-            let answer = connection::Answer {
+            let answer = connection::Patience {
                 timeout: timeout_at(settings, *line, options.probe),
                 retries: 0,
             };

@@ -13,7 +13,7 @@ use mbtool::output::Format;
 use mbtool::settings::Settings;
 use mbtool_core::listener::Link;
 use mbtool_core::model::address::parse_reference_span;
-use mbtool_core::slave::faults::Faults;
+use mbtool_core::slave::faults::FaultInjection;
 use mbtool_core::slave::server::{Logger, Server};
 use mbtool_core::slave::{datafile, DataModel, Slave};
 use mbtool_core::transport::Endpoint;
@@ -79,7 +79,7 @@ pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
     for (id, value) in &args.identity {
         slave.identity.set(*id, value);
     }
-    let faults = Faults {
+    let faults = FaultInjection {
         delay: args.delay.unwrap_or_default(),
         drop: args.drop.unwrap_or(0.0),
         corrupt: args.corrupt.unwrap_or(0.0),

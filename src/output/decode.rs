@@ -1,16 +1,16 @@
 //! How `decode` shows frames: a table per frame, JSON Lines, bare values, or CSV.
 
-use mbtool_core::model::choice::Choice;
+use mbtool_core::input::choice::Choice;
 use std::io::{self, Write};
 
 use comfy_table::{Cell, Color};
 
 use super::Format;
 use super::{csv_field, new_table, Style};
+use mbtool_core::codec::hex::spaced_hex;
 use mbtool_core::codec::{Checksum, ExceptionCode, Mode};
 use mbtool_core::describe::{Fields, FrameReport, Values};
 use mbtool_core::model::address::{reference, Table};
-use mbtool_core::model::hexdump::spaced_hex;
 use mbtool_core::model::values::{ByteOrder, ValueType};
 
 pub struct DecodeWriter {

@@ -97,7 +97,7 @@ fn server_data(data: &[u8]) -> String {
     if data.iter().all(|b| (0x20..=0x7E).contains(b)) {
         escape_text(data)
     } else {
-        mbtool_core::model::hexdump::spaced_hex(data)
+        mbtool_core::codec::hex::spaced_hex(data)
     }
 }
 
@@ -224,7 +224,7 @@ fn diag_rows(report: &DiagReport) -> Vec<(String, String)> {
                     }
                     Err(data) => format!(
                         "not a 16-bit counter: the answer carried {}",
-                        mbtool_core::model::hexdump::spaced_hex(data)
+                        mbtool_core::codec::hex::spaced_hex(data)
                     ),
                 };
                 rows.push((
@@ -275,7 +275,7 @@ fn diag_json(report: &DiagReport) -> Value {
                         Ok(Asked::Answered(value)) => json!(value),
                         Ok(Asked::Refused(code)) => json!({ "exception": code.0 }),
                         Err(data) => {
-                            json!({ "data": mbtool_core::model::hexdump::spaced_hex(data) })
+                            json!({ "data": mbtool_core::codec::hex::spaced_hex(data) })
                         }
                     };
                     (c.name.replace(' ', "_").to_lowercase(), value)

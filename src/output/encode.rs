@@ -5,8 +5,8 @@ use std::io::{self, Write};
 use serde::Serialize;
 
 use super::Format;
+use mbtool_core::codec::hex::spaced_hex;
 use mbtool_core::codec::Mode;
-use mbtool_core::model::hexdump::spaced_hex;
 
 #[derive(Serialize)]
 struct EncodedFrame<'a> {

@@ -10,7 +10,7 @@ use super::{csv_field, fields_summary, Format, PollRows};
 use mbtool_core::codec::{function, Pdu};
 use mbtool_core::describe::{describe_pdu, Fields, Kind, Values};
 use mbtool_core::gateway::{Outcome, Summary, Tally, Transaction};
-use mbtool_core::model::duration::show;
+use mbtool_core::input::duration::show;
 use mbtool_core::model::spread::Spread;
 
 const RED: &str = "\x1b[31m";

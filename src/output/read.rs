@@ -1,6 +1,6 @@
 //! How read results and write confirmations are shown.
 
-use mbtool_core::model::choice::Choice;
+use mbtool_core::input::choice::Choice;
 use std::io::{self, Write};
 
 use comfy_table::{Cell, Color};

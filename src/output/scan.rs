@@ -8,8 +8,8 @@ use serde_json::json;
 use super::Format;
 use super::{csv_field, new_table};
 use mbtool_core::codec::Mode;
+use mbtool_core::input::choice::Choice;
 use mbtool_core::master::scan::{Answer, Hit, ScanReport};
-use mbtool_core::model::choice::Choice;
 use mbtool_core::model::line::LineSettings;
 
 /// Where the scan asked: the serial settings of each step of the sweep, or none over TCP.

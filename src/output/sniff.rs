@@ -10,9 +10,9 @@ use super::sniff_json::{frame_json, json_line, seconds, JsonSummary, JsonTcp, Js
 use super::Format;
 use super::{csv_field, request_summary, shown_values, write_fields_summary, write_value};
 use mbtool_core::codec::function;
+use mbtool_core::codec::hex::push_spaced_hex;
 use mbtool_core::codec::ExceptionCode;
 use mbtool_core::describe::{describe_pdu, FrameReport, Kind};
-use mbtool_core::model::hexdump::push_spaced_hex;
 use mbtool_core::sniff::session::{Counts, FrameRecord, Record, TcpPlace, ENDS_WITHOUT_CR};
 
 use super::columns::{column, pad_to, Align, Offset, Seconds};
@@ -329,7 +329,7 @@ impl SniffWriter {
                 Align::Right,
                 format_args!(
                     "+{}",
-                    mbtool_core::model::duration::show(std::time::Duration::from_micros(gap))
+                    mbtool_core::input::duration::show(std::time::Duration::from_micros(gap))
                 ),
             ),
             None => pad_to(text, line, 32),
@@ -424,7 +424,7 @@ impl SniffWriter {
                     .map(|w| {
                         format!(
                             " (waited {})",
-                            mbtool_core::model::duration::show(std::time::Duration::from_micros(w))
+                            mbtool_core::input::duration::show(std::time::Duration::from_micros(w))
                         )
                     })
                     .unwrap_or_default();
@@ -638,7 +638,7 @@ fn connection(place: &TcpPlace) -> String {
 }
 
 fn duration(us: u64) -> String {
-    mbtool_core::model::duration::show(std::time::Duration::from_micros(us))
+    mbtool_core::input::duration::show(std::time::Duration::from_micros(us))
 }
 
 #[cfg(test)]

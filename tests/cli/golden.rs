@@ -5,7 +5,7 @@
 use crate::support::{mbtool, WORKED};
 use mbtool_core::codec::{bits, Direction, Frame, Mode, Pdu, Request, Response};
 use mbtool_core::describe::{describe_frame, Kind, Values};
-use mbtool_core::model::hexinput::parse_hex;
+use mbtool_core::input::hexinput::parse_hex;
 
 fn bytes(hex: &str) -> Vec<u8> {
     let mut out = Vec::new();

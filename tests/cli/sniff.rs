@@ -159,7 +159,7 @@ fn replay_timed_frames(
             };
             (
                 "frame".to_string(),
-                mbtool_core::model::hexdump::spaced_hex(&f.found.bytes),
+                mbtool_core::codec::hex::spaced_hex(&f.found.bytes),
                 direction.to_string(),
             )
         })

@@ -3,45 +3,54 @@
 
     python3 tests/tools/compare_cli.py OLD_BINARY NEW_BINARY [--lines N] [--seed S]
 
-Generates N (default 3000) random command lines from a grammar written out below:
-every command and alias, every option with valid and invalid values, options before
-and after the command name (and between `encode` and its request command), options a
-command does not take, missing and extra arguments, unknown commands and typos, and
-MBTOOL_* environment variables set or not. Each line is run with both binaries in
-the same way, and stdout, stderr, the exit status and the files the command leaves in
-its working directory are compared after normalising what legitimately changes from
-run to run (times, durations, temporary paths, pids).
+for instance, from the repository's root:
+
+    python3 tests/tools/compare_cli.py /tmp/mbtool-before target/release/mbtool
+
+Generates N (default 3000) random command lines from a grammar written out below by
+hand (from the commands' --help and README.md): every command and alias, `encode`
+with every request command, every option with valid and invalid values, options
+before and after the command name (and between `encode` and its request command),
+options a command does not take, mbpoll's options typed out of habit, missing and
+extra arguments, unknown commands and typos, MBTOOL_* variables set or not (and set
+to bad values). About 40% of the lines are "clean": they make no mistake on purpose.
+Each line is run with both binaries in the same way; stdout, stderr, the exit status
+and the files left in the working directory (dump -o FILE, --log FILE, --save,
+--pcap, ...) are compared once what legitimately changes from run to run is
+normalised (see TIMING below): timestamps, measured durations, temporary paths, pids,
+the fresh value of the diagnostic echo, and when a poll that cannot connect tries
+again.
 
 Every process runs:
   - as `mbtool` (argv[0]), so that usage messages name the same program;
-  - in a fresh working directory holding a few fixture files (register maps, data
-    files, captures), which is also HOME;
-  - with stdin from /dev/null, or from a generated text (decode) or capture
-    (sniff --input -);
-  - with only PATH, HOME, LANG=C, NO_COLOR=1, TERM=dumb and the chosen MBTOOL_*
+  - in a fresh working directory, also its HOME, holding a few fixture files
+    (register maps, data files, captures from tests/captures);
+  - with stdin from /dev/null, or from a generated log (decode without frames) or
+    capture (sniff --input -);
+  - with only PATH, HOME, LANG=C, NO_COLOR=1, TERM=dumb and the line's MBTOOL_*
     variables in its environment;
-  - in its own process group, under a timeout (--timeout, 3 s; lines that are meant
-    to run until stopped, --forever-timeout, 1 s): the group gets SIGINT (Ctrl-C),
-    then SIGKILL a second later. A line that runs until stopped on both builds is
-    compared on what is deterministic: the distinct lines it printed, digits masked.
+  - in its own process group, under a timeout (--timeout, 3 s; 1 s, --forever-timeout,
+    for lines meant to run until stopped: serve, gateway, a poll without --count,
+    sniff --interface lo): the group gets SIGINT (Ctrl-C), SIGKILL a second later.
+    A line that runs until stopped with both builds is counted as such and compared
+    on what is deterministic: the distinct lines it wrote, digits masked.
 
 Bus commands mostly use `--port sim`, the built-in slave, so that they really run;
 otherwise a refused 127.0.0.1 port, a missing /dev/ttyNOPE or a bad value. Nothing
-touches real hardware or the network beyond 127.0.0.1: no real serial device, no
-host name, no listener beyond 127.0.0.1. Lines that listen (serve, gateway, sniff
---interface) run alone, never beside another line, so that no line can reach them.
+touches real hardware or the network beyond 127.0.0.1: no real serial device, no host
+name, no listener beyond 127.0.0.1. serve and gateway listen on ports of their line's
+own, where no master line connects; sniff --interface lo runs alone.
 
-Lines asking for help or the version (-h, --help, help, -V, --version, mbtool with
-no command) are not run: help text changes on purpose. Line K is the same for a given
---seed whatever --lines is, so a difference is reproduced with --line K.
+Lines asking for help or the version (-h, --help, help, -V, --version, mbtool with no
+command) are not run: help text changes on purpose. Line K is the same for a given
+--seed whatever --lines is: `--line K` runs it alone, `--list` prints the lines.
 
-Each difference is printed with its command line, its environment and a short
-unified diff; the last line is `N lines, D differ, H help lines skipped`, and the
-exit status is 1 when any line differs.
-
-Options: --jobs J (parallel lines, default 2; each line runs its two processes one
-after the other), --line K (run line K alone), --list (print the lines, run nothing),
---keep (keep the temporary directory).
+Each difference is printed with its command line, its environment and a short unified
+diff; the last line is `N lines, D differ, H help lines skipped`, and the exit status
+is 1 when any line differs. At most two processes run at once (--jobs 2: two lines
+at a time, each running its two processes one after the other); 3000 lines take one
+to three minutes, most of it lines that wait a second (serve, gateway, a poll, a dump
+asking a slave that does not answer).
 
 Plain Python 3 standard library only.
 """
@@ -952,8 +961,9 @@ class Generator:
         middle = []  # for encode: between encode and its request command
         for words in options:
             where = rng.random()
-            if option_name(words) in own and where < 0.3:
-                where = 1.0 if rng.clean else rng.choice([1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.1, 0.4])  # rarely misplaced
+            if option_name(words) in own and where < 0.3:  # a command's own option: after it
+                misplaced = not rng.clean and rng.random() < 0.15
+                where = rng.choice([0.1, 0.4]) if misplaced else 1.0
             if where < 0.3:
                 before.append(words)
             elif sub and where < 0.45:
@@ -1185,14 +1195,17 @@ def run(binary, case, place, fixtures, timeout):
         stdin_path = os.path.join(place, "stdin")
         with open(stdin_path, "wb") as f:
             f.write(case.stdin)
-    env = {"PATH": os.environ.get("PATH", "/usr/bin:/bin"), "HOME": wd, "LANG": "C", "NO_COLOR": "1",
+    env = {"PATH": "/usr/local/bin:/usr/bin:/bin", "HOME": wd, "LANG": "C", "NO_COLOR": "1",
            "TERM": "dumb", **case.env}
     out_path, err_path = os.path.join(place, "stdout"), os.path.join(place, "stderr")
+    if STOPPING.is_set():
+        raise RuntimeError("interrupted")
     start = time.monotonic()
     timed_out = False
     with open(stdin_path, "rb") as stdin, open(out_path, "wb") as out, open(err_path, "wb") as err:
         proc = subprocess.Popen(["mbtool", *case.argv], executable=binary, cwd=wd, env=env, stdin=stdin,
                                 stdout=out, stderr=err, start_new_session=True)
+        RUNNING.add(proc.pid)
         try:
             status = proc.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
@@ -1204,6 +1217,7 @@ def run(binary, case, place, fixtures, timeout):
                 signal_group(proc.pid, signal.SIGKILL)
                 status = proc.wait()
         signal_group(proc.pid, signal.SIGKILL)  # anything it left behind
+        RUNNING.discard(proc.pid)
     seconds = time.monotonic() - start
     with open(out_path, "rb") as f:
         stdout = f.read()
@@ -1222,6 +1236,10 @@ def run(binary, case, place, fixtures, timeout):
     return Outcome(status, stdout, stderr, files, timed_out, seconds)
 
 
+RUNNING = set()  # process groups under way, to end if this script is interrupted
+STOPPING = threading.Event()  # set when interrupted: no more processes are started
+
+
 def signal_group(pid, sig):
     try:
         os.killpg(pid, sig)
@@ -1230,7 +1248,7 @@ def signal_group(pid, sig):
 
 
 class Gate:
-    """Lines share the machine, except those that listen: they run alone."""
+    """Lines share the machine, except those marked exclusive, which run alone."""
 
     def __init__(self):
         self.cond = threading.Condition()
@@ -1457,14 +1475,17 @@ def main():
             else:
                 place = os.path.join(root, f"w{number}")
                 timeout = args.forever_timeout if case.forever else args.timeout
-                gate.enter(case.exclusive)
                 try:
-                    old = run(binaries[0], case, place, fixtures, timeout)
-                    new = run(binaries[1], case, place, fixtures, timeout)
-                finally:
-                    gate.leave(case.exclusive)
-                diffs, stopped = compare(case, old, new, place, root)
-                result = ("run", diffs, stopped, old, new)
+                    gate.enter(case.exclusive)
+                    try:
+                        old = run(binaries[0], case, place, fixtures, timeout)
+                        new = run(binaries[1], case, place, fixtures, timeout)
+                    finally:
+                        gate.leave(case.exclusive)
+                    diffs, stopped = compare(case, old, new, place, root)
+                    result = ("run", diffs, stopped, old if diffs else None, new if diffs else None)
+                except Exception as error:  # a fault of this script, told as the line's
+                    result = ("error", f"{type(error).__name__}: {error}")
             with done:
                 results[position] = result
                 done.notify_all()
@@ -1473,21 +1494,39 @@ def main():
     for thread in threads:
         thread.start()
     differ = helped = stopped_both = 0
-    for position, case in enumerate(cases):
-        with done:
-            done.wait_for(lambda: position in results)
-            result = results.pop(position)
-        if result[0] == "help":
-            helped += 1
-            continue
-        _, diffs, stopped, old, new = result
-        stopped_both += stopped
-        if diffs:
-            differ += 1
-            report(case, diffs, old, new, sys.stdout)
-            sys.stdout.flush()
-    for thread in threads:
-        thread.join()
+    try:
+        for position, case in enumerate(cases):
+            with done:
+                done.wait_for(lambda: position in results)
+                result = results.pop(position)
+            if result[0] == "help":
+                helped += 1
+                continue
+            if result[0] == "error":
+                differ += 1
+                print(f"=== line {case.index}: could not be compared: {result[1]}\n  $ {case.shell()}")
+                continue
+            _, diffs, stopped, old, new = result
+            stopped_both += stopped
+            if diffs:
+                differ += 1
+                report(case, diffs, old, new, sys.stdout)
+                sys.stdout.flush()
+        for thread in threads:
+            thread.join()
+    except KeyboardInterrupt:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        STOPPING.set()
+        with queue_lock:
+            queue.clear()
+        deadline = time.monotonic() + 5
+        while any(thread.is_alive() for thread in threads) and time.monotonic() < deadline:
+            for pid in list(RUNNING):
+                signal_group(pid, signal.SIGKILL)
+            time.sleep(0.05)
+        shutil.rmtree(root, ignore_errors=True)
+        print("interrupted", file=sys.stderr)
+        return 130
     if not args.keep:
         shutil.rmtree(root, ignore_errors=True)
     else:

@@ -7,6 +7,7 @@ use smallvec::{smallvec, SmallVec};
 use crate::codec::adu::hex_digit;
 use crate::codec::checksum::{crc16, lrc};
 use crate::codec::function::{self, EXCEPTION_FLAG};
+use crate::codec::hex::spaced_hex;
 use crate::codec::length::pdu_length;
 use crate::codec::DeviceIdentification;
 use crate::codec::{
@@ -14,7 +15,6 @@ use crate::codec::{
     Response,
 };
 use crate::model::address::{reference, Reference, Table};
-use crate::model::hexdump::spaced_hex;
 use crate::model::values::escape_text;
 
 /// Which kind of PDU a frame carries.

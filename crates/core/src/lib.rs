@@ -16,6 +16,7 @@
 pub mod codec;
 pub mod describe;
 pub mod gateway;
+pub mod input;
 pub mod listener;
 pub mod master;
 pub mod model;

@@ -8,7 +8,7 @@ use mbtool_core::codec::{
     Direction, Envelope, Exception, ExceptionCode, Frame, Mode, Pdu, Reading, Request, Response,
 };
 use mbtool_core::describe::describe_frame;
-use mbtool_core::model::hexinput::read_line;
+use mbtool_core::input::hexinput::read_line;
 use proptest::collection::vec;
 use proptest::prelude::*;
 
@@ -337,7 +337,7 @@ proptest! {
                 _ => None,
             })
             .collect();
-        prop_assert_eq!(found, vec![bytes.as_slice()], "{}", mbtool_core::model::hexdump::spaced_hex(&bytes));
+        prop_assert_eq!(found, vec![bytes.as_slice()], "{}", mbtool_core::codec::hex::spaced_hex(&bytes));
     }
 
     #[test]
@@ -463,7 +463,7 @@ proptest! {
         for frame in read_line(text.as_bytes()).unwrap_or_default() {
             let _ = describe_frame(&frame.bytes, None, frame.direction);
         }
-        let _ = mbtool_core::model::hexdump::dump_line(text.as_bytes());
+        let _ = mbtool_core::input::hexdump::dump_line(text.as_bytes());
     }
 
     /// A frame dumped as each tool dumps it reads back, line by line, the offsets counting.
@@ -480,7 +480,7 @@ proptest! {
                 2 => format!("{offset:08x}: {:<39}  {chars}", hex.chunks(2).map(|p| p.concat()).collect::<Vec<_>>().join(" ")),
                 _ => format!("{offset:06x} {}", hex.join(" ")),
             };
-            let line = mbtool_core::model::hexdump::dump_line(text.as_bytes())
+            let line = mbtool_core::input::hexdump::dump_line(text.as_bytes())
                 .ok_or_else(|| TestCaseError::fail(text.clone()))?;
             prop_assert!(line.is_at(offset), "{}", text);
             read.extend(line.bytes);

@@ -10,6 +10,7 @@ mod error;
 mod exception;
 pub mod framing;
 pub mod function;
+pub mod hex;
 pub(crate) mod length;
 pub mod limits;
 mod pdu;

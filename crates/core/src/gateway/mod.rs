@@ -47,7 +47,7 @@ impl UnitMap {
                 UnitMapError(format!("'{pair}' is not UNIT=SLAVE (as in 1=17,2=18)"))
             })?;
             let number = |text: &str, what: &str| {
-                crate::model::number::parse_int(text.trim())
+                crate::input::number::parse_int(text.trim())
                     .ok()
                     .and_then(|n| u8::try_from(n).ok())
                     .ok_or_else(|| UnitMapError(format!("'{pair}': the {what} is 0-255")))

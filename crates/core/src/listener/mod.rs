@@ -181,9 +181,7 @@ pub fn receive_frames(
                         io::ErrorKind::InvalidData,
                         format!(
                             "{peer} sent what is not Modbus TCP ({}): connection closed",
-                            crate::model::hexdump::spaced_hex(
-                                &noise.kept[..noise.kept.len().min(12)]
-                            )
+                            crate::codec::hex::spaced_hex(&noise.kept[..noise.kept.len().min(12)])
                         ),
                     ));
                 }

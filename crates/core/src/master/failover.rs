@@ -7,7 +7,7 @@
 //! the same conditions there switch back.
 
 use crate::codec::ExceptionCode;
-use crate::model::choice::Choice;
+use crate::input::choice::Choice;
 
 use super::{Master, MasterError, Reply};
 

@@ -14,8 +14,8 @@ use std::collections::VecDeque;
 use super::run::RunError;
 use super::{Master, MasterError};
 use crate::codec::{limits, ExceptionCode, Request, Response};
+use crate::input::choice::Choice;
 use crate::model::address::Table;
-use crate::model::choice::Choice;
 use crate::model::map::{Kind, Point};
 use crate::model::values::{parse_coil, text, Value, ValueType};
 
@@ -535,7 +535,7 @@ fn unscaled(point: &Point, value_type: ValueType, text: &str) -> Result<String, 
     if floating && point.is_unscaled() {
         return Ok(text.to_string());
     }
-    let shown = match crate::model::number::parse_int(text) {
+    let shown = match crate::input::number::parse_int(text) {
         Ok(whole) => whole as f64,
         Err(_) => text
             .trim()

@@ -10,7 +10,7 @@ use thiserror::Error;
 use crate::codec::answer::{check, Mismatch};
 use crate::codec::framing::{Event, Framer};
 use crate::codec::{Direction, Exception, Frame, FrameError, Mode, Pdu, Request, Response};
-use crate::model::duration::show;
+use crate::input::duration::show;
 use crate::transport::Transport;
 
 pub mod backup;
@@ -587,7 +587,7 @@ impl Master {
                 Event::Noise(noise) if self.options.mode == Mode::Tcp => {
                     heard.problem.get_or_insert(BadAnswer::NotTcp {
                         len: noise.len,
-                        shown: crate::model::hexdump::spaced_hex(
+                        shown: crate::codec::hex::spaced_hex(
                             &noise.kept[..noise.kept.len().min(12)],
                         ),
                     });
@@ -687,7 +687,7 @@ impl Master {
                     Some(reason) => MasterError::BadFrame { slave, reason },
                     None if unexplained > 0 => {
                         let shown =
-                            crate::model::hexdump::spaced_hex(&received[..received.len().min(32)]);
+                            crate::codec::hex::spaced_hex(&received[..received.len().min(32)]);
                         MasterError::BadFrame {
                             slave,
                             reason: BadAnswer::Incomplete {

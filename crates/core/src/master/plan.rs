@@ -7,12 +7,12 @@
 use thiserror::Error;
 
 use crate::codec::{limits, Request};
+use crate::input::choice::Choice;
+use crate::input::hexinput::HexError;
+use crate::input::number::{parse_in_range, parse_int, NumberError};
 use crate::model::address::{
     parse_reference_span, parse_span, split_bit, Access, AddressError, Numbering, Span, Table,
 };
-use crate::model::choice::Choice;
-use crate::model::hexinput::HexError;
-use crate::model::number::{parse_in_range, parse_int, NumberError};
 use crate::model::values::{parse_coil, ByteOrder, ValueType};
 
 /// Why an operation cannot be planned: what the user gave is wrong, and nothing is sent.
@@ -590,7 +590,7 @@ pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
         }
         Operation::Raw { slave, pdu } => {
             let slave = parse_slave(slave, true, options.tcp)?;
-            let pdu = crate::model::hexinput::parse_hex_words(pdu).map_err(PlanError::PduHex)?;
+            let pdu = crate::input::hexinput::parse_hex_words(pdu).map_err(PlanError::PduHex)?;
             Ok(Plan {
                 slave,
                 requests: vec![raw_request(&pdu)?],

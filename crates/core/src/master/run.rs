@@ -10,8 +10,8 @@ use super::plan::{Plan, RegisterBits};
 use super::{Master, MasterError, Reply};
 use crate::codec::function;
 use crate::codec::{ExceptionCode, Request, Response};
+use crate::input::duration::show;
 use crate::model::address::Table;
-use crate::model::duration::show;
 use crate::model::values::ReadData;
 
 /// Why a request of a plan got no answer to use.

@@ -4,7 +4,7 @@ use std::fmt;
 
 use thiserror::Error;
 
-use crate::model::number::parse_int;
+use crate::input::number::parse_int;
 
 /// The four data tables of Modbus.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -4,7 +4,7 @@
 
 use std::time::Duration;
 
-use crate::model::choice::Choice;
+use crate::input::choice::Choice;
 
 /// The speeds a serial line is opened at, in bits per second.
 pub const BAUDS: std::ops::RangeInclusive<u32> = 50..=12_000_000;

@@ -9,11 +9,11 @@ use std::fmt;
 use thiserror::Error;
 
 use super::address::{bit_reference, parse_reference, reference, split_bit, Table};
-use super::choice::Choice;
 use super::faults::{told, Faults};
 use super::shown::Shown;
 use super::structure::Structure;
 use super::values::{ByteOrder, ValueType};
+use crate::input::choice::Choice;
 
 /// What a point holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -389,7 +389,7 @@ fn csv_point(columns: &[usize], fields: &[String], line: usize) -> Result<Point,
     let slave = match field("slave") {
         "" => None,
         text => {
-            Some(crate::model::number::parse_in_range(text, 0, 255, "slave").map(|id| id as u8)?)
+            Some(crate::input::number::parse_in_range(text, 0, 255, "slave").map(|id| id as u8)?)
         }
     };
     checked(Point {

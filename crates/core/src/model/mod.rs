@@ -1,17 +1,13 @@
-//! The model: Modicon references and protocol addresses, value types and byte orders, and
-//! the spellings of what users type (numbers, durations, pasted frames, named settings).
+//! The model: Modicon references and protocol addresses, value types and byte orders, a
+//! serial line's settings, register maps and the files they come in. What users type is
+//! read in `input`.
 
 pub mod address;
-pub mod choice;
-pub mod duration;
 pub mod faults;
-pub mod hexdump;
-pub mod hexinput;
 pub mod home_assistant;
 pub mod line;
 pub mod map;
 pub mod map_file;
-pub mod number;
 pub mod shown;
 pub mod spread;
 pub mod structure;

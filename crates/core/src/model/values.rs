@@ -5,8 +5,8 @@ use std::fmt;
 
 use serde::Serialize;
 
-use crate::model::choice::Choice;
-use crate::model::number::parse_int;
+use crate::input::choice::Choice;
+use crate::input::number::parse_int;
 
 /// How registers are read as values, and values written as registers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]

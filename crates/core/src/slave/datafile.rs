@@ -22,8 +22,8 @@ use std::path::Path;
 
 use thiserror::Error;
 
+use crate::input::choice::Choice;
 use crate::model::address::{parse_reference_span, reference, AddressError, Table};
-use crate::model::choice::Choice;
 use crate::model::faults::{told, Faults};
 use crate::model::values::ReadData;
 use crate::model::values::{parse_coil, ByteOrder, ValueType};

@@ -1,11 +1,11 @@
-//! Faults a simulated slave can be told to make, for testing masters: late, missing,
+//! FaultInjection a simulated slave can be told to make, for testing masters: late, missing,
 //! corrupt or noisy answers, and exceptions on chosen addresses.
 
 use std::time::Duration;
 
 use crate::codec::{ExceptionCode, Request};
+use crate::input::number::parse_int;
 use crate::model::address::{parse_reference_span, Table};
-use crate::model::number::parse_int;
 
 /// An exception to answer instead of the data, for every request or for those that touch
 /// a range.
@@ -109,7 +109,7 @@ fn touched(request: &Request) -> Vec<(Table, u32, u32)> {
 
 /// Every fault the slave is told to make.
 #[derive(Clone, Debug, Default)]
-pub struct Faults {
+pub struct FaultInjection {
     /// Wait this long before each answer.
     pub delay: Duration,
     /// Share of requests left unanswered, 0 to 1.
@@ -122,7 +122,7 @@ pub struct Faults {
     pub garbage: bool,
 }
 
-impl Faults {
+impl FaultInjection {
     /// The exception to give instead of an answer, if one is injected for this request.
     pub fn exception_for(&self, request: &Request) -> Option<ExceptionCode> {
         self.exceptions

@@ -131,7 +131,7 @@ pub fn parse_object(text: &str) -> Result<(u8, Vec<u8>), String> {
     let name = name.trim();
     let id = DeviceObject::id_named(name)
         .or_else(|| {
-            crate::model::number::parse_int(name)
+            crate::input::number::parse_int(name)
                 .ok()
                 .and_then(|id| u8::try_from(id).ok())
         })

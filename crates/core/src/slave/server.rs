@@ -12,7 +12,7 @@ use crate::codec::{Direction, ExceptionCode, Frame, FrameError, Mode, Pdu, Reque
 use crate::listener::clients::{accept_clients, lock, Accepted, ErrorSink};
 use crate::listener::roles::Role;
 use crate::listener::{receive_frames, Link, Security};
-use crate::slave::faults::Faults;
+use crate::slave::faults::FaultInjection;
 use crate::slave::Slave;
 use crate::transport::tcp::Tcp;
 use crate::transport::Transport;
@@ -76,7 +76,7 @@ pub type Logger = Arc<dyn Fn(&LogEntry) + Send + Sync>;
 /// A slave behind a transport: takes requests, answers them, makes the faults asked for.
 pub struct Server {
     slave: Mutex<Slave>,
-    faults: Faults,
+    faults: FaultInjection,
     mode: Mode,
     seed: u64,
     started: Instant,
@@ -89,7 +89,7 @@ impl Server {
     /// A server for `slave`, making `faults` with random draws from `seed`, framing as `mode` does, telling `logger` of each request.
     pub fn new(
         slave: Slave,
-        faults: Faults,
+        faults: FaultInjection,
         mode: Mode,
         seed: u64,
         logger: Option<Logger>,
@@ -232,7 +232,7 @@ impl Server {
         };
         let mut bytes = Vec::new();
         if self.faults.garbage {
-            bytes.extend(Faults::noise(rng));
+            bytes.extend(FaultInjection::noise(rng));
         }
         let start = bytes.len();
         let mut pdu_bytes = Vec::new();
@@ -245,7 +245,7 @@ impl Server {
             &mut bytes,
         );
         if corrupt {
-            Faults::corrupt(&mut bytes[start..], self.mode == Mode::Tcp, rng);
+            FaultInjection::corrupt(&mut bytes[start..], self.mode == Mode::Tcp, rng);
         }
         if !self.faults.delay.is_zero() {
             std::thread::sleep(self.faults.delay);

@@ -5,7 +5,7 @@ use std::io;
 use std::time::Instant;
 
 use crate::codec::Mode;
-use crate::slave::faults::Faults;
+use crate::slave::faults::FaultInjection;
 use crate::slave::server::Server;
 use crate::slave::{DataModel, Slave, EXAMPLE_SLAVE};
 use crate::transport::Transport;
@@ -26,7 +26,7 @@ impl SimTransport {
     pub fn new(mode: Mode) -> Self {
         let slave = Slave::new(&[SIM_SLAVE], DataModel::manual_examples());
         Self {
-            server: Server::new(slave, Faults::default(), mode, 0, None),
+            server: Server::new(slave, FaultInjection::default(), mode, 0, None),
             rng: fastrand::Rng::with_seed(0),
             pending: Vec::new(),
         }

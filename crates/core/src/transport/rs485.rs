@@ -10,7 +10,7 @@
 use std::io;
 use std::time::Duration;
 
-use crate::model::choice::Choice;
+use crate::input::choice::Choice;
 use crate::model::line::{RtsLevel, RtsTiming};
 
 /// The kernel's RS-485 mode on an open port, with its settings as they were before, to be

@@ -5,9 +5,9 @@
 //! `virtual_count` expanded into the entities Home Assistant adds (`name 1`, `name 2`, ...).
 
 use super::schema::{Entity, Field, Numbers};
+use crate::input::number::parse_int;
 use crate::model::address::Table;
 use crate::model::map::{checked, Kind, Point};
-use crate::model::number::parse_int;
 use crate::model::shown::{Shown, States};
 use crate::model::structure::Structure;
 use crate::model::values::{ByteOrder, ValueType};

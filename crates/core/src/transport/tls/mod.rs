@@ -288,7 +288,7 @@ impl TlsServer {
 /// What `-v` tells of a connection: the version, cipher suite, the other end's
 /// certificate and the role this end sent.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Session {
+pub struct TlsSession {
     /// `TLS 1.3`.
     pub version: String,
     /// `TLS13_AES_256_GCM_SHA384`.
@@ -311,7 +311,7 @@ pub struct Tls {
     peer: String,
     /// The read timeout last set, in whole milliseconds (as [`super::tcp::Tcp`] keeps it).
     read_timeout_ms: u64,
-    session: Option<Session>,
+    session: Option<TlsSession>,
     /// A master's end: how it connected, to tell a refusal that comes after the
     /// handshake (TLS 1.3 servers judge the client's certificate then).
     master: Option<Master>,
@@ -412,7 +412,7 @@ impl Tls {
             .map(|der| (subject_of(&der), not_after_of(&der)))
             .unwrap_or_default();
         let (version, cipher_suite) = stream.agreed();
-        stream.session = Some(Session {
+        stream.session = Some(TlsSession {
             version,
             cipher_suite,
             subject,
@@ -423,7 +423,7 @@ impl Tls {
     }
 
     /// What `-v` tells of this connection (a connection this end made).
-    pub fn session(&self) -> Option<&Session> {
+    pub fn session(&self) -> Option<&TlsSession> {
         self.session.as_ref()
     }
 

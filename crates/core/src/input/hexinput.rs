@@ -334,7 +334,7 @@ fn frames_of(line: &[u8]) -> Result<Vec<LineFrame>, HexError> {
             bytes: run.bytes,
             direction: run.direction,
         }]),
-        Some(run) => Err(HexError::TooShort(crate::model::hexdump::spaced_hex(
+        Some(run) => Err(HexError::TooShort(crate::codec::hex::spaced_hex(
             &run.bytes,
         ))),
         None => Err(strict_error),
