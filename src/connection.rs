@@ -10,6 +10,8 @@ use mbtool_core::master::{Master, MasterOptions};
 use mbtool_core::model::line::DirectionControl;
 use mbtool_core::model::line::{LineSettings, Parity};
 use mbtool_core::model::map::MapConnection;
+use mbtool_core::sniff::replay::TimingFile;
+use mbtool_core::sniff::timing;
 use mbtool_core::transport::serial::Serial;
 use mbtool_core::transport::tcp::Tcp;
 use mbtool_core::transport::tls::{ClientTls, Tls, TlsSession};
@@ -606,4 +608,57 @@ pub fn with_map_connection(
     options.data_bits = options.data_bits.or(from_map.data_bits);
     options.stop_bits = options.stop_bits.or(from_map.stop_bits);
     options
+}
+
+/// The mode and line the bytes were sent on: as the options give them, but for a capture
+/// whose `timing` file records the line it was taken on, which a replay takes (so that a
+/// silence is what it was live) save where an option is typed (or set in the
+/// environment), and then says so.
+pub fn sniffed_line(
+    options: &ConnectionSettings,
+    timing: Option<&TimingFile>,
+) -> Result<(Mode, LineSettings)> {
+    let Some((timing, recorded)) = timing.and_then(|timing| Some((timing, timing.line()?))) else {
+        let mode = mode(options, None, Role::Sniff)?;
+        let line = line_settings(options, mode);
+        if let Some(timing) = timing.filter(|_| !options.baud_given && !options.parity_given) {
+            crate::note!(
+                "mbtool: {} does not say which line the capture was taken on: replaying it as \
+                 {}; give -b and --parity if it was another",
+                timing.path().display(),
+                timing::RecordedLine::of(mode, &line)
+            );
+        }
+        return Ok((mode, line));
+    };
+    let mode = match options.mode {
+        Some(_) => mode(options, None, Role::Sniff)?,
+        None => recorded.mode,
+    };
+    let baud = match options.baud_given {
+        true => options.baud(),
+        false => recorded.baud,
+    };
+    let parity = match options.parity_given {
+        true => options.parity(),
+        false => recorded.parity,
+    };
+    // The character as recorded, unless the mode or the parity given changes it: then the
+    // data and stop bits that go with those, as on a port.
+    let mut line = line_at(options, mode, baud, parity);
+    if options.data_bits.is_none() && mode == recorded.mode {
+        line.data_bits = recorded.data_bits;
+    }
+    if options.stop_bits.is_none() && parity == recorded.parity {
+        line.stop_bits = recorded.stop_bits;
+    }
+    let replayed = timing::RecordedLine::of(mode, &line);
+    if replayed != recorded {
+        crate::note!(
+            "mbtool: {} records the line as {recorded}; replaying it as {replayed}, as the \
+             options say",
+            timing.path().display()
+        );
+    }
+    Ok((mode, line))
 }

@@ -27,8 +27,7 @@ use mbtool_core::sniff::timing::{self, RecordedLine};
 use mbtool_core::transport::serial;
 use mbtool_core::transport::{Endpoint, Transport};
 
-mod replay;
-use replay::{replay, replay_ahead, replay_timed, replay_timing, sniffed_line, write_alongside};
+use mbtool_core::sniff::replay::{self, Pace, RecordSink, ReplayError, TimingFault, TimingFile};
 
 /// Where the records go: the screen (or a pipe), and the pcap file.
 struct Sinks {
@@ -45,7 +44,7 @@ struct Sinks {
     stats: Option<Stats>,
 }
 
-impl Sinks {
+impl RecordSink for Sinks {
     fn write(&mut self, records: &mut Vec<Record>) -> io::Result<()> {
         // Written where they lie, then dropped together: a frame record is large to move.
         for record in records.iter() {
@@ -238,10 +237,17 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         _ => {}
     }
     let timing = match &args.input {
-        Some(path) => replay_timing(path)?,
+        Some(path) => TimingFile::beside(path).map_err(replay_failed)?,
         None => None,
     };
-    let (mode, line) = sniffed_line(settings, timing.as_ref())?;
+    if let Some((timing, line)) = timing.as_ref().and_then(|t| Some((t, t.cut_off()?))) {
+        mbtool::note!(
+            "mbtool: {}:{line} is cut off before its end (the capture was stopped as it was \
+             written): replaying the capture with the timing before it",
+            timing.path().display()
+        );
+    }
+    let (mode, line) = connection::sniffed_line(&settings.connection, timing.as_ref())?;
     let filter = Filter {
         slaves: args.slaves.clone(),
         functions: args.functions.clone(),
@@ -282,23 +288,35 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
     let mut records = Vec::new();
     let end = match (&args.input, input.as_mut()) {
         (Some(path), Some(input)) => {
-            write_alongside(&mut sinks, |found| match &timing {
-                // The capture ended at its last read or idle, not at its last frame.
-                Some(timing) => replay_timed(input, timing, &mut session, found, &mut save),
+            let pace = match &timing {
+                Some(timing) => Pace::Timed(timing),
                 // A file is read whole and can be framed on every core; a pipe may be a
                 // live line, whose frames are shown as they come.
                 None if mode != Mode::Tcp
                     && path.as_os_str() != "-"
                     && std::fs::metadata(path).is_ok_and(|m| m.is_file()) =>
                 {
-                    replay_ahead(input, &mut session, found, &mut save)?;
-                    Ok(None)
+                    Pace::Ahead
                 }
-                None => {
-                    replay(input, &mut session, found, &mut save)?;
-                    Ok(None)
+                None => Pace::AsItComes,
+            };
+            let replayed = match save.as_mut() {
+                Some(save) => {
+                    let mut kept = Kept { input, save };
+                    replay::replay(&mut kept, pace, &mut session, &mut sinks)
                 }
-            })?
+                None => replay::replay(input, pace, &mut session, &mut sinks),
+            }
+            .map_err(replay_failed)?;
+            if replayed.untimed > 0 {
+                mbtool::note!(
+                    "mbtool: the .timing file covers the capture's first {} bytes; the last {} are framed without timing",
+                    replayed.bytes - replayed.untimed,
+                    replayed.untimed
+                );
+            }
+            // The capture ended at its last read or idle, not at its last frame.
+            replayed.end
         }
         _ => Some(live(
             settings,
@@ -323,6 +341,52 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         save.flush()?;
     }
     Ok(0)
+}
+
+/// A replay's failure, told as what to do.
+fn replay_failed(error: ReplayError) -> anyhow::Error {
+    let move_away = "move it away to replay without timing";
+    match error {
+        ReplayError::Capture(error) | ReplayError::Output(error) => error.into(),
+        ReplayError::ShorterThanTiming => Error::usage(
+            "the capture is shorter than its .timing file says: move the .timing file away to replay without timing",
+        )
+        .into(),
+        ReplayError::Timing { path, fault } => {
+            let path = path.display();
+            match fault {
+                TimingFault::Io(error) => {
+                    anyhow::Error::new(error).context(format!("cannot read {path}"))
+                }
+                TimingFault::NotAFile => {
+                    Error::usage(format!("{path} is not a file, so no .timing file: {move_away}"))
+                        .into()
+                }
+                TimingFault::NotText => {
+                    Error::usage(format!("{path} is not text, so no .timing file: {move_away}"))
+                        .into()
+                }
+                TimingFault::Line { line, message } => Error::usage(format!(
+                    "{path}:{line}: {message}; move the file away to replay without timing"
+                ))
+                .into(),
+            }
+        }
+    }
+}
+
+/// A capture read through `--save`, which keeps every byte read.
+struct Kept<'a> {
+    input: &'a mut Input,
+    save: &'a mut Save,
+}
+
+impl Read for Kept<'_> {
+    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+        let n = self.input.read(buf)?;
+        self.save.bytes(&buf[..n], None)?;
+        Ok(n)
+    }
 }
 
 /// A name that says the file is a packet capture.

@@ -7,6 +7,7 @@ pub mod live;
 mod pairing;
 pub mod pcap;
 pub mod reassembly;
+pub mod replay;
 pub mod session;
 pub mod stats;
 pub mod tcp;

@@ -1,160 +1,202 @@
-//! Replaying a capture of a serial line from a file or standard input: with its timing,
-//! the bytes handed over as the live session was handed them; without, framed by content
-//! alone, a file on every core. The records are written on another thread as they are found.
+//! A capture of a serial line replayed from a file or a pipe: with its timing, the bytes
+//! handed to the session as the live session was handed them; without, framed by content
+//! alone, a file on every core (blocks framed ahead by workers, caught up with in order).
+//! The frames are handed to a [`RecordSink`] on the caller's thread, in batches, while the
+//! replay goes on on another: framing and writing run side by side.
 
 use std::fs::File;
 use std::io::{self, Read};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::{mpsc, Arc};
 use std::thread;
 
-use anyhow::{Context, Result};
+use crate::codec::framing::{Ahead, Event, FoundAhead, Framer};
 
-use mbtool::connection::{line_at, line_settings, mode, Role};
-use mbtool::error::Error;
-use mbtool::settings::Settings;
-use mbtool_core::codec::framing::{Ahead, Event, FoundAhead, Framer};
-use mbtool_core::codec::Mode;
-use mbtool_core::model::line::LineSettings;
-use mbtool_core::sniff::session::{Record, Session};
-use mbtool_core::sniff::timing;
+use super::session::{Record, Session};
+use super::timing;
 
-use super::{Save, Sinks};
-
-/// The timing file beside a capture, when there is one, read through once to check it: a
-/// replay must not show frames and then find its timing bad. It is read again, an event
-/// at a time, as the capture is replayed.
-pub(super) fn replay_timing(path: &Path) -> Result<Option<TimingFile>> {
-    let beside = timing::beside(path);
-    if path.as_os_str() == "-" || !beside.exists() {
-        return Ok(None);
-    }
-    // A directory or a FIFO of that name is no timing written by `--save`, and a FIFO
-    // would hold the replay until someone writes to it.
-    let is_file = std::fs::metadata(&beside)
-        .with_context(|| format!("cannot read {}", beside.display()))?
-        .is_file();
-    if !is_file {
-        return Err(Error::usage(format!(
-            "{} is not a file, so no .timing file: move it away to replay without timing",
-            beside.display()
-        ))
-        .into());
-    }
-    let mut timing = TimingFile {
-        // The reads may not add up to more than the capture holds: a count that does is
-        // a file written by someone else, and must not make the replay allocate it.
-        capture_len: std::fs::metadata(path)
-            .with_context(|| format!("cannot read {}", path.display()))?
-            .len(),
-        path: beside,
-        line: None,
-    };
-    let mut events = timing.open()?;
-    while timing.next(&mut events)?.is_some() {}
-    timing.line = events.recorded_line();
-    if let Some(line) = events.cut_off() {
-        mbtool::note!(
-            "mbtool: {}:{line} is cut off before its end (the capture was stopped as it was \
-             written): replaying the capture with the timing before it",
-            timing.path.display()
-        );
-    }
-    Ok(Some(timing))
+/// Where the records of a replay go, a batch at a time: the batch is left empty.
+pub trait RecordSink {
+    /// Writes `records` and clears them.
+    fn write(&mut self, records: &mut Vec<Record>) -> io::Result<()>;
 }
 
-/// The mode and line the bytes were sent on: as the options give them, but for a capture
-/// whose `timing` file records the line it was taken on, which a replay takes (so that a
-/// silence is what it was live) save where an option is typed (or set in the
-/// environment), and then says so.
-pub(super) fn sniffed_line(
-    settings: &Settings,
-    timing: Option<&TimingFile>,
-) -> Result<(Mode, LineSettings)> {
-    let options = &settings.connection;
-    let Some((timing, recorded)) = timing.and_then(|timing| Some((timing, timing.line?))) else {
-        let mode = mode(options, None, Role::Sniff)?;
-        let line = line_settings(options, mode);
-        if let Some(timing) = timing.filter(|_| !options.baud_given && !options.parity_given) {
-            mbtool::note!(
-                "mbtool: {} does not say which line the capture was taken on: replaying it as \
-                 {}; give -b and --parity if it was another",
-                timing.path.display(),
-                timing::RecordedLine::of(mode, &line)
-            );
-        }
-        return Ok((mode, line));
-    };
-    let mode = match options.mode {
-        Some(_) => mode(options, None, Role::Sniff)?,
-        None => recorded.mode,
-    };
-    let baud = match options.baud_given {
-        true => options.baud(),
-        false => recorded.baud,
-    };
-    let parity = match options.parity_given {
-        true => options.parity(),
-        false => recorded.parity,
-    };
-    // The character as recorded, unless the mode or the parity given changes it: then the
-    // data and stop bits that go with those, as on a port.
-    let mut line = line_at(options, mode, baud, parity);
-    if options.data_bits.is_none() && mode == recorded.mode {
-        line.data_bits = recorded.data_bits;
-    }
-    if options.stop_bits.is_none() && parity == recorded.parity {
-        line.stop_bits = recorded.stop_bits;
-    }
-    let replayed = timing::RecordedLine::of(mode, &line);
-    if replayed != recorded {
-        mbtool::note!(
-            "mbtool: {} records the line as {recorded}; replaying it as {replayed}, as the \
-             options say",
-            timing.path.display()
-        );
-    }
-    Ok((mode, line))
+/// What stopped a replay.
+#[derive(Debug, thiserror::Error)]
+pub enum ReplayError {
+    /// The capture could not be read.
+    #[error(transparent)]
+    Capture(io::Error),
+    /// The sink could not write (a closed pipe, a full disk).
+    #[error(transparent)]
+    Output(io::Error),
+    /// The timing file beside the capture is not one.
+    #[error("{path}: {fault}")]
+    Timing {
+        /// The timing file.
+        path: PathBuf,
+        /// What is wrong with it.
+        fault: TimingFault,
+    },
+    /// The capture holds fewer bytes than its timing file gives reads.
+    #[error("the capture is shorter than its .timing file says")]
+    ShorterThanTiming,
 }
 
-/// A capture's timing file, and the length of the capture it times.
-pub(super) struct TimingFile {
-    path: std::path::PathBuf,
+/// What is wrong with a timing file.
+#[derive(Debug, thiserror::Error)]
+pub enum TimingFault {
+    /// It could not be read.
+    #[error("cannot read it: {0}")]
+    Io(io::Error),
+    /// A directory or a FIFO of the name (a FIFO would hold the replay until written to).
+    #[error("not a file")]
+    NotAFile,
+    /// Not text.
+    #[error("not text")]
+    NotText,
+    /// A line that is no event, or does not follow from those before it.
+    #[error("line {line}: {message}")]
+    Line {
+        /// Its number, from 1.
+        line: usize,
+        /// What is wrong with it.
+        message: String,
+    },
+}
+
+/// A capture's timing file, read through once when opened: a replay must not show frames
+/// and then find its timing bad. It is read again, an event at a time, as the capture is
+/// replayed.
+pub struct TimingFile {
+    path: PathBuf,
     capture_len: u64,
-    /// The line the capture was taken on, when the file records it.
     line: Option<timing::RecordedLine>,
+    cut_off: Option<usize>,
 }
 
 impl TimingFile {
-    fn open(&self) -> Result<timing::Reader<io::BufReader<File>>> {
-        let file = File::open(&self.path)
-            .with_context(|| format!("cannot read {}", self.path.display()))?;
+    /// The timing file beside the capture at `capture`, when there is one.
+    pub fn beside(capture: &Path) -> Result<Option<TimingFile>, ReplayError> {
+        let path = timing::beside(capture);
+        if capture.as_os_str() == "-" || !path.exists() {
+            return Ok(None);
+        }
+        let fault = |fault| ReplayError::Timing {
+            path: path.clone(),
+            fault,
+        };
+        if !std::fs::metadata(&path)
+            .map_err(|e| fault(TimingFault::Io(e)))?
+            .is_file()
+        {
+            return Err(fault(TimingFault::NotAFile));
+        }
+        // The reads may not add up to more than the capture holds: a count that does is
+        // a file written by someone else, and must not make the replay allocate it.
+        let capture_len = std::fs::metadata(capture)
+            .map_err(ReplayError::Capture)?
+            .len();
+        let mut file = TimingFile {
+            path: path.clone(),
+            capture_len,
+            line: None,
+            cut_off: None,
+        };
+        let mut events = file.open()?;
+        while file.next(&mut events)?.is_some() {}
+        file.line = events.recorded_line();
+        file.cut_off = events.cut_off();
+        Ok(Some(file))
+    }
+
+    /// Where it is.
+    pub fn path(&self) -> &Path {
+        &self.path
+    }
+
+    /// The line the capture was taken on, when the file records it.
+    pub fn line(&self) -> Option<timing::RecordedLine> {
+        self.line
+    }
+
+    /// The number of its last line, when that line was cut off (the capture stopped as it
+    /// was written) and is passed over.
+    pub fn cut_off(&self) -> Option<usize> {
+        self.cut_off
+    }
+
+    fn open(&self) -> Result<timing::Reader<io::BufReader<File>>, ReplayError> {
+        let file = File::open(&self.path).map_err(|e| self.fault(TimingFault::Io(e)))?;
         Ok(timing::Reader::new(
             io::BufReader::new(file),
             self.capture_len,
         ))
     }
 
-    /// The next event of `events`, its faults told as what to do.
+    fn fault(&self, fault: TimingFault) -> ReplayError {
+        ReplayError::Timing {
+            path: self.path.clone(),
+            fault,
+        }
+    }
+
     fn next(
         &self,
         events: &mut timing::Reader<io::BufReader<File>>,
-    ) -> Result<Option<timing::Event>> {
-        let path = self.path.display();
-        events.next_event().map_err(|error| match error {
-            timing::TimingError::Io(error) => {
-                anyhow::Error::new(error).context(format!("cannot read {path}"))
-            }
-            timing::TimingError::NotText => Error::usage(format!(
-                "{path} is not text, so no .timing file: move it away to replay without timing"
-            ))
-            .into(),
-            timing::TimingError::Line { line, message } => Error::usage(format!(
-                "{path}:{line}: {message}; move the file away to replay without timing"
-            ))
-            .into(),
+    ) -> Result<Option<timing::Event>, ReplayError> {
+        events.next_event().map_err(|error| {
+            self.fault(match error {
+                timing::TimingError::Io(error) => TimingFault::Io(error),
+                timing::TimingError::NotText => TimingFault::NotText,
+                timing::TimingError::Line { line, message } => TimingFault::Line { line, message },
+            })
         })
     }
+}
+
+/// How a capture is framed.
+pub enum Pace<'a> {
+    /// With its timing.
+    Timed(&'a TimingFile),
+    /// By content alone, as it comes (a pipe, maybe a live line).
+    AsItComes,
+    /// By content alone, a file on every core.
+    Ahead,
+}
+
+/// How a replay ended.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Replayed {
+    /// How many bytes of the capture were read.
+    pub bytes: u64,
+    /// With timing: the time of its last event, when the capture ended.
+    pub end: Option<u64>,
+    /// With timing: the bytes at the capture's end that its timing does not cover (a
+    /// capture appended to later), framed without timing.
+    pub untimed: u64,
+}
+
+/// Replays the capture `input` through `session` at `pace`, handing the records to `sink`
+/// on this thread while the framing goes on on another. When the sink fails (a closed
+/// pipe), the replay stops at its next batch and the sink's error is the one told.
+pub fn replay(
+    input: &mut (dyn Read + Send),
+    pace: Pace<'_>,
+    session: &mut Session,
+    sink: &mut dyn RecordSink,
+) -> Result<Replayed, ReplayError> {
+    write_alongside(sink, |found| match pace {
+        Pace::Timed(timing) => replay_timed(input, timing, session, found),
+        Pace::AsItComes => Ok(Replayed {
+            bytes: replay_as_it_comes(input, session, found)?,
+            ..Replayed::default()
+        }),
+        Pace::Ahead => Ok(Replayed {
+            bytes: replay_ahead(input, session, found)?,
+            ..Replayed::default()
+        }),
+    })
 }
 
 /// How many batches of records may wait to be written while the next are framed.
@@ -165,7 +207,7 @@ const BATCHES_IN_FLIGHT: usize = 2;
 const BATCH: usize = 256;
 
 /// The records a replay finds, handed over in batches to be written on another thread.
-pub(super) struct Batches {
+struct Batches {
     records: Vec<Record>,
     to_write: mpsc::SyncSender<Vec<Record>>,
     written: mpsc::Receiver<Vec<Record>>,
@@ -173,18 +215,19 @@ pub(super) struct Batches {
 
 impl Batches {
     /// Hands the records found so far over, once there are `at_least` of them (1 or more).
-    fn hand_over(&mut self, at_least: usize) -> io::Result<()> {
+    /// An error is the writer gone: its own error is the one told.
+    fn hand_over(&mut self, at_least: usize) -> Result<(), ReplayError> {
         if self.records.len() < at_least.max(1) {
             return Ok(());
         }
         let empty = self.written.try_recv().unwrap_or_default();
         self.to_write
             .send(std::mem::replace(&mut self.records, empty))
-            .map_err(|_| io::Error::other("the output stopped"))
+            .map_err(|_| ReplayError::Output(io::Error::other("the output stopped")))
     }
 
     /// Hands a batch over when there are enough records for one.
-    fn found(&mut self) -> io::Result<()> {
+    fn found(&mut self) -> Result<(), ReplayError> {
         self.hand_over(BATCH)
     }
 }
@@ -194,10 +237,10 @@ impl Batches {
 /// up. Written batches come back to be filled again, so that their memory is taken once.
 /// When the output fails (a closed pipe), the replay stops at its next batch and the
 /// output's error is the one told.
-pub(super) fn write_alongside<T: Send>(
-    sinks: &mut Sinks,
-    replay: impl FnOnce(&mut Batches) -> Result<T> + Send,
-) -> Result<T> {
+fn write_alongside<T: Send>(
+    sink: &mut dyn RecordSink,
+    replay: impl FnOnce(&mut Batches) -> Result<T, ReplayError> + Send,
+) -> Result<T, ReplayError> {
     let (to_write, batches) = mpsc::sync_channel(BATCHES_IN_FLIGHT);
     let (give_back, written) = mpsc::channel();
     thread::scope(|scope| {
@@ -214,7 +257,7 @@ pub(super) fn write_alongside<T: Send>(
         });
         let mut written = Ok(());
         for mut batch in &batches {
-            written = sinks.write(&mut batch);
+            written = sink.write(&mut batch);
             if written.is_err() {
                 break;
             }
@@ -225,18 +268,17 @@ pub(super) fn write_alongside<T: Send>(
         let replayed = replaying
             .join()
             .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
-        written?;
+        written.map_err(ReplayError::Output)?;
         replayed
     })
 }
 
 /// A capture without timing: framed by content alone. Returns how many bytes it read.
-pub(super) fn replay(
+fn replay_as_it_comes(
     input: &mut dyn Read,
     session: &mut Session,
     found: &mut Batches,
-    save: &mut Option<Save>,
-) -> Result<u64> {
+) -> Result<u64, ReplayError> {
     // A few kilobytes at a time, so that few records are alive at once: the frames of a
     // 64 kB read, written only after all of them were found, made the allocator give its
     // memory back and take it again, a page fault a page, for every read.
@@ -247,11 +289,8 @@ pub(super) fn replay(
             Ok(0) => return Ok(read),
             Ok(n) => n,
             Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
-            Err(e) => return Err(e.into()),
+            Err(e) => return Err(ReplayError::Capture(e)),
         };
-        if let Some(save) = save.as_mut() {
-            save.bytes(&chunk[..n], None)?;
-        }
         read += n as u64;
         session.push(&chunk[..n], &mut found.records);
         // A read short of the buffer is a pipe that had no more yet, maybe a live line:
@@ -279,15 +318,14 @@ type AheadJob = (Framer, Arc<[u8]>, Vec<Event>, mpsc::SyncSender<Ahead>);
 /// worker on every other core while this thread catches up with them (see
 /// `Framer::catch_up`) and reads their frames, finding the same frames as [`replay`]
 /// would. Returns how many bytes it read.
-pub(super) fn replay_ahead(
-    input: &mut dyn Read,
+fn replay_ahead(
+    input: &mut (dyn Read + Send),
     session: &mut Session,
     found: &mut Batches,
-    save: &mut Option<Save>,
-) -> Result<u64> {
+) -> Result<u64, ReplayError> {
     let cores = thread::available_parallelism().map_or(1, |n| n.get());
     if cores < 2 {
-        return replay(input, session, found, save);
+        return replay_as_it_comes(input, session, found);
     }
     let (jobs, queue) = mpsc::channel::<AheadJob>();
     let queue = std::sync::Mutex::new(queue);
@@ -306,7 +344,7 @@ pub(super) fn replay_ahead(
                 let _ = done.send(framer.frame_ahead(&block, events));
             });
         }
-        let replayed = read_ahead(input, session, found, save, &jobs, cores - 1);
+        let replayed = read_ahead(input, session, found, &jobs, cores - 1);
         // The workers end once no more blocks can come.
         drop(jobs);
         replayed
@@ -326,10 +364,9 @@ fn read_ahead(
     input: &mut dyn Read,
     session: &mut Session,
     found: &mut Batches,
-    save: &mut Option<Save>,
     jobs: &mpsc::Sender<AheadJob>,
     workers: usize,
-) -> Result<u64> {
+) -> Result<u64, ReplayError> {
     let mut in_flight = std::collections::VecDeque::new();
     let mut read = 0u64;
     let mut blocks = 0usize;
@@ -343,13 +380,10 @@ fn read_ahead(
         let framing_ahead = if writer_busy { workers - 1 } else { workers };
         let cycle = framing_ahead * framing_ahead + 2;
         while !ended && in_flight.len() < 2 * cycle {
-            let block = read_block(input)?;
+            let block = read_block(input).map_err(ReplayError::Capture)?;
             if block.is_empty() {
                 ended = true;
                 break;
-            }
-            if let Some(save) = save.as_mut() {
-                save.bytes(&block, None)?;
             }
             let block: Arc<[u8]> = block.into();
             // The first block is framed in order: there is nothing before it to catch up
@@ -415,7 +449,7 @@ fn read_batches(
     session: &mut Session,
     found: &mut Batches,
     mut events: impl ExactSizeIterator<Item = Event>,
-) -> io::Result<usize> {
+) -> Result<usize, ReplayError> {
     let mut shown = 0;
     while events.len() > 0 {
         let before = found.records.len();
@@ -435,29 +469,22 @@ fn read_block(input: &mut dyn Read) -> io::Result<Vec<u8>> {
 }
 
 /// A capture with its timing: the bytes are given to the session exactly as the live
-/// session was given them, so the same frames come out. Returns the time of the timing's
-/// last event, when the capture ended.
-pub(super) fn replay_timed(
+/// session was given them, so the same frames come out.
+fn replay_timed(
     input: &mut dyn Read,
     timing: &TimingFile,
     session: &mut Session,
     found: &mut Batches,
-    save: &mut Option<Save>,
-) -> Result<Option<u64>> {
+) -> Result<Replayed, ReplayError> {
     let mut events = timing.open()?;
     let mut chunk = Vec::new();
     while let Some(event) = timing.next(&mut events)? {
         match event {
             timing::Event::Bytes { time, count } => {
                 chunk.resize(count, 0);
-                input.read_exact(&mut chunk).map_err(|_| {
-                    Error::usage(
-                        "the capture is shorter than its .timing file says: move the .timing file away to replay without timing",
-                    )
-                })?;
-                if let Some(save) = save.as_mut() {
-                    save.bytes(&chunk, None)?;
-                }
+                input
+                    .read_exact(&mut chunk)
+                    .map_err(|_| ReplayError::ShorterThanTiming)?;
                 session.push_at(&chunk, time, &mut found.records);
             }
             timing::Event::Idle { time } => {
@@ -469,12 +496,10 @@ pub(super) fn replay_timed(
         found.found()?;
     }
     // Bytes the timing does not cover (a capture appended to later) come untimed.
-    let untimed = replay(input, session, found, save)?;
-    if untimed > 0 {
-        mbtool::note!(
-            "mbtool: the .timing file covers the capture's first {} bytes; the last {untimed} are framed without timing",
-            events.covered()
-        );
-    }
-    Ok(events.last_time())
+    let untimed = replay_as_it_comes(input, session, found)?;
+    Ok(Replayed {
+        bytes: events.covered() + untimed,
+        end: events.last_time(),
+        untimed,
+    })
 }
