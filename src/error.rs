@@ -9,6 +9,7 @@ use mbtool_core::master::MasterError;
 use mbtool_core::model::address::AddressError;
 use mbtool_core::model::map::MapError;
 use mbtool_core::slave::datafile::DataFileError;
+use mbtool_core::sniff::replay::{ReplayError, TimingFault};
 use mbtool_core::transport::endpoint::EndpointError;
 use mbtool_core::transport::tls::TlsError;
 
@@ -181,3 +182,35 @@ fn exception_exit_code(code: ExceptionCode) -> u8 {
 }
 
 pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// A replay's failure, told as what to do.
+pub fn replay_failed(error: ReplayError) -> anyhow::Error {
+    let move_away = "move it away to replay without timing";
+    match error {
+        ReplayError::Capture(error) | ReplayError::Output(error) => error.into(),
+        ReplayError::ShorterThanTiming => Error::usage(
+            "the capture is shorter than its .timing file says: move the .timing file away to replay without timing",
+        )
+        .into(),
+        ReplayError::Timing { path, fault } => {
+            let path = path.display();
+            match fault {
+                TimingFault::Io(error) => {
+                    anyhow::Error::new(error).context(format!("cannot read {path}"))
+                }
+                TimingFault::NotAFile => {
+                    Error::usage(format!("{path} is not a file, so no .timing file: {move_away}"))
+                        .into()
+                }
+                TimingFault::NotText => {
+                    Error::usage(format!("{path} is not text, so no .timing file: {move_away}"))
+                        .into()
+                }
+                TimingFault::Line { line, message } => Error::usage(format!(
+                    "{path}:{line}: {message}; move the file away to replay without timing"
+                ))
+                .into(),
+            }
+        }
+    }
+}

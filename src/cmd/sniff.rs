@@ -1,179 +1,52 @@
 //! `mbtool sniff`: a passive capture of a bus, live from a port or replayed from a file.
 
 use std::fs::File;
-use std::io::{self, BufRead, BufWriter, Read, Write};
+use std::io::{self, BufRead, Read, Write};
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{mpsc, Arc};
-use std::thread;
-use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
+use std::sync::Arc;
+use std::time::{Duration, SystemTime, UNIX_EPOCH};
 
 use anyhow::{Context, Result};
 
 use mbtool::cli::SniffArgs;
 use mbtool::connection;
 use mbtool::error::Error;
-use mbtool::output::{self, sniff::SniffWriter, Named};
+use mbtool::output;
+use mbtool::output::sniff::{OutputFile, SniffSink, SniffWriter};
 use mbtool::settings::Settings;
 use mbtool_core::codec::Mode;
 use mbtool_core::model::line::DirectionControl;
 use mbtool_core::model::line::LineSettings;
 use mbtool_core::sniff::capture;
-use mbtool_core::sniff::pcap::{self, PcapWriter};
-use mbtool_core::sniff::session::{Filter, Record, Session};
+use mbtool_core::sniff::line;
+use mbtool_core::sniff::pcap::PcapWriter;
+use mbtool_core::sniff::session::{Filter, Session};
 use mbtool_core::sniff::stats::Stats;
 use mbtool_core::sniff::tcp::{TcpSession, MODBUS_PORT};
-use mbtool_core::sniff::timing::{self, RecordedLine};
+use mbtool_core::sniff::timing::{self, RecordedLine, Saver};
 use mbtool_core::transport::serial;
-use mbtool_core::transport::{Endpoint, Transport};
+use mbtool_core::transport::Endpoint;
 
-use mbtool_core::sniff::replay::{self, Pace, RecordSink, ReplayError, TimingFault, TimingFile};
-
-/// Where the records go: the screen (or a pipe), and the pcap file.
-struct Sinks {
-    writer: SniffWriter,
-    out: Box<dyn Write>,
-    pcap: Option<PcapWriter<OutputFile>>,
-    /// Microseconds since 1970 of capture time 0, for pcap timestamps.
-    epoch_us: u64,
-    mode: Mode,
-    /// Records are flushed as they are written: a live line, or standard input, which may
-    /// be another program's live capture.
-    live: bool,
-    /// `--stats`: the tallies, kept from every record shown.
-    stats: Option<Stats>,
-}
-
-impl RecordSink for Sinks {
-    fn write(&mut self, records: &mut Vec<Record>) -> io::Result<()> {
-        // Written where they lie, then dropped together: a frame record is large to move.
-        for record in records.iter() {
-            if let Some(stats) = self.stats.as_mut() {
-                stats.record(record);
-            }
-            if let (Some(pcap), Record::Frame(frame)) = (self.pcap.as_mut(), record) {
-                pcap.frame(
-                    self.epoch_us + frame.at,
-                    &pcap::rtu_form(self.mode, &frame.found.bytes),
-                )?;
-            }
-            self.writer.record(&mut self.out, record)?;
-        }
-        records.clear();
-        if self.live {
-            self.out.flush()?;
-        }
-        Ok(())
-    }
-}
+use mbtool_core::sniff::replay::{self, Pace, RecordSink, TimingFile};
 
 /// A capture file or standard input, its first bytes readable before it is read.
 type Input = io::BufReader<Box<dyn Read + Send>>;
 
 fn open_input(path: &Path) -> Result<Input> {
     let mut input: Box<dyn Read + Send> = if path.as_os_str() == "-" {
-        Box::new(StoppableStdin::new(super::shared::stop_on_signal()?.flag))
+        Box::new(mbtool::stdin::StoppableStdin::new(
+            super::shared::stop_on_signal()?.flag,
+        ))
     } else {
         Box::new(File::open(path).with_context(|| format!("cannot open {}", path.display()))?)
     };
-    let head =
-        capture_head(&mut input).with_context(|| format!("cannot read {}", path.display()))?;
+    let head = capture::read_head(&mut input)
+        .with_context(|| format!("cannot read {}", path.display()))?;
     Ok(io::BufReader::with_capacity(
         1 << 16,
         Box::new(io::Cursor::new(head).chain(input)),
     ))
-}
-
-/// The first bytes of the input, read until they tell whether it is a packet capture and,
-/// if it is, hold its file header whole: a pipe (`tcpdump -w - | mbtool sniff --input -`)
-/// may bring the header in pieces, and the capture is told, and its header read, from
-/// what the first read gives. Raw bytes of a line are held back by four bytes at most.
-fn capture_head(input: &mut dyn Read) -> io::Result<Vec<u8>> {
-    let mut head = Vec::new();
-    let mut want = 4;
-    while head.len() < want {
-        let mut chunk = vec![0u8; want - head.len()];
-        match input.read(&mut chunk) {
-            Ok(0) => break,
-            Ok(n) => head.extend_from_slice(&chunk[..n]),
-            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
-            Err(e) => return Err(e),
-        }
-        if head.len() >= want {
-            want = capture::header_len(&head)
-                .unwrap_or(head.len())
-                .max(head.len());
-        }
-    }
-    Ok(head)
-}
-
-/// Standard input that ends, as at the end of the input, on Ctrl-C or SIGTERM: `--input -`
-/// may be a line being captured by another program (`socat ... | mbtool sniff --input -`),
-/// and then ends as a live capture does, its frames and the summary shown. The reads
-/// happen on a thread of their own, since a read from a quiet pipe would not return for
-/// the signal.
-struct StoppableStdin {
-    chunks: mpsc::Receiver<io::Result<Vec<u8>>>,
-    stop: Arc<AtomicBool>,
-    /// What is left of the last chunk.
-    pending: Vec<u8>,
-    at: usize,
-}
-
-impl StoppableStdin {
-    fn new(stop: Arc<AtomicBool>) -> Self {
-        let (send, chunks) = mpsc::sync_channel(4);
-        thread::spawn(move || {
-            let mut stdin = io::stdin().lock();
-            loop {
-                let mut chunk = vec![0u8; 1 << 16];
-                let read = match stdin.read(&mut chunk) {
-                    Ok(n) => {
-                        chunk.truncate(n);
-                        Ok(chunk)
-                    }
-                    Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
-                    Err(e) => Err(e),
-                };
-                let end = !matches!(&read, Ok(chunk) if !chunk.is_empty());
-                if send.send(read).is_err() || end {
-                    return;
-                }
-            }
-        });
-        Self {
-            chunks,
-            stop,
-            pending: Vec::new(),
-            at: 0,
-        }
-    }
-}
-
-impl Read for StoppableStdin {
-    fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
-        while self.at == self.pending.len() {
-            if self.stop.load(Ordering::SeqCst) {
-                return Ok(0);
-            }
-            match self.chunks.recv_timeout(Duration::from_millis(50)) {
-                Ok(chunk) => {
-                    self.pending = chunk?;
-                    self.at = 0;
-                    if self.pending.is_empty() {
-                        return Ok(0);
-                    }
-                }
-                Err(mpsc::RecvTimeoutError::Timeout) => {}
-                Err(mpsc::RecvTimeoutError::Disconnected) => return Ok(0),
-            }
-        }
-        let n = buf.len().min(self.pending.len() - self.at);
-        buf[..n].copy_from_slice(&self.pending[self.at..self.at + n]);
-        self.at += n;
-        Ok(n)
-    }
 }
 
 pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
@@ -199,18 +72,12 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
                 ))
                 .into());
             }
-            if named_as_capture(path) && !timing::beside(path).exists() {
+            if capture::named_as_capture(path) && !timing::beside(path).exists() {
                 // Text is no line's bytes: a log or a paste given the wrong name.
-                let what = match start {
-                    [] => Some("empty"),
-                    _ if start
-                        .iter()
-                        .take(512)
-                        .all(|b| b.is_ascii_graphic() || b.is_ascii_whitespace()) =>
-                    {
-                        Some("text")
-                    }
-                    _ => None,
+                let what = match capture::content(start) {
+                    capture::Content::Empty => Some("empty"),
+                    capture::Content::Text => Some("text"),
+                    capture::Content::Bytes => None,
                 };
                 if let Some(what) = what {
                     return Err(Error::usage(format!(
@@ -237,7 +104,7 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         _ => {}
     }
     let timing = match &args.input {
-        Some(path) => TimingFile::beside(path).map_err(replay_failed)?,
+        Some(path) => TimingFile::beside(path).map_err(mbtool::error::replay_failed)?,
         None => None,
     };
     if let Some((timing, line)) = timing.as_ref().and_then(|t| Some((t, t.cut_off()?))) {
@@ -262,7 +129,7 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
     let mut save = match &args.save {
         Some(path) => {
             let live = args.input.is_none();
-            Some(Save::create(
+            Some(save_file(
                 path,
                 live.then(|| RecordedLine::of(mode, &line)),
             )?)
@@ -273,7 +140,7 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
     let epoch_us = SystemTime::now()
         .duration_since(UNIX_EPOCH)
         .map_or(0, |d| d.as_micros() as u64);
-    let mut sinks = Sinks {
+    let mut sinks = SniffSink {
         writer: SniffWriter::new(settings.output.format, output::colour_wanted()),
         out: output::stdout(),
         pcap,
@@ -307,7 +174,7 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
                 }
                 None => replay::replay(input, pace, &mut session, &mut sinks),
             }
-            .map_err(replay_failed)?;
+            .map_err(mbtool::error::replay_failed)?;
             if replayed.untimed > 0 {
                 mbtool::note!(
                     "mbtool: the .timing file covers the capture's first {} bytes; the last {} are framed without timing",
@@ -343,42 +210,10 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
     Ok(0)
 }
 
-/// A replay's failure, told as what to do.
-fn replay_failed(error: ReplayError) -> anyhow::Error {
-    let move_away = "move it away to replay without timing";
-    match error {
-        ReplayError::Capture(error) | ReplayError::Output(error) => error.into(),
-        ReplayError::ShorterThanTiming => Error::usage(
-            "the capture is shorter than its .timing file says: move the .timing file away to replay without timing",
-        )
-        .into(),
-        ReplayError::Timing { path, fault } => {
-            let path = path.display();
-            match fault {
-                TimingFault::Io(error) => {
-                    anyhow::Error::new(error).context(format!("cannot read {path}"))
-                }
-                TimingFault::NotAFile => {
-                    Error::usage(format!("{path} is not a file, so no .timing file: {move_away}"))
-                        .into()
-                }
-                TimingFault::NotText => {
-                    Error::usage(format!("{path} is not text, so no .timing file: {move_away}"))
-                        .into()
-                }
-                TimingFault::Line { line, message } => Error::usage(format!(
-                    "{path}:{line}: {message}; move the file away to replay without timing"
-                ))
-                .into(),
-            }
-        }
-    }
-}
-
 /// A capture read through `--save`, which keeps every byte read.
 struct Kept<'a> {
     input: &'a mut Input,
-    save: &'a mut Save,
+    save: &'a mut Saver,
 }
 
 impl Read for Kept<'_> {
@@ -389,19 +224,12 @@ impl Read for Kept<'_> {
     }
 }
 
-/// A name that says the file is a packet capture.
-fn named_as_capture(path: &Path) -> bool {
-    let extension = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .unwrap_or_default();
-    ["pcap", "pcapng", "cap", "dmp"]
-        .iter()
-        .any(|known| extension.eq_ignore_ascii_case(known))
-}
-
 /// The TCP session of a capture, and where its records go.
-fn tcp_session(settings: &Settings, args: &SniffArgs, live: bool) -> Result<(TcpSession, Sinks)> {
+fn tcp_session(
+    settings: &Settings,
+    args: &SniffArgs,
+    live: bool,
+) -> Result<(TcpSession, SniffSink)> {
     let mode = match settings.connection.mode {
         None | Some(Mode::Tcp) => Mode::Tcp,
         Some(Mode::Rtu) => Mode::Rtu,
@@ -417,7 +245,7 @@ fn tcp_session(settings: &Settings, args: &SniffArgs, live: bool) -> Result<(Tcp
         functions: args.functions.clone(),
     };
     let session = TcpSession::new(mode, modbus_ports(args), filter);
-    let sinks = Sinks {
+    let sinks = SniffSink {
         writer: SniffWriter::new(settings.output.format, output::colour_wanted()),
         out: output::stdout(),
         pcap: pcap_file(args)?,
@@ -438,7 +266,7 @@ fn modbus_ports(args: &SniffArgs) -> Vec<u16> {
 }
 
 /// The end of a TCP capture: what the connections hold, the summary and the stats.
-fn end_tcp(mut session: TcpSession, mut sinks: Sinks) -> Result<()> {
+fn end_tcp(mut session: TcpSession, mut sinks: SniffSink) -> Result<()> {
     let mut records = Vec::new();
     session.finish(&mut records);
     sinks.write(&mut records)?;
@@ -576,73 +404,19 @@ fn pcap_file(args: &SniffArgs) -> Result<Option<PcapWriter<OutputFile>>> {
     Ok(Some(PcapWriter::new(file)?))
 }
 
-/// A file sniff writes, buffered, its errors naming it.
-type OutputFile = BufWriter<Named<File>>;
-
-/// `--save`: the bytes as received and, from a port, their timing beside them.
-struct Save {
-    bytes: OutputFile,
-    timing: Option<OutputFile>,
-}
-
-impl Save {
-    /// A capture of a port, on `line`, keeps its timing; a replay's does not.
-    fn create(path: &Path, line: Option<RecordedLine>) -> Result<Save> {
-        let create = |path: &Path| {
-            output::create_file(path, false)
-                .with_context(|| format!("cannot create {}", path.display()))
-        };
-        let timing = match line {
-            Some(line) => {
-                let mut file = create(&timing::beside(path))?;
-                writeln!(file, "{}\n{}", timing::HEADER, line.as_comment())?;
-                Some(file)
-            }
-            None => None,
-        };
-        Ok(Save {
-            bytes: create(path)?,
-            timing,
-        })
-    }
-
-    fn bytes(&mut self, bytes: &[u8], time: Option<u64>) -> io::Result<()> {
-        self.bytes.write_all(bytes)?;
-        match (self.timing.as_mut(), time) {
-            (Some(timing), Some(time)) => writeln!(
-                timing,
-                "{}",
-                timing::Event::Bytes {
-                    time,
-                    count: bytes.len()
-                }
-            ),
-            _ => Ok(()),
-        }
-    }
-
-    fn idle(&mut self, time: u64) -> io::Result<()> {
-        match self.timing.as_mut() {
-            Some(timing) => writeln!(timing, "{}", timing::Event::Idle { time }),
-            None => Ok(()),
-        }
-    }
-
-    /// The capture ended at `time`: a request still waiting had waited until then.
-    fn end(&mut self, time: u64) -> io::Result<()> {
-        match self.timing.as_mut() {
-            Some(timing) => writeln!(timing, "{}", timing::Event::End { time }),
-            None => Ok(()),
-        }
-    }
-
-    fn flush(&mut self) -> io::Result<()> {
-        self.bytes.flush()?;
-        match self.timing.as_mut() {
-            Some(timing) => timing.flush(),
-            None => Ok(()),
-        }
-    }
+/// `--save FILE`: a capture of a port, on `line`, keeps its timing beside it; a replay's
+/// does not.
+fn save_file(path: &Path, line: Option<RecordedLine>) -> Result<Saver> {
+    let create = |path: &Path| -> Result<Box<dyn Write + Send>> {
+        let file = output::create_file(path, false)
+            .with_context(|| format!("cannot create {}", path.display()))?;
+        Ok(Box::new(file))
+    };
+    let timing = match line {
+        Some(line) => Some((create(&timing::beside(path))?, line)),
+        None => None,
+    };
+    Ok(Saver::new(create(path)?, timing)?)
 }
 
 /// Reads the port until Ctrl-C; returns the time the capture ended, in microseconds.
@@ -652,8 +426,8 @@ fn live(
     line: LineSettings,
     mode: Mode,
     session: &mut Session,
-    sinks: &mut Sinks,
-    save: &mut Option<Save>,
+    sinks: &mut SniffSink,
+    save: &mut Option<Saver>,
 ) -> Result<u64> {
     let path = match settings.connection.port.as_deref().map(Endpoint::parse) {
         Some(Ok(Endpoint::Serial(path))) => path,
@@ -690,36 +464,17 @@ fn live(
         "mbtool: listening on {path} ({mode}, {} baud); Ctrl-C ends with a summary",
         line.baud
     );
-    let start = Instant::now();
-    let mut bytes = Vec::with_capacity(4096);
-    let mut warned = false;
-    while !stop.load(Ordering::SeqCst) {
-        bytes.clear();
-        let n = port.receive(&mut bytes, Instant::now() + Duration::from_millis(20))?;
-        let now = start.elapsed().as_micros() as u64;
-        let mut records = Vec::new();
-        if n > 0 {
-            if let Some(save) = save.as_mut() {
-                save.bytes(&bytes, Some(now))?;
-            }
-            session.push_at(&bytes, now, &mut records);
-        } else if session.idle(now, &mut records) {
-            // Only the calls that told the framer something: a replay repeats them.
-            if let Some(save) = save.as_mut() {
-                save.idle(now)?;
-            }
-        }
-        sinks.write(&mut records)?;
-        if session.behind_latency_timer && !warned {
-            warned = true;
-            mbtool::note!(
-                "mbtool: bytes arrive in bursts, so gaps between frames are not real (frames are still split by content); set the adapter's latency timer: echo 1 | sudo tee /sys/bus/usb-serial/devices/*/latency_timer, or use --low-latency"
-            );
-        }
-    }
-    let end = start.elapsed().as_micros() as u64;
-    if let Some(save) = save.as_mut() {
-        save.end(end)?;
-    }
-    Ok(end)
+    let bursts = || {
+        mbtool::note!(
+            "mbtool: bytes arrive in bursts, so gaps between frames are not real (frames are still split by content); set the adapter's latency timer: echo 1 | sudo tee /sys/bus/usb-serial/devices/*/latency_timer, or use --low-latency"
+        );
+    };
+    Ok(line::listen(
+        &mut port,
+        session,
+        sinks,
+        save.as_mut(),
+        &stop,
+        bursts,
+    )?)
 }

@@ -12,7 +12,10 @@ use super::{csv_field, request_summary, shown_values, write_fields_summary, writ
 use mbtool_core::codec::function;
 use mbtool_core::codec::hex::push_spaced_hex;
 use mbtool_core::codec::ExceptionCode;
+use mbtool_core::codec::Mode;
 use mbtool_core::describe::{describe_pdu, FrameReport, Kind};
+use mbtool_core::sniff::pcap::{self, PcapWriter};
+use mbtool_core::sniff::replay::RecordSink;
 use mbtool_core::sniff::session::{Counts, FrameRecord, Record, TcpPlace, ENDS_WITHOUT_CR};
 
 use super::columns::{column, pad_to, Align, Offset, Seconds};
@@ -640,6 +643,47 @@ fn connection(place: &TcpPlace) -> String {
 fn duration(us: u64) -> String {
     mbtool_core::input::duration::show(std::time::Duration::from_micros(us))
 }
+
+/// Where the records go: the screen (or a pipe), and the pcap file.
+pub struct SniffSink {
+    pub writer: SniffWriter,
+    pub out: Box<dyn Write>,
+    pub pcap: Option<PcapWriter<OutputFile>>,
+    /// Microseconds since 1970 of capture time 0, for pcap timestamps.
+    pub epoch_us: u64,
+    pub mode: Mode,
+    /// Records are flushed as they are written: a live line, or standard input, which may
+    /// be another program's live capture.
+    pub live: bool,
+    /// `--stats`: the tallies, kept from every record shown.
+    pub stats: Option<Stats>,
+}
+
+impl RecordSink for SniffSink {
+    fn write(&mut self, records: &mut Vec<Record>) -> io::Result<()> {
+        // Written where they lie, then dropped together: a frame record is large to move.
+        for record in records.iter() {
+            if let Some(stats) = self.stats.as_mut() {
+                stats.record(record);
+            }
+            if let (Some(pcap), Record::Frame(frame)) = (self.pcap.as_mut(), record) {
+                pcap.frame(
+                    self.epoch_us + frame.at,
+                    &pcap::rtu_form(self.mode, &frame.found.bytes),
+                )?;
+            }
+            self.writer.record(&mut self.out, record)?;
+        }
+        records.clear();
+        if self.live {
+            self.out.flush()?;
+        }
+        Ok(())
+    }
+}
+
+/// A file sniff writes, buffered, its errors naming it.
+pub type OutputFile = std::io::BufWriter<super::Named<std::fs::File>>;
 
 #[cfg(test)]
 mod tests;

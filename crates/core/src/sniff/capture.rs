@@ -2,7 +2,7 @@
 //! (told apart by their magic, whatever the file's name), read block by block in bounded
 //! memory, and in each packet the TCP segment under its link, VLAN and IP headers.
 
-use std::io::Read;
+use std::io::{self, Read};
 use std::net::{IpAddr, SocketAddr};
 
 use etherparse::{EtherType, LaxNetSlice, LaxSlicedPacket, TransportSlice};
@@ -350,6 +350,65 @@ fn ether_type(data: &[u8], at: usize, len: usize) -> Option<LaxSlicedPacket<'_>>
         EtherType(kind),
         data.get(len..)?,
     ))
+}
+
+/// The first bytes of the input, read until they tell whether it is a packet capture and,
+/// if it is, hold its file header whole: a pipe (`tcpdump -w - | mbtool sniff --input -`)
+/// may bring the header in pieces, and the capture is told, and its header read, from
+/// what the first read gives. Raw bytes of a line are held back by four bytes at most.
+pub fn read_head(input: &mut dyn Read) -> io::Result<Vec<u8>> {
+    let mut head = Vec::new();
+    let mut want = 4;
+    while head.len() < want {
+        let mut chunk = vec![0u8; want - head.len()];
+        match input.read(&mut chunk) {
+            Ok(0) => break,
+            Ok(n) => head.extend_from_slice(&chunk[..n]),
+            Err(e) if e.kind() == io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(e),
+        }
+        if head.len() >= want {
+            want = header_len(&head).unwrap_or(head.len()).max(head.len());
+        }
+    }
+    Ok(head)
+}
+
+/// A name that says the file is a packet capture.
+pub fn named_as_capture(path: &std::path::Path) -> bool {
+    let extension = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .unwrap_or_default();
+    ["pcap", "pcapng", "cap", "dmp"]
+        .iter()
+        .any(|known| extension.eq_ignore_ascii_case(known))
+}
+
+/// What the first bytes of a file that is no packet capture say it holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Content {
+    /// Nothing.
+    Empty,
+    /// Text: a log or a paste, no line's bytes.
+    Text,
+    /// Bytes, as a serial line carries them.
+    Bytes,
+}
+
+/// What `start`, the first bytes of a file, holds (its first 512 bytes tell text).
+pub fn content(start: &[u8]) -> Content {
+    match start {
+        [] => Content::Empty,
+        _ if start
+            .iter()
+            .take(512)
+            .all(|b| b.is_ascii_graphic() || b.is_ascii_whitespace()) =>
+        {
+            Content::Text
+        }
+        _ => Content::Bytes,
+    }
 }
 
 #[cfg(test)]

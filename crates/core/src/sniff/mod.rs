@@ -3,6 +3,7 @@
 //! (`pcap`); a saved capture keeps its timing beside it (`timing`).
 
 pub mod capture;
+pub mod line;
 pub mod live;
 mod pairing;
 pub mod pcap;

@@ -14,7 +14,7 @@
 //! a silence is on the replay as it was live.
 
 use std::fmt;
-use std::io::{self, BufRead, Read};
+use std::io::{self, BufRead, Read, Write};
 
 use crate::codec::Mode;
 use crate::model::line::{LineSettings, Parity, BAUDS, DATA_BITS, STOP_BITS};
@@ -403,6 +403,71 @@ fn quoted(line: &str) -> String {
             line.chars().count()
         ),
         None => format!("'{line}'"),
+    }
+}
+
+/// `--save`: the bytes of a line as received and, captured live, their timing beside them.
+pub struct Saver {
+    bytes: Box<dyn Write + Send>,
+    timing: Option<Box<dyn Write + Send>>,
+}
+
+impl Saver {
+    /// Keeps the bytes in `bytes` and, given, their timing in `timing`, a capture of a line
+    /// taken on `line`: its header is written at once.
+    pub fn new(
+        bytes: Box<dyn Write + Send>,
+        timing: Option<(Box<dyn Write + Send>, RecordedLine)>,
+    ) -> io::Result<Saver> {
+        let timing = match timing {
+            Some((mut file, line)) => {
+                writeln!(file, "{HEADER}\n{}", line.as_comment())?;
+                Some(file)
+            }
+            None => None,
+        };
+        Ok(Saver { bytes, timing })
+    }
+
+    /// `bytes` received, at `time` when the capture is live.
+    pub fn bytes(&mut self, bytes: &[u8], time: Option<u64>) -> io::Result<()> {
+        self.bytes.write_all(bytes)?;
+        match (self.timing.as_mut(), time) {
+            (Some(timing), Some(time)) => writeln!(
+                timing,
+                "{}",
+                Event::Bytes {
+                    time,
+                    count: bytes.len()
+                }
+            ),
+            _ => Ok(()),
+        }
+    }
+
+    /// The line was silent at `time`, and the framer was told.
+    pub fn idle(&mut self, time: u64) -> io::Result<()> {
+        match self.timing.as_mut() {
+            Some(timing) => writeln!(timing, "{}", Event::Idle { time }),
+            None => Ok(()),
+        }
+    }
+
+    /// The capture ended at `time`: a request still waiting had waited until then.
+    pub fn end(&mut self, time: u64) -> io::Result<()> {
+        match self.timing.as_mut() {
+            Some(timing) => writeln!(timing, "{}", Event::End { time }),
+            None => Ok(()),
+        }
+    }
+
+    /// Writes out what is buffered.
+    pub fn flush(&mut self) -> io::Result<()> {
+        self.bytes.flush()?;
+        match self.timing.as_mut() {
+            Some(timing) => timing.flush(),
+            None => Ok(()),
+        }
     }
 }
 
