@@ -105,7 +105,7 @@ fn scheme(endpoint: Option<&Endpoint>) -> &'static str {
     }
 }
 
-/// The serial line settings, defaults filled in as the README gives them.
+/// The serial line settings, defaults filled in as docs/serial-line.md gives them.
 pub fn line_settings(options: &ConnectionSettings, mode: Mode) -> LineSettings {
     line_at(options, mode, options.baud(), options.parity())
 }

@@ -1,4 +1,4 @@
-//! The library's errors, each with the exit status the README gives it.
+//! The library's errors, each with the exit status docs/reading-and-writing.md gives it.
 
 use thiserror::Error;
 
@@ -141,7 +141,7 @@ impl Error {
         }
     }
 
-    /// The process exit status for this error (the README's "Exit status").
+    /// The process exit status for this error ("Exit status" in docs/reading-and-writing.md).
     pub fn exit_code(&self) -> u8 {
         match self {
             Error::Usage(_)

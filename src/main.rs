@@ -1,5 +1,5 @@
 //! The `mbtool` binary: parses the command line, runs the command, and turns every outcome
-//! into one line on stderr and the exit status the README gives it.
+//! into one line on stderr and the exit status docs/reading-and-writing.md gives it.
 
 mod cmd;
 

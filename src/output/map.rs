@@ -1,5 +1,5 @@
 //! How the points of a map read are shown: name, reference, value with its unit and the
-//! raw registers in hex; JSON with the stable keys the README gives; `name=value` lines; CSV.
+//! raw registers in hex; JSON with the stable keys docs/maps.md gives; `name=value` lines; CSV.
 
 use std::io::{self, Write};
 
@@ -11,7 +11,7 @@ use mbtool_core::master::map::{MapRead, PointValue};
 use mbtool_core::model::map::Point;
 use mbtool_core::model::values::Value;
 
-/// The keys the README gives, in its order.
+/// The keys docs/maps.md gives, in its order.
 #[derive(Serialize)]
 struct JsonMap<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]

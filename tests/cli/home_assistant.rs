@@ -62,9 +62,9 @@ fn data_file(dir: &Path) -> String {
 }
 
 /// Why Home Assistant refuses a file that mbtool reads, where the reason is a known one
-/// (the README's register maps section documents them): a `count` beside a type that says its
-/// width, and the older `int`, `uint`, `float` types, which Home Assistant read before its
-/// sized names and mbtool still reads.
+/// (docs/maps.md documents them): a `count` beside a type that says its width, and the older
+/// `int`, `uint`, `float` types, which Home Assistant read before its sized names and mbtool
+/// still reads.
 fn tolerated(error: &str) -> bool {
     error.contains("`count` illegal with") || error.contains("['data_type']")
 }

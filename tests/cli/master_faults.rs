@@ -1,5 +1,6 @@
 //! The master against a strict scripted slave on a pseudo-terminal, which plays exact bytes:
-//! every fault a real bus produces gets the exit status and message the README promises.
+//! every fault a real bus produces gets the exit status and message that
+//! docs/reading-and-writing.md promises.
 
 use std::thread;
 use std::time::Duration;

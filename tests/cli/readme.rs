@@ -1,11 +1,16 @@
-//! The README's examples, run as a reader would type them: every ```console block is one
-//! shell session, each `$ ` line a command and the lines under it what it prints (stdout
-//! and stderr as a terminal shows them). `[..]` in an expected line stands for what changes
+//! The examples of the README and of the pages under `docs/`, run as a reader would type
+//! them, from the top folder of the repository: every ```console block is one shell
+//! session, each `$ ` line a command and the lines under it what it prints (stdout and
+//! stderr as a terminal shows them). `[..]` in an expected line stands for what changes
 //! from run to run (times, TCP ports) and a line `...` for lines left out.
 //!
 //! A command ending in `&` runs in the background for the rest of its block (its first
 //! lines are checked as it prints them), `kill %1` stops it, and `echo $?` prints the
-//! status of the command before. Port 5020 is replaced by a free port.
+//! status of the command before. Port 5020 is replaced by a free port. A failure names the
+//! file and line of its command.
+//!
+//! The links between those pages are checked too: each relative link leads to a file of the
+//! repository, and each `#anchor` to a heading of that file.
 
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
@@ -19,10 +24,13 @@ struct Step {
     expected: String,
 }
 
-/// The ```console blocks of a Markdown text, each a list of steps, with their line number.
-fn sessions(markdown: &str) -> Vec<(usize, Vec<Step>)> {
+/// A ```console block: the line it starts on, and its steps.
+type Session = (usize, Vec<Step>);
+
+/// The ```console blocks of a Markdown text.
+fn sessions(markdown: &str) -> Vec<Session> {
     let mut sessions = Vec::new();
-    let mut current: Option<(usize, Vec<Step>)> = None;
+    let mut current: Option<Session> = None;
     for (number, line) in markdown.lines().enumerate() {
         match (&mut current, line) {
             (None, "```console") => current = Some((number + 1, Vec::new())),
@@ -90,14 +98,14 @@ impl Drop for Background {
     }
 }
 
-fn run_session(line: usize, steps: &[Step]) {
+fn run_session(file: &str, line: usize, steps: &[Step]) {
     let port = free_port().to_string();
     let mut background: Option<Background> = None;
     let mut status = 0;
     for step in steps {
         let command = step.command.replace("5020", &port);
         let expected = step.expected.replace("5020", &port);
-        let place = format!("README.md:{line}: $ {}", step.command);
+        let place = format!("{file}:{line}: $ {}", step.command);
         let actual = if command == "echo $?" {
             format!("{status}\n")
         } else if command == "kill %1" {
@@ -110,7 +118,7 @@ fn run_session(line: usize, steps: &[Step]) {
                 .expect("bash runs");
             let out = child.stdout.take().expect("piped");
             background = Some(Background(child));
-            // Its first lines, as many as the README shows, as it prints them.
+            // Its first lines, as many as the page shows, as it prints them.
             let mut lines = BufReader::new(out).lines();
             let mut seen = String::new();
             for _ in 0..expected.lines().count() {
@@ -136,17 +144,141 @@ fn run_session(line: usize, steps: &[Step]) {
     drop(background);
 }
 
+/// The repository's top folder.
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// README.md and every page of `docs/`, by their names from the top folder, with their text.
+fn pages() -> Vec<(String, String)> {
+    let mut names = vec!["README.md".to_string()];
+    let mut docs: Vec<String> = std::fs::read_dir(root().join("docs"))
+        .expect("docs/")
+        .map(|entry| entry.expect("a docs/ entry").file_name())
+        .map(|name| name.to_string_lossy().into_owned())
+        .filter(|name| name.ends_with(".md"))
+        .map(|name| format!("docs/{name}"))
+        .collect();
+    docs.sort();
+    names.extend(docs);
+    names
+        .into_iter()
+        .map(|name| {
+            let text = std::fs::read_to_string(root().join(&name))
+                .unwrap_or_else(|e| panic!("{name}: {e}"));
+            (name, text)
+        })
+        .collect()
+}
+
 #[test]
-fn every_readme_example_prints_what_the_readme_shows() {
-    let readme = Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md");
-    let text = std::fs::read_to_string(readme).expect("README.md");
-    let sessions = sessions(&text);
-    assert!(
-        sessions.len() >= 10,
-        "only {} examples found",
-        sessions.len()
-    );
-    for (line, steps) in &sessions {
-        run_session(*line, steps);
+fn every_example_of_the_readme_and_its_docs_prints_what_they_show() {
+    let pages: Vec<(String, Vec<Session>)> = pages()
+        .into_iter()
+        .map(|(name, text)| (name, sessions(&text)))
+        .collect();
+    for (name, sessions) in &pages {
+        // Each page can be tried at once, without hardware.
+        assert!(!sessions.is_empty(), "{name} has no example");
+    }
+    let examples: usize = pages.iter().map(|(_, sessions)| sessions.len()).sum();
+    assert!(examples >= 30, "only {examples} examples found");
+    for (name, sessions) in &pages {
+        for (line, steps) in sessions {
+            run_session(name, *line, steps);
+        }
+    }
+}
+
+/// The targets of the inline links `[text](target)` of a Markdown text, with their line
+/// number, code spans and blocks left out.
+fn links(markdown: &str) -> Vec<(usize, String)> {
+    let mut links = Vec::new();
+    let mut in_block = false;
+    for (number, line) in markdown.lines().enumerate() {
+        if line.starts_with("```") {
+            in_block = !in_block;
+            continue;
+        }
+        if in_block {
+            continue;
+        }
+        // Code spans are the odd pieces between backticks.
+        let prose: String = line
+            .split('`')
+            .enumerate()
+            .filter(|(i, _)| i % 2 == 0)
+            .map(|(_, piece)| piece)
+            .collect::<Vec<_>>()
+            .join(" ");
+        let mut rest = prose.as_str();
+        while let Some(start) = rest.find("](") {
+            let after = &rest[start + 2..];
+            let Some(end) = after.find(')') else { break };
+            links.push((number + 1, after[..end].to_string()));
+            rest = &after[end..];
+        }
+    }
+    links
+}
+
+/// The anchor GitHub gives a heading: lower case, spaces as `-`, only letters, digits, `-`
+/// and `_` kept.
+fn anchor(heading: &str) -> String {
+    heading
+        .trim()
+        .to_lowercase()
+        .chars()
+        .filter_map(|c| match c {
+            ' ' => Some('-'),
+            c if c.is_alphanumeric() || c == '-' || c == '_' => Some(c),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The anchors of a Markdown text's headings (outside code blocks).
+fn anchors(markdown: &str) -> Vec<String> {
+    let mut anchors = Vec::new();
+    let mut in_block = false;
+    for line in markdown.lines() {
+        if line.starts_with("```") {
+            in_block = !in_block;
+        } else if !in_block && line.starts_with('#') {
+            anchors.push(anchor(line.trim_start_matches('#')));
+        }
+    }
+    anchors
+}
+
+#[test]
+fn every_link_of_the_readme_and_its_docs_leads_somewhere() {
+    for (name, text) in pages() {
+        let folder = Path::new(&name).parent().unwrap_or(Path::new(""));
+        for (line, target) in links(&text) {
+            if target.contains("://") || target.starts_with("mailto:") {
+                continue;
+            }
+            let place = format!("{name}:{line}: {target}");
+            assert!(!target.starts_with('/'), "{place}: a link is relative");
+            let (path, fragment) = match target.split_once('#') {
+                Some((path, fragment)) => (path, Some(fragment)),
+                None => (target.as_str(), None),
+            };
+            let file = if path.is_empty() {
+                root().join(&name)
+            } else {
+                root().join(folder).join(path)
+            };
+            assert!(file.exists(), "{place}: no such file");
+            if let Some(fragment) = fragment {
+                let text =
+                    std::fs::read_to_string(&file).unwrap_or_else(|e| panic!("{place}: {e}"));
+                assert!(
+                    anchors(&text).iter().any(|a| a == fragment),
+                    "{place}: no such heading"
+                );
+            }
+        }
     }
 }
