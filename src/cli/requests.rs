@@ -523,13 +523,20 @@ pub struct WriteByReferenceArgs {
 }
 
 impl WriteByReferenceArgs {
-    /// The NAME=VALUE words of a write by map.
-    pub fn assignments(&self) -> Vec<&str> {
-        self.reference
-            .iter()
-            .chain(&self.values)
-            .map(String::as_str)
-            .collect()
+    /// With --map: the slave typed, and the NAME=VALUE words. A first word that is no
+    /// slave id is an assignment, SLAVE left out (the map gives each point's slave).
+    pub fn map_words(&self) -> (Option<&str>, Vec<&str>) {
+        let is_slave = |word: &str| mbtool_core::input::number::parse_int(word).is_ok();
+        let (slave, first) = match self.slave.as_str() {
+            word if is_slave(word) => (Some(word), None),
+            word => (None, Some(word)),
+        };
+        let assignments = first
+            .into_iter()
+            .chain(self.reference.as_deref())
+            .chain(self.values.iter().map(String::as_str))
+            .collect();
+        (slave, assignments)
     }
 }
 

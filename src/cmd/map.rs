@@ -326,8 +326,9 @@ pub fn by_map<W: Wire>(settings: &Settings, request: &RequestCommand<W>) -> Resu
             )
             .into()),
             Some(path) => {
-                let plan = plan(settings, path, Some(&args.slave), &[], tcp(), Access::WriteOne)?;
-                let writes = plan.writes(&args.assignments(), path)?;
+                let (slave, assignments) = args.map_words();
+                let plan = plan(settings, path, slave, &[], tcp(), Access::WriteOne)?;
+                let writes = plan.writes(&assignments, path)?;
                 Ok(Some(ByMap::Write(writes, plan)))
             }
             None => Ok(None),

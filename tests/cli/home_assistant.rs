@@ -219,3 +219,37 @@ fn the_public_configurations_read_as_home_assistant_reads_them() {
         "{loaded} files, {compared} values"
     );
 }
+
+/// `write --map FILE NAME=VALUE` needs no SLAVE where the map gives each point's: a Home
+/// Assistant entity without one is slave 1, as Home Assistant writes it.
+#[test]
+fn a_write_by_map_without_a_slave_goes_to_the_maps_slave() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let map = root.join("examples/pump3.yaml");
+    let data = root.join("examples/pump3.txt");
+    let (_device, port, _) = serve_tcp(&["--slave", "1", "--data", data.to_str().unwrap()]);
+    let write = mbtool()
+        .args(&port)
+        .args(["write", "--map", map.to_str().unwrap(), "pump=on"])
+        .output()
+        .unwrap();
+    assert!(write.status.success(), "{write:?}");
+    let read = mbtool()
+        .args(&port)
+        .args([
+            "read",
+            "1",
+            "--map",
+            map.to_str().unwrap(),
+            "pump",
+            "-o",
+            "values",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(
+        String::from_utf8_lossy(&read.stdout),
+        "pump=on\n",
+        "{read:?}"
+    );
+}
