@@ -502,6 +502,9 @@ impl ReadByReferenceArgs {
 #[derive(Clone, Debug, Args)]
 pub struct WriteByReferenceArgs {
     /// Slave address: 1-247, or 0 to broadcast
+    ///
+    /// With --map, left out where the map gives every point's slave (Home Assistant's
+    /// entities are slave 1 where they give none)
     pub slave: String,
     /// A coil (000020) or holding register (400001) reference, a range, or a bit (400001.03)
     ///
