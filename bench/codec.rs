@@ -106,5 +106,30 @@ fn codec(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, codec);
+/// CRC-16/MODBUS, ours (slice-by-16, short frames in one pass of independent lookups)
+/// against the `crc` crate's, table-driven and slice-by-16: the framer checks a CRC at
+/// every candidate frame, most of them under 16 bytes.
+fn crc(c: &mut Criterion) {
+    const CRATE_BYTEWISE: crc::Crc<u16> = crc::Crc::<u16>::new(&crc::CRC_16_MODBUS);
+    const CRATE_SLICED: crc::Crc<u16, crc::Table<16>> =
+        crc::Crc::<u16, crc::Table<16>>::new(&crc::CRC_16_MODBUS);
+    let request = &FRAMES[4][..6];
+    let long: Vec<u8> = (0..253u8).collect();
+    let mut group = c.benchmark_group("crc16");
+    for (name, bytes) in [("6 bytes", request), ("253 bytes", long.as_slice())] {
+        group.throughput(Throughput::Bytes(bytes.len() as u64));
+        group.bench_function(format!("ours, {name}"), |b| {
+            b.iter(|| mbtool_core::codec::checksum::crc16(std::hint::black_box(bytes)));
+        });
+        group.bench_function(format!("crc crate, table, {name}"), |b| {
+            b.iter(|| CRATE_BYTEWISE.checksum(std::hint::black_box(bytes)));
+        });
+        group.bench_function(format!("crc crate, slice-by-16, {name}"), |b| {
+            b.iter(|| CRATE_SLICED.checksum(std::hint::black_box(bytes)));
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, codec, crc);
 criterion_main!(benches);
