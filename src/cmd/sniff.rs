@@ -13,7 +13,7 @@ use mbtool::cli::SniffArgs;
 use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output;
-use mbtool::output::sniff::{OutputFile, SniffSink, SniffWriter};
+use mbtool::output::sniff::{self, OutputFile, SniffSink};
 use mbtool::settings::Settings;
 use mbtool_core::codec::Mode;
 use mbtool_core::model::line::DirectionControl;
@@ -141,7 +141,7 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         .duration_since(UNIX_EPOCH)
         .map_or(0, |d| d.as_micros() as u64);
     let mut sinks = SniffSink {
-        writer: SniffWriter::new(settings.output.format, output::colour_wanted()),
+        writer: sniff::writer(settings.output.format, output::colour_wanted()),
         out: output::stdout(),
         pcap,
         epoch_us: if args.input.is_some() { 0 } else { epoch_us },
@@ -246,7 +246,7 @@ fn tcp_session(
     };
     let session = TcpSession::new(mode, modbus_ports(args), filter);
     let sinks = SniffSink {
-        writer: SniffWriter::new(settings.output.format, output::colour_wanted()),
+        writer: sniff::writer(settings.output.format, output::colour_wanted()),
         out: output::stdout(),
         pcap: pcap_file(args)?,
         epoch_us: 0,

@@ -1,7 +1,6 @@
 //! What `dump` and `restore` say besides the data file: ranges of references, the time of
 //! a dump, and the values that read back differently.
 
-
 use mbtool_core::master::backup::Difference;
 use mbtool_core::model::address::{reference, Table};
 

@@ -15,7 +15,6 @@ pub mod read;
 pub mod scan;
 pub mod serve;
 pub mod sniff;
-mod sniff_json;
 pub mod watch;
 
 use std::fs::File;

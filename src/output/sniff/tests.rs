@@ -1,6 +1,7 @@
+use super::frame_json::{report_fields, seconds};
 use super::*;
-use crate::output::columns::ColumnText;
-use crate::output::sniff_json::report_fields;
+use crate::output::columns::{column, Align, ColumnText, Seconds};
+use crate::output::json::JsonObject;
 use mbtool_core::codec::Mode;
 use mbtool_core::sniff::session::{Filter, Session};
 
@@ -10,7 +11,7 @@ fn sniffed(stream: &[u8], format: Format) -> String {
     let mut records = Vec::new();
     session.push(stream, &mut records);
     session.finish(None, &mut records);
-    let mut writer = SniffWriter::new(format, false);
+    let mut writer = writer(format, false);
     let mut out = Vec::new();
     for record in &records {
         writer.record(&mut out, record).unwrap();
@@ -79,7 +80,7 @@ fn the_table_summary_counts_a_malformed_frame() {
     session.push(&frame, &mut records);
     session.finish(None, &mut records);
     let mut out = Vec::new();
-    SniffWriter::new(Format::Table, false)
+    writer(Format::Table, false)
         .summary(&mut out, session.counts(), None)
         .unwrap();
     let out = String::from_utf8(out).unwrap();

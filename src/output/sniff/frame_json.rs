@@ -5,7 +5,7 @@ use std::io::{self, Write};
 
 use serde::Serialize;
 
-use super::json::JsonObject;
+use crate::output::json::JsonObject;
 use mbtool_core::describe::FrameReport;
 use mbtool_core::sniff::session::{Counts, FrameRecord, TcpPlace};
 use mbtool_core::sniff::tcp::PacketCounts;
