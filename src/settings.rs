@@ -17,6 +17,7 @@ use crate::cli::{
 use crate::output::{colour_wanted, Format, Style};
 use mbtool_core::codec::Mode;
 use mbtool_core::master::failover::{SwitchCondition, SwitchRule};
+use mbtool_core::master::timeouts;
 use mbtool_core::model::address::Numbering;
 use mbtool_core::model::line::Parity;
 use mbtool_core::model::line::{DirectionControl, RtsTiming};
@@ -273,13 +274,10 @@ pub fn resolve(cli: &Cli, origins: &Origins) -> Result<Settings, String> {
     // environment holds them for every command.
     let rs485 = taken.rs485.unwrap_or(&cli.before.master.line.rs485);
     let (direction, direction_typed) = direction(rs485, origins)?;
-    // scan asks many ids that are not there: its timeout is short. A gateway answers 0B
-    // for a device that is silent before its client's own timeout (mbpoll's and most
-    // masters' is 1 s) runs out.
     let default_timeout = match cli.command {
-        Command::Scan(_) => Duration::from_millis(100),
-        Command::Gateway(_) => Duration::from_millis(800),
-        _ => Duration::from_secs(1),
+        Command::Scan(_) => timeouts::SCAN,
+        Command::Gateway(_) => timeouts::GATEWAY,
+        _ => timeouts::ANSWER,
     };
     let timeout = taken.exchange.and_then(|e| e.timeout);
     let format = match taken.format {

@@ -14,6 +14,7 @@ use mbtool::output::{self, colour_wanted};
 use mbtool::settings::Settings;
 use mbtool_core::codec::Mode;
 use mbtool_core::master::scan::{scan, sweep, Probe, Progress, ScanOptions, ScanReport};
+use mbtool_core::master::timeouts;
 use mbtool_core::model::line::LineSettings;
 use mbtool_core::transport::serial;
 use mbtool_core::transport::Endpoint;
@@ -209,16 +210,13 @@ fn summary(report: &ScanReport, place: &Where, elapsed: std::time::Duration) -> 
     )
 }
 
-/// The timeout at a setting of the sweep: as given, or 100 ms after the answer to the
-/// probe has had time to travel at that baud rate (7 bytes for a read, a 32-byte server
-/// id for --probe id), so that slow lines are not taken for silent ones.
+/// The timeout at a setting of the sweep.
 fn timeout_at(settings: &Settings, line: LineSettings, probe: Probe) -> Duration {
-    if settings.connection.timeout_given {
-        return settings.connection.timeout;
-    }
-    let answer_bytes = match probe {
-        Probe::Read => 7,
-        Probe::Id => 32,
-    };
-    settings.connection.timeout + line.character_time() * answer_bytes
+    let connection = &settings.connection;
+    timeouts::at_line(
+        connection.timeout,
+        connection.timeout_given,
+        &line,
+        probe.answer_bytes(),
+    )
 }

@@ -23,6 +23,7 @@ pub mod range;
 pub mod run;
 pub mod scan;
 mod step;
+pub mod timeouts;
 
 /// How the master behaves; the connection options fill it in.
 #[derive(Clone, Copy, Debug)]

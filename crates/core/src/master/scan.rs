@@ -5,6 +5,7 @@
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Duration;
 
+use super::timeouts;
 use super::{BadAnswer, Master, MasterError, Reply};
 use crate::codec::{ExceptionCode, Mode, Request};
 use crate::model::line::Parity;
@@ -19,6 +20,15 @@ pub enum Probe {
 }
 
 impl Probe {
+    /// How many bytes the answer to the probe takes on a line: 7 for a read, a 32-byte
+    /// server id.
+    pub fn answer_bytes(self) -> u32 {
+        match self {
+            Probe::Read => 7,
+            Probe::Id => 32,
+        }
+    }
+
     fn request(self) -> Request {
         match self {
             Probe::Read => Request::ReadHoldingRegisters {
@@ -136,26 +146,6 @@ enum Outcome {
 /// by another slave's late answer.
 const ASK_AGAIN: usize = 2;
 
-/// How long the first id that times out over TCP is given when asked again: a gateway
-/// waits this long or less for a unit id behind it that does not answer (mbusd and
-/// mbtool's gateway 1 s, most others less).
-const GATEWAY_PATIENCE: Duration = Duration::from_secs(3);
-
-/// How long a slave heard answering late is given when it is asked again: ten timeouts,
-/// and a second at least.
-fn late_timeout(timeout: Duration) -> Duration {
-    (timeout * 10).max(Duration::from_secs(1))
-}
-
-/// How long the line must be quiet after a scan whose last id was silent before it ends:
-/// three timeouts and half a second at least (a late answer is late by a fraction of a
-/// second: a slow gateway or device), and with a long timeout one second more than it.
-fn straggler_wait(timeout: Duration) -> Duration {
-    (timeout * 3)
-        .max(Duration::from_millis(500))
-        .min(timeout + Duration::from_secs(1))
-}
-
 fn probe(master: &mut Master, slave: u8, request: &Request) -> Result<Outcome, MasterError> {
     Ok(match master.transact(slave, request) {
         Ok(Reply::Response(_)) => Outcome::Present(Answer::Ok),
@@ -198,7 +188,7 @@ fn ask(
             Outcome::Present(_) | Outcome::Absent => break,
         }
         let quiet = master.timeout();
-        late.extend(master.wait_quiet(quiet, late_timeout(quiet))?);
+        late.extend(master.wait_quiet(quiet, timeouts::late(quiet))?);
         outcome = probe(master, slave, request)?;
     }
     Ok(match outcome {
@@ -213,7 +203,7 @@ fn ask(
 /// Asks a slave heard answering late once more, waiting long enough for it.
 fn ask_late(master: &mut Master, slave: u8, request: &Request) -> Result<Outcome, MasterError> {
     let timeout = master.timeout();
-    master.set_timeout(late_timeout(timeout));
+    master.set_timeout(timeouts::late(timeout));
     let outcome = probe(master, slave, request);
     master.set_timeout(timeout);
     outcome
@@ -298,7 +288,7 @@ where
                     gateway_asked = true;
                     report.requests += 1;
                     let timeout = master.timeout();
-                    master.set_timeout(timeout.max(GATEWAY_PATIENCE));
+                    master.set_timeout(timeout.max(timeouts::GATEWAY_PATIENCE));
                     let again = probe(&mut master, *slave, &request);
                     master.set_timeout(timeout);
                     match again {
@@ -348,7 +338,7 @@ where
         // The last id's answer may still be on its way when it was silent; when it
         // answered, nothing is awaited.
         if probing && last_silent {
-            let quiet = straggler_wait(master.timeout());
+            let quiet = timeouts::straggler(master.timeout());
             if let Ok(stragglers) = master.wait_quiet(quiet, quiet) {
                 note_late(
                     &mut master,
