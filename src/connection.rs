@@ -6,20 +6,16 @@ use crate::error::{Error, Result};
 use crate::settings::ConnectionSettings;
 use mbtool_core::codec::{ExceptionCode, Mode};
 use mbtool_core::master::failover::{Failover, PathName, Switch, SwitchRule};
-use mbtool_core::master::{Master, MasterOptions};
+use mbtool_core::master::open::{self, PathSettings};
+use mbtool_core::master::Master;
 use mbtool_core::model::line::DirectionControl;
 use mbtool_core::model::line::{LineSettings, Parity};
 use mbtool_core::model::map::MapConnection;
 use mbtool_core::sniff::replay::TimingFile;
 use mbtool_core::sniff::timing;
 use mbtool_core::transport::serial::Serial;
-use mbtool_core::transport::tcp::Tcp;
-use mbtool_core::transport::tls::{ClientTls, Tls, TlsSession};
-use mbtool_core::transport::{Endpoint, Transport};
-
-/// After a broadcast, the slaves need time to act before the next request (the Modbus
-/// serial line specification suggests 100-200 ms).
-const BROADCAST_TURNAROUND: std::time::Duration = std::time::Duration::from_millis(100);
+use mbtool_core::transport::tls::{ClientTls, TlsSession};
+use mbtool_core::transport::Endpoint;
 
 /// The endpoint of `--port`; a missing port says what to give.
 pub fn endpoint(options: &ConnectionSettings) -> Result<Endpoint> {
@@ -155,62 +151,59 @@ pub fn direction_needs_serial(options: &ConnectionSettings, endpoint: &Endpoint)
 /// Opens the serial port at `path` with `line`; a port that cannot switch its RS-485
 /// transceiver as asked says what to try instead.
 pub fn open_serial(path: &str, line: &LineSettings) -> Result<Serial> {
-    Serial::open(path, line).map_err(|e| {
-        if e.kind() != io::ErrorKind::Unsupported {
-            return Error::Io(with_ports_here(path, e));
-        }
-        let hint = match line.direction {
-            DirectionControl::Kernel(_) => "try --rts-toggle",
-            _ => "try --rs485, or an adapter that switches its transceiver itself",
-        };
-        Error::Io(io::Error::new(e.kind(), format!("{e}: {hint}")))
-    })
+    Serial::open(path, line).map_err(|e| serial_failure(path, line, e))
 }
 
-/// Opens the transport of `endpoint`, a serial line with the options' settings.
-pub fn open(
-    options: &ConnectionSettings,
-    endpoint: &Endpoint,
-    mode: Mode,
-) -> Result<Box<dyn Transport>> {
-    open_at(options, endpoint, mode, &line_settings(options, mode))
+/// A serial port that did not open, told with what to try: the ports that are here, who
+/// holds it, or how else to switch its transceiver.
+fn serial_failure(path: &str, line: &LineSettings, e: io::Error) -> Error {
+    if e.kind() != io::ErrorKind::Unsupported {
+        return Error::Io(with_ports_here(path, e));
+    }
+    let hint = match line.direction {
+        DirectionControl::Kernel(_) => "try --rts-toggle",
+        _ => "try --rs485, or an adapter that switches its transceiver itself",
+    };
+    Error::Io(io::Error::new(e.kind(), format!("{e}: {hint}")))
 }
 
-/// Opens the transport of `endpoint`, a serial line with `line`.
-pub fn open_at(
+/// What `open` (the core's transport or master) gives on the path of the options to
+/// `endpoint`: its RS-485 and TLS options checked first (the certificates read before
+/// anything is sent), a failure told with what to try, the TLS session told with `-v`.
+fn opened<T>(
     options: &ConnectionSettings,
     endpoint: &Endpoint,
     mode: Mode,
     line: &LineSettings,
-) -> Result<Box<dyn Transport>> {
+    patience: Patience,
+    open: impl FnOnce(&PathSettings) -> io::Result<(T, Option<TlsSession>)>,
+) -> Result<T> {
     direction_needs_serial(options, endpoint)?;
-    let timeout = options.timeout;
-    let opened: io::Result<Box<dyn Transport>> = match endpoint {
-        Endpoint::Serial(path) => return Ok(Box::new(open_serial(path, line)?)),
-        Endpoint::Tcp { host, port } => {
-            Tcp::connect(host, *port, timeout, false).map(|t| Box::new(t) as Box<dyn Transport>)
-        }
-        Endpoint::Tls { host, port } => {
-            // The files are read and checked before anything is sent.
-            let tls = ClientTls::new(&options.tls)?;
-            Tls::connect(host, *port, timeout, &tls).map(|stream| {
-                if let (true, Some(session)) = (options.tell_session, stream.session()) {
-                    tell_session(session);
-                }
-                Box::new(stream) as Box<dyn Transport>
-            })
-        }
-        Endpoint::RtuOverTcp { host, port } => {
-            Tcp::connect(host, *port, timeout, true).map(|t| Box::new(t) as Box<dyn Transport>)
-        }
-        Endpoint::Sim => Ok(Box::new(mbtool_core::slave::sim::SimTransport::new(mode))),
+    let tls = match endpoint {
+        Endpoint::Tls { .. } => Some(ClientTls::new(&options.tls)?),
+        _ => None,
     };
-    opened.map_err(|e| {
-        Error::Io(io::Error::new(
+    let path = PathSettings {
+        endpoint,
+        mode,
+        line: *line,
+        timeout: patience.timeout,
+        retries: patience.retries,
+        retry_non_idempotent: options.retry_non_idempotent,
+        frame_gap: options.frame_gap,
+        tls: tls.as_ref(),
+    };
+    let (opened, session) = open(&path).map_err(|e| match endpoint {
+        Endpoint::Serial(device) => serial_failure(device, line, e),
+        _ => Error::Io(io::Error::new(
             e.kind(),
             format!("cannot connect to {endpoint}: {e}"),
-        ))
-    })
+        )),
+    })?;
+    if let (true, Some(session)) = (options.tell_session, session) {
+        tell_session(&session);
+    }
+    Ok(opened)
 }
 
 /// `-v` on a TLS connection: what was agreed, whom it is with, and the role sent.
@@ -406,30 +399,7 @@ pub fn master_at(
     line: &LineSettings,
     answer: Patience,
 ) -> Result<Master> {
-    let transport = open_at(options, endpoint, mode, line)?;
-    let serial_line = matches!(endpoint, Endpoint::Serial(_) | Endpoint::RtuOverTcp { .. });
-    let gap = options.frame_gap.unwrap_or_else(|| match mode {
-        Mode::Rtu if serial_line => line.frame_gap(),
-        _ => std::time::Duration::ZERO,
-    });
-    let (character, silence) = if serial_line {
-        (line.character_time(), line.frame_gap())
-    } else {
-        (std::time::Duration::ZERO, std::time::Duration::ZERO)
-    };
-    Ok(Master::new(
-        transport,
-        MasterOptions {
-            mode,
-            timeout: answer.timeout,
-            retries: answer.retries,
-            retry_non_idempotent: options.retry_non_idempotent,
-            frame_gap: gap,
-            character,
-            silence,
-            turnaround: BROADCAST_TURNAROUND,
-        },
-    ))
+    opened(options, endpoint, mode, line, answer, open::master)
 }
 
 /// A master on the port of the options, with what a timeout on it should tell.

@@ -17,6 +17,7 @@ pub mod backup;
 pub mod device;
 pub mod failover;
 pub mod map;
+pub mod open;
 pub mod plan;
 pub mod poll;
 pub mod range;
