@@ -10,6 +10,7 @@ use mbtool_core::model::address::AddressError;
 use mbtool_core::model::map::MapError;
 use mbtool_core::slave::datafile::DataFileError;
 use mbtool_core::sniff::replay::{ReplayError, TimingFault};
+use mbtool_core::sniff::timing::TimingError;
 use mbtool_core::transport::endpoint::EndpointError;
 use mbtool_core::transport::tls::TlsError;
 
@@ -195,18 +196,18 @@ pub fn replay_failed(error: ReplayError) -> anyhow::Error {
         ReplayError::Timing { path, fault } => {
             let path = path.display();
             match fault {
-                TimingFault::Io(error) => {
+                TimingFault::Read(TimingError::Io(error)) => {
                     anyhow::Error::new(error).context(format!("cannot read {path}"))
                 }
                 TimingFault::NotAFile => {
                     Error::usage(format!("{path} is not a file, so no .timing file: {move_away}"))
                         .into()
                 }
-                TimingFault::NotText => {
+                TimingFault::Read(TimingError::NotText) => {
                     Error::usage(format!("{path} is not text, so no .timing file: {move_away}"))
                         .into()
                 }
-                TimingFault::Line { line, message } => Error::usage(format!(
+                TimingFault::Read(TimingError::Line { line, message }) => Error::usage(format!(
                     "{path}:{line}: {message}; move the file away to replay without timing"
                 ))
                 .into(),

@@ -28,27 +28,29 @@ fn main() -> ExitCode {
 /// becomes one `mbtool: ` line. Both end with exit status 2.
 fn parse() -> Result<(Settings, Command), u8> {
     let mut definition = mbtool::cli::definition();
-    let (cli, origins) = settings::read(&mut definition, std::env::args_os()).map_err(|error| {
-        match error.kind() {
-            ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match error.print() {
-                // `mbtool --help | head -3` is the reader's choice.
-                Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
-                    mbtool::note!("mbtool: cannot write standard output: {e}");
-                    1
+    let (mut cli, origins) =
+        settings::read(&mut definition, std::env::args_os()).map_err(|error| {
+            match error.kind() {
+                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match error.print() {
+                    // `mbtool --help | head -3` is the reader's choice.
+                    Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
+                        mbtool::note!("mbtool: cannot write standard output: {e}");
+                        1
+                    }
+                    _ => 0,
+                },
+                ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+                | ErrorKind::MissingSubcommand => {
+                    mbtool::note!("{}", mbtool::docs::short_usage(&definition));
+                    2
                 }
-                _ => 0,
-            },
-            ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-                mbtool::note!("{}", mbtool::docs::short_usage(&definition));
-                2
+                _ => {
+                    mbtool::note!("mbtool: {}", usage_error(&error, &definition));
+                    2
+                }
             }
-            _ => {
-                mbtool::note!("mbtool: {}", usage_error(&error, &definition));
-                2
-            }
-        }
-    })?;
-    match settings::resolve(&cli, &origins) {
+        })?;
+    match settings::resolve(&mut cli, &origins) {
         Ok(settings) => Ok((settings, cli.command)),
         Err(message) => {
             mbtool::note!("mbtool: {message}");

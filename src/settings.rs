@@ -261,11 +261,18 @@ pub fn refusal(path: &str, option: &clap::Arg) -> String {
 }
 
 /// The settings of a parsed command line, or the one-line message that refuses it.
-pub fn resolve(cli: &Cli, origins: &Origins) -> Result<Settings, String> {
+pub fn resolve(cli: &mut Cli, origins: &Origins) -> Result<Settings, String> {
+    let scan = matches!(cli.command, Command::Scan(_));
+    let default_timeout = match cli.command {
+        Command::Scan(_) => timeouts::SCAN,
+        Command::Gateway(_) => timeouts::GATEWAY,
+        _ => timeouts::ANSWER,
+    };
+    let command: &dyn Options = cli.command.options_mut();
     let mut taken = Taken::default();
-    cli.command.options().gather(&mut taken);
+    command.gather(&mut taken);
     if let Some(message) = untaken_option(origins)
-        .or_else(|| sweep_outside_scan(cli, &taken, origins))
+        .or_else(|| sweep_outside_scan(scan, &taken, origins))
         .or_else(|| output_problem(&taken))
     {
         return Err(message);
@@ -274,11 +281,6 @@ pub fn resolve(cli: &Cli, origins: &Origins) -> Result<Settings, String> {
     // environment holds them for every command.
     let rs485 = taken.rs485.unwrap_or(&cli.before.master.line.rs485);
     let (direction, direction_typed) = direction(rs485, origins)?;
-    let default_timeout = match cli.command {
-        Command::Scan(_) => timeouts::SCAN,
-        Command::Gateway(_) => timeouts::GATEWAY,
-        _ => timeouts::ANSWER,
-    };
     let timeout = taken.exchange.and_then(|e| e.timeout);
     let format = match taken.format {
         Some(FormatArgs { json: true, .. }) => Format::Json,
@@ -502,11 +504,11 @@ fn output_problem(taken: &Taken) -> Option<String> {
 /// A list of baud rates or parities typed for a command that takes one, as a one-line
 /// message. A list from the environment (MBTOOL_BAUD=9600,19200, set for scans) gives
 /// the other commands its first value.
-fn sweep_outside_scan(cli: &Cli, taken: &Taken, origins: &Origins) -> Option<String> {
+fn sweep_outside_scan(scan: bool, taken: &Taken, origins: &Origins) -> Option<String> {
     let serial = taken.serial?;
     let typed = |id: &str| origins.typed(id);
     let several = match (serial.baud.len(), serial.parity.len()) {
-        _ if matches!(cli.command, Command::Scan(_)) => return None,
+        _ if scan => return None,
         (2.., _) if typed("baud") => "baud rates",
         (_, 2..) if typed("parity") => "parities",
         _ => return None,

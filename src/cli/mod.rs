@@ -136,26 +136,6 @@ pub enum Command {
 
 impl Command {
     /// The command's arguments, as the groups of options they hold.
-    pub fn options(&self) -> &dyn Options {
-        match self {
-            Command::Request(request) => request.options(),
-            Command::Encode { request, .. } => request.options(),
-            Command::Scan(args) => args,
-            Command::Watch(args) => args,
-            Command::Info(args) => args,
-            Command::Diag(args) => args,
-            Command::Dump(args) => args,
-            Command::Restore(args) => args,
-            Command::Decode(args) => args,
-            Command::Sniff(args) => args,
-            Command::Serve(args) => args,
-            Command::Gateway(args) => args,
-            Command::Ports(args) => args,
-            Command::Generate(args) => args,
-        }
-    }
-
-    /// [`Command::options`], to be changed.
     pub fn options_mut(&mut self) -> &mut dyn Options {
         match self {
             Command::Request(request) => request.options_mut(),

@@ -230,24 +230,6 @@ pub enum RequestCommand<W: Wire> {
 
 impl<W: Wire> RequestCommand<W> {
     /// The command's arguments, as the groups of options they hold.
-    pub fn options(&self) -> &dyn Options {
-        use RequestCommand as C;
-        match self {
-            C::ReadCoils(r) => r,
-            C::ReadInputs(r) => r,
-            C::ReadHolding(r) => r,
-            C::ReadInputRegisters(r) => r,
-            C::Read(r) => r,
-            C::WriteCoil(r) => r,
-            C::WriteCoils(r) => r,
-            C::WriteRegister(r) => r,
-            C::WriteRegisters(r) => r,
-            C::Write(r) => r,
-            C::Raw(r) => r,
-        }
-    }
-
-    /// [`RequestCommand::options`], to be changed.
     pub fn options_mut(&mut self) -> &mut dyn Options {
         use RequestCommand as C;
         match self {

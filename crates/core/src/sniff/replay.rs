@@ -46,23 +46,12 @@ pub enum ReplayError {
 /// What is wrong with a timing file.
 #[derive(Debug, thiserror::Error)]
 pub enum TimingFault {
-    /// It could not be read.
-    #[error("cannot read it: {0}")]
-    Io(io::Error),
     /// A directory or a FIFO of the name (a FIFO would hold the replay until written to).
     #[error("not a file")]
     NotAFile,
-    /// Not text.
-    #[error("not text")]
-    NotText,
-    /// A line that is no event, or does not follow from those before it.
-    #[error("line {line}: {message}")]
-    Line {
-        /// Its number, from 1.
-        line: usize,
-        /// What is wrong with it.
-        message: String,
-    },
+    /// It could not be read, or what it holds is no timing.
+    #[error(transparent)]
+    Read(#[from] timing::TimingError),
 }
 
 /// A capture's timing file, read through once when opened: a replay must not show frames
@@ -87,7 +76,7 @@ impl TimingFile {
             fault,
         };
         if !std::fs::metadata(&path)
-            .map_err(|e| fault(TimingFault::Io(e)))?
+            .map_err(|e| fault(TimingFault::Read(timing::TimingError::Io(e))))?
             .is_file()
         {
             return Err(fault(TimingFault::NotAFile));
@@ -127,7 +116,8 @@ impl TimingFile {
     }
 
     fn open(&self) -> Result<timing::Reader<io::BufReader<File>>, ReplayError> {
-        let file = File::open(&self.path).map_err(|e| self.fault(TimingFault::Io(e)))?;
+        let file = File::open(&self.path)
+            .map_err(|e| self.fault(TimingFault::Read(timing::TimingError::Io(e))))?;
         Ok(timing::Reader::new(
             io::BufReader::new(file),
             self.capture_len,
@@ -145,13 +135,9 @@ impl TimingFile {
         &self,
         events: &mut timing::Reader<io::BufReader<File>>,
     ) -> Result<Option<timing::Event>, ReplayError> {
-        events.next_event().map_err(|error| {
-            self.fault(match error {
-                timing::TimingError::Io(error) => TimingFault::Io(error),
-                timing::TimingError::NotText => TimingFault::NotText,
-                timing::TimingError::Line { line, message } => TimingFault::Line { line, message },
-            })
-        })
+        events
+            .next_event()
+            .map_err(|error| self.fault(TimingFault::Read(error)))
     }
 }
 
