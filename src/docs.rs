@@ -22,17 +22,25 @@ const EXIT_STATUS: &[(&str, &str)] = &[
     ("10+N", "the slave answered with Modbus exception N: 11 illegal function, 12 illegal data address, 13 illegal data value, 14 slave device failure, ... up to 21"),
 ];
 
-const ENVIRONMENT: &[(&str, &str)] = &[
-    ("MBTOOL_PORT", "the default for --port"),
-    ("MBTOOL_MODE", "the default for --mode"),
-    ("MBTOOL_BAUD", "the default for --baud"),
-    ("MBTOOL_PARITY", "the default for --parity"),
-    ("MBTOOL_DATA_BITS", "the default for --data-bits"),
-    ("MBTOOL_STOP_BITS", "the default for --stop-bits"),
-    ("MBTOOL_TIMEOUT", "the default for --timeout"),
-    ("MBTOOL_RETRIES", "the default for --retries"),
-    ("NO_COLOR", "when set and not empty, no colour is used"),
-];
+/// The variables of the environment the tool reads: each option's that has one, as the
+/// definition names it, and NO_COLOR.
+fn environment(command: &clap::Command) -> Vec<(String, String)> {
+    let mut variables: Vec<(String, String)> = command
+        .get_arguments()
+        .filter_map(|arg| {
+            let name = arg.get_env()?.to_string_lossy().into_owned();
+            let option = arg
+                .get_long()
+                .map_or_else(|| arg.get_id().to_string(), |l| format!("--{l}"));
+            Some((name, format!("the default for {option}")))
+        })
+        .collect();
+    variables.push((
+        "NO_COLOR".into(),
+        "when set and not empty, no colour is used".into(),
+    ));
+    variables
+}
 
 /// What `mbtool` alone prints: the usage line, the commands, and where to go next, as
 /// `git` does.
@@ -142,7 +150,12 @@ fn render_man(
     man.render_options_section(out)?;
     if top {
         man.render_subcommands_section(out)?;
-        roff_list(out, "ENVIRONMENT", ENVIRONMENT)?;
+        let variables = environment(man_command);
+        let items: Vec<(&str, &str)> = variables
+            .iter()
+            .map(|(name, text)| (name.as_str(), text.as_str()))
+            .collect();
+        roff_list(out, "ENVIRONMENT", &items)?;
     }
     roff_list(out, "EXIT STATUS", EXIT_STATUS)?;
     let examples = examples_of(name);

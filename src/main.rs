@@ -111,12 +111,22 @@ fn untaken(error: &clap::Error, command: &clap::Command, subcommand: &str) -> Op
     if error.kind() != ErrorKind::UnknownArgument || subcommand.is_empty() {
         return None;
     }
-    if mbpoll_habit(error).is_some() {
-        return None;
-    }
     let Some(ContextValue::String(typed)) = error.get(ContextKind::InvalidArg) else {
         return None;
     };
+    // mbpoll's -t 4 (a table, not a value type) is told as the habit it is; mbtool's -t
+    // with a value type, as an option the command does not take.
+    let mbpoll_table = typed == "-t"
+        && words()
+            .skip_while(|w| w != "-t")
+            .nth(1)
+            .is_some_and(|value| {
+                let table = value.split(':').next().unwrap_or_default();
+                ["0", "1", "3", "4"].contains(&table)
+            });
+    if mbpoll_table || (typed != "-t" && mbpoll_habit(error).is_some()) {
+        return None;
+    }
     let word = typed.split('=').next().unwrap_or(typed);
     // After `--`, a word that looks like an option is an argument.
     if !words()

@@ -326,10 +326,11 @@ fn examples_help(examples: &[Example]) -> String {
 
 /// `command` with the examples of each `--help`.
 pub fn with_examples(command: clap::Command) -> clap::Command {
-    let mut command = command.after_long_help(examples_help(examples_of("")));
-    for (name, examples) in EXAMPLES.iter().filter(|(name, _)| !name.is_empty()) {
-        let help = examples_help(examples);
-        command = command.mut_subcommand(*name, |sub| sub.after_long_help(help));
-    }
+    // Each command changed where it stands: the commands keep their order.
     command
+        .after_long_help(examples_help(examples_of("")))
+        .mut_subcommands(|sub| match examples_of(sub.get_name()) {
+            [] => sub,
+            examples => sub.after_long_help(examples_help(examples)),
+        })
 }

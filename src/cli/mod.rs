@@ -104,7 +104,7 @@ pub enum Command {
     /// Print the frame a request command would send
     #[command(
         long_about = ENCODE_ABOUT,
-        after_help = more_in_long_help(&[&[left_out::ADDRESSES]])
+        after_help = more_in_long_help(&[&[left_out::CONNECTION, left_out::ADDRESSES]])
     )]
     Encode {
         #[command(flatten)]
@@ -156,10 +156,16 @@ impl Command {
     }
 }
 
-/// The whole command line: [`Cli`], its options typed before the command's name hidden
-/// from help (each command's help shows those it takes).
+/// The whole command line: [`Cli`], the options that may be typed before the command's
+/// name left out of `mbtool -h` (each command's own help shows those it takes), and
+/// listed in `mbtool --help` and the man page.
 pub fn definition() -> clap::Command {
-    let command = Cli::command().mut_args(|arg| arg.hide(true));
+    let command = Cli::command()
+        .mut_args(|arg| arg.hide_short_help(true))
+        .after_help(
+            "A command's options may be typed before its name too; 'mbtool --help' lists them \
+             all, 'mbtool <COMMAND> -h' those the command takes.",
+        );
     examples::with_examples(command)
 }
 

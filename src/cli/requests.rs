@@ -316,6 +316,8 @@ pub trait Words: Clone + std::fmt::Debug + Send + Sync + 'static {
     const ADDRESS: &'static str;
     /// The first address, in `--help`.
     const ADDRESS_LONG: &'static str;
+    /// The first address of a write, in `--help`.
+    const WRITE_ADDRESS_LONG: &'static str = Self::ADDRESS_LONG;
     /// How many to read.
     const COUNT: &'static str;
     /// The values to write.
@@ -331,7 +333,10 @@ impl Words for Coils {
     const ADDRESS: &'static str = "First coil: 000020, 19, or a range 000020-000056";
     const ADDRESS_LONG: &'static str = "First coil: a reference (000020) or a number (19; \
         counted from 0, or from 1 with --address-base 1), or an inclusive range \
-        (000020-000056); for a write, a range that holds exactly the values given";
+        (000020-000056)";
+    const WRITE_ADDRESS_LONG: &'static str = "First coil: a reference (000020) or a number \
+        (19; counted from 0, or from 1 with --address-base 1), or a range that holds exactly \
+        the values given";
     const COUNT: &'static str = "How many coils to read [default: 1]";
     const VALUES: &'static str = "Each 0/1/on/off, or one bit string such as 10110";
 }
@@ -375,8 +380,10 @@ impl Words for HoldingRegisters {
         "First holding register: 400108, 107, a range 400108-400110, or a bit 400108.05";
     const ADDRESS_LONG: &'static str = "First holding register: a reference (400108), a \
         number (107, 0x6B; counted from 0, or from 1 with --address-base 1), an inclusive \
-        range (400108-400110), or a bit of a register (400108.05), COUNT then counting bits; \
-        for a write, a range that holds exactly the values given";
+        range (400108-400110), or a bit of a register (400108.05), COUNT then counting bits";
+    const WRITE_ADDRESS_LONG: &'static str = "First holding register: a reference (400002) \
+        or a number (1; counted from 0, or from 1 with --address-base 1), or a range that \
+        holds exactly the values given";
     const COUNT: &'static str = "How many registers to read [default: 1]; with --type wider \
         than 16 bits, how many values of that type";
     const VALUES: &'static str = "The values, each converted by --type";
@@ -421,7 +428,7 @@ pub struct WriteArgs<T: Words> {
     /// Slave address: 1-247, or 0 to broadcast
     #[arg(index = 1)]
     pub slave: String,
-    #[arg(index = 2, help = T::ADDRESS, long_help = T::ADDRESS_LONG)]
+    #[arg(index = 2, help = T::ADDRESS, long_help = T::WRITE_ADDRESS_LONG)]
     pub address: String,
     #[arg(index = 3, help = T::VALUES, required = true, allow_negative_numbers = true)]
     pub values: Vec<String>,
