@@ -263,25 +263,6 @@ pub fn tried(
     }
 }
 
-/// A master on `endpoint`, framing in `mode`, as the options resolved them; with a
-/// `--secondary-port`, one that changes paths as `--switch-on` says.
-/// A command that ends at a failure (a dump, a single read) has a failed request asked
-/// again on its path until the rule decides.
-pub fn master(options: &ConnectionSettings, endpoint: &Endpoint, mode: Mode) -> Result<Master> {
-    open_master(options, endpoint, mode, None, true)
-}
-
-/// [`master`] for a poll, which counts a failure and asks again at its next interval,
-/// starting on the path `first` where there are two (the primary if `None`).
-pub fn master_on(
-    options: &ConnectionSettings,
-    endpoint: &Endpoint,
-    mode: Mode,
-    first: Option<PathName>,
-) -> Result<Master> {
-    open_master(options, endpoint, mode, first, false)
-}
-
 fn open_master(
     options: &ConnectionSettings,
     endpoint: &Endpoint,
@@ -291,10 +272,10 @@ fn open_master(
 ) -> Result<Master> {
     match secondary_target(options)? {
         None => single_master(options, endpoint, mode),
-        Some((secondary, target)) => {
+        Some((secondary, secondary_endpoint, secondary_mode)) => {
             let paths = [
                 (options.clone(), endpoint.clone(), mode),
-                (secondary.clone(), target.endpoint, target.mode),
+                (secondary.clone(), secondary_endpoint, secondary_mode),
             ];
             let first = first.unwrap_or(PathName::Primary);
             let master = redundant_master(paths, options.switch.clone(), first)?;
@@ -318,18 +299,10 @@ fn single_master(options: &ConnectionSettings, endpoint: &Endpoint, mode: Mode) 
     )
 }
 
-/// Why the secondary path cannot be opened now, if it cannot: for a long command to say
-/// at its start that the path it may need is not there (a typo, an unplugged adapter),
-/// rather than when it is needed.
-pub fn secondary_unavailable(options: &ConnectionSettings) -> Option<String> {
-    let (secondary, target) = secondary_target(options).ok()??;
-    single_master(secondary, &target.endpoint, target.mode)
-        .err()
-        .map(|error| error.to_string())
-}
-
 /// The secondary path's settings and where they point, checked as `--port` is.
-fn secondary_target(options: &ConnectionSettings) -> Result<Option<(&ConnectionSettings, Target)>> {
+fn secondary_target(
+    options: &ConnectionSettings,
+) -> Result<Option<(&ConnectionSettings, Endpoint, Mode)>> {
     let Some(secondary) = options.secondary.as_deref() else {
         return Ok(None);
     };
@@ -338,7 +311,7 @@ fn secondary_target(options: &ConnectionSettings) -> Result<Option<(&ConnectionS
         Endpoint::parse(port).map_err(|e| Error::usage(format!("--secondary-port {port}: {e}")))?;
     let mode = mode(secondary, Some(&endpoint), Role::Master)
         .map_err(|e| Error::usage(format!("--secondary-port {port}: {e}")))?;
-    Ok(Some((secondary, Target { endpoint, mode })))
+    Ok(Some((secondary, endpoint, mode)))
 }
 
 /// A master on the path `first` of the two `paths`, or on the other where it cannot be
@@ -402,81 +375,114 @@ pub fn master_at(
     opened(options, endpoint, mode, line, answer, open::master)
 }
 
-/// A master on the port of the options, with what a timeout on it should tell.
-pub struct Connection {
-    pub master: Master,
+/// The way to the device the options name, built once from them: its endpoint and
+/// framing checked (a second path's too) before anything is opened, and everything a
+/// command opens on it and tells of it.
+#[derive(Clone)]
+pub struct Connector<'a> {
+    options: &'a ConnectionSettings,
     pub endpoint: Endpoint,
     pub mode: Mode,
 }
 
-/// Where the options point, checked without opening anything: the endpoint of `--port`
-/// and its framing.
-pub struct Target {
-    pub endpoint: Endpoint,
-    pub mode: Mode,
-}
+impl<'a> Connector<'a> {
+    /// The connector of `options`: the endpoint of `--port` and its framing.
+    pub fn new(options: &'a ConnectionSettings) -> Result<Connector<'a>> {
+        let endpoint = endpoint(options)?;
+        let mode = mode(options, Some(&endpoint), Role::Master)?;
+        secondary_target(options)?;
+        Ok(Connector {
+            options,
+            endpoint,
+            mode,
+        })
+    }
 
-/// The target of the options; a secondary path is checked too, before anything is sent.
-pub fn target(options: &ConnectionSettings) -> Result<Target> {
-    let endpoint = endpoint(options)?;
-    let mode = mode(options, Some(&endpoint), Role::Master)?;
-    secondary_target(options)?;
-    Ok(Target { endpoint, mode })
-}
+    /// The connector of `options` to `endpoint`, framed in `mode`, as another command's
+    /// line (the gateway's) is reached.
+    pub fn at(options: &'a ConnectionSettings, endpoint: Endpoint, mode: Mode) -> Connector<'a> {
+        Connector {
+            options,
+            endpoint,
+            mode,
+        }
+    }
 
-impl Target {
     /// Whether slave ids are TCP unit ids here.
     pub fn is_tcp(&self) -> bool {
         self.mode == Mode::Tcp
     }
 
-    /// A master on the target.
-    pub fn connect(self, options: &ConnectionSettings) -> Result<Connection> {
-        let master = master(options, &self.endpoint, self.mode)?;
+    /// A master on the device, for a command that ends at a failure: a failed request is
+    /// asked again on its path until the rule of a second path decides.
+    pub fn connect(&self) -> Result<Connection<'a>> {
+        let master = open_master(self.options, &self.endpoint, self.mode, None, true)?;
         Ok(Connection {
             master,
-            endpoint: self.endpoint,
-            mode: self.mode,
+            connector: self.clone(),
         })
+    }
+
+    /// A master for a poll, which counts a failure and asks again at its next interval,
+    /// starting on the path `first` where there are two (the primary if `None`).
+    pub fn master_on(&self, first: Option<PathName>) -> Result<Master> {
+        open_master(self.options, &self.endpoint, self.mode, first, false)
+    }
+
+    /// Where and how the master on `path` asked, for a failure's message, and what
+    /// usually causes one there.
+    pub fn tried_on(&self, path: Option<PathName>) -> (String, &'static str) {
+        tried_on(self.options, &self.endpoint, self.mode, path)
+    }
+
+    /// Why the secondary path cannot be opened now, if it cannot: for a long command to
+    /// say at its start that the path it may need is not there (a typo, an unplugged
+    /// adapter), rather than when it is needed.
+    pub fn secondary_unavailable(&self) -> Option<String> {
+        let (secondary, endpoint, mode) = secondary_target(self.options).ok()??;
+        single_master(secondary, &endpoint, mode)
+            .err()
+            .map(|error| error.to_string())
     }
 }
 
-/// Connects as the options say.
-pub fn connect(options: &ConnectionSettings) -> Result<Connection> {
-    target(options)?.connect(options)
+/// A master on the device, with what a failure on it should tell.
+pub struct Connection<'a> {
+    pub master: Master,
+    pub connector: Connector<'a>,
 }
 
-impl Connection {
+impl Connection<'_> {
     /// `error`, a timeout told with where and how the master asked and what usually
-    /// causes one there.
-    /// Exception 01 over TLS is told as what it may be: the server's role check.
-    pub fn explain(&self, options: &ConnectionSettings, error: Error) -> Error {
+    /// causes one there. Exception 01 over TLS is told as what it may be: the server's
+    /// role check.
+    pub fn explain(&self, error: Error) -> Error {
         if let (
             Error::Exception {
                 code: ExceptionCode::ILLEGAL_FUNCTION,
                 ..
             },
             Endpoint::Tls { .. },
-        ) = (&error, &self.endpoint)
+        ) = (&error, &self.connector.endpoint)
         {
             return Error::MaybeRole(Box::new(error));
         }
-        let (tried, advice) = tried_on(options, &self.endpoint, self.mode, self.master.path());
+        let (tried, advice) = self.connector.tried_on(self.master.path());
         error.tried(tried, advice)
     }
 }
 
 /// [`tried`] on the path `path` of the options, where there are two: the secondary's
 /// port and line when the master is there.
-pub fn tried_on(
+fn tried_on(
     options: &ConnectionSettings,
     endpoint: &Endpoint,
     mode: Mode,
     path: Option<PathName>,
 ) -> (String, &'static str) {
     match (path, secondary_target(options)) {
-        (Some(PathName::Secondary), Ok(Some((secondary, target)))) => {
-            tried(secondary, &target.endpoint, target.mode)
+        (Some(PathName::Secondary), Ok(Some((secondary, endpoint, mode)))) => {
+            tried(secondary, &endpoint, mode)
         }
         _ => tried(options, endpoint, mode),
     }

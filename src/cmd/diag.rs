@@ -24,7 +24,7 @@ pub fn run(settings: &Settings, args: &DiagArgs) -> Result<u8> {
     // A device that does not answer at all fails here, with what was tried.
     let round_trips = round_trips(master, slave, count)
         .map(Outcome::from)
-        .map_err(|e| connection.explain(&settings.connection, e.into()))?;
+        .map_err(|e| connection.explain(e.into()))?;
     let master = &mut connection.master;
     let report = (|| {
         Ok(DiagReport {
@@ -38,9 +38,7 @@ pub fn run(settings: &Settings, args: &DiagArgs) -> Result<u8> {
             },
         })
     })()
-    .map_err(|e: mbtool_core::master::MasterError| {
-        connection.explain(&settings.connection, e.into())
-    })?;
+    .map_err(|e: mbtool_core::master::MasterError| connection.explain(e.into()))?;
     // A device that refuses every diagnostic (or a gateway with nothing behind that id)
     // told nothing of its health: that is its answer.
     if let Outcome::Refused(code) = report.round_trips {

@@ -5,7 +5,7 @@ use std::io::Write;
 use anyhow::{Context, Result};
 
 use mbtool::cli::DumpArgs;
-use mbtool::connection;
+
 use mbtool::error::Error;
 use mbtool::output::{self, plural};
 use mbtool::settings::Settings;
@@ -46,7 +46,7 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
         &stop.flag,
     );
     super::shared::tell_switches(settings, &mut connection.master);
-    let dump = dump.map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
+    let dump = dump.map_err(|e| connection.explain(Error::from(e)))?;
     if dump.interrupted {
         let values: usize = dump.entries.iter().map(|e| e.values.len()).sum();
         mbtool::note!(
@@ -75,12 +75,7 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
         };
         return Err(Error::from(refused).into());
     }
-    let (place, _) = connection::tried_on(
-        &settings.connection,
-        &connection.endpoint,
-        connection.mode,
-        connection.master.path(),
-    );
+    let (place, _) = connection.connector.tried_on(connection.master.path());
     let text = format!(
         "# mbtool dump of slave {slave} {place}, {}\n{}",
         output::backup::utc_now(),

@@ -175,8 +175,10 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
     let (line_endpoint, verbose) = (endpoint.clone(), settings.output.verbose);
     let mut line = Line::new(
         Box::new(move || {
-            let mut master =
-                connection::master(&connection, &line_endpoint, mode).map_err(|e| e.to_string())?;
+            let mut master = connection::Connector::at(&connection, line_endpoint.clone(), mode)
+                .connect()
+                .map(|connected| connected.master)
+                .map_err(|e| e.to_string())?;
             if verbose {
                 master.trace(super::shared::tracer(mode));
             }

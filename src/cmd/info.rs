@@ -20,8 +20,7 @@ pub fn run(settings: &Settings, args: &InfoArgs) -> Result<u8> {
     let master = &mut connection.master;
     let asked = outcome(identification(master, slave))
         .and_then(|id| Ok((id, outcome(server_id(master, slave))?)));
-    let (identification, server_id) =
-        asked.map_err(|e| connection.explain(&settings.connection, e.into()))?;
+    let (identification, server_id) = asked.map_err(|e| connection.explain(e.into()))?;
     let report = InfoReport {
         slave,
         identification,
@@ -47,9 +46,7 @@ pub fn run(settings: &Settings, args: &InfoArgs) -> Result<u8> {
                 slave,
                 timeout: settings.connection.timeout,
             };
-            return Err(connection
-                .explain(&settings.connection, timeout.into())
-                .into());
+            return Err(connection.explain(timeout.into()).into());
         }
     }
     let mut out = output::stdout();

@@ -5,7 +5,7 @@ use std::io::Write;
 use anyhow::Result;
 
 use mbtool::cli::{RequestArgs, RequestCommand, Wire};
-use mbtool::connection::{self, Connection};
+use mbtool::connection::{self, Connection, Connector};
 use mbtool::error::Error;
 use mbtool::output::{self, map::MapRows, map::MapWriter};
 use mbtool::settings::Settings;
@@ -220,7 +220,7 @@ pub fn read(settings: &Settings, plan: &MapPlan, connection: &mut Connection) ->
         settings.data.max_per_request,
         Refused::Error,
     )
-    .map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
+    .map_err(|e| connection.explain(Error::from(e)))?;
     if read.fell_back {
         mbtool::note!(
             "mbtool: a request spanning addresses no point names was refused; its points were read again one run at a time"
@@ -243,7 +243,7 @@ pub fn read(settings: &Settings, plan: &MapPlan, connection: &mut Connection) ->
 }
 
 /// Writes the points, then says what was written.
-pub fn write(settings: &Settings, writes: &[MapWrite], connection: &mut Connection) -> Result<u8> {
+pub fn write(writes: &[MapWrite], connection: &mut Connection) -> Result<u8> {
     let mut out = output::stdout();
     for write in writes {
         // Through a plan of its own, so that a bit is written as every bit is (22, or 03
@@ -257,7 +257,7 @@ pub fn write(settings: &Settings, writes: &[MapWrite], connection: &mut Connecti
         let written = connection
             .master
             .write(&plan)
-            .map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
+            .map_err(|e| connection.explain(Error::from(e)))?;
         if written.mask_write_emulated {
             super::shared::note_mask_write_emulated(write.slave, &write.said);
         }
@@ -271,7 +271,7 @@ pub fn write(settings: &Settings, writes: &[MapWrite], connection: &mut Connecti
 pub fn poll(
     settings: &Settings,
     plan: &MapPlan,
-    target: &mbtool::connection::Target,
+    target: &Connector,
     interval: std::time::Duration,
 ) -> Result<u8> {
     let points: Vec<&Point> = plan.points.iter().collect();
@@ -351,7 +351,7 @@ impl ByMap {
             return poll(
                 settings,
                 plan,
-                &connection::target(&settings.connection)?,
+                &Connector::new(&settings.connection)?,
                 interval,
             );
         }
@@ -359,16 +359,15 @@ impl ByMap {
             let requests: Vec<Request> = writes.iter().map(|w| w.request.clone()).collect();
             super::shared::refuse_unsafe_retries(settings, &requests)?;
         }
-        let mut connection = connection::connect(&settings.connection)?;
+        let mut connection = Connector::new(&settings.connection)?.connect()?;
         if settings.output.verbose {
-            connection
-                .master
-                .trace(super::shared::tracer(connection.mode));
+            let mode = connection.connector.mode;
+            connection.master.trace(super::shared::tracer(mode));
         }
         match self {
             ByMap::Read(plan) => read(settings, plan, &mut connection),
             ByMap::Write(writes, _) => {
-                let written = write(settings, writes, &mut connection);
+                let written = write(writes, &mut connection);
                 super::shared::tell_resent(&mut connection.master);
                 written
             }

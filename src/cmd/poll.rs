@@ -8,7 +8,7 @@ use std::time::Duration;
 
 use anyhow::Result;
 
-use mbtool::connection::{self, Target};
+use mbtool::connection::Connector;
 use mbtool::error::Error;
 use mbtool::output::Format;
 use mbtool::output::{self, PollRows};
@@ -54,7 +54,7 @@ pub(super) fn open_log<W: PollRows>(
 /// summary on stderr at the end. The exit status is the last poll's.
 pub fn run<W: PollRows>(
     settings: &Settings,
-    target: &Target,
+    target: &Connector,
     interval: Duration,
     read: impl FnMut(&mut Master) -> Result<W::Item, RunError>,
     writer: impl Fn(Format) -> W,
@@ -73,14 +73,13 @@ pub fn run<W: PollRows>(
     })
     .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
     let connect = |path| -> Result<Master, Error> {
-        let mut master =
-            connection::master_on(&settings.connection, &target.endpoint, target.mode, path)?;
+        let mut master = target.master_on(path)?;
         if settings.output.verbose {
             master.trace(super::shared::tracer(target.mode));
         }
         Ok(master)
     };
-    super::shared::warn_if_secondary_unavailable(settings);
+    super::shared::warn_if_secondary_unavailable(target);
     let mut out = output::stdout();
     let mut last_status = 0;
     let options = PollOptions {
@@ -109,8 +108,7 @@ pub fn run<W: PollRows>(
                 None
             }
             Tick::Failed(error) => {
-                let c = &settings.connection;
-                let (tried, advice) = connection::tried_on(c, &target.endpoint, target.mode, path);
+                let (tried, advice) = target.tried_on(path);
                 let error = Error::from(error).tried(tried, advice);
                 last_status = error.exit_code();
                 Some(error.to_string())

@@ -5,7 +5,7 @@ use std::io::Write;
 use anyhow::Result;
 
 use mbtool::cli::{OnTheBus, RequestCommand};
-use mbtool::connection;
+use mbtool::connection::Connector;
 use mbtool::error::Error;
 use mbtool::output;
 use mbtool::output::decode::DecodeWriter;
@@ -37,12 +37,12 @@ pub fn run(settings: &Settings, request: &RequestCommand<OnTheBus>) -> Result<u8
     }
     let plan = super::shared::plan_for(settings, request)?;
     super::shared::refuse_unsafe_retries(settings, &plan.requests)?;
-    let target = connection::target(&settings.connection)?;
+    let target = Connector::new(&settings.connection)?;
     if let (Some(interval), Some((table, address))) = (settings.poll.interval, plan.reads) {
         return poll_reads(settings, &target, &plan, (table, address), interval);
     }
-    let mut connection = target.connect(&settings.connection)?;
-    let mode = connection.mode;
+    let mut connection = target.connect()?;
+    let mode = target.mode;
     let master = &mut connection.master;
     if settings.output.verbose {
         master.trace(super::shared::tracer(mode));
@@ -56,7 +56,7 @@ pub fn run(settings: &Settings, request: &RequestCommand<OnTheBus>) -> Result<u8
     super::shared::tell_switches(settings, master);
     super::shared::tell_resent(master);
     let code = code.map_err(|error| match error.downcast::<Error>() {
-        Ok(error) => connection.explain(&settings.connection, error).into(),
+        Ok(error) => connection.explain(error).into(),
         Err(error) => error,
     })?;
     out.flush()?;
@@ -79,7 +79,7 @@ fn reads(
 /// `--poll` of a read: the rows of every poll, a dropped connection opened again.
 fn poll_reads(
     settings: &Settings,
-    target: &connection::Target,
+    target: &Connector,
     plan: &Plan,
     (table, address): (Table, u16),
     interval: std::time::Duration,

@@ -97,8 +97,7 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
     }
     super::shared::tell_switches(settings, master);
     super::shared::tell_resent(master);
-    let differences =
-        outcome.map_err(|e| connection.explain(&settings.connection, Error::from(e)))?;
+    let differences = outcome.map_err(|e| connection.explain(Error::from(e)))?;
     let written: usize = entries
         .iter()
         .filter(|e| e.table.is_writable())

@@ -10,7 +10,7 @@ use anyhow::Result;
 use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
 
 use mbtool::cli::{RequestCommand, RoleArgs, Wire};
-use mbtool::connection::{self, Connection, Role};
+use mbtool::connection::{self, Connection, Connector, Role};
 use mbtool::error::Error;
 use mbtool::output::device::Outcome;
 use mbtool::output::encode::frame_text;
@@ -99,15 +99,15 @@ pub fn tracer(mode: Mode) -> mbtool_core::master::Tracer {
 
 /// A connection to the one slave a device command names: the slave checked before the
 /// port is opened, and `-v` showing every frame.
-pub fn connect_to(settings: &Settings, slave: &str) -> Result<(Connection, u8)> {
-    let target = connection::target(&settings.connection)?;
-    let slave = parse_slave(slave, false, target.is_tcp()).map_err(Error::from)?;
-    let mut connection = target.connect(&settings.connection)?;
+pub fn connect_to<'a>(settings: &'a Settings, slave: &str) -> Result<(Connection<'a>, u8)> {
+    let connector = Connector::new(&settings.connection)?;
+    let slave = parse_slave(slave, false, connector.is_tcp()).map_err(Error::from)?;
+    let mut connection = connector.connect()?;
     if connection.master.path() == Some(PathName::Primary) {
-        warn_if_secondary_unavailable(settings);
+        warn_if_secondary_unavailable(&connector);
     }
     if settings.output.verbose {
-        connection.master.trace(tracer(connection.mode));
+        connection.master.trace(tracer(connector.mode));
     }
     Ok((connection, slave))
 }
@@ -153,8 +153,8 @@ pub fn tell_resent(master: &mut Master) {
 }
 
 /// A line on stderr when the secondary path cannot be opened now.
-pub fn warn_if_secondary_unavailable(settings: &Settings) {
-    if let Some(why) = connection::secondary_unavailable(&settings.connection) {
+pub fn warn_if_secondary_unavailable(connector: &Connector) {
+    if let Some(why) = connector.secondary_unavailable() {
         mbtool::note!(
             "mbtool: warning: the secondary path cannot be opened now ({why}); it is tried again when a change is due"
         );

@@ -9,7 +9,7 @@ use anyhow::Result;
 use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind, KeyModifiers};
 
 use mbtool::cli::ReadByReferenceArgs;
-use mbtool::connection::{self, Target};
+use mbtool::connection::Connector;
 use mbtool::error::Error;
 use mbtool::output::watch::WatchState;
 use mbtool::settings::Settings;
@@ -30,7 +30,7 @@ const DEFAULT_INTERVAL: Duration = Duration::from_secs(1);
 fn points(
     settings: &Settings,
     args: &ReadByReferenceArgs,
-    target: &Target,
+    target: &Connector,
 ) -> Result<(u8, Vec<Point>), Error> {
     if let Some(path) = &args.map {
         let (slave, names) = args.map_words();
@@ -109,7 +109,7 @@ pub fn run(settings: &Settings, args: &ReadByReferenceArgs) -> Result<u8> {
         .into());
     }
     // A map's file may say where its device is, where the command line does not.
-    let settings = &match &args.map {
+    let placed = match &args.map {
         Some(path) => {
             // Its warnings are told once, when its points are planned.
             let map = mbtool_core::model::map_file::load(path).map_err(Error::from)?;
@@ -122,7 +122,8 @@ pub fn run(settings: &Settings, args: &ReadByReferenceArgs) -> Result<u8> {
         }
         None => settings.clone(),
     };
-    let target = connection::target(&settings.connection)?;
+    let settings = &placed;
+    let target = Connector::new(&settings.connection)?;
     let (slave, points) = points(settings, args, &target)?;
     let title = format!(
         " slave {slave} on {} ",
@@ -138,7 +139,9 @@ pub fn run(settings: &Settings, args: &ReadByReferenceArgs) -> Result<u8> {
     let mut state = WatchState::new(title, &points);
     let poller = {
         let (settings, points, stop) = (settings.clone(), points.clone(), stop.clone());
+        let (endpoint, mode) = (target.endpoint.clone(), target.mode);
         std::thread::spawn(move || {
+            let target = Connector::at(&settings.connection, endpoint, mode);
             poll_thread(
                 &settings, &target, slave, &points, interval, &stop, &updates,
             );
@@ -216,7 +219,7 @@ fn screen(
 /// Polls on its own thread, so that the screen answers keys between reads.
 fn poll_thread(
     settings: &Settings,
-    target: &Target,
+    target: &Connector,
     slave: u8,
     points: &[Point],
     interval: Duration,
@@ -224,9 +227,7 @@ fn poll_thread(
     updates: &mpsc::Sender<Update>,
 ) {
     let refs: Vec<&Point> = points.iter().collect();
-    let connect = |path| -> Result<Master, Error> {
-        connection::master_on(&settings.connection, &target.endpoint, target.mode, path)
-    };
+    let connect = |path| -> Result<Master, Error> { target.master_on(path) };
     let read = |master: &mut Master| {
         let began = Instant::now();
         read_points(
