@@ -255,7 +255,8 @@ proptest! {
     #![proptest_config(ProptestConfig { cases: 500, max_global_rejects: 50_000, ..ProptestConfig::default() })]
 
     /// Every map either format reads, the other reads as the same points; every map
-    /// either refuses, the other refuses.
+    /// either refuses, the other refuses. But for overlapping points: a CSV map refuses
+    /// them, and Home Assistant's entities may overlap, as Home Assistant reads them.
     #[test]
     fn csv_and_yaml_maps_obey_the_same_rules(specs in vec(spec(), 1..5)) {
         let specs: Vec<Spec> = specs.into_iter().filter(says_the_same).collect();
@@ -265,6 +266,7 @@ proptest! {
         match (csv, yaml) {
             (Ok(csv), Ok(yaml)) => prop_assert_eq!(points_of(csv), points_of(yaml)),
             (Err(_), Err(_)) => {}
+            (Err(csv), Ok(_)) if csv.to_string().contains(" overlaps ") => {}
             (csv, yaml) => prop_assert!(
                 false,
                 "CSV {:?}\nYAML {:?}\n{}\n{}",
