@@ -5,7 +5,7 @@ use std::io;
 use crate::error::{Error, Result};
 use crate::settings::ConnectionSettings;
 use mbtool_core::codec::{ExceptionCode, Mode};
-use mbtool_core::master::failover::{Failover, PathName, Switch, SwitchRule};
+use mbtool_core::master::failover::{open_pair, PairError, PathName, SwitchRule};
 use mbtool_core::master::open::{self, PathSettings};
 use mbtool_core::master::Master;
 use mbtool_core::model::line::DirectionControl;
@@ -332,28 +332,12 @@ fn redundant_master(
     };
     let setting =
         |error: &Error| matches!(error, Error::Io(e) if e.kind() == io::ErrorKind::Unsupported);
-    let (master, on, switches) = match open_path(first) {
-        Ok(master) => (master, first, Vec::new()),
-        Err(failed) if setting(&failed) => return Err(failed),
-        Err(failed) => match open_path(first.other()) {
-            Ok(master) => {
-                let switch = Switch {
-                    to: first.other(),
-                    why: format!("the {} path cannot be opened ({failed})", first.name()),
-                    left: None,
-                };
-                (master, first.other(), vec![switch])
-            }
-            Err(other) if setting(&other) => return Err(other),
-            Err(other) => {
-                return Err(Error::Io(io::Error::other(format!(
-                    "neither path opens: {failed}; {other}"
-                ))))
-            }
-        },
-    };
-    let open = move |path| open_path(path).map_err(|e| e.to_string());
-    Ok(master.with_failover(Failover::new(rule, on, Box::new(open), switches)))
+    open_pair(open_path, setting, rule, first).map_err(|error| match error {
+        PairError::Setting(error) => error,
+        PairError::Neither(failed, other) => Error::Io(io::Error::other(format!(
+            "neither path opens: {failed}; {other}"
+        ))),
+    })
 }
 
 /// How long a master waits for an answer, and how often it asks again.

@@ -219,6 +219,45 @@ pub(super) enum Weighed {
     Switched,
 }
 
+/// Why a master on two paths was not opened.
+#[derive(Debug)]
+pub enum PairError<E> {
+    /// A path failed as a setting to correct (a port that cannot switch its RS-485
+    /// transceiver as asked), not as a path that is down.
+    Setting(E),
+    /// Neither path opens: the first's failure, then the other's.
+    Neither(E, E),
+}
+
+/// A master on the path `first` of the two `open` opens, or on the other where it cannot
+/// be opened, changing between them as `rule` says. A failure `is_setting` says is a
+/// setting to correct is told as it is, not taken for a path that is down.
+pub fn open_pair<E: std::fmt::Display>(
+    open: impl Fn(PathName) -> Result<Master, E> + Clone + Send + 'static,
+    is_setting: impl Fn(&E) -> bool,
+    rule: SwitchRule,
+    first: PathName,
+) -> Result<Master, PairError<E>> {
+    let (master, on, switches) = match open(first) {
+        Ok(master) => (master, first, Vec::new()),
+        Err(failed) if is_setting(&failed) => return Err(PairError::Setting(failed)),
+        Err(failed) => match open(first.other()) {
+            Ok(master) => {
+                let switch = Switch {
+                    to: first.other(),
+                    why: format!("the {} path cannot be opened ({failed})", first.name()),
+                    left: None,
+                };
+                (master, first.other(), vec![switch])
+            }
+            Err(other) if is_setting(&other) => return Err(PairError::Setting(other)),
+            Err(other) => return Err(PairError::Neither(failed, other)),
+        },
+    };
+    let reopen = move |path| open(path).map_err(|e| e.to_string());
+    Ok(master.with_failover(Failover::new(rule, on, Box::new(reopen), switches)))
+}
+
 impl Failover {
     /// Paths opened by `open`, on `on` now; `switches` are those made already (the first
     /// path not to be opened, say), for the log.
