@@ -321,7 +321,7 @@ pub trait Words: Clone + std::fmt::Debug + Send + Sync + 'static {
     /// How many to read.
     const COUNT: &'static str;
     /// The values to write.
-    const VALUES: &'static str;
+    const VALUES: &'static str = "The values, each converted by --type";
 }
 
 /// The coils.
@@ -352,7 +352,6 @@ impl Words for DiscreteInputs {
         number (196; counted from 0, or from 1 with --address-base 1), or an inclusive range \
         (100197-100218)";
     const COUNT: &'static str = "How many inputs to read [default: 1]";
-    const VALUES: &'static str = "";
 }
 
 /// The input registers.
@@ -367,7 +366,6 @@ impl Words for InputRegisters {
         (8; counted from 0, or from 1 with --address-base 1), an inclusive range \
         (300009-300011), or a bit of a register (300009.00), COUNT then counting bits";
     const COUNT: &'static str = HoldingRegisters::COUNT;
-    const VALUES: &'static str = "";
 }
 
 /// The holding registers.
@@ -386,7 +384,6 @@ impl Words for HoldingRegisters {
         holds exactly the values given";
     const COUNT: &'static str = "How many registers to read [default: 1]; with --type wider \
         than 16 bits, how many values of that type";
-    const VALUES: &'static str = "The values, each converted by --type";
 }
 
 #[derive(Clone, Debug, Args)]

@@ -221,8 +221,39 @@ fn short_help_fits_on_a_screen() {
             assert!(short <= 40, "{path:?}: {short} lines");
             let long = lines(&[path.as_slice(), &["--help"]].concat());
             assert!(long > short, "{path:?}");
+            pointer_names_what_is_left_out(&command, &path);
         }
     }
+}
+
+/// The last line of a command's `-h` names the group of every option it leaves out, and
+/// no other.
+fn pointer_names_what_is_left_out(definition: &clap::Command, path: &[&str]) {
+    let leaf = path
+        .iter()
+        .try_fold(definition, |command, name| command.find_subcommand(name))
+        .unwrap();
+    let mut left_out: Vec<&str> = leaf
+        .get_arguments()
+        .filter(|arg| arg.is_hide_short_help_set() && !arg.is_hide_set())
+        .map(|arg| arg.get_help_heading().unwrap_or("Options"))
+        .collect();
+    left_out.sort_unstable();
+    left_out.dedup();
+    let output = mbtool()
+        .env("NO_COLOR", "1")
+        .args([path, &["-h"]].concat())
+        .output()
+        .unwrap();
+    let help = String::from_utf8(output.stdout).unwrap().replace('\n', " ");
+    let pointer = help
+        .split("More options in --help: ")
+        .nth(1)
+        .map(|rest| rest.trim_end().trim_end_matches('.'))
+        .unwrap_or_default();
+    let mut named: Vec<&str> = pointer.split(", ").filter(|h| !h.is_empty()).collect();
+    named.sort_unstable();
+    assert_eq!(named, left_out, "{path:?}");
 }
 
 #[test]
