@@ -8,12 +8,12 @@ use std::process::ExitCode;
 
 use clap::error::{ContextKind, ContextValue, ErrorKind};
 
-use mbtool::cli::Command;
+use mbtool::settings::job::Job;
 use mbtool::settings::{self, Settings};
 
 fn main() -> ExitCode {
     let code = match parse() {
-        Ok((settings, command)) => match cmd::run(&settings, command) {
+        Ok((settings, job)) => match cmd::run(&settings, &job) {
             Ok(code) => code,
             Err(error) => fail(&error),
         },
@@ -26,32 +26,30 @@ fn main() -> ExitCode {
 /// and version are printed as clap renders them; `mbtool` alone prints a short usage with
 /// the commands; every other usage error, including an option the command does not take,
 /// becomes one `mbtool: ` line. Both end with exit status 2.
-fn parse() -> Result<(Settings, Command), u8> {
+fn parse() -> Result<(Settings, Job), u8> {
     let mut definition = mbtool::cli::definition();
-    let (mut cli, origins) =
-        settings::read(&mut definition, std::env::args_os()).map_err(|error| {
-            match error.kind() {
-                ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match error.print() {
-                    // `mbtool --help | head -3` is the reader's choice.
-                    Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
-                        mbtool::note!("mbtool: cannot write standard output: {e}");
-                        1
-                    }
-                    _ => 0,
-                },
-                ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
-                | ErrorKind::MissingSubcommand => {
-                    mbtool::note!("{}", mbtool::docs::short_usage(&definition));
-                    2
+    let (cli, origins) = settings::read(&mut definition, std::env::args_os()).map_err(|error| {
+        match error.kind() {
+            ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => match error.print() {
+                // `mbtool --help | head -3` is the reader's choice.
+                Err(e) if e.kind() != io::ErrorKind::BrokenPipe => {
+                    mbtool::note!("mbtool: cannot write standard output: {e}");
+                    1
                 }
-                _ => {
-                    mbtool::note!("mbtool: {}", usage_error(&error, &definition));
-                    2
-                }
+                _ => 0,
+            },
+            ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
+                mbtool::note!("{}", mbtool::docs::short_usage(&definition));
+                2
             }
-        })?;
-    match settings::resolve(&mut cli, &origins) {
-        Ok(settings) => Ok((settings, cli.command)),
+            _ => {
+                mbtool::note!("mbtool: {}", usage_error(&error, &definition));
+                2
+            }
+        }
+    })?;
+    match settings::resolve(cli, &origins) {
+        Ok(resolved) => Ok(resolved),
         Err(message) => {
             mbtool::note!("mbtool: {message}");
             Err(2)

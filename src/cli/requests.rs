@@ -4,7 +4,6 @@
 
 use clap::{Args, Subcommand};
 
-use mbtool_core::master::plan::{How, Operation};
 use mbtool_core::model::address::Table;
 
 use super::options::{left_out, more_in_long_help, ShortHelp};
@@ -246,67 +245,6 @@ impl<W: Wire> RequestCommand<W> {
             C::Raw(r) => r,
         }
     }
-
-    /// The operation the command asks of the core's planner, its words as typed.
-    pub fn operation(&self) -> Operation<'_> {
-        use RequestCommand as C;
-        fn read<T: Words>(a: &ReadArgs<T>) -> Operation<'_> {
-            Operation::Read {
-                slave: &a.slave,
-                address: &a.address,
-                table: Some(T::TABLE),
-                count: a.count.as_deref(),
-            }
-        }
-        fn write<T: Words>(a: &WriteArgs<T>) -> Operation<'_> {
-            Operation::Write {
-                slave: &a.slave,
-                address: &a.address,
-                table: Some(T::TABLE),
-                values: &a.values,
-                how: How::Multiple,
-            }
-        }
-        match self {
-            C::ReadCoils(RequestArgs { args: a, .. }) => read(a),
-            C::ReadInputs(RequestArgs { args: a, .. }) => read(a),
-            C::ReadHolding(RequestArgs { args: a, .. }) => read(a),
-            C::ReadInputRegisters(RequestArgs { args: a, .. }) => read(a),
-            C::Read(RequestArgs { args: a, .. }) => Operation::Read {
-                slave: a.slave(),
-                address: a.reference.as_deref().unwrap_or_default(),
-                table: None,
-                count: a.count.as_deref(),
-            },
-            C::WriteCoil(RequestArgs { args: a, .. }) => Operation::Write {
-                slave: &a.slave,
-                address: &a.address,
-                table: Some(Table::Coils),
-                values: std::slice::from_ref(&a.value),
-                how: How::Single,
-            },
-            C::WriteRegister(RequestArgs { args: a, .. }) => Operation::Write {
-                slave: &a.slave,
-                address: &a.address,
-                table: Some(Table::HoldingRegisters),
-                values: std::slice::from_ref(&a.value),
-                how: How::OneRegister,
-            },
-            C::WriteCoils(RequestArgs { args: a, .. }) => write(a),
-            C::WriteRegisters(RequestArgs { args: a, .. }) => write(a),
-            C::Write(RequestArgs { args: a, .. }) => Operation::Write {
-                slave: &a.slave,
-                address: a.reference.as_deref().unwrap_or_default(),
-                table: None,
-                values: &a.values,
-                how: How::Function(a.function.as_deref().and_then(|f| f.parse().ok())),
-            },
-            C::Raw(RequestArgs { args: a, .. }) => Operation::Raw {
-                slave: &a.slave,
-                pdu: &a.pdu,
-            },
-        }
-    }
 }
 
 /// What the words of a command mean, by the table it reads or writes.
@@ -461,30 +399,6 @@ pub struct ReadByReferenceArgs {
     pub map: Option<std::path::PathBuf>,
 }
 
-impl ReadByReferenceArgs {
-    /// With --map: the slave typed, and the names of the points to read (every word after
-    /// SLAVE). A first word that is no slave id is a point's name, SLAVE left out.
-    pub fn map_words(&self) -> (Option<&str>, Vec<&str>) {
-        let is_slave = |word: &str| mbtool_core::input::number::parse_int(word).is_ok();
-        let (slave, first) = match self.slave.as_deref() {
-            Some(word) if is_slave(word) => (Some(word), None),
-            word => (None, word),
-        };
-        let names = first
-            .into_iter()
-            .chain(self.reference.as_deref())
-            .chain(self.count.as_deref())
-            .chain(self.names.iter().map(String::as_str))
-            .collect();
-        (slave, names)
-    }
-
-    /// The slave typed, for a read by reference (which needs it: clap asks for it).
-    pub fn slave(&self) -> &str {
-        self.slave.as_deref().unwrap_or_default()
-    }
-}
-
 #[derive(Clone, Debug, Args)]
 pub struct WriteByReferenceArgs {
     /// Slave address: 1-247, or 0 to broadcast
@@ -509,24 +423,6 @@ pub struct WriteByReferenceArgs {
     /// Force the function: 5 or 15 for coils, 6 or 16 for registers
     #[arg(long, value_name = "CODE", value_parser = ["5", "6", "15", "16"])]
     pub function: Option<String>,
-}
-
-impl WriteByReferenceArgs {
-    /// With --map: the slave typed, and the NAME=VALUE words. A first word that is no
-    /// slave id is an assignment, SLAVE left out (the map gives each point's slave).
-    pub fn map_words(&self) -> (Option<&str>, Vec<&str>) {
-        let is_slave = |word: &str| mbtool_core::input::number::parse_int(word).is_ok();
-        let (slave, first) = match self.slave.as_str() {
-            word if is_slave(word) => (Some(word), None),
-            word => (None, Some(word)),
-        };
-        let assignments = first
-            .into_iter()
-            .chain(self.reference.as_deref())
-            .chain(self.values.iter().map(String::as_str))
-            .collect();
-        (slave, assignments)
-    }
 }
 
 #[derive(Clone, Debug, Args)]

@@ -5,11 +5,10 @@ use std::io::{self, Write};
 
 use anyhow::Result;
 
-use mbtool::cli::DecodeArgs;
 use mbtool::error::Error;
 use mbtool::lines::{Line, Lines};
 use mbtool::output::{self, decode::DecodeWriter};
-use mbtool::settings::Settings;
+use mbtool::settings::{job, Settings};
 use mbtool_core::codec::framing::split_glued;
 use mbtool_core::codec::{limits, Direction, Mode};
 use mbtool_core::describe::{describe_frame, pair_answer, request_made, Asked, FrameReport};
@@ -192,10 +191,10 @@ fn argument_lines(frames: &[String]) -> Vec<ArgumentLine<'_>> {
         .collect()
 }
 
-pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
+pub fn run(settings: &Settings, job: &job::Decode) -> Result<u8> {
     let mut decoder = Decoder {
         mode: settings.connection.mode,
-        direction: args.direction.map(Direction::from),
+        direction: job.direction,
         writer: DecodeWriter::new(settings.output.style),
         out: output::stdout(),
         frames: 0,
@@ -205,7 +204,7 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
         asked: None,
         dump: None,
     };
-    if args.frames.is_empty() {
+    if job.frames.is_empty() {
         let stdin = io::stdin();
         if std::io::IsTerminal::is_terminal(&stdin) {
             mbtool::note!(
@@ -239,14 +238,14 @@ pub fn run(settings: &Settings, args: &DecodeArgs) -> Result<u8> {
     } else {
         // `mbtool decode "$REQUEST" "$ANSWER"` with a variable unset or blank: a mistake,
         // not a frame to pass over, and it would change how the others are read.
-        if let Some(blank) = args.frames.iter().position(|f| f.trim_ascii().is_empty()) {
+        if let Some(blank) = job.frames.iter().position(|f| f.trim_ascii().is_empty()) {
             return Err(Error::usage(format!(
                 "frame {} is empty: give its bytes in hex (mbtool decode 11 03 00 6B 00 03 76 87), or no argument to read frames from standard input",
                 blank + 1
             ))
             .into());
         }
-        for line in argument_lines(&args.frames) {
+        for line in argument_lines(&job.frames) {
             if line.text.len() > MAX_LINE {
                 decoder.too_long(line.place());
                 continue;

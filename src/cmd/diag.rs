@@ -4,11 +4,10 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::cli::DiagArgs;
 use mbtool::error::Error;
 use mbtool::output::device::{write_diag, DiagReport, Outcome};
 use mbtool::output::{self, colour_wanted};
-use mbtool::settings::Settings;
+use mbtool::settings::{job, Settings};
 use mbtool_core::codec::function;
 use mbtool_core::master::device::{clear_counters, counters, exception_status, round_trips, Asked};
 
@@ -17,9 +16,9 @@ use super::shared::outcome;
 /// Round trips timed when `--count` does not say.
 const ROUND_TRIPS: u64 = 5;
 
-pub fn run(settings: &Settings, args: &DiagArgs) -> Result<u8> {
+pub fn run(settings: &Settings, job: &job::Diag) -> Result<u8> {
     let count = settings.poll.count.unwrap_or(ROUND_TRIPS);
-    let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
+    let (mut connection, slave) = super::shared::connect_to(settings, &job.slave)?;
     let master = &mut connection.master;
     // A device that does not answer at all fails here, with what was tried.
     let round_trips = round_trips(master, slave, count)
@@ -32,7 +31,7 @@ pub fn run(settings: &Settings, args: &DiagArgs) -> Result<u8> {
             round_trips,
             counters: outcome(counters(master, slave).map(Asked::Answered))?,
             exception_status: outcome(exception_status(master, slave))?,
-            cleared: match args.clear {
+            cleared: match job.clear {
                 true => Some(outcome(clear_counters(master, slave))?),
                 false => None,
             },

@@ -4,19 +4,17 @@ use std::io::Write;
 
 use anyhow::{Context, Result};
 
-use mbtool::cli::DumpArgs;
-
 use mbtool::error::Error;
 use mbtool::output::{self, plural};
-use mbtool::settings::Settings;
+use mbtool::settings::{job, Settings};
 use mbtool_core::codec::ExceptionCode;
 use mbtool_core::master::backup::{self, Range};
 use mbtool_core::master::run::RunError;
 use mbtool_core::model::address::{parse_reference_span, AddressError};
 use mbtool_core::slave::datafile;
 
-pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
-    let ranges = args
+pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
+    let ranges = job
         .ranges
         .iter()
         .map(|text| {
@@ -34,7 +32,7 @@ pub fn run(settings: &Settings, args: &DumpArgs) -> Result<u8> {
             std::io::Error::new(e.kind(), format!("cannot write {}: {e}", path.display()))
         })?;
     }
-    let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
+    let (mut connection, slave) = super::shared::connect_to(settings, &job.slave)?;
     let stop = super::shared::stop_on_signal()?;
     connection.master.stop_on(stop.flag.clone());
     let started = std::time::Instant::now();

@@ -2,17 +2,17 @@
 
 use anyhow::Result;
 
-use mbtool::cli::{Encoded, RequestCommand};
 use mbtool::error::Error;
 use mbtool::output::{self, encode::write_frame};
+use mbtool::settings::job::Request as Job;
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Pdu, Request};
 
-pub fn run(settings: &Settings, request: &RequestCommand<Encoded>) -> Result<u8> {
+pub fn run(settings: &Settings, job: &Job) -> Result<u8> {
     let mode = super::shared::mode(settings);
-    let requests: Vec<(u8, Request)> = match super::map::by_map(settings, request)? {
-        Some(by_map) => by_map.requests(settings),
-        None => {
+    let requests: Vec<(u8, Request)> = match job {
+        Job::ByMap(map) => super::map::by_map(settings, map)?.requests(settings),
+        Job::Typed(request) => {
             let plan = super::shared::plan_for(settings, request)?;
             plan.requests.into_iter().map(|r| (plan.slave, r)).collect()
         }

@@ -6,12 +6,11 @@ use std::sync::{mpsc, Arc, Mutex};
 
 use anyhow::Result;
 
-use mbtool::cli::GatewayArgs;
 use mbtool::connection::{self, Role};
 use mbtool::error::Error;
 use mbtool::output::gateway::GatewayWriter;
 use mbtool::output::{colour_wanted, Format, Named, PollRows};
-use mbtool::settings::Settings;
+use mbtool::settings::{job, Settings};
 use mbtool_core::gateway::{Event, Gateway, GatewayOptions, Line, Listening, Report};
 use mbtool_core::transport::Endpoint;
 
@@ -38,15 +37,15 @@ fn upstream(settings: &Settings) -> Result<Endpoint, Error> {
 }
 
 /// Every `--listen`, bound before anything else is done, with how its clients connect.
-fn listeners(settings: &Settings, args: &GatewayArgs) -> Result<Vec<(TcpListener, Listening)>> {
-    if args.listen.is_empty() {
+fn listeners(settings: &Settings, job: &job::Gateway) -> Result<Vec<(TcpListener, Listening)>> {
+    if job.listen.is_empty() {
         return Err(Error::usage(
             "gateway needs --listen: where clients connect, tcp://0.0.0.0:502 (tcp://:1502 for this machine only)",
         )
         .into());
     }
     let mut endpoints = Vec::new();
-    for text in &args.listen {
+    for text in &job.listen {
         let endpoint = Endpoint::parse_listen(text)
             .map_err(|e| Error::usage(format!("--listen {text}: {e}")))?;
         if !matches!(endpoint, Endpoint::Tcp { .. } | Endpoint::Tls { .. }) {
@@ -66,10 +65,10 @@ fn listeners(settings: &Settings, args: &GatewayArgs) -> Result<Vec<(TcpListener
         .iter()
         .find(|endpoint| matches!(endpoint, Endpoint::Tcp { .. }));
     let security = match secure {
-        Some(endpoint) => super::shared::security(settings, &args.roles, endpoint)?.map(Arc::new),
-        None => super::shared::security(settings, &args.roles, &endpoints[0])?.map(Arc::new),
+        Some(endpoint) => super::shared::security(settings, &job.roles, endpoint)?.map(Arc::new),
+        None => super::shared::security(settings, &job.roles, &endpoints[0])?.map(Arc::new),
     };
-    let plain_role = super::shared::plain_role(&args.roles, plain, secure.is_some())?;
+    let plain_role = super::shared::plain_role(&job.roles, plain, secure.is_some())?;
     let mut bound = Vec::new();
     for endpoint in endpoints {
         let (Endpoint::Tcp { host, port } | Endpoint::Tls { host, port }) = &endpoint else {
@@ -116,7 +115,7 @@ impl Monitor {
     }
 }
 
-pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
+pub fn run(settings: &Settings, job: &job::Gateway) -> Result<u8> {
     let endpoint = upstream(settings)?;
     let mode = connection::mode(&settings.connection, Some(&endpoint), Role::Master)?;
     connection::direction_needs_serial(&settings.connection, &endpoint)?;
@@ -135,8 +134,8 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
         .map(|path| open_log(path, |format| GatewayWriter::new(format, false)))
         .transpose()?;
     // Bound last of what can fail, so that a bad command line leaves no port taken.
-    let listeners = listeners(settings, args)?;
-    let screen = (!args.quiet).then(|| {
+    let listeners = listeners(settings, job)?;
+    let screen = (!job.quiet).then(|| {
         let out = Named::new(io::stdout(), "standard output");
         let writer = GatewayWriter::new(format, colour_wanted());
         (
@@ -161,8 +160,8 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
         Event::ClientClosed(error) => mbtool::note!("mbtool: {error}"),
     });
     let options = GatewayOptions {
-        unit_map: args.unit_map.clone().unwrap_or_default(),
-        broadcast_reply: args.broadcast_reply,
+        unit_map: job.unit_map.clone(),
+        broadcast_reply: job.broadcast_reply,
     };
     let gateway = Gateway::new(options, Arc::clone(&report));
     // Ctrl-C, SIGINT and SIGTERM end the gateway with its summary.
@@ -221,7 +220,7 @@ pub fn run(settings: &Settings, args: &GatewayArgs) -> Result<u8> {
     let writer = GatewayWriter::new(format, false);
     let mut text = Vec::new();
     writer.summary(&mut text, &summary)?;
-    if format == Format::Json && !args.quiet {
+    if format == Format::Json && !job.quiet {
         let mut out = io::stdout().lock();
         let _ = out.write_all(&text).and_then(|()| out.flush());
         let mut table = Vec::new();

@@ -4,19 +4,18 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::cli::InfoArgs;
 use mbtool::error::Error;
 use mbtool::output::device::{write_info, InfoReport, Outcome};
 use mbtool::output::{self, colour_wanted};
-use mbtool::settings::Settings;
+use mbtool::settings::{job, Settings};
 use mbtool_core::codec::function;
 use mbtool_core::master::device::{identification, server_id};
 use mbtool_core::master::MasterError;
 
 use super::shared::outcome;
 
-pub fn run(settings: &Settings, args: &InfoArgs) -> Result<u8> {
-    let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
+pub fn run(settings: &Settings, job: &job::Device) -> Result<u8> {
+    let (mut connection, slave) = super::shared::connect_to(settings, &job.slave)?;
     let master = &mut connection.master;
     let asked = outcome(identification(master, slave))
         .and_then(|id| Ok((id, outcome(server_id(master, slave))?)));

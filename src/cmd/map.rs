@@ -4,10 +4,10 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::cli::{RequestArgs, RequestCommand, Wire};
 use mbtool::connection::{self, Connection, Connector};
 use mbtool::error::Error;
 use mbtool::output::{self, map::MapRows, map::MapWriter};
+use mbtool::settings::job::MapRequest;
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Mode, Request};
 use mbtool_core::master::map::{groups, read_points, write_request, written_value, Group, Refused};
@@ -297,44 +297,25 @@ pub fn poll(
     )
 }
 
-/// A read or write by register map, checked whole; `None` for a command without `--map`.
+/// A read or write by register map, checked whole.
 pub enum ByMap {
     Read(MapPlan),
     Write(Vec<MapWrite>, MapPlan),
 }
 
 /// The map work of `read --map` or `write --map`, with nothing opened yet.
-pub fn by_map<W: Wire>(settings: &Settings, request: &RequestCommand<W>) -> Result<Option<ByMap>> {
-    let tcp = || super::shared::mode(settings) == Mode::Tcp;
-    match request {
-        RequestCommand::Read(RequestArgs { args, .. }) => match &args.map {
-            Some(path) => {
-                let (slave, names) = args.map_words();
-                let plan = plan(settings, path, slave, &names, tcp(), Access::Read)?;
-                Ok(Some(ByMap::Read(plan)))
-            }
-            None if !args.names.is_empty() => Err(Error::usage(format!(
-                "read takes SLAVE REFERENCE [COUNT]; '{}' is one word too many (point names come with --map FILE)",
-                args.names.join(" ")
-            ))
-            .into()),
-            None => Ok(None),
-        },
-        RequestCommand::Write(RequestArgs { args, .. }) => match &args.map {
-            Some(_) if args.function.is_some() => Err(Error::usage(
-                "--function chooses how values are written by reference; a map writes each point as its type needs",
-            )
-            .into()),
-            Some(path) => {
-                let (slave, assignments) = args.map_words();
-                let plan = plan(settings, path, slave, &[], tcp(), Access::WriteOne)?;
-                let writes = plan.writes(&assignments, path)?;
-                Ok(Some(ByMap::Write(writes, plan)))
-            }
-            None => Ok(None),
-        },
-        _ => Ok(None),
+pub fn by_map(settings: &Settings, request: &MapRequest) -> Result<ByMap> {
+    let tcp = super::shared::mode(settings) == Mode::Tcp;
+    let path = &request.file;
+    let slave = request.slave.as_deref();
+    let words: Vec<&str> = request.words.iter().map(String::as_str).collect();
+    if request.access == Access::Read {
+        let plan = plan(settings, path, slave, &words, tcp, Access::Read)?;
+        return Ok(ByMap::Read(plan));
     }
+    let plan = plan(settings, path, slave, &[], tcp, request.access)?;
+    let writes = plan.writes(&words, path)?;
+    Ok(ByMap::Write(writes, plan))
 }
 
 impl ByMap {

@@ -19,27 +19,27 @@ mod watch;
 
 use anyhow::Result;
 
-use mbtool::cli::Command;
+use mbtool::settings::job::Job;
 use mbtool::settings::Settings;
 
-/// Runs the command; `Ok` carries the exit status of a command that finished its work.
-pub fn run(settings: &Settings, command: Command) -> Result<u8> {
-    match &command {
-        Command::Scan(args) => scan::run(settings, args),
-        Command::Watch(args) => watch::run(settings, &args.read),
-        Command::Info(args) => info::run(settings, args),
-        Command::Dump(args) => dump::run(settings, args),
-        Command::Restore(args) => restore::run(settings, args),
-        Command::Diag(args) => diag::run(settings, args),
-        Command::Decode(args) => decode::run(settings, args),
-        Command::Encode { request, .. } => encode::run(settings, request),
-        Command::Request(request) => request::run(settings, request),
-        Command::Serve(args) => serve::run(settings, args),
-        Command::Gateway(args) => gateway::run(settings, args),
-        Command::Sniff(args) => sniff::run(settings, args),
-        Command::Ports(args) => ports::run(settings, args),
-        Command::Generate(args) => {
-            mbtool::docs::generate(&args.dir)?;
+/// Runs the job; `Ok` carries the exit status of a command that finished its work.
+pub fn run(settings: &Settings, job: &Job) -> Result<u8> {
+    match job {
+        Job::Scan(job) => scan::run(settings, job),
+        Job::Watch(job) => watch::run(settings, job),
+        Job::Info(job) => info::run(settings, job),
+        Job::Dump(job) => dump::run(settings, job),
+        Job::Restore(job) => restore::run(settings, job),
+        Job::Diag(job) => diag::run(settings, job),
+        Job::Decode(job) => decode::run(settings, job),
+        Job::Encode(job) => encode::run(settings, job),
+        Job::Request(job) => request::run(settings, job),
+        Job::Serve(job) => serve::run(settings, job),
+        Job::Gateway(job) => gateway::run(settings, job),
+        Job::Sniff(job) => sniff::run(settings, job),
+        Job::Ports(job) => ports::run(settings, job),
+        Job::Generate { dir } => {
+            mbtool::docs::generate(dir)?;
             Ok(0)
         }
     }

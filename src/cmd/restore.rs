@@ -5,13 +5,12 @@ use std::sync::atomic::Ordering;
 
 use anyhow::Result;
 
-use mbtool::cli::RestoreArgs;
 use mbtool::error::Error;
 use mbtool::output::Format;
 use mbtool::output::{
     self, backup::difference_text, backup::range_text, encode::write_frame, plural,
 };
-use mbtool::settings::Settings;
+use mbtool::settings::{job, Settings};
 use mbtool_core::codec::{Frame, Mode, Pdu};
 use mbtool_core::master::backup::{restore_requests, verify};
 use mbtool_core::master::plan::parse_slave;
@@ -19,9 +18,9 @@ use mbtool_core::master::run::RunError;
 use mbtool_core::master::MasterError;
 use mbtool_core::slave::datafile;
 
-pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
-    let model = datafile::load(&args.file).map_err(Error::from)?;
-    let file = args.file.display();
+pub fn run(settings: &Settings, job: &job::Restore) -> Result<u8> {
+    let model = datafile::load(&job.file).map_err(Error::from)?;
+    let file = job.file.display();
     let entries = datafile::entries(&model);
     for entry in entries.iter().filter(|e| !e.table.is_writable()) {
         mbtool::note!(
@@ -37,10 +36,10 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
         ))
         .into());
     }
-    if args.dry_run {
+    if job.dry_run {
         // The frames, as encode would print them: no port is needed.
         let mode = super::shared::mode(settings);
-        let slave = parse_slave(&args.slave, false, mode == Mode::Tcp).map_err(Error::from)?;
+        let slave = parse_slave(&job.slave, false, mode == Mode::Tcp).map_err(Error::from)?;
         let mut out = output::stdout();
         for (i, request) in requests.iter().enumerate() {
             let frame = Frame {
@@ -56,7 +55,7 @@ pub fn run(settings: &Settings, args: &RestoreArgs) -> Result<u8> {
         out.flush()?;
         return Ok(0);
     }
-    let (mut connection, slave) = super::shared::connect_to(settings, &args.slave)?;
+    let (mut connection, slave) = super::shared::connect_to(settings, &job.slave)?;
     let stop = super::shared::stop_on_signal()?;
     connection.master.stop_on(stop.flag.clone());
     let master = &mut connection.master;

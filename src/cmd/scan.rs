@@ -5,13 +5,12 @@ use std::time::{Duration, Instant};
 
 use anyhow::Result;
 
-use mbtool::cli::{ProbeArg, ScanArgs};
 use mbtool::connection::{self, Role};
 use mbtool::error::Error;
 use mbtool::output::progress::ProgressLine;
 use mbtool::output::scan::{write_scan, Where};
 use mbtool::output::{self, colour_wanted};
-use mbtool::settings::Settings;
+use mbtool::settings::{job, Settings};
 use mbtool_core::codec::Mode;
 use mbtool_core::master::scan::{scan, sweep, Probe, Progress, ScanOptions, ScanReport};
 use mbtool_core::master::timeouts;
@@ -19,10 +18,10 @@ use mbtool_core::model::line::LineSettings;
 use mbtool_core::transport::serial;
 use mbtool_core::transport::Endpoint;
 
-pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
+pub fn run(settings: &Settings, job: &job::Scan) -> Result<u8> {
     let endpoint = connection::endpoint(&settings.connection)?;
     let mode = connection::mode(&settings.connection, Some(&endpoint), Role::Master)?;
-    let ids = &args.ids.0;
+    let ids = &job.ids;
     if mode != Mode::Tcp {
         if let Some(id) = ids.iter().find(|id| !(1..=247).contains(*id)) {
             return Err(Error::usage(format!(
@@ -33,7 +32,7 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
     }
     // Only a serial line of our own has settings to sweep, and other masters to hear.
     let serial = matches!(endpoint, Endpoint::Serial(_));
-    if args.listen.is_some() && !serial {
+    if job.listen.is_some() && !serial {
         return Err(Error::usage(
             "--listen hears other masters on a serial line; over TCP or sim their traffic never reaches mbtool",
         )
@@ -49,12 +48,9 @@ pub fn run(settings: &Settings, args: &ScanArgs) -> Result<u8> {
     };
     let options = ScanOptions {
         ids: ids.clone(),
-        probe: match args.probe {
-            ProbeArg::Read => Probe::Read,
-            ProbeArg::Id => Probe::Id,
-        },
-        listen: args.listen,
-        all: args.all,
+        probe: job.probe,
+        listen: job.listen,
+        all: job.all,
         tell_unit_ids: mode == Mode::Tcp,
     };
     let total = (ids.len() * lines.len()) as u64;

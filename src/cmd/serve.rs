@@ -5,15 +5,13 @@ use std::sync::Arc;
 
 use anyhow::{Context, Result};
 
-use mbtool::cli::ServeArgs;
 use mbtool::connection::{self, direction_needs_serial, line_settings, mode, Role};
 use mbtool::error::Error;
 use mbtool::output::serve::write_entry;
 use mbtool::output::Format;
-use mbtool::settings::Settings;
+use mbtool::settings::{job, Settings};
 use mbtool_core::listener::Link;
 use mbtool_core::model::address::parse_reference_span;
-use mbtool_core::slave::faults::FaultInjection;
 use mbtool_core::slave::server::{Logger, Server};
 use mbtool_core::slave::{datafile, DataModel, Slave};
 use mbtool_core::transport::Endpoint;
@@ -33,13 +31,13 @@ fn endpoint(settings: &Settings) -> Result<Endpoint, Error> {
     }
 }
 
-fn data_model(args: &ServeArgs) -> Result<DataModel> {
-    let mut model = match &args.data {
+fn data_model(job: &job::Serve) -> Result<DataModel> {
+    let mut model = match &job.data {
         // A file that cannot be read is an I/O failure; a bad line in it is bad input.
         Some(path) => datafile::load(path).map_err(Error::from)?,
         None => DataModel::manual_examples(),
     };
-    for range in &args.read_only {
+    for range in &job.read_only {
         let span = parse_reference_span(range)
             .map_err(|e| Error::usage(format!("--read-only {range}: {e}")))?;
         let start = u32::from(span.address);
@@ -61,32 +59,23 @@ fn data_model(args: &ServeArgs) -> Result<DataModel> {
     Ok(model)
 }
 
-pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
+pub fn run(settings: &Settings, job: &job::Serve) -> Result<u8> {
     let endpoint = endpoint(settings)?;
     let mode = mode(&settings.connection, Some(&endpoint), Role::Serve)?;
     direction_needs_serial(&settings.connection, &endpoint)?;
-    let security = super::shared::security(settings, &args.roles, &endpoint)?;
+    let security = super::shared::security(settings, &job.roles, &endpoint)?;
     let plain = security.is_none().then_some(&endpoint);
-    let plain_role = super::shared::plain_role(&args.roles, plain, security.is_some())?;
-    let ids = if args.slaves.is_empty() {
+    let plain_role = super::shared::plain_role(&job.roles, plain, security.is_some())?;
+    let ids = if job.slaves.is_empty() {
         vec![mbtool_core::slave::EXAMPLE_SLAVE]
     } else {
-        args.slaves.clone()
+        job.slaves.clone()
     };
-    let mut slave = Slave::new(&ids, data_model(args)?);
-    slave.identity.set(0x00, args.vendor.as_bytes());
-    slave.identity.set(0x01, args.product_code.as_bytes());
-    for (id, value) in &args.identity {
+    let mut slave = Slave::new(&ids, data_model(job)?);
+    for (id, value) in &job.identity {
         slave.identity.set(*id, value);
     }
-    let faults = FaultInjection {
-        delay: args.delay.unwrap_or_default(),
-        drop: args.drop.unwrap_or(0.0),
-        corrupt: args.corrupt.unwrap_or(0.0),
-        exceptions: args.exception.clone(),
-        garbage: args.garbage,
-    };
-    let logger: Option<Logger> = (!args.quiet).then(|| {
+    let logger: Option<Logger> = (!job.quiet).then(|| {
         let json = settings.output.format == Format::Json;
         Arc::new(move |entry: &mbtool_core::slave::server::LogEntry| {
             // One write a line, so that lines from several clients never mix.
@@ -100,8 +89,8 @@ pub fn run(settings: &Settings, args: &ServeArgs) -> Result<u8> {
     // a script, where it is otherwise ignored), SIGTERM and SIGHUP end it at once.
     ctrlc::set_handler(|| std::process::exit(0))
         .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
-    let seed = args.seed.unwrap_or_else(|| fastrand::u64(..));
-    let mut server = Server::new(slave, faults, mode, seed, logger);
+    let seed = job.seed.unwrap_or_else(|| fastrand::u64(..));
+    let mut server = Server::new(slave, job.faults.clone(), mode, seed, logger);
     if let Some(role) = &plain_role {
         mbtool::note!(
             "mbtool: every client gets role {} (no certificate)",

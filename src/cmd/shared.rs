@@ -9,11 +9,11 @@ use std::time::Instant;
 use anyhow::Result;
 use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
 
-use mbtool::cli::{RequestCommand, RoleArgs, Wire};
 use mbtool::connection::{self, Connection, Connector, Role};
 use mbtool::error::Error;
 use mbtool::output::device::Outcome;
 use mbtool::output::encode::frame_text;
+use mbtool::settings::job::{RoleSettings, TypedRequest};
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Mode, Request};
 use mbtool_core::listener::roles::Roles;
@@ -48,7 +48,7 @@ pub fn plan_options(settings: &Settings) -> PlanOptions {
 }
 
 /// Checks the command line of a request command and plans its requests.
-pub fn plan_for<W: Wire>(settings: &Settings, request: &RequestCommand<W>) -> Result<Plan, Error> {
+pub fn plan_for(settings: &Settings, request: &TypedRequest) -> Result<Plan, Error> {
     Ok(plan(&request.operation(), plan_options(settings))?)
 }
 
@@ -202,7 +202,7 @@ pub fn stop_on_signal() -> Result<Stop> {
 /// that is not tls://.
 pub fn security(
     settings: &Settings,
-    roles: &RoleArgs,
+    roles: &RoleSettings,
     endpoint: &Endpoint,
 ) -> Result<Option<Security>, Error> {
     if !matches!(endpoint, Endpoint::Tls { .. }) {
@@ -219,8 +219,8 @@ pub fn security(
     Ok(Some(Security::new(tls, rules)))
 }
 
-fn roles_given(roles: &RoleArgs) -> Result<Roles, Error> {
-    Roles::new(&roles.roles, roles.default_role.as_deref()).map_err(|e| Error::usage(e.to_string()))
+fn roles_given(roles: &RoleSettings) -> Result<Roles, Error> {
+    Roles::new(&roles.rules, roles.default_role.as_deref()).map_err(|e| Error::usage(e.to_string()))
 }
 
 /// The role of the clients of a plain `tcp://` listener where roles are checked
@@ -228,11 +228,11 @@ fn roles_given(roles: &RoleArgs) -> Result<Roles, Error> {
 /// past the roles would undo them. `plain` is the first plain listener, if any; `secure`
 /// whether a tls:// one listens beside it.
 pub fn plain_role(
-    roles: &RoleArgs,
+    roles: &RoleSettings,
     plain: Option<&Endpoint>,
     secure: bool,
 ) -> Result<Option<Arc<mbtool_core::listener::roles::Role>>, Error> {
-    let checked = !roles.roles.is_empty() || roles.default_role.is_some();
+    let checked = !roles.rules.is_empty() || roles.default_role.is_some();
     let Some(name) = &roles.plain_role else {
         return match plain {
             Some(plain) if checked && secure => Err(Error::usage(format!(

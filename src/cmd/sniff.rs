@@ -6,11 +6,10 @@ use std::path::Path;
 
 use anyhow::{Context, Result};
 
-use mbtool::cli::SniffArgs;
 use mbtool::error::Error;
 use mbtool::output;
 use mbtool::output::sniff::OutputFile;
-use mbtool::settings::Settings;
+use mbtool::settings::{job, Settings};
 use mbtool_core::sniff::capture;
 use mbtool_core::sniff::pcap::PcapWriter;
 use mbtool_core::sniff::timing;
@@ -37,22 +36,22 @@ fn open_input(path: &Path) -> Result<Input> {
     ))
 }
 
-pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
-    let mut input = match &args.input {
+pub fn run(settings: &Settings, job: &job::Sniff) -> Result<u8> {
+    let mut input = match &job.input {
         Some(path) => Some(open_input(path)?),
         None => None,
     };
-    match (&args.input, input.as_mut()) {
+    match (&job.input, input.as_mut()) {
         (Some(path), Some(reader)) => {
             let start = reader
                 .fill_buf()
                 .with_context(|| format!("cannot read {}", path.display()))?;
             if capture::is_capture(start) {
-                return tcp::replay_capture(settings, args, path, reader);
+                return tcp::replay_capture(settings, job, path, reader);
             }
             // A file is what its bytes are, whatever its name: `--save bus.cap` is read
             // back as the raw serial capture it is.
-            if !args.tcp_ports.is_empty() {
+            if !job.tcp_ports.is_empty() {
                 return Err(Error::usage(format!(
                     "{} is neither a pcap nor a pcapng file: give a capture written by \
                      tcpdump, dumpcap or Wireshark; a raw serial capture takes no --tcp-port",
@@ -82,8 +81,8 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
                 );
             }
         }
-        _ if args.interface.is_some() => return tcp::capture_live(settings, args),
-        _ if !args.tcp_ports.is_empty() => {
+        _ if job.interface.is_some() => return tcp::capture_live(settings, job),
+        _ if !job.tcp_ports.is_empty() => {
             return Err(Error::usage(
                 "--tcp-port picks the Modbus connections of a capture: give --input FILE.pcap",
             )
@@ -91,12 +90,12 @@ pub fn run(settings: &Settings, args: &SniffArgs) -> Result<u8> {
         }
         _ => {}
     }
-    serial::run(settings, args, input)
+    serial::run(settings, job, input)
 }
 
 /// `--pcap FILE`: the frames found, for Wireshark.
-fn pcap_file(args: &SniffArgs) -> Result<Option<PcapWriter<OutputFile>>> {
-    let Some(path) = &args.pcap else {
+fn pcap_file(job: &job::Sniff) -> Result<Option<PcapWriter<OutputFile>>> {
+    let Some(path) = &job.pcap else {
         return Ok(None);
     };
     let file = output::create_file(path, false)

@@ -8,14 +8,14 @@ use std::time::{Duration, Instant};
 use anyhow::Result;
 use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind, KeyModifiers};
 
-use mbtool::cli::ReadByReferenceArgs;
 use mbtool::connection::Connector;
 use mbtool::error::Error;
 use mbtool::output::watch::WatchState;
+use mbtool::settings::job::Request;
 use mbtool::settings::Settings;
 use mbtool_core::master::failover::Left;
 use mbtool_core::master::map::{read_points, Refused};
-use mbtool_core::master::plan::{plan, Operation};
+use mbtool_core::master::plan::plan;
 use mbtool_core::master::poll::{poll, PollOptions, Tick};
 use mbtool_core::master::run::RunError;
 use mbtool_core::master::Master;
@@ -29,25 +29,25 @@ const DEFAULT_INTERVAL: Duration = Duration::from_secs(1);
 /// The points of the command line: a map's, or those of a range.
 fn points(
     settings: &Settings,
-    args: &ReadByReferenceArgs,
+    request: &Request,
     target: &Connector,
 ) -> Result<(u8, Vec<Point>), Error> {
-    if let Some(path) = &args.map {
-        let (slave, names) = args.map_words();
-        let plan = super::map::plan(settings, path, slave, &names, target.is_tcp(), Access::Read)?;
-        return Ok((plan.slave, plan.points));
-    }
-    if !args.names.is_empty() {
-        return Err(Error::usage(
-            "watch takes SLAVE REFERENCE [COUNT]; point names come with --map FILE",
-        ));
-    }
-    let operation = Operation::Read {
-        slave: args.slave(),
-        address: args.reference.as_deref().unwrap_or_default(),
-        table: None,
-        count: args.count.as_deref(),
+    let typed = match request {
+        Request::ByMap(map) => {
+            let names: Vec<&str> = map.words.iter().map(String::as_str).collect();
+            let plan = super::map::plan(
+                settings,
+                &map.file,
+                map.slave.as_deref(),
+                &names,
+                target.is_tcp(),
+                Access::Read,
+            )?;
+            return Ok((plan.slave, plan.points));
+        }
+        Request::Typed(typed) => typed,
     };
+    let operation = typed.operation();
     let mut options = super::shared::plan_options(settings);
     options.tcp = target.is_tcp();
     let read = plan(&operation, options)?;
@@ -101,7 +101,7 @@ enum Update {
     Switched(String, Option<Left>),
 }
 
-pub fn run(settings: &Settings, args: &ReadByReferenceArgs) -> Result<u8> {
+pub fn run(settings: &Settings, request: &Request) -> Result<u8> {
     if !std::io::stdout().is_terminal() {
         return Err(Error::usage(
             "watch draws on a terminal; to log values give read ... --poll INTERVAL -o csv (or --log FILE)",
@@ -109,8 +109,9 @@ pub fn run(settings: &Settings, args: &ReadByReferenceArgs) -> Result<u8> {
         .into());
     }
     // A map's file may say where its device is, where the command line does not.
-    let placed = match &args.map {
-        Some(path) => {
+    let placed = match request {
+        Request::ByMap(by_map) => {
+            let path = &by_map.file;
             // Its warnings are told once, when its points are planned.
             let map = mbtool_core::model::map_file::load(path).map_err(Error::from)?;
             super::map::with_place(
@@ -120,11 +121,11 @@ pub fn run(settings: &Settings, args: &ReadByReferenceArgs) -> Result<u8> {
                 map.unknown_place.as_deref(),
             )?
         }
-        None => settings.clone(),
+        Request::Typed(_) => settings.clone(),
     };
     let settings = &placed;
     let target = Connector::new(&settings.connection)?;
-    let (slave, points) = points(settings, args, &target)?;
+    let (slave, points) = points(settings, request, &target)?;
     let title = format!(
         " slave {slave} on {} ",
         settings.connection.port.as_deref().unwrap_or_default()

@@ -107,9 +107,9 @@ fn every_help_example_is_one_the_command_accepts() {
         let words: Vec<&str> = line.split_whitespace().collect();
         let mut definition = mbtool::cli::definition();
         let os_words: Vec<std::ffi::OsString> = words.iter().map(Into::into).collect();
-        let (mut cli, origins) = mbtool::settings::read(&mut definition, os_words)
+        let (cli, origins) = mbtool::settings::read(&mut definition, os_words)
             .unwrap_or_else(|e| panic!("{line}: {e}"));
-        let resolved = mbtool::settings::resolve(&mut cli, &origins);
+        let resolved = mbtool::settings::resolve(cli, &origins);
         assert_eq!(resolved.err(), None, "{line}");
         let path = origins.path();
         let name = path[0];

@@ -9,12 +9,11 @@ use std::time::{SystemTime, UNIX_EPOCH};
 
 use anyhow::{Context, Result};
 
-use mbtool::cli::SniffArgs;
 use mbtool::connection;
 use mbtool::error::Error;
 use mbtool::output;
 use mbtool::output::sniff::{self, SniffSink};
-use mbtool::settings::Settings;
+use mbtool::settings::{job, Settings};
 use mbtool_core::codec::Mode;
 use mbtool_core::model::line::{DirectionControl, LineSettings};
 use mbtool_core::sniff::line;
@@ -28,8 +27,8 @@ use mbtool_core::transport::Endpoint;
 use super::{pcap_file, Input};
 
 /// The line's frames, live from `--port` or replayed from `input`, then the summary.
-pub(super) fn run(settings: &Settings, args: &SniffArgs, mut input: Option<Input>) -> Result<u8> {
-    let timing = match &args.input {
+pub(super) fn run(settings: &Settings, job: &job::Sniff, mut input: Option<Input>) -> Result<u8> {
+    let timing = match &job.input {
         Some(path) => TimingFile::beside(path).map_err(mbtool::error::replay_failed)?,
         None => None,
     };
@@ -42,8 +41,8 @@ pub(super) fn run(settings: &Settings, args: &SniffArgs, mut input: Option<Input
     }
     let (mode, line) = connection::sniffed_line(&settings.connection, timing.as_ref())?;
     let filter = Filter {
-        slaves: args.slaves.clone(),
-        functions: args.functions.clone(),
+        slaves: job.slaves.clone(),
+        functions: job.functions.clone(),
     };
     let silence = line.frame_gap();
     let mut session = Session::new(
@@ -52,9 +51,9 @@ pub(super) fn run(settings: &Settings, args: &SniffArgs, mut input: Option<Input
         silence.as_micros() as u64,
         filter,
     );
-    let mut save = match &args.save {
+    let mut save = match &job.save {
         Some(path) => {
-            let live = args.input.is_none();
+            let live = job.input.is_none();
             Some(save_file(
                 path,
                 live.then(|| RecordedLine::of(mode, &line)),
@@ -62,7 +61,7 @@ pub(super) fn run(settings: &Settings, args: &SniffArgs, mut input: Option<Input
         }
         None => None,
     };
-    let pcap = pcap_file(args)?;
+    let pcap = pcap_file(job)?;
     let epoch_us = SystemTime::now()
         .duration_since(UNIX_EPOCH)
         .map_or(0, |d| d.as_micros() as u64);
@@ -70,16 +69,16 @@ pub(super) fn run(settings: &Settings, args: &SniffArgs, mut input: Option<Input
         writer: sniff::writer(settings.output.format, output::colour_wanted()),
         out: output::stdout(),
         pcap,
-        epoch_us: if args.input.is_some() { 0 } else { epoch_us },
+        epoch_us: if job.input.is_some() { 0 } else { epoch_us },
         mode,
-        live: args
+        live: job
             .input
             .as_ref()
             .is_none_or(|path| path.as_os_str() == "-"),
-        stats: args.stats.then(Stats::default),
+        stats: job.stats.then(Stats::default),
     };
     let mut records = Vec::new();
-    let end = match (&args.input, input.as_mut()) {
+    let end = match (&job.input, input.as_mut()) {
         (Some(path), Some(input)) => {
             let pace = match &timing {
                 Some(timing) => Pace::Timed(timing),
@@ -113,7 +112,7 @@ pub(super) fn run(settings: &Settings, args: &SniffArgs, mut input: Option<Input
         }
         _ => Some(live(
             settings,
-            args,
+            job,
             line,
             mode,
             &mut session,
@@ -168,7 +167,7 @@ fn save_file(path: &Path, line: Option<RecordedLine>) -> Result<Saver> {
 /// Reads the port until Ctrl-C; returns the time the capture ended, in microseconds.
 fn live(
     settings: &Settings,
-    args: &SniffArgs,
+    job: &job::Sniff,
     line: LineSettings,
     mode: Mode,
     session: &mut Session,
@@ -190,7 +189,7 @@ fn live(
             .into())
         }
     };
-    if args.low_latency {
+    if job.low_latency {
         if let Err(message) = serial::set_low_latency(&path) {
             mbtool::note!("mbtool: {message}");
         }

@@ -7,11 +7,10 @@ use std::time::Duration;
 
 use anyhow::{Context, Result};
 
-use mbtool::cli::SniffArgs;
 use mbtool::error::Error;
 use mbtool::output;
 use mbtool::output::sniff::{self, SniffSink};
-use mbtool::settings::Settings;
+use mbtool::settings::{job, Settings};
 use mbtool_core::codec::Mode;
 use mbtool_core::sniff::capture;
 use mbtool_core::sniff::replay::RecordSink;
@@ -24,7 +23,7 @@ use super::{pcap_file, Input};
 /// The TCP session of a capture, and where its records go.
 fn tcp_session(
     settings: &Settings,
-    args: &SniffArgs,
+    job: &job::Sniff,
     live: bool,
 ) -> Result<(TcpSession, SniffSink)> {
     let mode = match settings.connection.mode {
@@ -38,27 +37,27 @@ fn tcp_session(
         }
     };
     let filter = Filter {
-        slaves: args.slaves.clone(),
-        functions: args.functions.clone(),
+        slaves: job.slaves.clone(),
+        functions: job.functions.clone(),
     };
-    let session = TcpSession::new(mode, modbus_ports(args), filter);
+    let session = TcpSession::new(mode, modbus_ports(job), filter);
     let sinks = SniffSink {
         writer: sniff::writer(settings.output.format, output::colour_wanted()),
         out: output::stdout(),
-        pcap: pcap_file(args)?,
+        pcap: pcap_file(job)?,
         epoch_us: 0,
         mode,
         live,
-        stats: args.stats.then(Stats::default),
+        stats: job.stats.then(Stats::default),
     };
     Ok((session, sinks))
 }
 
 /// The ports of the Modbus servers: `--tcp-port`, else 502.
-fn modbus_ports(args: &SniffArgs) -> Vec<u16> {
-    match args.tcp_ports.is_empty() {
+fn modbus_ports(job: &job::Sniff) -> Vec<u16> {
+    match job.tcp_ports.is_empty() {
         true => vec![MODBUS_PORT],
-        false => args.tcp_ports.clone(),
+        false => job.tcp_ports.clone(),
     }
 }
 
@@ -108,17 +107,17 @@ fn end_tcp(mut session: TcpSession, mut sinks: SniffSink) -> Result<()> {
 /// TCP session, the records shown as they come.
 pub(super) fn replay_capture(
     settings: &Settings,
-    args: &SniffArgs,
+    job: &job::Sniff,
     path: &Path,
     input: &mut Input,
 ) -> Result<u8> {
-    if args.save.is_some() {
+    if job.save.is_some() {
         return Err(Error::usage(
             "--save keeps the bytes of a serial line; a capture file is kept already (--pcap writes its Modbus frames)",
         )
         .into());
     }
-    let (mut session, mut sinks) = tcp_session(settings, args, false)?;
+    let (mut session, mut sinks) = tcp_session(settings, job, false)?;
     let mut records = Vec::new();
     let mut written = Ok(());
     let read = capture::read_packets(input, |packet| {
@@ -145,14 +144,14 @@ pub(super) fn replay_capture(
 
 /// `--interface NAME`: Modbus TCP captured live until Ctrl-C or SIGTERM, each frame shown
 /// as it comes; `--save` keeps the packets as pcapng.
-pub(super) fn capture_live(settings: &Settings, args: &SniffArgs) -> Result<u8> {
+pub(super) fn capture_live(settings: &Settings, job: &job::Sniff) -> Result<u8> {
     use mbtool_core::sniff::live::LiveCapture;
     use mbtool_core::sniff::pcap::PcapNgWriter;
-    let interface = args.interface.as_deref().unwrap_or_default();
-    let (mut session, mut sinks) = tcp_session(settings, args, true)?;
-    let ports = modbus_ports(args);
+    let interface = job.interface.as_deref().unwrap_or_default();
+    let (mut session, mut sinks) = tcp_session(settings, job, true)?;
+    let ports = modbus_ports(job);
     let mut capture = LiveCapture::open(interface, &ports).map_err(|e| anyhow::anyhow!("{e}"))?;
-    let mut save = match &args.save {
+    let mut save = match &job.save {
         Some(path) => Some(PcapNgWriter::new(
             output::create_file(path, false)
                 .with_context(|| format!("cannot create {}", path.display()))?,

@@ -1,8 +1,11 @@
-//! The command line resolved once into the settings the commands take. This module and
-//! `main.rs` are the only ones that know the clap definition's option types; a new option
-//! is defined in `cli` and resolved here, nowhere else. Every check of the command line as
+//! The command line resolved once into the plain types the commands take: the
+//! [`Settings`] they share and each one's [`Job`]. This module and `main.rs` are the only
+//! ones that know the clap definition's types; a new option is defined in `cli` and
+//! resolved here, nowhere else. Every check of the command line as
 //! a whole (an option the command does not take, a sweep outside scan, an `--output` that
 //! is no format) is made here, before any command runs.
+
+pub mod job;
 
 use std::path::PathBuf;
 use std::time::Duration;
@@ -15,6 +18,7 @@ use crate::cli::{
     Rs485Args, Taken,
 };
 use crate::output::{colour_wanted, Format, Style};
+use job::Job;
 use mbtool_core::codec::Mode;
 use mbtool_core::master::failover::{SwitchCondition, SwitchRule};
 use mbtool_core::master::timeouts;
@@ -260,8 +264,14 @@ pub fn refusal(path: &str, option: &clap::Arg) -> String {
     format!("{path} does not take {name} (see 'mbtool {path} --help' for the options it takes)")
 }
 
-/// The settings of a parsed command line, or the one-line message that refuses it.
-pub fn resolve(cli: &mut Cli, origins: &Origins) -> Result<Settings, String> {
+/// The settings and the job of a parsed command line, or the one-line message that
+/// refuses it.
+pub fn resolve(mut cli: Cli, origins: &Origins) -> Result<(Settings, Job), String> {
+    let settings = settings_of(&mut cli, origins)?;
+    Ok((settings, job::of(cli.command)?))
+}
+
+fn settings_of(cli: &mut Cli, origins: &Origins) -> Result<Settings, String> {
     let scan = matches!(cli.command, Command::Scan(_));
     let default_timeout = match cli.command {
         Command::Scan(_) => timeouts::SCAN,

@@ -1,0 +1,455 @@
+//! What each command is asked to do, in plain types: its own words and flags, resolved
+//! from the clap definition's arguments once. The options a command shares with others
+//! (the connection, the output, addresses and values, polling) are in
+//! [`Settings`](super::Settings); a command receives both and never sees clap.
+
+use std::path::PathBuf;
+use std::time::Duration;
+
+use mbtool_core::codec::Direction;
+use mbtool_core::gateway::UnitMap;
+use mbtool_core::master::plan::{How, Operation};
+use mbtool_core::master::scan::Probe;
+use mbtool_core::model::address::{Access, Table};
+use mbtool_core::slave::faults::FaultInjection;
+
+use crate::cli::{self, Command, ProbeArg, RequestArgs, RequestCommand, Wire};
+
+/// The command to run, with what it alone takes.
+#[derive(Clone, Debug)]
+pub enum Job {
+    /// A read, write or raw request on the bus.
+    Request(Request),
+    /// The frames a request would send.
+    Encode(Request),
+    Scan(Scan),
+    /// A full screen of values: a read by reference or a map's points.
+    Watch(Request),
+    Info(Device),
+    Diag(Diag),
+    Dump(Dump),
+    Restore(Restore),
+    Decode(Decode),
+    Sniff(Sniff),
+    Serve(Serve),
+    Gateway(Gateway),
+    Ports(Ports),
+    /// The completions and man pages, written under `dir`.
+    Generate {
+        dir: PathBuf,
+    },
+}
+
+/// A request: addresses and values as typed, or points of a register map by name.
+#[derive(Clone, Debug)]
+pub enum Request {
+    Typed(TypedRequest),
+    ByMap(MapRequest),
+}
+
+/// A request's words as typed, which the core's planner reads.
+#[derive(Clone, Debug)]
+pub enum TypedRequest {
+    /// Read `count` values (one when left out) from `address`: of `table`, or of the
+    /// table its reference names.
+    Read {
+        slave: String,
+        address: String,
+        table: Option<Table>,
+        count: Option<String>,
+    },
+    /// Write `values` from `address`, of `table` or of the table its reference names.
+    Write {
+        slave: String,
+        address: String,
+        table: Option<Table>,
+        values: Vec<String>,
+        how: How,
+    },
+    /// Send a PDU typed as hex words.
+    Raw { slave: String, pdu: Vec<String> },
+}
+
+impl TypedRequest {
+    /// The operation the core's planner checks and plans.
+    pub fn operation(&self) -> Operation<'_> {
+        match self {
+            TypedRequest::Read {
+                slave,
+                address,
+                table,
+                count,
+            } => Operation::Read {
+                slave,
+                address,
+                table: *table,
+                count: count.as_deref(),
+            },
+            TypedRequest::Write {
+                slave,
+                address,
+                table,
+                values,
+                how,
+            } => Operation::Write {
+                slave,
+                address,
+                table: *table,
+                values,
+                how: *how,
+            },
+            TypedRequest::Raw { slave, pdu } => Operation::Raw { slave, pdu },
+        }
+    }
+}
+
+/// `read --map` or `write --map`: a map's points by name.
+#[derive(Clone, Debug)]
+pub struct MapRequest {
+    /// The map's file.
+    pub file: PathBuf,
+    /// The slave typed; left out, the map's own.
+    pub slave: Option<String>,
+    /// A read's point names (none: every point), or a write's `NAME=VALUE` words.
+    pub words: Vec<String>,
+    /// [`Access::Read`] or [`Access::WriteOne`].
+    pub access: Access,
+}
+
+#[derive(Clone, Debug)]
+pub struct Scan {
+    /// The ids asked, in order, each once.
+    pub ids: Vec<u8>,
+    pub probe: Probe,
+    /// How long to listen at each setting before sending anything.
+    pub listen: Option<Duration>,
+    /// Every setting of the sweep, not only up to the first where a slave answers.
+    pub all: bool,
+}
+
+/// A command about one device: `info`.
+#[derive(Clone, Debug)]
+pub struct Device {
+    /// The slave as typed, checked once the framing is known.
+    pub slave: String,
+}
+
+#[derive(Clone, Debug)]
+pub struct Diag {
+    pub slave: String,
+    /// Clear the counters (08/0A) after reading them.
+    pub clear: bool,
+}
+
+#[derive(Clone, Debug)]
+pub struct Dump {
+    pub slave: String,
+    /// The ranges to save, as typed (400001-400100).
+    pub ranges: Vec<String>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Restore {
+    pub slave: String,
+    /// The data file to write back.
+    pub file: PathBuf,
+    /// Say what would be written, and write nothing.
+    pub dry_run: bool,
+}
+
+#[derive(Clone, Debug)]
+pub struct Decode {
+    /// The frames typed; none: standard input.
+    pub frames: Vec<String>,
+    /// Whether the frames are requests or responses, when the user says.
+    pub direction: Option<Direction>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Sniff {
+    /// A capture to read instead of the port (`-` for standard input).
+    pub input: Option<PathBuf>,
+    /// A network interface to capture Modbus TCP from.
+    pub interface: Option<String>,
+    /// The servers' TCP ports, when given.
+    pub tcp_ports: Vec<u16>,
+    /// Where every byte (or packet) seen is kept.
+    pub save: Option<PathBuf>,
+    /// Where the frames shown are written as pcap.
+    pub pcap: Option<PathBuf>,
+    /// Statistics per server and unit at the end.
+    pub stats: bool,
+    /// The slaves whose frames are shown (all when empty).
+    pub slaves: Vec<u8>,
+    /// The functions whose frames are shown (all when empty).
+    pub functions: Vec<u8>,
+    /// Ask the USB serial driver for its lowest latency.
+    pub low_latency: bool,
+}
+
+/// Who may do what over Modbus/TCP Security.
+#[derive(Clone, Debug)]
+pub struct RoleSettings {
+    /// `NAME=RULES` as typed.
+    pub rules: Vec<String>,
+    /// The role of a client whose certificate carries none.
+    pub default_role: Option<String>,
+    /// The role of every client of a plain tcp:// listener.
+    pub plain_role: Option<String>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Serve {
+    /// The slave ids answered.
+    pub slaves: Vec<u8>,
+    /// The data file the tables are loaded from.
+    pub data: Option<PathBuf>,
+    /// Ranges written to get exception 02.
+    pub read_only: Vec<String>,
+    pub faults: FaultInjection,
+    /// The seed of the faults' chances; left out, one of its own.
+    pub seed: Option<u64>,
+    /// No line per request.
+    pub quiet: bool,
+    pub roles: RoleSettings,
+    /// The identification objects (43/14) beyond the defaults, vendor and product first.
+    pub identity: Vec<(u8, Vec<u8>)>,
+}
+
+#[derive(Clone, Debug)]
+pub struct Gateway {
+    /// Where clients connect, as typed.
+    pub listen: Vec<String>,
+    pub unit_map: UnitMap,
+    /// Answer a broadcast as a slave answers a write.
+    pub broadcast_reply: bool,
+    /// No row per transaction.
+    pub quiet: bool,
+    pub roles: RoleSettings,
+}
+
+#[derive(Clone, Debug)]
+pub struct Ports {
+    /// Where sys, dev and proc are read from.
+    pub root: PathBuf,
+}
+
+/// The job of a parsed command, or the one line that refuses a command line whose words
+/// do not go together.
+pub fn of(command: Command) -> Result<Job, String> {
+    Ok(match command {
+        Command::Request(request) => Job::Request(request_of(request)?),
+        Command::Encode { request, .. } => Job::Encode(request_of(request)?),
+        Command::Scan(a) => Job::Scan(Scan {
+            ids: a.ids.0,
+            probe: match a.probe {
+                ProbeArg::Read => Probe::Read,
+                ProbeArg::Id => Probe::Id,
+            },
+            listen: a.listen,
+            all: a.all,
+        }),
+        Command::Watch(a) => Job::Watch(read_by_reference(a.read, "watch")?),
+        Command::Info(a) => Job::Info(Device { slave: a.slave }),
+        Command::Diag(a) => Job::Diag(Diag {
+            slave: a.slave,
+            clear: a.clear,
+        }),
+        Command::Dump(a) => Job::Dump(Dump {
+            slave: a.slave,
+            ranges: a.ranges,
+        }),
+        Command::Restore(a) => Job::Restore(Restore {
+            slave: a.slave,
+            file: a.file,
+            dry_run: a.dry_run,
+        }),
+        Command::Decode(a) => Job::Decode(Decode {
+            frames: a.frames,
+            direction: a.direction.map(Direction::from),
+        }),
+        Command::Sniff(a) => Job::Sniff(Sniff {
+            input: a.input,
+            interface: a.interface,
+            tcp_ports: a.tcp_ports,
+            save: a.save,
+            pcap: a.pcap,
+            stats: a.stats,
+            slaves: a.slaves,
+            functions: a.functions,
+            low_latency: a.low_latency,
+        }),
+        Command::Serve(a) => Job::Serve(serve(a)),
+        Command::Gateway(a) => Job::Gateway(Gateway {
+            listen: a.listen,
+            unit_map: a.unit_map.unwrap_or_default(),
+            broadcast_reply: a.broadcast_reply,
+            quiet: a.quiet,
+            roles: roles(a.roles),
+        }),
+        Command::Ports(a) => Job::Ports(Ports { root: a.root }),
+        Command::Generate(a) => Job::Generate { dir: a.dir },
+    })
+}
+
+fn serve(a: cli::ServeArgs) -> Serve {
+    let mut identity = vec![
+        (0x00, a.vendor.into_bytes()),
+        (0x01, a.product_code.into_bytes()),
+    ];
+    identity.extend(a.identity);
+    Serve {
+        slaves: match a.slaves.is_empty() {
+            true => vec![mbtool_core::slave::EXAMPLE_SLAVE],
+            false => a.slaves,
+        },
+        data: a.data,
+        read_only: a.read_only,
+        faults: FaultInjection {
+            delay: a.delay.unwrap_or_default(),
+            drop: a.drop.unwrap_or(0.0),
+            corrupt: a.corrupt.unwrap_or(0.0),
+            exceptions: a.exception,
+            garbage: a.garbage,
+        },
+        seed: a.seed,
+        quiet: a.quiet,
+        roles: roles(a.roles),
+        identity,
+    }
+}
+
+fn roles(a: cli::RoleArgs) -> RoleSettings {
+    RoleSettings {
+        rules: a.roles,
+        default_role: a.default_role,
+        plain_role: a.plain_role,
+    }
+}
+
+fn request_of<W: Wire>(command: RequestCommand<W>) -> Result<Request, String> {
+    use RequestCommand as C;
+    fn read<T: cli::Words>(a: cli::ReadArgs<T>) -> Request {
+        Request::Typed(TypedRequest::Read {
+            slave: a.slave,
+            address: a.address,
+            table: Some(T::TABLE),
+            count: a.count,
+        })
+    }
+    fn write<T: cli::Words>(a: cli::WriteArgs<T>) -> Request {
+        Request::Typed(TypedRequest::Write {
+            slave: a.slave,
+            address: a.address,
+            table: Some(T::TABLE),
+            values: a.values,
+            how: How::Multiple,
+        })
+    }
+    Ok(match command {
+        C::ReadCoils(RequestArgs { args, .. }) => read(args),
+        C::ReadInputs(RequestArgs { args, .. }) => read(args),
+        C::ReadHolding(RequestArgs { args, .. }) => read(args),
+        C::ReadInputRegisters(RequestArgs { args, .. }) => read(args),
+        C::Read(RequestArgs { args, .. }) => read_by_reference(args, "read")?,
+        C::WriteCoil(RequestArgs { args: a, .. }) => Request::Typed(TypedRequest::Write {
+            slave: a.slave,
+            address: a.address,
+            table: Some(Table::Coils),
+            values: vec![a.value],
+            how: How::Single,
+        }),
+        C::WriteRegister(RequestArgs { args: a, .. }) => Request::Typed(TypedRequest::Write {
+            slave: a.slave,
+            address: a.address,
+            table: Some(Table::HoldingRegisters),
+            values: vec![a.value],
+            how: How::OneRegister,
+        }),
+        C::WriteCoils(RequestArgs { args, .. }) => write(args),
+        C::WriteRegisters(RequestArgs { args, .. }) => write(args),
+        C::Write(RequestArgs { args, .. }) => write_by_reference(args)?,
+        C::Raw(RequestArgs { args: a, .. }) => Request::Typed(TypedRequest::Raw {
+            slave: a.slave,
+            pdu: a.pdu,
+        }),
+    })
+}
+
+/// `read` or `watch`: a reference, or with `--map` the points named. A first word that is
+/// no slave id is a point's name, SLAVE left out.
+fn read_by_reference(a: cli::ReadByReferenceArgs, command: &str) -> Result<Request, String> {
+    let Some(file) = a.map else {
+        if !a.names.is_empty() {
+            return Err(match command {
+                "watch" => {
+                    "watch takes SLAVE REFERENCE [COUNT]; point names come with --map FILE".into()
+                }
+                _ => format!(
+                    "{command} takes SLAVE REFERENCE [COUNT]; '{}' is one word too many (point names come with --map FILE)",
+                    a.names.join(" ")
+                ),
+            });
+        }
+        return Ok(Request::Typed(TypedRequest::Read {
+            slave: a.slave.unwrap_or_default(),
+            address: a.reference.unwrap_or_default(),
+            table: None,
+            count: a.count,
+        }));
+    };
+    let (slave, first) = split_slave(a.slave);
+    let words = first
+        .into_iter()
+        .chain(a.reference)
+        .chain(a.count)
+        .chain(a.names)
+        .collect();
+    Ok(Request::ByMap(MapRequest {
+        file,
+        slave,
+        words,
+        access: Access::Read,
+    }))
+}
+
+/// `write`: a reference and values, or with `--map` the `NAME=VALUE` words. A first word
+/// that is no slave id is an assignment, SLAVE left out.
+fn write_by_reference(a: cli::WriteByReferenceArgs) -> Result<Request, String> {
+    let Some(file) = a.map else {
+        return Ok(Request::Typed(TypedRequest::Write {
+            slave: a.slave,
+            address: a.reference.unwrap_or_default(),
+            table: None,
+            values: a.values,
+            how: How::Function(a.function.as_deref().and_then(|f| f.parse().ok())),
+        }));
+    };
+    if a.function.is_some() {
+        return Err(
+            "--function chooses how values are written by reference; a map writes each point as its type needs".into(),
+        );
+    }
+    let (slave, first) = split_slave(Some(a.slave));
+    let words = first
+        .into_iter()
+        .chain(a.reference)
+        .chain(a.values)
+        .collect();
+    Ok(Request::ByMap(MapRequest {
+        file,
+        slave,
+        words,
+        access: Access::WriteOne,
+    }))
+}
+
+/// The first word of a map command: the slave when it reads as a number, else the first
+/// of the other words.
+fn split_slave(first: Option<String>) -> (Option<String>, Option<String>) {
+    let is_slave = |word: &str| mbtool_core::input::number::parse_int(word).is_ok();
+    match first {
+        Some(word) if is_slave(&word) => (Some(word), None),
+        word => (None, word),
+    }
+}
