@@ -61,28 +61,34 @@ fn parse() -> Result<(Settings, Job), u8> {
 /// to read more.
 fn usage_error(error: &clap::Error, command: &clap::Command) -> String {
     let rendered = error.to_string();
-    // The command the error is about, as its usage line names it (`mbtool encode raw`),
-    // or, where clap shows no usage (a bad value), as the command line names it.
-    let typed = typed_commands(command);
-    let path: Vec<&str> = rendered
-        .lines()
-        .find_map(|l| l.trim().strip_prefix("Usage: "))
-        .map(|usage| {
-            usage
-                .split_whitespace()
-                .take_while(|word| !word.starts_with(['[', '<', '-']))
-                .collect()
-        })
-        .unwrap_or_else(|| typed.iter().map(String::as_str).collect());
+    // The command the error is about: `mbtool encode raw`, as far as the word clap
+    // stopped at.
+    // A bad value is told of the command whose option it is, as the line names it.
+    let stopped_at = match (
+        error.get(ContextKind::InvalidSubcommand),
+        error.get(ContextKind::InvalidArg),
+    ) {
+        (Some(ContextValue::String(word)), _) => Some(word.as_str()),
+        _ if matches!(
+            error.kind(),
+            ErrorKind::InvalidValue | ErrorKind::ValueValidation
+        ) =>
+        {
+            None
+        }
+        // `--port <PORT>`: the option as typed.
+        (_, Some(ContextValue::String(arg))) => arg.split_whitespace().next(),
+        _ => None,
+    };
+    let typed = typed_commands(command, stopped_at);
+    let path: Vec<&str> = typed.iter().map(String::as_str).collect();
     let subcommand = path
         .get(1..)
         .map(|words| words.join(" "))
         .unwrap_or_default();
-    let typed_path = typed
-        .get(1..)
-        .map(|words| words.join(" "))
-        .unwrap_or_default();
-    if let Some(message) = untaken(error, command, &typed_path) {
+    // An option the command does not take is told of the whole command, wherever typed.
+    let whole = typed_commands(command, None);
+    if let Some(message) = untaken(error, command, &whole[1..].join(" ")) {
         return message;
     }
     let mut message = match error.kind() {
@@ -201,20 +207,63 @@ fn words() -> impl Iterator<Item = String> {
     std::env::args_os().map(|word| word.to_string_lossy().into_owned())
 }
 
-/// `mbtool` and the command names on the command line: `["mbtool", "encode", "raw"]`.
-fn typed_commands(command: &clap::Command) -> Vec<String> {
+/// `mbtool` and the command names on the command line, `["mbtool", "encode", "raw"]`, up
+/// to the word `stop` when given. An option's value is passed over, as clap passes it
+/// over: `--port scan` names no command.
+fn typed_commands(command: &clap::Command, stop: Option<&str>) -> Vec<String> {
     // Every command built: a line refused before the command it names was reached.
     let mut whole = command.clone();
     whole.build();
     let mut path = vec!["mbtool".to_string()];
     let mut level = &whole;
-    for word in words().skip(1) {
+    let mut words = words().skip(1).peekable();
+    while let Some(word) = words.next() {
+        if word == "--" || stop.is_some_and(|stop| names(&word, stop)) {
+            break;
+        }
+        if let Some(option) = option_named(level, &word) {
+            // `--port sim`, `-p sim`; not `--port=sim` or `-psim`.
+            let value_apart = !word.contains('=') && (word.starts_with("--") || word.len() == 2);
+            // Unless the word after is the one clap stopped at (`--poll -1`).
+            let value_refused = words
+                .peek()
+                .zip(stop)
+                .is_some_and(|(next, stop)| names(next, stop));
+            if option.get_action().takes_values() && value_apart && !value_refused {
+                words.next();
+            }
+            continue;
+        }
         if let Some(sub) = level.find_subcommand(&word) {
             path.push(sub.get_name().to_string());
             level = sub;
         }
     }
     path
+}
+
+/// Whether `word` is `typed` (a command or an option) as typed: `--port` or `--port=sim`,
+/// `-p` or `-psim`.
+fn names(word: &str, typed: &str) -> bool {
+    let short = typed.len() == 2 && typed.starts_with('-') && typed != "--";
+    match word.strip_prefix(typed) {
+        Some(rest) => rest.is_empty() || rest.starts_with('=') || short,
+        None => false,
+    }
+}
+
+/// The option of `command` that `word` (`--port`, `--port=sim`, `-p`, `-psim`) names.
+fn option_named<'a>(command: &'a clap::Command, word: &str) -> Option<&'a clap::Arg> {
+    let word = word.split('=').next().unwrap_or(word);
+    if let Some(long) = word.strip_prefix("--") {
+        return command
+            .get_arguments()
+            .find(|arg| arg.get_long() == Some(long));
+    }
+    let short = word.strip_prefix('-')?.chars().next()?;
+    command
+        .get_arguments()
+        .find(|arg| arg.get_short() == Some(short))
 }
 
 /// `read-holding needs ADDRESS`.
