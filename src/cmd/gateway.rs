@@ -6,7 +6,7 @@ use std::sync::{mpsc, Arc, Mutex};
 
 use anyhow::Result;
 
-use mbtool::connection::{self, Role};
+use mbtool::connection::{self, Connector, Role};
 use mbtool::error::Error;
 use mbtool::output::gateway::GatewayWriter;
 use mbtool::output::{colour_wanted, Format, Named, PollRows};
@@ -15,26 +15,6 @@ use mbtool_core::gateway::{Event, Gateway, GatewayOptions, Line, Listening, Repo
 use mbtool_core::transport::Endpoint;
 
 use super::poll::{now, open_log, Log};
-
-/// The line: `--port`, required.
-fn upstream(settings: &Settings) -> Result<Endpoint, Error> {
-    if settings.connection.port.is_none() {
-        return Err(Error::usage(
-            "gateway needs --port: the serial line (/dev/ttyUSB0), rtu+tcp://HOST:PORT or tcp://HOST:PORT",
-        ));
-    }
-    // Parsed alone: the certificate options are the listener's.
-    let port = settings.connection.port.as_deref().unwrap_or_default();
-    let endpoint = Endpoint::parse(port)?;
-    if matches!(endpoint, Endpoint::Tls { .. }) {
-        // --cert, --key and --ca are the listener's: a line that is itself behind TLS
-        // would need a second set.
-        return Err(Error::usage(
-            "gateway --port: the line is a serial device, rtu+tcp:// or tcp://; tls:// is for --listen",
-        ));
-    }
-    Ok(endpoint)
-}
 
 /// Every `--listen`, bound before anything else is done, with how its clients connect.
 fn listeners(settings: &Settings, job: &job::Gateway) -> Result<Vec<(TcpListener, Listening)>> {
@@ -116,15 +96,15 @@ impl Monitor {
 }
 
 pub fn run(settings: &Settings, job: &job::Gateway) -> Result<u8> {
-    let endpoint = upstream(settings)?;
-    let mode = connection::mode(&settings.connection, Some(&endpoint), Role::Master)?;
-    connection::direction_needs_serial(&settings.connection, &endpoint)?;
+    let connector = Connector::new(&settings.connection, Role::Gateway)?;
+    let mode = connector.mode;
     // A port that cannot switch its RS-485 transceiver would be told as a line down
     // for ever: it is refused before clients are let in.
-    if let (Endpoint::Serial(path), false) =
-        (&endpoint, settings.connection.direction.is_automatic())
-    {
-        connection::open_serial(path, &connection::line_settings(&settings.connection, mode))?;
+    if let (Endpoint::Serial(_), false) = (
+        &connector.endpoint,
+        settings.connection.direction.is_automatic(),
+    ) {
+        connector.open_serial(&connector.line())?;
     }
     let format = settings.output.format;
     let log = settings
@@ -170,11 +150,10 @@ pub fn run(settings: &Settings, job: &job::Gateway) -> Result<u8> {
         let _ = stop.send(());
     })
     .map_err(|e| anyhow::anyhow!("cannot catch Ctrl-C: {e}"))?;
-    let connection = settings.connection.clone();
-    let (line_endpoint, verbose) = (endpoint.clone(), settings.output.verbose);
+    let (line_connector, verbose) = (connector.clone(), settings.output.verbose);
     let mut line = Line::new(
         Box::new(move || {
-            let mut master = connection::Connector::at(&connection, line_endpoint.clone(), mode)
+            let mut master = line_connector
                 .connect()
                 .map(|connected| connected.master)
                 .map_err(|e| e.to_string())?;
@@ -197,7 +176,7 @@ pub fn run(settings: &Settings, job: &job::Gateway) -> Result<u8> {
         });
     }
     // Said before the first client is taken, so that it is the first line.
-    let (serial_line, _) = connection::tried(&settings.connection, &endpoint, mode);
+    let (serial_line, _) = connector.tried_on(None);
     mbtool::note!(
         "mbtool: gateway on {} to the line {serial_line}; Ctrl-C ends",
         addresses.join(", ")

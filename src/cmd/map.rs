@@ -4,7 +4,7 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::connection::{self, Connection, Connector};
+use mbtool::connection::{Connection, Connector, Role};
 use mbtool::error::Error;
 use mbtool::output::{self, map::MapRows, map::MapWriter};
 use mbtool::settings::job::MapRequest;
@@ -53,7 +53,7 @@ pub fn with_place(
         )));
     }
     Ok(Settings {
-        connection: connection::with_map_connection(&settings.connection, connection),
+        connection: settings.connection.with_map(connection),
         ..settings.clone()
     })
 }
@@ -332,7 +332,7 @@ impl ByMap {
             return poll(
                 settings,
                 plan,
-                &Connector::new(&settings.connection)?,
+                &Connector::new(&settings.connection, Role::Master)?,
                 interval,
             );
         }
@@ -340,7 +340,7 @@ impl ByMap {
             let requests: Vec<Request> = writes.iter().map(|w| w.request.clone()).collect();
             super::shared::refuse_unsafe_retries(settings, &requests)?;
         }
-        let mut connection = Connector::new(&settings.connection)?.connect()?;
+        let mut connection = Connector::new(&settings.connection, Role::Master)?.connect()?;
         if settings.output.verbose {
             let mode = connection.connector.mode;
             connection.master.trace(super::shared::tracer(mode));

@@ -4,7 +4,7 @@ use std::io::Write;
 
 use anyhow::Result;
 
-use mbtool::connection::Connector;
+use mbtool::connection::{Connector, Role};
 use mbtool::error::Error;
 use mbtool::output;
 use mbtool::output::decode::DecodeWriter;
@@ -38,7 +38,7 @@ pub fn run(settings: &Settings, job: &Job) -> Result<u8> {
     };
     let plan = super::shared::plan_for(settings, request)?;
     super::shared::refuse_unsafe_retries(settings, &plan.requests)?;
-    let target = Connector::new(&settings.connection)?;
+    let target = Connector::new(&settings.connection, Role::Master)?;
     if let (Some(interval), Some((table, address))) = (settings.poll.interval, plan.reads) {
         return poll_reads(settings, &target, &plan, (table, address), interval);
     }

@@ -5,7 +5,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::Result;
 
-use mbtool::connection::{self, Role};
+use mbtool::connection::{Connector, Patience, Role};
 use mbtool::error::Error;
 use mbtool::output::progress::ProgressLine;
 use mbtool::output::scan::{write_scan, Where};
@@ -19,8 +19,8 @@ use mbtool_core::transport::serial;
 use mbtool_core::transport::Endpoint;
 
 pub fn run(settings: &Settings, job: &job::Scan) -> Result<u8> {
-    let endpoint = connection::endpoint(&settings.connection)?;
-    let mode = connection::mode(&settings.connection, Some(&endpoint), Role::Master)?;
+    let connector = Connector::new(&settings.connection, Role::Master)?;
+    let (endpoint, mode) = (&connector.endpoint, connector.mode);
     let ids = &job.ids;
     if mode != Mode::Tcp {
         if let Some(id) = ids.iter().find(|id| !(1..=247).contains(*id)) {
@@ -41,10 +41,10 @@ pub fn run(settings: &Settings, job: &job::Scan) -> Result<u8> {
     let lines: Vec<_> = if serial {
         sweep(&settings.connection.bauds, &settings.connection.parities)
             .into_iter()
-            .map(|(baud, parity)| connection::line_at(&settings.connection, mode, baud, parity))
+            .map(|(baud, parity)| connector.line_at(baud, parity))
             .collect()
     } else {
-        vec![connection::line_settings(&settings.connection, mode)]
+        vec![connector.line()]
     };
     let options = ScanOptions {
         ids: ids.clone(),
@@ -72,12 +72,11 @@ pub fn run(settings: &Settings, job: &job::Scan) -> Result<u8> {
         &lines,
         &options,
         |line| {
-            let answer = connection::Patience {
+            let answer = Patience {
                 timeout: timeout_at(settings, *line, options.probe),
                 retries: 0,
             };
-            let mut master =
-                connection::master_at(&settings.connection, &endpoint, mode, line, answer)?;
+            let mut master = connector.master_with(line, answer)?;
             if settings.output.verbose {
                 master.trace(super::shared::tracer(mode));
             }

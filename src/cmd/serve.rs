@@ -5,7 +5,7 @@ use std::sync::Arc;
 
 use anyhow::{Context, Result};
 
-use mbtool::connection::{self, direction_needs_serial, line_settings, mode, Role};
+use mbtool::connection::{self, Connector, Role};
 use mbtool::error::Error;
 use mbtool::output::serve::write_entry;
 use mbtool::output::Format;
@@ -15,21 +15,6 @@ use mbtool_core::model::address::parse_reference_span;
 use mbtool_core::slave::server::{Logger, Server};
 use mbtool_core::slave::{datafile, DataModel, Slave};
 use mbtool_core::transport::Endpoint;
-
-/// The port to serve on; `tcp://:PORT` listens on 127.0.0.1.
-fn endpoint(settings: &Settings) -> Result<Endpoint, Error> {
-    let port = settings.connection.port.as_deref().ok_or_else(|| {
-        Error::usage(
-            "serve needs --port: a serial device, or tcp://127.0.0.1:5020 to listen on TCP",
-        )
-    })?;
-    match Endpoint::parse_listen(port)? {
-        Endpoint::Sim => Err(Error::usage(
-            "--port sim is the built-in slave for the master commands; serve needs a serial device or tcp://ADDRESS:PORT",
-        )),
-        endpoint => Ok(endpoint),
-    }
-}
 
 fn data_model(job: &job::Serve) -> Result<DataModel> {
     let mut model = match &job.data {
@@ -60,11 +45,10 @@ fn data_model(job: &job::Serve) -> Result<DataModel> {
 }
 
 pub fn run(settings: &Settings, job: &job::Serve) -> Result<u8> {
-    let endpoint = endpoint(settings)?;
-    let mode = mode(&settings.connection, Some(&endpoint), Role::Serve)?;
-    direction_needs_serial(&settings.connection, &endpoint)?;
-    let security = super::shared::security(settings, &job.roles, &endpoint)?;
-    let plain = security.is_none().then_some(&endpoint);
+    let connector = Connector::new(&settings.connection, Role::Serve)?;
+    let (endpoint, mode) = (&connector.endpoint, connector.mode);
+    let security = super::shared::security(settings, &job.roles, endpoint)?;
+    let plain = security.is_none().then_some(endpoint);
     let plain_role = super::shared::plain_role(&job.roles, plain, security.is_some())?;
     let ids = if job.slaves.is_empty() {
         vec![mbtool_core::slave::EXAMPLE_SLAVE]
@@ -99,10 +83,10 @@ pub fn run(settings: &Settings, job: &job::Serve) -> Result<u8> {
         server = server.with_plain_role(role.as_ref().clone());
     }
     let ids_text = ids.iter().map(u8::to_string).collect::<Vec<_>>().join(", ");
-    match &endpoint {
+    match endpoint {
         Endpoint::Serial(path) => {
-            let line = line_settings(&settings.connection, mode);
-            let mut transport = connection::open_serial(path, &line)?;
+            let line = connector.line();
+            let mut transport = connector.open_serial(&line)?;
             mbtool::note!(
                 "mbtool: serving slave {ids_text} on {path} ({mode}, {} baud); Ctrl-C ends",
                 line.baud
@@ -120,7 +104,7 @@ pub fn run(settings: &Settings, job: &job::Serve) -> Result<u8> {
         Endpoint::Tcp { host, port }
         | Endpoint::RtuOverTcp { host, port }
         | Endpoint::Tls { host, port } => {
-            let listener = connection::listen(&endpoint, host, *port)?;
+            let listener = connection::listen(endpoint, host, *port)?;
             let address = listener.local_addr()?;
             let over = match security {
                 Some(_) => "Modbus TCP over TLS".to_string(),

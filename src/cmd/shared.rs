@@ -99,8 +99,8 @@ pub fn tracer(mode: Mode) -> mbtool_core::master::Tracer {
 
 /// A connection to the one slave a device command names: the slave checked before the
 /// port is opened, and `-v` showing every frame.
-pub fn connect_to<'a>(settings: &'a Settings, slave: &str) -> Result<(Connection<'a>, u8)> {
-    let connector = Connector::new(&settings.connection)?;
+pub fn connect_to(settings: &Settings, slave: &str) -> Result<(Connection, u8)> {
+    let connector = Connector::new(&settings.connection, Role::Master)?;
     let slave = parse_slave(slave, false, connector.is_tcp()).map_err(Error::from)?;
     let mut connection = connector.connect()?;
     if connection.master.path() == Some(PathName::Primary) {

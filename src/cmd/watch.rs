@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 use anyhow::Result;
 use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind, KeyModifiers};
 
-use mbtool::connection::Connector;
+use mbtool::connection::{Connector, Role};
 use mbtool::error::Error;
 use mbtool::output::watch::WatchState;
 use mbtool::settings::job::Request;
@@ -124,7 +124,7 @@ pub fn run(settings: &Settings, request: &Request) -> Result<u8> {
         Request::Typed(_) => settings.clone(),
     };
     let settings = &placed;
-    let target = Connector::new(&settings.connection)?;
+    let target = Connector::new(&settings.connection, Role::Master)?;
     let (slave, points) = points(settings, request, &target)?;
     let title = format!(
         " slave {slave} on {} ",
@@ -140,9 +140,8 @@ pub fn run(settings: &Settings, request: &Request) -> Result<u8> {
     let mut state = WatchState::new(title, &points);
     let poller = {
         let (settings, points, stop) = (settings.clone(), points.clone(), stop.clone());
-        let (endpoint, mode) = (target.endpoint.clone(), target.mode);
+        let target = target.clone();
         std::thread::spawn(move || {
-            let target = Connector::at(&settings.connection, endpoint, mode);
             poll_thread(
                 &settings, &target, slave, &points, interval, &stop, &updates,
             );

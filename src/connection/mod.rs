@@ -1,4 +1,9 @@
-//! From the connection options to a master talking to a slave.
+//! From the connection settings to what a command opens on `--port`: the [`Connector`],
+//! built once from the settings, checks the port and its framing for the command's
+//! [`Role`] and opens masters, serial lines and listeners on it; `told` says what went
+//! wrong, with what to try.
+
+mod told;
 
 use std::io;
 
@@ -8,31 +13,186 @@ use mbtool_core::codec::{ExceptionCode, Mode};
 use mbtool_core::master::failover::{open_pair, PairError, PathName, SwitchRule};
 use mbtool_core::master::open::{self, PathSettings};
 use mbtool_core::master::Master;
-use mbtool_core::model::line::DirectionControl;
 use mbtool_core::model::line::{LineSettings, Parity};
-use mbtool_core::model::map::MapConnection;
-use mbtool_core::sniff::replay::TimingFile;
-use mbtool_core::sniff::timing;
 use mbtool_core::transport::serial::Serial;
 use mbtool_core::transport::tls::{ClientTls, TlsSession};
 use mbtool_core::transport::Endpoint;
 
-/// The endpoint of `--port`; a missing port says what to give.
-pub fn endpoint(options: &ConnectionSettings) -> Result<Endpoint> {
-    let port = options.port.as_deref().ok_or_else(|| {
-        Error::usage(
-            "no --port: give a serial device (/dev/ttyUSB0), tcp://HOST[:PORT], tls://HOST[:PORT], rtu+tcp://HOST:PORT, or sim to try the built-in slave",
+pub use told::listen;
+
+/// The way to the device the settings name, for a command in its role: its endpoint and
+/// framing checked (a second path's too) before anything is opened, and everything a
+/// command opens on it and tells of it.
+#[derive(Clone, Debug)]
+pub struct Connector {
+    options: ConnectionSettings,
+    pub endpoint: Endpoint,
+    pub mode: Mode,
+}
+
+impl Connector {
+    /// The connector of `options` for a command in `role`: the endpoint of `--port`, which
+    /// the role must be able to use, and its framing.
+    pub fn new(options: &ConnectionSettings, role: Role) -> Result<Connector> {
+        let endpoint = endpoint(options, role)?;
+        let mode = mode(options, Some(&endpoint), role)?;
+        match role {
+            Role::Master => {
+                tls_fits(options, &endpoint)?;
+                secondary_target(options)?;
+            }
+            Role::Serve | Role::Gateway => direction_needs_serial(options, &endpoint)?,
+            Role::Sniff | Role::Encode => {}
+        }
+        Ok(Connector {
+            options: options.clone(),
+            endpoint,
+            mode,
+        })
+    }
+
+    /// Whether slave ids are TCP unit ids here.
+    pub fn is_tcp(&self) -> bool {
+        self.mode == Mode::Tcp
+    }
+
+    /// The serial line settings, defaults filled in as docs/serial-line.md gives them.
+    pub fn line(&self) -> LineSettings {
+        self.options.line(self.mode)
+    }
+
+    /// The serial line settings at `baud` and `parity` (a step of a scan's sweep).
+    pub fn line_at(&self, baud: u32, parity: Parity) -> LineSettings {
+        self.options.line_at(self.mode, baud, parity)
+    }
+
+    /// The serial port of `--port`, opened with `line`; a port that cannot switch its
+    /// RS-485 transceiver as asked says what to try instead.
+    pub fn open_serial(&self, line: &LineSettings) -> Result<Serial> {
+        let Endpoint::Serial(path) = &self.endpoint else {
+            return Err(Error::usage(format!(
+                "{} is no serial device: give one (/dev/ttyUSB0)",
+                self.endpoint
+            )));
+        };
+        Serial::open(path, line).map_err(|e| told::serial_failure(path, line, e))
+    }
+
+    /// A master on the device, for a command that ends at a failure: a failed request is
+    /// asked again on its path until the rule of a second path decides.
+    pub fn connect(&self) -> Result<Connection> {
+        let master = open_master(&self.options, &self.endpoint, self.mode, None, true)?;
+        Ok(Connection {
+            master,
+            connector: self.clone(),
+        })
+    }
+
+    /// A master for a poll, which counts a failure and asks again at its next interval,
+    /// starting on the path `first` where there are two (the primary if `None`).
+    pub fn master_on(&self, first: Option<PathName>) -> Result<Master> {
+        open_master(&self.options, &self.endpoint, self.mode, first, false)
+    }
+
+    /// A master on the primary path with the serial settings `line` and the patience
+    /// `answer` (a step of a scan, which sets its own).
+    pub fn master_with(&self, line: &LineSettings, answer: Patience) -> Result<Master> {
+        opened(
+            &self.options,
+            &self.endpoint,
+            self.mode,
+            line,
+            answer,
+            open::master,
         )
-    })?;
-    let endpoint = Endpoint::parse(port)?;
-    tls_fits(options, &endpoint)?;
-    Ok(endpoint)
+    }
+
+    /// Where and how the master on `path` asked, for a failure's message, and what
+    /// usually causes one there.
+    pub fn tried_on(&self, path: Option<PathName>) -> (String, &'static str) {
+        match (path, secondary_target(&self.options)) {
+            (Some(PathName::Secondary), Ok(Some((secondary, endpoint, mode)))) => {
+                told::tried(secondary, &endpoint, mode)
+            }
+            _ => told::tried(&self.options, &self.endpoint, self.mode),
+        }
+    }
+
+    /// Why the secondary path cannot be opened now, if it cannot: for a long command to
+    /// say at its start that the path it may need is not there (a typo, an unplugged
+    /// adapter), rather than when it is needed.
+    pub fn secondary_unavailable(&self) -> Option<String> {
+        let (secondary, endpoint, mode) = secondary_target(&self.options).ok()??;
+        single_master(secondary, &endpoint, mode)
+            .err()
+            .map(|error| error.to_string())
+    }
+}
+
+/// A master on the device, with what a failure on it should tell.
+pub struct Connection {
+    pub master: Master,
+    pub connector: Connector,
+}
+
+impl Connection {
+    /// `error`, a timeout told with where and how the master asked and what usually
+    /// causes one there. Exception 01 over TLS is told as what it may be: the server's
+    /// role check.
+    pub fn explain(&self, error: Error) -> Error {
+        if let (
+            Error::Exception {
+                code: ExceptionCode::ILLEGAL_FUNCTION,
+                ..
+            },
+            Endpoint::Tls { .. },
+        ) = (&error, &self.connector.endpoint)
+        {
+            return Error::MaybeRole(Box::new(error));
+        }
+        let (tried, advice) = self.connector.tried_on(self.master.path());
+        error.tried(tried, advice)
+    }
+}
+
+/// The endpoint of `--port`, which `role` must be able to use; a missing port says what
+/// to give.
+fn endpoint(options: &ConnectionSettings, role: Role) -> Result<Endpoint> {
+    let needed = match role {
+        Role::Serve => "serve needs --port: a serial device, or tcp://127.0.0.1:5020 to listen on TCP",
+        Role::Gateway => "gateway needs --port: the serial line (/dev/ttyUSB0), rtu+tcp://HOST:PORT or tcp://HOST:PORT",
+        Role::Sniff => "sniff needs --port DEVICE, or --input FILE to replay a capture",
+        Role::Master | Role::Encode => "no --port: give a serial device (/dev/ttyUSB0), tcp://HOST[:PORT], tls://HOST[:PORT], rtu+tcp://HOST:PORT, or sim to try the built-in slave",
+    };
+    let port = options
+        .port
+        .as_deref()
+        .ok_or_else(|| Error::usage(needed))?;
+    let endpoint = match role {
+        Role::Serve => Endpoint::parse_listen(port)?,
+        _ => Endpoint::parse(port)?,
+    };
+    match (role, &endpoint) {
+        (Role::Serve, Endpoint::Sim) => Err(Error::usage(
+            "--port sim is the built-in slave for the master commands; serve needs a serial device or tcp://ADDRESS:PORT",
+        )),
+        // --cert, --key and --ca are the listener's: a line that is itself behind TLS
+        // would need a second set.
+        (Role::Gateway, Endpoint::Tls { .. }) => Err(Error::usage(
+            "gateway --port: the line is a serial device, rtu+tcp:// or tcp://; tls:// is for --listen",
+        )),
+        (Role::Sniff, Endpoint::Serial(_)) => Ok(endpoint),
+        (Role::Sniff, _) => Err(Error::usage(
+            "sniff listens on a serial device; for a file give --input",
+        )),
+        _ => Ok(endpoint),
+    }
 }
 
 /// The certificate options against the port: for tls://, read and checked now, so that a
 /// poll or a watch does not start on files that cannot work; typed for another port (and
 /// no tls:// second path), refused, since they would do nothing.
-pub fn tls_fits(options: &ConnectionSettings, endpoint: &Endpoint) -> Result<()> {
+fn tls_fits(options: &ConnectionSettings, endpoint: &Endpoint) -> Result<()> {
     let secondary_tls = options
         .secondary
         .as_deref()
@@ -58,14 +218,20 @@ pub fn tls_options_unused(endpoint: &Endpoint) -> Error {
 /// any `--mode`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Role {
+    /// A master: the commands that ask a device.
     Master,
+    /// `serve`: a slave on a serial line or a TCP listener.
     Serve,
+    /// `gateway`'s line: a master to a serial line or a server.
+    Gateway,
+    /// `sniff`: a serial line listened to.
     Sniff,
+    /// `encode`: frames printed, nothing opened.
     Encode,
 }
 
 /// The framing on the wire: TCP for tcp://, otherwise --mode (RTU by default). `endpoint`
-/// is `None` where the command has no port to go by.
+/// is `None` where the command has no port to go by (`encode`, a capture replayed).
 pub fn mode(options: &ConnectionSettings, endpoint: Option<&Endpoint>, role: Role) -> Result<Mode> {
     let tcp_port = matches!(endpoint, Some(Endpoint::Tcp { .. } | Endpoint::Tls { .. }));
     match (tcp_port, options.mode, role) {
@@ -101,35 +267,9 @@ fn scheme(endpoint: Option<&Endpoint>) -> &'static str {
     }
 }
 
-/// The serial line settings, defaults filled in as docs/serial-line.md gives them.
-pub fn line_settings(options: &ConnectionSettings, mode: Mode) -> LineSettings {
-    line_at(options, mode, options.baud(), options.parity())
-}
-
-/// The serial line settings at `baud` and `parity` (a step of a scan's sweep), the data
-/// and stop bits as the options give them.
-pub fn line_at(
-    options: &ConnectionSettings,
-    mode: Mode,
-    baud: u32,
-    parity: Parity,
-) -> LineSettings {
-    LineSettings {
-        baud,
-        parity,
-        data_bits: options
-            .data_bits
-            .unwrap_or(if mode == Mode::Ascii { 7 } else { 8 }),
-        stop_bits: options
-            .stop_bits
-            .unwrap_or(if parity == Parity::None { 2 } else { 1 }),
-        direction: options.direction,
-    }
-}
-
 /// `--rs485` or `--rts-toggle` typed for a port that has no RTS to drive. From the
 /// environment they are left to the serial commands of the same shell.
-pub fn direction_needs_serial(options: &ConnectionSettings, endpoint: &Endpoint) -> Result<()> {
+fn direction_needs_serial(options: &ConnectionSettings, endpoint: &Endpoint) -> Result<()> {
     // With two paths, the options are for the one that is a serial line.
     let secondary_serial = options
         .secondary
@@ -146,25 +286,6 @@ pub fn direction_needs_serial(options: &ConnectionSettings, endpoint: &Endpoint)
             "--rs485 and --rts-toggle drive the RTS line of a serial port: {endpoint} has none (a gateway switches its own transceiver)"
         ))),
     }
-}
-
-/// Opens the serial port at `path` with `line`; a port that cannot switch its RS-485
-/// transceiver as asked says what to try instead.
-pub fn open_serial(path: &str, line: &LineSettings) -> Result<Serial> {
-    Serial::open(path, line).map_err(|e| serial_failure(path, line, e))
-}
-
-/// A serial port that did not open, told with what to try: the ports that are here, who
-/// holds it, or how else to switch its transceiver.
-fn serial_failure(path: &str, line: &LineSettings, e: io::Error) -> Error {
-    if e.kind() != io::ErrorKind::Unsupported {
-        return Error::Io(with_ports_here(path, e));
-    }
-    let hint = match line.direction {
-        DirectionControl::Kernel(_) => "try --rts-toggle",
-        _ => "try --rs485, or an adapter that switches its transceiver itself",
-    };
-    Error::Io(io::Error::new(e.kind(), format!("{e}: {hint}")))
 }
 
 /// What `open` (the core's transport or master) gives on the path of the options to
@@ -194,73 +315,16 @@ fn opened<T>(
         tls: tls.as_ref(),
     };
     let (opened, session) = open(&path).map_err(|e| match endpoint {
-        Endpoint::Serial(device) => serial_failure(device, line, e),
+        Endpoint::Serial(device) => told::serial_failure(device, line, e),
         _ => Error::Io(io::Error::new(
             e.kind(),
             format!("cannot connect to {endpoint}: {e}"),
         )),
     })?;
     if let (true, Some(session)) = (options.tell_session, session) {
-        tell_session(&session);
+        told::tell_session(&session);
     }
     Ok(opened)
-}
-
-/// `-v` on a TLS connection: what was agreed, whom it is with, and the role sent.
-fn tell_session(session: &TlsSession) {
-    let role = session
-        .role_sent
-        .as_deref()
-        .map_or_else(|| "none".to_string(), |role| format!("'{role}'"));
-    crate::note!(
-        "mbtool: {}, {}; device certificate {} (valid until {}); role sent: {role}",
-        session.version,
-        session.cipher_suite,
-        session.subject,
-        session.not_after
-    );
-}
-
-/// Where and how a master asked, for a timeout's message, and what usually causes one there.
-pub fn tried(
-    options: &ConnectionSettings,
-    endpoint: &Endpoint,
-    mode: Mode,
-) -> (String, &'static str) {
-    match endpoint {
-        Endpoint::Serial(path) => {
-            let line = line_settings(options, mode);
-            let parity = match line.parity {
-                Parity::None => "no parity",
-                Parity::Even => "even parity",
-                Parity::Odd => "odd parity",
-            };
-            (
-                format!(
-                    "on {path} ({mode}, {} baud, {parity}, {} data bits, {} stop {})",
-                    line.baud,
-                    line.data_bits,
-                    line.stop_bits,
-                    if line.stop_bits == 1 { "bit" } else { "bits" },
-                ),
-                "check the slave id, and --baud, --parity and --mode against the device's \
-                 settings, and the wiring (A and B swapped, no common ground)",
-            )
-        }
-        Endpoint::RtuOverTcp { .. } => (
-            format!("through {endpoint} ({mode})"),
-            "check the slave id, and the gateway's serial settings and wiring to the device",
-        ),
-        Endpoint::Sim => (
-            "from the built-in slave (sim)".into(),
-            "it answers as slave 17 only",
-        ),
-        Endpoint::Tcp { .. } | Endpoint::Tls { .. } => (
-            format!("from {endpoint}"),
-            "check the unit id (a gateway passes it on as the slave id) and that the device \
-             behind it answers",
-        ),
-    }
 }
 
 fn open_master(
@@ -290,12 +354,13 @@ fn single_master(options: &ConnectionSettings, endpoint: &Endpoint, mode: Mode) 
         timeout: options.timeout,
         retries: options.retries,
     };
-    master_at(
+    opened(
         options,
         endpoint,
         mode,
-        &line_settings(options, mode),
+        &options.line(mode),
         answer,
+        open::master,
     )
 }
 
@@ -345,280 +410,4 @@ fn redundant_master(
 pub struct Patience {
     pub timeout: std::time::Duration,
     pub retries: u32,
-}
-
-/// A master on `endpoint` with the serial settings `line` and `answer`, the rest as the
-/// options resolved them.
-pub fn master_at(
-    options: &ConnectionSettings,
-    endpoint: &Endpoint,
-    mode: Mode,
-    line: &LineSettings,
-    answer: Patience,
-) -> Result<Master> {
-    opened(options, endpoint, mode, line, answer, open::master)
-}
-
-/// The way to the device the options name, built once from them: its endpoint and
-/// framing checked (a second path's too) before anything is opened, and everything a
-/// command opens on it and tells of it.
-#[derive(Clone)]
-pub struct Connector<'a> {
-    options: &'a ConnectionSettings,
-    pub endpoint: Endpoint,
-    pub mode: Mode,
-}
-
-impl<'a> Connector<'a> {
-    /// The connector of `options`: the endpoint of `--port` and its framing.
-    pub fn new(options: &'a ConnectionSettings) -> Result<Connector<'a>> {
-        let endpoint = endpoint(options)?;
-        let mode = mode(options, Some(&endpoint), Role::Master)?;
-        secondary_target(options)?;
-        Ok(Connector {
-            options,
-            endpoint,
-            mode,
-        })
-    }
-
-    /// The connector of `options` to `endpoint`, framed in `mode`, as another command's
-    /// line (the gateway's) is reached.
-    pub fn at(options: &'a ConnectionSettings, endpoint: Endpoint, mode: Mode) -> Connector<'a> {
-        Connector {
-            options,
-            endpoint,
-            mode,
-        }
-    }
-
-    /// Whether slave ids are TCP unit ids here.
-    pub fn is_tcp(&self) -> bool {
-        self.mode == Mode::Tcp
-    }
-
-    /// A master on the device, for a command that ends at a failure: a failed request is
-    /// asked again on its path until the rule of a second path decides.
-    pub fn connect(&self) -> Result<Connection<'a>> {
-        let master = open_master(self.options, &self.endpoint, self.mode, None, true)?;
-        Ok(Connection {
-            master,
-            connector: self.clone(),
-        })
-    }
-
-    /// A master for a poll, which counts a failure and asks again at its next interval,
-    /// starting on the path `first` where there are two (the primary if `None`).
-    pub fn master_on(&self, first: Option<PathName>) -> Result<Master> {
-        open_master(self.options, &self.endpoint, self.mode, first, false)
-    }
-
-    /// Where and how the master on `path` asked, for a failure's message, and what
-    /// usually causes one there.
-    pub fn tried_on(&self, path: Option<PathName>) -> (String, &'static str) {
-        tried_on(self.options, &self.endpoint, self.mode, path)
-    }
-
-    /// Why the secondary path cannot be opened now, if it cannot: for a long command to
-    /// say at its start that the path it may need is not there (a typo, an unplugged
-    /// adapter), rather than when it is needed.
-    pub fn secondary_unavailable(&self) -> Option<String> {
-        let (secondary, endpoint, mode) = secondary_target(self.options).ok()??;
-        single_master(secondary, &endpoint, mode)
-            .err()
-            .map(|error| error.to_string())
-    }
-}
-
-/// A master on the device, with what a failure on it should tell.
-pub struct Connection<'a> {
-    pub master: Master,
-    pub connector: Connector<'a>,
-}
-
-impl Connection<'_> {
-    /// `error`, a timeout told with where and how the master asked and what usually
-    /// causes one there. Exception 01 over TLS is told as what it may be: the server's
-    /// role check.
-    pub fn explain(&self, error: Error) -> Error {
-        if let (
-            Error::Exception {
-                code: ExceptionCode::ILLEGAL_FUNCTION,
-                ..
-            },
-            Endpoint::Tls { .. },
-        ) = (&error, &self.connector.endpoint)
-        {
-            return Error::MaybeRole(Box::new(error));
-        }
-        let (tried, advice) = self.connector.tried_on(self.master.path());
-        error.tried(tried, advice)
-    }
-}
-
-/// [`tried`] on the path `path` of the options, where there are two: the secondary's
-/// port and line when the master is there.
-fn tried_on(
-    options: &ConnectionSettings,
-    endpoint: &Endpoint,
-    mode: Mode,
-    path: Option<PathName>,
-) -> (String, &'static str) {
-    match (path, secondary_target(options)) {
-        (Some(PathName::Secondary), Ok(Some((secondary, endpoint, mode)))) => {
-            tried(secondary, &endpoint, mode)
-        }
-        _ => tried(options, endpoint, mode),
-    }
-}
-
-/// A serial port that cannot be opened because it is not there, told with the serial
-/// ports that are (`/dev/ttyUSB0, /dev/ttyS0`), or that there is none.
-fn with_ports_here(path: &str, error: io::Error) -> io::Error {
-    if std::path::Path::new(path).exists() {
-        return with_holders(path, error);
-    }
-    let mut ports: Vec<String> = mbtool_core::transport::serial::ports_here();
-    ports.retain(|port| port != path);
-    let here = match ports.as_slice() {
-        [] => "no serial port is here".to_string(),
-        ports => format!("the serial ports here are {}", ports.join(", ")),
-    };
-    io::Error::new(error.kind(), format!("{error} ({here})"))
-}
-
-/// A port that another process has open is named with the process, so that it can be
-/// closed (a terminal program, a forgotten `mbtool watch`, ModemManager).
-fn with_holders(path: &str, error: io::Error) -> io::Error {
-    let holders = mbtool_core::transport::ports::holders_of(std::path::Path::new("/"), path);
-    if holders.is_empty() {
-        return error;
-    }
-    io::Error::new(
-        error.kind(),
-        format!(
-            "{error}: {path} is open in {}; close it there first",
-            processes(&holders)
-        ),
-    )
-}
-
-/// Processes as a message names them: `minicom (pid 4242), pid 77`.
-pub fn processes(holders: &[mbtool_core::transport::ports::Holder]) -> String {
-    holders
-        .iter()
-        .map(|holder| match &holder.command {
-            Some(command) => format!("{command} (pid {})", holder.pid),
-            None => format!("pid {}", holder.pid),
-        })
-        .collect::<Vec<_>>()
-        .join(", ")
-}
-
-/// A TCP listener on `host:port` for `endpoint`; a port another process listens on is
-/// named with that process.
-pub fn listen(endpoint: &Endpoint, host: &str, port: u16) -> anyhow::Result<std::net::TcpListener> {
-    std::net::TcpListener::bind((host, port)).map_err(|error| {
-        let holders = match error.kind() {
-            io::ErrorKind::AddrInUse => {
-                mbtool_core::transport::ports::listeners_of(std::path::Path::new("/"), port)
-            }
-            _ => Vec::new(),
-        };
-        match holders.as_slice() {
-            [] => anyhow::anyhow!("cannot listen on {endpoint}: {error}"),
-            held => anyhow::anyhow!(
-                "cannot listen on {endpoint}: {error}: port {port} is taken by {}; stop it, or give another port",
-                processes(held)
-            ),
-        }
-    })
-}
-
-/// The connection settings with what a map's file says of its device (a Home Assistant
-/// hub's host and port, or serial device and line) where the command line says nothing.
-pub fn with_map_connection(
-    options: &ConnectionSettings,
-    from_map: Option<&MapConnection>,
-) -> ConnectionSettings {
-    let mut options = options.clone();
-    let Some(from_map) = from_map.filter(|_| options.port.is_none()) else {
-        return options;
-    };
-    options.port = Some(from_map.port.clone());
-    if options.mode.is_none() {
-        options.mode = match from_map.mode.as_deref() {
-            Some("ascii") => Some(Mode::Ascii),
-            Some("rtu") => Some(Mode::Rtu),
-            _ => None,
-        };
-    }
-    if let (false, Some(baud)) = (options.baud_given, from_map.baud) {
-        options.bauds = vec![baud];
-    }
-    let parity = match from_map.parity.map(|p| p.to_ascii_uppercase()) {
-        Some('E') => Some(Parity::Even),
-        Some('O') => Some(Parity::Odd),
-        Some('N') => Some(Parity::None),
-        _ => None,
-    };
-    if let (false, Some(parity)) = (options.parity_given, parity) {
-        options.parities = vec![parity];
-    }
-    options.data_bits = options.data_bits.or(from_map.data_bits);
-    options.stop_bits = options.stop_bits.or(from_map.stop_bits);
-    options
-}
-
-/// The mode and line the bytes were sent on: as the options give them, but for a capture
-/// whose `timing` file records the line it was taken on, which a replay takes (so that a
-/// silence is what it was live) save where an option is typed (or set in the
-/// environment), and then says so.
-pub fn sniffed_line(
-    options: &ConnectionSettings,
-    timing: Option<&TimingFile>,
-) -> Result<(Mode, LineSettings)> {
-    let Some((timing, recorded)) = timing.and_then(|timing| Some((timing, timing.line()?))) else {
-        let mode = mode(options, None, Role::Sniff)?;
-        let line = line_settings(options, mode);
-        if let Some(timing) = timing.filter(|_| !options.baud_given && !options.parity_given) {
-            crate::note!(
-                "mbtool: {} does not say which line the capture was taken on: replaying it as \
-                 {}; give -b and --parity if it was another",
-                timing.path().display(),
-                timing::RecordedLine::of(mode, &line)
-            );
-        }
-        return Ok((mode, line));
-    };
-    let mode = match options.mode {
-        Some(_) => mode(options, None, Role::Sniff)?,
-        None => recorded.mode,
-    };
-    let baud = match options.baud_given {
-        true => options.baud(),
-        false => recorded.baud,
-    };
-    let parity = match options.parity_given {
-        true => options.parity(),
-        false => recorded.parity,
-    };
-    // The character as recorded, unless the mode or the parity given changes it: then the
-    // data and stop bits that go with those, as on a port.
-    let mut line = line_at(options, mode, baud, parity);
-    if options.data_bits.is_none() && mode == recorded.mode {
-        line.data_bits = recorded.data_bits;
-    }
-    if options.stop_bits.is_none() && parity == recorded.parity {
-        line.stop_bits = recorded.stop_bits;
-    }
-    let replayed = timing::RecordedLine::of(mode, &line);
-    if replayed != recorded {
-        crate::note!(
-            "mbtool: {} records the line as {recorded}; replaying it as {replayed}, as the \
-             options say",
-            timing.path().display()
-        );
-    }
-    Ok((mode, line))
 }

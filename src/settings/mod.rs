@@ -23,8 +23,8 @@ use mbtool_core::codec::Mode;
 use mbtool_core::master::failover::{SwitchCondition, SwitchRule};
 use mbtool_core::master::timeouts;
 use mbtool_core::model::address::Numbering;
-use mbtool_core::model::line::Parity;
-use mbtool_core::model::line::{DirectionControl, RtsTiming};
+use mbtool_core::model::line::{DirectionControl, LineSettings, Parity, RtsTiming};
+use mbtool_core::model::map::MapConnection;
 use mbtool_core::model::values::{ByteOrder, ValueType};
 use mbtool_core::transport::tls::TlsFiles;
 use mbtool_core::transport::Endpoint;
@@ -92,6 +92,59 @@ impl ConnectionSettings {
     /// The serial parity, as [`ConnectionSettings::baud`].
     pub fn parity(&self) -> Parity {
         self.parities.first().copied().unwrap_or(Parity::Even)
+    }
+
+    /// The serial line settings, defaults filled in as docs/serial-line.md gives them.
+    pub fn line(&self, mode: Mode) -> LineSettings {
+        self.line_at(mode, self.baud(), self.parity())
+    }
+
+    /// The serial line settings at `baud` and `parity` (a step of a scan's sweep), the
+    /// data and stop bits as the options give them.
+    pub fn line_at(&self, mode: Mode, baud: u32, parity: Parity) -> LineSettings {
+        LineSettings {
+            baud,
+            parity,
+            data_bits: self
+                .data_bits
+                .unwrap_or(if mode == Mode::Ascii { 7 } else { 8 }),
+            stop_bits: self
+                .stop_bits
+                .unwrap_or(if parity == Parity::None { 2 } else { 1 }),
+            direction: self.direction,
+        }
+    }
+
+    /// The connection settings with what a map's file says of its device (a Home Assistant
+    /// hub's host and port, or serial device and line) where the command line says nothing.
+    pub fn with_map(&self, from_map: Option<&MapConnection>) -> ConnectionSettings {
+        let mut options = self.clone();
+        let Some(from_map) = from_map.filter(|_| options.port.is_none()) else {
+            return options;
+        };
+        options.port = Some(from_map.port.clone());
+        if options.mode.is_none() {
+            options.mode = match from_map.mode.as_deref() {
+                Some("ascii") => Some(Mode::Ascii),
+                Some("rtu") => Some(Mode::Rtu),
+                _ => None,
+            };
+        }
+        if let (false, Some(baud)) = (options.baud_given, from_map.baud) {
+            options.bauds = vec![baud];
+        }
+        let parity = match from_map.parity.map(|p| p.to_ascii_uppercase()) {
+            Some('E') => Some(Parity::Even),
+            Some('O') => Some(Parity::Odd),
+            Some('N') => Some(Parity::None),
+            _ => None,
+        };
+        if let (false, Some(parity)) = (options.parity_given, parity) {
+            options.parities = vec![parity];
+        }
+        options.data_bits = options.data_bits.or(from_map.data_bits);
+        options.stop_bits = options.stop_bits.or(from_map.stop_bits);
+        options
     }
 }
 

@@ -9,11 +9,10 @@ use std::time::{SystemTime, UNIX_EPOCH};
 
 use anyhow::{Context, Result};
 
-use mbtool::connection;
-use mbtool::error::Error;
+use mbtool::connection::{self, Connector, Role};
 use mbtool::output;
 use mbtool::output::sniff::{self, SniffSink};
-use mbtool::settings::{job, Settings};
+use mbtool::settings::{job, ConnectionSettings, Settings};
 use mbtool_core::codec::Mode;
 use mbtool_core::model::line::{DirectionControl, LineSettings};
 use mbtool_core::sniff::line;
@@ -22,7 +21,6 @@ use mbtool_core::sniff::session::{Filter, Session};
 use mbtool_core::sniff::stats::Stats;
 use mbtool_core::sniff::timing::{self, RecordedLine, Saver};
 use mbtool_core::transport::serial;
-use mbtool_core::transport::Endpoint;
 
 use super::{pcap_file, Input};
 
@@ -39,7 +37,7 @@ pub(super) fn run(settings: &Settings, job: &job::Sniff, mut input: Option<Input
             timing.path().display()
         );
     }
-    let (mode, line) = connection::sniffed_line(&settings.connection, timing.as_ref())?;
+    let (mode, line) = sniffed_line(&settings.connection, timing.as_ref())?;
     let filter = Filter {
         slaves: job.slaves.clone(),
         functions: job.functions.clone(),
@@ -174,21 +172,8 @@ fn live(
     sinks: &mut SniffSink,
     save: &mut Option<Saver>,
 ) -> Result<u64> {
-    let path = match settings.connection.port.as_deref().map(Endpoint::parse) {
-        Some(Ok(Endpoint::Serial(path))) => path,
-        Some(Ok(_)) => {
-            return Err(
-                Error::usage("sniff listens on a serial device; for a file give --input").into(),
-            )
-        }
-        Some(Err(e)) => return Err(Error::from(e).into()),
-        None => {
-            return Err(Error::usage(
-                "sniff needs --port DEVICE, or --input FILE to replay a capture",
-            )
-            .into())
-        }
-    };
+    let connector = Connector::new(&settings.connection, Role::Sniff)?;
+    let path = connector.endpoint.to_string();
     if job.low_latency {
         if let Err(message) = serial::set_low_latency(&path) {
             mbtool::note!("mbtool: {message}");
@@ -200,7 +185,7 @@ fn live(
         direction: DirectionControl::Automatic,
         ..line
     };
-    let mut port = connection::open_serial(&path, &line)?;
+    let mut port = connector.open_serial(&line)?;
     let stop = Arc::new(AtomicBool::new(false));
     let stopper = Arc::clone(&stop);
     ctrlc::set_handler(move || stopper.store(true, Ordering::SeqCst))
@@ -222,4 +207,57 @@ fn live(
         &stop,
         bursts,
     )?)
+}
+
+/// The mode and line the bytes were sent on: as the options give them, but for a capture
+/// whose `timing` file records the line it was taken on, which a replay takes (so that a
+/// silence is what it was live) save where an option is typed (or set in the
+/// environment), and then says so.
+fn sniffed_line(
+    options: &ConnectionSettings,
+    timing: Option<&TimingFile>,
+) -> Result<(Mode, LineSettings)> {
+    let Some((timing, recorded)) = timing.and_then(|timing| Some((timing, timing.line()?))) else {
+        let mode = connection::mode(options, None, Role::Sniff)?;
+        let line = options.line(mode);
+        if let Some(timing) = timing.filter(|_| !options.baud_given && !options.parity_given) {
+            mbtool::note!(
+                "mbtool: {} does not say which line the capture was taken on: replaying it as \
+                 {}; give -b and --parity if it was another",
+                timing.path().display(),
+                timing::RecordedLine::of(mode, &line)
+            );
+        }
+        return Ok((mode, line));
+    };
+    let mode = match options.mode {
+        Some(_) => connection::mode(options, None, Role::Sniff)?,
+        None => recorded.mode,
+    };
+    let baud = match options.baud_given {
+        true => options.baud(),
+        false => recorded.baud,
+    };
+    let parity = match options.parity_given {
+        true => options.parity(),
+        false => recorded.parity,
+    };
+    // The character as recorded, unless the mode or the parity given changes it: then the
+    // data and stop bits that go with those, as on a port.
+    let mut line = options.line_at(mode, baud, parity);
+    if options.data_bits.is_none() && mode == recorded.mode {
+        line.data_bits = recorded.data_bits;
+    }
+    if options.stop_bits.is_none() && parity == recorded.parity {
+        line.stop_bits = recorded.stop_bits;
+    }
+    let replayed = timing::RecordedLine::of(mode, &line);
+    if replayed != recorded {
+        mbtool::note!(
+            "mbtool: {} records the line as {recorded}; replaying it as {replayed}, as the \
+             options say",
+            timing.path().display()
+        );
+    }
+    Ok((mode, line))
 }
