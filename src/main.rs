@@ -222,6 +222,11 @@ fn typed_commands(command: &clap::Command, stop: Option<&str>) -> Vec<String> {
             break;
         }
         if let Some(option) = option_named(level, &word) {
+            // The option clap stopped at, typed short: `-p` for `--port`.
+            let long = option.get_long().map(|long| format!("--{long}"));
+            if long.is_some() && long.as_deref() == stop {
+                break;
+            }
             // `--port sim`, `-p sim`; not `--port=sim` or `-psim`.
             let value_apart = !word.contains('=') && (word.starts_with("--") || word.len() == 2);
             // Unless the word after is the one clap stopped at (`--poll -1`).

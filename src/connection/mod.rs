@@ -35,10 +35,12 @@ impl Connector {
     /// the role must be able to use, and its framing.
     pub fn new(options: &ConnectionSettings, role: Role) -> Result<Connector> {
         let endpoint = endpoint(options, role)?;
+        if role == Role::Master {
+            tls_fits(options, &endpoint)?;
+        }
         let mode = mode(options, Some(&endpoint), role)?;
         match role {
             Role::Master => {
-                tls_fits(options, &endpoint)?;
                 secondary_target(options)?;
             }
             Role::Serve | Role::Gateway => direction_needs_serial(options, &endpoint)?,
