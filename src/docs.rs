@@ -42,9 +42,9 @@ fn environment(command: &clap::Command) -> Vec<(String, String)> {
     variables
 }
 
-/// What `mbtool` alone prints: the usage line, the commands, and where to go next, as
-/// `git` does.
-pub fn short_usage(command: &clap::Command) -> String {
+/// What `mbtool` alone prints (or `mbtool encode` alone, `path`): the usage line, the
+/// commands, and where to go next, as `git` does.
+pub fn short_usage(command: &clap::Command, path: &str) -> String {
     let commands: Vec<(&str, String)> = command
         .get_subcommands()
         .filter(|sub| !sub.is_hide_set() && sub.get_name() != "help")
@@ -58,14 +58,17 @@ pub fn short_usage(command: &clap::Command) -> String {
         .map(|(name, _)| name.len())
         .max()
         .unwrap_or(0);
-    let mut text = String::from("Usage: mbtool [OPTIONS] <COMMAND> [ARGS]\n\nCommands:\n");
+    let mut text = format!("Usage: {path} [OPTIONS] <COMMAND> [ARGS]\n\nCommands:\n");
     for (name, about) in &commands {
         text.push_str(&format!("  {name:width$}  {about}\n"));
     }
-    text.push_str(
-        "\nTry it without hardware: mbtool --port sim read-holding 17 400108 3\n\
-         'mbtool --help' lists the options; 'mbtool <COMMAND> --help' explains a command.",
-    );
+    let example = match path {
+        "mbtool" => "Try it without hardware: mbtool --port sim read-holding 17 400108 3",
+        _ => "Try it: mbtool encode read-holding 17 400108 3",
+    };
+    text.push_str(&format!(
+        "\n{example}\n'{path} --help' lists the options; '{path} <COMMAND> --help' explains a command."
+    ));
     text
 }
 

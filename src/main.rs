@@ -39,7 +39,14 @@ fn parse() -> Result<(Settings, Job), u8> {
                 _ => 0,
             },
             ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand | ErrorKind::MissingSubcommand => {
-                mbtool::note!("{}", mbtool::docs::short_usage(&definition));
+                // `mbtool encode` alone lists the requests it encodes.
+                let path = typed_commands(&definition, None);
+                let level = path
+                    .iter()
+                    .skip(1)
+                    .try_fold(&definition, |level, name| level.find_subcommand(name))
+                    .unwrap_or(&definition);
+                mbtool::note!("{}", mbtool::docs::short_usage(level, &path.join(" ")));
                 2
             }
             _ => {
@@ -218,9 +225,6 @@ fn typed_commands(command: &clap::Command, stop: Option<&str>) -> Vec<String> {
     let mut level = &whole;
     let mut words = words().skip(1).peekable();
     while let Some(word) = words.next() {
-        if word == "--" || stop.is_some_and(|stop| names(&word, stop)) {
-            break;
-        }
         if let Some(option) = option_named(level, &word) {
             // The option clap stopped at, typed short: `-p` for `--port`.
             let long = option.get_long().map(|long| format!("--{long}"));
@@ -239,9 +243,15 @@ fn typed_commands(command: &clap::Command, stop: Option<&str>) -> Vec<String> {
             }
             continue;
         }
-        if let Some(sub) = level.find_subcommand(&word) {
-            path.push(sub.get_name().to_string());
-            level = sub;
+        match level.find_subcommand(&word) {
+            // clap's own `help` is no command to point to.
+            Some(sub) if sub.get_name() == "help" => break,
+            Some(sub) => {
+                path.push(sub.get_name().to_string());
+                level = sub;
+            }
+            None if stop.is_some_and(|stop| names(&word, stop)) => break,
+            None => {}
         }
     }
     path

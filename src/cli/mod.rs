@@ -18,6 +18,7 @@ pub use gateway::*;
 pub use options::*;
 pub use requests::*;
 pub use serve::*;
+pub(crate) use taken::arg_id;
 pub use taken::{Before, Options, Taken};
 pub use traffic::*;
 

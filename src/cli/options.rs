@@ -471,7 +471,6 @@ pub struct PollArgs {
     /// With --poll: stop after N reads
     #[arg(
         long = "count",
-        id = "poll_count",
         hide_short_help = true,
         value_name = "N",
         value_parser = whole::<u64>(1, i128::from(u64::MAX))

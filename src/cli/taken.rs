@@ -105,6 +105,16 @@ macro_rules! holds {
 }
 pub(crate) use holds;
 
+/// The id clap gives the option held in `field` of the group `$group`: the field's name,
+/// which must be one of the group's fields for the code to compile.
+macro_rules! arg_id {
+    ($group:ty, $field:ident) => {{
+        let _field_of = |group: &$group| -> *const () { std::ptr::addr_of!(group.$field).cast() };
+        stringify!($field)
+    }};
+}
+pub(crate) use arg_id;
+
 group! {
     SerialLineArgs => serial: baud, parity, data_bits, stop_bits;
     Rs485Args => rs485: rs485, rs485_delay_before, rs485_delay_after, rts_level, rts_toggle;
@@ -134,7 +144,7 @@ impl Options for EndpointArgs {
     }
 
     fn take_before(&mut self, before: &Before) {
-        if let Some(endpoint) = before.typed("port", |t| t.endpoint) {
+        if let Some(endpoint) = before.typed(arg_id!(EndpointArgs, port), |t| t.endpoint) {
             self.port.clone_from(&endpoint.port);
         }
         if let Some(mode) = before.mode() {
@@ -168,25 +178,27 @@ impl Options for PollArgs {
 /// `--count`, dump's `--output`), typed before the command's name.
 impl Before<'_> {
     pub fn mode(&self) -> Option<ModeArg> {
-        self.typed("mode", |t| t.endpoint).and_then(|e| e.mode)
+        self.typed(arg_id!(EndpointArgs, mode), |t| t.endpoint)
+            .and_then(|e| e.mode)
     }
 
     pub fn poll(&self) -> Option<Duration> {
-        self.typed("poll", |t| t.polling).and_then(|p| p.poll)
+        self.typed(arg_id!(PollArgs, poll), |t| t.polling)
+            .and_then(|p| p.poll)
     }
 
     pub fn count(&self) -> Option<u64> {
-        self.typed("poll_count", |t| t.polling)
+        self.typed(arg_id!(PollArgs, poll_count), |t| t.polling)
             .and_then(|p| p.poll_count)
     }
 
     pub fn log(&self) -> Option<&Path> {
-        self.typed("log", |t| t.polling)
+        self.typed(arg_id!(PollArgs, log), |t| t.polling)
             .and_then(|p| p.log.as_deref())
     }
 
     pub fn output(&self) -> Option<&str> {
-        self.typed("output", |t| t.format)
+        self.typed(arg_id!(FormatArgs, output), |t| t.format)
             .and_then(|f| f.output.as_deref())
     }
 }

@@ -4,15 +4,15 @@ use anyhow::Result;
 
 use mbtool::error::Error;
 use mbtool::output::{self, encode::write_frame};
-use mbtool::settings::job::Request as Job;
+use mbtool::settings::job::RequestWords;
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Pdu, Request};
 
-pub fn run(settings: &Settings, job: &Job) -> Result<u8> {
+pub fn run(settings: &Settings, words: &RequestWords) -> Result<u8> {
     let mode = super::shared::mode(settings);
-    let requests: Vec<(u8, Request)> = match job {
-        Job::ByMap(map) => super::map::by_map(settings, map)?.requests(settings),
-        Job::Typed(request) => {
+    let requests: Vec<(u8, Request)> = match words {
+        RequestWords::ByMap(map) => super::map::by_map(settings, map)?.requests(settings),
+        RequestWords::Typed(request) => {
             let plan = super::shared::plan_for(settings, request)?;
             plan.requests.into_iter().map(|r| (plan.slave, r)).collect()
         }

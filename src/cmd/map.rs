@@ -7,7 +7,7 @@ use anyhow::Result;
 use mbtool::connection::{Connection, Connector, Role};
 use mbtool::error::Error;
 use mbtool::output::{self, map::MapRows, map::MapWriter};
-use mbtool::settings::job::MapRequest;
+use mbtool::settings::job::MapWords;
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Mode, Request};
 use mbtool_core::master::map::{groups, read_points, write_request, written_value, Group, Refused};
@@ -76,12 +76,16 @@ pub fn plan(
         (None, Some(default)) => default,
         (None, None) => match points.iter().find(|p| p.slave.is_none()) {
             Some(point) => {
+                let example = match access {
+                    Access::Read => "read SLAVE --map {} ...",
+                    _ => "write SLAVE --map {} NAME=VALUE",
+                }
+                .replace("{}", &path.display().to_string());
                 return Err(Error::usage(format!(
-                    "{} gives {} no slave: give SLAVE (read SLAVE --map {} ...)",
+                    "{} gives {} no slave: give SLAVE ({example})",
                     path.display(),
                     point.name,
-                    path.display()
-                )))
+                )));
             }
             None => points.iter().find_map(|p| p.slave).unwrap_or_default(),
         },
@@ -155,20 +159,12 @@ impl MapPlan {
     /// with what each writes in words.
     pub fn writes(
         &self,
-        assignments: &[&str],
+        assignments: &[(&str, &str)],
         path: &std::path::Path,
     ) -> Result<Vec<MapWrite>, Error> {
-        if assignments.is_empty() {
-            return Err(Error::usage(
-                "write --map needs NAME=VALUE, as setpoint=21.5",
-            ));
-        }
         assignments
             .iter()
-            .map(|word| {
-                let (name, value) = word.split_once('=').ok_or_else(|| {
-                    Error::usage(format!("'{word}': give NAME=VALUE, as setpoint=21.5"))
-                })?;
+            .map(|&(name, value)| {
                 let point = find(&self.points, name, path)?;
                 let request = write_request(point, value).map_err(Error::usage)?;
                 // What the point holds of the value asked, when it holds less (2.56 in
@@ -304,7 +300,7 @@ pub enum ByMap {
 }
 
 /// The map work of `read --map` or `write --map`, with nothing opened yet.
-pub fn by_map(settings: &Settings, request: &MapRequest) -> Result<ByMap> {
+pub fn by_map(settings: &Settings, request: &MapWords) -> Result<ByMap> {
     let tcp = super::shared::mode(settings) == Mode::Tcp;
     let path = &request.file;
     let slave = request.slave.as_deref();
@@ -313,9 +309,27 @@ pub fn by_map(settings: &Settings, request: &MapRequest) -> Result<ByMap> {
         let plan = plan(settings, path, slave, &words, tcp, Access::Read)?;
         return Ok(ByMap::Read(plan));
     }
-    let plan = plan(settings, path, slave, &[], tcp, request.access)?;
-    let writes = plan.writes(&words, path)?;
+    let assignments = assignments(&words)?;
+    let names: Vec<&str> = assignments.iter().map(|(name, _)| *name).collect();
+    let plan = plan(settings, path, slave, &names, tcp, request.access)?;
+    let writes = plan.writes(&assignments, path)?;
     Ok(ByMap::Write(writes, plan))
+}
+
+/// The `NAME=VALUE` words of `write --map`, split.
+fn assignments<'a>(words: &[&'a str]) -> Result<Vec<(&'a str, &'a str)>, Error> {
+    if words.is_empty() {
+        return Err(Error::usage(
+            "write --map needs NAME=VALUE, as setpoint=21.5",
+        ));
+    }
+    words
+        .iter()
+        .map(|word| {
+            word.split_once('=')
+                .ok_or_else(|| Error::usage(format!("'{word}': give NAME=VALUE, as setpoint=21.5")))
+        })
+        .collect()
 }
 
 impl ByMap {

@@ -9,7 +9,7 @@ use mbtool::error::Error;
 use mbtool::output;
 use mbtool::output::decode::DecodeWriter;
 use mbtool::output::read::{write_done, ReadWriter, WriteDone};
-use mbtool::settings::job::{Request as Job, TypedRequest};
+use mbtool::settings::job::{RequestWords, TypedWords};
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Mode, Pdu, Request};
 use mbtool_core::describe::describe_frame;
@@ -18,7 +18,7 @@ use mbtool_core::master::range::{read_range, Items};
 use mbtool_core::master::{Master, Reply};
 use mbtool_core::model::address::{bit_reference, reference, Table};
 
-pub fn run(settings: &Settings, job: &Job) -> Result<u8> {
+pub fn run(settings: &Settings, words: &RequestWords) -> Result<u8> {
     // The whole command line is checked before a port is opened.
     if settings.poll.count.is_some() && settings.poll.interval.is_none() {
         return Err(Error::usage(
@@ -32,9 +32,9 @@ pub fn run(settings: &Settings, job: &Job) -> Result<u8> {
             Error::usage("--log keeps the rows of a --poll: give --poll INTERVAL too").into(),
         );
     }
-    let request = match job {
-        Job::ByMap(map) => return super::map::by_map(settings, map)?.run(settings),
-        Job::Typed(request) => request,
+    let request = match words {
+        RequestWords::ByMap(map) => return super::map::by_map(settings, map)?.run(settings),
+        RequestWords::Typed(request) => request,
     };
     let plan = super::shared::plan_for(settings, request)?;
     super::shared::refuse_unsafe_retries(settings, &plan.requests)?;
@@ -50,7 +50,7 @@ pub fn run(settings: &Settings, job: &Job) -> Result<u8> {
     }
     let mut out = output::stdout();
     let code = match (request, plan.reads) {
-        (TypedRequest::Raw { .. }, _) => raw(settings, master, &plan, mode, &mut out),
+        (TypedWords::Raw { .. }, _) => raw(settings, master, &plan, mode, &mut out),
         (_, Some((table, address))) => reads(settings, master, &plan, table, address, &mut out),
         (_, None) => writes(settings, master, &plan, &mut out),
     };

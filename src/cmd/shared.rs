@@ -13,7 +13,7 @@ use mbtool::connection::{self, Connection, Connector, Role};
 use mbtool::error::Error;
 use mbtool::output::device::Outcome;
 use mbtool::output::encode::frame_text;
-use mbtool::settings::job::{RoleSettings, TypedRequest};
+use mbtool::settings::job::{RoleSettings, TypedWords};
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Mode, Request};
 use mbtool_core::listener::roles::Roles;
@@ -48,7 +48,7 @@ pub fn plan_options(settings: &Settings) -> PlanOptions {
 }
 
 /// Checks the command line of a request command and plans its requests.
-pub fn plan_for(settings: &Settings, request: &TypedRequest) -> Result<Plan, Error> {
+pub fn plan_for(settings: &Settings, request: &TypedWords) -> Result<Plan, Error> {
     Ok(plan(&request.operation(), plan_options(settings))?)
 }
 

@@ -11,7 +11,7 @@ use ratatui::crossterm::event::{self, Event, KeyCode, KeyEventKind, KeyModifiers
 use mbtool::connection::{Connector, Role};
 use mbtool::error::Error;
 use mbtool::output::watch::WatchState;
-use mbtool::settings::job::Request;
+use mbtool::settings::job::RequestWords;
 use mbtool::settings::Settings;
 use mbtool_core::master::failover::Left;
 use mbtool_core::master::map::{read_points, Refused};
@@ -29,11 +29,11 @@ const DEFAULT_INTERVAL: Duration = Duration::from_secs(1);
 /// The points of the command line: a map's, or those of a range.
 fn points(
     settings: &Settings,
-    request: &Request,
+    request: &RequestWords,
     target: &Connector,
 ) -> Result<(u8, Vec<Point>), Error> {
     let typed = match request {
-        Request::ByMap(map) => {
+        RequestWords::ByMap(map) => {
             let names: Vec<&str> = map.words.iter().map(String::as_str).collect();
             let plan = super::map::plan(
                 settings,
@@ -45,7 +45,7 @@ fn points(
             )?;
             return Ok((plan.slave, plan.points));
         }
-        Request::Typed(typed) => typed,
+        RequestWords::Typed(typed) => typed,
     };
     let operation = typed.operation();
     let mut options = super::shared::plan_options(settings);
@@ -101,7 +101,7 @@ enum Update {
     Switched(String, Option<Left>),
 }
 
-pub fn run(settings: &Settings, request: &Request) -> Result<u8> {
+pub fn run(settings: &Settings, request: &RequestWords) -> Result<u8> {
     if !std::io::stdout().is_terminal() {
         return Err(Error::usage(
             "watch draws on a terminal; to log values give read ... --poll INTERVAL -o csv (or --log FILE)",
@@ -110,7 +110,7 @@ pub fn run(settings: &Settings, request: &Request) -> Result<u8> {
     }
     // A map's file may say where its device is, where the command line does not.
     let placed = match request {
-        Request::ByMap(by_map) => {
+        RequestWords::ByMap(by_map) => {
             let path = &by_map.file;
             // Its warnings are told once, when its points are planned.
             let map = mbtool_core::model::map_file::load(path).map_err(Error::from)?;
@@ -121,7 +121,7 @@ pub fn run(settings: &Settings, request: &Request) -> Result<u8> {
                 map.unknown_place.as_deref(),
             )?
         }
-        Request::Typed(_) => settings.clone(),
+        RequestWords::Typed(_) => settings.clone(),
     };
     let settings = &placed;
     let target = Connector::new(&settings.connection, Role::Master)?;

@@ -19,12 +19,12 @@ use crate::cli::{self, Command, ProbeArg, RequestArgs, RequestCommand, Wire};
 #[derive(Clone, Debug)]
 pub enum Job {
     /// A read, write or raw request on the bus.
-    Request(Request),
+    Request(RequestWords),
     /// The frames a request would send.
-    Encode(Request),
+    Encode(RequestWords),
     Scan(Scan),
     /// A full screen of values: a read by reference or a map's points.
-    Watch(Request),
+    Watch(RequestWords),
     Info(Device),
     Diag(Diag),
     Dump(Dump),
@@ -40,16 +40,16 @@ pub enum Job {
     },
 }
 
-/// A request: addresses and values as typed, or points of a register map by name.
+/// A request's words: addresses and values as typed, or points of a register map by name.
 #[derive(Clone, Debug)]
-pub enum Request {
-    Typed(TypedRequest),
-    ByMap(MapRequest),
+pub enum RequestWords {
+    Typed(TypedWords),
+    ByMap(MapWords),
 }
 
 /// A request's words as typed, which the core's planner reads.
 #[derive(Clone, Debug)]
-pub enum TypedRequest {
+pub enum TypedWords {
     /// Read `count` values (one when left out) from `address`: of `table`, or of the
     /// table its reference names.
     Read {
@@ -70,11 +70,11 @@ pub enum TypedRequest {
     Raw { slave: String, pdu: Vec<String> },
 }
 
-impl TypedRequest {
+impl TypedWords {
     /// The operation the core's planner checks and plans.
     pub fn operation(&self) -> Operation<'_> {
         match self {
-            TypedRequest::Read {
+            TypedWords::Read {
                 slave,
                 address,
                 table,
@@ -85,7 +85,7 @@ impl TypedRequest {
                 table: *table,
                 count: count.as_deref(),
             },
-            TypedRequest::Write {
+            TypedWords::Write {
                 slave,
                 address,
                 table,
@@ -98,14 +98,14 @@ impl TypedRequest {
                 values,
                 how: *how,
             },
-            TypedRequest::Raw { slave, pdu } => Operation::Raw { slave, pdu },
+            TypedWords::Raw { slave, pdu } => Operation::Raw { slave, pdu },
         }
     }
 }
 
 /// `read --map` or `write --map`: a map's points by name.
 #[derive(Clone, Debug)]
-pub struct MapRequest {
+pub struct MapWords {
     /// The map's file.
     pub file: PathBuf,
     /// The slave typed; left out, the map's own.
@@ -327,18 +327,18 @@ fn roles(a: cli::RoleArgs) -> RoleSettings {
     }
 }
 
-fn request_of<W: Wire>(command: RequestCommand<W>) -> Result<Request, String> {
+fn request_of<W: Wire>(command: RequestCommand<W>) -> Result<RequestWords, String> {
     use RequestCommand as C;
-    fn read<T: cli::Words>(a: cli::ReadArgs<T>) -> Request {
-        Request::Typed(TypedRequest::Read {
+    fn read<T: cli::Words>(a: cli::ReadArgs<T>) -> RequestWords {
+        RequestWords::Typed(TypedWords::Read {
             slave: a.slave,
             address: a.address,
             table: Some(T::TABLE),
             count: a.count,
         })
     }
-    fn write<T: cli::Words>(a: cli::WriteArgs<T>) -> Request {
-        Request::Typed(TypedRequest::Write {
+    fn write<T: cli::Words>(a: cli::WriteArgs<T>) -> RequestWords {
+        RequestWords::Typed(TypedWords::Write {
             slave: a.slave,
             address: a.address,
             table: Some(T::TABLE),
@@ -352,14 +352,14 @@ fn request_of<W: Wire>(command: RequestCommand<W>) -> Result<Request, String> {
         C::ReadHolding(RequestArgs { args, .. }) => read(args),
         C::ReadInputRegisters(RequestArgs { args, .. }) => read(args),
         C::Read(RequestArgs { args, .. }) => read_by_reference(args, "read")?,
-        C::WriteCoil(RequestArgs { args: a, .. }) => Request::Typed(TypedRequest::Write {
+        C::WriteCoil(RequestArgs { args: a, .. }) => RequestWords::Typed(TypedWords::Write {
             slave: a.slave,
             address: a.address,
             table: Some(Table::Coils),
             values: vec![a.value],
             how: How::Single,
         }),
-        C::WriteRegister(RequestArgs { args: a, .. }) => Request::Typed(TypedRequest::Write {
+        C::WriteRegister(RequestArgs { args: a, .. }) => RequestWords::Typed(TypedWords::Write {
             slave: a.slave,
             address: a.address,
             table: Some(Table::HoldingRegisters),
@@ -369,7 +369,7 @@ fn request_of<W: Wire>(command: RequestCommand<W>) -> Result<Request, String> {
         C::WriteCoils(RequestArgs { args, .. }) => write(args),
         C::WriteRegisters(RequestArgs { args, .. }) => write(args),
         C::Write(RequestArgs { args, .. }) => write_by_reference(args)?,
-        C::Raw(RequestArgs { args: a, .. }) => Request::Typed(TypedRequest::Raw {
+        C::Raw(RequestArgs { args: a, .. }) => RequestWords::Typed(TypedWords::Raw {
             slave: a.slave,
             pdu: a.pdu,
         }),
@@ -378,7 +378,7 @@ fn request_of<W: Wire>(command: RequestCommand<W>) -> Result<Request, String> {
 
 /// `read` or `watch`: a reference, or with `--map` the points named. A first word that is
 /// no slave id is a point's name, SLAVE left out.
-fn read_by_reference(a: cli::ReadByReferenceArgs, command: &str) -> Result<Request, String> {
+fn read_by_reference(a: cli::ReadByReferenceArgs, command: &str) -> Result<RequestWords, String> {
     let Some(file) = a.map else {
         if !a.names.is_empty() {
             return Err(match command {
@@ -391,7 +391,7 @@ fn read_by_reference(a: cli::ReadByReferenceArgs, command: &str) -> Result<Reque
                 ),
             });
         }
-        return Ok(Request::Typed(TypedRequest::Read {
+        return Ok(RequestWords::Typed(TypedWords::Read {
             slave: a.slave.unwrap_or_default(),
             address: a.reference.unwrap_or_default(),
             table: None,
@@ -405,7 +405,7 @@ fn read_by_reference(a: cli::ReadByReferenceArgs, command: &str) -> Result<Reque
         .chain(a.count)
         .chain(a.names)
         .collect();
-    Ok(Request::ByMap(MapRequest {
+    Ok(RequestWords::ByMap(MapWords {
         file,
         slave,
         words,
@@ -415,9 +415,9 @@ fn read_by_reference(a: cli::ReadByReferenceArgs, command: &str) -> Result<Reque
 
 /// `write`: a reference and values, or with `--map` the `NAME=VALUE` words. A first word
 /// that is no slave id is an assignment, SLAVE left out.
-fn write_by_reference(a: cli::WriteByReferenceArgs) -> Result<Request, String> {
+fn write_by_reference(a: cli::WriteByReferenceArgs) -> Result<RequestWords, String> {
     let Some(file) = a.map else {
-        return Ok(Request::Typed(TypedRequest::Write {
+        return Ok(RequestWords::Typed(TypedWords::Write {
             slave: a.slave,
             address: a.reference.unwrap_or_default(),
             table: None,
@@ -436,7 +436,7 @@ fn write_by_reference(a: cli::WriteByReferenceArgs) -> Result<Request, String> {
         .chain(a.reference)
         .chain(a.values)
         .collect();
-    Ok(Request::ByMap(MapRequest {
+    Ok(RequestWords::ByMap(MapWords {
         file,
         slave,
         words,

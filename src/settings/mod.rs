@@ -14,8 +14,8 @@ use clap::parser::ValueSource;
 use clap::ValueEnum;
 
 use crate::cli::{
-    AddressBaseArg, Before, Cli, Command, FormatArgs, Options, OutputFormat, RedundancyArgs,
-    Rs485Args, Taken,
+    arg_id, AddressBaseArg, Before, Cli, Command, FormatArgs, Options, OutputFormat,
+    RedundancyArgs, Rs485Args, SerialLineArgs, Taken, TlsArgs,
 };
 use crate::output::{colour_wanted, Format, Style};
 use job::Job;
@@ -393,9 +393,14 @@ fn settings_of(cli: &mut Cli, origins: &Origins) -> Result<Settings, String> {
                 ca: tls.and_then(|t| t.ca.clone()),
                 server_name: tls.and_then(|t| t.tls_server_name.clone()),
             },
-            tls_typed: ["cert", "key", "ca", "tls_server_name"]
-                .iter()
-                .any(|id| origins.typed(id)),
+            tls_typed: [
+                arg_id!(TlsArgs, cert),
+                arg_id!(TlsArgs, key),
+                arg_id!(TlsArgs, ca),
+                arg_id!(TlsArgs, tls_server_name),
+            ]
+            .iter()
+            .any(|id| origins.typed(id)),
             tell_session: verbose,
         },
         output: Output {
@@ -441,9 +446,16 @@ fn redundancy_of(
     primary: &mut ConnectionSettings,
 ) -> Result<(), String> {
     let Some(port) = r.secondary_port.clone().filter(|port| !port.is_empty()) else {
-        let typed = origins
-            .typed_ids()
-            .find(|id| id.starts_with("secondary_") || id.starts_with("switch_"));
+        let needing_a_port = [
+            arg_id!(RedundancyArgs, secondary_baud),
+            arg_id!(RedundancyArgs, secondary_parity),
+            arg_id!(RedundancyArgs, secondary_data_bits),
+            arg_id!(RedundancyArgs, secondary_stop_bits),
+            arg_id!(RedundancyArgs, secondary_mode),
+            arg_id!(RedundancyArgs, switch_on),
+            arg_id!(RedundancyArgs, switch_when),
+        ];
+        let typed = origins.typed_ids().find(|id| needing_a_port.contains(id));
         return match typed {
             Some(id) => Err(format!(
                 "--{} needs --secondary-port: the other path to the device",
@@ -506,7 +518,8 @@ fn redundancy_of(
 /// they would do nothing.
 fn direction(c: &Rs485Args, origins: &Origins) -> Result<(DirectionControl, bool), String> {
     let typed = |id: &str| origins.typed(id);
-    let (kernel, toggle) = match (c.rs485 && c.rts_toggle, typed("rs485"), typed("rts_toggle")) {
+    let (rs485, rts_toggle) = (arg_id!(Rs485Args, rs485), arg_id!(Rs485Args, rts_toggle));
+    let (kernel, toggle) = match (c.rs485 && c.rts_toggle, typed(rs485), typed(rts_toggle)) {
         (false, ..) => (c.rs485, c.rts_toggle),
         (true, true, true) => {
             return Err("--rs485 and --rts-toggle: give one (--rs485 for the kernel's RS-485 mode, --rts-toggle where the driver has none)".into())
@@ -526,9 +539,13 @@ fn direction(c: &Rs485Args, origins: &Origins) -> Result<(DirectionControl, bool
         (true, _) => DirectionControl::Kernel(timing),
         (false, true) => DirectionControl::Toggle(timing),
         (false, false) => {
-            let option = ["rs485_delay_before", "rs485_delay_after", "rts_level"]
-                .into_iter()
-                .find(|id| typed(id));
+            let option = [
+                arg_id!(Rs485Args, rs485_delay_before),
+                arg_id!(Rs485Args, rs485_delay_after),
+                arg_id!(Rs485Args, rts_level),
+            ]
+            .into_iter()
+            .find(|id| typed(id));
             if let Some(id) = option {
                 let name = id.replace('_', "-");
                 return Err(format!(
@@ -538,7 +555,7 @@ fn direction(c: &Rs485Args, origins: &Origins) -> Result<(DirectionControl, bool
             DirectionControl::Automatic
         }
     };
-    Ok((direction, typed("rs485") || typed("rts_toggle")))
+    Ok((direction, typed(rs485) || typed(rts_toggle)))
 }
 
 fn format_of(format: OutputFormat) -> Format {
@@ -572,8 +589,8 @@ fn sweep_outside_scan(scan: bool, taken: &Taken, origins: &Origins) -> Option<St
     let typed = |id: &str| origins.typed(id);
     let several = match (serial.baud.len(), serial.parity.len()) {
         _ if scan => return None,
-        (2.., _) if typed("baud") => "baud rates",
-        (_, 2..) if typed("parity") => "parities",
+        (2.., _) if typed(arg_id!(SerialLineArgs, baud)) => "baud rates",
+        (_, 2..) if typed(arg_id!(SerialLineArgs, parity)) => "parities",
         _ => return None,
     };
     Some(format!("only scan sweeps several {several}: give one"))

@@ -42,6 +42,38 @@ fn mbtool_alone_prints_a_short_usage_and_the_commands() {
     );
 }
 
+/// A usage error points to the help of the command it is about, and never to a help
+/// that does not exist; `mbtool encode` alone lists the requests it encodes.
+#[test]
+fn a_usage_error_points_to_a_help_that_exists() {
+    refused_with(
+        "help nosuch",
+        "unknown command 'nosuch' (see 'mbtool --help')",
+    );
+    refused_with(
+        "encode encode read-holding 17 1",
+        "unknown command 'encode' (see 'mbtool encode --help')",
+    );
+    refused_with(
+        "-p sim -p sim read-holding 17 1",
+        "the argument '--port <PORT>' cannot be used multiple times (see 'mbtool --help')",
+    );
+    refused_with(
+        "--port scan read-holding 17 1 --nope",
+        "unexpected argument '--nope' found; to pass '--nope' as a value, use '-- --nope' \
+         (see 'mbtool read-holding --help')",
+    );
+    let (code, stdout, stderr) = run("encode");
+    assert_eq!((code, stdout.as_str()), (2, ""));
+    assert!(
+        stderr.starts_with(
+            "Usage: mbtool encode [OPTIONS] <COMMAND> [ARGS]\n\nCommands:\n  read-coils "
+        ),
+        "{stderr}"
+    );
+    assert!(!stderr.contains("\n  scan "), "{stderr}");
+}
+
 #[test]
 fn a_word_or_a_variable_that_is_not_utf8_is_told_not_panicked_on() {
     use std::ffi::OsStr;

@@ -351,6 +351,28 @@ fn a_map_that_gives_the_slave_needs_none_typed() {
     assert!(stderr.contains("gives a no slave: give SLAVE"), "{stderr}");
 }
 
+/// `write --map` without SLAVE writes where the map gives the points written their slave,
+/// and otherwise names the point written and how to give SLAVE to a write.
+#[test]
+fn a_write_by_name_needs_a_slave_only_for_the_points_it_writes() {
+    let dir = tempfile::tempdir().unwrap();
+    let map = "name,ref,type,slave\nspeed,400001,u16,17\nlevel,400002,u16\n";
+    let path = &files(&dir, &[("m.csv", map)])[0];
+    let sim = ["--port".to_string(), "sim".to_string()];
+    let (code, said, stderr) = run(&sim, &["write", "--map", path, "speed=7"]);
+    assert_eq!(
+        (code, said.as_str()),
+        (0, "wrote speed = 7 (400001)\n"),
+        "{stderr}"
+    );
+    let (code, said, stderr) = run(&sim, &["write", "--map", path, "level=7"]);
+    assert_eq!((code, said.as_str()), (2, ""));
+    assert_eq!(
+        stderr,
+        format!("mbtool: {path} gives level no slave: give SLAVE (write SLAVE --map {path} NAME=VALUE)\n")
+    );
+}
+
 /// How many requests `read --map` sends for `refs`, counted in its `-v` trace.
 fn requests_for(
     port: &[String],

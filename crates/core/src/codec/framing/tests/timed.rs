@@ -589,13 +589,13 @@ fn an_answer_without_a_known_layout_across_a_usb_tick_is_taken_whole() {
     // Function 72, request and answer, then noise and a request, in the reads of a USB
     // adapter's 16 ms latency timer at 19200 baud: the answer crosses a tick before any
     // frame of known layout has shown that the gaps lie.
-    let mut stream = Vec::new();
-    crate::input::hexinput::parse_hex(
-        b"110fa6a300040125229e110fa6a3000484324494f7486d132cded6237b2eb3bcf748d91e3f72\
-          1fcb197121b0d654af4d11174ef80012d0ed00060c34c36030beaa31e220251e8461ef",
-        &mut stream,
-    )
-    .unwrap();
+    let hex = "110fa6a300040125229e110fa6a3000484324494f7486d132cded6237b2eb3bcf748d91e3f72\
+               1fcb197121b0d654af4d11174ef80012d0ed00060c34c36030beaa31e220251e8461ef";
+    let digits: Vec<char> = hex.chars().filter(char::is_ascii_hexdigit).collect();
+    let stream: Vec<u8> = digits
+        .chunks(2)
+        .map(|pair| u8::from_str_radix(&pair.iter().collect::<String>(), 16).unwrap())
+        .collect();
     let answer = &stream[32..44];
     let out = timed_frames(&[
         (&stream[..18], 16_000),
