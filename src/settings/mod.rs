@@ -445,6 +445,13 @@ fn redundancy_of(
     origins: &Origins,
     primary: &mut ConnectionSettings,
 ) -> Result<(), String> {
+    let typed_empty = r.secondary_port.as_deref() == Some("")
+        && origins.typed(arg_id!(RedundancyArgs, secondary_port));
+    if typed_empty {
+        return Err(
+            "--secondary-port is empty: give the other path to the device, or leave it out".into(),
+        );
+    }
     let Some(port) = r.secondary_port.clone().filter(|port| !port.is_empty()) else {
         let needing_a_port = [
             arg_id!(RedundancyArgs, secondary_baud),

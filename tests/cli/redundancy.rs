@@ -220,10 +220,14 @@ fn any_switches_on_the_first_condition_and_all_waits_for_every_one() {
 
 #[test]
 fn redundancy_options_are_checked_before_anything_is_sent() {
-    let cases: [(&[&str], &str); 4] = [
+    let cases: [(&[&str], &str); 5] = [
         (
             &["--port", "sim", "--switch-on", "timeout:3"],
             "mbtool: --switch-on needs --secondary-port: the other path to the device",
+        ),
+        (
+            &["--port", "sim", "--secondary-port="],
+            "mbtool: --secondary-port is empty: give the other path to the device, or leave it out",
         ),
         (
             &["--port", "sim", "--secondary-port", "sim", "--switch-on", "timeout:0"],
