@@ -69,7 +69,7 @@ BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_needs_command" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_needs_command" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
+complete -c mbtool -n "__fish_mbtool_needs_command" -l log -d 'With --poll: also append every poll, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_needs_command" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -142,7 +142,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l ca -d 'The 
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l log -d 'With --poll: also append every poll, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-coils" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -193,7 +193,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l ca -d 'The
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l log -d 'With --poll: also append every poll, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-inputs" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -244,7 +244,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l c
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l log -d 'With --poll: also append every poll, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-discrete-inputs" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -295,7 +295,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l ca -d 'Th
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l log -d 'With --poll: also append every poll, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -361,7 +361,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l log -d 'With --poll: also append every poll, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-holding-registers" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -427,7 +427,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l c
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l log -d 'With --poll: also append every poll, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-registers" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -493,7 +493,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l ca -d 
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l log -d 'With --poll: also append every poll, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''
@@ -560,7 +560,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l ca -d 'The CA cer
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l poll -d 'Repeat the read every INTERVAL until Ctrl-C or --count' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l count -d 'With --poll: stop after N reads' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l log -d 'With --poll: also append every row, with its time, to FILE' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l log -d 'With --poll: also append every poll, with its time, to FILE' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-port -d 'A second path to the same device (any --port), used when the --switch-on conditions hold on the one in use; its line settings are the primary\'s unless given below' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-baud -d 'Serial speed of the secondary path [default: --baud]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l secondary-parity -d 'Serial parity of the secondary path [default: --parity]' -r -f -a "none\t''

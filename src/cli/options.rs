@@ -462,9 +462,11 @@ pub struct RegisterArgs {
 pub struct PollArgs {
     /// Repeat the read every INTERVAL until Ctrl-C or --count
     ///
-    /// 0 for back to back. What changed is shown, with a summary on stderr at the end; a
-    /// failed read is a row of its own, a range with holes is read around them (each hole
-    /// a "no such address" row), and a connection that drops is opened again
+    /// 0 for back to back. Each poll is one line: its time and a column a value (CSV with
+    /// -o csv, as Modbus Poll logs), what changed marked, with a summary on stderr at the
+    /// end; a failed read is a line without values, a range with holes is read around them
+    /// (each hole without a value, named in the error column), and a connection that drops
+    /// is opened again
     #[arg(long, hide_short_help = true, value_name = "INTERVAL", value_parser = mbtool_core::input::duration::parse_duration)]
     pub poll: Option<std::time::Duration>,
 
@@ -477,9 +479,10 @@ pub struct PollArgs {
     )]
     pub poll_count: Option<u64>,
 
-    /// With --poll: also append every row, with its time, to FILE
+    /// With --poll: also append every poll, with its time, to FILE
     ///
-    /// CSV for a .csv name, JSON Lines for any other
+    /// JSON Lines, or for a .csv name a row for every value with its registers
+    /// (time,ref,address,hex,value,error)
     #[arg(long, hide_short_help = true, value_name = "FILE")]
     pub log: Option<std::path::PathBuf>,
 }

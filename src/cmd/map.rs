@@ -275,6 +275,7 @@ pub fn poll(
         writer: MapWriter::new(format, output::colour_wanted()),
         slave: plan.slave,
         points: points.clone(),
+        wide: None,
     };
     super::poll::run(
         settings,

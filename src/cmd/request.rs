@@ -90,7 +90,7 @@ fn poll_reads(
             format,
             ..settings.output.style
         };
-        ReadWriter::new(style).timed()
+        ReadWriter::new(style).polling(plan)
     };
     // A poll of a range reads around its holes, as watch does.
     let items = Items {

@@ -5,6 +5,7 @@ use std::io::{self, Write};
 
 use serde::Serialize;
 
+use super::wide::WideRows;
 use super::Format;
 use super::{csv_field, new_table};
 use mbtool_core::master::map::{MapRead, PointValue};
@@ -50,17 +51,44 @@ pub struct MapRows<'a> {
     pub writer: MapWriter,
     pub slave: u8,
     pub points: Vec<&'a Point>,
+    /// On the screen, one line a poll, a column a point.
+    pub wide: Option<WideRows>,
 }
 
 impl super::PollRows for MapRows<'_> {
     type Item = MapRead;
 
     fn row(&mut self, out: &mut dyn Write, item: &MapRead, time: &str) -> io::Result<()> {
-        self.writer
-            .write_at(out, self.slave, &self.points, item, Some(time))
+        let Some(wide) = self.wide.as_mut() else {
+            return self
+                .writer
+                .write_at(out, self.slave, &self.points, item, Some(time));
+        };
+        let format = self.writer.format;
+        let readings = readings(item, self.points.len());
+        let values = self.points.iter().zip(&readings).map(|(point, reading)| {
+            let value = reading.as_ref()?.value()?;
+            Some(match (format, point.unit.as_str()) {
+                (Format::Table, unit) if !unit.is_empty() => format!("{value} {unit}"),
+                _ => value.to_string(),
+            })
+        });
+        let values = values.collect();
+        let failed = self
+            .points
+            .iter()
+            .zip(&readings)
+            .find_map(|(point, reading)| {
+                let error = reading.as_ref()?.error()?;
+                Some(format!("{}: {error}", point.name))
+            });
+        wide.row(out, format, time, values, &failed.unwrap_or_default())
     }
 
     fn failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()> {
+        if let Some(wide) = self.wide.as_mut() {
+            return wide.gap(out, self.writer.format, time, error);
+        }
         match self.writer.format {
             Format::Json => {
                 serde_json::to_writer(&mut *out, &super::JsonFailure { time, error })?;
@@ -81,6 +109,13 @@ impl super::PollRows for MapRows<'_> {
 
     fn continuing(&mut self) {
         self.writer.csv_header_written = true;
+    }
+
+    fn wide(&mut self) {
+        if matches!(self.writer.format, Format::Csv | Format::Table) {
+            let names = self.points.iter().map(|point| point.name.clone()).collect();
+            self.wide = Some(WideRows::new(names, self.writer.colour));
+        }
     }
 
     fn format(&self) -> Format {

@@ -6,8 +6,10 @@ use std::io::{self, Write};
 use comfy_table::{Cell, Color};
 use serde::Serialize;
 
+use super::wide::WideRows;
 use super::Format;
 use super::{csv_field, new_table, Style};
+use mbtool_core::master::plan::Plan;
 use mbtool_core::master::range::RangeRead;
 use mbtool_core::master::run::ReadResult;
 use mbtool_core::model::address::{bit_reference, reference};
@@ -68,6 +70,12 @@ impl super::PollRows for ReadWriter {
         self.csv_header_written = true;
     }
 
+    fn wide(&mut self) {
+        if matches!(self.style.format, Format::Csv | Format::Table) {
+            self.wide = Some(WideRows::new(self.columns.clone(), self.style.colour));
+        }
+    }
+
     fn format(&self) -> Format {
         self.style.format
     }
@@ -80,6 +88,10 @@ pub struct ReadWriter {
     csv_header_written: bool,
     /// Every row starts with its time (a poll's rows, a log).
     timed: bool,
+    /// A poll's values, by reference, as a poll's wide rows name them.
+    columns: Vec<String>,
+    /// On the screen, a poll's rows one line a poll.
+    wide: Option<WideRows>,
 }
 
 impl ReadWriter {
@@ -89,6 +101,8 @@ impl ReadWriter {
             previous: None,
             csv_header_written: false,
             timed: false,
+            columns: Vec::new(),
+            wide: None,
         }
     }
 
@@ -99,9 +113,48 @@ impl ReadWriter {
         self
     }
 
+    /// A writer for the polls of `plan`, whose rows are timed and whose wide rows have a
+    /// column for each value it reads: the references its rows would show.
+    pub fn polling(mut self, plan: &Plan) -> Self {
+        self.timed = true;
+        let Some((table, address)) = plan.reads else {
+            return self;
+        };
+        let quantity: usize = plan
+            .requests
+            .iter()
+            .map(|request| usize::from(request.read_quantity()))
+            .sum();
+        let (data, first_bit) = match plan.bits {
+            Some(bits) => (
+                ReadData::Bits(vec![false; bits.count as usize]),
+                Some(bits.first),
+            ),
+            None if table.is_bits() => (ReadData::Bits(vec![false; quantity]), None),
+            None => (ReadData::Registers(vec![0; quantity]), None),
+        };
+        let all = ReadResult {
+            slave: plan.slave,
+            function: table.read_function(),
+            table,
+            address,
+            data,
+            first_bit,
+        };
+        self.columns = self
+            .part_rows(&all)
+            .into_iter()
+            .map(|row| row.reference)
+            .collect();
+        self
+    }
+
     /// A poll that gave no values: a row with its error in CSV and JSON; in the table and
     /// the values, nothing (the error goes to stderr).
     fn write_failure(&mut self, out: &mut dyn Write, time: &str, error: &str) -> io::Result<()> {
+        if let Some(wide) = self.wide.as_mut() {
+            return wide.gap(out, self.style.format, time, error);
+        }
         match self.style.format {
             Format::Json => {
                 serde_json::to_writer(&mut *out, &super::JsonFailure { time, error })?;
@@ -228,6 +281,21 @@ impl ReadWriter {
         let rows = self.rows(range);
         let changed = self.changed(&rows);
         let bits = matches!(first.data, ReadData::Bits(_));
+        if let (Some(wide), Some(time)) = (self.wide.as_mut(), time) {
+            let format = self.style.format;
+            let values = self.columns.iter().map(|column| {
+                let row = rows.iter().find(|row| row.reference == *column)?;
+                row.value.as_ref().map(|value| match format {
+                    Format::Table => shown_value(value, bits),
+                    _ => value.to_string(),
+                })
+            });
+            let error = match rows.iter().find(|row| row.value.is_none()) {
+                Some(row) => format!("{}: {NO_SUCH_ADDRESS}", row.reference),
+                None => String::new(),
+            };
+            return wide.row(out, format, time, values.collect(), &error);
+        }
         match self.style.format {
             Format::Json => {
                 let wide = self.style.value_type.width() > 1;
@@ -321,9 +389,7 @@ impl ReadWriter {
                 for (row, changed) in rows.iter().zip(&changed) {
                     let shown = match &row.value {
                         None => NO_SUCH_ADDRESS.to_string(),
-                        Some(Value::Unsigned(1)) if bits => "ON".to_string(),
-                        Some(_) if bits => "OFF".to_string(),
-                        Some(value) => value.to_string(),
+                        Some(value) => shown_value(value, bits),
                     };
                     let mut value = Cell::new(shown);
                     if *changed && self.style.colour {
@@ -348,6 +414,15 @@ impl ReadWriter {
                 .collect(),
         );
         Ok(())
+    }
+}
+
+/// A value as the table shows it: a bit ON or OFF.
+fn shown_value(value: &Value, bits: bool) -> String {
+    match value {
+        Value::Unsigned(1) if bits => "ON".to_string(),
+        _ if bits => "OFF".to_string(),
+        value => value.to_string(),
     }
 }
 

@@ -82,11 +82,21 @@ fn a_poll_goes_on_through_a_device_that_restarts() {
         kinds.iter().filter(|k| **k == "error").count() >= 10,
         "{text}"
     );
-    // The screen showed the same rows; the last read succeeded.
+    // The screen showed the same polls, one line each with a column for the value; the
+    // last read succeeded.
     assert!(status.success(), "{status}");
     let mut screen = String::new();
     std::io::Read::read_to_string(poller.0.stdout.as_mut().unwrap(), &mut screen).unwrap();
-    assert_eq!(screen, text);
+    let mut lines = screen.lines();
+    assert_eq!(lines.next(), Some("time,400108,error"), "{screen}");
+    let shown: Vec<(String, String)> = lines
+        .map(|line| {
+            let fields: Vec<&str> = line.splitn(3, ',').collect();
+            (fields[1].to_string(), fields[2].to_string())
+        })
+        .collect();
+    let logged: Vec<(String, String)> = rows.into_iter().map(|(_, v, e)| (v, e)).collect();
+    assert_eq!(shown, logged, "{screen}");
 }
 
 #[test]
@@ -210,7 +220,10 @@ fn a_map_polled_is_logged_point_by_point_and_failures_are_rows() {
     assert_eq!(output.status.code(), Some(1));
     let csv = String::from_utf8_lossy(&output.stdout);
     let mut lines = csv.lines();
-    assert_eq!(lines.next(), Some("time,name,ref,value,unit,raw,error"));
+    assert_eq!(
+        lines.next(),
+        Some("time,voltage,speed,pressure_max,running,flow,error")
+    );
     assert!(
         lines.all(|l| l.contains(",,,,,,") && l.contains("127.0.0.1")),
         "{csv}"
@@ -285,13 +298,28 @@ fn polled(port: &[String], args: &str) -> (i32, String) {
     )
 }
 
-/// The (ref, value, error) of each row of a poll's CSV.
+/// The (ref, value, error) of each value of a poll's one-line CSV: a hole has no value,
+/// and the error column names it.
 fn cells(csv: &str) -> Vec<(String, String, String)> {
-    csv.lines()
-        .skip(1)
-        .map(|line| {
-            let fields: Vec<&str> = line.splitn(6, ',').collect();
-            (fields[1].into(), fields[4].into(), fields[5].into())
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().unwrap_or_default().split(',').collect();
+    let row: Vec<&str> = lines.next().unwrap_or_default().split(',').collect();
+    assert_eq!(header.len(), row.len(), "{csv}");
+    let columns = 1..header.len() - 1;
+    // The error column names the first hole.
+    let first_hole = (1..header.len() - 1).find(|i| row[*i].is_empty());
+    let said = first_hole.map(|i| format!("{}: no such address", header[i]));
+    assert_eq!(row[header.len() - 1], said.unwrap_or_default(), "{csv}");
+    header[columns.clone()]
+        .iter()
+        .zip(&row[columns])
+        .map(|(reference, value)| {
+            let hole = value.is_empty().then(|| "no such address".to_string());
+            (
+                reference.to_string(),
+                value.to_string(),
+                hole.unwrap_or_default(),
+            )
         })
         .collect()
 }
@@ -365,4 +393,74 @@ fn a_poll_of_a_range_reads_around_its_holes() {
         assert_eq!(code, 12, "{csv}");
         assert!(csv.contains("exception 02"), "{csv}");
     }
+}
+
+/// On the screen a poll is one line under one header: its time of day, a column a value,
+/// a value that changed marked, and a poll that read nothing a line of `-`, never the last
+/// values again.
+#[test]
+fn the_table_of_a_poll_grows_by_a_line_a_poll() {
+    let (_device, port, _) = crate::support::serve_tcp(&[]);
+    let mut poller = crate::support::Stopped(
+        Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+            .args(&port)
+            .args(["read-holding", "17", "400108", "2", "--poll", "200ms"])
+            .args(["--count", "8", "--timeout", "100ms"])
+            .env("NO_COLOR", "1")
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    std::thread::sleep(Duration::from_millis(700));
+    let wrote = mbtool()
+        .args(&port)
+        .args(["write-register", "17", "400109", "42"])
+        .output()
+        .unwrap();
+    assert!(wrote.status.success(), "{wrote:?}");
+    poller.0.wait().unwrap();
+    let mut screen = String::new();
+    std::io::Read::read_to_string(poller.0.stdout.as_mut().unwrap(), &mut screen).unwrap();
+    let lines: Vec<Vec<&str>> = screen
+        .lines()
+        .map(|l| l.split_whitespace().collect())
+        .collect();
+    assert_eq!(lines[0], ["time", "400108", "400109"], "{screen}");
+    assert_eq!(lines.len(), 9, "{screen}");
+    let values: Vec<&[&str]> = lines[1..].iter().map(|l| &l[1..]).collect();
+    // 555 throughout; 400109 from 0 to 42, marked once, when it changed.
+    let changed = values
+        .iter()
+        .position(|v| v[1] == "42*")
+        .expect("a change marked");
+    assert!(changed > 0, "{screen}");
+    assert!(
+        values[..changed].iter().all(|v| *v == ["555", "0"]),
+        "{screen}"
+    );
+    assert!(
+        values[changed + 1..].iter().all(|v| *v == ["555", "42"]),
+        "{screen}"
+    );
+    // Each line starts with the time of day, milliseconds included.
+    for line in &lines[1..] {
+        let time = chrono::NaiveTime::parse_from_str(line[0], "%H:%M:%S%.3f");
+        assert!(time.is_ok(), "{screen}");
+    }
+    // Nobody there: a line of `-` a poll.
+    let nowhere = format!("127.0.0.1:{}", free_port());
+    let output = mbtool()
+        .args(["--port", &nowhere, "read-holding", "17", "400108", "2"])
+        .args(["--poll", "50ms", "--count", "2"])
+        .env("NO_COLOR", "1")
+        .output()
+        .unwrap();
+    let screen = String::from_utf8_lossy(&output.stdout);
+    let lines: Vec<Vec<&str>> = screen
+        .lines()
+        .map(|l| l.split_whitespace().collect())
+        .collect();
+    assert_eq!(lines.len(), 3, "{screen}");
+    assert!(lines[1..].iter().all(|l| l[1..] == ["-", "-"]), "{screen}");
 }
