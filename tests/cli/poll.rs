@@ -464,3 +464,34 @@ fn the_table_of_a_poll_grows_by_a_line_a_poll() {
     assert_eq!(lines.len(), 3, "{screen}");
     assert!(lines[1..].iter().all(|l| l[1..] == ["-", "-"]), "{screen}");
 }
+
+/// In a terminal a value that changed since the last poll is yellow, on its poll's line
+/// only.
+#[test]
+fn in_a_terminal_a_changed_value_is_yellow() {
+    let (_device, port, _) = crate::support::serve_tcp(&[]);
+    let args = format!(
+        "{} read-holding 17 400108 2 --poll 300ms --count 6",
+        port.join(" ")
+    );
+    let Some(terminal) = crate::support::Terminal::run_in_colour(&args, 100, 12) else {
+        return;
+    };
+    std::thread::sleep(Duration::from_millis(800));
+    let wrote = mbtool()
+        .args(&port)
+        .args(["write-register", "17", "400109", "42"])
+        .output()
+        .unwrap();
+    assert!(wrote.status.success(), "{wrote:?}");
+    terminal.wait_for(Duration::from_secs(10), |_| terminal.done());
+    let screen = terminal.screen_in_colour();
+    let yellow = "\u{1b}[33m42";
+    let coloured: Vec<&String> = screen.iter().filter(|l| l.contains(yellow)).collect();
+    assert_eq!(coloured.len(), 1, "{screen:#?}");
+    let after = screen.iter().skip_while(|l| !l.contains(yellow)).nth(1);
+    assert!(
+        after.is_some_and(|l| l.contains("42") && !l.contains("\u{1b}[33m")),
+        "{screen:#?}"
+    );
+}

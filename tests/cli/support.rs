@@ -474,6 +474,15 @@ impl Terminal {
     /// (skipped, with a reason) where tmux is missing outside CI. The pane stays open
     /// after mbtool ends, and `done()` tells that it has.
     pub fn run(args: &str, width: u16, height: u16) -> Option<Terminal> {
+        Terminal::start(args, width, height, "NO_COLOR=1")
+    }
+
+    /// As [`Terminal::run`], with colours, as a terminal shows them by default.
+    pub fn run_in_colour(args: &str, width: u16, height: u16) -> Option<Terminal> {
+        Terminal::start(args, width, height, "")
+    }
+
+    fn start(args: &str, width: u16, height: u16, env: &str) -> Option<Terminal> {
         if !peer_available("tmux", command_exists("tmux")) {
             return None;
         }
@@ -483,7 +492,7 @@ impl Terminal {
         // The shell catches SIGINT (its child gets the default action), so that after a
         // Ctrl-C that ends mbtool it still records mbtool's exit status.
         let script = format!(
-            "trap : INT; NO_COLOR=1 {} {args}; echo $? > {}; touch {}; sleep 600",
+            "trap : INT; {env} {} {args}; echo $? > {}; touch {}; sleep 600",
             assert_cmd::cargo::cargo_bin("mbtool").display(),
             terminal.socket.path().join("status").display(),
             terminal.done_marker().display()
@@ -537,6 +546,15 @@ impl Terminal {
     /// The lines on the screen now.
     pub fn screen(&self) -> Vec<String> {
         let pane = self.tmux(&["capture-pane", "-p", "-J"]);
+        String::from_utf8_lossy(&pane.stdout)
+            .lines()
+            .map(str::to_string)
+            .collect()
+    }
+
+    /// The lines on the screen now, their colours as escape sequences.
+    pub fn screen_in_colour(&self) -> Vec<String> {
+        let pane = self.tmux(&["capture-pane", "-p", "-J", "-e"]);
         String::from_utf8_lossy(&pane.stdout)
             .lines()
             .map(str::to_string)
