@@ -29,6 +29,19 @@ fn rows(text: &str) -> Vec<(chrono::DateTime<chrono::FixedOffset>, String, Strin
         .collect()
 }
 
+/// mbtool polling in the background, its rows piped for the test to read.
+fn polling<S: AsRef<std::ffi::OsStr>>(args: &[S]) -> crate::support::Stopped {
+    crate::support::Stopped(
+        Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+            .args(args)
+            .env("NO_COLOR", "1")
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    )
+}
+
 #[test]
 fn a_poll_goes_on_through_a_device_that_restarts() {
     let tcp = free_port();
@@ -37,23 +50,23 @@ fn a_poll_goes_on_through_a_device_that_restarts() {
     assert!(wait_for_listener(tcp, Duration::from_secs(10)));
     let dir = tempfile::tempdir().unwrap();
     let log = dir.path().join("poll.csv");
-    let mut poller = crate::support::Stopped(
-        Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
-            .args([
-                "--port",
-                &format!("127.0.0.1:{tcp}"),
-                "read-holding",
-                "17",
-                "400108",
-            ])
-            .args(["--poll", "100ms", "--count", "55", "-o", "csv", "--log"])
-            .arg(&log)
-            .env("NO_COLOR", "1")
-            .stdout(Stdio::piped())
-            .stderr(Stdio::null())
-            .spawn()
-            .unwrap(),
-    );
+    let port = format!("127.0.0.1:{tcp}");
+    let log_path = log.to_str().unwrap();
+    let mut poller = polling(&[
+        "--port",
+        &port,
+        "read-holding",
+        "17",
+        "400108",
+        "--poll",
+        "100ms",
+        "--count",
+        "55",
+        "-o",
+        "csv",
+        "--log",
+        log_path,
+    ]);
     std::thread::sleep(Duration::from_millis(1500));
     drop(first);
     std::thread::sleep(Duration::from_secs(2));
@@ -401,17 +414,10 @@ fn a_poll_of_a_range_reads_around_its_holes() {
 #[test]
 fn the_table_of_a_poll_grows_by_a_line_a_poll() {
     let (_device, port, _) = crate::support::serve_tcp(&[]);
-    let mut poller = crate::support::Stopped(
-        Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
-            .args(&port)
-            .args(["read-holding", "17", "400108", "2", "--poll", "200ms"])
-            .args(["--count", "8", "--timeout", "100ms"])
-            .env("NO_COLOR", "1")
-            .stdout(Stdio::piped())
-            .stderr(Stdio::null())
-            .spawn()
-            .unwrap(),
-    );
+    let mut args: Vec<&str> = port.iter().map(String::as_str).collect();
+    args.extend(["read-holding", "17", "400108", "2", "--poll", "200ms"]);
+    args.extend(["--count", "8", "--timeout", "100ms"]);
+    let mut poller = polling(&args);
     std::thread::sleep(Duration::from_millis(700));
     let wrote = mbtool()
         .args(&port)
