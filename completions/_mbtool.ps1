@@ -94,6 +94,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('sniff', 'sniff', [CompletionResultType]::ParameterValue, 'Watch a bus without transmitting; frames decoded, paired')
             [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Stand in for a slave on a serial line or TCP')
             [CompletionResult]::new('gateway', 'gateway', [CompletionResultType]::ParameterValue, 'Bridge Modbus TCP clients to a serial line, shown live')
+            [CompletionResult]::new('poll', 'poll', [CompletionResultType]::ParameterValue, 'Keep a plant''s devices read, each at its rate')
             [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'The serial ports here, and which adapter each one is')
             [CompletionResult]::new('generate', 'generate', [CompletionResultType]::ParameterValue, 'Write the shell completions and man pages (for packagers and the project''s own tree)')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
@@ -1438,6 +1439,22 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
+        'mbtool;poll' {
+            [CompletionResult]::new('--for', '--for', [CompletionResultType]::ParameterName, 'Stop after DURATION [default: until Ctrl-C or SIGTERM]')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Response timeout: 500ms, 1s [default: 1s]')
+            [CompletionResult]::new('--frame-gap', '--frame-gap', [CompletionResultType]::ParameterName, 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none')
+            [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
         'mbtool;ports' {
             [CompletionResult]::new('--root', '--root', [CompletionResultType]::ParameterName, 'Read sys, dev and proc under DIR instead of / (a copy taken from another machine)')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
@@ -1480,6 +1497,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('sniff', 'sniff', [CompletionResultType]::ParameterValue, 'Watch a bus without transmitting; frames decoded, paired')
             [CompletionResult]::new('serve', 'serve', [CompletionResultType]::ParameterValue, 'Stand in for a slave on a serial line or TCP')
             [CompletionResult]::new('gateway', 'gateway', [CompletionResultType]::ParameterValue, 'Bridge Modbus TCP clients to a serial line, shown live')
+            [CompletionResult]::new('poll', 'poll', [CompletionResultType]::ParameterValue, 'Keep a plant''s devices read, each at its rate')
             [CompletionResult]::new('ports', 'ports', [CompletionResultType]::ParameterValue, 'The serial ports here, and which adapter each one is')
             [CompletionResult]::new('generate', 'generate', [CompletionResultType]::ParameterValue, 'Write the shell completions and man pages (for packagers and the project''s own tree)')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
@@ -1549,6 +1567,9 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;help;gateway' {
+            break
+        }
+        'mbtool;help;poll' {
             break
         }
         'mbtool;help;ports' {

@@ -91,6 +91,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand sniff 'Watch a bus without transmitting; frames decoded, paired'
             cand serve 'Stand in for a slave on a serial line or TCP'
             cand gateway 'Bridge Modbus TCP clients to a serial line, shown live'
+            cand poll 'Keep a plant''s devices read, each at its rate'
             cand ports 'The serial ports here, and which adapter each one is'
             cand generate 'Write the shell completions and man pages (for packagers and the project''s own tree)'
             cand help 'Print this message or the help of the given subcommand(s)'
@@ -1382,6 +1383,21 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
         }
+        &'mbtool;poll'= {
+            cand --for 'Stop after DURATION [default: until Ctrl-C or SIGTERM]'
+            cand --timeout 'Response timeout: 500ms, 1s [default: 1s]'
+            cand --frame-gap 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none'
+            cand --max-per-request 'Split reads and writes into requests of at most N coils or registers'
+            cand -o 'Output format [default: table]'
+            cand --output 'Output format [default: table]'
+            cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand --verbose 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand --json 'The same as --output json'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
         &'mbtool;ports'= {
             cand --root 'Read sys, dev and proc under DIR instead of / (a copy taken from another machine)'
             cand -o 'Output format [default: table]'
@@ -1422,6 +1438,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand sniff 'Watch a bus without transmitting; frames decoded, paired'
             cand serve 'Stand in for a slave on a serial line or TCP'
             cand gateway 'Bridge Modbus TCP clients to a serial line, shown live'
+            cand poll 'Keep a plant''s devices read, each at its rate'
             cand ports 'The serial ports here, and which adapter each one is'
             cand generate 'Write the shell completions and man pages (for packagers and the project''s own tree)'
             cand help 'Print this message or the help of the given subcommand(s)'
@@ -1469,6 +1486,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         &'mbtool;help;serve'= {
         }
         &'mbtool;help;gateway'= {
+        }
+        &'mbtool;help;poll'= {
         }
         &'mbtool;help;ports'= {
         }

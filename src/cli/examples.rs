@@ -262,6 +262,19 @@ const EXAMPLES: &[(&str, &[Example])] = &[
         ],
     ),
     (
+        "poll",
+        &[
+            ex(
+                "Keep the devices of a plant file read, a line a device a poll",
+                "mbtool poll examples/plant.yaml --for 2s",
+            ),
+            ex(
+                "The same as InfluxDB line protocol, for Telegraf's execd input",
+                "mbtool poll examples/plant.yaml --for 2s -o influx",
+            ),
+        ],
+    ),
+    (
         "ports",
         &[
             ex("Which port is which adapter", "mbtool ports"),

@@ -7,6 +7,7 @@ mod device;
 pub mod examples;
 mod gateway;
 mod options;
+mod plant;
 mod requests;
 mod serve;
 mod taken;
@@ -16,6 +17,7 @@ mod values;
 pub use device::*;
 pub use gateway::*;
 pub use options::*;
+pub use plant::*;
 pub use requests::*;
 pub use serve::*;
 pub(crate) use taken::arg_id;
@@ -126,6 +128,10 @@ pub enum Command {
     #[command(long_about = GATEWAY_ABOUT)]
     Gateway(GatewayArgs),
 
+    /// Keep a plant's devices read, each at its rate
+    #[command(long_about = PLANT_ABOUT)]
+    Poll(PlantArgs),
+
     /// The serial ports here, and which adapter each one is
     #[command(long_about = PORTS_ABOUT)]
     Ports(PortsArgs),
@@ -151,6 +157,7 @@ impl Command {
             Command::Sniff(args) => args,
             Command::Serve(args) => args,
             Command::Gateway(args) => args,
+            Command::Poll(args) => args,
             Command::Ports(args) => args,
             Command::Generate(args) => args,
         }

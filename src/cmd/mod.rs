@@ -7,6 +7,7 @@ mod encode;
 mod gateway;
 mod info;
 mod map;
+mod plant;
 mod poll;
 mod ports;
 mod request;
@@ -37,6 +38,7 @@ pub fn run(settings: &Settings, job: &Job) -> Result<u8> {
         Job::Serve(job) => serve::run(settings, job),
         Job::Gateway(job) => gateway::run(settings, job),
         Job::Sniff(job) => sniff::run(settings, job),
+        Job::Plant(job) => plant::run(settings, job),
         Job::Ports(job) => ports::run(settings, job),
         Job::Generate { dir } => {
             mbtool::docs::generate(dir)?;

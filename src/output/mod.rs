@@ -9,6 +9,7 @@ pub mod encode;
 pub mod gateway;
 pub mod json;
 pub mod map;
+pub mod plant;
 pub mod ports;
 pub mod progress;
 pub mod read;

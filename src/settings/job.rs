@@ -15,6 +15,9 @@ use mbtool_core::slave::faults::FaultInjection;
 
 use crate::cli::{self, Command, ProbeArg, RequestArgs, RequestCommand, Wire};
 
+/// `-o influx`: the output format `poll` alone has.
+pub const INFLUX: &str = "influx";
+
 /// The command to run, with what it alone takes.
 #[derive(Clone, Debug)]
 pub enum Job {
@@ -33,6 +36,7 @@ pub enum Job {
     Sniff(Sniff),
     Serve(Serve),
     Gateway(Gateway),
+    Plant(Plant),
     Ports(Ports),
     /// The completions and man pages, written under `dir`.
     Generate {
@@ -228,6 +232,17 @@ pub struct Gateway {
     pub roles: RoleSettings,
 }
 
+/// `poll`: a plant's devices kept read.
+#[derive(Clone, Debug)]
+pub struct Plant {
+    /// The plant files.
+    pub files: Vec<PathBuf>,
+    /// How long to poll; left out, until stopped.
+    pub duration: Option<Duration>,
+    /// Rows as InfluxDB line protocol (`-o influx`).
+    pub influx: bool,
+}
+
 #[derive(Clone, Debug)]
 pub struct Ports {
     /// Where sys, dev and proc are read from.
@@ -286,6 +301,11 @@ pub fn of(command: Command) -> Result<Job, String> {
             broadcast_reply: a.broadcast_reply,
             quiet: a.quiet,
             roles: roles(a.roles),
+        }),
+        Command::Poll(a) => Job::Plant(Plant {
+            influx: a.format.output.as_deref() == Some(INFLUX),
+            files: a.files,
+            duration: a.duration,
         }),
         Command::Ports(a) => Job::Ports(Ports { root: a.root }),
         Command::Generate(a) => Job::Generate { dir: a.dir },

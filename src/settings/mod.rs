@@ -326,6 +326,7 @@ pub fn resolve(mut cli: Cli, origins: &Origins) -> Result<(Settings, Job), Strin
 
 fn settings_of(cli: &mut Cli, origins: &Origins) -> Result<Settings, String> {
     let scan = matches!(cli.command, Command::Scan(_));
+    let plant = matches!(cli.command, Command::Poll(_));
     let default_timeout = match cli.command {
         Command::Scan(_) => timeouts::SCAN,
         Command::Gateway(_) => timeouts::GATEWAY,
@@ -336,7 +337,7 @@ fn settings_of(cli: &mut Cli, origins: &Origins) -> Result<Settings, String> {
     command.gather(&mut taken);
     if let Some(message) = untaken_option(origins)
         .or_else(|| sweep_outside_scan(scan, &taken, origins))
-        .or_else(|| output_problem(&taken))
+        .or_else(|| output_problem(&taken, plant))
     {
         return Err(message);
     }
@@ -576,16 +577,27 @@ fn format_of(format: OutputFormat) -> Format {
 
 /// An `--output` that names no format, where a format is what it takes; for dump, a
 /// format's name, which would name a file by mistake.
-fn output_problem(taken: &Taken) -> Option<String> {
+fn output_problem(taken: &Taken, plant: bool) -> Option<String> {
     if let Some(name) = taken.file {
         return OutputFormat::from_str(name, true).is_ok().then(|| format!(
             "dump writes a data file: -o {name} would name the file '{name}'; give ./{name} if that is meant"
         ));
     }
     let name = taken.format?.output.as_deref()?;
-    OutputFormat::from_str(name, true)
-        .is_err()
-        .then(|| format!("--output {name}: give a format: table, json, values or csv"))
+    match (OutputFormat::from_str(name, true), plant) {
+        (Ok(_), _) => None,
+        (Err(_), true) if name == job::INFLUX => None,
+        (Err(_), true) => Some(format!(
+            "--output {name}: give a format: table, json, csv or influx"
+        )),
+        (Err(_), false) if name == job::INFLUX => Some(
+            "--output influx is poll's (mbtool poll PLANT -o influx): give table, json, values or csv"
+                .to_string(),
+        ),
+        (Err(_), false) => Some(format!(
+            "--output {name}: give a format: table, json, values or csv"
+        )),
+    }
 }
 
 /// A list of baud rates or parities typed for a command that takes one, as a one-line

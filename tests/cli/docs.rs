@@ -131,7 +131,7 @@ fn every_help_example_is_one_the_command_accepts() {
         }
         if ["scan", "info", "diag"].contains(&name) {
             args.splice(0..0, ["--port", "sim"]);
-        } else if !["decode", "encode", "ports"].contains(&name) {
+        } else if !["decode", "encode", "ports", "poll"].contains(&name) {
             args.insert(0, "encode");
         }
         let output = mbtool().args(&args).output().unwrap();

@@ -24,6 +24,7 @@ mod master_pymodbus;
 mod master_sim;
 mod master_tcp;
 mod master_tokio;
+mod plant;
 mod poll;
 mod ports;
 mod readme;

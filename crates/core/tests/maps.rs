@@ -374,3 +374,37 @@ fn a_huge_map_is_read_or_refused_in_linear_time() {
         started.elapsed()
     );
 }
+
+/// A device of a plant file, written from its parts.
+fn plant_device(name: &str, port: &str, slave: u8, every_ms: u64) -> String {
+    format!("  - name: {name}\n    port: {port}\n    slave: {slave}\n    map: m.csv\n    every: {every_ms}ms\n")
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+
+    /// Any text given as a plant file is read or told, never panicked on; a plant written
+    /// from its devices reads back as them.
+    #[test]
+    fn a_plant_file_reads_back_as_written_and_no_text_panics(
+        noise in ".{0,200}",
+        slaves in vec(0u8..=255, 1..6),
+        every in 1u64..100_000,
+    ) {
+        let _ = mbtool_core::model::plant::parse("p.yaml", &noise);
+        let _ = mbtool_core::model::plant::parse("p.yaml", &format!("devices:\n{noise}"));
+        let text: String = slaves
+            .iter()
+            .enumerate()
+            .map(|(i, slave)| plant_device(&format!("d{i}"), "tcp://127.0.0.1:502", *slave, every))
+            .collect();
+        let devices = mbtool_core::model::plant::parse("p.yaml", &format!("devices:\n{text}")).unwrap();
+        prop_assert_eq!(devices.len(), slaves.len());
+        for (i, (device, slave)) in devices.iter().zip(&slaves).enumerate() {
+            prop_assert_eq!(&device.name, &format!("d{i}"));
+            prop_assert_eq!(device.slave, *slave);
+            prop_assert_eq!(device.every, Duration::from_millis(every));
+            prop_assert_eq!(device.line, 2 + 5 * i);
+        }
+    }
+}

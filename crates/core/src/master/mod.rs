@@ -19,6 +19,7 @@ pub mod failover;
 pub mod map;
 pub mod open;
 pub mod plan;
+pub mod plant;
 pub mod poll;
 pub mod range;
 pub mod run;

@@ -8,6 +8,7 @@ pub mod home_assistant;
 pub mod line;
 pub mod map;
 pub mod map_file;
+pub mod plant;
 pub mod shown;
 pub mod spread;
 pub mod structure;

@@ -1,0 +1,60 @@
+//! `poll`: a plant's devices kept read.
+
+use clap::Args;
+
+use super::options::{left_out::*, more_in_long_help};
+use super::options::{ExchangeArgs, FormatArgs, SplitArgs, TraceArgs};
+use super::taken::holds;
+
+pub(super) const PLANT_ABOUT: &str = "\
+Keep every device a plant file describes read, each at its own rate, until Ctrl-C or \
+SIGTERM (or for --for DURATION), and end with a summary per device on stderr.
+
+A plant file lists its devices under devices:, each with a name, a port (any --port \
+form: tcp://10.0.0.5, /dev/ttyUSB0 with baud, parity, data_bits and stop_bits, \
+rtu+tcp://HOST:PORT, sim), a slave, a map (a CSV or Home Assistant register map, beside \
+the plant file) and every (1s, 500ms):
+
+  devices:
+    - name: meter1
+      port: tcp://10.0.0.5
+      slave: 1
+      map: meter.csv
+      every: 1s
+
+Every fault of the files is told at once, and nothing is polled until they are all good. \
+Each TCP device is polled on a connection of its own, all at once; the devices on one \
+serial line (or one rtu+tcp:// server) are polled in turn by one worker, at the line's \
+pace, each device's points read as read --map groups them. A device that does not answer \
+is asked less often (twice its rate after three failures in a row, doubling up to a \
+minute), and never holds back another device's values; a poll that reads nothing is a \
+row without values, never the last values again.
+
+Each device's poll is a row: a line of name=value on a terminal; -o csv a header of \
+time,device, then a column for every point name of the plant, then error; -o json one \
+object a row with time, device, values and errors; -o influx InfluxDB line protocol \
+(measurement modbus, tags device and slave, a field a point, the time in nanoseconds), \
+for Telegraf's execd and exec inputs.";
+
+#[derive(Clone, Debug, Args)]
+#[command(after_help = more_in_long_help(&[&[CONNECTION, ADDRESSES]]))]
+pub struct PlantArgs {
+    /// Plant files: their devices, each a port, a slave, a map and a rate
+    #[arg(required = true, value_name = "FILE")]
+    pub files: Vec<std::path::PathBuf>,
+
+    /// Stop after DURATION [default: until Ctrl-C or SIGTERM]
+    #[arg(long = "for", value_name = "DURATION", value_parser = mbtool_core::input::duration::parse_duration)]
+    pub duration: Option<std::time::Duration>,
+
+    #[command(flatten)]
+    pub exchange: ExchangeArgs,
+    #[command(flatten)]
+    pub split: SplitArgs,
+    #[command(flatten)]
+    pub trace: TraceArgs,
+    #[command(flatten)]
+    pub format: FormatArgs,
+}
+
+holds!(PlantArgs: exchange, split, trace, format);

@@ -1,0 +1,264 @@
+//! `mbtool poll PLANT...`: every device of a plant kept read, each at its rate, a worker a
+//! port, until Ctrl-C, SIGTERM or `--for`; a summary per device at the end.
+
+use std::io::Write;
+use std::path::Path;
+use std::sync::atomic::Ordering;
+use std::sync::mpsc;
+use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
+
+use anyhow::Result;
+
+use mbtool::connection::{Connector, Role};
+use mbtool::error::Error;
+use mbtool::output::plant::{PlantFormat, PlantRow, PlantWriter};
+use mbtool::output::{self, plural};
+use mbtool::settings::{job, ConnectionSettings, Settings};
+use mbtool_core::master::plant::{keep_read, Outcome, Polled, Scheduled};
+use mbtool_core::model::map::Point;
+use mbtool_core::model::map_file;
+use mbtool_core::model::plant::{self, PlantDevice};
+
+/// A device, ready to poll.
+struct Device {
+    plant: PlantDevice,
+    points: Vec<Point>,
+    connector: Connector,
+}
+
+pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
+    let devices = load(settings, &job.files)?;
+    let mut columns: Vec<String> = Vec::new();
+    for point in devices.iter().flat_map(|d| &d.points) {
+        if !columns.contains(&point.name) {
+            columns.push(point.name.clone());
+        }
+    }
+    let format = PlantFormat::of(settings.output.format, job.influx);
+    let mut writer = PlantWriter::new(format, columns);
+    let stop = super::shared::stop_on_signal()?;
+    let deadline = job.duration.map(|d| Instant::now() + d);
+    let (sender, polls) = mpsc::channel::<(usize, Polled, SystemTime)>();
+    let max = settings.data.max_per_request;
+    let verbose = settings.output.verbose;
+    std::thread::scope(|scope| -> Result<u8> {
+        for (_, members) in ports(&devices) {
+            let sender = sender.clone();
+            let flag = &stop.flag;
+            let devices = &devices;
+            scope.spawn(move || {
+                let connector = &devices[members[0]].connector;
+                let scheduled: Vec<Scheduled> = members
+                    .iter()
+                    .map(|i| Scheduled {
+                        slave: devices[*i].plant.slave,
+                        points: devices[*i].points.clone(),
+                        every: devices[*i].plant.every,
+                    })
+                    .collect();
+                let connect = || {
+                    connector.connect().map(|connection| {
+                        let mut master = connection.master;
+                        if verbose {
+                            master.trace(super::shared::tracer(connector.mode));
+                        }
+                        master
+                    })
+                };
+                let wait = |time: Duration| {
+                    let until = Instant::now() + time;
+                    loop {
+                        let now = Instant::now();
+                        if flag.load(Ordering::SeqCst) || deadline.is_some_and(|d| now >= d) {
+                            return true;
+                        }
+                        if now >= until {
+                            return false;
+                        }
+                        std::thread::sleep((until - now).min(Duration::from_millis(50)));
+                    }
+                };
+                keep_read(connect, &scheduled, max, wait, |polled| {
+                    let device = members[polled.device];
+                    let _ = sender.send((device, polled, SystemTime::now()));
+                });
+            });
+        }
+        drop(sender);
+        let mut tallies = vec![Tally::default(); devices.len()];
+        let written = write_rows(&devices, polls, &mut writer, &mut tallies);
+        // Output that cannot be written (a closed pipe) ends the workers too.
+        if written.is_err() {
+            stop.flag.store(true, Ordering::SeqCst);
+        }
+        for (device, tally) in devices.iter().zip(&tallies) {
+            mbtool::note!("mbtool: {}: {}", device.plant.name, tally.summary());
+        }
+        written?;
+        Ok(match stop.flag.load(Ordering::SeqCst) {
+            true => stop.exit_status(),
+            false => 0,
+        })
+    })
+}
+
+/// Each poll as it comes, until every worker has ended, tallied for the summary.
+fn write_rows(
+    devices: &[Device],
+    polls: mpsc::Receiver<(usize, Polled, SystemTime)>,
+    writer: &mut PlantWriter,
+    tallies: &mut [Tally],
+) -> Result<()> {
+    let mut out = output::stdout();
+    for (index, polled, time) in polls {
+        let device = &devices[index];
+        tallies[index].add(&polled);
+        let row_time = chrono::DateTime::<chrono::Local>::from(time)
+            .to_rfc3339_opts(chrono::SecondsFormat::Millis, false);
+        let nanos = time.duration_since(UNIX_EPOCH).map_or(0, |d| d.as_nanos());
+        let mut row = PlantRow {
+            time: &row_time,
+            nanos,
+            device: &device.plant.name,
+            slave: device.plant.slave,
+            values: Vec::new(),
+            errors: Vec::new(),
+        };
+        match &polled.outcome {
+            Outcome::Read(read) => {
+                for value in &read.values {
+                    row.values
+                        .push((device.points[value.point].name.as_str(), &value.value));
+                }
+                for failure in &read.failed {
+                    for point in &failure.points {
+                        let name = device.points[*point].name.as_str();
+                        row.errors.push((name, failure.error.to_string()));
+                    }
+                }
+                for point in &read.missing {
+                    let name = device.points[*point].name.as_str();
+                    row.errors.push((name, "no such address".into()));
+                }
+            }
+            Outcome::Failed(error) => row.errors.push(("", error.to_string())),
+            Outcome::Down(why) => row.errors.push(("", format!("not connected: {why}"))),
+        }
+        writer.row(&mut out, &row)?;
+        out.flush()?;
+    }
+    Ok(())
+}
+
+/// The devices of every plant file with their maps, or every fault of them at once.
+fn load(settings: &Settings, files: &[std::path::PathBuf]) -> Result<Vec<Device>, Error> {
+    let mut faults: Vec<String> = Vec::new();
+    let mut devices: Vec<Device> = Vec::new();
+    for file in files {
+        let name = file.display().to_string();
+        let text = match std::fs::read_to_string(file) {
+            Ok(text) => text,
+            Err(e) => {
+                faults.push(format!("cannot read {name}: {e}"));
+                continue;
+            }
+        };
+        let parsed = plant::parse_all(&name, &text);
+        if let Err(e) = parsed.faults {
+            faults.extend(e.to_string().lines().map(String::from));
+        }
+        let found = parsed.devices;
+        let folder = file.parent().unwrap_or(Path::new("."));
+        for device in found {
+            if let Some(other) = devices.iter().find(|d| d.plant.name == device.name) {
+                faults.push(format!(
+                    "{name}:{}: the name '{}' is taken already, by a device of line {}",
+                    device.line, device.name, other.plant.line
+                ));
+                continue;
+            }
+            let map = map_file::load(&folder.join(&device.map));
+            let connection = ConnectionSettings {
+                port: None,
+                ..settings.connection.clone()
+            }
+            .with_map(Some(&device.connection));
+            let connector = Connector::new(&connection, Role::Master);
+            let at = format!("{name}:{}: {}", device.line, device.name);
+            match (map, connector) {
+                (Ok(map), Ok(connector)) => devices.push(Device {
+                    plant: device,
+                    points: map.points,
+                    connector,
+                }),
+                (map, connector) => {
+                    if let Err(e) = map {
+                        faults.push(format!("{at}: {e}"));
+                    }
+                    if let Err(e) = connector {
+                        faults.push(format!("{at}: {e}"));
+                    }
+                }
+            }
+        }
+    }
+    match faults.is_empty() {
+        true => Ok(devices),
+        false => Err(Error::Faults(faults)),
+    }
+}
+
+/// The devices of each port, by index: the devices one connection reaches, polled in turn
+/// by one worker (a serial line, a TCP host and port).
+fn ports(devices: &[Device]) -> Vec<(String, Vec<usize>)> {
+    let mut ports: Vec<(String, Vec<usize>)> = Vec::new();
+    for (index, device) in devices.iter().enumerate() {
+        let port = device.connector.endpoint.to_string();
+        match ports.iter_mut().find(|(known, _)| *known == port) {
+            Some((_, members)) => members.push(index),
+            None => ports.push((port, vec![index])),
+        }
+    }
+    ports
+}
+
+/// What a device's polls gave, for the summary.
+#[derive(Clone, Default)]
+struct Tally {
+    polls: u64,
+    read: u64,
+    failed: u64,
+    down: u64,
+    time: Duration,
+}
+
+impl Tally {
+    fn add(&mut self, polled: &Polled) {
+        self.polls += 1;
+        match &polled.outcome {
+            Outcome::Read(read) if read.failed.is_empty() => {
+                self.read += 1;
+                self.time += polled.took;
+            }
+            Outcome::Read(_) | Outcome::Failed(_) => self.failed += 1,
+            Outcome::Down(_) => self.down += 1,
+        }
+    }
+
+    fn summary(&self) -> String {
+        let mean = match self.read {
+            0 => String::new(),
+            n => format!(
+                "; mean {} ms",
+                (self.time / u32::try_from(n).unwrap_or(u32::MAX)).as_millis()
+            ),
+        };
+        format!(
+            "{}, {} read whole, {} with failures, {} while not connected{mean}",
+            plural(self.polls as usize, "poll"),
+            self.read,
+            self.failed,
+            self.down
+        )
+    }
+}
