@@ -2155,7 +2155,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__poll)
-            opts="-v -o -h -V --for --timeout --frame-gap --max-per-request --verbose --output --json --help --version"
+            opts="-v -o -h -V --for --timeout --frame-gap --max-per-request --verbose --json --output --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2178,11 +2178,11 @@ _mbtool() {
                     return 0
                     ;;
                 --output)
-                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    COMPREPLY=($(compgen -W "table json csv influx" -- "${cur}"))
                     return 0
                     ;;
                 -o)
-                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    COMPREPLY=($(compgen -W "table json csv influx" -- "${cur}"))
                     return 0
                     ;;
                 *)

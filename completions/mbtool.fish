@@ -1670,8 +1670,8 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l frame-gap -d 'Sil
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
-values\t'Only the values, one per line, for $(...) in scripts'
-csv\t'Comma-separated values with a header line'"
+csv\t'Comma-separated values with a header line'
+influx\t'InfluxDB line protocol, for Telegraf\'s execd and exec inputs'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -s h -l help -d 'Print help (see more with \'--help\')'

@@ -355,7 +355,7 @@ impl From<ModeArg> for Mode {
 #[command(next_help_heading = "Output")]
 pub struct FormatArgs {
     /// Output format [default: table]
-    #[arg(short, long, value_name = "FORMAT", value_parser = FormatOrFile)]
+    #[arg(short, long, value_name = "FORMAT", value_parser = FormatOrFile::default())]
     pub output: Option<String>,
 
     /// The same as --output json
@@ -366,8 +366,11 @@ pub struct FormatArgs {
 /// The value of `--output`: a format (listed in help and completions). It is read as
 /// text and checked once the command is known, as `dump`'s `--output` of the same name is
 /// a file, and an `--output` typed before the command name may be either.
-#[derive(Clone)]
-pub struct FormatOrFile;
+#[derive(Clone, Default)]
+pub struct FormatOrFile {
+    /// `poll`'s formats: InfluxDB line protocol beside the others, no bare values.
+    pub plant: bool,
+}
 
 impl clap::builder::TypedValueParser for FormatOrFile {
     type Value = String;
@@ -384,10 +387,17 @@ impl clap::builder::TypedValueParser for FormatOrFile {
     fn possible_values(
         &self,
     ) -> Option<Box<dyn Iterator<Item = clap::builder::PossibleValue> + '_>> {
+        let plant = self.plant;
+        let influx = plant.then(|| {
+            clap::builder::PossibleValue::new("influx")
+                .help("InfluxDB line protocol, for Telegraf's execd and exec inputs")
+        });
         Some(Box::new(
             OutputFormat::value_variants()
                 .iter()
-                .filter_map(ValueEnum::to_possible_value),
+                .filter(move |format| !(plant && **format == OutputFormat::Values))
+                .filter_map(ValueEnum::to_possible_value)
+                .chain(influx),
         ))
     }
 }

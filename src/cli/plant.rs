@@ -3,7 +3,7 @@
 use clap::Args;
 
 use super::options::{left_out::*, more_in_long_help};
-use super::options::{ExchangeArgs, FormatArgs, SplitArgs, TraceArgs};
+use super::options::{ExchangeArgs, FormatArgs, FormatOrFile, SplitArgs, TraceArgs};
 use super::taken::holds;
 
 pub(super) const PLANT_ABOUT: &str = "\
@@ -38,6 +38,7 @@ for Telegraf's execd and exec inputs.";
 
 #[derive(Clone, Debug, Args)]
 #[command(after_help = more_in_long_help(&[&[CONNECTION, ADDRESSES]]))]
+#[command(mut_arg("output", |arg| arg.value_parser(FormatOrFile { plant: true })))]
 pub struct PlantArgs {
     /// Plant files: their devices, each a port, a slave, a map and a rate
     #[arg(required = true, value_name = "FILE")]

@@ -585,6 +585,9 @@ fn output_problem(taken: &Taken, plant: bool) -> Option<String> {
     }
     let name = taken.format?.output.as_deref()?;
     match (OutputFormat::from_str(name, true), plant) {
+        (Ok(OutputFormat::Values), true) => Some(format!(
+            "--output {name}: give a format: table, json, csv or influx"
+        )),
         (Ok(_), _) => None,
         (Err(_), true) if name == job::INFLUX => None,
         (Err(_), true) => Some(format!(

@@ -229,3 +229,25 @@ fn send_signal(pid: u32, signal: &str) {
         .unwrap();
     assert!(status.success());
 }
+
+#[test]
+fn influx_is_polls_format_and_values_is_not() {
+    let (_dir, path) = plant(&[device("pump", "sim", 17, "100ms")]);
+    for (args, said) in [
+        (vec!["poll", &path, "-o", "values"], "mbtool: --output values: give a format: table, json, csv or influx\n"),
+        (
+            vec!["--port", "sim", "read-holding", "17", "1", "-o", "influx"],
+            "mbtool: --output influx is poll's (mbtool poll PLANT -o influx): give table, json, values or csv\n",
+        ),
+    ] {
+        let output = mbtool().args(&args).output().unwrap();
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        assert_eq!(String::from_utf8_lossy(&output.stderr), said);
+    }
+    let help = mbtool().args(["poll", "-h"]).output().unwrap();
+    let help = String::from_utf8_lossy(&help.stdout);
+    assert!(
+        help.contains("[possible values: table, json, csv, influx]"),
+        "{help}"
+    );
+}
