@@ -2155,12 +2155,20 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__poll)
-            opts="-v -o -h -V --for --timeout --frame-gap --max-per-request --verbose --json --output --help --version"
+            opts="-v -o -h -V --influx --buffer --for --timeout --frame-gap --max-per-request --verbose --json --output --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
+                --influx)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --buffer)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
                 --for)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0

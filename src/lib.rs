@@ -10,6 +10,7 @@ pub mod habits;
 pub mod lines;
 pub mod output;
 pub mod settings;
+pub mod sink;
 pub mod stdin;
 
 /// `eprintln!` that never panics: a closed stderr (`mbtool decode 2>&1 | head -1`) ends the

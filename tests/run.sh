@@ -18,6 +18,8 @@ command -v tshark >/dev/null || missing+=(tshark)
 command -v pkg-config >/dev/null || missing+=(pkg-config)
 pkg-config --exists libudev 2>/dev/null || missing+=(libudev-dev)
 pkg-config --exists libmodbus 2>/dev/null || missing+=(libmodbus-dev)
+# InfluxDB 1.x, the server poll --influx writes to (each test starts its own).
+command -v influxd >/dev/null || missing+=(influxdb)
 # libpcap at run time: sniff --interface loads it (tcpdump brings it too).
 ldconfig -p 2>/dev/null | grep -q 'libpcap\.so' || missing+=(libpcap0.8)
 if [ ${#missing[@]} -gt 0 ]; then

@@ -44,6 +44,17 @@ pub struct PlantArgs {
     #[arg(required = true, value_name = "FILE")]
     pub files: Vec<std::path::PathBuf>,
 
+    /// Also write every row to InfluxDB: http://HOST:8086/write?db=NAME
+    ///
+    /// The 1.x write API, in batches; a server that is down gets the rows kept for it
+    /// (--buffer) when it is back
+    #[arg(long, value_name = "URL")]
+    pub influx: Option<String>,
+
+    /// Rows kept for a server that is down; past it the oldest give way, counted
+    #[arg(long, value_name = "N", default_value_t = 10_000, value_parser = clap::value_parser!(u32).range(1..))]
+    pub buffer: u32,
+
     /// Stop after DURATION [default: until Ctrl-C or SIGTERM]
     #[arg(long = "for", value_name = "DURATION", value_parser = mbtool_core::input::duration::parse_duration)]
     pub duration: Option<std::time::Duration>,

@@ -14,6 +14,7 @@ use mbtool::error::Error;
 use mbtool::output::plant::{PlantFormat, PlantRow, PlantWriter};
 use mbtool::output::{self, plural};
 use mbtool::settings::{job, ConnectionSettings, Settings};
+use mbtool::sink::{influx, Buffer};
 use mbtool_core::master::plant::{keep_read, Outcome, Polled, Scheduled};
 use mbtool_core::model::map::Point;
 use mbtool_core::model::map_file;
@@ -85,14 +86,34 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
             });
         }
         drop(sender);
+        // InfluxDB over HTTP: a buffer filled here, emptied by a thread of its own.
+        let influx = job.influx_url.as_deref().map(|url| {
+            let buffer = Buffer::new(job.buffer);
+            let sending = buffer.clone();
+            let sender = scope
+                .spawn(move || influx::send(url, &sending, |said| mbtool::note!("mbtool: {said}")));
+            (buffer, sender)
+        });
+        let mut sinks = Sinks {
+            screen: &mut writer,
+            influx: influx
+                .as_ref()
+                .map(|(buffer, _)| (buffer, PlantWriter::new(PlantFormat::Influx, Vec::new()))),
+        };
         let mut tallies = vec![Tally::default(); devices.len()];
-        let written = write_rows(&devices, polls, &mut writer, &mut tallies);
+        let written = write_rows(&devices, polls, &mut sinks, &mut tallies);
         // Output that cannot be written (a closed pipe) ends the workers too.
         if written.is_err() {
             stop.flag.store(true, Ordering::SeqCst);
         }
         for (device, tally) in devices.iter().zip(&tallies) {
             mbtool::note!("mbtool: {}: {}", device.plant.name, tally.summary());
+        }
+        if let Some((buffer, sender)) = influx {
+            buffer.close();
+            if let Ok(delivered) = sender.join() {
+                mbtool::note!("mbtool: InfluxDB: {}", delivered.summary(job.buffer));
+            }
         }
         written?;
         Ok(match stop.flag.load(Ordering::SeqCst) {
@@ -102,11 +123,31 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
     })
 }
 
+/// Where each row goes: the screen (or standard output), and a server's buffer.
+struct Sinks<'a> {
+    screen: &'a mut PlantWriter,
+    influx: Option<(&'a Buffer, PlantWriter)>,
+}
+
+impl Sinks<'_> {
+    fn row(&mut self, out: &mut dyn Write, row: &PlantRow) -> std::io::Result<()> {
+        self.screen.row(out, row)?;
+        if let Some((buffer, lines)) = self.influx.as_mut() {
+            let mut line = Vec::new();
+            lines.row(&mut line, row)?;
+            if !line.is_empty() {
+                buffer.push(String::from_utf8_lossy(line.trim_ascii_end()).into_owned());
+            }
+        }
+        Ok(())
+    }
+}
+
 /// Each poll as it comes, until every worker has ended, tallied for the summary.
 fn write_rows(
     devices: &[Device],
     polls: mpsc::Receiver<(usize, Polled, SystemTime)>,
-    writer: &mut PlantWriter,
+    sinks: &mut Sinks,
     tallies: &mut [Tally],
 ) -> Result<()> {
     let mut out = output::stdout();
@@ -144,7 +185,7 @@ fn write_rows(
             Outcome::Failed(error) => row.errors.push(("", error.to_string())),
             Outcome::Down(why) => row.errors.push(("", format!("not connected: {why}"))),
         }
-        writer.row(&mut out, &row)?;
+        sinks.row(&mut out, &row)?;
         out.flush()?;
     }
     Ok(())

@@ -241,6 +241,10 @@ pub struct Plant {
     pub duration: Option<Duration>,
     /// Rows as InfluxDB line protocol (`-o influx`).
     pub influx: bool,
+    /// An InfluxDB server's write URL, every row written to it too.
+    pub influx_url: Option<String>,
+    /// Rows kept for a server that is down.
+    pub buffer: usize,
 }
 
 #[derive(Clone, Debug)]
@@ -302,11 +306,18 @@ pub fn of(command: Command) -> Result<Job, String> {
             quiet: a.quiet,
             roles: roles(a.roles),
         }),
-        Command::Poll(a) => Job::Plant(Plant {
-            influx: a.format.output.as_deref() == Some(INFLUX),
-            files: a.files,
-            duration: a.duration,
-        }),
+        Command::Poll(a) => {
+            if let Some(url) = &a.influx {
+                crate::sink::influx::check_url(url)?;
+            }
+            Job::Plant(Plant {
+                influx: a.format.output.as_deref() == Some(INFLUX),
+                influx_url: a.influx,
+                buffer: a.buffer as usize,
+                files: a.files,
+                duration: a.duration,
+            })
+        }
         Command::Ports(a) => Job::Ports(Ports { root: a.root }),
         Command::Generate(a) => Job::Generate { dir: a.dir },
     })

@@ -1,0 +1,145 @@
+//! Where a poll's rows go beyond standard output: a server that may be down. Rows are kept
+//! in a bounded buffer and sent in batches by a thread of their own, so that a sink that is
+//! down never holds back the polling; what does not fit is counted and told.
+
+pub mod influx;
+
+use std::collections::VecDeque;
+use std::sync::{Arc, Condvar, Mutex};
+use std::time::Duration;
+
+/// The rows waiting for a sink, and what became of the others.
+#[derive(Default)]
+struct Waiting {
+    rows: VecDeque<String>,
+    /// Rows dropped, oldest first, when the buffer was full.
+    dropped: u64,
+    /// Set when no more rows will come: send what is left, then end.
+    closing: bool,
+}
+
+/// A bounded buffer of rows, shared by the poll that fills it and the thread that sends
+/// its rows.
+#[derive(Clone)]
+pub struct Buffer {
+    waiting: Arc<(Mutex<Waiting>, Condvar)>,
+    capacity: usize,
+}
+
+impl Buffer {
+    pub fn new(capacity: usize) -> Self {
+        Self {
+            waiting: Arc::new((Mutex::new(Waiting::default()), Condvar::new())),
+            capacity: capacity.max(1),
+        }
+    }
+
+    /// Adds a row; when the buffer is full, the oldest row gives way and is counted.
+    pub fn push(&self, row: String) {
+        let (lock, ready) = &*self.waiting;
+        let mut waiting = lock.lock().unwrap_or_else(|p| p.into_inner());
+        if waiting.rows.len() >= self.capacity {
+            waiting.rows.pop_front();
+            waiting.dropped += 1;
+        }
+        waiting.rows.push_back(row);
+        ready.notify_one();
+    }
+
+    /// No more rows: the sender sends what is left and ends.
+    pub fn close(&self) {
+        let (lock, ready) = &*self.waiting;
+        lock.lock().unwrap_or_else(|p| p.into_inner()).closing = true;
+        ready.notify_all();
+    }
+
+    /// Up to `most` of the oldest rows, waiting up to `within` for one to come; and whether
+    /// the buffer is closing.
+    fn oldest(&self, most: usize, within: Duration) -> (Vec<String>, bool) {
+        let (lock, ready) = &*self.waiting;
+        let mut waiting = lock.lock().unwrap_or_else(|p| p.into_inner());
+        if waiting.rows.is_empty() && !waiting.closing {
+            waiting = ready
+                .wait_timeout(waiting, within)
+                .map_or_else(|p| p.into_inner().0, |(w, _)| w);
+        }
+        let rows = waiting.rows.iter().take(most).cloned().collect();
+        (rows, waiting.closing)
+    }
+
+    /// The `count` oldest rows were sent.
+    fn sent(&self, count: usize) {
+        let (lock, _) = &*self.waiting;
+        let mut waiting = lock.lock().unwrap_or_else(|p| p.into_inner());
+        let count = count.min(waiting.rows.len());
+        waiting.rows.drain(..count);
+    }
+
+    /// How many rows were dropped, and how many wait still.
+    fn counts(&self) -> (u64, usize) {
+        let (lock, _) = &*self.waiting;
+        let waiting = lock.lock().unwrap_or_else(|p| p.into_inner());
+        (waiting.dropped, waiting.rows.len())
+    }
+}
+
+/// What a sink did, for the summary.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Delivered {
+    /// Rows the server took.
+    pub sent: u64,
+    /// Rows dropped when the buffer was full.
+    pub dropped: u64,
+    /// Rows still waiting when the poll ended and the server could not take them.
+    pub unsent: usize,
+    /// Rows the server refused (a bad request), which are not sent again.
+    pub refused: u64,
+}
+
+impl Delivered {
+    /// `1200 rows written, 30 dropped while it was down (the buffer holds 1000), 5 unsent`.
+    pub fn summary(&self, capacity: usize) -> String {
+        let mut said = format!(
+            "{} written",
+            crate::output::plural(self.sent as usize, "row")
+        );
+        if self.dropped > 0 {
+            said.push_str(&format!(
+                ", {} dropped while it was down (the buffer holds {capacity}; --buffer sets it)",
+                self.dropped
+            ));
+        }
+        if self.refused > 0 {
+            said.push_str(&format!(", {} refused by the server", self.refused));
+        }
+        if self.unsent > 0 {
+            said.push_str(&format!(", {} unsent at the end", self.unsent));
+        }
+        said
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_full_buffer_drops_its_oldest_rows_and_counts_them() {
+        let buffer = Buffer::new(3);
+        for row in ["a", "b", "c", "d", "e"] {
+            buffer.push(row.into());
+        }
+        let (rows, closing) = buffer.oldest(10, Duration::ZERO);
+        assert_eq!(
+            (rows, closing),
+            (vec!["c".into(), "d".into(), "e".into()], false)
+        );
+        buffer.sent(2);
+        assert_eq!(buffer.counts(), (2, 1));
+        buffer.close();
+        assert_eq!(
+            buffer.oldest(10, Duration::ZERO),
+            (vec!["e".to_string()], true)
+        );
+    }
+}
