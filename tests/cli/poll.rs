@@ -419,12 +419,7 @@ fn the_table_of_a_poll_grows_by_a_line_a_poll() {
     args.extend(["--count", "8", "--timeout", "100ms"]);
     let mut poller = polling(&args);
     std::thread::sleep(Duration::from_millis(700));
-    let wrote = mbtool()
-        .args(&port)
-        .args(["write-register", "17", "400109", "42"])
-        .output()
-        .unwrap();
-    assert!(wrote.status.success(), "{wrote:?}");
+    write_42(&port);
     poller.0.wait().unwrap();
     let mut screen = String::new();
     std::io::Read::read_to_string(poller.0.stdout.as_mut().unwrap(), &mut screen).unwrap();
@@ -484,12 +479,7 @@ fn in_a_terminal_a_changed_value_is_yellow() {
         return;
     };
     std::thread::sleep(Duration::from_millis(800));
-    let wrote = mbtool()
-        .args(&port)
-        .args(["write-register", "17", "400109", "42"])
-        .output()
-        .unwrap();
-    assert!(wrote.status.success(), "{wrote:?}");
+    write_42(&port);
     terminal.wait_for(Duration::from_secs(10), |_| terminal.done());
     let screen = terminal.screen_in_colour();
     let yellow = "\u{1b}[33m42";
@@ -500,4 +490,14 @@ fn in_a_terminal_a_changed_value_is_yellow() {
         after.is_some_and(|l| l.contains("42") && !l.contains("\u{1b}[33m")),
         "{screen:#?}"
     );
+}
+
+/// Writes 42 to 400109 of slave 17 at `port`, as another master would.
+fn write_42(port: &[String]) {
+    let wrote = mbtool()
+        .args(port)
+        .args(["write-register", "17", "400109", "42"])
+        .output()
+        .unwrap();
+    assert!(wrote.status.success(), "{wrote:?}");
 }

@@ -22,7 +22,7 @@ use std::collections::BTreeMap;
 use std::fmt;
 use std::time::Duration;
 
-use serde::de::{Deserializer, IgnoredAny, MapAccess, SeqAccess, Visitor};
+use serde::de::{Deserializer, MapAccess, SeqAccess, Visitor};
 use serde::Deserialize;
 use serde_saphyr::Spanned;
 
@@ -122,7 +122,7 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
         }
     }
     let devices = match top.get("devices").map(|d| &d.value) {
-        Some(Scalar::Devices(devices)) => devices.as_slice(),
+        Some(Scalar::List(devices)) => devices.as_slice(),
         Some(_) => {
             faults.add(at(file, 1, "devices: give a list of devices"));
             &[]
@@ -141,7 +141,15 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
     let mut names: Vec<(String, usize)> = Vec::new();
     for device in devices {
         let line = line_of(device);
-        if let Some(Scalar::Text(name)) = device.value.get("name").map(|n| &n.value) {
+        let Scalar::Map(keys) = &device.value else {
+            faults.add(at(
+                file,
+                line,
+                "a device is its keys: name, port, slave, map, every",
+            ));
+            continue;
+        };
+        if let Some(Scalar::Text(name)) = keys.get("name").map(|n| &n.value) {
             if let Some((_, first)) = names.iter().find(|(known, _)| known == name) {
                 faults.add(at(
                     file,
@@ -152,7 +160,7 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
             }
             names.push((name.clone(), line));
         }
-        match read_device(file, device) {
+        match read_device(file, line, keys) {
             Ok(device) => found.push(device),
             Err(errors) => errors.into_iter().for_each(|e| faults.add(e)),
         }
@@ -170,12 +178,12 @@ fn line_of<T>(spanned: &Spanned<T>) -> usize {
 /// One device's keys read, or each of their faults.
 fn read_device(
     file: &str,
-    device: &Spanned<BTreeMap<String, Spanned<Scalar>>>,
+    line: usize,
+    keys: &BTreeMap<String, Spanned<Scalar>>,
 ) -> Result<PlantDevice, Vec<MapError>> {
-    let line = line_of(device);
     let mut faults = Vec::new();
     let mut fault = |at_line: usize, message: String| faults.push(at(file, at_line, message));
-    for (key, value) in &device.value {
+    for (key, value) in keys {
         if !KEYS.contains(&key.as_str()) {
             fault(
                 line_of(value),
@@ -183,7 +191,7 @@ fn read_device(
             );
         }
     }
-    let text = |key: &str| match device.value.get(key) {
+    let text = |key: &str| match keys.get(key) {
         Some(Spanned {
             value: Scalar::Text(text),
             referenced,
@@ -211,7 +219,7 @@ fn read_device(
     let map = needed("map", "map: its register map (CSV or Home Assistant YAML)");
     let every = needed("every", "every: how often it is read (1s, 500ms)");
     let name = needed("name", "name: how its rows name it");
-    if device.value.contains_key("points") {
+    if keys.contains_key("points") {
         fault(
             line,
             format!("{what}: points are given in a map file for now: give map: FILE"),
@@ -290,11 +298,13 @@ fn read_device(
     })
 }
 
-/// A value of a plant file: a scalar's text, the list of devices, or anything else.
+/// A value of a plant file as YAML gives it: a scalar's text, a list, a mapping, or
+/// nothing; each with where it stands.
 enum Scalar {
     Text(String),
-    Devices(Vec<Spanned<BTreeMap<String, Spanned<Scalar>>>>),
-    Other,
+    List(Vec<Spanned<Scalar>>),
+    Map(BTreeMap<String, Spanned<Scalar>>),
+    Nothing,
 }
 
 impl<'de> Deserialize<'de> for Scalar {
@@ -321,76 +331,24 @@ impl<'de> Deserialize<'de> for Scalar {
                 Ok(Scalar::Text(v.to_string()))
             }
             fn visit_unit<E: serde::de::Error>(self) -> Result<Scalar, E> {
-                Ok(Scalar::Other)
+                Ok(Scalar::Nothing)
             }
             fn visit_none<E: serde::de::Error>(self) -> Result<Scalar, E> {
-                Ok(Scalar::Other)
+                Ok(Scalar::Nothing)
             }
             fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Scalar, A::Error> {
-                // A list of mappings is the devices; any other list is kept as nothing.
-                let mut devices = Vec::new();
-                while let Some(item) = seq.next_element::<Spanned<Item>>()? {
-                    if let Item::Device(device) = item.value {
-                        devices.push(Spanned {
-                            value: device,
-                            referenced: item.referenced,
-                            defined: item.defined,
-                        });
-                    }
+                let mut items = Vec::new();
+                while let Some(item) = seq.next_element::<Spanned<Scalar>>()? {
+                    items.push(item);
                 }
-                Ok(Scalar::Devices(devices))
+                Ok(Scalar::List(items))
             }
             fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Scalar, A::Error> {
-                while map.next_entry::<IgnoredAny, IgnoredAny>()?.is_some() {}
-                Ok(Scalar::Other)
-            }
-        }
-        deserializer.deserialize_any(Any)
-    }
-}
-
-/// An item of a list: a device's keys, or anything else.
-enum Item {
-    Device(BTreeMap<String, Spanned<Scalar>>),
-    Other,
-}
-
-impl<'de> Deserialize<'de> for Item {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        struct Any;
-        impl<'de> Visitor<'de> for Any {
-            type Value = Item;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a device")
-            }
-            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Item, A::Error> {
                 let mut keys = BTreeMap::new();
                 while let Some((key, value)) = map.next_entry::<String, Spanned<Scalar>>()? {
                     keys.insert(key, value);
                 }
-                Ok(Item::Device(keys))
-            }
-            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Item, A::Error> {
-                while seq.next_element::<IgnoredAny>()?.is_some() {}
-                Ok(Item::Other)
-            }
-            fn visit_str<E: serde::de::Error>(self, _: &str) -> Result<Item, E> {
-                Ok(Item::Other)
-            }
-            fn visit_i64<E: serde::de::Error>(self, _: i64) -> Result<Item, E> {
-                Ok(Item::Other)
-            }
-            fn visit_u64<E: serde::de::Error>(self, _: u64) -> Result<Item, E> {
-                Ok(Item::Other)
-            }
-            fn visit_f64<E: serde::de::Error>(self, _: f64) -> Result<Item, E> {
-                Ok(Item::Other)
-            }
-            fn visit_bool<E: serde::de::Error>(self, _: bool) -> Result<Item, E> {
-                Ok(Item::Other)
-            }
-            fn visit_unit<E: serde::de::Error>(self) -> Result<Item, E> {
-                Ok(Item::Other)
+                Ok(Scalar::Map(keys))
             }
         }
         deserializer.deserialize_any(Any)
