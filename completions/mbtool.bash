@@ -2155,7 +2155,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__poll)
-            opts="-v -o -h -V --influx --buffer --for --timeout --frame-gap --max-per-request --verbose --json --output --help --version"
+            opts="-v -o -h -V --influx --buffer --metrics --for --timeout --frame-gap --max-per-request --verbose --json --output --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2166,6 +2166,10 @@ _mbtool() {
                     return 0
                     ;;
                 --buffer)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --metrics)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

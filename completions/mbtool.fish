@@ -1666,6 +1666,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s h -l help -d '
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l influx -d 'Also write every row to InfluxDB: http://HOST:8086/write?db=NAME' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l buffer -d 'Rows kept for a server that is down; past it the oldest give way, counted' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l metrics -d 'Serve Prometheus metrics on http://ADDR/metrics: values, polls, errors, response times' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l for -d 'Stop after DURATION [default: until Ctrl-C or SIGTERM]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r

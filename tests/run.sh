@@ -18,8 +18,10 @@ command -v tshark >/dev/null || missing+=(tshark)
 command -v pkg-config >/dev/null || missing+=(pkg-config)
 pkg-config --exists libudev 2>/dev/null || missing+=(libudev-dev)
 pkg-config --exists libmodbus 2>/dev/null || missing+=(libmodbus-dev)
-# InfluxDB 1.x, the server poll --influx writes to (each test starts its own).
+# InfluxDB 1.x, the server poll --influx writes to, and Prometheus with promtool, which
+# read poll --metrics (each test starts its own).
 command -v influxd >/dev/null || missing+=(influxdb)
+command -v promtool >/dev/null || missing+=(prometheus)
 # libpcap at run time: sniff --interface loads it (tcpdump brings it too).
 ldconfig -p 2>/dev/null | grep -q 'libpcap\.so' || missing+=(libpcap0.8)
 if [ ${#missing[@]} -gt 0 ]; then

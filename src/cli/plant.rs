@@ -55,6 +55,10 @@ pub struct PlantArgs {
     #[arg(long, value_name = "N", default_value_t = 10_000, value_parser = clap::value_parser!(u32).range(1..))]
     pub buffer: u32,
 
+    /// Serve Prometheus metrics on http://ADDR/metrics: values, polls, errors, response times
+    #[arg(long, value_name = "ADDR")]
+    pub metrics: Option<String>,
+
     /// Stop after DURATION [default: until Ctrl-C or SIGTERM]
     #[arg(long = "for", value_name = "DURATION", value_parser = mbtool_core::input::duration::parse_duration)]
     pub duration: Option<std::time::Duration>,

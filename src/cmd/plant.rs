@@ -14,6 +14,7 @@ use mbtool::error::Error;
 use mbtool::output::plant::{PlantFormat, PlantRow, PlantWriter};
 use mbtool::output::{self, plural};
 use mbtool::settings::{job, ConnectionSettings, Settings};
+use mbtool::sink::metrics::Metrics;
 use mbtool::sink::{influx, Buffer};
 use mbtool_core::master::plant::{keep_read, Outcome, Polled, Scheduled};
 use mbtool_core::model::map::Point;
@@ -37,6 +38,11 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
     }
     let format = PlantFormat::of(settings.output.format, job.influx);
     let mut writer = PlantWriter::new(format, columns);
+    // Bound before anything is polled, so that a port that is taken stops the command.
+    let metrics = match &job.metrics {
+        Some(address) => Some(serve_metrics(address)?),
+        None => None,
+    };
     let stop = super::shared::stop_on_signal()?;
     let deadline = job.duration.map(|d| Instant::now() + d);
     let (sender, polls) = mpsc::channel::<(usize, Polled, SystemTime)>();
@@ -101,7 +107,7 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
                 .map(|(buffer, _)| (buffer, PlantWriter::new(PlantFormat::Influx, Vec::new()))),
         };
         let mut tallies = vec![Tally::default(); devices.len()];
-        let written = write_rows(&devices, polls, &mut sinks, &mut tallies);
+        let written = write_rows(&devices, polls, &mut sinks, metrics.as_ref(), &mut tallies);
         // Output that cannot be written (a closed pipe) ends the workers too.
         if written.is_err() {
             stop.flag.store(true, Ordering::SeqCst);
@@ -148,12 +154,21 @@ fn write_rows(
     devices: &[Device],
     polls: mpsc::Receiver<(usize, Polled, SystemTime)>,
     sinks: &mut Sinks,
+    metrics: Option<&Metrics>,
     tallies: &mut [Tally],
 ) -> Result<()> {
     let mut out = output::stdout();
     for (index, polled, time) in polls {
         let device = &devices[index];
         tallies[index].add(&polled);
+        if let Some(metrics) = metrics {
+            let points: Vec<(&str, &str)> = device
+                .points
+                .iter()
+                .map(|point| (point.name.as_str(), point.unit.as_str()))
+                .collect();
+            metrics.record(&device.plant.name, device.plant.slave, &points, &polled);
+        }
         let row_time = chrono::DateTime::<chrono::Local>::from(time)
             .to_rfc3339_opts(chrono::SecondsFormat::Millis, false);
         let nanos = time.duration_since(UNIX_EPOCH).map_or(0, |d| d.as_nanos());
@@ -302,4 +317,34 @@ impl Tally {
             self.down
         )
     }
+}
+
+/// `--metrics ADDR`: the metrics served on ADDR (`:9502` is 127.0.0.1's) by a thread that
+/// lasts as long as the process.
+fn serve_metrics(address: &str) -> Result<Metrics> {
+    let address = match address.strip_prefix(':') {
+        Some(port) => format!("127.0.0.1:{port}"),
+        None => address.to_string(),
+    };
+    let (host, port) = address
+        .rsplit_once(':')
+        .and_then(|(host, port)| Some((host, port.parse::<u16>().ok()?)))
+        .ok_or_else(|| {
+            Error::usage(format!(
+                "--metrics {address}: give ADDRESS:PORT, as 127.0.0.1:9502"
+            ))
+        })?;
+    let endpoint = mbtool_core::transport::Endpoint::Tcp {
+        host: host.to_string(),
+        port,
+    };
+    let listener = mbtool::connection::listen(&endpoint, host, port)?;
+    mbtool::note!(
+        "mbtool: metrics on http://{}/metrics",
+        listener.local_addr()?
+    );
+    let metrics = Metrics::default();
+    let serving = metrics.clone();
+    std::thread::spawn(move || serving.serve(listener));
+    Ok(metrics)
 }

@@ -245,6 +245,8 @@ pub struct Plant {
     pub influx_url: Option<String>,
     /// Rows kept for a server that is down.
     pub buffer: usize,
+    /// Where Prometheus metrics are served: `127.0.0.1:9502`.
+    pub metrics: Option<String>,
 }
 
 #[derive(Clone, Debug)]
@@ -314,6 +316,7 @@ pub fn of(command: Command) -> Result<Job, String> {
                 influx: a.format.output.as_deref() == Some(INFLUX),
                 influx_url: a.influx,
                 buffer: a.buffer as usize,
+                metrics: a.metrics,
                 files: a.files,
                 duration: a.duration,
             })

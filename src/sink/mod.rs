@@ -3,6 +3,7 @@
 //! down never holds back the polling; what does not fit is counted and told.
 
 pub mod influx;
+pub mod metrics;
 
 use std::collections::VecDeque;
 use std::sync::{Arc, Condvar, Mutex};
