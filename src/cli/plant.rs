@@ -22,10 +22,15 @@ the plant file) and every (1s, 500ms):
       map: meter.csv
       every: 1s
 
+A Home Assistant modbus configuration is a plant file as it stands: each hub a device per \
+slave, read at its entities' scan_interval (15 s where not given), named after the hub \
+(meter, meter/2, meter/2/5s where a slave's entities have several rates).
+
 Every fault of the files is told at once, and nothing is polled until they are all good. \
-Each TCP device is polled on a connection of its own, all at once; the devices on one \
-serial line (or one rtu+tcp:// server) are polled in turn by one worker, at the line's \
-pace, each device's points read as read --map groups them. A device that does not answer \
+Each TCP address is polled on a connection of its own, all at once; the devices behind one \
+address (unit ids of a gateway), on one serial line or one rtu+tcp:// server are polled in \
+turn by one worker, at the line's pace, each device's points read as read --map groups \
+them. A device that does not answer \
 is asked less often (twice its rate after three failures in a row, doubling up to a \
 minute), and never holds back another device's values; a poll that reads nothing is a \
 row without values, never the last values again.
@@ -40,7 +45,7 @@ for Telegraf's execd and exec inputs.";
 #[command(after_help = more_in_long_help(&[&[CONNECTION, ADDRESSES]]))]
 #[command(mut_arg("output", |arg| arg.value_parser(FormatOrFile { plant: true })))]
 pub struct PlantArgs {
-    /// Plant files: their devices, each a port, a slave, a map and a rate
+    /// Plant files (or Home Assistant configurations): devices, each a port, a slave, a map and a rate
     #[arg(required = true, value_name = "FILE")]
     pub files: Vec<std::path::PathBuf>,
 

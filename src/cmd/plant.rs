@@ -17,7 +17,7 @@ use mbtool::settings::{job, ConnectionSettings, Settings};
 use mbtool::sink::metrics::Metrics;
 use mbtool::sink::{influx, Buffer};
 use mbtool_core::master::plant::{keep_read, Outcome, Polled, Scheduled};
-use mbtool_core::model::map::Point;
+use mbtool_core::model::map::{Point, RegisterMap};
 use mbtool_core::model::map_file;
 use mbtool_core::model::plant::{self, PlantDevice};
 
@@ -219,13 +219,31 @@ fn load(settings: &Settings, files: &[std::path::PathBuf]) -> Result<Vec<Device>
                 continue;
             }
         };
-        let parsed = plant::parse_all(&name, &text);
-        if let Err(e) = parsed.faults {
-            faults.extend(e.to_string().lines().map(String::from));
-        }
-        let found = parsed.devices;
         let folder = file.parent().unwrap_or(Path::new("."));
-        for device in found {
+        let found: Vec<(PlantDevice, Result<Vec<Point>, String>)> = if is_plant(&text) {
+            let parsed = plant::parse_all(&name, &text);
+            if let Err(e) = parsed.faults {
+                faults.extend(e.to_string().lines().map(String::from));
+            }
+            parsed
+                .devices
+                .into_iter()
+                .map(|device| {
+                    let map = map_file::load(&folder.join(&device.map));
+                    (device, map.map(|map| map.points).map_err(|e| e.to_string()))
+                })
+                .collect()
+        } else {
+            // A Home Assistant configuration as it stands: its hubs are the devices.
+            match map_file::load(file) {
+                Ok(map) => hub_devices(&name, &map, &mut faults),
+                Err(e) => {
+                    faults.extend(e.to_string().lines().map(String::from));
+                    continue;
+                }
+            }
+        };
+        for (device, points) in found {
             if let Some(other) = devices.iter().find(|d| d.plant.name == device.name) {
                 faults.push(format!(
                     "{name}:{}: the name '{}' is taken already, by a device of line {}",
@@ -233,7 +251,6 @@ fn load(settings: &Settings, files: &[std::path::PathBuf]) -> Result<Vec<Device>
                 ));
                 continue;
             }
-            let map = map_file::load(&folder.join(&device.map));
             let connection = ConnectionSettings {
                 port: None,
                 ..settings.connection.clone()
@@ -241,14 +258,14 @@ fn load(settings: &Settings, files: &[std::path::PathBuf]) -> Result<Vec<Device>
             .with_map(Some(&device.connection));
             let connector = Connector::new(&connection, Role::Master);
             let at = format!("{name}:{}: {}", device.line, device.name);
-            match (map, connector) {
-                (Ok(map), Ok(connector)) => devices.push(Device {
+            match (points, connector) {
+                (Ok(points), Ok(connector)) => devices.push(Device {
                     plant: device,
-                    points: map.points,
+                    points,
                     connector,
                 }),
-                (map, connector) => {
-                    if let Err(e) = map {
+                (points, connector) => {
+                    if let Err(e) = points {
                         faults.push(format!("{at}: {e}"));
                     }
                     if let Err(e) = connector {
@@ -347,4 +364,69 @@ fn serve_metrics(address: &str) -> Result<Metrics> {
     let serving = metrics.clone();
     std::thread::spawn(move || serving.serve(listener));
     Ok(metrics)
+}
+
+/// Whether a file's text is mbtool's own plant form, by its `devices:` key.
+fn is_plant(text: &str) -> bool {
+    text.lines().any(|line| line.starts_with("devices:"))
+}
+
+/// How often Home Assistant reads an entity whose `scan_interval` is not given.
+const HOME_ASSISTANT_RATE: Duration = Duration::from_secs(15);
+
+/// The devices of a Home Assistant configuration: each hub's points by slave and by rate
+/// (`scan_interval`, 15 s where not given), named after the hub (`meter`, `meter/2`,
+/// `meter/2/5s`); an entity Home Assistant does not poll (`scan_interval: 0`) is left out.
+fn hub_devices(
+    file: &str,
+    map: &RegisterMap,
+    faults: &mut Vec<String>,
+) -> Vec<(PlantDevice, Result<Vec<Point>, String>)> {
+    let mut found = Vec::new();
+    for hub in &map.hubs {
+        let place = match &hub.place {
+            Ok(place) => place,
+            Err(why) => {
+                faults.push(format!("{file}: hub {}: {why}", hub.name));
+                continue;
+            }
+        };
+        let mut groups: Vec<((u8, Duration), Vec<Point>)> = Vec::new();
+        for (index, every) in &hub.points {
+            let every = every.unwrap_or(HOME_ASSISTANT_RATE);
+            if every.is_zero() {
+                continue;
+            }
+            let point = &map.points[*index];
+            let slave = point.slave.or(map.default_slave).unwrap_or(1);
+            match groups.iter_mut().find(|(key, _)| *key == (slave, every)) {
+                Some((_, points)) => points.push(point.clone()),
+                None => groups.push(((slave, every), vec![point.clone()])),
+            }
+        }
+        let slaves = {
+            let mut slaves: Vec<u8> = groups.iter().map(|((slave, _), _)| *slave).collect();
+            slaves.sort_unstable();
+            slaves.dedup();
+            slaves.len()
+        };
+        for ((slave, every), points) in &groups {
+            let rates = groups.iter().filter(|((s, _), _)| s == slave).count();
+            let name = match (slaves, rates) {
+                (1, 1) => hub.name.clone(),
+                (_, 1) => format!("{}/{slave}", hub.name),
+                _ => format!("{}/{slave}/{}s", hub.name, every.as_secs()),
+            };
+            let device = PlantDevice {
+                name,
+                connection: place.clone(),
+                slave: *slave,
+                map: file.to_string(),
+                every: *every,
+                line: points.first().map_or(1, |point| point.line),
+            };
+            found.push((device, Ok(points.clone())));
+        }
+    }
+    found
 }

@@ -545,3 +545,38 @@ fn the_metrics_are_what_promtool_and_a_prometheus_server_read() {
         assert_eq!(result["metric"]["unit"], "rpm", "{result}");
     }
 }
+
+/// A Home Assistant configuration as it stands is a plant: its hub a device per slave and
+/// per `scan_interval` (15 s where not given), an entity it does not poll left out.
+#[test]
+fn a_home_assistant_configuration_is_polled_as_home_assistant_polls_it() {
+    let (_device, _, port) = serve_tcp(&["--slave", "17", "--slave", "18"]);
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("configuration.yaml");
+    std::fs::write(
+        &path,
+        format!(
+            "modbus:\n  - name: station\n    type: tcp\n    host: 127.0.0.1\n    port: {port}\n    sensors:\n      - {{name: speed, slave: 17, address: 107, scan_interval: 1}}\n      - {{name: flow, slave: 17, address: 109, scan_interval: 1}}\n      - {{name: other, slave: 18, address: 107, scan_interval: 2}}\n      - {{name: never, slave: 18, address: 108, scan_interval: 0}}\n      - {{name: level, slave: 18, address: 108}}\n"
+        ),
+    )
+    .unwrap();
+    let (code, rows, stderr) = json_rows(&[path.to_str().unwrap(), "--for", "2500ms"]);
+    assert_eq!(code, 0, "{stderr}");
+    let counted = |device: &str| rows_of(&rows, device).len();
+    assert!((2..=4).contains(&counted("station/17")), "{rows:?}");
+    assert!((1..=2).contains(&counted("station/18/2s")), "{rows:?}");
+    assert_eq!(counted("station/18/15s"), 1, "{rows:?}");
+    let first = rows_of(&rows, "station/17")[0];
+    assert_eq!(
+        first["values"],
+        serde_json::json!({"speed": 555, "flow": 100})
+    );
+    assert_eq!(
+        rows_of(&rows, "station/18/15s")[0]["values"],
+        serde_json::json!({"level": 0})
+    );
+    assert!(
+        rows.iter().all(|row| row["values"].get("never").is_none()),
+        "{rows:?}"
+    );
+}

@@ -113,6 +113,9 @@ pub struct RegisterMap {
     pub points: Vec<Point>,
     /// Where the device is, when the file says (a Home Assistant hub).
     pub connection: Option<MapConnection>,
+    /// A Home Assistant configuration's hubs, each with its points: the devices `poll`
+    /// reads from one file.
+    pub hubs: Vec<MapHub>,
     /// Why the file's place for the device is not known (a secret not found), for a
     /// command that needs it.
     pub unknown_place: Option<String>,
@@ -122,6 +125,20 @@ pub struct RegisterMap {
     /// The slave of a point that gives none, where the file's format says one (Home
     /// Assistant's 1) and the command line gives none.
     pub default_slave: Option<u8>,
+}
+
+/// A hub of a Home Assistant configuration: where its device is, and its points with the
+/// rate Home Assistant reads each at.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct MapHub {
+    /// Its name.
+    pub name: String,
+    /// Where it is, or why that is not known (a kind of hub mbtool does not open, a secret
+    /// not found).
+    pub place: Result<MapConnection, String>,
+    /// Its points, as indices into the map's points, each with its `scan_interval` where
+    /// given (0: Home Assistant does not poll it).
+    pub points: Vec<(usize, Option<std::time::Duration>)>,
 }
 
 /// Where a map's device is, as its file says; what the command line gives wins.

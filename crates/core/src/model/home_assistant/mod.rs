@@ -14,6 +14,7 @@ mod entity;
 mod schema;
 
 use std::collections::{HashMap, HashSet};
+use std::time::Duration;
 
 use serde::de::DeserializeOwned;
 use serde_saphyr::Tagged;
@@ -21,7 +22,7 @@ use serde_saphyr::Tagged;
 use self::entity::{Platform, Values};
 use self::schema::{Entity, Field, Hub, Included, List, Packages, Top};
 use super::faults::Faults;
-use super::map::{at, check_name, MapConnection, MapError, Point, RegisterMap};
+use super::map::{at, check_name, MapConnection, MapError, MapHub, Point, RegisterMap};
 
 /// Where the files and secrets a configuration names are found.
 pub trait Sources {
@@ -72,6 +73,8 @@ pub fn parse(file: &str, text: &str, sources: &mut dyn Sources) -> Result<Regist
         hub_places: HashSet::new(),
         hub_names: HashSet::new(),
         places: Vec::new(),
+        hubs: Vec::new(),
+        of_hub: Vec::new(),
     };
     reader.file(file, text, 0);
     reader.finish(file)
@@ -89,6 +92,10 @@ struct Reader<'a> {
     hub_names: HashSet<String>,
     /// Where each hub loaded says its device is, or why that is not known.
     places: Vec<Result<Option<MapConnection>, String>>,
+    /// The hubs loaded, their points gathered in `finish`.
+    hubs: Vec<MapHub>,
+    /// For each point, the hub it is an entity of and its `scan_interval`.
+    of_hub: Vec<(Option<usize>, Option<Duration>)>,
 }
 
 /// A document read as YAML; `.nan` and `.inf` kept as text, so that the key that holds
@@ -134,7 +141,7 @@ impl Reader<'_> {
         };
         if !hubs {
             return match yaml::<Included<Entity>>(text) {
-                Ok(Included::Items(entities)) => self.entities(file, None, entities),
+                Ok(Included::Items(entities)) => self.entities(file, None, entities, None),
                 Ok(Included::Named(_)) => {}
                 Err(e) => self.faults.add(unreadable(file, &e)),
             };
@@ -320,6 +327,19 @@ impl Reader<'_> {
         }
         self.hub_places.insert(key);
         self.hub_names.insert(name.clone());
+        self.hubs.push(MapHub {
+            name: name.clone(),
+            place: match &place {
+                Ok(Some(connection)) => Ok(MapConnection {
+                    hub: name.clone(),
+                    ..connection.clone()
+                }),
+                Ok(None) => Err(format!("hub {name} is of a kind mbtool does not open")),
+                Err(why) => Err(why.clone()),
+            },
+            points: Vec::new(),
+        });
+        let hub = self.hubs.len() - 1;
         self.places.push(place.map(|p| {
             p.map(|connection| MapConnection {
                 hub: name.clone(),
@@ -329,7 +349,7 @@ impl Reader<'_> {
         for (platform, list) in lists {
             let entities = self.list(file, list, depth);
             for (file, entity) in entities {
-                self.entities(&file, Some(platform), vec![entity]);
+                self.entities(&file, Some(platform), vec![entity], Some(hub));
             }
         }
     }
@@ -390,7 +410,13 @@ impl Reader<'_> {
     }
 
     /// Entities of a platform (or, for a bare list, of the platform each seems to be).
-    fn entities(&mut self, file: &str, platform: Option<Platform>, entities: Vec<Entity>) {
+    fn entities(
+        &mut self,
+        file: &str,
+        platform: Option<Platform>,
+        entities: Vec<Entity>,
+        hub: Option<usize>,
+    ) {
         for entity in entities {
             let platform = platform.unwrap_or_else(|| Platform::guessed(&entity));
             let line = usize::try_from(entity.name.referenced.line()).unwrap_or(1);
@@ -412,10 +438,31 @@ impl Reader<'_> {
                 sources: &mut *self.sources,
                 file,
             };
+            let every = match values.text(&entity.scan_interval, "scan_interval") {
+                Ok(every) => every,
+                Err(error) => {
+                    self.faults.add(at(file, line, format!("{name}: {error}")));
+                    continue;
+                }
+            };
+            let every = match every.map(|text| text.trim().parse::<u64>()) {
+                None => None,
+                Some(Ok(seconds)) => Some(Duration::from_secs(seconds)),
+                Some(Err(_)) => {
+                    self.faults.add(at(
+                        file,
+                        line,
+                        format!("{name}: scan_interval is a whole number of seconds"),
+                    ));
+                    continue;
+                }
+            };
             match entity::points(platform, &entity, &mut values) {
-                Ok(points) => self
-                    .points
-                    .extend(points.into_iter().map(|point| (platform, point))),
+                Ok(points) => {
+                    self.of_hub.extend(points.iter().map(|_| (hub, every)));
+                    self.points
+                        .extend(points.into_iter().map(|point| (platform, point)));
+                }
                 Err(error) => self.faults.add(at(file, line, format!("{name}: {error}"))),
             }
         }
@@ -423,6 +470,12 @@ impl Reader<'_> {
 
     fn finish(self, file: &str) -> Result<RegisterMap, MapError> {
         let mut faults = self.faults;
+        let mut hubs = self.hubs;
+        for (point, (hub, every)) in self.of_hub.iter().enumerate() {
+            if let Some(hub) = hub.and_then(|hub| hubs.get_mut(hub)) {
+                hub.points.push((point, *every));
+            }
+        }
         // A name two platforms use is told apart by its platform, as Home Assistant's
         // entity ids are (`sensor.pump`, `switch.pump`).
         let mut platforms: HashMap<&str, HashSet<Platform>> = HashMap::new();
@@ -478,6 +531,7 @@ impl Reader<'_> {
             RegisterMap {
                 points,
                 connection,
+                hubs,
                 unknown_place,
                 warnings: self.warnings,
                 // Home Assistant asks slave 1 of an entity without slave or device_address.

@@ -213,6 +213,8 @@ pub(super) struct Entity {
     pub state_closed: Field,
     pub state_opening: Field,
     pub state_closing: Field,
+    /// How often Home Assistant reads it, in seconds.
+    pub scan_interval: Field,
 }
 
 /// A switch's `verify:`, where its state is read back.
