@@ -236,6 +236,12 @@ fn load(settings: &Settings, files: &[std::path::PathBuf]) -> Result<Vec<Device>
         } else {
             // A Home Assistant configuration as it stands: its hubs are the devices.
             match map_file::load(file) {
+                Ok(map) if map.hubs.is_empty() => {
+                    faults.push(format!(
+                        "{name} is a register map, not a plant: give a file of devices: (or a Home Assistant configuration with hubs), the map as a device's map:"
+                    ));
+                    continue;
+                }
                 Ok(map) => hub_devices(&name, &map, &mut faults),
                 Err(e) => {
                     faults.extend(e.to_string().lines().map(String::from));
@@ -274,6 +280,9 @@ fn load(settings: &Settings, files: &[std::path::PathBuf]) -> Result<Vec<Device>
                 }
             }
         }
+    }
+    if faults.is_empty() && devices.is_empty() {
+        faults.push("the plant has no device to poll".to_string());
     }
     match faults.is_empty() {
         true => Ok(devices),

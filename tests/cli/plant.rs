@@ -580,3 +580,29 @@ fn a_home_assistant_configuration_is_polled_as_home_assistant_polls_it() {
         "{rows:?}"
     );
 }
+
+/// A register map given as a plant, or a plant with nothing to poll, is refused at once
+/// rather than polled for ever.
+#[test]
+fn a_map_or_an_empty_plant_is_refused() {
+    let (dir, _) = plant(&[]);
+    let path = dir.path().join("empty.yaml");
+    std::fs::write(&path, "devices: []\n").unwrap();
+    let path = path.display().to_string();
+    for (file, said) in [
+        (
+            "examples/sim.csv",
+            "mbtool: examples/sim.csv is a register map, not a plant",
+        ),
+        (path.as_str(), "mbtool: the plant has no device to poll"),
+    ] {
+        let started = Instant::now();
+        let output = mbtool().args(["poll", file]).output().unwrap();
+        assert!(started.elapsed() < Duration::from_secs(5));
+        assert_eq!(output.status.code(), Some(2), "{file}");
+        assert!(
+            String::from_utf8_lossy(&output.stderr).starts_with(said),
+            "{output:?}"
+        );
+    }
+}
