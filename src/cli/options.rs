@@ -491,8 +491,7 @@ pub struct PollArgs {
 
     /// With --poll: also append every poll, with its time, to FILE
     ///
-    /// JSON Lines, or for a .csv name a row for every value with its registers
-    /// (time,ref,address,hex,value,error)
+    /// The same rows as -o csv for a .csv name, as -o json for any other
     #[arg(long, hide_short_help = true, value_name = "FILE")]
     pub log: Option<std::path::PathBuf>,
 }

@@ -271,11 +271,12 @@ pub fn poll(
     interval: std::time::Duration,
 ) -> Result<u8> {
     let points: Vec<&Point> = plan.points.iter().collect();
-    let writer = |format| MapRows {
-        writer: MapWriter::new(format, output::colour_wanted()),
-        slave: plan.slave,
-        points: points.clone(),
-        wide: None,
+    let writer = |format| {
+        MapRows::new(
+            MapWriter::new(format, output::colour_wanted()),
+            plan.slave,
+            points.clone(),
+        )
     };
     super::poll::run(
         settings,

@@ -60,7 +60,6 @@ pub fn run<W: PollRows>(
     writer: impl Fn(Format) -> W,
 ) -> Result<u8> {
     let mut screen = writer(settings.output.format);
-    screen.wide();
     let mut log = settings
         .poll
         .log

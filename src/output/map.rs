@@ -48,11 +48,26 @@ pub struct MapWriter {
 
 /// A map's reads as the rows of a poll.
 pub struct MapRows<'a> {
-    pub writer: MapWriter,
-    pub slave: u8,
-    pub points: Vec<&'a Point>,
-    /// On the screen, one line a poll, a column a point.
-    pub wide: Option<WideRows>,
+    writer: MapWriter,
+    slave: u8,
+    points: Vec<&'a Point>,
+    /// In CSV and the table, one line a poll, a column a point.
+    wide: Option<WideRows>,
+}
+
+impl<'a> MapRows<'a> {
+    pub fn new(writer: MapWriter, slave: u8, points: Vec<&'a Point>) -> Self {
+        let wide = matches!(writer.format, Format::Csv | Format::Table).then(|| {
+            let names = points.iter().map(|point| point.name.clone()).collect();
+            WideRows::new(names, writer.colour)
+        });
+        Self {
+            writer,
+            slave,
+            points,
+            wide,
+        }
+    }
 }
 
 impl super::PollRows for MapRows<'_> {
@@ -94,11 +109,7 @@ impl super::PollRows for MapRows<'_> {
                 serde_json::to_writer(&mut *out, &super::JsonFailure { time, error })?;
                 writeln!(out)
             }
-            Format::Csv => {
-                self.writer.header(out, true)?;
-                writeln!(out, "{time},,,,,,{}", csv_field(error))
-            }
-            Format::Table | Format::Values => Ok(()),
+            Format::Csv | Format::Table | Format::Values => Ok(()),
         }
     }
 
@@ -109,12 +120,8 @@ impl super::PollRows for MapRows<'_> {
 
     fn continuing(&mut self) {
         self.writer.csv_header_written = true;
-    }
-
-    fn wide(&mut self) {
-        if matches!(self.writer.format, Format::Csv | Format::Table) {
-            let names = self.points.iter().map(|point| point.name.clone()).collect();
-            self.wide = Some(WideRows::new(names, self.writer.colour));
+        if let Some(wide) = self.wide.as_mut() {
+            wide.continuing();
         }
     }
 
@@ -143,10 +150,9 @@ impl MapWriter {
         }
     }
 
-    fn header(&mut self, out: &mut dyn Write, timed: bool) -> io::Result<()> {
+    fn header(&mut self, out: &mut dyn Write) -> io::Result<()> {
         if !self.csv_header_written {
-            let time = if timed { "time," } else { "" };
-            writeln!(out, "{time}name,ref,value,unit,raw,error")?;
+            writeln!(out, "name,ref,value,unit,raw,error")?;
             self.csv_header_written = true;
         }
         Ok(())
@@ -213,13 +219,12 @@ impl MapWriter {
                 Ok(())
             }
             Format::Csv => {
-                self.header(out, time.is_some())?;
-                let time = time.map(|time| format!("{time},")).unwrap_or_default();
+                self.header(out)?;
                 for (point, reading) in &rows {
                     let value = reading.value().map(Value::to_string).unwrap_or_default();
                     writeln!(
                         out,
-                        "{time}{},{},{},{},{},{}",
+                        "{},{},{},{},{},{}",
                         csv_field(&point.name),
                         point.reference(),
                         csv_field(&value),

@@ -294,9 +294,6 @@ pub trait PollRows {
     }
     /// The rows go on a file that has its CSV header already.
     fn continuing(&mut self);
-    /// The rows are the screen's: in CSV and the table one line a poll, a column a value
-    /// (a log keeps a row a value, with its registers).
-    fn wide(&mut self) {}
     /// The format the rows are written in.
     fn format(&self) -> Format;
     /// The master changed to its other path `to` because of `why`: in JSON a row of its

@@ -41,9 +41,6 @@ struct JsonRead<'a> {
     values: Vec<JsonEntry<'a>>,
 }
 
-/// The CSV header of a poll's rows: `time` first, `error` last.
-const TIMED_CSV_HEADER: &str = "time,ref,address,hex,value,error";
-
 /// One shown value: where it is, its registers, what it means.
 struct Row<'a> {
     /// The address as shown: counted from the address base.
@@ -68,11 +65,8 @@ impl super::PollRows for ReadWriter {
 
     fn continuing(&mut self) {
         self.csv_header_written = true;
-    }
-
-    fn wide(&mut self) {
-        if matches!(self.style.format, Format::Csv | Format::Table) {
-            self.wide = Some(WideRows::new(self.columns.clone(), self.style.colour));
+        if let Some(wide) = self.wide.as_mut() {
+            wide.continuing();
         }
     }
 
@@ -88,9 +82,7 @@ pub struct ReadWriter {
     csv_header_written: bool,
     /// Every row starts with its time (a poll's rows, a log).
     timed: bool,
-    /// A poll's values, by reference, as a poll's wide rows name them.
-    columns: Vec<String>,
-    /// On the screen, a poll's rows one line a poll.
+    /// A poll's rows in CSV and the table: one line a poll, a column a value.
     wide: Option<WideRows>,
 }
 
@@ -101,16 +93,8 @@ impl ReadWriter {
             previous: None,
             csv_header_written: false,
             timed: false,
-            columns: Vec::new(),
             wide: None,
         }
-    }
-
-    /// A writer whose CSV and JSON rows start with their time, and that writes a failed
-    /// poll as a row of its own.
-    pub fn timed(mut self) -> Self {
-        self.timed = true;
-        self
     }
 
     /// A writer for the polls of `plan`, whose rows are timed and whose wide rows have a
@@ -141,11 +125,14 @@ impl ReadWriter {
             data,
             first_bit,
         };
-        self.columns = self
+        let columns = self
             .part_rows(&all)
             .into_iter()
             .map(|row| row.reference)
             .collect();
+        if matches!(self.style.format, Format::Csv | Format::Table) {
+            self.wide = Some(WideRows::new(columns, self.style.colour));
+        }
         self
     }
 
@@ -160,14 +147,7 @@ impl ReadWriter {
                 serde_json::to_writer(&mut *out, &super::JsonFailure { time, error })?;
                 writeln!(out)
             }
-            Format::Csv => {
-                if !self.csv_header_written {
-                    writeln!(out, "{TIMED_CSV_HEADER}")?;
-                    self.csv_header_written = true;
-                }
-                writeln!(out, "{time},,,,,{}", csv_field(error))
-            }
-            Format::Table | Format::Values => Ok(()),
+            Format::Csv | Format::Table | Format::Values => Ok(()),
         }
     }
 
@@ -279,11 +259,10 @@ impl ReadWriter {
         };
         let time = time.filter(|_| self.timed);
         let rows = self.rows(range);
-        let changed = self.changed(&rows);
         let bits = matches!(first.data, ReadData::Bits(_));
         if let (Some(wide), Some(time)) = (self.wide.as_mut(), time) {
             let format = self.style.format;
-            let values = self.columns.iter().map(|column| {
+            let values = wide.columns().iter().map(|column| {
                 let row = rows.iter().find(|row| row.reference == *column)?;
                 row.value.as_ref().map(|value| match format {
                     Format::Table => shown_value(value, bits),
@@ -294,8 +273,10 @@ impl ReadWriter {
                 Some(row) => format!("{}: {NO_SUCH_ADDRESS}", row.reference),
                 None => String::new(),
             };
-            return wide.row(out, format, time, values.collect(), &error);
+            let values = values.collect();
+            return wide.row(out, format, time, values, &error);
         }
+        let changed = self.changed(&rows);
         match self.style.format {
             Format::Json => {
                 let wide = self.style.value_type.width() > 1;
@@ -330,10 +311,9 @@ impl ReadWriter {
             Format::Csv => {
                 // Bits have no registers, so no hex column.
                 if !self.csv_header_written {
-                    let header = match (time, bits) {
-                        (Some(_), _) => TIMED_CSV_HEADER,
-                        (None, true) => "ref,address,value",
-                        (None, false) => "ref,address,hex,value",
+                    let header = match bits {
+                        true => "ref,address,value",
+                        false => "ref,address,hex,value",
                     };
                     writeln!(out, "{header}")?;
                     self.csv_header_written = true;
@@ -345,26 +325,9 @@ impl ReadWriter {
                             .map(ToString::to_string)
                             .unwrap_or_default(),
                     );
-                    let error = if row.value.is_none() {
-                        NO_SUCH_ADDRESS
-                    } else {
-                        ""
-                    };
-                    match time {
-                        // A log's rows: one shape for bits, registers and failures alike.
-                        Some(time) => writeln!(
-                            out,
-                            "{time},{},{},{},{value},{error}",
-                            row.reference,
-                            row.address,
-                            if bits {
-                                String::new()
-                            } else {
-                                hex_of(row.registers)
-                            }
-                        )?,
-                        None if bits => writeln!(out, "{},{},{value}", row.reference, row.address)?,
-                        None => writeln!(
+                    match bits {
+                        true => writeln!(out, "{},{},{value}", row.reference, row.address)?,
+                        false => writeln!(
                             out,
                             "{},{},{},{value}",
                             row.reference,

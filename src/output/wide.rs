@@ -29,6 +29,16 @@ impl WideRows {
         }
     }
 
+    /// The values' names, in the order of the columns.
+    pub fn columns(&self) -> &[String] {
+        &self.columns
+    }
+
+    /// The rows go on a file that has its CSV header already.
+    pub fn continuing(&mut self) {
+        self.header_written = true;
+    }
+
     /// One poll: a value (or none, for a value the device did not give) per column, and
     /// what failed, if anything did.
     pub fn row(
