@@ -136,7 +136,7 @@ impl GatewayWriter {
         };
         let reset = if colour.is_empty() { "" } else { RESET };
         // The time of day of an RFC 3339 time: the date is the same all day.
-        let clock = time.get(11..23).unwrap_or(time);
+        let clock = super::time_of_day(time);
         format!(
             "{clock}  {:<21} {unit:>7}  {function:02} {:<26} {:<28} -> {:<32} {:>9}  {tries:<7} {colour}{outcome}{reset}\n",
             t.client,

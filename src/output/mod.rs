@@ -272,6 +272,12 @@ pub fn csv_field(text: &str) -> String {
     }
 }
 
+/// The time of day of a row's RFC 3339 time, as a line on a terminal shows it:
+/// `2026-11-28T06:43:25.162+01:00` is `06:43:25.162`.
+pub fn time_of_day(time: &str) -> &str {
+    time.get(11..23).unwrap_or(time)
+}
+
 /// `1 request`, `3 requests`.
 pub fn plural(count: usize, noun: &str) -> String {
     match count {

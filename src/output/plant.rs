@@ -80,11 +80,7 @@ impl PlantWriter {
     pub fn row(&mut self, out: &mut dyn Write, row: &PlantRow) -> io::Result<()> {
         match self.format {
             PlantFormat::Lines => {
-                let mut line = format!(
-                    "{} {} ",
-                    row.time.get(11..23).unwrap_or(row.time),
-                    row.device
-                );
+                let mut line = format!("{} {} ", super::time_of_day(row.time), row.device);
                 let shown: Vec<String> = row
                     .values
                     .iter()

@@ -129,8 +129,7 @@ impl WideRows {
         time: &str,
         cells: &[(String, bool)],
     ) -> io::Result<()> {
-        // RFC 3339's time of day: 2026-11-28T06:43:25.162+01:00 is 06:43:25.162.
-        let time = time.get(11..23).unwrap_or(time);
+        let time = super::time_of_day(time);
         let mut line = format!("{time:<12}");
         for ((text, changed), column) in cells.iter().zip(&self.columns) {
             let width = column.chars().count().max(MIN_WIDTH);
