@@ -1441,6 +1441,11 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         }
         'mbtool;poll' {
             [CompletionResult]::new('--influx', '--influx', [CompletionResultType]::ParameterName, 'Also write every row to InfluxDB: http://HOST:8086/write?db=NAME')
+            [CompletionResult]::new('--mqtt', '--mqtt', [CompletionResultType]::ParameterName, 'Also publish every value to an MQTT broker: mqtt://HOST[:PORT] or mqtts://HOST[:PORT]')
+            [CompletionResult]::new('--mqtt-prefix', '--mqtt-prefix', [CompletionResultType]::ParameterName, 'The first level of the MQTT topics')
+            [CompletionResult]::new('--mqtt-discovery', '--mqtt-discovery', [CompletionResultType]::ParameterName, 'Announce every point to Home Assistant (MQTT discovery), under PREFIX')
+            [CompletionResult]::new('--mqtt-user', '--mqtt-user', [CompletionResultType]::ParameterName, 'The broker''s user; the password is read from MBTOOL_MQTT_PASSWORD')
+            [CompletionResult]::new('--mqtt-ca', '--mqtt-ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign an mqtts:// broker''s certificate [default: the system''s]')
             [CompletionResult]::new('--buffer', '--buffer', [CompletionResultType]::ParameterName, 'Rows kept for a server that is down; past it the oldest give way, counted')
             [CompletionResult]::new('--metrics', '--metrics', [CompletionResultType]::ParameterName, 'Serve Prometheus metrics on http://ADDR/metrics: values, polls, errors, response times')
             [CompletionResult]::new('--for', '--for', [CompletionResultType]::ParameterName, 'Stop after DURATION [default: until Ctrl-C or SIGTERM]')
@@ -1449,6 +1454,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--max-per-request', '--max-per-request', [CompletionResultType]::ParameterName, 'Split reads and writes into requests of at most N coils or registers')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--mqtt-retain', '--mqtt-retain', [CompletionResultType]::ParameterName, 'Publish the values retained, so that a new subscriber has the last at once')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')

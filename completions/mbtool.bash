@@ -2155,13 +2155,33 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__poll)
-            opts="-v -o -h -V --influx --buffer --metrics --for --timeout --frame-gap --max-per-request --verbose --json --output --help --version"
+            opts="-v -o -h -V --influx --mqtt --mqtt-prefix --mqtt-retain --mqtt-discovery --mqtt-user --mqtt-ca --buffer --metrics --for --timeout --frame-gap --max-per-request --verbose --json --output --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
             fi
             case "${prev}" in
                 --influx)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mqtt)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mqtt-prefix)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mqtt-discovery)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mqtt-user)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mqtt-ca)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

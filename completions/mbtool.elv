@@ -1385,6 +1385,11 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         }
         &'mbtool;poll'= {
             cand --influx 'Also write every row to InfluxDB: http://HOST:8086/write?db=NAME'
+            cand --mqtt 'Also publish every value to an MQTT broker: mqtt://HOST[:PORT] or mqtts://HOST[:PORT]'
+            cand --mqtt-prefix 'The first level of the MQTT topics'
+            cand --mqtt-discovery 'Announce every point to Home Assistant (MQTT discovery), under PREFIX'
+            cand --mqtt-user 'The broker''s user; the password is read from MBTOOL_MQTT_PASSWORD'
+            cand --mqtt-ca 'The CA certificates (PEM) that sign an mqtts:// broker''s certificate [default: the system''s]'
             cand --buffer 'Rows kept for a server that is down; past it the oldest give way, counted'
             cand --metrics 'Serve Prometheus metrics on http://ADDR/metrics: values, polls, errors, response times'
             cand --for 'Stop after DURATION [default: until Ctrl-C or SIGTERM]'
@@ -1393,6 +1398,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --max-per-request 'Split reads and writes into requests of at most N coils or registers'
             cand -o 'Output format [default: table]'
             cand --output 'Output format [default: table]'
+            cand --mqtt-retain 'Publish the values retained, so that a new subscriber has the last at once'
             cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
             cand --verbose 'Print every frame sent and received, in hex with a timestamp, on stderr'
             cand --json 'The same as --output json'

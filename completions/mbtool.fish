@@ -1665,6 +1665,11 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l json -d 'The s
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l influx -d 'Also write every row to InfluxDB: http://HOST:8086/write?db=NAME' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l mqtt -d 'Also publish every value to an MQTT broker: mqtt://HOST[:PORT] or mqtts://HOST[:PORT]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l mqtt-prefix -d 'The first level of the MQTT topics' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l mqtt-discovery -d 'Announce every point to Home Assistant (MQTT discovery), under PREFIX' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l mqtt-user -d 'The broker\'s user; the password is read from MBTOOL_MQTT_PASSWORD' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l mqtt-ca -d 'The CA certificates (PEM) that sign an mqtts:// broker\'s certificate [default: the system\'s]' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l buffer -d 'Rows kept for a server that is down; past it the oldest give way, counted' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l metrics -d 'Serve Prometheus metrics on http://ADDR/metrics: values, polls, errors, response times' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l for -d 'Stop after DURATION [default: until Ctrl-C or SIGTERM]' -r
@@ -1675,6 +1680,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -s o -l output -d 'O
 json\t'One JSON object per line'
 csv\t'Comma-separated values with a header line'
 influx\t'InfluxDB line protocol, for Telegraf\'s execd and exec inputs'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l mqtt-retain -d 'Publish the values retained, so that a new subscriber has the last at once'
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -s h -l help -d 'Print help (see more with \'--help\')'

@@ -22,6 +22,10 @@ pkg-config --exists libmodbus 2>/dev/null || missing+=(libmodbus-dev)
 # read poll --metrics (each test starts its own).
 command -v influxd >/dev/null || missing+=(influxdb)
 command -v promtool >/dev/null || missing+=(prometheus)
+# The mosquitto broker and its clients, which poll --mqtt publishes to (each test starts
+# its own).
+command -v mosquitto >/dev/null || missing+=(mosquitto)
+command -v mosquitto_sub >/dev/null || missing+=(mosquitto-clients)
 # libpcap at run time: sniff --interface loads it (tcpdump brings it too).
 ldconfig -p 2>/dev/null | grep -q 'libpcap\.so' || missing+=(libpcap0.8)
 if [ ${#missing[@]} -gt 0 ]; then

@@ -39,7 +39,11 @@ Each device's poll is a row: a line of name=value on a terminal; -o csv a header
 time,device, then a column for every point name of the plant, then error; -o json one \
 object a row with time, device, values and errors; -o influx InfluxDB line protocol \
 (measurement modbus, tags device and slave, a field a point, the time in nanoseconds), \
-for Telegraf's execd and exec inputs.";
+for Telegraf's execd and exec inputs.
+
+Beside them, --influx writes the rows to InfluxDB, --mqtt publishes each value to an MQTT \
+broker (and takes writes from its .../set topics), and --metrics serves them to \
+Prometheus; a server that is down never holds back the polling.";
 
 #[derive(Clone, Debug, Args)]
 #[command(after_help = more_in_long_help(&[&[CONNECTION, ADDRESSES]]))]
@@ -55,6 +59,41 @@ pub struct PlantArgs {
     /// (--buffer) when it is back
     #[arg(long, value_name = "URL")]
     pub influx: Option<String>,
+
+    /// Also publish every value to an MQTT broker: mqtt://HOST[:PORT] or mqtts://HOST[:PORT]
+    ///
+    /// Each value to PREFIX/DEVICE/POINT as text; PREFIX/DEVICE/available says online or
+    /// offline as the device answers or not, PREFIX/status whether mbtool runs. A value
+    /// published to PREFIX/DEVICE/POINT/set is written to the device, once checked
+    /// against the map (writable, type, range); a retained one is not (a command left on
+    /// the broker is not one given now)
+    #[arg(long, value_name = "URL")]
+    pub mqtt: Option<String>,
+
+    /// The first level of the MQTT topics
+    #[arg(
+        long,
+        value_name = "PREFIX",
+        default_value = "mbtool",
+        requires = "mqtt"
+    )]
+    pub mqtt_prefix: String,
+
+    /// Publish the values retained, so that a new subscriber has the last at once
+    #[arg(long, requires = "mqtt")]
+    pub mqtt_retain: bool,
+
+    /// Announce every point to Home Assistant (MQTT discovery), under PREFIX
+    #[arg(long, value_name = "PREFIX", num_args = 0..=1, default_missing_value = "homeassistant", requires = "mqtt")]
+    pub mqtt_discovery: Option<String>,
+
+    /// The broker's user; the password is read from MBTOOL_MQTT_PASSWORD
+    #[arg(long, value_name = "USER", env = "MBTOOL_MQTT_USER", requires = "mqtt")]
+    pub mqtt_user: Option<String>,
+
+    /// The CA certificates (PEM) that sign an mqtts:// broker's certificate [default: the system's]
+    #[arg(long, value_name = "FILE", requires = "mqtt")]
+    pub mqtt_ca: Option<std::path::PathBuf>,
 
     /// Rows kept for a server that is down; past it the oldest give way, counted
     #[arg(long, value_name = "N", default_value_t = 10_000, value_parser = clap::value_parser!(u32).range(1..))]

@@ -14,6 +14,7 @@ use mbtool_core::model::address::{Access, Table};
 use mbtool_core::slave::faults::FaultInjection;
 
 use crate::cli::{self, Command, ProbeArg, RequestArgs, RequestCommand, Wire};
+use crate::sink::mqtt::MqttSettings;
 
 /// `-o influx`: the output format `poll` alone has.
 pub const INFLUX: &str = "influx";
@@ -247,6 +248,8 @@ pub struct Plant {
     pub buffer: usize,
     /// Where Prometheus metrics are served: `127.0.0.1:9502`.
     pub metrics: Option<String>,
+    /// The MQTT broker every value is published to.
+    pub mqtt: Option<MqttSettings>,
 }
 
 #[derive(Clone, Debug)]
@@ -312,7 +315,44 @@ pub fn of(command: Command) -> Result<Job, String> {
             if let Some(url) = &a.influx {
                 crate::sink::influx::check_url(url)?;
             }
+            let mqtt = match &a.mqtt {
+                Some(url) => {
+                    let (host, port, tls) = crate::sink::mqtt::parse_url(url)?;
+                    if a.mqtt_ca.is_some() && !tls {
+                        return Err(format!(
+                            "--mqtt-ca is for a broker over TLS: give --mqtt mqtts://{host}:{port}"
+                        ));
+                    }
+                    let prefix = a.mqtt_prefix.trim_end_matches('/');
+                    if prefix.is_empty() || prefix.contains(['+', '#']) {
+                        return Err(format!(
+                            "--mqtt-prefix '{}': give topic levels without + or #, as plant/line1",
+                            a.mqtt_prefix
+                        ));
+                    }
+                    let password = std::env::var("MBTOOL_MQTT_PASSWORD").ok();
+                    if password.is_some() && a.mqtt_user.is_none() {
+                        return Err(
+                            "MBTOOL_MQTT_PASSWORD is set without a user: give --mqtt-user USER"
+                                .into(),
+                        );
+                    }
+                    Some(MqttSettings {
+                        host,
+                        port,
+                        tls,
+                        ca: a.mqtt_ca,
+                        prefix: prefix.to_string(),
+                        retain: a.mqtt_retain,
+                        discovery: a.mqtt_discovery,
+                        user: a.mqtt_user,
+                        password,
+                    })
+                }
+                None => None,
+            };
             Job::Plant(Plant {
+                mqtt,
                 influx: a.format.output.as_deref() == Some(INFLUX),
                 influx_url: a.influx,
                 buffer: a.buffer as usize,

@@ -33,7 +33,7 @@ pub fn check_url(url: &str) -> Result<(), String> {
 /// Sends the buffer's rows to `url` until the buffer is closed and empty (or its last rows
 /// could not be sent within a few seconds); `tell` is told when the server goes down and
 /// comes back.
-pub fn send(url: &str, buffer: &Buffer, tell: impl Fn(&str)) -> Delivered {
+pub fn send(url: &str, buffer: &Buffer<String>, tell: impl Fn(&str)) -> Delivered {
     let config = ureq::Agent::config_builder()
         .timeout_global(Some(REQUEST_TIMEOUT))
         .build();

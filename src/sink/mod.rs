@@ -4,39 +4,52 @@
 
 pub mod influx;
 pub mod metrics;
+pub mod mqtt;
 
 use std::collections::VecDeque;
 use std::sync::{Arc, Condvar, Mutex};
 use std::time::Duration;
 
 /// The rows waiting for a sink, and what became of the others.
-#[derive(Default)]
-struct Waiting {
-    rows: VecDeque<String>,
+struct Waiting<T> {
+    rows: VecDeque<T>,
     /// Rows dropped, oldest first, when the buffer was full.
     dropped: u64,
     /// Set when no more rows will come: send what is left, then end.
     closing: bool,
 }
 
-/// A bounded buffer of rows, shared by the poll that fills it and the thread that sends
-/// its rows.
-#[derive(Clone)]
-pub struct Buffer {
-    waiting: Arc<(Mutex<Waiting>, Condvar)>,
+/// A bounded buffer of rows (lines, messages), shared by the poll that fills it and the
+/// thread that sends its rows.
+pub struct Buffer<T> {
+    waiting: Arc<(Mutex<Waiting<T>>, Condvar)>,
     capacity: usize,
 }
 
-impl Buffer {
-    pub fn new(capacity: usize) -> Self {
+impl<T> Clone for Buffer<T> {
+    fn clone(&self) -> Self {
         Self {
-            waiting: Arc::new((Mutex::new(Waiting::default()), Condvar::new())),
+            waiting: Arc::clone(&self.waiting),
+            capacity: self.capacity,
+        }
+    }
+}
+
+impl<T: Clone> Buffer<T> {
+    pub fn new(capacity: usize) -> Self {
+        let waiting = Waiting {
+            rows: VecDeque::new(),
+            dropped: 0,
+            closing: false,
+        };
+        Self {
+            waiting: Arc::new((Mutex::new(waiting), Condvar::new())),
             capacity: capacity.max(1),
         }
     }
 
     /// Adds a row; when the buffer is full, the oldest row gives way and is counted.
-    pub fn push(&self, row: String) {
+    pub fn push(&self, row: T) {
         let (lock, ready) = &*self.waiting;
         let mut waiting = lock.lock().unwrap_or_else(|p| p.into_inner());
         if waiting.rows.len() >= self.capacity {
@@ -56,7 +69,7 @@ impl Buffer {
 
     /// Up to `most` of the oldest rows, waiting up to `within` for one to come; and whether
     /// the buffer is closing.
-    fn oldest(&self, most: usize, within: Duration) -> (Vec<String>, bool) {
+    fn oldest(&self, most: usize, within: Duration) -> (Vec<T>, bool) {
         let (lock, ready) = &*self.waiting;
         let mut waiting = lock.lock().unwrap_or_else(|p| p.into_inner());
         if waiting.rows.is_empty() && !waiting.closing {
@@ -98,11 +111,12 @@ pub struct Delivered {
 }
 
 impl Delivered {
-    /// `1200 rows written, 30 dropped while it was down (the buffer holds 1000), 5 unsent`.
-    pub fn summary(&self, capacity: usize) -> String {
+    /// `1200 rows written, 30 dropped while it was down (the buffer holds 1000), 5 unsent`,
+    /// of rows or of another `thing`.
+    pub fn summary(&self, capacity: usize, thing: &str) -> String {
         let mut said = format!(
             "{} written",
-            crate::output::plural(self.sent as usize, "row")
+            crate::output::plural(self.sent as usize, thing)
         );
         if self.dropped > 0 {
             said.push_str(&format!(
@@ -128,7 +142,7 @@ mod tests {
     fn a_full_buffer_drops_its_oldest_rows_and_counts_them() {
         let buffer = Buffer::new(3);
         for row in ["a", "b", "c", "d", "e"] {
-            buffer.push(row.into());
+            buffer.push(row.to_string());
         }
         let (rows, closing) = buffer.oldest(10, Duration::ZERO);
         assert_eq!(

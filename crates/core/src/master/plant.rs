@@ -10,6 +10,7 @@ use super::map::{read_points, MapRead, Refused};
 use super::poll::Backoff;
 use super::run::RunError;
 use super::{Master, MasterError};
+use crate::codec::Request;
 use crate::model::map::Point;
 
 /// After this many failed polls in a row a device rests between its polls.
@@ -51,16 +52,39 @@ pub struct Polled {
     pub took: Duration,
 }
 
-/// Polls `devices` until `wait` says stop. `connect` opens the port's master; `wait` sleeps
-/// up to the time given and returns true when polling should end; `report` is told each
-/// poll as it is done. At most `max` registers or coils a request, where given.
-pub fn keep_read<E: std::fmt::Display>(
-    mut connect: impl FnMut() -> Result<Master, E>,
-    devices: &[Scheduled],
-    max: Option<u16>,
-    mut wait: impl FnMut(Duration) -> bool,
-    mut report: impl FnMut(Polled),
-) {
+/// What a port's worker is told when it wakes.
+#[derive(Debug)]
+pub enum Wake {
+    /// Polling ends.
+    Stop,
+    /// The time given has passed: the next poll is due.
+    Due,
+    /// A write to send before the next poll.
+    Write {
+        /// The device's index among those polled.
+        device: usize,
+        /// The write.
+        request: Request,
+    },
+}
+
+/// What the worker of one port needs from its caller.
+pub trait Port {
+    /// Why the port could not be opened.
+    type Refusal: std::fmt::Display;
+    /// Opens the port's master.
+    fn connect(&mut self) -> Result<Master, Self::Refusal>;
+    /// Waits up to `time`, or until there is something else to do.
+    fn wait(&mut self, time: Duration) -> Wake;
+    /// Each poll, as it is done.
+    fn polled(&mut self, polled: Polled);
+    /// Each write asked by [`Wake::Write`], done or not.
+    fn wrote(&mut self, device: usize, request: &Request, outcome: Result<(), String>);
+}
+
+/// Polls `devices` on `port` until it says stop, at most `max` registers or coils a
+/// request where given; writes it hands over are sent between polls.
+pub fn keep_read<P: Port>(port: &mut P, devices: &[Scheduled], max: Option<u16>) {
     if devices.is_empty() {
         return;
     }
@@ -77,19 +101,30 @@ pub fn keep_read<E: std::fmt::Display>(
             .min_by_key(|(_, when)| **when)
             .map(|(device, when)| (device, *when))
             .unwrap_or((0, start));
-        if wait(when.saturating_duration_since(Instant::now())) {
-            return;
-        }
-        let began = Instant::now();
-        if master.is_none() && began >= backoff.next_attempt {
-            match connect() {
-                Ok(opened) => {
-                    master = Some(opened);
-                    backoff = Backoff::new();
-                }
-                Err(error) => backoff.failed(error.to_string()),
+        match port.wait(when.saturating_duration_since(Instant::now())) {
+            Wake::Stop => return,
+            Wake::Due => {}
+            Wake::Write { device, request } => {
+                let outcome = match devices.get(device) {
+                    None => Err(format!("no device {device} on this port")),
+                    Some(asked) => {
+                        open(port, &mut master, &mut backoff);
+                        match master.as_mut().map(|m| m.answer(asked.slave, &request)) {
+                            None => Err(format!("not connected: {}", backoff.last_error)),
+                            Some(Ok(_)) => Ok(()),
+                            Some(Err(error)) => {
+                                dropped_on(&error, &mut master, &mut backoff);
+                                Err(error.to_string())
+                            }
+                        }
+                    }
+                };
+                port.wrote(device, &request, outcome);
+                continue;
             }
         }
+        let began = Instant::now();
+        open(port, &mut master, &mut backoff);
         let outcome = match master.as_mut() {
             None => Outcome::Down(backoff.last_error.clone()),
             Some(current) => {
@@ -97,11 +132,7 @@ pub fn keep_read<E: std::fmt::Display>(
                 match read_points(current, &points[device], asked.slave, max, Refused::Error) {
                     Ok(read) => Outcome::Read(read),
                     Err(error) => {
-                        // A transport that failed is opened again before the next poll.
-                        if matches!(error, RunError::Master(MasterError::Io(_))) {
-                            master = None;
-                            backoff = Backoff::new();
-                        }
+                        dropped_on(&error, &mut master, &mut backoff);
                         Outcome::Failed(error)
                     }
                 }
@@ -115,7 +146,7 @@ pub fn keep_read<E: std::fmt::Display>(
             Outcome::Failed(_) | Outcome::Down(_) => false,
         };
         failures[device] = if answered { 0 } else { failures[device] + 1 };
-        report(Polled {
+        port.polled(Polled {
             device,
             outcome,
             took: began.elapsed(),
@@ -126,6 +157,27 @@ pub fn keep_read<E: std::fmt::Display>(
             failures[device],
             Instant::now(),
         );
+    }
+}
+
+/// A transport that failed is opened again before the next request.
+fn dropped_on(error: &RunError, master: &mut Option<Master>, backoff: &mut Backoff) {
+    if matches!(error, RunError::Master(MasterError::Io(_))) {
+        *master = None;
+        *backoff = Backoff::new();
+    }
+}
+
+/// Opens the port's master where it is closed and its back-off allows.
+fn open<P: Port>(port: &mut P, master: &mut Option<Master>, backoff: &mut Backoff) {
+    if master.is_none() && Instant::now() >= backoff.next_attempt {
+        match port.connect() {
+            Ok(opened) => {
+                *master = Some(opened);
+                *backoff = Backoff::new();
+            }
+            Err(error) => backoff.failed(error.to_string()),
+        }
     }
 }
 
@@ -189,18 +241,33 @@ mod tests {
             };
             2
         ];
-        let mut polled = Vec::new();
-        let mut waits = 0;
-        keep_read(
-            || Err::<Master, _>("refused"),
-            &devices,
-            None,
-            |_| {
-                waits += 1;
-                waits > 6
-            },
-            |poll| polled.push(poll),
-        );
+        struct Refusing {
+            waits: u32,
+            polled: Vec<Polled>,
+        }
+        impl Port for Refusing {
+            type Refusal = &'static str;
+            fn connect(&mut self) -> Result<Master, &'static str> {
+                Err("refused")
+            }
+            fn wait(&mut self, _: Duration) -> Wake {
+                self.waits += 1;
+                match self.waits > 6 {
+                    true => Wake::Stop,
+                    false => Wake::Due,
+                }
+            }
+            fn polled(&mut self, polled: Polled) {
+                self.polled.push(polled);
+            }
+            fn wrote(&mut self, _: usize, _: &Request, _: Result<(), String>) {}
+        }
+        let mut port = Refusing {
+            waits: 0,
+            polled: Vec::new(),
+        };
+        keep_read(&mut port, &devices, None);
+        let polled = port.polled;
         assert_eq!(polled.len(), 6);
         assert!(polled
             .iter()

@@ -119,7 +119,8 @@ pub(super) fn private_key(path: &Path) -> Result<PrivateKeyDer<'static>, TlsErro
     })
 }
 
-pub(super) fn root_store(path: &Path) -> Result<RootCertStore, TlsError> {
+/// The CA certificates of a PEM file, to check a server's certificate against.
+pub fn root_store(path: &Path) -> Result<RootCertStore, TlsError> {
     let mut roots = RootCertStore::empty();
     for certificate in certificates(path)? {
         roots.add(certificate).map_err(|e| TlsError::Malformed {

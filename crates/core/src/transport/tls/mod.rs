@@ -26,9 +26,8 @@ mod names;
 mod refusals;
 
 pub use files::certificate_role;
-use files::{
-    certificates, check_validity, key_error, not_after_of, private_key, root_store, subject_of,
-};
+pub use files::root_store;
+use files::{certificates, check_validity, key_error, not_after_of, private_key, subject_of};
 use refusals::{client_side, server_side};
 
 /// The least time a master gives a device for the TLS handshake.
@@ -186,6 +185,16 @@ impl ClientTls {
             cert: files.cert.clone(),
         })
     }
+}
+
+/// A client configuration for an ordinary TLS server, such as an MQTT broker: its
+/// certificate checked against `roots` and its host name, as the web checks them.
+pub fn standard_client(roots: rustls::RootCertStore) -> Result<ClientConfig, TlsError> {
+    Ok(ClientConfig::builder_with_provider(provider())
+        .with_protocol_versions(rustls::DEFAULT_VERSIONS)
+        .map_err(|e| TlsError::Handshake(e.to_string()))?
+        .with_root_certificates(roots)
+        .with_no_client_auth())
 }
 
 /// What a server's TLS connections are made with: a certificate and key, and the CAs a

@@ -1,0 +1,171 @@
+//! A plant's files read: its devices with their points and how each is reached, or every
+//! fault of the files at once.
+
+use std::path::Path;
+use std::time::Duration;
+
+use mbtool::connection::{Connector, Role};
+use mbtool::error::Error;
+use mbtool::settings::{ConnectionSettings, Settings};
+use mbtool_core::model::map::{Point, RegisterMap};
+use mbtool_core::model::map_file;
+use mbtool_core::model::plant::{self, PlantDevice};
+
+/// A device, ready to poll.
+pub(super) struct Device {
+    pub plant: PlantDevice,
+    pub points: Vec<Point>,
+    pub connector: Connector,
+}
+
+/// The devices of every plant file with their maps, or every fault of them at once.
+pub(super) fn load(
+    settings: &Settings,
+    files: &[std::path::PathBuf],
+) -> Result<Vec<Device>, Error> {
+    let mut faults: Vec<String> = Vec::new();
+    let mut devices: Vec<Device> = Vec::new();
+    for file in files {
+        let name = file.display().to_string();
+        let text = match std::fs::read_to_string(file) {
+            Ok(text) => text,
+            Err(e) => {
+                faults.push(format!("cannot read {name}: {e}"));
+                continue;
+            }
+        };
+        let folder = file.parent().unwrap_or(Path::new("."));
+        let found: Vec<(PlantDevice, Result<Vec<Point>, String>)> = if is_plant(&text) {
+            let parsed = plant::parse_all(&name, &text);
+            if let Err(e) = parsed.faults {
+                faults.extend(e.to_string().lines().map(String::from));
+            }
+            parsed
+                .devices
+                .into_iter()
+                .map(|device| {
+                    let map = map_file::load(&folder.join(&device.map));
+                    (device, map.map(|map| map.points).map_err(|e| e.to_string()))
+                })
+                .collect()
+        } else {
+            // A Home Assistant configuration as it stands: its hubs are the devices.
+            match map_file::load(file) {
+                Ok(map) if map.hubs.is_empty() => {
+                    faults.push(format!(
+                        "{name} is a register map, not a plant: give a file of devices: (or a Home Assistant configuration with hubs), the map as a device's map:"
+                    ));
+                    continue;
+                }
+                Ok(map) => hub_devices(&name, &map, &mut faults),
+                Err(e) => {
+                    faults.extend(e.to_string().lines().map(String::from));
+                    continue;
+                }
+            }
+        };
+        for (device, points) in found {
+            if let Some(other) = devices.iter().find(|d| d.plant.name == device.name) {
+                faults.push(format!(
+                    "{name}:{}: the name '{}' is taken already, by a device of line {}",
+                    device.line, device.name, other.plant.line
+                ));
+                continue;
+            }
+            let connection = ConnectionSettings {
+                port: None,
+                ..settings.connection.clone()
+            }
+            .with_map(Some(&device.connection));
+            let connector = Connector::new(&connection, Role::Master);
+            let at = format!("{name}:{}: {}", device.line, device.name);
+            match (points, connector) {
+                (Ok(points), Ok(connector)) => devices.push(Device {
+                    plant: device,
+                    points,
+                    connector,
+                }),
+                (points, connector) => {
+                    if let Err(e) = points {
+                        faults.push(format!("{at}: {e}"));
+                    }
+                    if let Err(e) = connector {
+                        faults.push(format!("{at}: {e}"));
+                    }
+                }
+            }
+        }
+    }
+    if faults.is_empty() && devices.is_empty() {
+        faults.push("the plant has no device to poll".to_string());
+    }
+    match faults.is_empty() {
+        true => Ok(devices),
+        false => Err(Error::Faults(faults)),
+    }
+}
+
+/// Whether a file's text is mbtool's own plant form, by its `devices:` key.
+fn is_plant(text: &str) -> bool {
+    text.lines().any(|line| line.starts_with("devices:"))
+}
+
+/// How often Home Assistant reads an entity whose `scan_interval` is not given.
+const HOME_ASSISTANT_RATE: Duration = Duration::from_secs(15);
+
+/// The devices of a Home Assistant configuration: each hub's points by slave and by rate
+/// (`scan_interval`, 15 s where not given), named after the hub (`meter`, `meter/2`,
+/// `meter/2/5s`); an entity Home Assistant does not poll (`scan_interval: 0`) is left out.
+fn hub_devices(
+    file: &str,
+    map: &RegisterMap,
+    faults: &mut Vec<String>,
+) -> Vec<(PlantDevice, Result<Vec<Point>, String>)> {
+    let mut found = Vec::new();
+    for hub in &map.hubs {
+        let place = match &hub.place {
+            Ok(place) => place,
+            Err(why) => {
+                faults.push(format!("{file}: hub {}: {why}", hub.name));
+                continue;
+            }
+        };
+        let mut groups: Vec<((u8, Duration), Vec<Point>)> = Vec::new();
+        for (index, every) in &hub.points {
+            let every = every.unwrap_or(HOME_ASSISTANT_RATE);
+            if every.is_zero() {
+                continue;
+            }
+            let point = &map.points[*index];
+            let slave = point.slave.or(map.default_slave).unwrap_or(1);
+            match groups.iter_mut().find(|(key, _)| *key == (slave, every)) {
+                Some((_, points)) => points.push(point.clone()),
+                None => groups.push(((slave, every), vec![point.clone()])),
+            }
+        }
+        let slaves = {
+            let mut slaves: Vec<u8> = groups.iter().map(|((slave, _), _)| *slave).collect();
+            slaves.sort_unstable();
+            slaves.dedup();
+            slaves.len()
+        };
+        for ((slave, every), points) in &groups {
+            let rates = groups.iter().filter(|((s, _), _)| s == slave).count();
+            let name = match (slaves, rates) {
+                (1, 1) => hub.name.clone(),
+                (_, 1) => format!("{}/{slave}", hub.name),
+                _ => format!("{}/{slave}/{}s", hub.name, every.as_secs()),
+            };
+            let device = PlantDevice {
+                name,
+                connection: place.clone(),
+                slave: *slave,
+                map: file.to_string(),
+                every: *every,
+                line: points.first().map_or(1, |point| point.line),
+            };
+            found.push((device, Ok(points.clone())));
+        }
+    }
+    found
+}

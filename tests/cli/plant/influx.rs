@@ -1,0 +1,220 @@
+//! `poll --influx` and `-o influx`: InfluxDB line protocol, and Debian's InfluxDB server
+//! written to, restarted and read back.
+
+use std::process::{Command as Process, Stdio};
+use std::time::{Duration, Instant};
+
+use super::*;
+
+#[test]
+fn influx_is_polls_format_and_values_is_not() {
+    let (_dir, path) = plant(&[device("pump", "sim", 17, "100ms")]);
+    for (args, said) in [
+        (vec!["poll", &path, "-o", "values"], "mbtool: --output values: give a format: table, json, csv or influx\n"),
+        (
+            vec!["--port", "sim", "read-holding", "17", "1", "-o", "influx"],
+            "mbtool: --output influx is poll's (mbtool poll PLANT -o influx): give table, json, values or csv\n",
+        ),
+    ] {
+        let output = mbtool().args(&args).output().unwrap();
+        assert_eq!(output.status.code(), Some(2), "{args:?}");
+        assert_eq!(String::from_utf8_lossy(&output.stderr), said);
+    }
+    let help = mbtool().args(["poll", "-h"]).output().unwrap();
+    let help = String::from_utf8_lossy(&help.stdout);
+    assert!(
+        help.contains("[possible values: table, json, csv, influx]"),
+        "{help}"
+    );
+}
+
+/// An InfluxDB 1.x server of Debian's on 127.0.0.1, its files in a folder of its own,
+/// stopped on drop; `None` (skipped) where influxd is missing outside CI.
+struct Influx {
+    server: Option<crate::support::Stopped>,
+    config: std::path::PathBuf,
+    port: u16,
+    _dir: tempfile::TempDir,
+}
+
+impl Influx {
+    fn start() -> Option<Influx> {
+        if !crate::support::peer_available("influxd", crate::support::command_exists("influxd")) {
+            return None;
+        }
+        let dir = tempfile::tempdir().unwrap();
+        let (port, rpc) = (free_port(), free_port());
+        let at = |name: &str| dir.path().join(name).display().to_string();
+        let config = dir.path().join("influxdb.conf");
+        std::fs::write(
+            &config,
+            format!(
+                "reporting-disabled = true\nbind-address = \"127.0.0.1:{rpc}\"\n[meta]\n  dir = \"{}\"\n[data]\n  dir = \"{}\"\n  wal-dir = \"{}\"\n  query-log-enabled = false\n[http]\n  bind-address = \"127.0.0.1:{port}\"\n  log-enabled = false\n[monitor]\n  store-enabled = false\n",
+                at("meta"),
+                at("data"),
+                at("wal")
+            ),
+        )
+        .unwrap();
+        let mut influx = Influx {
+            server: None,
+            config,
+            port,
+            _dir: dir,
+        };
+        influx.run();
+        influx.query("CREATE DATABASE plant");
+        Some(influx)
+    }
+
+    /// Starts the server (again, on the same files), and waits until it answers.
+    fn run(&mut self) {
+        let child = Process::new("influxd")
+            .arg("-config")
+            .arg(&self.config)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        self.server = Some(crate::support::Stopped(child));
+        let deadline = Instant::now() + Duration::from_secs(20);
+        while ureq::get(format!("http://127.0.0.1:{}/ping", self.port))
+            .call()
+            .is_err()
+        {
+            assert!(Instant::now() < deadline, "influxd did not start");
+            std::thread::sleep(Duration::from_millis(100));
+        }
+    }
+
+    fn stop(&mut self) {
+        self.server = None;
+    }
+
+    fn write_url(&self) -> String {
+        format!("http://127.0.0.1:{}/write?db=plant", self.port)
+    }
+
+    fn query(&self, q: &str) -> serde_json::Value {
+        let text = ureq::post(format!(
+            "http://127.0.0.1:{}/query?db=plant&epoch=ns",
+            self.port
+        ))
+        .send_form([("q", q)])
+        .unwrap()
+        .body_mut()
+        .read_to_string()
+        .unwrap();
+        serde_json::from_str(&text).unwrap()
+    }
+
+    /// Every row of `modbus`, as line protocol would write it: device, fields, time.
+    fn rows(&self) -> Vec<String> {
+        let result = self.query("SELECT * FROM modbus");
+        let series = &result["results"][0]["series"][0];
+        let columns: Vec<&str> = series["columns"]
+            .as_array()
+            .map(|c| c.iter().map(|c| c.as_str().unwrap()).collect())
+            .unwrap_or_default();
+        let at = |name: &str| columns.iter().position(|c| *c == name).unwrap();
+        let mut rows: Vec<String> = series["values"]
+            .as_array()
+            .map(Vec::as_slice)
+            .unwrap_or_default()
+            .iter()
+            .map(|row| {
+                format!(
+                    "modbus,device={},slave={} speed={}i,level={}i,flow={}i {}",
+                    row[at("device")].as_str().unwrap(),
+                    row[at("slave")].as_str().unwrap(),
+                    row[at("speed")],
+                    row[at("level")],
+                    row[at("flow")],
+                    row[at("time")]
+                )
+            })
+            .collect();
+        rows.sort();
+        rows
+    }
+}
+
+/// mbtool poll of the example plant, its rows on stdout as line protocol and written to
+/// the InfluxDB of `url`, `during` run meanwhile; (stdout's lines sorted, stderr).
+fn poll_into(url: &str, args: &[&str], during: impl FnOnce()) -> (Vec<String>, String) {
+    let child = Process::new(assert_cmd::cargo::cargo_bin("mbtool"))
+        .args([
+            "poll",
+            "examples/plant.yaml",
+            "-o",
+            "influx",
+            "--influx",
+            url,
+        ])
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    during();
+    let output = child.wait_with_output().unwrap();
+    let mut lines: Vec<String> = String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .map(String::from)
+        .collect();
+    lines.sort();
+    (lines, String::from_utf8_lossy(&output.stderr).into_owned())
+}
+
+#[test]
+fn what_influxdb_was_written_reads_back_exact() {
+    let Some(influx) = Influx::start() else {
+        return;
+    };
+    let (lines, stderr) = poll_into(&influx.write_url(), &["--for", "1s"], || ());
+    assert!(lines.len() >= 4, "{lines:?}");
+    // Values and nanosecond times, as the line protocol on stdout said them.
+    assert_eq!(influx.rows(), lines, "{stderr}");
+    assert!(
+        stderr.contains(&format!("mbtool: InfluxDB: {} rows written", lines.len())),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn an_influxdb_that_restarts_loses_nothing_within_the_buffer_and_the_overflow_is_counted() {
+    let Some(mut influx) = Influx::start() else {
+        return;
+    };
+    let url = influx.write_url();
+    let (lines, stderr) = poll_into(&url, &["--for", "4s"], || {
+        std::thread::sleep(Duration::from_millis(800));
+        influx.stop();
+        std::thread::sleep(Duration::from_millis(1500));
+        influx.run();
+    });
+    assert!(stderr.contains("does not take rows"), "{stderr}");
+    assert!(stderr.contains("takes rows again"), "{stderr}");
+    assert_eq!(influx.rows(), lines, "{stderr}");
+    // A buffer of 3 rows: what came while the server was down past them is dropped,
+    // counted, and the rest is there.
+    influx.query("DROP SERIES FROM modbus");
+    let (lines, stderr) = poll_into(&url, &["--for", "4s", "--buffer", "3"], || {
+        std::thread::sleep(Duration::from_millis(800));
+        influx.stop();
+        std::thread::sleep(Duration::from_millis(1500));
+        influx.run();
+    });
+    let dropped: usize = stderr
+        .lines()
+        .flat_map(|line| line.split(", "))
+        .find_map(|part| {
+            part.strip_suffix(" dropped while it was down (the buffer holds 3; --buffer sets it)")
+        })
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("{stderr}"));
+    assert!(dropped > 0, "{stderr}");
+    let rows = influx.rows();
+    assert_eq!(rows.len() + dropped, lines.len(), "{stderr}");
+    assert!(rows.iter().all(|row| lines.contains(row)), "{stderr}");
+}
