@@ -12,7 +12,9 @@ use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use rumqttc::{Client, Connection, Event, LastWill, MqttOptions, Packet, QoS, Transport};
+use rumqttc::{
+    Client, Connection, ConnectionError, Event, LastWill, MqttOptions, Packet, QoS, Transport,
+};
 use serde_json::{json, Map, Value as Json};
 
 use super::{Buffer, Delivered};
@@ -366,9 +368,7 @@ impl Broker {
                         down = true;
                         if !told_down {
                             told_down = true;
-                            tell(&format!(
-                                "the MQTT broker does not take messages ({error}); keeping them to send when it does"
-                            ));
+                            tell(&refusal(&error));
                         }
                         std::thread::sleep(wait);
                         wait = (wait * 2).min(Duration::from_secs(10));
@@ -377,6 +377,21 @@ impl Broker {
             }
             sending.join().unwrap_or_default()
         })
+    }
+}
+
+/// Why the broker takes no message, in words that say what to do.
+fn refusal(error: &ConnectionError) -> String {
+    use rumqttc::ConnectReturnCode as Code;
+    let keeping = "keeping the messages to send when it does";
+    match error {
+        ConnectionError::ConnectionRefused(Code::BadUserNamePassword | Code::NotAuthorized) => {
+            format!("the MQTT broker refused mbtool's login (not authorized): check --mqtt-user and MBTOOL_MQTT_PASSWORD; {keeping}")
+        }
+        ConnectionError::Tls(tls) => format!(
+            "the MQTT broker's TLS failed ({tls}): check mqtts://, its port and --mqtt-ca; {keeping}"
+        ),
+        error => format!("the MQTT broker does not take messages ({error}); {keeping}"),
     }
 }
 

@@ -27,6 +27,12 @@ struct Broker {
 
 impl Broker {
     fn start() -> Option<Broker> {
+        Broker::start_with(|port, _| format!("listener {port} 127.0.0.1\nallow_anonymous true\n"))
+    }
+
+    /// A broker whose listener is configured by `listener`, given the port and the
+    /// broker's folder, where it may write the files it names.
+    fn start_with(listener: impl FnOnce(u16, &std::path::Path) -> String) -> Option<Broker> {
         let found = command_exists("mosquitto") && command_exists("mosquitto_sub");
         if !peer_available("mosquitto", found) {
             return None;
@@ -40,7 +46,8 @@ impl Broker {
         std::fs::write(
             &config,
             format!(
-                "listener {port} 127.0.0.1\nallow_anonymous true\npersistence true\npersistence_location {}/\nmax_queued_messages 100000\n",
+                "{}persistence true\npersistence_location {}/\nmax_queued_messages 100000\n",
+                listener(port, dir.path()),
                 dir.path().display()
             ),
         )
@@ -438,5 +445,109 @@ fn a_broker_that_restarts_loses_nothing_within_the_buffer_and_the_overflow_is_co
     assert!(
         received.abs_diff(expected) <= 3,
         "{received} received, {rows} polls, {dropped} dropped\n{stderr}"
+    );
+}
+
+#[test]
+fn a_broker_over_tls_with_a_password_is_published_to_and_a_wrong_password_is_told() {
+    let Some(broker) = Broker::start_with(|port, dir| {
+        let ca_key = rcgen::KeyPair::generate().unwrap();
+        let mut ca = rcgen::CertificateParams::new(Vec::<String>::new()).unwrap();
+        ca.is_ca = rcgen::IsCa::Ca(rcgen::BasicConstraints::Unconstrained);
+        ca.distinguished_name
+            .push(rcgen::DnType::CommonName, "Plant CA");
+        ca.key_usages = vec![
+            rcgen::KeyUsagePurpose::KeyCertSign,
+            rcgen::KeyUsagePurpose::DigitalSignature,
+        ];
+        let ca_pem = ca.self_signed(&ca_key).unwrap().pem();
+        let issuer = rcgen::Issuer::new(ca, ca_key);
+        let key = rcgen::KeyPair::generate().unwrap();
+        let names = vec!["localhost".to_string()];
+        let mut cert = rcgen::CertificateParams::new(names).unwrap();
+        cert.distinguished_name
+            .push(rcgen::DnType::CommonName, "localhost");
+        let cert = cert.signed_by(&key, &issuer).unwrap();
+        std::fs::write(dir.join("ca.pem"), ca_pem).unwrap();
+        std::fs::write(dir.join("broker.pem"), cert.pem()).unwrap();
+        std::fs::write(dir.join("broker.key"), key.serialize_pem()).unwrap();
+        let passwords = dir.join("passwords");
+        let made = Process::new("mosquitto_passwd")
+            .arg("-c")
+            .arg("-b")
+            .arg(&passwords)
+            .args(["plant", "s3cret"])
+            .status()
+            .unwrap();
+        assert!(made.success());
+        let d = dir.display();
+        format!(
+            "listener {port} 127.0.0.1\nallow_anonymous false\npassword_file {d}/passwords\ncafile {d}/ca.pem\ncertfile {d}/broker.pem\nkeyfile {d}/broker.key\n"
+        )
+    }) else {
+        return eprintln!("skipped: mosquitto is not installed");
+    };
+    let ca = broker._dir.path().join("ca.pem").display().to_string();
+    let (_server, _dir, plant) = pump_plant();
+    let url = format!("mqtts://localhost:{}", broker.port);
+    let poll = |password: &str| {
+        mbtool()
+            .args([
+                "poll",
+                &plant,
+                "--for",
+                "1s",
+                "--mqtt",
+                &url,
+                "--mqtt-retain",
+            ])
+            .args(["--mqtt-ca", &ca, "--mqtt-user", "plant"])
+            .env("MBTOOL_MQTT_PASSWORD", password)
+            .output()
+            .unwrap()
+    };
+    let output = poll("s3cret");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(0), "{stderr}");
+    assert!(!stderr.contains("does not take"), "{stderr}");
+    let read = Process::new("mosquitto_sub")
+        .args([
+            "-h",
+            "localhost",
+            "-p",
+            &broker.port.to_string(),
+            "--cafile",
+            &ca,
+        ])
+        .args([
+            "-u",
+            "plant",
+            "-P",
+            "s3cret",
+            "-t",
+            "mbtool/pump/speed",
+            "-v",
+        ])
+        .args(["--retained-only", "-W", "2"])
+        .output()
+        .unwrap();
+    assert_eq!(
+        String::from_utf8_lossy(&read.stdout),
+        "mbtool/pump/speed 555\n",
+        "{}\n{stderr}",
+        String::from_utf8_lossy(&read.stderr)
+    );
+    // A wrong password: the polling goes on, the broker's refusal told once, in words.
+    let output = poll("wrong");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(0), "{stderr}");
+    assert!(
+        stderr.contains("pump: 10 polls") || stderr.contains("pump: 11 polls"),
+        "{stderr}"
+    );
+    assert_eq!(
+        stderr.matches("the MQTT broker refused mbtool's login (not authorized): check --mqtt-user and MBTOOL_MQTT_PASSWORD").count(),
+        1,
+        "{stderr}"
     );
 }
