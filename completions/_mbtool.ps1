@@ -1440,7 +1440,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;poll' {
-            [CompletionResult]::new('--influx', '--influx', [CompletionResultType]::ParameterName, 'Also write every row to InfluxDB: http://HOST:8086/write?db=NAME')
+            [CompletionResult]::new('--influx', '--influx', [CompletionResultType]::ParameterName, 'Also write every row to InfluxDB: http://HOST:8086/write?db=NAME (1.x) or http://HOST:8086/api/v2/write?org=ORG&bucket=BUCKET (2.x)')
             [CompletionResult]::new('--mqtt', '--mqtt', [CompletionResultType]::ParameterName, 'Also publish every value to an MQTT broker: mqtt://HOST[:PORT] or mqtts://HOST[:PORT]')
             [CompletionResult]::new('--mqtt-prefix', '--mqtt-prefix', [CompletionResultType]::ParameterName, 'The first level of the MQTT topics')
             [CompletionResult]::new('--mqtt-discovery', '--mqtt-discovery', [CompletionResultType]::ParameterName, 'Announce every point to Home Assistant (MQTT discovery), under PREFIX')

@@ -1384,7 +1384,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;poll'= {
-            cand --influx 'Also write every row to InfluxDB: http://HOST:8086/write?db=NAME'
+            cand --influx 'Also write every row to InfluxDB: http://HOST:8086/write?db=NAME (1.x) or http://HOST:8086/api/v2/write?org=ORG&bucket=BUCKET (2.x)'
             cand --mqtt 'Also publish every value to an MQTT broker: mqtt://HOST[:PORT] or mqtts://HOST[:PORT]'
             cand --mqtt-prefix 'The first level of the MQTT topics'
             cand --mqtt-discovery 'Announce every point to Home Assistant (MQTT discovery), under PREFIX'

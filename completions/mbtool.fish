@@ -1664,7 +1664,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l retry-non-idem
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l influx -d 'Also write every row to InfluxDB: http://HOST:8086/write?db=NAME' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l influx -d 'Also write every row to InfluxDB: http://HOST:8086/write?db=NAME (1.x) or http://HOST:8086/api/v2/write?org=ORG&bucket=BUCKET (2.x)' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l mqtt -d 'Also publish every value to an MQTT broker: mqtt://HOST[:PORT] or mqtts://HOST[:PORT]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l mqtt-prefix -d 'The first level of the MQTT topics' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l mqtt-discovery -d 'Announce every point to Home Assistant (MQTT discovery), under PREFIX' -r

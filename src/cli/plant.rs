@@ -53,10 +53,11 @@ pub struct PlantArgs {
     #[arg(required = true, value_name = "FILE")]
     pub files: Vec<std::path::PathBuf>,
 
-    /// Also write every row to InfluxDB: http://HOST:8086/write?db=NAME
+    /// Also write every row to InfluxDB: http://HOST:8086/write?db=NAME (1.x) or
+    /// http://HOST:8086/api/v2/write?org=ORG&bucket=BUCKET (2.x)
     ///
-    /// The 1.x write API, in batches; a server that is down gets the rows kept for it
-    /// (--buffer) when it is back
+    /// In batches; a server that is down gets the rows kept for it (--buffer) when it is
+    /// back. The token (2.x's, or USER:PASSWORD for 1.x) is read from INFLUX_TOKEN
     #[arg(long, value_name = "URL")]
     pub influx: Option<String>,
 

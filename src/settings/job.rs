@@ -242,8 +242,8 @@ pub struct Plant {
     pub duration: Option<Duration>,
     /// Rows as InfluxDB line protocol (`-o influx`).
     pub influx: bool,
-    /// An InfluxDB server's write URL, every row written to it too.
-    pub influx_url: Option<String>,
+    /// An InfluxDB server every row is written to too.
+    pub influx_server: Option<crate::sink::influx::InfluxServer>,
     /// Rows kept for a server that is down.
     pub buffer: usize,
     /// Where Prometheus metrics are served: `127.0.0.1:9502`.
@@ -312,9 +312,13 @@ pub fn of(command: Command) -> Result<Job, String> {
             roles: roles(a.roles),
         }),
         Command::Poll(a) => {
-            if let Some(url) = &a.influx {
-                crate::sink::influx::check_url(url)?;
-            }
+            let influx_server = match &a.influx {
+                Some(url) => Some(crate::sink::influx::server(
+                    url,
+                    std::env::var("INFLUX_TOKEN").ok(),
+                )?),
+                None => None,
+            };
             let mqtt = match &a.mqtt {
                 Some(url) => {
                     let (host, port, tls) = crate::sink::mqtt::parse_url(url)?;
@@ -354,7 +358,7 @@ pub fn of(command: Command) -> Result<Job, String> {
             Job::Plant(Plant {
                 mqtt,
                 influx: a.format.output.as_deref() == Some(INFLUX),
-                influx_url: a.influx,
+                influx_server,
                 buffer: a.buffer as usize,
                 metrics: a.metrics,
                 files: a.files,

@@ -1,5 +1,6 @@
 //! Rows as InfluxDB line protocol, written to an InfluxDB server over HTTP: the 1.x
-//! `/write?db=NAME` API as the URL gives it. Batches of at most 5000 lines; a server that
+//! `/write?db=NAME` API or the 2.x `/api/v2/write?org=ORG&bucket=BUCKET` API with a
+//! token, as the URL gives it. Batches of at most 5000 lines; a server that
 //! is down or refuses is asked again, waiting longer each time up to 10 s, the rows kept in
 //! the buffer meanwhile.
 
@@ -19,21 +20,61 @@ const LONGEST_WAIT: Duration = Duration::from_secs(10);
 /// How long the rows left at the end are tried for, with a server that is down.
 const LAST_TRY: Duration = Duration::from_secs(3);
 
-/// Checks the URL of `--influx`: `http://HOST:PORT/write?db=NAME` (or https://).
-pub fn check_url(url: &str) -> Result<(), String> {
-    let scheme = url.starts_with("http://") || url.starts_with("https://");
-    if !scheme || !url.contains("/write?") || !url.contains("db=") {
-        return Err(format!(
-            "--influx {url}: give the server's write URL, http://HOST:8086/write?db=NAME"
-        ));
+/// An InfluxDB server's write API, and the token it is asked with.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct InfluxServer {
+    /// `http://HOST:8086/write?db=NAME` (1.x) or
+    /// `http://HOST:8086/api/v2/write?org=ORG&bucket=BUCKET` (2.x).
+    pub url: String,
+    /// Sent as `Authorization: Token TOKEN`: 2.x's API token, or 1.x's `USER:PASSWORD`.
+    pub token: Option<String>,
+}
+
+/// Checks the URL of `--influx` with the token given (`INFLUX_TOKEN`): the 1.x API
+/// names its database, the 2.x API its bucket and organisation and needs a token.
+pub fn server(url: &str, token: Option<String>) -> Result<InfluxServer, String> {
+    let give = "give the server's write URL, http://HOST:8086/write?db=NAME (1.x) or http://HOST:8086/api/v2/write?org=ORG&bucket=BUCKET (2.x)";
+    let Some((place, query)) = url.split_once('?') else {
+        return Err(format!("--influx {url}: {give}"));
+    };
+    let keys: Vec<&str> = query
+        .split('&')
+        .filter_map(|pair| pair.split_once('=').filter(|(_, v)| !v.is_empty()))
+        .map(|(key, _)| key)
+        .collect();
+    let scheme = place.starts_with("http://") || place.starts_with("https://");
+    let token = token.filter(|t| !t.is_empty());
+    match place.trim_end_matches('/') {
+        _ if !scheme => Err(format!("--influx {url}: {give}")),
+        path if path.ends_with("/api/v2/write") => {
+            if !keys.contains(&"bucket") || !keys.contains(&"org") {
+                return Err(format!(
+                    "--influx {url}: the 2.x API needs org=ORG&bucket=BUCKET in the URL"
+                ));
+            }
+            if token.is_none() {
+                return Err(format!(
+                    "--influx {url}: the 2.x API needs a token: set INFLUX_TOKEN"
+                ));
+            }
+            Ok(InfluxServer {
+                url: url.to_string(),
+                token,
+            })
+        }
+        path if path.ends_with("/write") && keys.contains(&"db") => Ok(InfluxServer {
+            url: url.to_string(),
+            token,
+        }),
+        _ => Err(format!("--influx {url}: {give}")),
     }
-    Ok(())
 }
 
 /// Sends the buffer's rows to `url` until the buffer is closed and empty (or its last rows
 /// could not be sent within a few seconds); `tell` is told when the server goes down and
 /// comes back.
-pub fn send(url: &str, buffer: &Buffer<String>, tell: impl Fn(&str)) -> Delivered {
+pub fn send(server: &InfluxServer, buffer: &Buffer<String>, tell: impl Fn(&str)) -> Delivered {
+    let url = server.url.as_str();
     let config = ureq::Agent::config_builder()
         .timeout_global(Some(REQUEST_TIMEOUT))
         .build();
@@ -54,7 +95,11 @@ pub fn send(url: &str, buffer: &Buffer<String>, tell: impl Fn(&str)) -> Delivere
             continue;
         }
         let body = rows.join("\n") + "\n";
-        match agent.post(url).send(body.as_bytes()) {
+        let mut request = agent.post(url);
+        if let Some(token) = &server.token {
+            request = request.header("Authorization", format!("Token {token}"));
+        }
+        match request.send(body.as_bytes()) {
             Ok(_) => {
                 buffer.sent(rows.len());
                 delivered.sent += rows.len() as u64;
@@ -98,4 +143,42 @@ pub fn send(url: &str, buffer: &Buffer<String>, tell: impl Fn(&str)) -> Delivere
     delivered.dropped = dropped;
     delivered.unsent = unsent;
     delivered
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_url_names_a_database_or_a_bucket_and_the_2x_api_needs_a_token() {
+        let token = || Some("t0ken".to_string());
+        assert!(server("http://127.0.0.1:8086/write?db=plant", None).is_ok());
+        assert!(server("https://h:8086/write?db=plant&u=a&p=b", None).is_ok());
+        let v2 = "http://127.0.0.1:8086/api/v2/write?org=site&bucket=plant";
+        assert_eq!(
+            server(v2, token()),
+            Ok(InfluxServer {
+                url: v2.into(),
+                token: token()
+            })
+        );
+        let needs = server(v2, Some(String::new())).unwrap_err();
+        assert!(
+            needs.ends_with("the 2.x API needs a token: set INFLUX_TOKEN"),
+            "{needs}"
+        );
+        let bucket = "http://h:8086/api/v2/write?org=site";
+        assert!(server(bucket, token())
+            .unwrap_err()
+            .contains("org=ORG&bucket=BUCKET"));
+        for bad in [
+            "http://h:8086/write",
+            "http://h:8086/write?db=",
+            "h:8086/write?db=x",
+        ] {
+            assert!(server(bad, None)
+                .unwrap_err()
+                .contains("give the server's write URL"));
+        }
+    }
 }

@@ -91,12 +91,12 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
         drop(polled);
         let tell = |said: &str| mbtool::note!("mbtool: {said}");
         // InfluxDB over HTTP: a buffer filled here, emptied by a thread of its own.
-        let influx = job.influx_url.as_deref().map(|url| {
+        let influx = job.influx_server.as_ref().map(|server| {
             let buffer = Buffer::new(job.buffer);
             let sending = buffer.clone();
             (
                 buffer,
-                scope.spawn(move || influx::send(url, &sending, tell)),
+                scope.spawn(move || influx::send(server, &sending, tell)),
             )
         });
         let reaches = &reaches;

@@ -218,3 +218,90 @@ fn an_influxdb_that_restarts_loses_nothing_within_the_buffer_and_the_overflow_is
     assert_eq!(rows.len() + dropped, lines.len(), "{stderr}");
     assert!(rows.iter().all(|row| lines.contains(row)), "{stderr}");
 }
+
+/// A stand-in for InfluxDB 2.x's write API, which has no Debian package: it answers 204
+/// as the server does, and hands over each request's head and body.
+fn recording_server() -> (u16, std::sync::mpsc::Receiver<(String, String)>) {
+    use std::io::{BufRead, BufReader, Read, Write};
+    let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
+    let port = listener.local_addr().unwrap().port();
+    let (sender, requests) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for stream in listener.incoming().map_while(Result::ok) {
+            let mut reader = BufReader::new(stream);
+            let mut head = String::new();
+            while reader.read_line(&mut head).is_ok_and(|n| n > 2) {}
+            let length = head
+                .lines()
+                .find_map(|l| {
+                    l.to_ascii_lowercase()
+                        .strip_prefix("content-length: ")?
+                        .parse()
+                        .ok()
+                })
+                .unwrap_or(0);
+            let mut body = vec![0; length];
+            let _ = reader.read_exact(&mut body);
+            let _ = reader
+                .get_mut()
+                .write_all(b"HTTP/1.1 204 No Content\r\nConnection: close\r\n\r\n");
+            let _ = sender.send((head, String::from_utf8_lossy(&body).into_owned()));
+        }
+    });
+    (port, requests)
+}
+
+#[test]
+fn the_2x_api_is_written_with_its_token_and_refused_without_one() {
+    let (port, requests) = recording_server();
+    let url = format!("http://127.0.0.1:{port}/api/v2/write?org=site&bucket=plant");
+    let output = mbtool()
+        .args([
+            "poll",
+            "examples/plant.yaml",
+            "--for",
+            "600ms",
+            "--influx",
+            &url,
+        ])
+        .env("INFLUX_TOKEN", "t0ken==")
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(0), "{stderr}");
+    let polls = String::from_utf8_lossy(&output.stdout).lines().count();
+    let mut lines = Vec::new();
+    for (head, body) in requests.try_iter() {
+        assert!(
+            head.starts_with("POST /api/v2/write?org=site&bucket=plant HTTP/1.1\r\n"),
+            "{head}"
+        );
+        let head = head.to_ascii_lowercase();
+        assert!(
+            head.contains("\r\nauthorization: token t0ken==\r\n"),
+            "{head}"
+        );
+        lines.extend(body.lines().map(String::from));
+    }
+    assert_eq!(lines.len(), polls, "{lines:?}\n{stderr}");
+    assert!(
+        lines.iter().all(|l| l.starts_with("modbus,device=pump3")
+            && l.contains(" speed=555i,level=0i,flow=100i ")),
+        "{lines:?}"
+    );
+    assert!(
+        stderr.contains(&format!("InfluxDB: {polls} rows written")),
+        "{stderr}"
+    );
+
+    let output = mbtool()
+        .args(["poll", "examples/plant.yaml", "--influx", &url])
+        .env_remove("INFLUX_TOKEN")
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&output.stderr),
+        format!("mbtool: --influx {url}: the 2.x API needs a token: set INFLUX_TOKEN\n")
+    );
+}
