@@ -22,6 +22,10 @@ the plant file) and every (1s, 500ms):
       map: meter.csv
       every: 1s
 
+A device's points may be given in the plant itself, under points: instead of map:, each \
+point's keys the columns of a CSV map (name, ref, type, unit, access, ...). A plant file \
+named .toml is read as TOML, each device a [[devices]] table.
+
 A Home Assistant modbus configuration is a plant file as it stands: each hub a device per \
 slave, read at its entities' scan_interval (15 s where not given), named after the hub \
 (meter, meter/2, meter/2/5s where a slave's entities have several rates).

@@ -407,4 +407,41 @@ proptest! {
             prop_assert_eq!(device.line, 2 + 5 * i);
         }
     }
+
+    /// The same in TOML: any text read or told; a plant written reads back as its devices,
+    /// their points given inline read as a CSV map of the same points reads.
+    #[test]
+    fn a_toml_plant_reads_back_as_written_and_no_text_panics(
+        noise in ".{0,200}",
+        slaves in vec(0u8..=255, 1..6),
+        every in 1u64..100_000,
+        address in 1u32..=65536,
+        scale in -1000i32..1000,
+    ) {
+        use mbtool_core::model::plant::{parse, Points};
+        let _ = parse("p.toml", &noise);
+        let _ = parse("p.toml", &format!("[[devices]]\n{noise}"));
+        let reference = format!("4{address:05}");
+        let text: String = slaves
+            .iter()
+            .enumerate()
+            .map(|(i, slave)| format!(
+                "[[devices]]\nname = \"d{i}\"\nport = \"tcp://127.0.0.1:502\"\nslave = {slave}\nevery = \"{every}ms\"\npoints = [{{ name = \"p\", ref = \"{reference}\", scale = {scale} }}]\n"
+            ))
+            .collect();
+        let devices = parse("p.toml", &text).unwrap();
+        let csv = mbtool_core::model::map::parse_csv("m.csv", &format!("name,ref,scale\np,{reference},{scale}\n")).unwrap();
+        prop_assert_eq!(devices.len(), slaves.len());
+        for (i, (device, slave)) in devices.iter().zip(&slaves).enumerate() {
+            prop_assert_eq!(&device.name, &format!("d{i}"));
+            prop_assert_eq!(device.slave, *slave);
+            prop_assert_eq!(device.every, Duration::from_millis(every));
+            prop_assert_eq!(device.line, 1 + 6 * i);
+            let Points::Given(points) = &device.points else {
+                return Err(TestCaseError::fail("the points are given inline"));
+            };
+            let point = mbtool_core::model::map::Point { line: csv.points[0].line, ..points[0].clone() };
+            prop_assert_eq!(&point, &csv.points[0]);
+        }
+    }
 }

@@ -9,7 +9,7 @@ use mbtool::error::Error;
 use mbtool::settings::{ConnectionSettings, Settings};
 use mbtool_core::model::map::{Point, RegisterMap};
 use mbtool_core::model::map_file;
-use mbtool_core::model::plant::{self, PlantDevice};
+use mbtool_core::model::plant::{self, PlantDevice, Points};
 
 /// A device, ready to poll.
 pub(super) struct Device {
@@ -35,7 +35,7 @@ pub(super) fn load(
             }
         };
         let folder = file.parent().unwrap_or(Path::new("."));
-        let found: Vec<(PlantDevice, Result<Vec<Point>, String>)> = if is_plant(&text) {
+        let found: Vec<(PlantDevice, Result<Vec<Point>, String>)> = if is_plant(&name, &text) {
             let parsed = plant::parse_all(&name, &text);
             if let Err(e) = parsed.faults {
                 faults.extend(e.to_string().lines().map(String::from));
@@ -44,8 +44,13 @@ pub(super) fn load(
                 .devices
                 .into_iter()
                 .map(|device| {
-                    let map = map_file::load(&folder.join(&device.map));
-                    (device, map.map(|map| map.points).map_err(|e| e.to_string()))
+                    let points = match &device.points {
+                        Points::Map(map) => map_file::load(&folder.join(map))
+                            .map(|map| map.points)
+                            .map_err(|e| e.to_string()),
+                        Points::Given(points) => Ok(points.clone()),
+                    };
+                    (device, points)
                 })
                 .collect()
         } else {
@@ -105,9 +110,9 @@ pub(super) fn load(
     }
 }
 
-/// Whether a file's text is mbtool's own plant form, by its `devices:` key.
-fn is_plant(text: &str) -> bool {
-    text.lines().any(|line| line.starts_with("devices:"))
+/// Whether a file is mbtool's own plant form: TOML, or YAML with a `devices:` key.
+fn is_plant(file: &str, text: &str) -> bool {
+    plant::is_toml(file) || text.lines().any(|line| line.starts_with("devices:"))
 }
 
 /// How often Home Assistant reads an entity whose `scan_interval` is not given.
@@ -160,7 +165,7 @@ fn hub_devices(
                 name,
                 connection: place.clone(),
                 slave: *slave,
-                map: file.to_string(),
+                points: Points::Given(points.clone()),
                 every: *every,
                 line: points.first().map_or(1, |point| point.line),
             };

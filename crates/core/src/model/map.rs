@@ -369,6 +369,11 @@ fn csv_point(columns: &[usize], fields: &[String], line: usize) -> Result<Point,
             columns.len()
         ));
     }
+    point_of(&field, line)
+}
+
+/// A point from its fields by column name (`""` where not given).
+fn point_of<'a>(field: &dyn Fn(&str) -> &'a str, line: usize) -> Result<Point, String> {
     let name = field("name");
     check_name(name)?;
     let (reference_text, bit) = split_bit(field("ref")).map_err(|e| e.to_string())?;
@@ -522,6 +527,47 @@ pub fn parse_csv(file: &str, text: &str) -> Result<RegisterMap, MapError> {
         match point {
             Ok(point) => map.points.push(point),
             Err(error) => faults.add(at(file, number, error)),
+        }
+    }
+    check(file, map, faults)
+}
+
+/// A map given as tables of keys, each a point whose keys are the columns of a CSV map
+/// (a plant's inline points): each row its line and its keys with their values.
+pub fn parse_points(
+    file: &str,
+    rows: &[(usize, Vec<(&str, &str)>)],
+) -> Result<RegisterMap, MapError> {
+    let mut map = RegisterMap::default();
+    let mut faults = Faults::default();
+    let mut names: HashMap<&str, usize> = HashMap::new();
+    for (line, keys) in rows {
+        if let Some((key, _)) = keys.iter().find(|(key, _)| !COLUMNS.contains(key)) {
+            faults.add(at(
+                file,
+                *line,
+                format!("{key}: a point takes {}", COLUMNS.join(", ")),
+            ));
+            continue;
+        }
+        let field = |name: &str| -> &str {
+            keys.iter()
+                .find(|(key, _)| *key == name)
+                .map_or("", |(_, value)| *value)
+        };
+        let name = field("name");
+        if let Some(first) = names.get(name).filter(|_| !name.is_empty()) {
+            faults.add(at(
+                file,
+                *line,
+                format!("the name '{name}' is taken already, on line {first}"),
+            ));
+            continue;
+        }
+        names.insert(name, *line);
+        match point_of(&field, *line) {
+            Ok(point) => map.points.push(point),
+            Err(error) => faults.add(at(file, *line, error)),
         }
     }
     check(file, map, faults)

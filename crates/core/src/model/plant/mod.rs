@@ -14,20 +14,22 @@
 //!     baud: 19200
 //!     parity: even
 //!     slave: 3
-//!     map: drive.csv
 //!     every: 5s
+//!     points:                      # or the points here, as a CSV map's columns
+//!       - {name: speed, ref: 400108, unit: rpm}
 //! ```
+//!
+//! The same in TOML (a file named `.toml`), a `[[devices]]` table a device.
+
+mod tree;
 
 use std::collections::BTreeMap;
-use std::fmt;
 use std::time::Duration;
 
-use serde::de::{Deserializer, MapAccess, SeqAccess, Visitor};
-use serde::Deserialize;
-use serde_saphyr::Spanned;
+use tree::{Node, Tree};
 
 use super::faults::Faults;
-use super::map::{at, MapConnection, MapError};
+use super::map::{at, MapConnection, MapError, Point};
 use crate::input::duration::parse_duration;
 use crate::input::number::parse_in_range;
 
@@ -40,12 +42,21 @@ pub struct PlantDevice {
     pub connection: MapConnection,
     /// The slave address or unit id.
     pub slave: u8,
-    /// The register map's file, as written (relative to the plant file's folder).
-    pub map: String,
+    /// Its points: a register map's file, or the points given in the plant.
+    pub points: Points,
     /// How often its points are read.
     pub every: Duration,
     /// The line of the file the device starts on.
     pub line: usize,
+}
+
+/// Where a device's points are.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Points {
+    /// A register map's file, as written (relative to the plant file's folder).
+    Map(String),
+    /// Given in the plant file itself.
+    Given(Vec<Point>),
 }
 
 /// The keys a device takes.
@@ -91,38 +102,29 @@ pub fn parse_all(file: &str, text: &str) -> Parsed {
 }
 
 fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
-    let top: Option<BTreeMap<String, Spanned<Scalar>>> =
-        serde_saphyr::from_str(text).map_err(|e| {
-            let line = e
-                .location()
-                .map_or(1, |l| usize::try_from(l.line()).unwrap_or(1));
-            // The reader's first line, without its own `error: line L column C: `.
-            let said = e.to_string();
-            let first = said.lines().next().unwrap_or_default();
-            let first = first.strip_prefix("error: ").unwrap_or(first);
-            let first = match first.split_once(": ") {
-                Some((place, rest)) if place.starts_with("line ") => rest,
-                _ => first,
-            };
-            at(
-                file,
-                line,
-                format!("not a plant file, which is YAML with devices: ({first})"),
-            )
-        })?;
+    let (top, form) = match is_toml(file) {
+        true => (tree::toml(text), "TOML with [[devices]]"),
+        false => (tree::yaml(text), "YAML with devices:"),
+    };
+    let top = top.map_err(|(line, said)| {
+        at(
+            file,
+            line,
+            format!("not a plant file, which is {form} ({said})"),
+        )
+    })?;
     let mut faults = Faults::default();
-    let top = top.unwrap_or_default();
     for (key, value) in &top {
         if key != "devices" {
             faults.add(at(
                 file,
-                line_of(value),
+                value.line,
                 format!("{key}: a plant file has devices: only"),
             ));
         }
     }
     let devices = match top.get("devices").map(|d| &d.value) {
-        Some(Scalar::List(devices)) => devices.as_slice(),
+        Some(Tree::List(devices)) => devices.as_slice(),
         Some(_) => {
             faults.add(at(file, 1, "devices: give a list of devices"));
             &[]
@@ -140,8 +142,8 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
     // Every name given and its line, the devices with faults included.
     let mut names: Vec<(String, usize)> = Vec::new();
     for device in devices {
-        let line = line_of(device);
-        let Scalar::Map(keys) = &device.value else {
+        let line = device.line;
+        let Tree::Map(keys) = &device.value else {
             faults.add(at(
                 file,
                 line,
@@ -149,7 +151,7 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
             ));
             continue;
         };
-        if let Some(Scalar::Text(name)) = keys.get("name").map(|n| &n.value) {
+        if let Some(Tree::Text(name)) = keys.get("name").map(|n| &n.value) {
             if let Some((_, first)) = names.iter().find(|(known, _)| known == name) {
                 faults.add(at(
                     file,
@@ -171,35 +173,32 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
     })
 }
 
-fn line_of<T>(spanned: &Spanned<T>) -> usize {
-    usize::try_from(spanned.referenced.line()).unwrap_or(1)
+/// Whether a plant file is TOML, by its name.
+pub fn is_toml(file: &str) -> bool {
+    file.to_ascii_lowercase().ends_with(".toml")
 }
 
 /// One device's keys read, or each of their faults.
 fn read_device(
     file: &str,
     line: usize,
-    keys: &BTreeMap<String, Spanned<Scalar>>,
+    keys: &BTreeMap<String, Node>,
 ) -> Result<PlantDevice, Vec<MapError>> {
     let mut faults = Vec::new();
     let mut fault = |at_line: usize, message: String| faults.push(at(file, at_line, message));
     for (key, value) in keys {
         if !KEYS.contains(&key.as_str()) {
             fault(
-                line_of(value),
+                value.line,
                 format!("{key}: a device takes {}", KEYS.join(", ")),
             );
         }
     }
     let text = |key: &str| match keys.get(key) {
-        Some(Spanned {
-            value: Scalar::Text(text),
-            referenced,
-            ..
-        }) => Some((
-            text.clone(),
-            usize::try_from(referenced.line()).unwrap_or(line),
-        )),
+        Some(Node {
+            value: Tree::Text(text),
+            line,
+        }) => Some((text.clone(), *line)),
         _ => None,
     };
     let name = text("name").map(|(name, _)| name);
@@ -216,15 +215,31 @@ fn read_device(
         "port: any --port form (tcp://10.0.0.5, /dev/ttyUSB0)",
     );
     let slave = needed("slave", "slave: its slave address or unit id");
-    let map = needed("map", "map: its register map (CSV or Home Assistant YAML)");
     let every = needed("every", "every: how often it is read (1s, 500ms)");
     let name = needed("name", "name: how its rows name it");
-    if keys.contains_key("points") {
-        fault(
-            line,
-            format!("{what}: points are given in a map file for now: give map: FILE"),
-        );
-    }
+    // The points' own faults, each with its line.
+    let mut points_fault = None;
+    let points = match (text("map"), keys.get("points")) {
+        (Some((map, _)), None) => Some(Points::Map(map)),
+        (None, Some(given)) => match given_points(file, &what, given) {
+            Ok(points) => Some(Points::Given(points)),
+            Err(error) => {
+                points_fault = Some(error);
+                None
+            }
+        },
+        (Some(_), Some(_)) => {
+            fault(line, format!("{what} has both map: and points:: give one"));
+            None
+        }
+        (None, None) => {
+            fault(
+                line,
+                format!("{what} has no map: give map: FILE (CSV or Home Assistant YAML), or its points:"),
+            );
+            None
+        }
+    };
     let mut number = |key: &str, low: i128, high: i128| -> Option<u32> {
         let (value, at_line) = text(key)?;
         match parse_in_range(&value, low, high, key) {
@@ -275,8 +290,9 @@ fn read_device(
             None
         }
     });
-    let (Some((name, _)), Some((port, _)), Some(slave), Some((map, _)), Some(every), true) =
-        (name, port, slave_id, map, every_time, faults.is_empty())
+    faults.extend(points_fault);
+    let (Some((name, _)), Some((port, _)), Some(slave), Some(points), Some(every), true) =
+        (name, port, slave_id, points, every_time, faults.is_empty())
     else {
         return Err(faults);
     };
@@ -292,67 +308,47 @@ fn read_device(
         },
         name,
         slave: slave as u8,
-        map,
+        points,
         every,
         line,
     })
 }
 
-/// A value of a plant file as YAML gives it: a scalar's text, a list, a mapping, or
-/// nothing; each with where it stands.
-enum Scalar {
-    Text(String),
-    List(Vec<Spanned<Scalar>>),
-    Map(BTreeMap<String, Spanned<Scalar>>),
-    Nothing,
-}
-
-impl<'de> Deserialize<'de> for Scalar {
-    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
-        struct Any;
-        impl<'de> Visitor<'de> for Any {
-            type Value = Scalar;
-            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a value")
-            }
-            fn visit_str<E: serde::de::Error>(self, v: &str) -> Result<Scalar, E> {
-                Ok(Scalar::Text(v.to_string()))
-            }
-            fn visit_i64<E: serde::de::Error>(self, v: i64) -> Result<Scalar, E> {
-                Ok(Scalar::Text(v.to_string()))
-            }
-            fn visit_u64<E: serde::de::Error>(self, v: u64) -> Result<Scalar, E> {
-                Ok(Scalar::Text(v.to_string()))
-            }
-            fn visit_f64<E: serde::de::Error>(self, v: f64) -> Result<Scalar, E> {
-                Ok(Scalar::Text(v.to_string()))
-            }
-            fn visit_bool<E: serde::de::Error>(self, v: bool) -> Result<Scalar, E> {
-                Ok(Scalar::Text(v.to_string()))
-            }
-            fn visit_unit<E: serde::de::Error>(self) -> Result<Scalar, E> {
-                Ok(Scalar::Nothing)
-            }
-            fn visit_none<E: serde::de::Error>(self) -> Result<Scalar, E> {
-                Ok(Scalar::Nothing)
-            }
-            fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Scalar, A::Error> {
-                let mut items = Vec::new();
-                while let Some(item) = seq.next_element::<Spanned<Scalar>>()? {
-                    items.push(item);
+/// A device's `points:`: a list of tables whose keys are the columns of a CSV map.
+fn given_points(file: &str, device: &str, given: &Node) -> Result<Vec<Point>, MapError> {
+    let Tree::List(items) = &given.value else {
+        return Err(at(
+            file,
+            given.line,
+            format!("{device}: points: give a list of points, each its name, ref, type, ..."),
+        ));
+    };
+    let mut rows = Vec::new();
+    for item in items {
+        let Tree::Map(keys) = &item.value else {
+            return Err(at(
+                file,
+                item.line,
+                format!("{device}: a point is its keys: name, ref, type, ..."),
+            ));
+        };
+        let mut fields = Vec::new();
+        for (key, value) in keys {
+            match &value.value {
+                Tree::Text(text) => fields.push((key.as_str(), text.as_str())),
+                Tree::Nothing => {}
+                _ => {
+                    return Err(at(
+                        file,
+                        value.line,
+                        format!("{device}: {key}: give a single value"),
+                    ))
                 }
-                Ok(Scalar::List(items))
-            }
-            fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Scalar, A::Error> {
-                let mut keys = BTreeMap::new();
-                while let Some((key, value)) = map.next_entry::<String, Spanned<Scalar>>()? {
-                    keys.insert(key, value);
-                }
-                Ok(Scalar::Map(keys))
             }
         }
-        deserializer.deserialize_any(Any)
+        rows.push((item.line, fields));
     }
+    super::map::parse_points(file, &rows).map(|map| map.points)
 }
 
 #[cfg(test)]
@@ -382,6 +378,45 @@ mod tests {
             "p.yaml:6: a: every:",
             "p.yaml:7: b has no port",
             "p.yaml:11: colour: a device takes",
+        ] {
+            assert!(error.contains(said), "{said}: {error}");
+        }
+    }
+
+    #[test]
+    fn points_given_in_the_plant_are_read_as_a_map_and_their_faults_told_with_the_rest() {
+        let text = "devices:\n  - name: meter\n    port: sim\n    slave: 17\n    every: 1s\n    points:\n      - name: speed\n        ref: 400108\n        unit: rpm\n      - {name: flow, ref: 400110, scale: 0.1}\n";
+        let devices = parse("p.yaml", text).unwrap();
+        let Points::Given(points) = &devices[0].points else {
+            panic!("{:?}", devices[0].points);
+        };
+        let names: Vec<(&str, u16, f64)> = points
+            .iter()
+            .map(|p| (p.name.as_str(), p.address, p.scale))
+            .collect();
+        assert_eq!(names, [("speed", 107, 1.0), ("flow", 109, 0.1)]);
+        assert_eq!((points[0].line, points[1].line), (7, 10));
+        let text = "devices:\n  - name: a\n    port: sim\n    slave: 1\n    every: 1s\n    map: m.csv\n    points: []\n  - name: b\n    port: sim\n    slave: 999\n    every: 1s\n    points:\n      - name: x\n        ref: 400001\n        type: u17\n";
+        let error = parse("p.yaml", text).unwrap_err().to_string();
+        for said in [
+            "p.yaml:2: a has both map: and points:: give one",
+            "p.yaml:10: b: slave 999",
+            "p.yaml:13: type 'u17': give u16",
+        ] {
+            assert!(error.contains(said), "{said}: {error}");
+        }
+    }
+
+    #[test]
+    fn a_toml_plant_tells_its_faults_with_their_lines() {
+        let text = "# a plant\n[[devices]]\nname = \"a\"\nport = \"sim\"\nslave = 0x11\nmap = \"m.csv\"\nevery = \"1s\"\n\n[[devices]]\nname = \"b\"\nport = \"sim\"\nslave = 1\nmap = \"m.csv\"\nevery = 0\ncolour = \"red\"\n";
+        let parsed = parse_all("p.toml", text);
+        assert_eq!(parsed.devices.len(), 1);
+        assert_eq!((parsed.devices[0].slave, parsed.devices[0].line), (17, 2));
+        let error = parsed.faults.unwrap_err().to_string();
+        for said in [
+            "p.toml:14: b: every 0 would never rest",
+            "p.toml:15: colour: a device takes",
         ] {
             assert!(error.contains(said), "{said}: {error}");
         }
