@@ -13,6 +13,8 @@ use mbtool_core::model::plant::{self, PlantDevice, Points};
 
 /// A device, ready to poll.
 pub(super) struct Device {
+    /// The plant file it is in.
+    pub file: String,
     pub plant: PlantDevice,
     pub points: Vec<Point>,
     pub connector: Connector,
@@ -86,6 +88,7 @@ pub(super) fn load(
             let at = format!("{name}:{}: {}", device.line, device.name);
             match (points, connector) {
                 (Ok(points), Ok(connector)) => devices.push(Device {
+                    file: name.clone(),
                     plant: device,
                     points,
                     connector,
@@ -101,6 +104,7 @@ pub(super) fn load(
             }
         }
     }
+    faults.extend(lines_disagree(&devices));
     if faults.is_empty() && devices.is_empty() {
         faults.push("the plant has no device to poll".to_string());
     }
@@ -108,6 +112,49 @@ pub(super) fn load(
         true => Ok(devices),
         false => Err(Error::Faults(faults)),
     }
+}
+
+/// The devices of one serial line that give it other settings than the first of them:
+/// one port is one line, at one speed and framing.
+fn lines_disagree(devices: &[Device]) -> Vec<String> {
+    use mbtool_core::input::choice::Choice;
+    use mbtool_core::transport::Endpoint;
+    let mut faults = Vec::new();
+    for (index, device) in devices.iter().enumerate() {
+        let Endpoint::Serial(port) = &device.connector.endpoint else {
+            continue;
+        };
+        let first = devices[..index]
+            .iter()
+            .find(|other| other.connector.endpoint == device.connector.endpoint);
+        let Some(first) = first else { continue };
+        let said = |d: &Device| {
+            let line = d.connector.line();
+            format!(
+                "{} {} baud, parity {}, {} data bits, {} stop bits",
+                d.connector.mode,
+                line.baud,
+                line.parity.name(),
+                line.data_bits,
+                line.stop_bits
+            )
+        };
+        if (device.connector.line(), device.connector.mode)
+            != (first.connector.line(), first.connector.mode)
+        {
+            faults.push(format!(
+                "{}:{}: {}: {port} is {} for {} (line {}), and {} here: give the devices of one line the same mode, baud, parity, data_bits and stop_bits",
+                device.file,
+                device.plant.line,
+                device.plant.name,
+                said(first),
+                first.plant.name,
+                first.plant.line,
+                said(device),
+            ));
+        }
+    }
+    faults
 }
 
 /// Whether a file is mbtool's own plant form: TOML, or YAML with a `devices:` key.

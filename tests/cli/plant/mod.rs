@@ -178,6 +178,9 @@ fn every_fault_of_the_plant_is_told_at_once_and_nothing_is_polled() {
         "  - name: b\n    slave: 300\n    map: none.csv\n    every: 1s\n".to_string(),
         device("c", "nope://x", 17, "1s"),
         device("a", &format!("tcp://127.0.0.1:{port}"), 17, "1s"),
+        // One line at two speeds.
+        device("d", "/dev/ttyNOPE0", 1, "1s"),
+        "  - name: e\n    port: /dev/ttyNOPE0\n    baud: 9600\n    slave: 2\n    map: map.csv\n    every: 1s\n".to_string(),
     ]);
     let output = mbtool().args(["poll", &path]).output().unwrap();
     assert_eq!(output.status.code(), Some(2));
@@ -189,6 +192,7 @@ fn every_fault_of_the_plant_is_told_at_once_and_nothing_is_polled() {
         format!("{file}:8: b: slave"),
         format!("{file}:16: the name 'a' is taken already, on line 2"),
         format!("{file}:11: c: 'nope://x'"),
+        format!("{file}:26: e: /dev/ttyNOPE0 is RTU 19200 baud, parity even, 8 data bits, 1 stop bits for d (line 21), and RTU 9600 baud"),
     ] {
         assert!(stderr.contains(&said), "{said}:\n{stderr}");
     }
@@ -293,4 +297,50 @@ fn a_map_or_an_empty_plant_is_refused() {
             "{output:?}"
         );
     }
+}
+
+/// The systemd unit of docs/ is one systemd reads without a fault (where
+/// systemd-analyze is), and its command line one mbtool takes: run on a plant that is not
+/// there, it is told so, not refused as a usage.
+#[test]
+fn the_systemd_unit_of_the_docs_is_sound() {
+    let unit = std::fs::read_to_string("docs/systemd/mbtool-poll.service").unwrap();
+    let binary = assert_cmd::cargo::cargo_bin("mbtool");
+    let command: String = unit
+        .split("ExecStart=")
+        .nth(1)
+        .unwrap()
+        .split("\nEnvironmentFile")
+        .next()
+        .unwrap()
+        .replace("\\\n", " ");
+    let words: Vec<&str> = command.split_whitespace().collect();
+    assert_eq!(words[..2], ["/usr/local/bin/mbtool", "poll"]);
+    let output = mbtool()
+        .args(&words[1..])
+        .env_remove("MBTOOL_MQTT_PASSWORD")
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&output.stderr),
+        "mbtool: cannot read /etc/mbtool/plant.yaml: No such file or directory (os error 2)\n"
+    );
+    if !crate::support::command_exists("systemd-analyze") {
+        return eprintln!("skipped: systemd-analyze is not installed");
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("mbtool-poll.service");
+    let here = unit.replace("/usr/local/bin/mbtool", &binary.display().to_string());
+    std::fs::write(&path, here).unwrap();
+    let verified = Process::new("systemd-analyze")
+        .args(["verify", "--man=no"])
+        .arg(&path)
+        .output()
+        .unwrap();
+    assert!(
+        verified.status.success() && verified.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&verified.stderr)
+    );
 }
