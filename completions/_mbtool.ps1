@@ -1448,6 +1448,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--mqtt-ca', '--mqtt-ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign an mqtts:// broker''s certificate [default: the system''s]')
             [CompletionResult]::new('--buffer', '--buffer', [CompletionResultType]::ParameterName, 'Rows kept for a server that is down; past it the oldest give way, counted')
             [CompletionResult]::new('--metrics', '--metrics', [CompletionResultType]::ParameterName, 'Serve Prometheus metrics on http://ADDR/metrics: values, polls, errors, response times')
+            [CompletionResult]::new('--log', '--log', [CompletionResultType]::ParameterName, 'Also append every row to FILE: CSV for a .csv name (the columns of -o csv), JSON Lines else')
             [CompletionResult]::new('--for', '--for', [CompletionResultType]::ParameterName, 'Stop after DURATION [default: until Ctrl-C or SIGTERM]')
             [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Response timeout: 500ms, 1s [default: 1s]')
             [CompletionResult]::new('--frame-gap', '--frame-gap', [CompletionResultType]::ParameterName, 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none')

@@ -1392,6 +1392,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --mqtt-ca 'The CA certificates (PEM) that sign an mqtts:// broker''s certificate [default: the system''s]'
             cand --buffer 'Rows kept for a server that is down; past it the oldest give way, counted'
             cand --metrics 'Serve Prometheus metrics on http://ADDR/metrics: values, polls, errors, response times'
+            cand --log 'Also append every row to FILE: CSV for a .csv name (the columns of -o csv), JSON Lines else'
             cand --for 'Stop after DURATION [default: until Ctrl-C or SIGTERM]'
             cand --timeout 'Response timeout: 500ms, 1s [default: 1s]'
             cand --frame-gap 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none'

@@ -1672,6 +1672,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l mqtt-user -d 'The
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l mqtt-ca -d 'The CA certificates (PEM) that sign an mqtts:// broker\'s certificate [default: the system\'s]' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l buffer -d 'Rows kept for a server that is down; past it the oldest give way, counted' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l metrics -d 'Serve Prometheus metrics on http://ADDR/metrics: values, polls, errors, response times' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l log -d 'Also append every row to FILE: CSV for a .csv name (the columns of -o csv), JSON Lines else' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l for -d 'Stop after DURATION [default: until Ctrl-C or SIGTERM]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r

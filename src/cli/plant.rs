@@ -108,6 +108,13 @@ pub struct PlantArgs {
     #[arg(long, value_name = "ADDR")]
     pub metrics: Option<String>,
 
+    /// Also append every row to FILE: CSV for a .csv name (the columns of -o csv), JSON Lines else
+    ///
+    /// Given again, to several files. A file that cannot be written (a full disk) is told
+    /// once; its rows are not saved until it can be, and the polling goes on
+    #[arg(long, value_name = "FILE")]
+    pub log: Vec<std::path::PathBuf>,
+
     /// Stop after DURATION [default: until Ctrl-C or SIGTERM]
     #[arg(long = "for", value_name = "DURATION", value_parser = mbtool_core::input::duration::parse_duration)]
     pub duration: Option<std::time::Duration>,

@@ -77,6 +77,17 @@ impl PlantWriter {
         }
     }
 
+    /// The CSV header, for a CSV writer.
+    pub fn header(&self) -> Option<String> {
+        let names: Vec<String> = self.columns.iter().map(|c| csv_field(c)).collect();
+        (self.format == PlantFormat::Csv).then(|| format!("time,device,{},error", names.join(",")))
+    }
+
+    /// Rows appended to a file that has its header already.
+    pub fn continuing(&mut self) {
+        self.header_written = true;
+    }
+
     pub fn row(&mut self, out: &mut dyn Write, row: &PlantRow) -> io::Result<()> {
         match self.format {
             PlantFormat::Lines => {
@@ -94,10 +105,9 @@ impl PlantWriter {
                 writeln!(out, "{line}")
             }
             PlantFormat::Csv => {
-                if !self.header_written {
+                if let Some(header) = self.header().filter(|_| !self.header_written) {
                     self.header_written = true;
-                    let names: Vec<String> = self.columns.iter().map(|c| csv_field(c)).collect();
-                    writeln!(out, "time,device,{},error", names.join(","))?;
+                    writeln!(out, "{header}")?;
                 }
                 let cells: Vec<String> = self
                     .columns

@@ -250,6 +250,8 @@ pub struct Plant {
     pub metrics: Option<String>,
     /// The MQTT broker every value is published to.
     pub mqtt: Option<MqttSettings>,
+    /// Files every row is appended to: CSV for a `.csv` name, JSON Lines else.
+    pub logs: Vec<PathBuf>,
 }
 
 #[derive(Clone, Debug)]
@@ -357,6 +359,7 @@ pub fn of(command: Command) -> Result<Job, String> {
             };
             Job::Plant(Plant {
                 mqtt,
+                logs: a.log,
                 influx: a.format.output.as_deref() == Some(INFLUX),
                 influx_server,
                 buffer: a.buffer as usize,

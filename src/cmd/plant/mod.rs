@@ -23,7 +23,7 @@ use mbtool_core::master::plant::{keep_read, Outcome, Polled, Scheduled};
 use mbtool_core::model::map::Point;
 
 use load::{load, Device};
-use sinks::{write_rows, Published, Sinks};
+use sinks::{write_rows, LogFile, Published, Sinks};
 use worker::{Worker, Write};
 
 pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
@@ -35,6 +35,11 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
         }
     }
     let format = PlantFormat::of(settings.output.format, job.influx);
+    let mut logs = job
+        .logs
+        .iter()
+        .map(|path| LogFile::open(path, &columns))
+        .collect::<Result<Vec<_>>>()?;
     let mut screen = PlantWriter::new(format, columns);
     let named: Vec<(&str, &[Point])> = devices
         .iter()
@@ -138,6 +143,7 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
             mqtt: mqtt
                 .as_mut()
                 .map(|(buffer, _, published)| (&*buffer, published)),
+            logs: &mut logs,
         };
         let mut tallies = vec![Tally::default(); devices.len()];
         let written = write_rows(&devices, polls, &mut sinks, metrics.as_ref(), &mut tallies);
@@ -161,10 +167,16 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
                 mbtool::note!("mbtool: MQTT: {}", delivered.summary(job.buffer, "message"));
             }
         }
+        for said in logs.iter().filter_map(LogFile::summary) {
+            mbtool::note!("mbtool: {said}");
+        }
         written?;
-        Ok(match stop.flag.load(Ordering::SeqCst) {
-            true => stop.exit_status(),
-            false => 0,
+        // Rows that a --log file could not take make it an I/O failure.
+        let lost = logs.iter().any(|log| log.lost > 0);
+        Ok(match (stop.flag.load(Ordering::SeqCst), lost) {
+            (true, _) => stop.exit_status(),
+            (false, true) => 1,
+            (false, false) => 0,
         })
     })
 }

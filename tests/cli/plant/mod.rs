@@ -344,3 +344,73 @@ fn the_systemd_unit_of_the_docs_is_sound() {
         String::from_utf8_lossy(&verified.stderr)
     );
 }
+
+/// `--log` appends the rows to several files at once, CSV and JSON Lines, the same rows as
+/// standard output; a CSV appended to keeps its columns; a file that cannot be written
+/// (a full disk) is told once, its rows counted, and the polling goes on.
+#[test]
+fn rows_are_logged_to_several_files_and_a_full_disk_stops_no_poll() {
+    let (dir, path) = plant(&[device("pump", "sim", 17, "100ms")]);
+    let csv = dir.path().join("rows.csv");
+    let jsonl = dir.path().join("rows.jsonl");
+    let logs = [
+        "--log",
+        csv.to_str().unwrap(),
+        "--log",
+        jsonl.to_str().unwrap(),
+    ];
+    let (code, rows, stderr) = json_rows(&[&[path.as_str(), "--for", "450ms"][..], &logs].concat());
+    assert_eq!(code, 0, "{stderr}");
+    let logged: Vec<serde_json::Value> = std::fs::read_to_string(&jsonl)
+        .unwrap()
+        .lines()
+        .map(|line| serde_json::from_str(line).unwrap())
+        .collect();
+    assert_eq!(logged, rows);
+    let (code, more, _) = json_rows(&[&[path.as_str(), "--for", "250ms"][..], &logs].concat());
+    assert_eq!(code, 0);
+    let csv_text = std::fs::read_to_string(&csv).unwrap();
+    let lines: Vec<&str> = csv_text.lines().collect();
+    assert_eq!(lines[0], "time,device,speed,level,flow,error");
+    assert_eq!(lines.len(), 1 + rows.len() + more.len(), "{csv_text}");
+    for (line, row) in lines[1..].iter().zip(rows.iter().chain(&more)) {
+        assert_eq!(
+            *line,
+            format!("{},pump,555,0,100,", row["time"].as_str().unwrap())
+        );
+    }
+    // A CSV of other columns is not appended to.
+    std::fs::write(&csv, "time,device,volts,error\n").unwrap();
+    let output = mbtool()
+        .args(["poll", &path, "--log"])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("has other columns (time,device,volts,error) than this plant's (time,device,speed,level,flow,error): give a new file to --log"));
+    if !std::path::Path::new("/dev/full").exists() {
+        return eprintln!("skipped: no /dev/full on this system");
+    }
+    let (code, rows, stderr) = json_rows(&[
+        &path,
+        "--for",
+        "450ms",
+        "--log",
+        "/dev/full",
+        "--log",
+        jsonl.to_str().unwrap(),
+    ]);
+    assert!(rows.len() >= 4, "{stderr}");
+    assert_eq!(code, 1, "{stderr}");
+    assert_eq!(
+        stderr
+            .matches("cannot write /dev/full: No space left on device")
+            .count(),
+        1,
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains(&format!("mbtool: /dev/full: {} rows not saved", rows.len())),
+        "{stderr}"
+    );
+}
