@@ -2155,7 +2155,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__poll)
-            opts="-v -o -h -V --influx --mqtt --mqtt-prefix --mqtt-retain --mqtt-discovery --mqtt-user --mqtt-ca --buffer --metrics --log --for --timeout --frame-gap --max-per-request --verbose --json --output --help --version"
+            opts="-v -o -h -V --influx --mqtt --mqtt-prefix --mqtt-retain --mqtt-discovery --mqtt-user --mqtt-ca --buffer --metrics --log --for --timeout --frame-gap --retries --max-per-request --verbose --json --output --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2206,6 +2206,10 @@ _mbtool() {
                     return 0
                     ;;
                 --frame-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --retries)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

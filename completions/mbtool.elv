@@ -1396,6 +1396,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --for 'Stop after DURATION [default: until Ctrl-C or SIGTERM]'
             cand --timeout 'Response timeout: 500ms, 1s [default: 1s]'
             cand --frame-gap 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none'
+            cand --retries 'Retries after a timeout or a bad answer'
             cand --max-per-request 'Split reads and writes into requests of at most N coils or registers'
             cand -o 'Output format [default: table]'
             cand --output 'Output format [default: table]'

@@ -1676,6 +1676,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l log -d 'Also appe
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l for -d 'Stop after DURATION [default: until Ctrl-C or SIGTERM]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l retries -d 'Retries after a timeout or a bad answer' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand poll" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'

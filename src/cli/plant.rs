@@ -3,7 +3,7 @@
 use clap::Args;
 
 use super::options::{left_out::*, more_in_long_help};
-use super::options::{ExchangeArgs, FormatArgs, FormatOrFile, SplitArgs, TraceArgs};
+use super::options::{ExchangeArgs, FormatArgs, FormatOrFile, RetriesArgs, SplitArgs, TraceArgs};
 use super::taken::holds;
 
 pub(super) const PLANT_ABOUT: &str = "\
@@ -122,6 +122,8 @@ pub struct PlantArgs {
     #[command(flatten)]
     pub exchange: ExchangeArgs,
     #[command(flatten)]
+    pub retries: RetriesArgs,
+    #[command(flatten)]
     pub split: SplitArgs,
     #[command(flatten)]
     pub trace: TraceArgs,
@@ -129,4 +131,4 @@ pub struct PlantArgs {
     pub format: FormatArgs,
 }
 
-holds!(PlantArgs: exchange, split, trace, format);
+holds!(PlantArgs: exchange, retries, split, trace, format);

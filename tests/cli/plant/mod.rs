@@ -1,6 +1,7 @@
 //! `mbtool poll PLANT`: many devices kept read, each at its rate, against `serve` over
 //! TCP and on a pseudo-terminal line, with a device that is not there.
 
+mod faults;
 mod influx;
 mod mqtt;
 mod prometheus;
