@@ -4,6 +4,7 @@
 mod faults;
 mod influx;
 mod mqtt;
+mod peer;
 mod prometheus;
 
 use std::process::{Command as Process, Stdio};
