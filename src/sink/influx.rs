@@ -12,7 +12,7 @@ use super::{Buffer, Delivered};
 const BATCH: usize = 5000;
 
 /// How long a request may take.
-const REQUEST_TIMEOUT: Duration = Duration::from_secs(5);
+const REQUEST_TIMEOUT: Duration = Duration::from_secs(2);
 
 /// The longest wait before asking a server that failed again.
 const LONGEST_WAIT: Duration = Duration::from_secs(10);
@@ -95,7 +95,13 @@ pub fn send(server: &InfluxServer, buffer: &Buffer<String>, tell: impl Fn(&str))
             continue;
         }
         let body = rows.join("\n") + "\n";
-        let mut request = agent.post(url);
+        // At the end, no request outlasts the last try.
+        let left = closed_at.map(|at| LAST_TRY.saturating_sub(at.elapsed()));
+        let mut request = agent
+            .post(url)
+            .config()
+            .timeout_global(Some(left.unwrap_or(REQUEST_TIMEOUT).max(Duration::from_millis(100))))
+            .build();
         if let Some(token) = &server.token {
             request = request.header("Authorization", format!("Token {token}"));
         }
@@ -129,7 +135,10 @@ pub fn send(server: &InfluxServer, buffer: &Buffer<String>, tell: impl Fn(&str))
                 if closed_at.is_some_and(|at| at.elapsed() >= LAST_TRY) {
                     break;
                 }
-                std::thread::sleep(wait);
+                match closed_at {
+                    Some(at) => std::thread::sleep(wait.min(LAST_TRY.saturating_sub(at.elapsed()))),
+                    None => buffer.rest(wait),
+                }
                 // At the end the rows left are tried again soon, for a few seconds.
                 let longest = match closed_at {
                     Some(_) => Duration::from_millis(500),

@@ -81,6 +81,15 @@ impl<T: Clone> Buffer<T> {
         (rows, waiting.closing)
     }
 
+    /// Waits up to `time`, or until the buffer is closing.
+    fn rest(&self, time: Duration) {
+        let (lock, ready) = &*self.waiting;
+        let waiting = lock.lock().unwrap_or_else(|p| p.into_inner());
+        if !waiting.closing {
+            let _ = ready.wait_timeout_while(waiting, time, |w| !w.closing);
+        }
+    }
+
     /// The `count` oldest rows were sent.
     fn sent(&self, count: usize) {
         let (lock, _) = &*self.waiting;

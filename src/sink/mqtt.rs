@@ -288,6 +288,9 @@ pub struct Broker {
 /// How long messages left at the end are tried for, with a broker that is down.
 const LAST_TRY: Duration = Duration::from_secs(3);
 
+/// How long a connection to the broker may take.
+const CONNECTION_TIMEOUT: Duration = Duration::from_secs(2);
+
 /// Messages the client holds at once before publishing waits.
 const CLIENT_QUEUE: usize = 1000;
 
@@ -308,7 +311,11 @@ impl Broker {
                 tls_config(settings)?,
             ))));
         }
-        let (client, connection) = Client::new(options, CLIENT_QUEUE);
+        let (client, mut connection) = Client::new(options, CLIENT_QUEUE);
+        // A broker that does not answer is given up on soon, and asked again.
+        let mut network = rumqttc::NetworkOptions::new();
+        network.set_connection_timeout(CONNECTION_TIMEOUT.as_secs());
+        connection.eventloop.set_network_options(network);
         Ok(Broker {
             client,
             connection,
@@ -370,7 +377,11 @@ impl Broker {
                             told_down = true;
                             tell(&refusal(&error));
                         }
-                        std::thread::sleep(wait);
+                        // In steps, so that the end is not held up by a broker away.
+                        let until = Instant::now() + wait;
+                        while Instant::now() < until && !state.ending.load(Ordering::SeqCst) {
+                            std::thread::sleep(Duration::from_millis(50));
+                        }
                         wait = (wait * 2).min(Duration::from_secs(10));
                     }
                 }

@@ -5,7 +5,7 @@ mod load;
 mod sinks;
 mod worker;
 
-use std::sync::atomic::Ordering;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{mpsc, Arc};
 use std::time::{Duration, Instant, SystemTime};
 
@@ -65,7 +65,18 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
     // Where a write to a device goes: its port's worker, and its index there.
     let mut writers = Vec::new();
     let mut reaches = vec![(0, 0); devices.len()];
+    // Set when polling ends, by a signal or at the end of --for.
+    let ending = Arc::new(AtomicBool::new(false));
     std::thread::scope(|scope| -> Result<u8> {
+        scope.spawn(|| {
+            while !ending.load(Ordering::SeqCst) {
+                let over = deadline.is_some_and(|d| Instant::now() >= d);
+                if over || stop.flag.load(Ordering::SeqCst) {
+                    ending.store(true, Ordering::SeqCst);
+                }
+                std::thread::sleep(Duration::from_millis(20));
+            }
+        });
         for (port, (_, members)) in ports.iter().enumerate() {
             let (write, writes) = mpsc::channel();
             writers.push(write);
@@ -83,8 +94,7 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
             let mut worker = Worker {
                 connector: &devices[members[0]].connector,
                 verbose: settings.output.verbose,
-                stop: &stop.flag,
-                deadline,
+                ending: Arc::clone(&ending),
                 members,
                 polls: polled.clone(),
                 writes,
@@ -152,17 +162,23 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
         if written.is_err() {
             stop.flag.store(true, Ordering::SeqCst);
         }
+        ending.store(true, Ordering::SeqCst);
         for (device, tally) in devices.iter().zip(&tallies) {
             mbtool::note!("mbtool: {}: {}", device.plant.name, tally.summary());
         }
-        if let Some((buffer, sender)) = influx {
+        // Both sinks given their last try at once.
+        if let Some((buffer, _)) = &influx {
             buffer.close();
+        }
+        if let Some((buffer, _, _)) = &mqtt {
+            buffer.close();
+        }
+        if let Some((_, sender)) = influx {
             if let Ok(delivered) = sender.join() {
                 mbtool::note!("mbtool: InfluxDB: {}", delivered.summary(job.buffer, "row"));
             }
         }
-        if let Some((buffer, sender, _)) = mqtt {
-            buffer.close();
+        if let Some((_, sender, _)) = mqtt {
             if let Ok(delivered) = sender.join() {
                 mbtool::note!("mbtool: MQTT: {}", delivered.summary(job.buffer, "message"));
             }

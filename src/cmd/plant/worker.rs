@@ -2,6 +2,7 @@
 //! write handed over), and hands each poll to the writer of rows.
 
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 use std::sync::mpsc::{self, RecvTimeoutError};
 use std::time::{Duration, Instant, SystemTime};
 
@@ -21,8 +22,8 @@ pub(super) struct Write {
 pub(super) struct Worker<'a> {
     pub connector: &'a Connector,
     pub verbose: bool,
-    pub stop: &'a AtomicBool,
-    pub deadline: Option<Instant>,
+    /// Set when polling ends (a signal, --for): a wait for an answer over TCP ends too.
+    pub ending: Arc<AtomicBool>,
     /// Each device's index in the plant, by its index on the port.
     pub members: &'a [usize],
     pub polls: mpsc::Sender<(usize, Polled, SystemTime)>,
@@ -40,6 +41,7 @@ impl Port for Worker<'_> {
     fn connect(&mut self) -> anyhow::Result<Master> {
         let connection = self.connector.connect()?;
         let mut master = connection.master;
+        master.stop_on(Arc::clone(&self.ending));
         if self.verbose {
             master.trace(super::super::shared::tracer(self.connector.mode));
         }
@@ -50,7 +52,11 @@ impl Port for Worker<'_> {
         let until = Instant::now() + time;
         loop {
             let now = Instant::now();
-            if self.stop.load(Ordering::SeqCst) || self.deadline.is_some_and(|d| now >= d) {
+            if self.ending.load(Ordering::SeqCst) {
+                // A write handed over that will not be sent now is told.
+                for write in self.writes.try_iter() {
+                    mbtool::note!("mbtool: {} not written: polling ended first", write.said);
+                }
                 return Wake::Stop;
             }
             if now >= until {

@@ -145,6 +145,10 @@ pub enum Refused {
     /// Holes to read around, as in a range asked for by address: the run is split in
     /// halves down to single points, and the points refused alone are `missing`.
     Around,
+    /// As `Error`, and a device silent to the read's first request is taken as away:
+    /// its other requests are not sent, their points failing with the same timeout (a
+    /// plant's poll, where a device that is not there must not hold its line for long).
+    ErrorAndAway,
 }
 
 /// Reads `points` in the requests [`groups`] gives; `refused` says what a run the device
@@ -203,6 +207,35 @@ pub fn read_points(
             && !answered.contains(&group.slave)
         {
             answered.push(group.slave);
+        }
+        if let Err(RunError::Master(MasterError::Timeout { slave, timeout })) = &outcome {
+            if refused == Refused::ErrorAndAway && !answered.contains(slave) {
+                let mut away = group.points;
+                pending.retain(|other| {
+                    let same = other.slave == *slave;
+                    if same {
+                        away.extend(&other.points);
+                    }
+                    !same
+                });
+                unanswered.retain(|(other, _)| {
+                    let same = other.slave == *slave;
+                    if same {
+                        away.extend(&other.points);
+                    }
+                    !same
+                });
+                away.sort_unstable();
+                let error = MasterError::Timeout {
+                    slave: *slave,
+                    timeout: *timeout,
+                };
+                read.failed.push(PointFailure {
+                    points: away,
+                    error: RunError::Master(error),
+                });
+                continue;
+            }
         }
         match outcome {
             Ok(response) => {
