@@ -12,7 +12,7 @@ use super::{Buffer, Delivered};
 const BATCH: usize = 5000;
 
 /// How long a request may take.
-const REQUEST_TIMEOUT: Duration = Duration::from_secs(2);
+const REQUEST_TIMEOUT: Duration = Duration::from_secs(5);
 
 /// The longest wait before asking a server that failed again.
 const LONGEST_WAIT: Duration = Duration::from_secs(10);
