@@ -100,7 +100,10 @@ pub fn send(server: &InfluxServer, buffer: &Buffer<String>, tell: impl Fn(&str))
         let mut request = agent
             .post(url)
             .config()
-            .timeout_global(Some(left.unwrap_or(REQUEST_TIMEOUT).max(Duration::from_millis(100))))
+            .timeout_global(Some(
+                left.unwrap_or(REQUEST_TIMEOUT)
+                    .max(Duration::from_millis(100)),
+            ))
             .build();
         if let Some(token) = &server.token {
             request = request.header("Authorization", format!("Token {token}"));

@@ -19,6 +19,7 @@ use serde_json::{json, Map, Value as Json};
 
 use super::{Buffer, Delivered};
 use mbtool_core::model::map::{Kind, Point};
+use mbtool_core::model::shown::States;
 
 /// How the broker is reached and what is published.
 #[derive(Clone, Debug, PartialEq)]
@@ -150,6 +151,43 @@ impl Topics {
             })
     }
 
+    /// Each topic that two things of the plant would share (two point names that differ
+    /// only in `/`, `+` or `#`, a point named `available`, ...), told with what shares it:
+    /// a value published there, or a write asked, would be taken for the other's.
+    pub fn clashes(&self, devices: &[(&str, &[Point])]) -> Vec<String> {
+        let mut owners: Vec<(String, String)> = vec![(self.status(), "mbtool's status".into())];
+        for (index, (name, points)) in devices.iter().enumerate() {
+            owners.push((self.available(index), format!("{name}'s availability")));
+            for (p, point) in points.iter().enumerate() {
+                let value = self.value(index, p);
+                owners.push((
+                    format!("{value}/set"),
+                    format!("{name}'s {} writes", point.name),
+                ));
+                owners.push((value, format!("{name}'s {}", point.name)));
+            }
+        }
+        let mut clashes: Vec<(&str, String)> = Vec::new();
+        for (i, (topic, owner)) in owners.iter().enumerate() {
+            if let Some((_, first)) = owners[..i].iter().find(|(t, _)| t == topic) {
+                clashes.push((topic, format!(
+                    "{first} and {owner} are both the MQTT topic {topic}: give names that differ in more than /, + and #"
+                )));
+            }
+        }
+        // Two values of one topic have one `set` topic too: told once.
+        let told: Vec<&str> = clashes.iter().map(|(topic, _)| *topic).collect();
+        clashes
+            .into_iter()
+            .filter(|(topic, _)| {
+                !topic
+                    .strip_suffix("/set")
+                    .is_some_and(|v| told.contains(&v))
+            })
+            .map(|(_, said)| said)
+            .collect()
+    }
+
     /// The subscriptions that take every `.../set` topic of the plant's writable points.
     pub fn set_filters(&self) -> Vec<String> {
         let mut depths: Vec<usize> = self
@@ -188,22 +226,26 @@ impl Topics {
                     json!({"identifiers": [id], "name": name, "manufacturer": "mbtool"}),
                 );
                 let command = format!("{state}/set");
+                // An entity of Home Assistant's that is on or off is published as `on` and
+                // `off`; a bit as `1` and `0`.
+                let on_off = point
+                    .shown
+                    .as_ref()
+                    .is_some_and(|shown| matches!(shown.states, Some(States::OnOff { .. })));
+                let cover = point
+                    .shown
+                    .as_ref()
+                    .is_some_and(|shown| matches!(shown.states, Some(States::Cover { .. })));
                 let component = match (point.kind, point.writable) {
-                    (Kind::Bool, writable) => {
-                        for key in ["payload_on", "state_on"] {
-                            config.insert(key.into(), json!("1"));
-                        }
-                        for key in ["payload_off", "state_off"] {
-                            config.insert(key.into(), json!("0"));
-                        }
+                    _ if cover => "sensor",
+                    (kind, writable) if on_off || kind == Kind::Bool => {
+                        let (on, off) = if on_off { ("on", "off") } else { ("1", "0") };
+                        config.insert("payload_on".into(), json!(on));
+                        config.insert("payload_off".into(), json!(off));
                         if writable {
                             config.insert("command_topic".into(), json!(command));
-                            config.remove("state_on");
-                            config.remove("state_off");
                             "switch"
                         } else {
-                            config.remove("state_on");
-                            config.remove("state_off");
                             "binary_sensor"
                         }
                     }
@@ -226,7 +268,7 @@ impl Topics {
                         unit(&mut config, point);
                         "sensor"
                     }
-                    (Kind::Text(_) | Kind::Packed(_), _) => "sensor",
+                    (Kind::Bool | Kind::Text(_) | Kind::Packed(_), _) => "sensor",
                 };
                 messages.push(Message {
                     topic: format!("{discovery}/{component}/{unique}/config"),
@@ -255,14 +297,18 @@ fn step(point: &Point) -> f64 {
     }
 }
 
-/// A name as Home Assistant's object ids take it: letters, digits and `_`.
+/// A name as Home Assistant's object ids take it (letters, digits, `-` and `_`), one id a
+/// name: letters, digits and `-` as they are, any other byte as `_` and its hex (`_5f` for
+/// `_`, `_2f` for `/`).
 fn object_id(name: &str) -> String {
-    name.chars()
-        .map(|c| match c.is_ascii_alphanumeric() {
-            true => c.to_ascii_lowercase(),
-            false => '_',
-        })
-        .collect()
+    let mut id = String::with_capacity(name.len());
+    for byte in name.bytes() {
+        match byte.is_ascii_alphanumeric() || byte == b'-' {
+            true => id.push(char::from(byte)),
+            false => id.push_str(&format!("_{byte:02x}")),
+        }
+    }
+    id
 }
 
 /// What the connection thread and the sending thread share.
@@ -531,6 +577,35 @@ mod tests {
         assert!(parse_url("mqtt://user:secret@broker").is_err());
         assert!(parse_url("mqtt://broker:0").is_err());
         assert!(parse_url("mqtt://").is_err());
+    }
+
+    #[test]
+    fn names_that_would_share_a_topic_or_an_object_id_are_told() {
+        let point = |name: &str| {
+            let text = format!("name,ref\n\"{name}\",400001\n");
+            mbtool_core::model::map::parse_csv("m.csv", &text).map(|map| map.points[0].clone())
+        };
+        let (Ok(slash), Ok(under), Ok(x)) = (point("a/b"), point("a_b"), point("x")) else {
+            panic!("the maps are good");
+        };
+        let one = [slash, under];
+        let two = [x.clone()];
+        let three = [x];
+        let devices: [(&str, &[Point]); 3] = [("p-1", &one), ("p+1", &two), ("p_1", &three)];
+        let clashes = Topics::new("m", &devices).clashes(&devices);
+        assert_eq!(
+            clashes,
+            [
+                "p-1's a/b and p-1's a_b are both the MQTT topic m/p-1/a_b: give names that differ in more than /, + and #",
+                "p+1's availability and p_1's availability are both the MQTT topic m/p_1/available: give names that differ in more than /, + and #",
+                "p+1's x and p_1's x are both the MQTT topic m/p_1/x: give names that differ in more than /, + and #",
+            ]
+        );
+        let ids: Vec<String> = ["p-1", "p_1", "p 1", "p/1", "P-1"]
+            .iter()
+            .map(|n| object_id(n))
+            .collect();
+        assert_eq!(ids, ["p-1", "p_5f1", "p_201", "p_2f1", "P-1"]);
     }
 
     #[test]

@@ -48,6 +48,10 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
     let broker = match &job.mqtt {
         Some(mqtt) => {
             let topics = Topics::new(&mqtt.prefix, &named);
+            let clashes = topics.clashes(&named);
+            if !clashes.is_empty() {
+                return Err(Error::Faults(clashes).into());
+            }
             let broker = Broker::new(mqtt, &topics.status()).map_err(Error::usage)?;
             Some((broker, topics))
         }

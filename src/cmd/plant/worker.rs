@@ -2,8 +2,8 @@
 //! write handed over), and hands each poll to the writer of rows.
 
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
 use std::sync::mpsc::{self, RecvTimeoutError};
+use std::sync::Arc;
 use std::time::{Duration, Instant, SystemTime};
 
 use mbtool::connection::Connector;

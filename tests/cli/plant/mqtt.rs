@@ -551,3 +551,91 @@ fn a_broker_over_tls_with_a_password_is_published_to_and_a_wrong_password_is_tol
         "{stderr}"
     );
 }
+
+/// A Home Assistant configuration's binary sensors and switches (a coil, and one kept in a
+/// register with its own commands) are announced as such, published as `on` and `off` as
+/// their discovery says, and a switch's `set` writes its command.
+#[test]
+fn entities_of_a_home_assistant_configuration_are_announced_as_what_they_are() {
+    let Some(broker) = Broker::start() else {
+        return eprintln!("skipped: mosquitto is not installed");
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("data.txt");
+    std::fs::write(
+        &data,
+        "400001-400005 = 0\n400006 = 1\n400007 = 3\n400008-400010 = 0\n000001-000008 = on\n",
+    )
+    .unwrap();
+    let (_server, _, port) = serve_tcp(&["--data", data.to_str().unwrap()]);
+    let config = dir.path().join("configuration.yaml");
+    std::fs::write(
+        &config,
+        format!(
+            "modbus:\n  - name: hub\n    type: tcp\n    host: 127.0.0.1\n    port: {port}\n    binary_sensors:\n      - name: Alarm\n        address: 5\n        input_type: holding\n        slave: 17\n    switches:\n      - name: Valve\n        address: 6\n        write_type: holding\n        command_on: 7\n        command_off: 3\n        slave: 17\n        scan_interval: 1\n      - name: Pump\n        address: 0\n        write_type: coil\n        slave: 17\n        scan_interval: 1\n"
+        ),
+    )
+    .unwrap();
+    let subscriber = broker.subscribe("mbtool/#");
+    let url = broker.url();
+    let poll = poll_in_background(&[
+        config.to_str().unwrap(),
+        "--for",
+        "4s",
+        "--mqtt",
+        &url,
+        "--mqtt-discovery",
+    ]);
+    assert!(
+        subscriber.wait_for("mbtool/hub/17/1s/Valve off", Duration::from_secs(3)),
+        "{:?}",
+        subscriber.lines()
+    );
+    broker.publish("mbtool/hub/17/1s/Valve/set", "on");
+    assert!(
+        subscriber.wait_for("mbtool/hub/17/1s/Valve on", Duration::from_secs(3)),
+        "{:?}",
+        subscriber.lines()
+    );
+    let output = poll.wait_with_output().unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr
+            .contains("mbtool: hub/17/1s: Valve=on (asked on mbtool/hub/17/1s/Valve/set) written"),
+        "{stderr}"
+    );
+    let lines = subscriber.lines();
+    for line in ["mbtool/hub/17/15s/Alarm on", "mbtool/hub/17/1s/Pump on"] {
+        assert!(lines.iter().any(|l| l == line), "{line}: {lines:?}");
+    }
+    let discovery = broker.retained("homeassistant/#");
+    let config = |component: &str, name: &str| -> serde_json::Value {
+        let found = discovery
+            .iter()
+            .find(|line| {
+                line.starts_with(&format!("homeassistant/{component}/"))
+                    && line.contains(&format!("\"name\":\"{name}\""))
+            })
+            .unwrap_or_else(|| panic!("no {component} {name} in {discovery:?}"));
+        serde_json::from_str(found.split_once(' ').unwrap().1).unwrap()
+    };
+    let alarm = config("binary_sensor", "Alarm");
+    assert_eq!(
+        (alarm["payload_on"].as_str(), alarm["payload_off"].as_str()),
+        (Some("on"), Some("off"))
+    );
+    for name in ["Valve", "Pump"] {
+        let switch = config("switch", name);
+        assert_eq!(
+            (
+                switch["payload_on"].as_str(),
+                switch["payload_off"].as_str()
+            ),
+            (Some("on"), Some("off")),
+            "{switch}"
+        );
+        assert!(switch["command_topic"]
+            .as_str()
+            .is_some_and(|t| t.ends_with(&format!("{name}/set"))));
+    }
+}

@@ -129,7 +129,13 @@ pub fn keep_read<P: Port>(port: &mut P, devices: &[Scheduled], max: Option<u16>)
             None => Outcome::Down(backoff.last_error.clone()),
             Some(current) => {
                 let asked = &devices[device];
-                match read_points(current, &points[device], asked.slave, max, Refused::ErrorAndAway) {
+                match read_points(
+                    current,
+                    &points[device],
+                    asked.slave,
+                    max,
+                    Refused::ErrorAndAway,
+                ) {
                     Ok(read) => Outcome::Read(read),
                     // Polling ends (see `Master::stop_on`): a poll cut short is no poll.
                     Err(RunError::Master(MasterError::Interrupted)) => return,
