@@ -28,6 +28,7 @@ pub mod left_out {
     pub const ROLES: &str = "Roles (tls://)";
     pub const FAULTS: &str = "Faults";
     pub const IDENTIFICATION: &str = "Identification";
+    pub const MQTT: &str = "MQTT";
 }
 
 /// A group of options, and the headings of those of its options that `-h` leaves out.

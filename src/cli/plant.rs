@@ -50,7 +50,7 @@ broker (and takes writes from its .../set topics), and --metrics serves them to 
 Prometheus; a server that is down never holds back the polling.";
 
 #[derive(Clone, Debug, Args)]
-#[command(after_help = more_in_long_help(&[&[CONNECTION, ADDRESSES]]))]
+#[command(after_help = more_in_long_help(&[&[CONNECTION, ADDRESSES, MQTT]]))]
 #[command(mut_arg("output", |arg| arg.value_parser(FormatOrFile { plant: true })))]
 pub struct PlantArgs {
     /// Plant files (or Home Assistant configurations): devices, each a port, a slave, a map and a rate
@@ -80,24 +80,31 @@ pub struct PlantArgs {
         long,
         value_name = "PREFIX",
         default_value = "mbtool",
-        requires = "mqtt"
+        requires = "mqtt",
+        help_heading = MQTT, hide_short_help = true
     )]
     pub mqtt_prefix: String,
 
     /// Publish the values retained, so that a new subscriber has the last at once
-    #[arg(long, requires = "mqtt")]
+    #[arg(long, requires = "mqtt", help_heading = MQTT, hide_short_help = true)]
     pub mqtt_retain: bool,
 
     /// Announce every point to Home Assistant (MQTT discovery), under PREFIX
-    #[arg(long, value_name = "PREFIX", num_args = 0..=1, default_missing_value = "homeassistant", requires = "mqtt")]
+    #[arg(long, value_name = "PREFIX", num_args = 0..=1, default_missing_value = "homeassistant", requires = "mqtt", help_heading = MQTT, hide_short_help = true)]
     pub mqtt_discovery: Option<String>,
 
     /// The broker's user; the password is read from MBTOOL_MQTT_PASSWORD
-    #[arg(long, value_name = "USER", env = "MBTOOL_MQTT_USER", requires = "mqtt")]
+    #[arg(
+        long,
+        value_name = "USER",
+        env = "MBTOOL_MQTT_USER",
+        requires = "mqtt",
+        help_heading = MQTT, hide_short_help = true
+    )]
     pub mqtt_user: Option<String>,
 
     /// The CA certificates (PEM) that sign an mqtts:// broker's certificate [default: the system's]
-    #[arg(long, value_name = "FILE", requires = "mqtt")]
+    #[arg(long, value_name = "FILE", requires = "mqtt", help_heading = MQTT, hide_short_help = true)]
     pub mqtt_ca: Option<std::path::PathBuf>,
 
     /// Rows kept for a server that is down; past it the oldest give way, counted

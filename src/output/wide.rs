@@ -17,6 +17,9 @@ pub struct WideRows {
     header_written: bool,
     /// The values of the last poll that read, to mark what changed since.
     previous: Option<Vec<Option<String>>>,
+    /// Each column's width in the table: its name's or its first value's, whichever is
+    /// wider, and wider still where a later value needs it.
+    widths: Vec<usize>,
 }
 
 impl WideRows {
@@ -26,6 +29,7 @@ impl WideRows {
             colour,
             header_written: false,
             previous: None,
+            widths: Vec::new(),
         }
     }
 
@@ -49,7 +53,7 @@ impl WideRows {
         values: Vec<Option<String>>,
         error: &str,
     ) -> io::Result<()> {
-        self.header(out, format)?;
+        self.header(out, format, &values)?;
         match format {
             Format::Table => {
                 let changed: Vec<bool> = match &self.previous {
@@ -88,7 +92,7 @@ impl WideRows {
         time: &str,
         error: &str,
     ) -> io::Result<()> {
-        self.header(out, format)?;
+        self.header(out, format, &[])?;
         match format {
             Format::Table => {
                 let cells = vec![("-".to_string(), false); self.columns.len()];
@@ -103,13 +107,30 @@ impl WideRows {
         }
     }
 
-    fn header(&mut self, out: &mut dyn Write, format: Format) -> io::Result<()> {
+    /// The header, before the first row (whose `first` values set the columns' widths).
+    fn header(
+        &mut self,
+        out: &mut dyn Write,
+        format: Format,
+        first: &[Option<String>],
+    ) -> io::Result<()> {
         if self.header_written {
             return Ok(());
         }
         self.header_written = true;
         match format {
             Format::Table => {
+                self.widths = self
+                    .columns
+                    .iter()
+                    .enumerate()
+                    .map(|(i, column)| {
+                        let value = first.get(i).and_then(Option::as_deref).unwrap_or("");
+                        // A changed value may carry a mark.
+                        let value = value.chars().count() + 1;
+                        column.chars().count().max(value).max(MIN_WIDTH)
+                    })
+                    .collect();
                 let names: Vec<(String, bool)> =
                     self.columns.iter().map(|c| (c.clone(), false)).collect();
                 self.table_line(out, "time", &names)
@@ -124,24 +145,24 @@ impl WideRows {
     /// A line of the table: the time of day, then each cell in its column, a changed
     /// value in yellow (or marked `*` without colour).
     fn table_line(
-        &self,
+        &mut self,
         out: &mut dyn Write,
         time: &str,
         cells: &[(String, bool)],
     ) -> io::Result<()> {
         let time = super::time_of_day(time);
         let mut line = format!("{time:<12}");
-        for ((text, changed), column) in cells.iter().zip(&self.columns) {
-            let width = column.chars().count().max(MIN_WIDTH);
+        for ((text, changed), width) in cells.iter().zip(self.widths.iter_mut()) {
             let shown = match (changed, self.colour) {
                 (true, true) => format!("\x1b[33m{text}\x1b[0m"),
                 (true, false) => format!("{text}*"),
                 (false, _) => text.clone(),
             };
             let visible = text.chars().count() + usize::from(*changed && !self.colour);
+            *width = (*width).max(visible);
             line.push_str("  ");
             line.push_str(&shown);
-            line.push_str(&" ".repeat(width.saturating_sub(visible) + 1));
+            line.push_str(&" ".repeat(*width - visible + 1));
         }
         writeln!(out, "{}", line.trim_end())
     }
