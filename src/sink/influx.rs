@@ -30,6 +30,29 @@ pub struct InfluxServer {
     pub token: Option<String>,
 }
 
+impl InfluxServer {
+    /// The `Authorization` header: 2.x's `Token TOKEN`; for the 1.x API a `USER:PASSWORD`
+    /// as HTTP Basic authentication, which every 1.x server takes (1.8's `Token` is not
+    /// known before it).
+    fn authorization(&self) -> Option<String> {
+        use base64::Engine;
+        let token = self.token.as_deref()?;
+        let v1 = !self
+            .url
+            .split('?')
+            .next()
+            .unwrap_or("")
+            .contains("/api/v2/");
+        Some(match token.split_once(':') {
+            Some(_) if v1 => format!(
+                "Basic {}",
+                base64::engine::general_purpose::STANDARD.encode(token)
+            ),
+            _ => format!("Token {token}"),
+        })
+    }
+}
+
 /// Checks the URL of `--influx` with the token given (`INFLUX_TOKEN`): the 1.x API
 /// names its database, the 2.x API its bucket and organisation and needs a token.
 pub fn server(url: &str, token: Option<String>) -> Result<InfluxServer, String> {
@@ -77,8 +100,11 @@ pub fn send(server: &InfluxServer, buffer: &Buffer<String>, tell: impl Fn(&str))
     let url = server.url.as_str();
     let config = ureq::Agent::config_builder()
         .timeout_global(Some(REQUEST_TIMEOUT))
+        .http_status_as_error(false)
         .build();
     let agent: ureq::Agent = config.into();
+    // The statuses of refusals told already: each is told once, then counted.
+    let mut refusals: Vec<u16> = Vec::new();
     let mut delivered = Delivered::default();
     let mut wait = Duration::from_millis(250);
     let mut down_since: Option<Instant> = None;
@@ -105,50 +131,76 @@ pub fn send(server: &InfluxServer, buffer: &Buffer<String>, tell: impl Fn(&str))
                     .max(Duration::from_millis(100)),
             ))
             .build();
-        if let Some(token) = &server.token {
-            request = request.header("Authorization", format!("Token {token}"));
+        if let Some(authorization) = server.authorization() {
+            request = request.header("Authorization", authorization);
         }
-        match request.send(body.as_bytes()) {
-            Ok(_) => {
+        let sent = request.send(body.as_bytes()).and_then(|mut response| {
+            let status = response.status();
+            match status.is_client_error() || status.is_server_error() {
+                // What the server says is wrong, as it says it (InfluxDB's JSON error).
+                true => Ok(Err((
+                    status.as_u16(),
+                    response
+                        .body_mut()
+                        .with_config()
+                        .limit(1000)
+                        .read_to_string()
+                        .unwrap_or_default(),
+                ))),
+                false => Ok(Ok(())),
+            }
+        });
+        let down = match sent {
+            Ok(Ok(())) => {
                 buffer.sent(rows.len());
                 delivered.sent += rows.len() as u64;
                 wait = Duration::from_millis(250);
                 if down_since.take().is_some() {
                     tell(&format!("InfluxDB at {url} takes rows again"));
                 }
+                None
             }
             // A server that refuses the rows themselves (a field of another type than
-            // before, a database that is not there) would refuse them again: they are
-            // dropped, counted and told.
-            Err(ureq::Error::StatusCode(code)) if (400..500).contains(&code) => {
+            // before, a database that is not there, a login it does not take) would
+            // refuse them again: they are dropped and counted, and each kind of refusal
+            // told once.
+            Ok(Err((code, said))) if (400..500).contains(&code) => {
                 buffer.sent(rows.len());
                 delivered.refused += rows.len() as u64;
-                tell(&format!(
-                    "InfluxDB at {url} refused {} with status {code}",
-                    crate::output::plural(rows.len(), "row")
-                ));
-            }
-            Err(error) => {
-                if down_since.is_none() {
-                    down_since = Some(Instant::now());
+                if !refusals.contains(&code) {
+                    refusals.push(code);
+                    let said = said.trim();
                     tell(&format!(
-                        "InfluxDB at {url} does not take rows ({error}); keeping them to send when it does"
+                        "InfluxDB at {url} refused {} with status {code}{}; the rows it refuses are dropped, and counted at the end",
+                        crate::output::plural(rows.len(), "row"),
+                        if said.is_empty() { String::new() } else { format!(" ({said})") }
                     ));
                 }
-                if closed_at.is_some_and(|at| at.elapsed() >= LAST_TRY) {
-                    break;
-                }
-                match closed_at {
-                    Some(at) => std::thread::sleep(wait.min(LAST_TRY.saturating_sub(at.elapsed()))),
-                    None => buffer.rest(wait),
-                }
-                // At the end the rows left are tried again soon, for a few seconds.
-                let longest = match closed_at {
-                    Some(_) => Duration::from_millis(500),
-                    None => LONGEST_WAIT,
-                };
-                wait = (wait * 2).min(longest);
+                None
             }
+            Ok(Err((code, _))) => Some(format!("status {code}")),
+            Err(error) => Some(error.to_string()),
+        };
+        if let Some(why) = down {
+            if down_since.is_none() {
+                down_since = Some(Instant::now());
+                tell(&format!(
+                    "InfluxDB at {url} does not take rows ({why}); keeping them to send when it does"
+                ));
+            }
+            if closed_at.is_some_and(|at| at.elapsed() >= LAST_TRY) {
+                break;
+            }
+            match closed_at {
+                Some(at) => std::thread::sleep(wait.min(LAST_TRY.saturating_sub(at.elapsed()))),
+                None => buffer.rest(wait),
+            }
+            // At the end the rows left are tried again soon, for a few seconds.
+            let longest = match closed_at {
+                Some(_) => Duration::from_millis(500),
+                None => LONGEST_WAIT,
+            };
+            wait = (wait * 2).min(longest);
         }
     }
     let (dropped, unsent) = buffer.counts();
@@ -160,6 +212,17 @@ pub fn send(server: &InfluxServer, buffer: &Buffer<String>, tell: impl Fn(&str))
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_1x_login_is_basic_authentication_and_a_2x_token_a_token() {
+        let v1 = server("http://h:8086/write?db=plant", Some("bob:pw".into())).unwrap();
+        assert_eq!(v1.authorization().as_deref(), Some("Basic Ym9iOnB3"));
+        let v2 = "http://h:8086/api/v2/write?org=o&bucket=b";
+        let v2 = server(v2, Some("abc:def".into())).unwrap();
+        assert_eq!(v2.authorization().as_deref(), Some("Token abc:def"));
+        let plain = server("http://h:8086/write?db=plant", None).unwrap();
+        assert_eq!(plain.authorization(), None);
+    }
 
     #[test]
     fn the_url_names_a_database_or_a_bucket_and_the_2x_api_needs_a_token() {

@@ -32,6 +32,8 @@ fn influx_is_polls_format_and_values_is_not() {
 /// stopped on drop; `None` (skipped) where influxd is missing outside CI.
 struct Influx {
     server: Option<crate::support::Stopped>,
+    /// The admin's user and password, where the server asks for a login.
+    login: Option<(&'static str, &'static str)>,
     config: std::path::PathBuf,
     port: u16,
     _dir: tempfile::TempDir,
@@ -39,6 +41,11 @@ struct Influx {
 
 impl Influx {
     fn start() -> Option<Influx> {
+        Influx::start_with(None)
+    }
+
+    /// A server that asks for `login` (its admin) where given.
+    fn start_with(login: Option<(&'static str, &'static str)>) -> Option<Influx> {
         if !crate::support::peer_available("influxd", crate::support::command_exists("influxd")) {
             return None;
         }
@@ -49,20 +56,28 @@ impl Influx {
         std::fs::write(
             &config,
             format!(
-                "reporting-disabled = true\nbind-address = \"127.0.0.1:{rpc}\"\n[meta]\n  dir = \"{}\"\n[data]\n  dir = \"{}\"\n  wal-dir = \"{}\"\n  query-log-enabled = false\n[http]\n  bind-address = \"127.0.0.1:{port}\"\n  log-enabled = false\n[monitor]\n  store-enabled = false\n",
+                "reporting-disabled = true\nbind-address = \"127.0.0.1:{rpc}\"\n[meta]\n  dir = \"{}\"\n[data]\n  dir = \"{}\"\n  wal-dir = \"{}\"\n  query-log-enabled = false\n[http]\n  bind-address = \"127.0.0.1:{port}\"\n  log-enabled = false\n  auth-enabled = {}\n[monitor]\n  store-enabled = false\n",
                 at("meta"),
                 at("data"),
-                at("wal")
+                at("wal"),
+                login.is_some()
             ),
         )
         .unwrap();
         let mut influx = Influx {
             server: None,
+            login,
             config,
             port,
             _dir: dir,
         };
         influx.run();
+        if let Some((user, password)) = login {
+            // The first user, an admin, is made without a login.
+            influx.query(&format!(
+                "CREATE USER {user} WITH PASSWORD '{password}' WITH ALL PRIVILEGES"
+            ));
+        }
         influx.query("CREATE DATABASE plant");
         Some(influx)
     }
@@ -96,8 +111,12 @@ impl Influx {
     }
 
     fn query(&self, q: &str) -> serde_json::Value {
+        let login = match self.login.filter(|_| !q.starts_with("CREATE USER")) {
+            Some((user, password)) => format!("&u={user}&p={password}"),
+            None => String::new(),
+        };
         let text = ureq::post(format!(
-            "http://127.0.0.1:{}/query?db=plant&epoch=ns",
+            "http://127.0.0.1:{}/query?db=plant&epoch=ns{login}",
             self.port
         ))
         .send_form([("q", q)])
@@ -177,6 +196,46 @@ fn what_influxdb_was_written_reads_back_exact() {
     assert_eq!(influx.rows(), lines, "{stderr}");
     assert!(
         stderr.contains(&format!("mbtool: InfluxDB: {} rows written", lines.len())),
+        "{stderr}"
+    );
+}
+
+/// A 1.x server that asks for a login takes `INFLUX_TOKEN=USER:PASSWORD`, and refuses a
+/// wrong one, told.
+#[test]
+fn an_influxdb_that_asks_for_a_login_takes_the_token_as_user_and_password() {
+    let Some(influx) = Influx::start_with(Some(("bob", "s3cret"))) else {
+        return;
+    };
+    let poll = |token: &str| {
+        mbtool()
+            .args([
+                "poll",
+                "examples/plant.yaml",
+                "--for",
+                "500ms",
+                "-o",
+                "influx",
+            ])
+            .args(["--influx", &influx.write_url()])
+            .env("INFLUX_TOKEN", token)
+            .output()
+            .unwrap()
+    };
+    let output = poll("bob:s3cret");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    let mut lines: Vec<String> = String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .map(String::from)
+        .collect();
+    lines.sort();
+    assert_eq!(influx.rows(), lines, "{stderr}");
+    let output = poll("bob:wrong");
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    // Told once, in the server's words, however many batches it refuses.
+    assert_eq!(stderr.matches("with status 401").count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("with status 401 ({\"error\":\"authorization failed\"})"),
         "{stderr}"
     );
 }
