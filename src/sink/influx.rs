@@ -134,11 +134,11 @@ pub fn send(server: &InfluxServer, buffer: &Buffer<String>, tell: impl Fn(&str))
         if let Some(authorization) = server.authorization() {
             request = request.header("Authorization", authorization);
         }
-        let sent = request.send(body.as_bytes()).and_then(|mut response| {
+        let sent = request.send(body.as_bytes()).map(|mut response| {
             let status = response.status();
             match status.is_client_error() || status.is_server_error() {
                 // What the server says is wrong, as it says it (InfluxDB's JSON error).
-                true => Ok(Err((
+                true => Err((
                     status.as_u16(),
                     response
                         .body_mut()
@@ -146,8 +146,8 @@ pub fn send(server: &InfluxServer, buffer: &Buffer<String>, tell: impl Fn(&str))
                         .limit(1000)
                         .read_to_string()
                         .unwrap_or_default(),
-                ))),
-                false => Ok(Ok(())),
+                )),
+                false => Ok(()),
             }
         });
         let down = match sent {
