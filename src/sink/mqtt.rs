@@ -20,6 +20,7 @@ use serde_json::{json, Map, Value as Json};
 use super::{Buffer, Delivered};
 use mbtool_core::model::map::{Kind, Point};
 use mbtool_core::model::shown::States;
+use mbtool_core::model::values::ValueType;
 
 /// How the broker is reached and what is published.
 #[derive(Clone, Debug, PartialEq)]
@@ -250,11 +251,21 @@ impl Topics {
                         }
                     }
                     (Kind::Number(value_type), true) => {
-                        let (low, high) = value_type.strict_range();
-                        let ends = [
-                            low as f64 * point.scale + point.offset,
-                            high as f64 * point.scale + point.offset,
-                        ];
+                        let (low, high) = match value_type {
+                            ValueType::F32 => (f64::from(f32::MIN), f64::from(f32::MAX)),
+                            ValueType::F64 => (f64::MIN, f64::MAX),
+                            _ => {
+                                let (low, high) = value_type.strict_range();
+                                (low as f64, high as f64)
+                            }
+                        };
+                        // In the scale's steps, without a float's noise (3276.7, not
+                        // 3276.7000000000003).
+                        let shown = |raw: f64| {
+                            let value = raw * point.scale + point.offset;
+                            format!("{value:.9e}").parse::<f64>().unwrap_or(value)
+                        };
+                        let ends = [shown(low), shown(high)];
                         config.insert("command_topic".into(), json!(command));
                         config.insert("min".into(), json!(ends[0].min(ends[1])));
                         config.insert("max".into(), json!(ends[0].max(ends[1])));
@@ -290,7 +301,6 @@ fn unit(config: &mut Map<String, Json>, point: &Point) {
 /// The step of a writable number: its scale where that is finer than 1, else 1; a float
 /// as it is, in thousandths (Home Assistant's finest step).
 fn step(point: &Point) -> f64 {
-    use mbtool_core::model::values::ValueType;
     match point.kind {
         Kind::Number(ValueType::F32 | ValueType::F64) if point.is_unscaled() => 0.001,
         _ => point.scale.abs().clamp(0.001, 1.0),

@@ -42,6 +42,11 @@ pub(super) fn load(
             if let Err(e) = parsed.faults {
                 faults.extend(e.to_string().lines().map(String::from));
             }
+            for (map, line) in &parsed.other_maps {
+                if let Err(e) = map_file::load(&folder.join(map)) {
+                    faults.extend(e.to_string().lines().map(|e| format!("{name}:{line}: {e}")));
+                }
+            }
             parsed
                 .devices
                 .into_iter()
@@ -74,8 +79,8 @@ pub(super) fn load(
         for (device, points) in found {
             if let Some(other) = devices.iter().find(|d| d.plant.name == device.name) {
                 faults.push(format!(
-                    "{name}:{}: the name '{}' is taken already, by a device of line {}",
-                    device.line, device.name, other.plant.line
+                    "{name}:{}: the name '{}' is taken already, by a device of {}:{}",
+                    device.line, device.name, other.file, other.plant.line
                 ));
                 continue;
             }
@@ -159,7 +164,12 @@ fn lines_disagree(devices: &[Device]) -> Vec<String> {
 
 /// Whether a file is mbtool's own plant form: TOML, or YAML with a `devices:` key.
 fn is_plant(file: &str, text: &str) -> bool {
-    plant::is_toml(file) || text.lines().any(|line| line.starts_with("devices:"))
+    // An empty file is an empty plant, told as such.
+    let empty = text.lines().all(|line| {
+        let line = line.trim();
+        line.is_empty() || line.starts_with('#')
+    });
+    empty || plant::is_toml(file) || text.lines().any(|line| line.starts_with("devices:"))
 }
 
 /// How often Home Assistant reads an entity whose `scan_interval` is not given.

@@ -18,7 +18,7 @@ use mbtool::settings::{job, Settings};
 use mbtool::sink::metrics::Metrics;
 use mbtool::sink::mqtt::{Broker, Message, Topics};
 use mbtool::sink::{influx, Buffer};
-use mbtool_core::master::map::write_request;
+use mbtool_core::master::map::{write_request, written_value};
 use mbtool_core::master::plant::{keep_read, Outcome, Polled, Scheduled};
 use mbtool_core::model::map::Point;
 
@@ -221,7 +221,23 @@ fn writes_asked<'a>(
         match write_request(point, payload) {
             Ok(request) => {
                 let (port, local) = reaches[device];
-                let said = format!("{device_name}: {}={payload} (asked on {topic})", point.name);
+                // What the point holds of the value asked, where it holds less (12.5 in
+                // a whole-number point is 13).
+                let written = written_value(point, &request).map(|v| v.to_string());
+                let number = |text: &str| text.trim().parse::<f64>().ok();
+                let said = match written {
+                    Some(written)
+                        if number(&written)
+                            .zip(number(payload))
+                            .is_some_and(|(w, p)| w != p) =>
+                    {
+                        format!(
+                            "{device_name}: {}={written} (asked {payload} on {topic})",
+                            point.name
+                        )
+                    }
+                    _ => format!("{device_name}: {}={payload} (asked on {topic})", point.name),
+                };
                 let _ = writers[port].send(Write {
                     device: local,
                     request,

@@ -80,6 +80,9 @@ pub struct Parsed {
     /// The devices without a fault, so that what else is wrong with them (a map, a port)
     /// can be told with the file's faults.
     pub devices: Vec<PlantDevice>,
+    /// The maps named by the devices with faults, with the line of each: their own faults
+    /// are to be told with the file's.
+    pub other_maps: Vec<(String, usize)>,
     /// Every fault of the file.
     pub faults: Result<(), MapError>,
 }
@@ -96,6 +99,7 @@ pub fn parse_all(file: &str, text: &str) -> Parsed {
         Ok(parsed) => parsed,
         Err(error) => Parsed {
             devices: Vec::new(),
+            other_maps: Vec::new(),
             faults: Err(error),
         },
     }
@@ -141,6 +145,7 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
     let mut found: Vec<PlantDevice> = Vec::new();
     // Every name given and its line, the devices with faults included.
     let mut names: Vec<(String, usize)> = Vec::new();
+    let mut other_maps: Vec<(String, usize)> = Vec::new();
     for device in devices {
         let line = device.line;
         let Tree::Map(keys) = &device.value else {
@@ -151,6 +156,8 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
             ));
             continue;
         };
+        // A device whose name is taken has its other faults told too.
+        let mut taken = false;
         if let Some(Tree::Text(name)) = keys.get("name").map(|n| &n.value) {
             if let Some((_, first)) = names.iter().find(|(known, _)| known == name) {
                 faults.add(at(
@@ -158,17 +165,31 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
                     line,
                     format!("the name '{name}' is taken already, on line {first}"),
                 ));
-                continue;
+                taken = true;
+            } else {
+                names.push((name.clone(), line));
             }
-            names.push((name.clone(), line));
         }
         match read_device(file, line, keys) {
-            Ok(device) => found.push(device),
+            Ok(device) if !taken => found.push(device),
+            Ok(_) => {}
             Err(errors) => errors.into_iter().for_each(|e| faults.add(e)),
+        }
+        // The map of a device with faults is checked too, so that its faults are told
+        // with the others.
+        if let Some(Node {
+            value: Tree::Text(map),
+            line,
+        }) = keys.get("map")
+        {
+            if taken || !found.iter().any(|d| d.line == device.line) {
+                other_maps.push((map.clone(), *line));
+            }
         }
     }
     Ok(Parsed {
         devices: found,
+        other_maps,
         faults: faults.or((), |errors, more| MapError::Several { errors, more }),
     })
 }
@@ -217,6 +238,11 @@ fn read_device(
     let slave = needed("slave", "slave: its slave address or unit id");
     let every = needed("every", "every: how often it is read (1s, 500ms)");
     let name = needed("name", "name: how its rows name it");
+    if let Some((text, at_line)) = &port {
+        if let Err(error) = crate::transport::Endpoint::parse(text) {
+            fault(*at_line, format!("{what}: {error}"));
+        }
+    }
     // The points' own faults, each with its line.
     let mut points_fault = None;
     let points = match (text("map"), keys.get("points")) {
@@ -420,6 +446,17 @@ mod tests {
         ] {
             assert!(error.contains(said), "{said}: {error}");
         }
+    }
+
+    #[test]
+    fn names_that_yaml_1_1_would_read_as_booleans_are_names() {
+        let text = "devices:\n  - name: no\n    port: sim\n    slave: 1\n    map: m.csv\n    every: 1s\n  - name: y\n    port: sim\n    slave: 2\n    map: m.csv\n    every: 1s\n";
+        let names: Vec<String> = parse("p.yaml", text)
+            .unwrap()
+            .into_iter()
+            .map(|d| d.name)
+            .collect();
+        assert_eq!(names, ["no", "y"]);
     }
 
     #[test]

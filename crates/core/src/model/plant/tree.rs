@@ -25,8 +25,10 @@ pub(super) enum Tree {
 
 /// A file's top-level keys read from YAML, or the reader's error: its line and words.
 pub(super) fn yaml(text: &str) -> Result<BTreeMap<String, Node>, (usize, String)> {
+    // YAML 1.2's booleans: a device named `no` or `y` keeps its name.
+    let options = serde_saphyr::options! { strict_booleans: true };
     let top: Option<BTreeMap<String, Spanned<Yaml>>> =
-        serde_saphyr::from_str(text).map_err(|e| {
+        serde_saphyr::from_str_with_options(text, options).map_err(|e| {
             let line = e
                 .location()
                 .map_or(1, |l| usize::try_from(l.line()).unwrap_or(1));
