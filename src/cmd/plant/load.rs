@@ -42,9 +42,16 @@ pub(super) fn load(
             if let Err(e) = parsed.faults {
                 faults.extend(e.to_string().lines().map(String::from));
             }
-            for (map, line) in &parsed.other_maps {
-                if let Err(e) = map_file::load(&folder.join(map)) {
-                    faults.extend(e.to_string().lines().map(|e| format!("{name}:{line}: {e}")));
+            for unread in &parsed.unread {
+                if let Some((port, line)) = &unread.port {
+                    if let Err(e) = mbtool_core::transport::Endpoint::parse(port) {
+                        faults.push(format!("{name}:{line}: {}: {e}", unread.name));
+                    }
+                }
+                if let Some((map, line)) = &unread.map {
+                    if let Err(e) = map_file::load(&folder.join(map)) {
+                        faults.extend(e.to_string().lines().map(|e| format!("{name}:{line}: {e}")));
+                    }
                 }
             }
             parsed

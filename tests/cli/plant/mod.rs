@@ -193,7 +193,7 @@ fn every_fault_of_the_plant_is_told_at_once_and_nothing_is_polled() {
         format!("{file}:7: b has no port"),
         format!("{file}:8: b: slave"),
         format!("{file}:16: the name 'a' is taken already, on line 2"),
-        format!("{file}:12: c: 'nope://x'"),
+        format!("{file}:11: c: 'nope://x'"),
         format!("{file}:26: e: /dev/ttyNOPE0 is RTU 19200 baud, parity even, 8 data bits, 1 stop bits for d (line 21), and RTU 9600 baud"),
     ] {
         assert!(stderr.contains(&said), "{said}:\n{stderr}");

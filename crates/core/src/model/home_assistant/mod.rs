@@ -394,7 +394,16 @@ impl Reader<'_> {
                     port: port.unwrap_or_default(),
                     mode: text(&hub.method, "method")?,
                     baud: whole(text(&hub.baudrate, "baudrate")?, "baudrate").map_err(faulty)?,
-                    parity: text(&hub.parity, "parity")?.and_then(|p| p.chars().next()),
+                    // Home Assistant takes E, O or N, and refuses any other.
+                    parity: match text(&hub.parity, "parity")?.as_deref().map(str::trim) {
+                        None => None,
+                        Some(p @ ("E" | "O" | "N")) => p.chars().next(),
+                        Some(other) => {
+                            return Err(faulty(format!(
+                                "parity '{other}': give E, O or N, as Home Assistant does"
+                            )))
+                        }
+                    },
                     data_bits: whole(text(&hub.bytesize, "bytesize")?, "bytesize")
                         .map_err(faulty)?
                         .map(|b| b as u8),

@@ -139,6 +139,12 @@ fn every_form_a_file_takes() {
         (place.port.as_str(), place.baud, place.parity),
         ("/dev/ttyUSB0", Some(9600), Some('E'))
     );
+    // A parity Home Assistant refuses is refused, not read as the default.
+    let odd = one_hub.replace("parity: E", "parity: Q");
+    let map = read(&odd).unwrap();
+    let why = map.unknown_place.unwrap_or_default();
+    assert!(why.contains("parity 'Q': give E, O or N"), "{why}");
+    assert!(map.connection.is_none());
     let sensors = "- name: x\n  address: 1\n- name: flag\n  address: 2\n  input_type: coil\n- name: relay\n  address: 3\n  write_type: coil\n";
     let map = read(sensors).unwrap();
     assert_eq!(names(&map), ["x", "flag", "relay"]);

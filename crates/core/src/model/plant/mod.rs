@@ -50,6 +50,17 @@ pub struct PlantDevice {
     pub line: usize,
 }
 
+/// The port and map of a device with faults, each with its line.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Unread {
+    /// Its name, or `the device` where it has none.
+    pub name: String,
+    /// Its port as written, and the line.
+    pub port: Option<(String, usize)>,
+    /// Its map's file as written, and the line.
+    pub map: Option<(String, usize)>,
+}
+
 /// Where a device's points are.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Points {
@@ -80,9 +91,9 @@ pub struct Parsed {
     /// The devices without a fault, so that what else is wrong with them (a map, a port)
     /// can be told with the file's faults.
     pub devices: Vec<PlantDevice>,
-    /// The maps named by the devices with faults, with the line of each: their own faults
-    /// are to be told with the file's.
-    pub other_maps: Vec<(String, usize)>,
+    /// What the devices with faults give of their port and map, for the caller to check
+    /// as it checks the others', so that their faults are told with the file's.
+    pub unread: Vec<Unread>,
     /// Every fault of the file.
     pub faults: Result<(), MapError>,
 }
@@ -99,7 +110,7 @@ pub fn parse_all(file: &str, text: &str) -> Parsed {
         Ok(parsed) => parsed,
         Err(error) => Parsed {
             devices: Vec::new(),
-            other_maps: Vec::new(),
+            unread: Vec::new(),
             faults: Err(error),
         },
     }
@@ -145,7 +156,7 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
     let mut found: Vec<PlantDevice> = Vec::new();
     // Every name given and its line, the devices with faults included.
     let mut names: Vec<(String, usize)> = Vec::new();
-    let mut other_maps: Vec<(String, usize)> = Vec::new();
+    let mut unread: Vec<Unread> = Vec::new();
     for device in devices {
         let line = device.line;
         let Tree::Map(keys) = &device.value else {
@@ -175,21 +186,27 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
             Ok(_) => {}
             Err(errors) => errors.into_iter().for_each(|e| faults.add(e)),
         }
-        // The map of a device with faults is checked too, so that its faults are told
-        // with the others.
-        if let Some(Node {
-            value: Tree::Text(map),
-            line,
-        }) = keys.get("map")
-        {
-            if taken || !found.iter().any(|d| d.line == device.line) {
-                other_maps.push((map.clone(), *line));
-            }
+        // The port and map of a device with faults are for the caller to check too, so
+        // that their faults are told with the others.
+        if taken || !found.iter().any(|d| d.line == device.line) {
+            let given = |key: &str| match keys.get(key) {
+                Some(Node {
+                    value: Tree::Text(text),
+                    line,
+                }) => Some((text.clone(), *line)),
+                _ => None,
+            };
+            let name = given("name").map_or_else(|| "the device".into(), |(name, _)| name);
+            unread.push(Unread {
+                name,
+                port: given("port"),
+                map: given("map"),
+            });
         }
     }
     Ok(Parsed {
         devices: found,
-        other_maps,
+        unread,
         faults: faults.or((), |errors, more| MapError::Several { errors, more }),
     })
 }
@@ -238,11 +255,6 @@ fn read_device(
     let slave = needed("slave", "slave: its slave address or unit id");
     let every = needed("every", "every: how often it is read (1s, 500ms)");
     let name = needed("name", "name: how its rows name it");
-    if let Some((text, at_line)) = &port {
-        if let Err(error) = crate::transport::Endpoint::parse(text) {
-            fault(*at_line, format!("{what}: {error}"));
-        }
-    }
     // The points' own faults, each with its line.
     let mut points_fault = None;
     let points = match (text("map"), keys.get("points")) {
