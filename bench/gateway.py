@@ -24,6 +24,8 @@ import tempfile
 import threading
 import time
 
+from support import free_port, wait_listening
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MBTOOL = os.path.join(ROOT, "target", "release", "mbtool")
 REQUESTS = int(sys.argv[1]) if len(sys.argv) > 1 else 2000
@@ -50,23 +52,6 @@ def mbusd_binary():
             check=True,
         )
     return binary
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def wait_listening(port):
-    deadline = time.time() + 10
-    while time.time() < deadline:
-        try:
-            socket.create_connection(("127.0.0.1", port), timeout=1).close()
-            return
-        except OSError:
-            time.sleep(0.05)
-    raise SystemExit(f"nothing listens on {port}")
 
 
 def cpu_seconds(pid):

@@ -16,7 +16,6 @@
 import json
 import os
 import shutil
-import socket
 import subprocess
 import sys
 import tempfile
@@ -24,28 +23,13 @@ import threading
 import time
 from datetime import datetime
 
+from support import free_port, wait_listening
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MBTOOL = os.path.join(ROOT, "target", "release", "mbtool")
 TICKS = os.sysconf("SC_CLK_TCK")
 SERVERS = 10
 REGISTERS = 10
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-def wait_for(port):
-    deadline = time.time() + 10
-    while time.time() < deadline:
-        try:
-            socket.create_connection(("127.0.0.1", port), timeout=1).close()
-            return
-        except OSError:
-            time.sleep(0.05)
-    sys.exit(f"serve on {port} did not start")
 
 
 def cpu_seconds(pid):
@@ -82,7 +66,7 @@ def plant_at_scale(seconds, devices, folder):
             stderr=subprocess.DEVNULL))
         ports.append(port)
     for port in ports:
-        wait_for(port)
+        wait_listening(port)
     plant = os.path.join(folder, "plant.yaml")
     with open(plant, "w") as f:
         f.write("devices:\n")
