@@ -112,7 +112,7 @@ pub fn send(server: &InfluxServer, buffer: &Buffer<String>, tell: impl Fn(&str))
     loop {
         let (rows, closing) = buffer.oldest(BATCH, Duration::from_secs(1));
         if closing {
-            closed_at.get_or_insert_with(Instant::now);
+            closed_at.get_or_insert_with(|| buffer.closed_at().unwrap_or_else(Instant::now));
         }
         if rows.is_empty() {
             if closing {

@@ -8,7 +8,7 @@ pub mod mqtt;
 
 use std::collections::VecDeque;
 use std::sync::{Arc, Condvar, Mutex};
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 /// The rows waiting for a sink, and what became of the others.
 struct Waiting<T> {
@@ -17,6 +17,8 @@ struct Waiting<T> {
     dropped: u64,
     /// Set when no more rows will come: send what is left, then end.
     closing: bool,
+    /// When it was closed: the last try of a sink counts from then.
+    closed_at: Option<Instant>,
 }
 
 /// A bounded buffer of rows (lines, messages), shared by the poll that fills it and the
@@ -41,6 +43,7 @@ impl<T: Clone> Buffer<T> {
             rows: VecDeque::new(),
             dropped: 0,
             closing: false,
+            closed_at: None,
         };
         Self {
             waiting: Arc::new((Mutex::new(waiting), Condvar::new())),
@@ -63,7 +66,9 @@ impl<T: Clone> Buffer<T> {
     /// No more rows: the sender sends what is left and ends.
     pub fn close(&self) {
         let (lock, ready) = &*self.waiting;
-        lock.lock().unwrap_or_else(|p| p.into_inner()).closing = true;
+        let mut waiting = lock.lock().unwrap_or_else(|p| p.into_inner());
+        waiting.closing = true;
+        waiting.closed_at.get_or_insert_with(Instant::now);
         ready.notify_all();
     }
 
@@ -79,6 +84,12 @@ impl<T: Clone> Buffer<T> {
         }
         let rows = waiting.rows.iter().take(most).cloned().collect();
         (rows, waiting.closing)
+    }
+
+    /// When the buffer was closed, if it was.
+    fn closed_at(&self) -> Option<Instant> {
+        let (lock, _) = &*self.waiting;
+        lock.lock().unwrap_or_else(|p| p.into_inner()).closed_at
     }
 
     /// Waits up to `time`, or until the buffer is closing.

@@ -261,9 +261,14 @@ impl Topics {
                         };
                         // In the scale's steps, without a float's noise (3276.7, not
                         // 3276.7000000000003).
+                        let floating = matches!(value_type, ValueType::F32 | ValueType::F64);
                         let shown = |raw: f64| {
                             let value = raw * point.scale + point.offset;
-                            format!("{value:.9e}").parse::<f64>().unwrap_or(value)
+                            let rounded = format!("{value:.9e}").parse::<f64>();
+                            match rounded {
+                                Ok(rounded) if !floating && rounded.is_finite() => rounded,
+                                _ => value,
+                            }
                         };
                         let ends = [shown(low), shown(high)];
                         config.insert("command_topic".into(), json!(command));
@@ -332,6 +337,9 @@ struct State {
     ending: AtomicBool,
     published: AtomicU64,
     acknowledged: AtomicU64,
+    /// The last availability of each device, by topic, published again on each
+    /// connection.
+    latest: std::sync::Mutex<std::collections::BTreeMap<String, Message>>,
 }
 
 /// A client of the broker, connected by a thread of its own.
@@ -489,10 +497,26 @@ impl Sender {
                 for message in announce {
                     self.publish(message);
                 }
+                // The devices' availability as last told, which a broker that restarted
+                // without keeping it has lost.
+                let latest = self
+                    .state
+                    .latest
+                    .lock()
+                    .map(|l| l.clone())
+                    .unwrap_or_default();
+                for message in latest.into_values() {
+                    self.publish(&message);
+                }
             }
             if !state.connected.load(Ordering::SeqCst) {
                 let (_, closing) = buffer.oldest(0, Duration::ZERO);
-                if closing && closed_at.get_or_insert_with(Instant::now).elapsed() >= LAST_TRY {
+                if closing
+                    && closed_at
+                        .get_or_insert_with(|| buffer.closed_at().unwrap_or_else(Instant::now))
+                        .elapsed()
+                        >= LAST_TRY
+                {
                     break;
                 }
                 std::thread::sleep(Duration::from_millis(100));
@@ -532,6 +556,11 @@ impl Sender {
     }
 
     fn publish(&self, message: &Message) {
+        if message.retain && message.topic.ends_with("/available") {
+            if let Ok(mut latest) = self.state.latest.lock() {
+                latest.insert(message.topic.clone(), message.clone());
+            }
+        }
         let sent = self.client.publish(
             message.topic.as_str(),
             QoS::AtLeastOnce,

@@ -27,8 +27,20 @@ pub(super) fn load(
 ) -> Result<Vec<Device>, Error> {
     let mut faults: Vec<String> = Vec::new();
     let mut devices: Vec<Device> = Vec::new();
+    // The names of the devices of the files read before, faulty ones too, with their file
+    // and line: a name is the plant's once.
+    let mut names: Vec<(String, String, usize)> = Vec::new();
+    let mut read: Vec<std::path::PathBuf> = Vec::new();
     for file in files {
         let name = file.display().to_string();
+        let same = std::fs::canonicalize(file).unwrap_or_else(|_| file.clone());
+        if read.contains(&same) {
+            faults.push(format!("{name} is given twice: give each plant file once"));
+            continue;
+        }
+        read.push(same);
+        // This file's devices with faults, by name and line.
+        let mut unread: Vec<(String, usize)> = Vec::new();
         let text = match std::fs::read_to_string(file) {
             Ok(text) => text,
             Err(e) => {
@@ -42,6 +54,7 @@ pub(super) fn load(
             if let Err(e) = parsed.faults {
                 faults.extend(e.to_string().lines().map(String::from));
             }
+            unread.extend(parsed.unread.iter().map(|u| (u.name.clone(), u.line)));
             for unread in &parsed.unread {
                 if let Some((port, line)) = &unread.port {
                     if let Err(e) = mbtool_core::transport::Endpoint::parse(port) {
@@ -83,12 +96,25 @@ pub(super) fn load(
                 }
             }
         };
+        let taken = |device: &str, line: usize| {
+            let (_, file, first) = names.iter().find(|(known, _, _)| known == device)?;
+            Some(format!(
+                "{name}:{line}: the name '{device}' is taken already, by a device of {file}:{first}"
+            ))
+        };
+        faults.extend(
+            unread
+                .iter()
+                .filter_map(|(device, line)| taken(device, *line)),
+        );
+        let mut here: Vec<(String, String, usize)> = unread
+            .iter()
+            .map(|(device, line)| (device.clone(), name.clone(), *line))
+            .collect();
         for (device, points) in found {
-            if let Some(other) = devices.iter().find(|d| d.plant.name == device.name) {
-                faults.push(format!(
-                    "{name}:{}: the name '{}' is taken already, by a device of {}:{}",
-                    device.line, device.name, other.file, other.plant.line
-                ));
+            here.push((device.name.clone(), name.clone(), device.line));
+            if let Some(said) = taken(&device.name, device.line) {
+                faults.push(said);
                 continue;
             }
             let connection = ConnectionSettings {
@@ -115,6 +141,7 @@ pub(super) fn load(
                 }
             }
         }
+        names.extend(here);
     }
     faults.extend(lines_disagree(&devices));
     if faults.is_empty() && devices.is_empty() {

@@ -19,7 +19,7 @@ use mbtool::sink::metrics::Metrics;
 use mbtool::sink::mqtt::{Broker, Message, Topics};
 use mbtool::sink::{influx, Buffer};
 use mbtool_core::master::map::{write_request, written_value};
-use mbtool_core::master::plant::{keep_read, Outcome, Polled, Scheduled};
+use mbtool_core::master::plant::{Outcome, Polled, Scheduled};
 use mbtool_core::model::map::Point;
 
 use load::{load, Device};
@@ -95,7 +95,7 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
                     every: devices[*i].plant.every,
                 })
                 .collect();
-            let mut worker = Worker {
+            let worker = Worker {
                 connector: &devices[members[0]].connector,
                 verbose: settings.output.verbose,
                 ending: Arc::clone(&ending),
@@ -105,7 +105,7 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
                 writing: String::new(),
             };
             let max = settings.data.max_per_request;
-            scope.spawn(move || keep_read(&mut worker, &scheduled, max));
+            scope.spawn(move || worker.run(&scheduled, max));
         }
         drop(polled);
         let tell = |said: &str| mbtool::note!("mbtool: {said}");
@@ -238,11 +238,18 @@ fn writes_asked<'a>(
                     }
                     _ => format!("{device_name}: {}={payload} (asked on {topic})", point.name),
                 };
-                let _ = writers[port].send(Write {
+                let write = Write {
                     device: local,
                     request,
                     said,
-                });
+                };
+                // The port's worker has ended: polling is ending.
+                if let Err(unsent) = writers[port].send(write) {
+                    tell(&format!(
+                        "{} not written: polling ended first",
+                        unsent.0.said
+                    ));
+                }
             }
             Err(why) => tell(&format!("{topic}: {why}; nothing written")),
         }

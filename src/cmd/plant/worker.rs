@@ -35,6 +35,16 @@ pub(super) struct Worker<'a> {
 /// How often a waiting worker looks whether polling should end.
 const LOOK: Duration = Duration::from_millis(50);
 
+impl Worker<'_> {
+    /// Polls until polling ends; a write handed over that was not sent is told.
+    pub fn run(mut self, devices: &[mbtool_core::master::plant::Scheduled], max: Option<u16>) {
+        mbtool_core::master::plant::keep_read(&mut self, devices, max);
+        for write in self.writes.try_iter() {
+            mbtool::note!("mbtool: {} not written: polling ended first", write.said);
+        }
+    }
+}
+
 impl Port for Worker<'_> {
     type Refusal = anyhow::Error;
 
@@ -53,10 +63,6 @@ impl Port for Worker<'_> {
         loop {
             let now = Instant::now();
             if self.ending.load(Ordering::SeqCst) {
-                // A write handed over that will not be sent now is told.
-                for write in self.writes.try_iter() {
-                    mbtool::note!("mbtool: {} not written: polling ended first", write.said);
-                }
                 return Wake::Stop;
             }
             if now >= until {

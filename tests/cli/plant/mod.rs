@@ -416,3 +416,28 @@ fn rows_are_logged_to_several_files_and_a_full_disk_stops_no_poll() {
         "{stderr}"
     );
 }
+
+/// The faults of several files at once: a device whose name another file has, even with
+/// faults of its own; a file given twice; a device with an empty list of points.
+#[test]
+fn the_faults_of_several_files_are_told_together() {
+    let (dir, first) = plant(&[device("b", "sim", 17, "1s")]);
+    let second = dir.path().join("more.toml");
+    std::fs::write(
+        &second,
+        "[[devices]]\nname = \"b\"\nport = \"sim\"\nslave = 1\nevery = \"1s\"\npoints = [{ name = \"x\", ref = \"400001\", access = \"rwx\" }]\n\n[[devices]]\nname = \"e\"\nport = \"sim\"\nslave = 1\nevery = \"1s\"\npoints = []\n",
+    )
+    .unwrap();
+    let second = second.display().to_string();
+    let output = mbtool()
+        .args(["poll", &first, &second, &first])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&output.stderr),
+        format!(
+            "mbtool: {second}:6: access 'rwx': give r or rw\nmbtool: {second}:13: e: points: give at least one point\nmbtool: {second}:1: the name 'b' is taken already, by a device of {first}:2\nmbtool: {first} is given twice: give each plant file once\n"
+        )
+    );
+}

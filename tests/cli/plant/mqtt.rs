@@ -27,7 +27,9 @@ struct Broker {
 
 impl Broker {
     fn start() -> Option<Broker> {
-        Broker::start_with(|port, _| format!("listener {port} 127.0.0.1\nallow_anonymous true\n"))
+        Broker::start_with(|port, _| {
+            format!("listener {port} 127.0.0.1\nallow_anonymous true\npersistence true\n")
+        })
     }
 
     /// A broker whose listener is configured by `listener`, given the port and the
@@ -46,7 +48,7 @@ impl Broker {
         std::fs::write(
             &config,
             format!(
-                "{}persistence true\npersistence_location {}/\nmax_queued_messages 100000\n",
+                "{}\npersistence_location {}/\nmax_queued_messages 100000\n",
                 listener(port, dir.path()),
                 dir.path().display()
             ),
@@ -482,7 +484,7 @@ fn a_broker_over_tls_with_a_password_is_published_to_and_a_wrong_password_is_tol
         assert!(made.success());
         let d = dir.display();
         format!(
-            "listener {port} 127.0.0.1\nallow_anonymous false\npassword_file {d}/passwords\ncafile {d}/ca.pem\ncertfile {d}/broker.pem\nkeyfile {d}/broker.key\n"
+            "listener {port} 127.0.0.1\nallow_anonymous false\npassword_file {d}/passwords\ncafile {d}/ca.pem\ncertfile {d}/broker.pem\nkeyfile {d}/broker.key\npersistence true\n"
         )
     }) else {
         return eprintln!("skipped: mosquitto is not installed");
@@ -638,4 +640,63 @@ fn entities_of_a_home_assistant_configuration_are_announced_as_what_they_are() {
             .as_str()
             .is_some_and(|t| t.ends_with(&format!("{name}/set"))));
     }
+}
+
+/// A broker that restarts without keeping anything (no persistence) has the devices'
+/// availability again, as Home Assistant's discovery needs it, and mbtool's status.
+#[test]
+fn a_broker_that_forgets_gets_the_availability_again() {
+    let Some(mut broker) = Broker::start_with(|port, _| {
+        format!("listener {port} 127.0.0.1\nallow_anonymous true\npersistence false\n")
+    }) else {
+        return eprintln!("skipped: mosquitto is not installed");
+    };
+    let (_server, _dir, plant) = pump_plant();
+    let poll = poll_in_background(&[&plant, "--for", "8s", "--mqtt", &broker.url()]);
+    std::thread::sleep(Duration::from_millis(1000));
+    broker.stop();
+    broker.run();
+    // Reconnected within the client's first wait (250 ms), and announced.
+    std::thread::sleep(Duration::from_millis(2000));
+    assert_eq!(
+        broker.retained("mbtool/+/available"),
+        ["mbtool/pump/available online"]
+    );
+    assert_eq!(broker.retained("mbtool/status"), ["mbtool/status online"]);
+    let output = poll.wait_with_output().unwrap();
+    assert_eq!(output.status.code(), Some(0));
+}
+
+/// A write asked while the device is slow to answer, then SIGTERM: the poll ends at once,
+/// and the write it did not send is told.
+#[test]
+fn a_write_left_unsent_at_the_end_is_told() {
+    let Some(broker) = Broker::start() else {
+        return eprintln!("skipped: mosquitto is not installed");
+    };
+    let (_server, _, port) = serve_tcp(&["--delay", "1500ms"]);
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("map.csv"), MAP).unwrap();
+    let plant = dir.path().join("plant.yaml");
+    let pump = device("pump", &format!("tcp://127.0.0.1:{port}"), 17, "100ms");
+    std::fs::write(&plant, format!("devices:\n{pump}")).unwrap();
+    let url = broker.url();
+    let poll = poll_in_background(&[plant.to_str().unwrap(), "--timeout", "5s", "--mqtt", &url]);
+    std::thread::sleep(Duration::from_millis(700));
+    broker.publish("mbtool/pump/speed/set", "4321");
+    std::thread::sleep(Duration::from_millis(300));
+    let started = std::time::Instant::now();
+    super::send_signal(poll.id(), "TERM");
+    let output = poll.wait_with_output().unwrap();
+    assert!(
+        started.elapsed() < Duration::from_secs(2),
+        "{:?}",
+        started.elapsed()
+    );
+    assert_eq!(output.status.code(), Some(143));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        stderr.contains("mbtool: pump: speed=4321 (asked on mbtool/pump/speed/set) not written: polling ended first"),
+        "{stderr}"
+    );
 }

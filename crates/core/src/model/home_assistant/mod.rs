@@ -390,6 +390,13 @@ impl Reader<'_> {
                     .transpose()
                 };
                 let faulty = |e: String| format!("{file}:{line}: {e}");
+                // What a serial line of Modbus can be (Home Assistant refuses more).
+                let within = |bits: Option<u32>, key: &str, low: u32, high: u32| match bits {
+                    Some(n) if !(low..=high).contains(&n) => {
+                        Err(format!("{key} {n}: give {low} or {high}"))
+                    }
+                    bits => Ok(bits.map(|n| n as u8)),
+                };
                 MapConnection {
                     port: port.unwrap_or_default(),
                     mode: text(&hub.method, "method")?,
@@ -405,11 +412,11 @@ impl Reader<'_> {
                         }
                     },
                     data_bits: whole(text(&hub.bytesize, "bytesize")?, "bytesize")
-                        .map_err(faulty)?
-                        .map(|b| b as u8),
+                        .and_then(|bits| within(bits, "bytesize", 7, 8))
+                        .map_err(faulty)?,
                     stop_bits: whole(text(&hub.stopbits, "stopbits")?, "stopbits")
-                        .map_err(faulty)?
-                        .map(|b| b as u8),
+                        .and_then(|bits| within(bits, "stopbits", 1, 2))
+                        .map_err(faulty)?,
                     ..MapConnection::default()
                 }
             }

@@ -145,6 +145,17 @@ fn every_form_a_file_takes() {
     let why = map.unknown_place.unwrap_or_default();
     assert!(why.contains("parity 'Q': give E, O or N"), "{why}");
     assert!(map.connection.is_none());
+    for (key, bad) in [
+        ("baudrate: 9600", "bytesize: 9"),
+        ("baudrate: 9600", "stopbits: 3"),
+    ] {
+        let odd = one_hub.replace(key, &format!("{key}\n{bad}"));
+        let why = read(&odd).unwrap().unknown_place.unwrap_or_default();
+        assert!(
+            why.contains(&format!("{}: give", bad.replace(": ", " "))),
+            "{why}"
+        );
+    }
     let sensors = "- name: x\n  address: 1\n- name: flag\n  address: 2\n  input_type: coil\n- name: relay\n  address: 3\n  write_type: coil\n";
     let map = read(sensors).unwrap();
     assert_eq!(names(&map), ["x", "flag", "relay"]);

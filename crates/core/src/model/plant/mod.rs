@@ -55,6 +55,8 @@ pub struct PlantDevice {
 pub struct Unread {
     /// Its name, or `the device` where it has none.
     pub name: String,
+    /// The line it starts on.
+    pub line: usize,
     /// Its port as written, and the line.
     pub port: Option<(String, usize)>,
     /// Its map's file as written, and the line.
@@ -199,6 +201,7 @@ fn read_all(file: &str, text: &str) -> Result<Parsed, MapError> {
             let name = given("name").map_or_else(|| "the device".into(), |(name, _)| name);
             unread.push(Unread {
                 name,
+                line: device.line,
                 port: given("port"),
                 map: given("map"),
             });
@@ -354,6 +357,13 @@ fn read_device(
 
 /// A device's `points:`: a list of tables whose keys are the columns of a CSV map.
 fn given_points(file: &str, device: &str, given: &Node) -> Result<Vec<Point>, MapError> {
+    if matches!(&given.value, Tree::List(items) if items.is_empty()) {
+        return Err(at(
+            file,
+            given.line,
+            format!("{device}: points: give at least one point"),
+        ));
+    }
     let Tree::List(items) = &given.value else {
         return Err(at(
             file,
