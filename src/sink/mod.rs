@@ -131,7 +131,7 @@ pub struct Delivered {
 }
 
 impl Delivered {
-    /// `1200 rows written, 30 dropped while it was down (the buffer holds 1000), 5 unsent`,
+    /// `1200 rows written, 30 dropped while it was down (the buffer holds 1000 rows), 5 unsent`,
     /// of rows or of another `thing`.
     pub fn summary(&self, capacity: usize, thing: &str) -> String {
         let mut said = format!(
@@ -140,7 +140,7 @@ impl Delivered {
         );
         if self.dropped > 0 {
             said.push_str(&format!(
-                ", {} dropped while it was down (the buffer holds {capacity}; --buffer sets it)",
+                ", {} dropped while it was down (the buffer holds {capacity} rows; --buffer sets it)",
                 self.dropped
             ));
         }

@@ -335,8 +335,9 @@ struct State {
     announce: AtomicBool,
     /// No more is sent: the connection thread ends at its next error.
     ending: AtomicBool,
-    published: AtomicU64,
     acknowledged: AtomicU64,
+    /// Connections made so far: an acknowledgement counts on the connection it came on.
+    connections: AtomicU64,
     /// The last availability of each device, by topic, published again on each
     /// connection.
     latest: std::sync::Mutex<std::collections::BTreeMap<String, Message>>,
@@ -354,6 +355,9 @@ const LAST_TRY: Duration = Duration::from_secs(3);
 
 /// How long a connection to the broker may take.
 const CONNECTION_TIMEOUT: Duration = Duration::from_secs(2);
+
+/// Messages published at once before their acknowledgements are waited for.
+const WINDOW: usize = 500;
 
 /// Messages the client holds at once before publishing waits.
 const CLIENT_QUEUE: usize = 1000;
@@ -410,6 +414,7 @@ impl Broker {
             for event in self.connection.iter() {
                 match event {
                     Ok(Event::Incoming(Packet::ConnAck(_))) => {
+                        state.connections.fetch_add(1, Ordering::SeqCst);
                         state.connected.store(true, Ordering::SeqCst);
                         state.announce.store(true, Ordering::SeqCst);
                         wait = Duration::from_millis(250);
@@ -489,13 +494,18 @@ impl Sender {
         let state = &self.state;
         let mut delivered = Delivered::default();
         let mut closed_at: Option<Instant> = None;
+        // The last try, counted from when the buffer was closed.
+        let mut out_of_time = |closing: bool| {
+            closing
+                && closed_at
+                    .get_or_insert_with(|| buffer.closed_at().unwrap_or_else(Instant::now))
+                    .elapsed()
+                    >= LAST_TRY
+        };
         loop {
             if state.announce.swap(false, Ordering::SeqCst) {
                 for filter in subscriptions {
                     let _ = self.client.subscribe(filter.as_str(), QoS::AtLeastOnce);
-                }
-                for message in announce {
-                    self.publish(message);
                 }
                 // The devices' availability as last told, which a broker that restarted
                 // without keeping it has lost.
@@ -505,54 +515,70 @@ impl Sender {
                     .lock()
                     .map(|l| l.clone())
                     .unwrap_or_default();
-                for message in latest.into_values() {
-                    self.publish(&message);
-                }
+                let mut first: Vec<Message> = announce.to_vec();
+                first.extend(latest.into_values());
+                // A connection lost meanwhile announces again when it is back.
+                self.publish_all(&first, Duration::from_secs(5));
             }
             if !state.connected.load(Ordering::SeqCst) {
                 let (_, closing) = buffer.oldest(0, Duration::ZERO);
-                if closing
-                    && closed_at
-                        .get_or_insert_with(|| buffer.closed_at().unwrap_or_else(Instant::now))
-                        .elapsed()
-                        >= LAST_TRY
-                {
+                if out_of_time(closing) {
                     break;
                 }
                 std::thread::sleep(Duration::from_millis(100));
                 continue;
             }
-            let (messages, closing) = buffer.oldest(100, Duration::from_millis(200));
+            let (messages, closing) = buffer.oldest(WINDOW, Duration::from_millis(200));
             if messages.is_empty() && closing {
                 break;
             }
-            for message in &messages {
-                self.publish(message);
+            // Taken out of the buffer only once the broker has them: a connection lost
+            // meanwhile has them published again on the next (at least once, as QoS 1).
+            if self.publish_all(&messages, LAST_TRY) {
+                buffer.sent(messages.len());
+                delivered.sent += messages.len() as u64;
+            } else if out_of_time(closing) {
+                break;
             }
-            buffer.sent(messages.len());
         }
         // mbtool ends: said, as its last will says it when it ends otherwise.
         let status = announce.iter().rev().find(|m| m.payload == "online");
         if let Some(status) = status.filter(|_| state.connected.load(Ordering::SeqCst)) {
-            self.publish(&Message {
+            let offline = Message {
                 payload: "offline".into(),
                 ..status.clone()
-            });
-        }
-        // What was handed over, acknowledged before the client says goodbye.
-        let end = Instant::now() + LAST_TRY;
-        let published = || state.published.load(Ordering::SeqCst);
-        while state.acknowledged.load(Ordering::SeqCst) < published() && Instant::now() < end {
-            std::thread::sleep(Duration::from_millis(20));
+            };
+            self.publish_all(&[offline], Duration::from_secs(1));
         }
         state.ending.store(true, Ordering::SeqCst);
         let _ = self.client.disconnect();
         let (dropped, unsent) = buffer.counts();
-        let acknowledged = state.acknowledged.load(Ordering::SeqCst).min(published());
-        delivered.sent = acknowledged;
         delivered.dropped = dropped;
-        delivered.unsent = unsent + usize::try_from(published() - acknowledged).unwrap_or(0);
+        delivered.unsent = unsent;
         delivered
+    }
+
+    /// Publishes `messages` and waits up to `within` for the broker to acknowledge them
+    /// all on one connection; whether it did.
+    fn publish_all(&self, messages: &[Message], within: Duration) -> bool {
+        let state = &self.state;
+        let connection = state.connections.load(Ordering::SeqCst);
+        let acknowledged = state.acknowledged.load(Ordering::SeqCst);
+        for message in messages {
+            self.publish(message);
+        }
+        let end = Instant::now() + within;
+        loop {
+            let now_acknowledged = state.acknowledged.load(Ordering::SeqCst);
+            if now_acknowledged.saturating_sub(acknowledged) >= messages.len() as u64 {
+                return true;
+            }
+            let same = state.connections.load(Ordering::SeqCst) == connection;
+            if !same || !state.connected.load(Ordering::SeqCst) || Instant::now() >= end {
+                return false;
+            }
+            std::thread::sleep(Duration::from_millis(1));
+        }
     }
 
     fn publish(&self, message: &Message) {
@@ -561,15 +587,13 @@ impl Sender {
                 latest.insert(message.topic.clone(), message.clone());
             }
         }
-        let sent = self.client.publish(
+        // Refused only once the client is gone, at the end.
+        let _ = self.client.publish(
             message.topic.as_str(),
             QoS::AtLeastOnce,
             message.retain,
             message.payload.as_bytes(),
         );
-        if sent.is_ok() {
-            self.state.published.fetch_add(1, Ordering::SeqCst);
-        }
     }
 }
 

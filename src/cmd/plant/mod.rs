@@ -120,7 +120,9 @@ pub fn run(settings: &Settings, job: &job::Plant) -> Result<u8> {
         });
         let reaches = &reaches;
         let mut mqtt = broker.map(|(broker, topics)| {
-            let buffer = Buffer::new(job.buffer);
+            // --buffer counts rows: a row is a message a value, and one of availability.
+            let widest = devices.iter().map(|d| d.points.len()).max().unwrap_or(0);
+            let buffer = Buffer::new(job.buffer.saturating_mul(widest + 1));
             let sending = buffer.clone();
             let (retain, discovery) = job
                 .mqtt

@@ -268,7 +268,9 @@ fn an_influxdb_that_restarts_loses_nothing_within_the_buffer_and_the_overflow_is
         .lines()
         .flat_map(|line| line.split(", "))
         .find_map(|part| {
-            part.strip_suffix(" dropped while it was down (the buffer holds 3; --buffer sets it)")
+            part.strip_suffix(
+                " dropped while it was down (the buffer holds 3 rows; --buffer sets it)",
+            )
         })
         .and_then(|n| n.parse().ok())
         .unwrap_or_else(|| panic!("{stderr}"));

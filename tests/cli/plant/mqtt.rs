@@ -429,12 +429,13 @@ fn a_broker_that_restarts_loses_nothing_within_the_buffer_and_the_overflow_is_co
     );
     assert!(!stderr.contains("dropped"), "{stderr}");
 
-    // A buffer of 10 messages for an outage of about 100 (five points a poll, ten polls
-    // a second): the oldest give way, counted, and the rest arrive.
+    // A buffer of 5 rows (30 messages: five values and an availability a row) for an
+    // outage of about 100 messages (ten polls a second): the oldest give way, counted,
+    // and the rest arrive.
     let (rows, stderr, subscriber) =
-        poll_through_outage(&mut broker, &["--buffer", "10"], Duration::from_secs(2));
+        poll_through_outage(&mut broker, &["--buffer", "5"], Duration::from_secs(2));
     let dropped: usize = stderr
-        .split(" dropped while it was down (the buffer holds 10;")
+        .split(" dropped while it was down (the buffer holds 5 rows;")
         .next()
         .and_then(|before| before.rsplit(", ").next())
         .and_then(|n| n.parse().ok())
