@@ -521,8 +521,7 @@ impl Sender {
                 self.publish_all(&first, Duration::from_secs(5));
             }
             if !state.connected.load(Ordering::SeqCst) {
-                let (_, closing) = buffer.oldest(0, Duration::ZERO);
-                if out_of_time(closing) {
+                if out_of_time(buffer.closed_at().is_some()) {
                     break;
                 }
                 std::thread::sleep(Duration::from_millis(100));

@@ -156,3 +156,43 @@ fn a_serial_line_whose_port_vanishes_holds_back_no_other_device() {
         assert!(last["error"].is_string(), "{last}");
     }
 }
+
+/// A noisy serial line (noise bytes before the answers, one answer in five corrupted):
+/// every value a row shows is the one the device holds, never one read from a bad frame,
+/// and most polls read whole.
+#[test]
+fn a_noisy_serial_line_shows_no_value_the_device_does_not_hold() {
+    let Some(pair) = PtyPair::new() else { return };
+    let noise = [
+        "--slave",
+        "17",
+        "--slave",
+        "18",
+        "--garbage",
+        "--corrupt",
+        "20%",
+        "--seed",
+        "7",
+    ];
+    let (_line, port) = serve_pty(&pair, &noise);
+    let (_dir, path) = plant(&[
+        device("a", &port[1], 17, "100ms"),
+        device("b", &port[1], 18, "100ms"),
+    ]);
+    let (code, rows, stderr) = json_rows(&[&path, "--for", "3s", "--timeout", "200ms"]);
+    assert_eq!(code, 0, "{stderr}");
+    let held = serde_json::json!({"speed": 555, "level": 0, "flow": 100});
+    let mut whole = 0;
+    for row in &rows {
+        let values = row["values"].as_object().unwrap();
+        for (name, value) in values {
+            assert_eq!(value, &held[name], "{row}");
+        }
+        whole += usize::from(values.len() == 3);
+    }
+    assert!(
+        rows.len() >= 20 && whole * 2 >= rows.len(),
+        "{whole} whole of {}",
+        rows.len()
+    );
+}

@@ -66,7 +66,9 @@ pub(super) fn toml(text: &str) -> Result<BTreeMap<String, Node>, (usize, String)
     let line_at = |offset: usize| text[..offset.min(text.len())].matches('\n').count() + 1;
     let top = DeTable::parse(text).map_err(|e| {
         let line = e.span().map_or(1, |span| line_at(span.start));
-        (line, e.message().trim().to_string())
+        // One line, as every fault is told.
+        let said = e.message().split_whitespace().collect::<Vec<_>>().join(" ");
+        (line, said)
     })?;
     fn node(value: &toml::Spanned<DeValue<'_>>, line_at: &dyn Fn(usize) -> usize) -> Node {
         let tree = match value.get_ref() {
