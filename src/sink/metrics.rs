@@ -7,6 +7,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::io::{BufRead, BufReader, Write};
 use std::net::{TcpListener, TcpStream};
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
@@ -22,6 +23,10 @@ const BUCKETS: [f64; 11] = [
 
 /// How long a scraper may take to send its request.
 const REQUEST_TIMEOUT: Duration = Duration::from_secs(2);
+
+/// Clients answered at once; past them a new one is closed until one is done (an idle
+/// one within the request timeout).
+const MOST_CLIENTS: usize = 256;
 
 /// A device's series.
 #[derive(Default)]
@@ -152,8 +157,24 @@ impl Metrics {
 
     /// Serves `/metrics` on `listener` until the process ends, a scraper at a time.
     pub fn serve(&self, listener: TcpListener) {
+        // Each client on a thread of its own, so that one that sends nothing holds back
+        // no scrape; past a bound, a new client is closed at once.
+        let clients = Arc::new(AtomicUsize::new(0));
         for stream in listener.incoming().flatten() {
-            let _ = self.answer(stream);
+            if clients.fetch_add(1, Ordering::SeqCst) >= MOST_CLIENTS {
+                clients.fetch_sub(1, Ordering::SeqCst);
+                continue;
+            }
+            let (metrics, done) = (self.clone(), Arc::clone(&clients));
+            let answering = std::thread::Builder::new()
+                .stack_size(128 * 1024)
+                .spawn(move || {
+                    let _ = metrics.answer(stream);
+                    done.fetch_sub(1, Ordering::SeqCst);
+                });
+            if answering.is_err() {
+                clients.fetch_sub(1, Ordering::SeqCst);
+            }
         }
     }
 

@@ -107,3 +107,22 @@ fn the_metrics_are_what_promtool_and_a_prometheus_server_read() {
         assert_eq!(result["metric"]["unit"], "rpm", "{result}");
     }
 }
+
+/// Clients that connect and say nothing (a hundred of them) hold back no scrape: it is
+/// answered at once.
+#[test]
+fn idle_clients_hold_back_no_scrape() {
+    let (_poller, port) = poll_with_metrics("10s");
+    let idle: Vec<std::net::TcpStream> = (0..100)
+        .filter_map(|_| std::net::TcpStream::connect(("127.0.0.1", port)).ok())
+        .collect();
+    assert_eq!(idle.len(), 100);
+    let started = Instant::now();
+    let text = get(&format!("http://127.0.0.1:{port}/metrics"));
+    assert!(
+        started.elapsed() < Duration::from_secs(1),
+        "{:?}",
+        started.elapsed()
+    );
+    assert!(text.contains("modbus_polls_total"), "{text}");
+}
