@@ -345,6 +345,20 @@ fn field_rows(f: &Fields) -> Vec<(&'static str, String)> {
             Values::Bits(b) => ("value", if b[0] == 1 { "ON" } else { "OFF" }.to_string()),
         });
     }
+    for group in f.files.iter().flatten() {
+        let records = match (group.file, group.record) {
+            (Some(file), Some(record)) => format!(
+                "file {file}, records {record}-{}",
+                u32::from(record) + u32::from(group.count).max(1) - 1
+            ),
+            _ => format!("{} records", group.count),
+        };
+        let values = group.values.as_ref().map(|values| {
+            let shown: Vec<String> = values.iter().map(u16::to_string).collect();
+            format!(" = {}", shown.join(" "))
+        });
+        rows.push(("file group", format!("{records}{}", values.unwrap_or_default())));
+    }
     if let Some(mask) = f.and_mask {
         rows.push(("AND mask", format!("{mask:04X}")));
     }

@@ -191,6 +191,10 @@ pub fn write_fields_summary(out: &mut String, fields: &Fields) {
         }
         (None, None) => false,
     };
+    if let Some(files) = &fields.files {
+        write_files(out, files);
+        return;
+    }
     match (&fields.values, fields.count) {
         (Some(values), _) => {
             if place(out) {
@@ -228,6 +232,24 @@ pub fn write_fields_summary(out: &mut String, fields: &Fields) {
             } else if let Some(data) = data {
                 out.push_str(data);
             }
+        }
+    }
+}
+
+/// File record groups in a few words: `file 4 record 1 x2 = 3582 32; file 3 record 9 x2`.
+fn write_files(out: &mut String, files: &[mbtool_core::describe::FileGroupField]) {
+    use std::fmt::Write as _;
+    for (i, group) in files.iter().enumerate() {
+        if i > 0 {
+            out.push_str("; ");
+        }
+        if let (Some(file), Some(record)) = (group.file, group.record) {
+            let _ = write!(out, "file {file} record {record} ");
+        }
+        let _ = write!(out, "x{}", group.count);
+        if let Some(values) = &group.values {
+            out.push_str(" = ");
+            write_values(out, &Values::Registers(values.iter().copied().collect()), 8);
         }
     }
 }

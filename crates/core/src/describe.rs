@@ -81,6 +81,22 @@ pub struct DeviceObjectField {
     pub value: String,
 }
 
+/// One group of a file record frame (functions 20, 21): which records, and their values.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct FileGroupField {
+    /// The file; absent in a read answer whose request was not seen.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub file: Option<u16>,
+    /// The first record; absent in a read answer whose request was not seen.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub record: Option<u16>,
+    /// How many records (registers).
+    pub count: u16,
+    /// The records' values, where the frame carries them.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub values: Option<Vec<u16>>,
+}
+
 /// The fields a PDU carries; absent ones are left out of JSON.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct Fields {
@@ -152,6 +168,9 @@ pub struct Fields {
     /// Function 43/14 answer: the identification objects.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub objects: Option<Vec<DeviceObjectField>>,
+    /// Functions 20 and 21: the groups of file records, in order.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub files: Option<Vec<FileGroupField>>,
     /// Bytes the frame carries without a layout mbtool knows, as spaced hex.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub data: Option<String>,
@@ -220,8 +239,24 @@ pub fn locate_answer(report: &mut FrameReport, request: &Request, pdu: &[u8]) {
             read_quantity,
             ..
         } => (*read_address, *read_quantity),
+        Request::ReadFileRecord { groups } => {
+            if let Some(files) = &mut report.fields.files {
+                for (field, asked) in files.iter_mut().zip(groups) {
+                    field.file = Some(asked.file);
+                    field.record = Some(asked.record);
+                }
+            }
+            return;
+        }
+        Request::ReadFifoQueue { address } => (*address, 0),
         _ => return,
     };
+    if quantity == 0 {
+        // A FIFO answer: its pointer's address; its count is the queue's own.
+        report.fields.address = Some(address);
+        report.fields.reference = Some(reference(Table::HoldingRegisters, address));
+        return;
+    }
     let table = Table::of_function(request.function()).unwrap_or(Table::HoldingRegisters);
     report.fields.address = Some(address);
     report.fields.reference = Some(reference(table, address));
@@ -357,9 +392,39 @@ fn request_fields(request: &Request) -> Fields {
             f.read_code = Some(*read_code);
             f.object_id = Some(*object_id);
         }
+        Request::ReadFileRecord { groups } => {
+            f.files = Some(
+                groups
+                    .iter()
+                    .map(|group| FileGroupField {
+                        file: Some(group.file),
+                        record: Some(group.record),
+                        count: group.count,
+                        values: None,
+                    })
+                    .collect(),
+            );
+        }
+        Request::WriteFileRecord { groups } => f.files = Some(written_files(groups)),
+        Request::ReadFifoQueue { address } => {
+            f.address = Some(*address);
+            f.reference = Some(reference(Table::HoldingRegisters, *address));
+        }
         Request::Other { data, .. } => f.data = Some(spaced_hex(data)),
     }
     f
+}
+
+fn written_files(groups: &[crate::codec::FileRecords]) -> Vec<FileGroupField> {
+    groups
+        .iter()
+        .map(|group| FileGroupField {
+            file: Some(group.file),
+            record: Some(group.record),
+            count: group.values.len() as u16,
+            values: Some(group.values.clone()),
+        })
+        .collect()
 }
 
 fn identification_fields(f: &mut Fields, id: &DeviceIdentification) {
@@ -429,6 +494,24 @@ fn response_fields(response: &Response) -> Fields {
             f.or_mask = Some(*or_mask);
         }
         Response::ReadDeviceIdentification(id) => identification_fields(&mut f, id),
+        Response::ReadFileRecord { groups } => {
+            f.files = Some(
+                groups
+                    .iter()
+                    .map(|values| FileGroupField {
+                        file: None,
+                        record: None,
+                        count: values.len() as u16,
+                        values: Some(values.clone()),
+                    })
+                    .collect(),
+            );
+        }
+        Response::WriteFileRecord { groups } => f.files = Some(written_files(groups)),
+        Response::ReadFifoQueue { values } => {
+            f.count = u16::try_from(values.len()).ok();
+            f.values = Some(Values::Registers(SmallVec::from_slice(values)));
+        }
         Response::Other { data, .. } => f.data = Some(spaced_hex(data)),
     }
     f

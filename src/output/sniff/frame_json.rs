@@ -140,6 +140,7 @@ fn pdu_fields(object: &mut JsonObject, fields: &mbtool_core::describe::Fields) -
         more_follows: None,
         next_object_id: None,
         objects: None,
+        files: None,
         data: None,
         text: None,
     } = fields

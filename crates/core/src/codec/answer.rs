@@ -126,6 +126,16 @@ pub(crate) fn check(request: &Request, answer: &Pdu) -> Result<(), Mismatch> {
             address == a && and_mask == and && or_mask == or,
             "address or masks differ",
         ),
+        (Request::ReadFileRecord { groups }, Response::ReadFileRecord { groups: answered }) => {
+            count("groups of records", groups.len(), answered.len())?;
+            for (asked, values) in groups.iter().zip(answered) {
+                count("records", usize::from(asked.count), values.len())?;
+            }
+            Ok(())
+        }
+        (Request::WriteFileRecord { groups }, Response::WriteFileRecord { groups: echoed }) => {
+            echo(groups == echoed, "the file records differ")
+        }
         // Return Query Data (00) echoes the query's data; the others answer with their own.
         (
             Request::Diagnostics {

@@ -72,6 +72,10 @@ pub enum PduError {
     /// A field holds a value the protocol does not allow; carries what is wrong.
     #[error("{0}")]
     BadField(&'static str),
+    /// A file record group names no place in a file: a reference type other than 06, file
+    /// 0, records past 9999; carries what is wrong.
+    #[error("{0}")]
+    FileReference(String),
 }
 
 /// Why a frame's envelope (address, MBAP header, checksum, ASCII text) or its PDU is not

@@ -53,8 +53,11 @@ pub fn has_layout(function: u8, data: &[u8]) -> bool {
         | WRITE_MULTIPLE_COILS
         | WRITE_MULTIPLE_REGISTERS
         | REPORT_SERVER_ID
+        | READ_FILE_RECORD
+        | WRITE_FILE_RECORD
         | MASK_WRITE_REGISTER
-        | READ_WRITE_MULTIPLE_REGISTERS => true,
+        | READ_WRITE_MULTIPLE_REGISTERS
+        | READ_FIFO_QUEUE => true,
         ENCAPSULATED_INTERFACE => data.first() == Some(&MEI_READ_DEVICE_IDENTIFICATION),
         _ => false,
     }

@@ -20,6 +20,8 @@ pub use answer::Mismatch;
 pub use error::{FrameError, PduError};
 pub use exception::ExceptionCode;
 pub(crate) use pdu::{diagnostic_only_reads, function_only_reads};
+pub use pdu::file;
 pub use pdu::{
-    DeviceIdentification, DeviceObject, Direction, Exception, Pdu, Reading, Request, Response,
+    DeviceIdentification, DeviceObject, Direction, Exception, FileRecords, FileSpan, Pdu, Reading,
+    Request, Response,
 };

@@ -223,9 +223,12 @@ impl Role {
                 whole(true, false)
             }
             R::Diagnostics { .. } => whole(false, true),
-            R::ReadExceptionStatus | R::ReportServerId | R::ReadDeviceIdentification { .. } => {
-                whole(true, false)
-            }
+            R::ReadExceptionStatus
+            | R::ReportServerId
+            | R::ReadDeviceIdentification { .. }
+            | R::ReadFileRecord { .. }
+            | R::ReadFifoQueue { .. } => whole(true, false),
+            R::WriteFileRecord { .. } => whole(false, true),
             R::Other { function, .. } if function_only_reads(*function) => whole(true, false),
             // File record write.
             R::Other { function: 0x15, .. } => whole(false, true),

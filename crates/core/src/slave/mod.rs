@@ -13,7 +13,7 @@ use std::collections::BTreeMap;
 use crate::codec::function;
 use crate::codec::{ExceptionCode, Pdu, PduError, Request, Response};
 pub use identity::{parse_object, Identity, DEFAULT_VENDOR, MAX_OBJECT_LEN};
-pub use model::{DataModel, TableData};
+pub use model::{DataModel, FifoData, FileData, TableData};
 
 /// The slave id of the manuals' examples: the built-in slave's, and `serve`'s by default.
 pub const EXAMPLE_SLAVE: u8 = 17;
@@ -244,6 +244,29 @@ fn respond(
                     .read(*read_address, *read_quantity)?,
             }
         }
+        Request::ReadFileRecord { groups } => Response::ReadFileRecord {
+            groups: groups
+                .iter()
+                .map(|group| model.files.read(group.file, group.record, group.count))
+                .collect::<Result<_, _>>()?,
+        },
+        Request::WriteFileRecord { groups } => {
+            // Every group is checked before any is written.
+            for group in groups {
+                model
+                    .files
+                    .check_write(group.file, group.record, &group.values)?;
+            }
+            for group in groups {
+                model.files.write(group.file, group.record, &group.values)?;
+            }
+            Response::WriteFileRecord {
+                groups: groups.clone(),
+            }
+        }
+        Request::ReadFifoQueue { address } => Response::ReadFifoQueue {
+            values: model.fifos.read(*address)?,
+        },
         Request::ReadExceptionStatus => Response::ReadExceptionStatus { status: 0 },
         Request::Diagnostics { sub_function, data } => Response::Diagnostics {
             sub_function: *sub_function,
@@ -262,7 +285,9 @@ fn respond(
         Request::Other { function, data } if function::has_layout(*function, data) => {
             let pdu = [&[*function], data.as_slice()].concat();
             return Err(match Request::decode(&pdu) {
-                Err(PduError::AddressOverflow { .. }) => ExceptionCode::ILLEGAL_DATA_ADDRESS,
+                Err(PduError::AddressOverflow { .. } | PduError::FileReference(_)) => {
+                    ExceptionCode::ILLEGAL_DATA_ADDRESS
+                }
                 _ => ExceptionCode::ILLEGAL_DATA_VALUE,
             });
         }

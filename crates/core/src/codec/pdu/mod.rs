@@ -7,12 +7,14 @@ use super::error::PduError;
 use super::exception::ExceptionCode;
 use super::function::*;
 
+pub mod file;
 mod identification;
 mod request;
 mod response;
 mod wire;
 
 pub use super::direction::Direction;
+pub use file::{FileRecords, FileSpan};
 pub use identification::{DeviceIdentification, DeviceObject};
 pub(crate) use request::{diagnostic_only_reads, function_only_reads};
 pub(crate) use wire::Values;
@@ -87,6 +89,16 @@ pub enum Request {
     },
     /// Function 17: ask a serial-line device for its server ID and run status.
     ReportServerId,
+    /// Function 20: read records of files, one group a file and run of records.
+    ReadFileRecord {
+        /// The runs of records asked, in order; the answer holds a group for each.
+        groups: Vec<FileSpan>,
+    },
+    /// Function 21: write records of files.
+    WriteFileRecord {
+        /// The runs of records and their values, in order.
+        groups: Vec<FileRecords>,
+    },
     /// Function 22: change bits of one holding register. The register becomes
     /// (current AND `and_mask`) OR (`or_mask` AND NOT `and_mask`).
     MaskWriteRegister {
@@ -107,6 +119,11 @@ pub enum Request {
         write_address: u16,
         /// The values to write, first address first; 1-121 of them.
         values: Vec<u16>,
+    },
+    /// Function 24: read a FIFO queue: its count and up to 31 registers.
+    ReadFifoQueue {
+        /// The FIFO pointer address, 0-based as on the wire.
+        address: u16,
     },
     /// Function 43, MEI type 14: read device identification objects.
     ReadDeviceIdentification {
@@ -196,6 +213,16 @@ pub enum Response {
         /// device-specific data; the layout is the device's.
         data: Vec<u8>,
     },
+    /// Function 20: the records read, a group for each group asked, in order.
+    ReadFileRecord {
+        /// Each group's registers, first record first.
+        groups: Vec<Vec<u16>>,
+    },
+    /// Function 21: the echo of the request.
+    WriteFileRecord {
+        /// The runs of records written and their values.
+        groups: Vec<FileRecords>,
+    },
     /// Function 22: the echo of the request.
     MaskWriteRegister {
         /// Register address, 0-based as on the wire.
@@ -208,6 +235,11 @@ pub enum Response {
     /// Function 23: the registers read, after the write.
     ReadWriteMultipleRegisters {
         /// The register values read, first address first.
+        values: Vec<u16>,
+    },
+    /// Function 24: the FIFO queue's registers, oldest first (their count is at most 31).
+    ReadFifoQueue {
+        /// The queued registers.
         values: Vec<u16>,
     },
     /// Function 43, MEI type 14: identification objects.

@@ -9,7 +9,7 @@ use super::wire::{
     check_read, coil_from_word, coil_word, counted_exactly, counted_registers, len_u8, quantity_of,
     Reader, Values, Writer,
 };
-use super::Request;
+use super::{file, Request};
 
 /// Whether a diagnostic (08) sub-function only reads: return query data (00) and the
 /// counters (02, 0B-12); the others restart, clear or silence the device.
@@ -18,7 +18,8 @@ pub(crate) fn diagnostic_only_reads(sub_function: u16) -> bool {
 }
 
 /// Whether a function kept as opaque bytes only reads: the event counter and log (0B,
-/// 0C), file record read (14) and the FIFO queue (18).
+/// 0C), and file record read (14) and the FIFO queue (18) when their fields break their
+/// layouts.
 pub(crate) fn function_only_reads(function: u8) -> bool {
     matches!(function, 0x0B | 0x0C | 0x14 | 0x18)
 }
@@ -38,8 +39,11 @@ impl Request {
             Request::WriteMultipleCoils { .. } => WRITE_MULTIPLE_COILS,
             Request::WriteMultipleRegisters { .. } => WRITE_MULTIPLE_REGISTERS,
             Request::ReportServerId => REPORT_SERVER_ID,
+            Request::ReadFileRecord { .. } => READ_FILE_RECORD,
+            Request::WriteFileRecord { .. } => WRITE_FILE_RECORD,
             Request::MaskWriteRegister { .. } => MASK_WRITE_REGISTER,
             Request::ReadWriteMultipleRegisters { .. } => READ_WRITE_MULTIPLE_REGISTERS,
+            Request::ReadFifoQueue { .. } => READ_FIFO_QUEUE,
             Request::ReadDeviceIdentification { .. } => ENCAPSULATED_INTERFACE,
             Request::Other { function, .. } => *function,
         }
@@ -54,6 +58,7 @@ impl Request {
             | Request::WriteSingleRegister { .. }
             | Request::WriteMultipleCoils { .. }
             | Request::WriteMultipleRegisters { .. }
+            | Request::WriteFileRecord { .. }
             | Request::MaskWriteRegister { .. }
             | Request::ReadWriteMultipleRegisters { .. } => true,
             Request::Diagnostics { sub_function, .. } => !diagnostic_only_reads(*sub_function),
@@ -67,7 +72,9 @@ impl Request {
     /// functions mbtool has no layout for. A retry of one is asked for explicitly.
     pub fn may_differ_when_repeated(&self) -> bool {
         match self {
-            Request::MaskWriteRegister { .. } | Request::ReadWriteMultipleRegisters { .. } => true,
+            Request::WriteFileRecord { .. }
+            | Request::MaskWriteRegister { .. }
+            | Request::ReadWriteMultipleRegisters { .. } => true,
             Request::Other { function, .. } => !function_only_reads(*function),
             _ => false,
         }
@@ -128,6 +135,11 @@ impl Request {
                     .u16(quantity)
                     .u8(len_u8(values.len() * 2, 246)?)
                     .registers(values);
+            }
+            Request::ReadFileRecord { groups } => file::write_read_request(&mut w, groups)?,
+            Request::WriteFileRecord { groups } => file::write_write_groups(&mut w, groups)?,
+            Request::ReadFifoQueue { address } => {
+                w.u16(*address);
             }
             Request::MaskWriteRegister {
                 address,
@@ -232,6 +244,13 @@ impl Request {
                     values: r.registers(usize::from(quantity))?,
                 }
             }
+            READ_FILE_RECORD => Request::ReadFileRecord {
+                groups: file::read_read_request(&mut r)?,
+            },
+            WRITE_FILE_RECORD => Request::WriteFileRecord {
+                groups: file::read_write_groups(&mut r)?,
+            },
+            READ_FIFO_QUEUE => Request::ReadFifoQueue { address: r.u16()? },
             MASK_WRITE_REGISTER => Request::MaskWriteRegister {
                 address: r.u16()?,
                 and_mask: r.u16()?,

@@ -9,7 +9,7 @@ use super::wire::{
     check_layout_length, check_normal_function, check_pdu_len, check_quantity, check_range,
     coil_from_word, coil_word, len_u8, quantity_of, Reader, Values, Writer,
 };
-use super::{DeviceIdentification, DeviceObject, Exception, Response};
+use super::{file, DeviceIdentification, DeviceObject, Exception, Response};
 
 impl Response {
     /// The function code of the response.
@@ -26,8 +26,11 @@ impl Response {
             Response::WriteMultipleCoils { .. } => WRITE_MULTIPLE_COILS,
             Response::WriteMultipleRegisters { .. } => WRITE_MULTIPLE_REGISTERS,
             Response::ReportServerId { .. } => REPORT_SERVER_ID,
+            Response::ReadFileRecord { .. } => READ_FILE_RECORD,
+            Response::WriteFileRecord { .. } => WRITE_FILE_RECORD,
             Response::MaskWriteRegister { .. } => MASK_WRITE_REGISTER,
             Response::ReadWriteMultipleRegisters { .. } => READ_WRITE_MULTIPLE_REGISTERS,
+            Response::ReadFifoQueue { .. } => READ_FIFO_QUEUE,
             Response::ReadDeviceIdentification(_) => ENCAPSULATED_INTERFACE,
             Response::Other { function, .. } => *function,
         }
@@ -81,6 +84,9 @@ impl Response {
             Response::ReportServerId { data } => {
                 w.u8(len_u8(data.len(), limits::MAX_PDU - 2)?).bytes(data);
             }
+            Response::ReadFileRecord { groups } => file::write_read_answer(&mut w, groups)?,
+            Response::WriteFileRecord { groups } => file::write_write_groups(&mut w, groups)?,
+            Response::ReadFifoQueue { values } => file::write_fifo_answer(&mut w, values)?,
             Response::MaskWriteRegister {
                 address,
                 and_mask,
@@ -187,6 +193,15 @@ impl Response {
                     data: r.owned(data),
                 }
             }
+            READ_FILE_RECORD => Response::ReadFileRecord {
+                groups: file::read_read_answer(&mut r)?,
+            },
+            WRITE_FILE_RECORD => Response::WriteFileRecord {
+                groups: file::read_write_groups(&mut r)?,
+            },
+            READ_FIFO_QUEUE => Response::ReadFifoQueue {
+                values: file::read_fifo_answer(&mut r)?,
+            },
             MASK_WRITE_REGISTER => Response::MaskWriteRegister {
                 address: r.u16()?,
                 and_mask: r.u16()?,

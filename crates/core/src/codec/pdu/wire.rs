@@ -115,6 +115,22 @@ impl<'a> Reader<'a> {
         })
     }
 
+    /// A reader of `bytes`, a part of a PDU of `function` that holds groups of its own,
+    /// keeping the values as its PDU's reader does.
+    pub(super) fn new_at(function: u8, bytes: &'a [u8], keeps: bool) -> Self {
+        Self {
+            function,
+            bytes,
+            pos: 0,
+            values: if keeps { Values::Kept } else { Values::Skipped },
+        }
+    }
+
+    /// Whether every byte has been read.
+    pub(super) fn at_end(&self) -> bool {
+        self.pos >= self.bytes.len()
+    }
+
     /// Whether the values read are kept.
     #[inline]
     pub(super) fn keeps(&self) -> bool {
@@ -229,7 +245,7 @@ pub(super) fn check_normal_function(function: u8) -> Result<(), PduError> {
     Ok(())
 }
 
-/// A function kept byte for byte whose layout still tells its length (11, 12, 20, 21, 24):
+/// A function kept byte for byte whose layout still tells its length (11, 12):
 /// a PDU of another length is no PDU of that function in `direction`. A Get Comm Event
 /// Counter request is its function code alone, and its answer four bytes more.
 pub(super) fn check_layout_length(pdu: &[u8], direction: Direction) -> Result<(), PduError> {
@@ -245,55 +261,8 @@ pub(super) fn check_layout_length(pdu: &[u8], direction: Direction) -> Result<()
             needed,
             actual: pdu.len(),
         }),
-        _ => file_record_groups(pdu, direction),
+        _ => Ok(()),
     }
-}
-
-/// The file records' groups after the byte count, each of reference type 06: what tells a
-/// Read File Record request (7 bytes a group) from its answer (a length, then that many
-/// bytes), whose byte counts fit either way.
-fn file_record_groups(pdu: &[u8], direction: Direction) -> Result<(), PduError> {
-    const REFERENCE_TYPE: u8 = 0x06;
-    let layout = match (pdu.first().copied(), direction) {
-        (Some(READ_FILE_RECORD), Direction::Request) => {
-            "a Read File Record request is groups of 7 bytes: reference type 06, file, record \
-             and length"
-        }
-        (Some(READ_FILE_RECORD), Direction::Response) => {
-            "a Read File Record answer is groups of a length, then as many bytes: reference \
-             type 06 and the registers"
-        }
-        (Some(WRITE_FILE_RECORD), _) => {
-            "a Write File Record is groups of reference type 06, file, record, length and as \
-             many registers"
-        }
-        _ => return Ok(()),
-    };
-    let mut rest = pdu.get(2..).unwrap_or_default();
-    let malformed = Err(PduError::BadField(layout));
-    if rest.is_empty() {
-        return malformed;
-    }
-    while !rest.is_empty() {
-        // Each group's length, counted from its reference type.
-        let len = match (pdu[0], direction) {
-            (READ_FILE_RECORD, Direction::Request) => 7,
-            (READ_FILE_RECORD, Direction::Response) => {
-                let len = usize::from(rest[0]);
-                rest = &rest[1..];
-                len
-            }
-            _ => match rest.get(5..7) {
-                Some(&[hi, lo]) => 7 + 2 * usize::from(u16::from_be_bytes([hi, lo])),
-                _ => return malformed,
-            },
-        };
-        match rest.get(..len) {
-            Some(group) if group.first() == Some(&REFERENCE_TYPE) => rest = &rest[len..],
-            _ => return malformed,
-        }
-    }
-    Ok(())
 }
 
 #[inline]
