@@ -98,7 +98,7 @@ pub struct BitData {
     pub split: SplitArgs,
 }
 
-// One coil.
+// One address: a coil, or the bits of a register.
 #[derive(Clone, Debug, Args)]
 pub struct OneBitData {
     #[command(flatten)]
@@ -125,9 +125,9 @@ pub struct OneRegisterData {
     pub registers: RegisterArgs,
 }
 
-// A raw PDU, whose answer's registers are shown as values.
+// Registers shown as values: a raw PDU's answer, file records.
 #[derive(Clone, Debug, Args)]
-pub struct RawData {
+pub struct ValueData {
     #[command(flatten)]
     pub registers: RegisterArgs,
 }
@@ -180,7 +180,7 @@ impl ShortHelp for OneRegisterData {
     const LEFT_OUT: &'static [&'static str] = &[left_out::ADDRESSES];
 }
 
-impl ShortHelp for RawData {
+impl ShortHelp for ValueData {
     const LEFT_OUT: &'static [&'static str] = &[];
 }
 holds!(BusRepeatable: master, repeat);
@@ -193,7 +193,7 @@ holds!(BitData: addresses, split);
 holds!(OneBitData: addresses);
 holds!(RegisterData: addresses, split, registers);
 holds!(OneRegisterData: addresses, registers);
-holds!(RawData: registers);
+holds!(ValueData: registers);
 
 // The commands that send requests; `encode` takes the same ones. A plain comment: a doc
 // comment would become the about of `encode`.
@@ -223,8 +223,18 @@ pub enum RequestCommand<W: Wire> {
     WriteRegisters(RequestArgs<WriteArgs<HoldingRegisters>, RegisterData, W::Write>),
     /// Write by reference: 05/06 for one value, 15/16 for more
     Write(RequestArgs<WriteByReferenceArgs, RegisterData, W::Repeatable>),
+    /// Read records of files (function 20)
+    ReadFile(RequestArgs<ReadFileArgs, ValueData, W::Write>),
+    /// Write records of a file (function 21)
+    WriteFile(RequestArgs<WriteFileArgs, ValueData, W::Repeatable>),
+    /// Change bits of a holding register in one request (function 22)
+    MaskWrite(RequestArgs<MaskWriteArgs, OneBitData, W::Repeatable>),
+    /// Write registers, then read registers, in one transaction (function 23)
+    ReadWrite(RequestArgs<ReadWriteArgs, OneRegisterData, W::Repeatable>),
+    /// Read a FIFO queue (function 24)
+    ReadFifo(RequestArgs<ReadFifoArgs, OneRegisterData, W::Write>),
     /// Send any PDU and decode the answer
-    Raw(RequestArgs<RawArgs, RawData, W::Repeatable>),
+    Raw(RequestArgs<RawArgs, ValueData, W::Repeatable>),
 }
 
 impl<W: Wire> RequestCommand<W> {
@@ -242,6 +252,11 @@ impl<W: Wire> RequestCommand<W> {
             C::WriteRegister(r) => r,
             C::WriteRegisters(r) => r,
             C::Write(r) => r,
+            C::ReadFile(r) => r,
+            C::WriteFile(r) => r,
+            C::MaskWrite(r) => r,
+            C::ReadWrite(r) => r,
+            C::ReadFifo(r) => r,
             C::Raw(r) => r,
         }
     }
@@ -432,4 +447,68 @@ pub struct RawArgs {
     /// The PDU in hex, function code first (03 00 6B 00 03)
     #[arg(required = true, num_args = 1.., value_name = "PDU_HEX")]
     pub pdu: Vec<String>,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct ReadFileArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+    /// FILE:RECORD COUNT pairs: 4:1 2 reads records 1-2 of file 4
+    ///
+    /// Files are 1-65535, records 0-9999; COUNT counts values of --type. The groups go in one
+    /// request, or in as many as the limits of one answer (245 bytes) need.
+    #[arg(required = true, num_args = 2.., value_name = "FILE:RECORD COUNT")]
+    pub groups: Vec<String>,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct WriteFileArgs {
+    /// Slave address: 1-247, or 0 to broadcast
+    pub slave: String,
+    /// The file and first record: 4:7
+    pub place: String,
+    /// The values, each converted by --type
+    #[arg(required = true, allow_negative_numbers = true)]
+    pub values: Vec<String>,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct MaskWriteArgs {
+    /// Slave address: 1-247, or 0 to broadcast
+    pub slave: String,
+    /// A holding register (400005), or one of its bits set alone: 400108.05=1
+    ///
+    /// The register becomes (current AND the AND mask) OR (the OR mask AND NOT the AND mask),
+    /// in the device, in one request. A bit is given as REF.BIT=VALUE or REF.BIT VALUE.
+    #[arg(value_name = "REF")]
+    pub reference: String,
+    /// The AND mask, then the OR mask (0x00F2 0x0025); or a bit's value
+    #[arg(value_name = "AND OR")]
+    pub masks: Vec<String>,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct ReadWriteArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+    /// The first holding register to read: 400004
+    #[arg(value_name = "READREF")]
+    pub read: String,
+    /// How many values of --type to read (at most 125 registers)
+    pub count: String,
+    /// The first holding register to write, before the read: 400015
+    #[arg(value_name = "WRITEREF")]
+    pub write: String,
+    /// The values to write, each converted by --type (at most 121 registers)
+    #[arg(required = true, allow_negative_numbers = true)]
+    pub values: Vec<String>,
+}
+
+#[derive(Clone, Debug, Args)]
+pub struct ReadFifoArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+    /// The FIFO queue's pointer register: 401247
+    #[arg(value_name = "REF")]
+    pub reference: String,
 }

@@ -15,6 +15,7 @@ use mbtool_core::codec::{Frame, Mode, Pdu, Request};
 use mbtool_core::describe::describe_frame;
 use mbtool_core::master::plan::Plan;
 use mbtool_core::master::range::{read_range, Items};
+use mbtool_core::master::run::Written;
 use mbtool_core::master::{Master, Reply};
 use mbtool_core::model::address::{bit_reference, reference, Table};
 
@@ -51,8 +52,11 @@ pub fn run(settings: &Settings, words: &RequestWords) -> Result<u8> {
     let mut out = output::stdout();
     let code = match (request, plan.reads) {
         (TypedWords::Raw { .. }, _) => raw(settings, master, &plan, mode, &mut out),
+        (TypedWords::ReadFile { .. }, _) => read_files(settings, master, &plan, &mut out),
+        (TypedWords::ReadFifo { .. }, _) => read_fifo(settings, master, &plan, &mut out),
+        (TypedWords::MaskWrite { .. }, _) => writes(settings, master, &plan, Emulate::No, &mut out),
         (_, Some((table, address))) => reads(settings, master, &plan, table, address, &mut out),
-        (_, None) => writes(settings, master, &plan, &mut out),
+        (_, None) => writes(settings, master, &plan, Emulate::MaskWrite, &mut out),
     };
     super::shared::tell_switches(settings, master);
     super::shared::tell_resent(master);
@@ -107,16 +111,88 @@ fn poll_reads(
     )
 }
 
-fn writes(
+/// Whether a mask write the slave does not know is done with a read and a write.
+#[derive(PartialEq, Eq)]
+enum Emulate {
+    /// As `write` of a bit does.
+    MaskWrite,
+    /// `mask-write` asks for function 22 alone.
+    No,
+}
+
+fn read_files(
     settings: &Settings,
     master: &mut Master,
     plan: &Plan,
     out: &mut Box<dyn Write>,
 ) -> Result<u8> {
-    let written = master.write(plan).map_err(Error::from)?;
+    let groups = master.read_files(plan).map_err(Error::from)?;
+    output::records::write_files(out, &settings.output.style, plan.slave, &groups)?;
+    Ok(0)
+}
+
+fn read_fifo(
+    settings: &Settings,
+    master: &mut Master,
+    plan: &Plan,
+    out: &mut Box<dyn Write>,
+) -> Result<u8> {
+    let values = master.read_fifo(plan).map_err(Error::from)?;
+    let address = match plan.requests.first() {
+        Some(Request::ReadFifoQueue { address }) => *address,
+        _ => 0,
+    };
+    let place = (
+        settings.output.style.address_base.number(address),
+        reference(Table::HoldingRegisters, address),
+    );
+    output::records::write_fifo(
+        out,
+        &settings.output.style,
+        plan.slave,
+        (place.0, place.1.as_ref()),
+        &values,
+    )?;
+    Ok(0)
+}
+
+fn writes(
+    settings: &Settings,
+    master: &mut Master,
+    plan: &Plan,
+    emulate: Emulate,
+    out: &mut Box<dyn Write>,
+) -> Result<u8> {
+    let written = match emulate {
+        Emulate::MaskWrite => master.write(plan).map_err(Error::from)?,
+        Emulate::No => {
+            for request in &plan.requests {
+                master.answer(plan.slave, request).map_err(Error::from)?;
+            }
+            Written {
+                count: plan.requests.len(),
+                mask_write_emulated: false,
+            }
+        }
+    };
     let Some(first) = plan.requests.first() else {
         return Ok(0);
     };
+    if let Request::WriteFileRecord { groups } = first {
+        let Some(group) = groups.first() else {
+            return Ok(0);
+        };
+        let done = WriteDone {
+            slave: plan.slave,
+            function: first.function(),
+            address: u32::from(group.record),
+            reference: format!("file {} record {}", group.file, group.record),
+            count: written.count / settings.data.value_type.width(),
+            broadcast: plan.slave == 0,
+        };
+        write_done(out, settings.output.format, &done)?;
+        return Ok(0);
+    }
     let (table, address) = match first {
         Request::WriteSingleCoil { address, .. } | Request::WriteMultipleCoils { address, .. } => {
             (Table::Coils, *address)

@@ -13,6 +13,7 @@ pub mod plant;
 pub mod ports;
 pub mod progress;
 pub mod read;
+pub mod records;
 pub mod scan;
 pub mod serve;
 pub mod sniff;

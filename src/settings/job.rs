@@ -71,6 +71,30 @@ pub enum TypedWords {
         values: Vec<String>,
         how: How,
     },
+    /// Read records of files: `FILE:RECORD COUNT` pairs.
+    ReadFile { slave: String, groups: Vec<String> },
+    /// Write records of a file from `FILE:RECORD`.
+    WriteFile {
+        slave: String,
+        place: String,
+        values: Vec<String>,
+    },
+    /// Change bits of a register: AND and OR masks, or a bit's value.
+    MaskWrite {
+        slave: String,
+        reference: String,
+        masks: Vec<String>,
+    },
+    /// Write registers, then read registers, in one transaction.
+    ReadWrite {
+        slave: String,
+        read: String,
+        count: String,
+        write: String,
+        values: Vec<String>,
+    },
+    /// Read a FIFO queue.
+    ReadFifo { slave: String, reference: String },
     /// Send a PDU typed as hex words.
     Raw { slave: String, pdu: Vec<String> },
 }
@@ -103,6 +127,38 @@ impl TypedWords {
                 values,
                 how: *how,
             },
+            TypedWords::ReadFile { slave, groups } => Operation::ReadFile { slave, groups },
+            TypedWords::WriteFile {
+                slave,
+                place,
+                values,
+            } => Operation::WriteFile {
+                slave,
+                place,
+                values,
+            },
+            TypedWords::MaskWrite {
+                slave,
+                reference,
+                masks,
+            } => Operation::MaskWrite {
+                slave,
+                reference,
+                masks,
+            },
+            TypedWords::ReadWrite {
+                slave,
+                read,
+                count,
+                write,
+                values,
+            } => Operation::ReadWrite {
+                slave,
+                read: (read, count),
+                write,
+                values,
+            },
+            TypedWords::ReadFifo { slave, reference } => Operation::ReadFifo { slave, reference },
             TypedWords::Raw { slave, pdu } => Operation::Raw { slave, pdu },
         }
     }
@@ -450,6 +506,31 @@ fn request_of<W: Wire>(command: RequestCommand<W>) -> Result<RequestWords, Strin
         C::WriteCoils(RequestArgs { args, .. }) => write(args),
         C::WriteRegisters(RequestArgs { args, .. }) => write(args),
         C::Write(RequestArgs { args, .. }) => write_by_reference(args)?,
+        C::ReadFile(RequestArgs { args: a, .. }) => RequestWords::Typed(TypedWords::ReadFile {
+            slave: a.slave,
+            groups: a.groups,
+        }),
+        C::WriteFile(RequestArgs { args: a, .. }) => RequestWords::Typed(TypedWords::WriteFile {
+            slave: a.slave,
+            place: a.place,
+            values: a.values,
+        }),
+        C::MaskWrite(RequestArgs { args: a, .. }) => RequestWords::Typed(TypedWords::MaskWrite {
+            slave: a.slave,
+            reference: a.reference,
+            masks: a.masks,
+        }),
+        C::ReadWrite(RequestArgs { args: a, .. }) => RequestWords::Typed(TypedWords::ReadWrite {
+            slave: a.slave,
+            read: a.read,
+            count: a.count,
+            write: a.write,
+            values: a.values,
+        }),
+        C::ReadFifo(RequestArgs { args: a, .. }) => RequestWords::Typed(TypedWords::ReadFifo {
+            slave: a.slave,
+            reference: a.reference,
+        }),
         C::Raw(RequestArgs { args: a, .. }) => RequestWords::Typed(TypedWords::Raw {
             slave: a.slave,
             pdu: a.pdu,

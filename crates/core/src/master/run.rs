@@ -9,7 +9,7 @@ use super::failover::Left;
 use super::plan::{Plan, RegisterBits};
 use super::{Master, MasterError, Reply};
 use crate::codec::function;
-use crate::codec::{ExceptionCode, Request, Response};
+use crate::codec::{ExceptionCode, FileRecords, Request, Response};
 use crate::input::duration::show;
 use crate::model::address::Table;
 use crate::model::values::ReadData;
@@ -149,7 +149,8 @@ impl Master {
             match response {
                 Some(
                     Response::ReadHoldingRegisters { values }
-                    | Response::ReadInputRegisters { values },
+                    | Response::ReadInputRegisters { values }
+                    | Response::ReadWriteMultipleRegisters { values },
                 ) => registers.extend(values),
                 Some(
                     response @ (Response::ReadCoils { .. } | Response::ReadDiscreteInputs { .. }),
@@ -213,10 +214,55 @@ impl Master {
             written.count += match request {
                 Request::WriteMultipleCoils { values, .. } => values.len(),
                 Request::WriteMultipleRegisters { values, .. } => values.len(),
+                Request::WriteFileRecord { groups } => groups.iter().map(|g| g.values.len()).sum(),
                 _ => 1,
             };
         }
         Ok(written)
+    }
+
+    /// Every request of a file record read plan: the records of each group asked, the
+    /// groups a long run was cut into put back together.
+    pub fn read_files(&mut self, plan: &Plan) -> Result<Vec<FileRecords>, RunError> {
+        let mut read: Vec<FileRecords> = Vec::new();
+        for request in &plan.requests {
+            let (Request::ReadFileRecord { groups: asked }, Some(Response::ReadFileRecord { groups })) =
+                (request, self.answer(plan.slave, request)?)
+            else {
+                continue;
+            };
+            // The master checked that the answer holds a group for each asked.
+            for (span, values) in asked.iter().zip(groups) {
+                match read.last_mut() {
+                    Some(last)
+                        if last.file == span.file
+                            && usize::from(last.record) + last.values.len()
+                                == usize::from(span.record) =>
+                    {
+                        last.values.extend(values)
+                    }
+                    _ => read.push(FileRecords {
+                        file: span.file,
+                        record: span.record,
+                        values,
+                    }),
+                }
+            }
+        }
+        Ok(read)
+    }
+
+    /// The FIFO queue a plan's one request reads: its registers, oldest first.
+    pub fn read_fifo(&mut self, plan: &Plan) -> Result<Vec<u16>, RunError> {
+        let mut values = Vec::new();
+        for request in &plan.requests {
+            if let Some(Response::ReadFifoQueue { values: queue }) =
+                self.answer(plan.slave, request)?
+            {
+                values = queue;
+            }
+        }
+        Ok(values)
     }
 }
 

@@ -11,9 +11,13 @@
 //! 400200-400299 = 0          # a range with one value: every address gets it
 //! 000020-000023 = 1 0 1 1    # coils: on/off, 1/0, true/false; one value an address
 //! 300009 = 10
+//! file 4 record 1 = 3582 32  # records 1-2 of file 4 (function 20, 21)
+//! fifo 401247 = 440 4740     # the FIFO queue whose pointer is 401247 (function 24)
 //! ```
 //!
-//! With a data file only the addresses it names exist; any other gets exception 02.
+//! With a data file only the addresses, records and queues it names exist; any other gets
+//! exception 02. A FIFO queue may hold more than the 31 values one answer carries: reading
+//! it then gets exception 03, as the specification says.
 //! Nothing is made up: a range takes one value for each of its addresses or one value for
 //! all of them, and an address is named once.
 
@@ -27,7 +31,9 @@ use crate::model::address::{parse_reference_span, reference, AddressError, Table
 use crate::model::faults::{told, Faults};
 use crate::model::values::ReadData;
 use crate::model::values::{parse_coil, ByteOrder, ValueType};
-use crate::slave::DataModel;
+use crate::codec::file::MAX_RECORD;
+use crate::codec::FileRecords;
+use crate::slave::{DataModel, FileData};
 
 /// Why a data file cannot be loaded.
 #[derive(Debug, Error)]
@@ -107,6 +113,9 @@ pub enum EntryError {
     /// Values that run past address 65535.
     #[error("the values run past the last address of the table ({0})")]
     PastEnd(String),
+    /// A `file` or `fifo` entry whose place does not read.
+    #[error("{0}")]
+    Place(String),
 }
 
 /// Splits the value part into words, a double-quoted string being one word.
@@ -131,6 +140,10 @@ fn words(text: &str) -> Result<Vec<String>, EntryError> {
 #[derive(Default)]
 struct Claims {
     tables: [BTreeMap<u32, (u32, usize)>; 4],
+    /// Each file record named, with its line.
+    records: BTreeMap<(u16, u16), usize>,
+    /// Each FIFO queue's pointer named, with its line.
+    fifos: BTreeMap<u16, usize>,
 }
 
 impl Claims {
@@ -158,15 +171,8 @@ impl Claims {
     }
 }
 
-/// One entry on line `number`: fills `model` and declares the addresses it names.
-fn entry(
-    model: &mut DataModel,
-    claims: &mut Claims,
-    line: &str,
-    number: usize,
-) -> Result<(), EntryError> {
-    let (target, values) = line.split_once('=').ok_or(EntryError::NotAnEntry)?;
-    let span = parse_reference_span(target.trim())?;
+/// The values of an entry, its type and byte order (written after them) taken off.
+fn typed_words(values: &str) -> Result<(Vec<String>, ValueType, ByteOrder), EntryError> {
     let mut words = words(values)?;
     let mut order = ByteOrder::Abcd;
     let mut kind = ValueType::U16;
@@ -181,6 +187,105 @@ fn entry(
     if words.is_empty() {
         return Err(EntryError::NoValue);
     }
+    Ok((words, kind, order))
+}
+
+/// The registers an entry's values make.
+fn registers(values: &str) -> Result<Vec<u16>, EntryError> {
+    let (words, kind, order) = typed_words(values)?;
+    let mut registers = Vec::new();
+    for word in &words {
+        registers.extend(kind.parse(word, order).map_err(EntryError::Value)?);
+    }
+    Ok(registers)
+}
+
+fn number_of<T: std::str::FromStr>(word: Option<&str>, what: &str) -> Result<T, EntryError> {
+    word.and_then(|w| w.parse().ok())
+        .ok_or_else(|| EntryError::Place(format!("give {what}, as in file 4 record 1 = 10 20")))
+}
+
+/// A `file N record R = ...` entry: records of a file.
+fn file_entry(
+    model: &mut DataModel,
+    claims: &mut Claims,
+    place: &str,
+    values: &str,
+    number: usize,
+) -> Result<(), EntryError> {
+    let mut words = place.split_whitespace().skip(1);
+    let file: u16 = number_of(words.next(), "a file number 1-65535")?;
+    if file == 0 {
+        return Err(EntryError::Place(
+            "file 0 does not exist: files are numbered 1-65535".into(),
+        ));
+    }
+    if words.next() != Some("record") {
+        return Err(EntryError::Place(
+            "a file entry is file N record R = VALUE..., as in file 4 record 1 = 10 20".into(),
+        ));
+    }
+    let record: u16 = number_of(words.next(), "a record number 0-9999")?;
+    if words.next().is_some() {
+        return Err(EntryError::NotAnEntry);
+    }
+    let values = registers(values)?;
+    let last = usize::from(record) + values.len() - 1;
+    if last > usize::from(MAX_RECORD) {
+        return Err(EntryError::Place(format!(
+            "records {record}-{last} of file {file} run past record {MAX_RECORD}"
+        )));
+    }
+    for at in record..=last as u16 {
+        if let Some(line) = claims.records.insert((file, at), number) {
+            return Err(EntryError::Place(format!(
+                "record {at} of file {file} is given already on line {line}: give each record once"
+            )));
+        }
+    }
+    model.files.preset(file, record, &values);
+    Ok(())
+}
+
+/// A `fifo REF = ...` entry: a FIFO queue, oldest value first.
+fn fifo_entry(
+    model: &mut DataModel,
+    claims: &mut Claims,
+    place: &str,
+    values: &str,
+    number: usize,
+) -> Result<(), EntryError> {
+    let target = place.trim_start()["fifo".len()..].trim();
+    let span = parse_reference_span(target)?;
+    if span.table != Table::HoldingRegisters || span.count.is_some() {
+        return Err(EntryError::Place(format!(
+            "a FIFO queue's pointer is one holding register, as in fifo 401247: '{target}' is not"
+        )));
+    }
+    if let Some(line) = claims.fifos.insert(span.address, number) {
+        return Err(EntryError::Place(format!(
+            "the FIFO queue at {target} is given already on line {line}: give each queue once"
+        )));
+    }
+    model.fifos.set(span.address, registers(values)?);
+    Ok(())
+}
+
+/// One entry on line `number`: fills `model` and declares the addresses it names.
+fn entry(
+    model: &mut DataModel,
+    claims: &mut Claims,
+    line: &str,
+    number: usize,
+) -> Result<(), EntryError> {
+    let (target, values) = line.split_once('=').ok_or(EntryError::NotAnEntry)?;
+    match target.split_whitespace().next() {
+        Some("file") => return file_entry(model, claims, target, values, number),
+        Some("fifo") => return fifo_entry(model, claims, target, values, number),
+        _ => {}
+    }
+    let span = parse_reference_span(target.trim())?;
+    let (words, kind, order) = typed_words(values)?;
     let start = u32::from(span.address);
     if span.table.is_bits() {
         if kind != ValueType::U16 {
@@ -259,7 +364,10 @@ fn check_end(table: Table, start: u32, count: usize) -> Result<(), EntryError> {
 
 /// Reads a data file's text; `name` is used in error messages.
 pub fn parse(name: &str, text: &str) -> Result<DataModel, DataFileError> {
-    let mut model = DataModel::default();
+    let mut model = DataModel {
+        files: FileData::only_given(),
+        ..DataModel::default()
+    };
     // Only what the file names exists: every table starts with nothing declared.
     for table in [
         Table::Coils,
@@ -342,6 +450,21 @@ pub fn render(entries: &[Entry]) -> String {
         text.push_str(&format!(
             "{} = {}\n",
             reference(entry.table, entry.address),
+            words.join(" ")
+        ));
+    }
+    text
+}
+
+/// The lines of a data file holding `runs` of file records: `file N record R = values`.
+pub fn render_files(runs: &[FileRecords]) -> String {
+    let mut text = String::new();
+    for run in runs {
+        let words: Vec<String> = run.values.iter().map(u16::to_string).collect();
+        text.push_str(&format!(
+            "file {} record {} = {}\n",
+            run.file,
+            run.record,
             words.join(" ")
         ));
     }
@@ -497,5 +620,44 @@ mod tests {
         // One line a run.
         assert!(rendered
             .starts_with("000001 = 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 1 0 1\n300009 = 10\n"));
+    }
+
+    #[test]
+    fn files_and_fifos_are_entries_too() {
+        let text = "file 4 record 1 = 3582 32\nfile 4 record 3 = 1.5 f32\nfifo 401247 = 440 4740\n";
+        let model = parse("d", text).unwrap();
+        assert_eq!(model.files.read(4, 1, 4), Ok(vec![3582, 32, 0x3FC0, 0]));
+        // Only the records named exist.
+        assert_eq!(
+            model.files.read(4, 0, 1),
+            Err(ExceptionCode::ILLEGAL_DATA_ADDRESS)
+        );
+        assert_eq!(model.fifos.read(1246), Ok(vec![440, 4740]));
+        assert_eq!(
+            model.fifos.read(1247),
+            Err(ExceptionCode::ILLEGAL_DATA_ADDRESS)
+        );
+        assert_eq!(
+            render_files(&model.files.runs()),
+            "file 4 record 1 = 3582 32 16320 0\n"
+        );
+        for (text, message) in [
+            ("file 0 record 1 = 1", "d:1: file 0 does not exist: files are numbered 1-65535"),
+            ("file 2 record 9999 = 1 2", "d:1: records 9999-10000 of file 2 run past record 9999"),
+            (
+                "file 2 record 5 = 1 2\nfile 2 record 6 = 3",
+                "d:2: record 6 of file 2 is given already on line 1: give each record once",
+            ),
+            ("fifo 300001 = 1", "d:1: a FIFO queue's pointer is one holding register, as in fifo 401247: '300001' is not"),
+            ("file 2 rec 5 = 1", "d:1: a file entry is file N record R = VALUE..., as in file 4 record 1 = 10 20"),
+        ] {
+            assert_eq!(parse("d", text).unwrap_err().to_string(), message);
+        }
+        // A queue longer than one answer carries is kept, and answered with exception 03.
+        let long = format!("fifo 400001 = {}", vec!["7"; 32].join(" "));
+        assert_eq!(
+            parse("d", &long).unwrap().fifos.read(0),
+            Err(ExceptionCode::ILLEGAL_DATA_VALUE)
+        );
     }
 }
