@@ -365,7 +365,7 @@ impl ByMap {
             ByMap::Read(plan) => read(settings, plan, &mut connection),
             ByMap::Write(writes, _) => {
                 let written = write(writes, &mut connection);
-                super::shared::tell_resent(&mut connection.master);
+                super::shared::tell_after_requests(&mut connection.master);
                 written
             }
         }

@@ -59,7 +59,7 @@ pub fn run(settings: &Settings, words: &RequestWords) -> Result<u8> {
         (_, None) => writes(settings, master, &plan, Emulate::MaskWrite, &mut out),
     };
     super::shared::tell_switches(settings, master);
-    super::shared::tell_resent(master);
+    super::shared::tell_after_requests(master);
     let code = code.map_err(|error| match error.downcast::<Error>() {
         Ok(error) => connection.explain(error).into(),
         Err(error) => error,
@@ -203,7 +203,8 @@ fn writes(
         _ => return Ok(0),
     };
     let reference = match first {
-        Request::MaskWriteRegister { and_mask, .. } => {
+        // One bit changed: that bit; any other masks: the register.
+        Request::MaskWriteRegister { and_mask, .. } if (!and_mask).count_ones() == 1 => {
             bit_reference(table, address, (!and_mask).trailing_zeros() as u8)
         }
         _ => reference(table, address).into(),

@@ -67,7 +67,7 @@ pub fn run(settings: &Settings, job: &job::Restore) -> Result<u8> {
             sent += 1;
             let answered = master.answer(slave, request).map(|_| ());
             super::shared::tell_switches(settings, master);
-            super::shared::tell_resent(master);
+            super::shared::tell_after_requests(master);
             answered
         });
     if matches!(outcome, Err(RunError::Master(MasterError::Interrupted))) {
@@ -95,7 +95,7 @@ pub fn run(settings: &Settings, job: &job::Restore) -> Result<u8> {
         return Ok(stop.exit_status());
     }
     super::shared::tell_switches(settings, master);
-    super::shared::tell_resent(master);
+    super::shared::tell_after_requests(master);
     let differences = outcome.map_err(|e| connection.explain(Error::from(e)))?;
     let written: usize = entries
         .iter()

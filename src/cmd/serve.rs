@@ -119,6 +119,18 @@ pub fn run(settings: &Settings, job: &job::Serve) -> Result<u8> {
                 .serve_tcp(listener, Arc::new(|error| mbtool::note!("mbtool: {error}")))?;
             Ok(0)
         }
+        Endpoint::Udp { host, port } | Endpoint::RtuOverUdp { host, port } => {
+            let socket = std::net::UdpSocket::bind((host.as_str(), *port))
+                .with_context(|| format!("cannot listen on UDP {host}:{port}"))?;
+            let address = socket.local_addr()?;
+            let over = match endpoint {
+                Endpoint::Udp { .. } => "Modbus/UDP".to_string(),
+                _ => format!("{mode} over UDP"),
+            };
+            mbtool::note!("mbtool: serving slave {ids_text} on {address} ({over}); Ctrl-C ends");
+            server.serve_udp(&socket)?;
+            Ok(0)
+        }
         Endpoint::Sim => Ok(0),
     }
 }

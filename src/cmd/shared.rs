@@ -138,9 +138,10 @@ pub fn tell_switches(settings: &Settings, master: &mut Master) {
     }
 }
 
-/// A line on stderr for each request that changes the device and was sent more than once:
-/// the answers to the earlier tries were lost, so the device may have carried out each.
-pub fn tell_resent(master: &mut Master) {
+/// A line on stderr for each request that changes the device and was sent more than once
+/// (the answers to the earlier tries were lost, so the device may have carried out each),
+/// and one for the datagrams that came from elsewhere than the device (over UDP).
+pub fn tell_after_requests(master: &mut Master) {
     for resent in master.take_resent() {
         mbtool::note!(
             "mbtool: function {:02} ({}) was sent to slave {} {} before an answer came: the device may have carried it out each time",
@@ -148,6 +149,14 @@ pub fn tell_resent(master: &mut Master) {
             mbtool_core::codec::function::name(resent.function),
             resent.slave,
             mbtool_core::master::run::times(resent.sent),
+        );
+    }
+    let foreign = master.foreign_datagrams();
+    if foreign > 0 {
+        mbtool::note!(
+            "mbtool: {foreign} datagram{} came from elsewhere than the device and {} passed over",
+            if foreign == 1 { "" } else { "s" },
+            if foreign == 1 { "was" } else { "were" },
         );
     }
 }

@@ -235,7 +235,10 @@ pub enum Role {
 /// The framing on the wire: TCP for tcp://, otherwise --mode (RTU by default). `endpoint`
 /// is `None` where the command has no port to go by (`encode`, a capture replayed).
 pub fn mode(options: &ConnectionSettings, endpoint: Option<&Endpoint>, role: Role) -> Result<Mode> {
-    let tcp_port = matches!(endpoint, Some(Endpoint::Tcp { .. } | Endpoint::Tls { .. }));
+    let tcp_port = matches!(
+        endpoint,
+        Some(Endpoint::Tcp { .. } | Endpoint::Tls { .. } | Endpoint::Udp { .. })
+    );
     match (tcp_port, options.mode, role) {
         (_, Some(mode), Role::Encode) => Ok(mode),
         (_, Some(Mode::Tcp), Role::Sniff) => Err(Error::usage(
@@ -247,7 +250,7 @@ pub fn mode(options: &ConnectionSettings, endpoint: Option<&Endpoint>, role: Rol
             scheme(endpoint)
         ))),
         (true, Some(_), _) => Err(Error::usage(format!(
-            "{} carries Modbus TCP frames: for RTU through a gateway use rtu+tcp://HOST:PORT",
+            "{} carries Modbus TCP frames: for RTU through a gateway use rtu+tcp://HOST:PORT or rtu+udp://HOST:PORT",
             scheme(endpoint)
         ))),
         (false, Some(Mode::Tcp), Role::Serve) => {
@@ -265,6 +268,7 @@ pub fn mode(options: &ConnectionSettings, endpoint: Option<&Endpoint>, role: Rol
 fn scheme(endpoint: Option<&Endpoint>) -> &'static str {
     match endpoint {
         Some(Endpoint::Tls { .. }) => "tls://",
+        Some(Endpoint::Udp { .. }) => "udp://",
         _ => "tcp://",
     }
 }

@@ -65,7 +65,7 @@ pub(super) fn tried(
                  settings, and the wiring (A and B swapped, no common ground)",
             )
         }
-        Endpoint::RtuOverTcp { .. } => (
+        Endpoint::RtuOverTcp { .. } | Endpoint::RtuOverUdp { .. } => (
             format!("through {endpoint} ({mode})"),
             "check the slave id, and the gateway's serial settings and wiring to the device",
         ),
@@ -73,7 +73,7 @@ pub(super) fn tried(
             "from the built-in slave (sim)".into(),
             "it answers as slave 17 only",
         ),
-        Endpoint::Tcp { .. } | Endpoint::Tls { .. } => (
+        Endpoint::Tcp { .. } | Endpoint::Tls { .. } | Endpoint::Udp { .. } => (
             format!("from {endpoint}"),
             "check the unit id (a gateway passes it on as the slave id) and that the device \
              behind it answers",

@@ -381,7 +381,10 @@ fn settings_of(cli: &mut Cli, origins: &Origins) -> Result<Settings, String> {
             stop_bits: serial.and_then(|s| s.stop_bits),
             timeout: timeout.unwrap_or(default_timeout),
             timeout_given: timeout.is_some(),
-            retries: taken.retries.and_then(|r| r.retries).unwrap_or(0),
+            retries: taken
+                .retries
+                .and_then(|r| r.retries)
+                .unwrap_or_else(|| default_retries(taken.port)),
             retry_non_idempotent: taken.repeat.is_some_and(|r| r.retry_non_idempotent),
             frame_gap: taken.exchange.and_then(|e| e.frame_gap),
             direction,
@@ -623,3 +626,15 @@ fn sweep_outside_scan(scan: bool, taken: &Taken, origins: &Origins) -> Option<St
 fn untaken_option(origins: &Origins) -> Option<String> {
     origins.untaken.clone()
 }
+
+/// Retries when `--retries` is not given: none, but over UDP, where a datagram lost is no
+/// fault of the device, two.
+fn default_retries(port: Option<&str>) -> u32 {
+    match port.map(Endpoint::parse) {
+        Some(Ok(Endpoint::Udp { .. } | Endpoint::RtuOverUdp { .. })) => UDP_RETRIES,
+        _ => 0,
+    }
+}
+
+/// Retries over UDP when `--retries` is not given.
+pub const UDP_RETRIES: u32 = 2;

@@ -251,6 +251,11 @@ impl Master {
         }
     }
 
+    /// How many datagrams came from elsewhere than the device (over UDP), passed over.
+    pub fn foreign_datagrams(&self) -> u64 {
+        self.transport.foreign_datagrams()
+    }
+
     /// The answers heard over TCP after their request had timed out, since last asked.
     pub fn take_late_answers(&mut self) -> Vec<LateAnswer> {
         std::mem::take(&mut self.late)
@@ -669,6 +674,12 @@ impl Master {
                         undecided = self.options.mode == Mode::Rtu;
                     } else {
                         self.framer.push(&chunk, &mut events);
+                    }
+                    if self.transport.is_datagram() {
+                        // A datagram's end ends what it carries: nothing of a frame goes
+                        // on into the next one.
+                        self.framer.gap(0, &mut events);
+                        undecided = false;
                     }
                 }
                 Err(error) => break Err(Some(error)),

@@ -10,6 +10,7 @@ use crate::slave::sim::SimTransport;
 use crate::transport::serial::Serial;
 use crate::transport::tcp::Tcp;
 use crate::transport::tls::{ClientTls, Tls, TlsSession};
+use crate::transport::udp::Udp;
 use crate::transport::{Endpoint, Transport};
 
 use super::{Master, MasterOptions};
@@ -62,6 +63,8 @@ pub fn transport(path: &PathSettings) -> io::Result<(Box<dyn Transport>, Option<
             let session = stream.session().cloned();
             (Box::new(stream), session)
         }
+        Endpoint::Udp { host, port } => (Box::new(Udp::connect(host, *port, false)?), None),
+        Endpoint::RtuOverUdp { host, port } => (Box::new(Udp::connect(host, *port, true)?), None),
         Endpoint::Sim => (Box::new(SimTransport::new(path.mode)), None),
     })
 }
@@ -71,7 +74,7 @@ pub fn master(path: &PathSettings) -> io::Result<(Master, Option<TlsSession>)> {
     let (transport, session) = transport(path)?;
     let serial_line = matches!(
         path.endpoint,
-        Endpoint::Serial(_) | Endpoint::RtuOverTcp { .. }
+        Endpoint::Serial(_) | Endpoint::RtuOverTcp { .. } | Endpoint::RtuOverUdp { .. }
     );
     let line = &path.line;
     let gap = path.frame_gap.unwrap_or(match path.mode {

@@ -267,6 +267,35 @@ impl Server {
         })
     }
 
+    /// Answers the datagrams that come to `socket`, each a whole frame, each to where it
+    /// came from; a datagram that holds no request is passed over.
+    pub fn serve_udp(&self, socket: &std::net::UdpSocket) -> io::Result<()> {
+        let mut rng = fastrand::Rng::with_seed(self.seed);
+        let mut datagram = [0u8; 2048];
+        loop {
+            let (len, from) = match socket.recv_from(&mut datagram) {
+                Ok(received) => received,
+                // A client gone, told by an earlier answer's ICMP: nothing for the others.
+                Err(e)
+                    if matches!(
+                        e.kind(),
+                        io::ErrorKind::Interrupted
+                            | io::ErrorKind::ConnectionRefused
+                            | io::ErrorKind::ConnectionReset
+                    ) =>
+                {
+                    continue
+                }
+                Err(e) => return Err(e),
+            };
+            let peer = from.to_string();
+            if let Some(answer) = self.answer_frame(&datagram[..len], &peer, &mut rng) {
+                // A client that cannot be reached asks again, or gives up: no matter here.
+                let _ = socket.send_to(&answer, from);
+            }
+        }
+    }
+
     /// Accepts TCP clients, each served on its own thread so that none can hold up
     /// another; over TLS, each after its handshake and with the rights of its role.
     pub fn serve_tcp(

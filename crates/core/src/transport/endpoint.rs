@@ -1,5 +1,5 @@
 //! The `--port` argument: a serial device, `tcp://HOST[:PORT]`, `tls://HOST[:PORT]`,
-//! `rtu+tcp://HOST:PORT`, or `sim`.
+//! `rtu+tcp://HOST:PORT`, `udp://HOST[:PORT]`, `rtu+udp://HOST:PORT`, or `sim`.
 
 use std::fmt;
 
@@ -31,6 +31,20 @@ pub enum Endpoint {
         /// TCP port of the gateway.
         port: u16,
     },
+    /// Modbus over UDP: MBAP frames, one a datagram.
+    Udp {
+        /// Host name or IP address.
+        host: String,
+        /// UDP port.
+        port: u16,
+    },
+    /// RTU frames in UDP datagrams, as serial device servers carry them.
+    RtuOverUdp {
+        /// Host name or IP address of the device server.
+        host: String,
+        /// UDP port of the device server.
+        port: u16,
+    },
     /// The built-in simulated slave, in process.
     Sim,
 }
@@ -43,6 +57,10 @@ impl fmt::Display for Endpoint {
             Endpoint::Tls { host, port } => write!(f, "tls://{}:{port}", Bracketed(host)),
             Endpoint::RtuOverTcp { host, port } => {
                 write!(f, "rtu+tcp://{}:{port}", Bracketed(host))
+            }
+            Endpoint::Udp { host, port } => write!(f, "udp://{}:{port}", Bracketed(host)),
+            Endpoint::RtuOverUdp { host, port } => {
+                write!(f, "rtu+udp://{}:{port}", Bracketed(host))
             }
             Endpoint::Sim => f.write_str("sim"),
         }
@@ -90,7 +108,7 @@ pub enum EndpointError {
         rest: String,
     },
     /// A port that is no number 1-65535.
-    #[error("{scheme}{rest}: '{port}' is not a TCP port (1-65535)")]
+    #[error("{scheme}{rest}: '{port}' is not a port number (1-65535)")]
     BadPort {
         /// The scheme as typed (`tcp://`, `rtu+tcp://`).
         scheme: &'static str,
@@ -99,7 +117,7 @@ pub enum EndpointError {
         /// The port as typed.
         port: String,
     },
-    /// An RTU-over-TCP gateway without a port: gateways have no standard one.
+    /// An RTU-over-TCP (or UDP) gateway without a port: gateways have no standard one.
     #[error("{scheme}{rest}: give the gateway's port, as in {scheme}{host}:4001")]
     NoPort {
         /// The scheme as typed (`tcp://`, `rtu+tcp://`).
@@ -110,7 +128,7 @@ pub enum EndpointError {
         host: String,
     },
     /// A `scheme://` that mbtool does not know.
-    #[error("'{0}': the port is a serial device, tcp://HOST[:PORT], tls://HOST[:PORT], rtu+tcp://HOST:PORT or sim")]
+    #[error("'{0}': the port is a serial device, tcp://HOST[:PORT], tls://HOST[:PORT], rtu+tcp://HOST:PORT, udp://HOST[:PORT], rtu+udp://HOST:PORT or sim")]
     UnknownScheme(String),
     /// An empty `--port`.
     #[error("--port is empty: give a serial device, tcp://HOST[:PORT] or sim")]
@@ -206,6 +224,14 @@ impl Endpoint {
         if let Some(rest) = text.strip_prefix("rtu+tcp://") {
             let (host, port) = host_port(rest, None, "rtu+tcp://", listening)?;
             return Ok(Endpoint::RtuOverTcp { host, port });
+        }
+        if let Some(rest) = text.strip_prefix("udp://") {
+            let (host, port) = host_port(rest, Some(MODBUS_TCP_PORT), "udp://", listening)?;
+            return Ok(Endpoint::Udp { host, port });
+        }
+        if let Some(rest) = text.strip_prefix("rtu+udp://") {
+            let (host, port) = host_port(rest, None, "rtu+udp://", listening)?;
+            return Ok(Endpoint::RtuOverUdp { host, port });
         }
         if text.contains("://") {
             return Err(EndpointError::UnknownScheme(text.to_string()));
@@ -318,7 +344,22 @@ mod tests {
                 port: 8802
             })
         );
-        assert!(Endpoint::parse("udp://x").is_err());
+        assert_eq!(
+            Endpoint::parse("udp://plc1"),
+            Ok(Endpoint::Udp {
+                host: "plc1".into(),
+                port: 502
+            })
+        );
+        assert_eq!(
+            Endpoint::parse_listen("rtu+udp://:4001"),
+            Ok(Endpoint::RtuOverUdp {
+                host: "127.0.0.1".into(),
+                port: 4001
+            })
+        );
+        assert!(Endpoint::parse("rtu+udp://gw").is_err());
+        assert!(Endpoint::parse("sctp://x").is_err());
         assert!(Endpoint::parse("tcp://x:99999").is_err());
     }
 }

@@ -7,6 +7,7 @@ pub mod rs485;
 pub mod serial;
 pub mod tcp;
 pub mod tls;
+pub mod udp;
 
 use std::io;
 use std::time::Instant;
@@ -34,6 +35,16 @@ pub trait Transport: Send {
     /// Whether bytes travel on a serial line (directly or through a transparent gateway),
     /// where silence between frames matters.
     fn is_serial_line(&self) -> bool;
+
+    /// Whether each receive is one datagram, whose end ends what it carries.
+    fn is_datagram(&self) -> bool {
+        false
+    }
+
+    /// How many datagrams came from elsewhere than the device asked, and were passed over.
+    fn foreign_datagrams(&self) -> u64 {
+        0
+    }
 }
 
 /// A TCP connection to the first address of `host` that answers within `timeout`, and
