@@ -1,10 +1,10 @@
 //! `mbtool gateway`: Modbus TCP clients bridged to a line, every transaction shown.
 
 use std::io::{self, Write};
-use std::net::TcpListener;
+use std::net::{TcpListener, UdpSocket};
 use std::sync::{mpsc, Arc, Mutex};
 
-use anyhow::Result;
+use anyhow::{Context, Result};
 
 use mbtool::connection::{self, Connector, Role};
 use mbtool::error::Error;
@@ -16,8 +16,14 @@ use mbtool_core::transport::Endpoint;
 
 use super::poll::{now, open_log, Log};
 
+/// A `--listen` bound: TCP clients connect to it, UDP clients send to it.
+enum Bound {
+    Tcp(TcpListener),
+    Udp(UdpSocket),
+}
+
 /// Every `--listen`, bound before anything else is done, with how its clients connect.
-fn listeners(settings: &Settings, job: &job::Gateway) -> Result<Vec<(TcpListener, Listening)>> {
+fn listeners(settings: &Settings, job: &job::Gateway) -> Result<Vec<(Bound, Listening)>> {
     if job.listen.is_empty() {
         return Err(Error::usage(
             "gateway needs --listen: where clients connect, tcp://0.0.0.0:502 (tcp://:1502 for this machine only)",
@@ -28,9 +34,12 @@ fn listeners(settings: &Settings, job: &job::Gateway) -> Result<Vec<(TcpListener
     for text in &job.listen {
         let endpoint = Endpoint::parse_listen(text)
             .map_err(|e| Error::usage(format!("--listen {text}: {e}")))?;
-        if !matches!(endpoint, Endpoint::Tcp { .. } | Endpoint::Tls { .. }) {
+        if !matches!(
+            endpoint,
+            Endpoint::Tcp { .. } | Endpoint::Tls { .. } | Endpoint::Udp { .. }
+        ) {
             return Err(Error::usage(format!(
-                "--listen {text}: clients connect over Modbus TCP: give tcp://ADDRESS[:PORT] or tls://ADDRESS[:PORT]"
+                "--listen {text}: clients come over Modbus TCP or UDP: give tcp://ADDRESS[:PORT], tls://ADDRESS[:PORT] or udp://ADDRESS[:PORT]"
             ))
             .into());
         }
@@ -43,7 +52,7 @@ fn listeners(settings: &Settings, job: &job::Gateway) -> Result<Vec<(TcpListener
         .find(|endpoint| matches!(endpoint, Endpoint::Tls { .. }));
     let plain = endpoints
         .iter()
-        .find(|endpoint| matches!(endpoint, Endpoint::Tcp { .. }));
+        .find(|endpoint| matches!(endpoint, Endpoint::Tcp { .. } | Endpoint::Udp { .. }));
     let security = match secure {
         Some(endpoint) => super::shared::security(settings, &job.roles, endpoint)?.map(Arc::new),
         None => super::shared::security(settings, &job.roles, &endpoints[0])?.map(Arc::new),
@@ -51,15 +60,22 @@ fn listeners(settings: &Settings, job: &job::Gateway) -> Result<Vec<(TcpListener
     let plain_role = super::shared::plain_role(&job.roles, plain, secure.is_some())?;
     let mut bound = Vec::new();
     for endpoint in endpoints {
-        let (Endpoint::Tcp { host, port } | Endpoint::Tls { host, port }) = &endpoint else {
-            continue;
-        };
-        let listener = connection::listen(&endpoint, host, *port)?;
         let listening = match (&endpoint, &security) {
             (Endpoint::Tls { .. }, Some(security)) => Listening::Secure(Arc::clone(security)),
             _ => Listening::Plain(plain_role.clone()),
         };
-        bound.push((listener, listening));
+        match &endpoint {
+            Endpoint::Tcp { host, port } | Endpoint::Tls { host, port } => {
+                let listener = connection::listen(&endpoint, host, *port)?;
+                bound.push((Bound::Tcp(listener), listening));
+            }
+            Endpoint::Udp { host, port } => {
+                let socket = UdpSocket::bind((host.as_str(), *port))
+                    .with_context(|| format!("cannot listen on UDP {host}:{port}"))?;
+                bound.push((Bound::Udp(socket), listening));
+            }
+            _ => {}
+        }
     }
     Ok(bound)
 }
@@ -166,7 +182,13 @@ pub fn run(settings: &Settings, job: &job::Gateway) -> Result<u8> {
     );
     let mut addresses = Vec::new();
     for (listener, listening) in &listeners {
-        let address = listener.local_addr()?;
+        let address = match listener {
+            Bound::Tcp(listener) => listener.local_addr()?,
+            Bound::Udp(socket) => {
+                addresses.push(format!("udp://{} (Modbus/UDP)", socket.local_addr()?));
+                continue;
+            }
+        };
         addresses.push(match listening {
             Listening::Secure(_) => format!("tls://{address} (Modbus/TCP Security)"),
             Listening::Plain(Some(role)) => {
@@ -186,7 +208,11 @@ pub fn run(settings: &Settings, job: &job::Gateway) -> Result<u8> {
         let on_error = Arc::clone(&report);
         std::thread::Builder::new().spawn(move || {
             let told = Arc::new(move |error: io::Error| on_error(Event::ClientClosed(&error)));
-            if let Err(error) = gateway.accept(listener, listening, told) {
+            let accepted = match listener {
+                Bound::Tcp(listener) => gateway.accept(listener, listening, told),
+                Bound::Udp(socket) => gateway.accept_udp(socket),
+            };
+            if let Err(error) = accepted {
                 mbtool::note!("mbtool: stopped listening: {error}");
             }
         })?;

@@ -214,6 +214,13 @@ impl GatewayWriter {
                     serde_json::json!({ "summary": "bad_clients", "closed": summary.bad_clients });
                 writeln!(out, "{line}")?;
             }
+            if summary.bad_datagrams > 0 {
+                let line = serde_json::json!({
+                    "summary": "bad_datagrams",
+                    "passed_over": summary.bad_datagrams
+                });
+                writeln!(out, "{line}")?;
+            }
             if summary.refused > 0 {
                 let line =
                     serde_json::json!({ "summary": "refused_clients", "refused": summary.refused });
@@ -238,6 +245,13 @@ impl GatewayWriter {
         ];
         for (count, why) in closed.into_iter().filter(|(count, _)| *count > 0) {
             writeln!(out, "{} {why}", super::plural(count as usize, "client"))?;
+        }
+        if summary.bad_datagrams > 0 {
+            writeln!(
+                out,
+                "{} passed over: no Modbus/UDP request",
+                super::plural(summary.bad_datagrams as usize, "datagram")
+            )?;
         }
         Ok(())
     }

@@ -5,6 +5,7 @@
 
 mod line;
 mod queue;
+mod udp;
 
 use std::collections::{BTreeMap, HashMap, VecDeque};
 use std::io::{self, Write};
@@ -314,6 +315,8 @@ pub struct Summary {
     pub units: BTreeMap<u8, Tally>,
     /// Clients closed for sending what is not Modbus TCP.
     pub bad_clients: u64,
+    /// Datagrams passed over for being no Modbus/UDP request.
+    pub bad_datagrams: u64,
     /// TLS clients refused: a failed or unfinished handshake, a role not allowed.
     pub refused: u64,
 }
@@ -409,12 +412,33 @@ impl Writing {
     }
 }
 
+/// Where a client's answers go.
+enum Answers {
+    /// A TCP client's writing thread.
+    Stream(mpsc::Sender<Vec<u8>>),
+    /// A UDP client: a datagram to where its requests came from.
+    Datagram {
+        socket: Arc<std::net::UdpSocket>,
+        to: std::net::SocketAddr,
+    },
+}
+
+impl Answers {
+    /// Hands `answer` on; whether it went.
+    fn send(&self, answer: Vec<u8>) -> bool {
+        match self {
+            Answers::Stream(writer) => writer.send(answer).is_ok(),
+            Answers::Datagram { socket, to } => socket.send_to(&answer, to).is_ok(),
+        }
+    }
+}
+
 /// Clients bridged to one line.
 pub struct Gateway {
     options: GatewayOptions,
     queue: FairQueue<Job>,
-    /// Where each connected client's answers go: its writing thread.
-    writers: Mutex<HashMap<ClientId, mpsc::Sender<Vec<u8>>>>,
+    /// Where each connected client's answers go.
+    writers: Mutex<HashMap<ClientId, Answers>>,
     summary: Mutex<Records>,
     report: Report,
     /// The id of the next client, whichever listener it comes to.
@@ -502,7 +526,7 @@ impl Gateway {
                 }
             }
         })?;
-        lock(&self.writers).insert(id, answers);
+        lock(&self.writers).insert(id, Answers::Stream(answers));
         let peer: Arc<str> = Arc::from(client.peer.as_str());
         let role: Option<Arc<str>> = role.map(Arc::from);
         let received = receive_frames(
@@ -557,7 +581,7 @@ impl Gateway {
                 let delivered = match (&transaction.answer, writer) {
                     (Some(answer), Some(writer)) => {
                         let bytes = line::mbap(transaction.unit, transaction.transaction, answer);
-                        writer.send(bytes).is_ok()
+                        writer.send(bytes)
                     }
                     (None, writer) => writer.is_some(),
                     (Some(_), None) => false,
