@@ -248,15 +248,8 @@ pub fn locate_answer(report: &mut FrameReport, request: &Request, pdu: &[u8]) {
             }
             return;
         }
-        Request::ReadFifoQueue { address } => (*address, 0),
         _ => return,
     };
-    if quantity == 0 {
-        // A FIFO answer: its pointer's address; its count is the queue's own.
-        report.fields.address = Some(address);
-        report.fields.reference = Some(reference(Table::HoldingRegisters, address));
-        return;
-    }
     let table = Table::of_function(request.function()).unwrap_or(Table::HoldingRegisters);
     report.fields.address = Some(address);
     report.fields.reference = Some(reference(table, address));

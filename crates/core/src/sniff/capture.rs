@@ -286,8 +286,8 @@ pub enum NotTcp {
     Other,
 }
 
-/// The TCP segment a packet carries, under its link, VLAN and IP headers.
-pub fn segment<'a>(packet: &Packet<'a>) -> Result<Segment<'a>, NotTcp> {
+/// A packet's headers read down to its transport, with its IP addresses.
+fn sliced<'a>(packet: &Packet<'a>) -> Result<(LaxSlicedPacket<'a>, IpAddr, IpAddr), NotTcp> {
     let data = packet.data;
     let family = |bytes: Option<&[u8]>, big: bool| -> Option<u32> {
         let bytes: [u8; 4] = bytes?.try_into().ok()?;
@@ -324,12 +324,18 @@ pub fn segment<'a>(packet: &Packet<'a>) -> Result<Segment<'a>, NotTcp> {
         ),
         _ => return Err(NotTcp::Other),
     };
+    Ok((sliced, source, destination))
+}
+
+/// The TCP segment a packet carries, under its link, VLAN and IP headers.
+pub fn segment<'a>(packet: &Packet<'a>) -> Result<Segment<'a>, NotTcp> {
+    let (sliced, source, destination) = sliced(packet)?;
     let Some(TransportSlice::Tcp(tcp)) = &sliced.transport else {
         return Err(NotTcp::Other);
     };
     let cut = packet
         .original_len
-        .saturating_sub(u32::try_from(data.len()).unwrap_or(u32::MAX));
+        .saturating_sub(u32::try_from(packet.data.len()).unwrap_or(u32::MAX));
     Ok(Segment {
         source: SocketAddr::new(source, tcp.source_port()),
         destination: SocketAddr::new(destination, tcp.destination_port()),
@@ -340,6 +346,31 @@ pub fn segment<'a>(packet: &Packet<'a>) -> Result<Segment<'a>, NotTcp> {
         acknowledgement: tcp.ack().then(|| tcp.acknowledgment_number()),
         payload: tcp.payload(),
         cut,
+    })
+}
+
+/// The UDP datagram of a packet.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Datagram<'a> {
+    /// Who sent it.
+    pub source: SocketAddr,
+    /// Who it went to.
+    pub destination: SocketAddr,
+    /// The payload as captured: whole, or cut by the snap length.
+    pub payload: &'a [u8],
+}
+
+/// The UDP datagram a packet carries, under its link, VLAN and IP headers; `None` for any
+/// other packet.
+pub fn datagram<'a>(packet: &Packet<'a>) -> Option<Datagram<'a>> {
+    let (sliced, source, destination) = sliced(packet).ok()?;
+    let Some(TransportSlice::Udp(udp)) = &sliced.transport else {
+        return None;
+    };
+    Some(Datagram {
+        source: SocketAddr::new(source, udp.source_port()),
+        destination: SocketAddr::new(destination, udp.destination_port()),
+        payload: udp.payload(),
     })
 }
 

@@ -1,14 +1,15 @@
 //! Modbus in a TCP capture: each connection's two directions put back in order
 //! (`reassembly`), framed by the codec's framer (MBAP, or RTU through a transparent gateway),
 //! each answer paired with its request by transaction and unit id, and the tally kept.
-//! Pure: packets in, records out.
+//! Modbus/UDP is read the same way, each pair of addresses a connection whose every
+//! datagram ends what it carries. Pure: packets in, records out.
 
 use std::collections::BTreeMap;
 use std::net::SocketAddr;
 
 use serde::Serialize;
 
-use super::capture::{segment, Packet};
+use super::capture::{datagram, segment, Datagram, Packet};
 use super::reassembly::{At, Piece, Stream};
 use super::session::{Counts, Filter, FrameRecord, Record, TcpPlace};
 use crate::codec::answer::{check, Mismatch};
@@ -40,7 +41,7 @@ pub const MODBUS_PORT: u16 = 502;
 pub struct PacketCounts {
     /// Every packet read.
     pub packets: u64,
-    /// Packets of TCP connections on a Modbus port.
+    /// Packets of TCP connections, and UDP datagrams, on a Modbus port.
     pub modbus: u64,
     /// Everything else, passed over: other ports, other protocols.
     pub other: u64,
@@ -111,6 +112,20 @@ struct Connection {
     pending: Vec<Pending>,
     /// FINs seen: at two, both sides are done.
     fins: u8,
+}
+
+/// The connection of `key` among `connections`, new or going on.
+fn connection(
+    connections: &mut BTreeMap<(SocketAddr, SocketAddr), Connection>,
+    mode: Mode,
+    key: (SocketAddr, SocketAddr),
+) -> &mut Connection {
+    connections.entry(key).or_insert_with(|| Connection {
+        to_server: Side::new(mode),
+        to_client: Side::new(mode),
+        pending: Vec::new(),
+        fins: 0,
+    })
 }
 
 /// A Modbus TCP capture's session: packets in, records out.
@@ -191,7 +206,10 @@ impl TcpSession {
         let first = *self.first_time.get_or_insert(packet.time_us);
         self.last_time = packet.time_us.max(first);
         let Ok(segment) = segment(packet) else {
-            self.packets.other += 1;
+            match datagram(packet) {
+                Some(datagram) => self.datagram(datagram, packet, out),
+                None => self.packets.other += 1,
+            }
             return;
         };
         let (client, server, from_client) = if self.ports.contains(&segment.destination.port()) {
@@ -226,13 +244,7 @@ impl TcpSession {
             // A new connection on the same addresses: the old one is over.
             self.close(key, false, out);
         }
-        let mode = self.mode;
-        let connection = self.connections.entry(key).or_insert_with(|| Connection {
-            to_server: Side::new(mode),
-            to_client: Side::new(mode),
-            pending: Vec::new(),
-            fins: 0,
-        });
+        let connection = connection(&mut self.connections, self.mode, key);
         let (side, other) = match from_client {
             true => (&mut connection.to_server, &mut connection.to_client),
             false => (&mut connection.to_client, &mut connection.to_server),
@@ -293,6 +305,51 @@ impl TcpSession {
                 self.close(key, false, out);
             }
         }
+    }
+
+    /// A UDP datagram: on a Modbus port, a frame of the connection of its two addresses,
+    /// its end ending what it carries; elsewhere, passed over (and counted where it reads
+    /// as MBAP).
+    fn datagram(&mut self, datagram: Datagram, packet: &Packet, out: &mut Vec<Record>) {
+        let (client, server, from_client) = if self.ports.contains(&datagram.destination.port())
+        {
+            (datagram.source, datagram.destination, true)
+        } else if self.ports.contains(&datagram.source.port()) {
+            (datagram.destination, datagram.source, false)
+        } else {
+            self.packets.other += 1;
+            if looks_like_mbap(datagram.payload) {
+                let server = datagram.source.port().min(datagram.destination.port());
+                *self.elsewhere.entry(server).or_default() += 1;
+            }
+            return;
+        };
+        self.packets.modbus += 1;
+        let now = (packet.time_us, packet.number);
+        let connection = connection(&mut self.connections, self.mode, (client, server));
+        let side = match from_client {
+            true => &mut connection.to_server,
+            false => &mut connection.to_client,
+        };
+        let mut pieces = vec![
+            Piece::Bytes {
+                data: datagram.payload.to_vec(),
+                at: now,
+            },
+            Piece::Gap(0),
+        ];
+        let mut found = std::mem::take(&mut self.found);
+        side.frame(&mut pieces, now, &mut found);
+        let place = TcpPlace {
+            client,
+            server,
+            from_client,
+            packet: packet.number,
+            request_packet: None,
+            response_time: None,
+        };
+        self.read_events(&mut found, place, out);
+        self.found = found;
     }
 
     /// The end of the capture: what every connection still holds is decided, and the
