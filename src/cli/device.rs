@@ -213,6 +213,9 @@ pub struct DumpArgs {
     /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
     pub slave: String,
     /// References or ranges of references to read (400001-400200 000001-000064)
+    ///
+    /// Records of a file are FILE:RECORD or FILE:FIRST-LAST (4:0-99, read with function 20),
+    /// written to the data file as `file 4 record 0 = ...` lines, which restore writes back
     #[arg(required = true, value_name = "RANGE")]
     pub ranges: Vec<String>,
     /// The data file to write [default: standard output]
@@ -250,6 +253,9 @@ pub struct RestoreArgs {
     /// Slave address: 1-247, or a unit id over TCP
     pub slave: String,
     /// The data file to write back
+    ///
+    /// Its coils and holding registers (05/06/15/16), and its file records (21); each read
+    /// back after
     pub file: std::path::PathBuf,
     /// Print the frames that would be sent, and send nothing
     #[arg(long)]

@@ -9,13 +9,21 @@ use mbtool::output::{self, plural};
 use mbtool::settings::{job, Settings};
 use mbtool_core::codec::ExceptionCode;
 use mbtool_core::master::backup::{self, Range};
+use mbtool_core::master::plan::parse_file_span;
 use mbtool_core::master::run::RunError;
 use mbtool_core::model::address::{parse_reference_span, AddressError};
 use mbtool_core::slave::datafile;
 
 pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
-    let ranges = job
-        .ranges
+    // Records of files are FILE:RECORD-RECORD; the rest are references.
+    let (file_texts, table_texts): (Vec<&String>, Vec<&String>) =
+        job.ranges.iter().partition(|text| text.contains(':'));
+    let spans = file_texts
+        .iter()
+        .map(|text| parse_file_span(text))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(Error::from)?;
+    let ranges = table_texts
         .iter()
         .map(|text| {
             parse_reference_span(text).map(|span| Range {
@@ -43,8 +51,18 @@ pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
         settings.data.max_per_request,
         &stop.flag,
     );
+    let files = match &dump {
+        Ok(dump) if !dump.interrupted && !spans.is_empty() => {
+            Some(backup::dump_files(&mut connection.master, slave, &spans))
+        }
+        _ => None,
+    };
     super::shared::tell_switches(settings, &mut connection.master);
     let dump = dump.map_err(|e| connection.explain(Error::from(e)))?;
+    let files = files
+        .transpose()
+        .map_err(|e| connection.explain(Error::from(e)))?
+        .unwrap_or_default();
     if dump.interrupted {
         let values: usize = dump.entries.iter().map(|e| e.values.len()).sum();
         mbtool::note!(
@@ -64,22 +82,44 @@ pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
             holes.join(", ")
         );
     }
-    if let (true, Some(hole)) = (dump.entries.is_empty(), dump.holes.first()) {
-        // Nothing at all exists there: that is the device's answer.
-        let refused = RunError::Exception {
-            slave,
-            function: hole.table.read_function(),
-            code: ExceptionCode::ILLEGAL_DATA_ADDRESS,
+    if !files.holes.is_empty() {
+        let holes: Vec<String> = files.holes.iter().map(output::backup::records_text).collect();
+        mbtool::note!(
+            "mbtool: slave {slave} has no such records (exception 02), left out: {}",
+            holes.join(", ")
+        );
+    }
+    // Nothing at all exists there: that is the device's answer.
+    if dump.entries.is_empty() && files.records.is_empty() {
+        let function = match (dump.holes.first(), files.holes.first()) {
+            (Some(hole), _) => Some(hole.table.read_function()),
+            (None, Some(_)) => Some(mbtool_core::codec::function::READ_FILE_RECORD),
+            (None, None) => None,
         };
-        return Err(Error::from(refused).into());
+        if let Some(function) = function {
+            let refused = RunError::Exception {
+                slave,
+                function,
+                code: ExceptionCode::ILLEGAL_DATA_ADDRESS,
+            };
+            return Err(Error::from(refused).into());
+        }
     }
     let (place, _) = connection.connector.tried_on(connection.master.path());
     let text = format!(
-        "# mbtool dump of slave {slave} {place}, {}\n{}",
+        "# mbtool dump of slave {slave} {place}, {}\n{}{}",
         output::backup::utc_now(),
-        datafile::render(&dump.entries)
+        datafile::render(&dump.entries),
+        datafile::render_files(&files.records)
     );
-    let values: usize = dump.entries.iter().map(|e| e.values.len()).sum();
+    let addresses: usize = dump.entries.iter().map(|e| e.values.len()).sum();
+    let records: usize = files.records.iter().map(|r| r.values.len()).sum();
+    let values = match (addresses, records) {
+        (addresses, 0) => format!("{addresses} addresses"),
+        (0, records) => format!("{records} records"),
+        (addresses, records) => format!("{addresses} addresses and {records} records"),
+    };
+    let requests = dump.requests + files.requests;
     let target = match &settings.output.file {
         Some(path) => {
             write_whole(path, text.as_bytes())
@@ -94,7 +134,7 @@ pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
         }
     };
     // Requests one after another: another master's write meanwhile falls between them.
-    let not_at_once = match dump.requests {
+    let not_at_once = match requests {
         0 | 1 => String::new(),
         _ => format!(
             " over {}, one after another: not a snapshot if another master wrote meanwhile",
@@ -102,8 +142,8 @@ pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
         ),
     };
     mbtool::note!(
-        "mbtool: dumped {values} addresses of slave {slave} to {target} in {}{not_at_once}",
-        plural(dump.requests as usize, "request")
+        "mbtool: dumped {values} of slave {slave} to {target} in {}{not_at_once}",
+        plural(requests as usize, "request")
     );
     // Addresses the device has and could not give are no holes: the dump lacks them, and
     // its status is the first one's exception.

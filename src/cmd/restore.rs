@@ -12,7 +12,7 @@ use mbtool::output::{
 };
 use mbtool::settings::{job, Settings};
 use mbtool_core::codec::{Frame, Mode, Pdu};
-use mbtool_core::master::backup::{restore_requests, verify};
+use mbtool_core::master::backup::{file_restore_requests, restore_requests, verify, verify_files};
 use mbtool_core::master::plan::parse_slave;
 use mbtool_core::master::run::RunError;
 use mbtool_core::master::MasterError;
@@ -29,10 +29,12 @@ pub fn run(settings: &Settings, job: &job::Restore) -> Result<u8> {
             entry.table.name()
         );
     }
-    let requests = restore_requests(&entries, settings.data.max_per_request);
+    let runs = model.files.runs();
+    let mut requests = restore_requests(&entries, settings.data.max_per_request);
+    requests.extend(file_restore_requests(&runs));
     if requests.is_empty() {
         return Err(Error::usage(format!(
-            "{file} holds no coils or holding registers to write"
+            "{file} holds no coils, holding registers or file records to write"
         ))
         .into());
     }
@@ -87,7 +89,12 @@ pub fn run(settings: &Settings, job: &job::Restore) -> Result<u8> {
         );
         return Ok(stop.exit_status());
     }
-    let outcome = outcome.and_then(|()| verify(master, slave, &entries));
+    let outcome = outcome
+        .and_then(|()| verify(master, slave, &entries))
+        .and_then(|mut differences| {
+            differences.extend(verify_files(master, slave, &runs)?);
+            Ok(differences)
+        });
     if matches!(outcome, Err(RunError::Master(MasterError::Interrupted))) {
         mbtool::note!(
             "mbtool: restore interrupted while reading back: every value of {file} was written to slave {slave}, but not all were read back; run restore again to check them"
@@ -101,7 +108,8 @@ pub fn run(settings: &Settings, job: &job::Restore) -> Result<u8> {
         .iter()
         .filter(|e| e.table.is_writable())
         .map(|e| e.values.len())
-        .sum();
+        .sum::<usize>()
+        + runs.iter().map(|run| run.values.len()).sum::<usize>();
     let mut out = output::stdout();
     for difference in &differences {
         writeln!(out, "{}", difference_text(difference))?;

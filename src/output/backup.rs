@@ -1,7 +1,7 @@
 //! What `dump` and `restore` say besides the data file: ranges of references, the time of
 //! a dump, and the values that read back differently.
 
-use mbtool_core::master::backup::Difference;
+use mbtool_core::master::backup::{Difference, Place};
 use mbtool_core::model::address::{reference, Table};
 
 /// `400011-400019`, or `400050` for one address.
@@ -23,16 +23,29 @@ pub fn utc_now() -> String {
 }
 
 /// `400010: wrote 5, read back 0`.
+/// A run of records as dump tells it: `file 4 records 0-99`.
+pub fn records_text(span: &mbtool_core::codec::FileSpan) -> String {
+    match span.count {
+        1 => format!("file {} record {}", span.file, span.record),
+        count => format!(
+            "file {} records {}-{}",
+            span.file,
+            span.record,
+            u32::from(span.record) + u32::from(count) - 1
+        ),
+    }
+}
+
 pub fn difference_text(difference: &Difference) -> String {
     let found = match difference.found {
         Some(value) => format!("read back {value}"),
         None => "the device refused to read it back (exception 02)".to_string(),
     };
-    format!(
-        "{}: wrote {}, {found}",
-        reference(difference.table, difference.address),
-        difference.wanted
-    )
+    let place = match difference.place {
+        Place::Address(table, address) => reference(table, address).to_string(),
+        Place::Record { file, record } => format!("file {file} record {record}"),
+    };
+    format!("{place}: wrote {}, {found}", difference.wanted)
 }
 
 #[cfg(test)]

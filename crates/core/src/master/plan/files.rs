@@ -69,39 +69,78 @@ pub(super) fn read_file_plan(slave: u8, words: &[String], options: PlanOptions) 
         let count =
             parse_in_range(&pair[1], 1, 10000, "COUNT").map_err(PlanError::Count)? as usize * width;
         check_last(&pair[0], record, count)?;
-        let most = usize::from(MAX_FILE_READ_REGISTERS);
-        let mut at = 0;
-        while at < count {
-            let take = most.min(count - at);
-            spans.push(FileSpan {
-                file,
-                record: record + at as u16,
-                count: take as u16,
-            });
-            at += take;
-        }
+        spans.push(FileSpan {
+            file,
+            record,
+            count: count as u16,
+        });
     }
-    let mut requests = Vec::new();
-    let mut groups: Vec<FileSpan> = Vec::new();
-    let mut answer = 0;
-    for span in spans {
-        let len = read_answer_group_len(span.count);
-        if !groups.is_empty() && (answer + len > MAX_FILE_READ_BYTES || groups.len() == MAX_GROUPS)
-        {
-            requests.push(Request::ReadFileRecord {
-                groups: std::mem::take(&mut groups),
-            });
-            answer = 0;
-        }
-        groups.push(span);
-        answer += len;
-    }
-    requests.push(Request::ReadFileRecord { groups });
+    let requests = file_read_requests(&spans);
     Ok(Plan {
         slave,
         requests,
         reads: None,
         bits: None,
+    })
+}
+
+/// The requests that read `spans` of records: each cut where one answer cannot hold it,
+/// the groups put into as few requests as the limits allow, in order.
+pub fn file_read_requests(spans: &[FileSpan]) -> Vec<Request> {
+    let most = MAX_FILE_READ_REGISTERS;
+    let groups = spans.iter().flat_map(|span| {
+        (0..span.count).step_by(usize::from(most)).map(move |at| FileSpan {
+            file: span.file,
+            record: span.record + at,
+            count: most.min(span.count - at),
+        })
+    });
+    let mut requests = Vec::new();
+    let mut request: Vec<FileSpan> = Vec::new();
+    let mut answer = 0;
+    for group in groups {
+        let len = read_answer_group_len(group.count);
+        if !request.is_empty() && (answer + len > MAX_FILE_READ_BYTES || request.len() == MAX_GROUPS)
+        {
+            requests.push(Request::ReadFileRecord {
+                groups: std::mem::take(&mut request),
+            });
+            answer = 0;
+        }
+        request.push(group);
+        answer += len;
+    }
+    if !request.is_empty() {
+        requests.push(Request::ReadFileRecord { groups: request });
+    }
+    requests
+}
+
+/// `FILE:RECORD` or `FILE:FIRST-LAST`, as `dump` takes records of a file: `4:0-99`.
+pub fn parse_file_span(text: &str) -> Result<FileSpan> {
+    let (place, last) = match text.split_once('-') {
+        Some((place, last)) => (place, Some(last)),
+        None => (text, None),
+    };
+    let (file, record) = parse_place(place)?;
+    let count = match last {
+        None => 1,
+        Some(last) => {
+            let last = parse_int(last)
+                .ok()
+                .filter(|last| (i128::from(record)..=i128::from(MAX_RECORD)).contains(last))
+                .ok_or_else(|| {
+                    records(format!(
+                        "{text}: the last record is {record}-{MAX_RECORD}, as in 4:0-99"
+                    ))
+                })?;
+            last as u16 - record + 1
+        }
+    };
+    Ok(FileSpan {
+        file,
+        record,
+        count,
     })
 }
 

@@ -17,6 +17,7 @@ use crate::model::address::{
 use crate::model::values::{parse_coil, ByteOrder, ValueType};
 
 pub use error::PlanError;
+pub use files::{file_read_requests, parse_file_span};
 
 type Result<T, E = PlanError> = std::result::Result<T, E>;
 

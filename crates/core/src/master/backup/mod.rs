@@ -2,7 +2,12 @@
 //! limits allow and splits a request that is refused with exception 02 (halves, down to
 //! single addresses), so that every address that exists is read and only the holes are
 //! left out. `restore` writes the coils and holding registers of data file entries with the
-//! fewest requests, then reads them back and tells what differs.
+//! fewest requests, then reads them back and tells what differs. Records of files go the
+//! same way where asked (`files`).
+
+mod files;
+
+pub use files::{dump_files, file_restore_requests, verify_files, FileDump};
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -277,13 +282,25 @@ pub fn restore_requests(entries: &[Entry], max: Option<u16>) -> Vec<Request> {
     requests
 }
 
-/// An address whose value read back is not the one written.
+/// Where a value of a backup is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Place {
+    /// An address of a table, 0-based.
+    Address(Table, u16),
+    /// A record of a file.
+    Record {
+        /// The file.
+        file: u16,
+        /// The record.
+        record: u16,
+    },
+}
+
+/// A value read back that is not the one written.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Difference {
-    /// The table.
-    pub table: Table,
-    /// The address, 0-based.
-    pub address: u16,
+    /// Where it is.
+    pub place: Place,
     /// The value written (a coil as 1 or 0).
     pub wanted: u16,
     /// The value read back; `None` where the device refused to read it (exception 02).
@@ -321,8 +338,7 @@ pub fn verify(
         for (i, (wanted, found)) in wanted.iter().zip(found).enumerate() {
             if found != Some(*wanted) {
                 differences.push(Difference {
-                    table: entry.table,
-                    address: entry.address + i as u16,
+                    place: Place::Address(entry.table, entry.address + i as u16),
                     wanted: *wanted,
                     found,
                 });
