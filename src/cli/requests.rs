@@ -429,14 +429,19 @@ pub struct WriteByReferenceArgs {
     pub reference: Option<String>,
     /// The values: registers each converted by --type; coils 0/1/on/off, or 10110
     ///
-    /// Coils each 0/1/on/off, or one bit string such as 10110; with --map, more NAME=VALUE
-    #[arg(required_unless_present = "map", allow_negative_numbers = true)]
+    /// Coils each 0/1/on/off, or one bit string such as 10110; left out for a bit given its
+    /// value in place (400108.05=1); with --map, more NAME=VALUE
+    #[arg(allow_negative_numbers = true)]
     pub values: Vec<String>,
     /// Write points of a register map by name: NAME=VALUE, scale and offset taken back out
     #[arg(long, value_name = "FILE")]
     pub map: Option<std::path::PathBuf>,
-    /// Force the function: 5 or 15 for coils, 6 or 16 for registers
-    #[arg(long, value_name = "CODE", value_parser = ["5", "6", "15", "16"])]
+    /// Force the function: 5 or 15 for coils, 6 or 16 for registers, 22 for a bit
+    ///
+    /// With 22, a bit of a register is set with function 22 alone: a device that does not
+    /// know it answers exception 01, where without --function it is read (03) and written
+    /// (06) instead
+    #[arg(long, value_name = "CODE", value_parser = ["5", "6", "15", "16", "22"])]
     pub function: Option<String>,
 }
 

@@ -13,7 +13,7 @@ use mbtool::settings::job::{RequestWords, TypedWords};
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Mode, Pdu, Request};
 use mbtool_core::describe::describe_frame;
-use mbtool_core::master::plan::Plan;
+use mbtool_core::master::plan::{How, Plan};
 use mbtool_core::master::range::{read_range, Items};
 use mbtool_core::master::run::Written;
 use mbtool_core::master::{Master, Reply};
@@ -54,7 +54,14 @@ pub fn run(settings: &Settings, words: &RequestWords) -> Result<u8> {
         (TypedWords::Raw { .. }, _) => raw(settings, master, &plan, mode, &mut out),
         (TypedWords::ReadFile { .. }, _) => read_files(settings, master, &plan, &mut out),
         (TypedWords::ReadFifo { .. }, _) => read_fifo(settings, master, &plan, &mut out),
-        (TypedWords::MaskWrite { .. }, _) => writes(settings, master, &plan, Emulate::No, &mut out),
+        (
+            TypedWords::MaskWrite { .. }
+            | TypedWords::Write {
+                how: How::Function(Some(22)),
+                ..
+            },
+            _,
+        ) => writes(settings, master, &plan, Emulate::No, &mut out),
         (_, Some((table, address))) => reads(settings, master, &plan, table, address, &mut out),
         (_, None) => writes(settings, master, &plan, Emulate::MaskWrite, &mut out),
     };

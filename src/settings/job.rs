@@ -579,6 +579,12 @@ fn read_by_reference(a: cli::ReadByReferenceArgs, command: &str) -> Result<Reque
 /// that is no slave id is an assignment, SLAVE left out.
 fn write_by_reference(a: cli::WriteByReferenceArgs) -> Result<RequestWords, String> {
     let Some(file) = a.map else {
+        let reference = a.reference.as_deref().unwrap_or_default();
+        if a.values.is_empty() && !reference.contains('=') {
+            return Err(format!(
+                "write needs VALUES after {reference}, or a bit given its value in place (400108.05=1)"
+            ));
+        }
         return Ok(RequestWords::Typed(TypedWords::Write {
             slave: a.slave,
             address: a.reference.unwrap_or_default(),

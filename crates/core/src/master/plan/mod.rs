@@ -503,12 +503,26 @@ pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
             how,
         } => {
             let slave = parse_slave(slave, true, options.tcp)?;
+            // A bit may be given its value in place: 400108.05=1.
+            let assigned;
+            let (address, values) = match address.split_once('=') {
+                Some((address, value)) if values.is_empty() => {
+                    assigned = [value.to_string()];
+                    (address, &assigned[..])
+                }
+                _ => (address, values),
+            };
             if let (address, Some(bit)) = split_bit(address)? {
-                if matches!(how, How::Function(Some(_))) {
+                if !matches!(how, How::Function(None | Some(22))) {
                     return Err(PlanError::BitWrite);
                 }
                 let span = span(address, table, Access::WriteOne)?;
                 return bit_write_plan(slave, span, bit, values);
+            }
+            if how == How::Function(Some(22)) {
+                return Err(PlanError::Records(
+                    "--function 22 writes a bit of a register: give one as 400108.05=1".into(),
+                ));
             }
             if how == How::OneRegister {
                 let width = options.value_type.width();
