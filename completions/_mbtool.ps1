@@ -82,6 +82,11 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('write-register', 'write-register', [CompletionResultType]::ParameterValue, 'Write one holding register (function 06)')
             [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
             [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
+            [CompletionResult]::new('read-file', 'read-file', [CompletionResultType]::ParameterValue, 'Read records of files (function 20)')
+            [CompletionResult]::new('write-file', 'write-file', [CompletionResultType]::ParameterValue, 'Write records of a file (function 21)')
+            [CompletionResult]::new('mask-write', 'mask-write', [CompletionResultType]::ParameterValue, 'Change bits of a holding register in one request (function 22)')
+            [CompletionResult]::new('read-write', 'read-write', [CompletionResultType]::ParameterValue, 'Write registers, then read registers, in one transaction (function 23)')
+            [CompletionResult]::new('read-fifo', 'read-fifo', [CompletionResultType]::ParameterValue, 'Read a FIFO queue (function 24)')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
             [CompletionResult]::new('scan', 'scan', [CompletionResultType]::ParameterValue, 'Find the slaves on a line and the settings they use')
             [CompletionResult]::new('watch', 'watch', [CompletionResultType]::ParameterValue, 'Watch values live, full screen: min, max, trend, changes')
@@ -643,7 +648,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         }
         'mbtool;write' {
             [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out')
-            [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Force the function: 5 or 15 for coils, 6 or 16 for registers')
+            [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Force the function: 5 or 15 for coils, 6 or 16 for registers, 22 for a bit')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
@@ -675,6 +680,192 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
             [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
             [CompletionResult]::new('--retry-non-idempotent', '--retry-non-idempotent', [CompletionResultType]::ParameterName, 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions')
+            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'mbtool;read-file' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--parity', '--parity', [CompletionResultType]::ParameterName, 'Parity [default: even]')
+            [CompletionResult]::new('--data-bits', '--data-bits', [CompletionResultType]::ParameterName, 'Serial data bits [default: 8, 7 in ASCII mode]')
+            [CompletionResult]::new('--stop-bits', '--stop-bits', [CompletionResultType]::ParameterName, 'Serial stop bits [default: 1 with parity, 2 without]')
+            [CompletionResult]::new('--rs485-delay-before', '--rs485-delay-before', [CompletionResultType]::ParameterName, 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rs485-delay-after', '--rs485-delay-after', [CompletionResultType]::ParameterName, 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Response timeout: 500ms, 1s [default: 1s]')
+            [CompletionResult]::new('--frame-gap', '--frame-gap', [CompletionResultType]::ParameterName, 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none')
+            [CompletionResult]::new('--retries', '--retries', [CompletionResultType]::ParameterName, 'Retries after a timeout or a bad answer')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
+            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits (A: the most significant byte)')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
+            [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'mbtool;write-file' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--parity', '--parity', [CompletionResultType]::ParameterName, 'Parity [default: even]')
+            [CompletionResult]::new('--data-bits', '--data-bits', [CompletionResultType]::ParameterName, 'Serial data bits [default: 8, 7 in ASCII mode]')
+            [CompletionResult]::new('--stop-bits', '--stop-bits', [CompletionResultType]::ParameterName, 'Serial stop bits [default: 1 with parity, 2 without]')
+            [CompletionResult]::new('--rs485-delay-before', '--rs485-delay-before', [CompletionResultType]::ParameterName, 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rs485-delay-after', '--rs485-delay-after', [CompletionResultType]::ParameterName, 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Response timeout: 500ms, 1s [default: 1s]')
+            [CompletionResult]::new('--frame-gap', '--frame-gap', [CompletionResultType]::ParameterName, 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none')
+            [CompletionResult]::new('--retries', '--retries', [CompletionResultType]::ParameterName, 'Retries after a timeout or a bad answer')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
+            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits (A: the most significant byte)')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
+            [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--retry-non-idempotent', '--retry-non-idempotent', [CompletionResultType]::ParameterName, 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'mbtool;mask-write' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--parity', '--parity', [CompletionResultType]::ParameterName, 'Parity [default: even]')
+            [CompletionResult]::new('--data-bits', '--data-bits', [CompletionResultType]::ParameterName, 'Serial data bits [default: 8, 7 in ASCII mode]')
+            [CompletionResult]::new('--stop-bits', '--stop-bits', [CompletionResultType]::ParameterName, 'Serial stop bits [default: 1 with parity, 2 without]')
+            [CompletionResult]::new('--rs485-delay-before', '--rs485-delay-before', [CompletionResultType]::ParameterName, 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rs485-delay-after', '--rs485-delay-after', [CompletionResultType]::ParameterName, 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Response timeout: 500ms, 1s [default: 1s]')
+            [CompletionResult]::new('--frame-gap', '--frame-gap', [CompletionResultType]::ParameterName, 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none')
+            [CompletionResult]::new('--retries', '--retries', [CompletionResultType]::ParameterName, 'Retries after a timeout or a bad answer')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
+            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address counts from: 0 (protocol address) or 1 (register number)')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
+            [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--retry-non-idempotent', '--retry-non-idempotent', [CompletionResultType]::ParameterName, 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions')
+            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'mbtool;read-write' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--parity', '--parity', [CompletionResultType]::ParameterName, 'Parity [default: even]')
+            [CompletionResult]::new('--data-bits', '--data-bits', [CompletionResultType]::ParameterName, 'Serial data bits [default: 8, 7 in ASCII mode]')
+            [CompletionResult]::new('--stop-bits', '--stop-bits', [CompletionResultType]::ParameterName, 'Serial stop bits [default: 1 with parity, 2 without]')
+            [CompletionResult]::new('--rs485-delay-before', '--rs485-delay-before', [CompletionResultType]::ParameterName, 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rs485-delay-after', '--rs485-delay-after', [CompletionResultType]::ParameterName, 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Response timeout: 500ms, 1s [default: 1s]')
+            [CompletionResult]::new('--frame-gap', '--frame-gap', [CompletionResultType]::ParameterName, 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none')
+            [CompletionResult]::new('--retries', '--retries', [CompletionResultType]::ParameterName, 'Retries after a timeout or a bad answer')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
+            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address counts from: 0 (protocol address) or 1 (register number)')
+            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits (A: the most significant byte)')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
+            [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--retry-non-idempotent', '--retry-non-idempotent', [CompletionResultType]::ParameterName, 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions')
+            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'mbtool;read-fifo' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--parity', '--parity', [CompletionResultType]::ParameterName, 'Parity [default: even]')
+            [CompletionResult]::new('--data-bits', '--data-bits', [CompletionResultType]::ParameterName, 'Serial data bits [default: 8, 7 in ASCII mode]')
+            [CompletionResult]::new('--stop-bits', '--stop-bits', [CompletionResultType]::ParameterName, 'Serial stop bits [default: 1 with parity, 2 without]')
+            [CompletionResult]::new('--rs485-delay-before', '--rs485-delay-before', [CompletionResultType]::ParameterName, 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rs485-delay-after', '--rs485-delay-after', [CompletionResultType]::ParameterName, 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Response timeout: 500ms, 1s [default: 1s]')
+            [CompletionResult]::new('--frame-gap', '--frame-gap', [CompletionResultType]::ParameterName, 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none')
+            [CompletionResult]::new('--retries', '--retries', [CompletionResultType]::ParameterName, 'Retries after a timeout or a bad answer')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
+            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address counts from: 0 (protocol address) or 1 (register number)')
+            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits (A: the most significant byte)')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
+            [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
             [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
@@ -997,6 +1188,11 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('write-register', 'write-register', [CompletionResultType]::ParameterValue, 'Write one holding register (function 06)')
             [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
             [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
+            [CompletionResult]::new('read-file', 'read-file', [CompletionResultType]::ParameterValue, 'Read records of files (function 20)')
+            [CompletionResult]::new('write-file', 'write-file', [CompletionResultType]::ParameterValue, 'Write records of a file (function 21)')
+            [CompletionResult]::new('mask-write', 'mask-write', [CompletionResultType]::ParameterValue, 'Change bits of a holding register in one request (function 22)')
+            [CompletionResult]::new('read-write', 'read-write', [CompletionResultType]::ParameterValue, 'Write registers, then read registers, in one transaction (function 23)')
+            [CompletionResult]::new('read-fifo', 'read-fifo', [CompletionResultType]::ParameterValue, 'Read a FIFO queue (function 24)')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
@@ -1228,7 +1424,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         }
         'mbtool;encode;write' {
             [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out')
-            [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Force the function: 5 or 15 for coils, 6 or 16 for registers')
+            [CompletionResult]::new('--function', '--function', [CompletionResultType]::ParameterName, 'Force the function: 5 or 15 for coils, 6 or 16 for registers, 22 for a bit')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
@@ -1241,6 +1437,97 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
             [CompletionResult]::new('--retry-non-idempotent', '--retry-non-idempotent', [CompletionResultType]::ParameterName, 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions')
+            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'mbtool;encode;read-file' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits (A: the most significant byte)')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'mbtool;encode;write-file' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits (A: the most significant byte)')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--retry-non-idempotent', '--retry-non-idempotent', [CompletionResultType]::ParameterName, 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'mbtool;encode;mask-write' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address counts from: 0 (protocol address) or 1 (register number)')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--retry-non-idempotent', '--retry-non-idempotent', [CompletionResultType]::ParameterName, 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions')
+            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'mbtool;encode;read-write' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address counts from: 0 (protocol address) or 1 (register number)')
+            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits (A: the most significant byte)')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--retry-non-idempotent', '--retry-non-idempotent', [CompletionResultType]::ParameterName, 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions')
+            [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
+        'mbtool;encode;read-fifo' {
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--address-base', '--address-base', [CompletionResultType]::ParameterName, 'What a bare address counts from: 0 (protocol address) or 1 (register number)')
+            [CompletionResult]::new('-t', '-t', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--type', '--type', [CompletionResultType]::ParameterName, 'Register value type, for values read and values to write')
+            [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits (A: the most significant byte)')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
             [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
@@ -1278,6 +1565,11 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('write-register', 'write-register', [CompletionResultType]::ParameterValue, 'Write one holding register (function 06)')
             [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
             [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
+            [CompletionResult]::new('read-file', 'read-file', [CompletionResultType]::ParameterValue, 'Read records of files (function 20)')
+            [CompletionResult]::new('write-file', 'write-file', [CompletionResultType]::ParameterValue, 'Write records of a file (function 21)')
+            [CompletionResult]::new('mask-write', 'mask-write', [CompletionResultType]::ParameterValue, 'Change bits of a holding register in one request (function 22)')
+            [CompletionResult]::new('read-write', 'read-write', [CompletionResultType]::ParameterValue, 'Write registers, then read registers, in one transaction (function 23)')
+            [CompletionResult]::new('read-fifo', 'read-fifo', [CompletionResultType]::ParameterValue, 'Read a FIFO queue (function 24)')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
             [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
@@ -1310,6 +1602,21 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;encode;help;write' {
+            break
+        }
+        'mbtool;encode;help;read-file' {
+            break
+        }
+        'mbtool;encode;help;write-file' {
+            break
+        }
+        'mbtool;encode;help;mask-write' {
+            break
+        }
+        'mbtool;encode;help;read-write' {
+            break
+        }
+        'mbtool;encode;help;read-fifo' {
             break
         }
         'mbtool;encode;help;raw' {
@@ -1496,6 +1803,11 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('write-register', 'write-register', [CompletionResultType]::ParameterValue, 'Write one holding register (function 06)')
             [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
             [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
+            [CompletionResult]::new('read-file', 'read-file', [CompletionResultType]::ParameterValue, 'Read records of files (function 20)')
+            [CompletionResult]::new('write-file', 'write-file', [CompletionResultType]::ParameterValue, 'Write records of a file (function 21)')
+            [CompletionResult]::new('mask-write', 'mask-write', [CompletionResultType]::ParameterValue, 'Change bits of a holding register in one request (function 22)')
+            [CompletionResult]::new('read-write', 'read-write', [CompletionResultType]::ParameterValue, 'Write registers, then read registers, in one transaction (function 23)')
+            [CompletionResult]::new('read-fifo', 'read-fifo', [CompletionResultType]::ParameterValue, 'Read a FIFO queue (function 24)')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
             [CompletionResult]::new('scan', 'scan', [CompletionResultType]::ParameterValue, 'Find the slaves on a line and the settings they use')
             [CompletionResult]::new('watch', 'watch', [CompletionResultType]::ParameterValue, 'Watch values live, full screen: min, max, trend, changes')
@@ -1542,6 +1854,21 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;help;write' {
+            break
+        }
+        'mbtool;help;read-file' {
+            break
+        }
+        'mbtool;help;write-file' {
+            break
+        }
+        'mbtool;help;mask-write' {
+            break
+        }
+        'mbtool;help;read-write' {
+            break
+        }
+        'mbtool;help;read-fifo' {
             break
         }
         'mbtool;help;raw' {

@@ -40,6 +40,9 @@ _mbtool() {
             mbtool,info)
                 cmd="mbtool__subcmd__info"
                 ;;
+            mbtool,mask-write)
+                cmd="mbtool__subcmd__mask__subcmd__write"
+                ;;
             mbtool,poll)
                 cmd="mbtool__subcmd__poll"
                 ;;
@@ -58,6 +61,12 @@ _mbtool() {
             mbtool,read-discrete-inputs)
                 cmd="mbtool__subcmd__read__subcmd__inputs"
                 ;;
+            mbtool,read-fifo)
+                cmd="mbtool__subcmd__read__subcmd__fifo"
+                ;;
+            mbtool,read-file)
+                cmd="mbtool__subcmd__read__subcmd__file"
+                ;;
             mbtool,read-holding)
                 cmd="mbtool__subcmd__read__subcmd__holding"
                 ;;
@@ -72,6 +81,9 @@ _mbtool() {
                 ;;
             mbtool,read-inputs)
                 cmd="mbtool__subcmd__read__subcmd__inputs"
+                ;;
+            mbtool,read-write)
+                cmd="mbtool__subcmd__read__subcmd__write"
                 ;;
             mbtool,restore)
                 cmd="mbtool__subcmd__restore"
@@ -97,6 +109,9 @@ _mbtool() {
             mbtool,write-coils)
                 cmd="mbtool__subcmd__write__subcmd__coils"
                 ;;
+            mbtool,write-file)
+                cmd="mbtool__subcmd__write__subcmd__file"
+                ;;
             mbtool,write-register)
                 cmd="mbtool__subcmd__write__subcmd__register"
                 ;;
@@ -105,6 +120,9 @@ _mbtool() {
                 ;;
             mbtool__subcmd__encode,help)
                 cmd="mbtool__subcmd__encode__subcmd__help"
+                ;;
+            mbtool__subcmd__encode,mask-write)
+                cmd="mbtool__subcmd__encode__subcmd__mask__subcmd__write"
                 ;;
             mbtool__subcmd__encode,raw)
                 cmd="mbtool__subcmd__encode__subcmd__raw"
@@ -117,6 +135,12 @@ _mbtool() {
                 ;;
             mbtool__subcmd__encode,read-discrete-inputs)
                 cmd="mbtool__subcmd__encode__subcmd__read__subcmd__inputs"
+                ;;
+            mbtool__subcmd__encode,read-fifo)
+                cmd="mbtool__subcmd__encode__subcmd__read__subcmd__fifo"
+                ;;
+            mbtool__subcmd__encode,read-file)
+                cmd="mbtool__subcmd__encode__subcmd__read__subcmd__file"
                 ;;
             mbtool__subcmd__encode,read-holding)
                 cmd="mbtool__subcmd__encode__subcmd__read__subcmd__holding"
@@ -133,6 +157,9 @@ _mbtool() {
             mbtool__subcmd__encode,read-inputs)
                 cmd="mbtool__subcmd__encode__subcmd__read__subcmd__inputs"
                 ;;
+            mbtool__subcmd__encode,read-write)
+                cmd="mbtool__subcmd__encode__subcmd__read__subcmd__write"
+                ;;
             mbtool__subcmd__encode,write)
                 cmd="mbtool__subcmd__encode__subcmd__write"
                 ;;
@@ -141,6 +168,9 @@ _mbtool() {
                 ;;
             mbtool__subcmd__encode,write-coils)
                 cmd="mbtool__subcmd__encode__subcmd__write__subcmd__coils"
+                ;;
+            mbtool__subcmd__encode,write-file)
+                cmd="mbtool__subcmd__encode__subcmd__write__subcmd__file"
                 ;;
             mbtool__subcmd__encode,write-register)
                 cmd="mbtool__subcmd__encode__subcmd__write__subcmd__register"
@@ -151,6 +181,9 @@ _mbtool() {
             mbtool__subcmd__encode__subcmd__help,help)
                 cmd="mbtool__subcmd__encode__subcmd__help__subcmd__help"
                 ;;
+            mbtool__subcmd__encode__subcmd__help,mask-write)
+                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__mask__subcmd__write"
+                ;;
             mbtool__subcmd__encode__subcmd__help,raw)
                 cmd="mbtool__subcmd__encode__subcmd__help__subcmd__raw"
                 ;;
@@ -159,6 +192,12 @@ _mbtool() {
                 ;;
             mbtool__subcmd__encode__subcmd__help,read-coils)
                 cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__coils"
+                ;;
+            mbtool__subcmd__encode__subcmd__help,read-fifo)
+                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__fifo"
+                ;;
+            mbtool__subcmd__encode__subcmd__help,read-file)
+                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__file"
                 ;;
             mbtool__subcmd__encode__subcmd__help,read-holding)
                 cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__holding"
@@ -169,6 +208,9 @@ _mbtool() {
             mbtool__subcmd__encode__subcmd__help,read-inputs)
                 cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__inputs"
                 ;;
+            mbtool__subcmd__encode__subcmd__help,read-write)
+                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__write"
+                ;;
             mbtool__subcmd__encode__subcmd__help,write)
                 cmd="mbtool__subcmd__encode__subcmd__help__subcmd__write"
                 ;;
@@ -177,6 +219,9 @@ _mbtool() {
                 ;;
             mbtool__subcmd__encode__subcmd__help,write-coils)
                 cmd="mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__coils"
+                ;;
+            mbtool__subcmd__encode__subcmd__help,write-file)
+                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__file"
                 ;;
             mbtool__subcmd__encode__subcmd__help,write-register)
                 cmd="mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__register"
@@ -208,6 +253,9 @@ _mbtool() {
             mbtool__subcmd__help,info)
                 cmd="mbtool__subcmd__help__subcmd__info"
                 ;;
+            mbtool__subcmd__help,mask-write)
+                cmd="mbtool__subcmd__help__subcmd__mask__subcmd__write"
+                ;;
             mbtool__subcmd__help,poll)
                 cmd="mbtool__subcmd__help__subcmd__poll"
                 ;;
@@ -223,6 +271,12 @@ _mbtool() {
             mbtool__subcmd__help,read-coils)
                 cmd="mbtool__subcmd__help__subcmd__read__subcmd__coils"
                 ;;
+            mbtool__subcmd__help,read-fifo)
+                cmd="mbtool__subcmd__help__subcmd__read__subcmd__fifo"
+                ;;
+            mbtool__subcmd__help,read-file)
+                cmd="mbtool__subcmd__help__subcmd__read__subcmd__file"
+                ;;
             mbtool__subcmd__help,read-holding)
                 cmd="mbtool__subcmd__help__subcmd__read__subcmd__holding"
                 ;;
@@ -231,6 +285,9 @@ _mbtool() {
                 ;;
             mbtool__subcmd__help,read-inputs)
                 cmd="mbtool__subcmd__help__subcmd__read__subcmd__inputs"
+                ;;
+            mbtool__subcmd__help,read-write)
+                cmd="mbtool__subcmd__help__subcmd__read__subcmd__write"
                 ;;
             mbtool__subcmd__help,restore)
                 cmd="mbtool__subcmd__help__subcmd__restore"
@@ -256,6 +313,9 @@ _mbtool() {
             mbtool__subcmd__help,write-coils)
                 cmd="mbtool__subcmd__help__subcmd__write__subcmd__coils"
                 ;;
+            mbtool__subcmd__help,write-file)
+                cmd="mbtool__subcmd__help__subcmd__write__subcmd__file"
+                ;;
             mbtool__subcmd__help,write-register)
                 cmd="mbtool__subcmd__help__subcmd__write__subcmd__register"
                 ;;
@@ -269,7 +329,7 @@ _mbtool() {
 
     case "${cmd}" in
         mbtool)
-            opts="-p -m -b -v -o -t -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --retry-non-idempotent --output --json --pdu-addresses --address-base --max-per-request --type --order --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help"
+            opts="-p -m -b -v -o -t -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --retry-non-idempotent --output --json --pdu-addresses --address-base --max-per-request --type --order --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -713,7 +773,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode)
-            opts="-p -m -o -t -h -V --port --mode --output --json --pdu-addresses --address-base --max-per-request --type --order --retry-non-idempotent --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help"
+            opts="-p -m -o -t -h -V --port --mode --output --json --pdu-addresses --address-base --max-per-request --type --order --retry-non-idempotent --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -771,7 +831,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__help)
-            opts="read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw help"
+            opts="read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -785,6 +845,20 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__help__subcmd__help)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__encode__subcmd__help__subcmd__mask__subcmd__write)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -840,6 +914,34 @@ _mbtool() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__fifo)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__file)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__holding)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
@@ -869,6 +971,20 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__inputs)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__write)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -924,6 +1040,20 @@ _mbtool() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__file)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__register)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
@@ -945,6 +1075,48 @@ _mbtool() {
                 return 0
             fi
             case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__encode__subcmd__mask__subcmd__write)
+            opts="-p -m -o -h -V --port --mode --retry-non-idempotent --pdu-addresses --address-base --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --address-base)
+                    COMPREPLY=($(compgen -W "0 1" -- "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
                 *)
                     COMPREPLY=()
                     ;;
@@ -1093,6 +1265,110 @@ _mbtool() {
                     ;;
                 --max-per-request)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__encode__subcmd__read__subcmd__fifo)
+            opts="-p -m -t -o -h -V --port --mode --pdu-addresses --address-base --type --order --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --address-base)
+                    COMPREPLY=($(compgen -W "0 1" -- "${cur}"))
+                    return 0
+                    ;;
+                --type)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                -t)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                --order)
+                    COMPREPLY=($(compgen -W "ABCD CDAB BADC DCBA" -- "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__encode__subcmd__read__subcmd__file)
+            opts="-p -m -t -o -h -V --port --mode --type --order --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --type)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                -t)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                --order)
+                    COMPREPLY=($(compgen -W "ABCD CDAB BADC DCBA" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -1272,6 +1548,60 @@ _mbtool() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        mbtool__subcmd__encode__subcmd__read__subcmd__write)
+            opts="-p -m -t -o -h -V --port --mode --retry-non-idempotent --pdu-addresses --address-base --type --order --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --address-base)
+                    COMPREPLY=($(compgen -W "0 1" -- "${cur}"))
+                    return 0
+                    ;;
+                --type)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                -t)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                --order)
+                    COMPREPLY=($(compgen -W "ABCD CDAB BADC DCBA" -- "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         mbtool__subcmd__encode__subcmd__write)
             opts="-p -m -t -o -h -V --map --function --port --mode --retry-non-idempotent --pdu-addresses --address-base --max-per-request --type --order --output --json --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
@@ -1284,7 +1614,7 @@ _mbtool() {
                     return 0
                     ;;
                 --function)
-                    COMPREPLY=($(compgen -W "5 6 15 16" -- "${cur}"))
+                    COMPREPLY=($(compgen -W "5 6 15 16 22" -- "${cur}"))
                     return 0
                     ;;
                 --port)
@@ -1409,6 +1739,56 @@ _mbtool() {
                     ;;
                 --max-per-request)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__encode__subcmd__write__subcmd__file)
+            opts="-p -m -t -o -h -V --port --mode --retry-non-idempotent --type --order --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --type)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                -t)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                --order)
+                    COMPREPLY=($(compgen -W "ABCD CDAB BADC DCBA" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -1679,7 +2059,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__help)
-            opts="read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help"
+            opts="read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1804,6 +2184,20 @@ _mbtool() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        mbtool__subcmd__help__subcmd__mask__subcmd__write)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         mbtool__subcmd__help__subcmd__poll)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
@@ -1874,6 +2268,34 @@ _mbtool() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        mbtool__subcmd__help__subcmd__read__subcmd__fifo)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__help__subcmd__read__subcmd__file)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         mbtool__subcmd__help__subcmd__read__subcmd__holding)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
@@ -1903,6 +2325,20 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__help__subcmd__read__subcmd__inputs)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__help__subcmd__read__subcmd__write)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -2028,6 +2464,20 @@ _mbtool() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        mbtool__subcmd__help__subcmd__write__subcmd__file)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         mbtool__subcmd__help__subcmd__write__subcmd__register)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
@@ -2137,6 +2587,108 @@ _mbtool() {
                     ;;
                 --tls-server-name)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__mask__subcmd__write)
+            opts="-p -m -b -v -o -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --retry-non-idempotent --pdu-addresses --address-base --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -b)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --frame-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --retries)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --address-base)
+                    COMPREPLY=($(compgen -W "0 1" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -2684,6 +3236,230 @@ _mbtool() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
+        mbtool__subcmd__read__subcmd__fifo)
+            opts="-p -m -b -v -t -o -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --pdu-addresses --address-base --type --order --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -b)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --frame-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --retries)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --address-base)
+                    COMPREPLY=($(compgen -W "0 1" -- "${cur}"))
+                    return 0
+                    ;;
+                --type)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                -t)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                --order)
+                    COMPREPLY=($(compgen -W "ABCD CDAB BADC DCBA" -- "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__read__subcmd__file)
+            opts="-p -m -b -v -t -o -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --type --order --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -b)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --frame-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --retries)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --type)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                -t)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                --order)
+                    COMPREPLY=($(compgen -W "ABCD CDAB BADC DCBA" -- "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
         mbtool__subcmd__read__subcmd__holding)
             opts="-p -m -b -v -t -o -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --pdu-addresses --address-base --max-per-request --type --order --output --json --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
@@ -3141,6 +3917,120 @@ _mbtool() {
                     ;;
                 --max-per-request)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__read__subcmd__write)
+            opts="-p -m -b -v -t -o -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --retry-non-idempotent --pdu-addresses --address-base --type --order --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -b)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --frame-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --retries)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --address-base)
+                    COMPREPLY=($(compgen -W "0 1" -- "${cur}"))
+                    return 0
+                    ;;
+                --type)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                -t)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                --order)
+                    COMPREPLY=($(compgen -W "ABCD CDAB BADC DCBA" -- "${cur}"))
                     return 0
                     ;;
                 --output)
@@ -3792,7 +4682,7 @@ _mbtool() {
                     return 0
                     ;;
                 --function)
-                    COMPREPLY=($(compgen -W "5 6 15 16" -- "${cur}"))
+                    COMPREPLY=($(compgen -W "5 6 15 16 22" -- "${cur}"))
                     return 0
                     ;;
                 --port)
@@ -4097,6 +4987,116 @@ _mbtool() {
                     ;;
                 --max-per-request)
                     COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__write__subcmd__file)
+            opts="-p -m -b -v -t -o -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --retry-non-idempotent --type --order --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -b)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --frame-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --retries)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --type)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                -t)
+                    COMPREPLY=($(compgen -W "u16 i16 u32 i32 f32 u64 i64 f64 hex bin ascii" -- "${cur}"))
+                    return 0
+                    ;;
+                --order)
+                    COMPREPLY=($(compgen -W "ABCD CDAB BADC DCBA" -- "${cur}"))
                     return 0
                     ;;
                 --output)

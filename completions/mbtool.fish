@@ -104,6 +104,11 @@ complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-coils" -d 'Writ
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-register" -d 'Write one holding register (function 06)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-registers" -d 'Write holding registers (function 16)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-file" -d 'Read records of files (function 20)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "write-file" -d 'Write records of a file (function 21)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "mask-write" -d 'Change bits of a holding register in one request (function 22)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-write" -d 'Write registers, then read registers, in one transaction (function 23)'
+complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "read-fifo" -d 'Read a FIFO queue (function 24)'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "raw" -d 'Send any PDU and decode the answer'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "scan" -d 'Find the slaves on a line and the settings they use'
 complete -c mbtool -n "__fish_mbtool_needs_command" -f -a "watch" -d 'Watch values live, full screen: min, max, trend, changes'
@@ -774,10 +779,11 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -l json -
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write-registers" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l map -d 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers' -r -f -a "5\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers, 22 for a bit' -r -f -a "5\t''
 6\t''
 15\t''
-16\t''"
+16\t''
+22\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
@@ -829,6 +835,233 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l pdu-addresses -d
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand write" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand write-file" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand mask-write" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-write" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -s b -l baud -d 'Serial speed [default: 19200]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l parity -d 'Parity [default: even]' -r -f -a "none\t''
+even\t''
+odd\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l data-bits -d 'Serial data bits [default: 8, 7 in ASCII mode]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l stop-bits -d 'Serial stop bits [default: 1 with parity, 2 without]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l rs485-delay-before -d 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l rs485-delay-after -d 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l rts-level -d 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]' -r -f -a "high\t''
+low\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l timeout -d 'Response timeout: 500ms, 1s [default: 1s]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l frame-gap -d 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l retries -d 'Retries after a timeout or a bad answer' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l cert -d 'This end\'s certificate (PEM), for tls:// ports; a client\'s carries its role' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-fifo" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
@@ -1143,18 +1376,18 @@ DCBA\t'Little-endian'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand decode" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
 1\t'Register numbers, 1-65536'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
 i32\t''
@@ -1165,30 +1398,35 @@ f64\t''
 hex\t''
 bin\t''
 ascii\t''"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
 CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
 BADC\t'High word first, bytes swapped within each word'
 DCBA\t'Little-endian'"
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l json -d 'The same as --output json'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s h -l help -d 'Print help (see more with \'--help\')'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-coils" -d 'Read coils (function 01)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-discrete-inputs" -d 'Read discrete inputs (function 02)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-holding" -d 'Read holding registers (function 03)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-holding-registers" -d 'Read holding registers (function 03)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read-input-regs" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "read" -d 'Read by reference: its first digit picks the table'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-coil" -d 'Write one coil (function 05)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-coils" -d 'Write coils (function 15)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-register" -d 'Write one holding register (function 06)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "raw" -d 'Send any PDU and decode the answer'
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write raw help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "read-discrete-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "read-holding-registers" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "read-input-regs" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "read" -d 'Read by reference: its first digit picks the table'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "read-file" -d 'Read records of files (function 20)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "write-file" -d 'Write records of a file (function 21)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "mask-write" -d 'Change bits of a holding register in one request (function 22)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "read-write" -d 'Write registers, then read registers, in one transaction (function 23)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "read-fifo" -d 'Read a FIFO queue (function 24)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and not __fish_seen_subcommand_from read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-coils" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
@@ -1475,10 +1713,11 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-registers" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l map -d 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out' -r -F
-complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers' -r -f -a "5\t''
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l function -d 'Force the function: 5 or 15 for coils, 6 or 16 for registers, 22 for a bit' -r -f -a "5\t''
 6\t''
 15\t''
-16\t''"
+16\t''
+22\t''"
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
@@ -1510,6 +1749,133 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-file" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-file" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-file" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-file" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-file" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-file" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-file" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-file" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-file" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-file" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-file" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-file" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-file" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-file" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-file" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-file" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from write-file" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from mask-write" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from mask-write" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from mask-write" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from mask-write" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from mask-write" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from mask-write" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from mask-write" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from mask-write" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from mask-write" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-write" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-write" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-write" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-write" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-write" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-write" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-write" -l retry-non-idempotent -d 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-write" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-write" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-write" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-write" -s V -l version -d 'Print version'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-fifo" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-fifo" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
+ascii\t''
+tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-fifo" -l address-base -d 'What a bare address counts from: 0 (protocol address) or 1 (register number)' -r -f -a "0\t'Protocol addresses, 0-65535'
+1\t'Register numbers, 1-65536'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-fifo" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
+i16\t''
+u32\t''
+i32\t''
+f32\t''
+u64\t''
+i64\t''
+f64\t''
+hex\t''
+bin\t''
+ascii\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-fifo" -l order -d 'Byte order of values wider than 16 bits (A: the most significant byte)' -r -f -a "ABCD\t'Big-endian: high word first, high byte first'
+CDAB\t'Low word first (word swap), as many PLCs store 32-bit values'
+BADC\t'High word first, bytes swapped within each word'
+DCBA\t'Little-endian'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-fifo" -s o -l output -d 'Output format [default: table]' -r -f -a "table\t'A table for people'
+json\t'One JSON object per line'
+values\t'Only the values, one per line, for $(...) in scripts'
+csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-fifo" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-fifo" -l json -d 'The same as --output json'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-fifo" -s h -l help -d 'Print help (see more with \'--help\')'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-fifo" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from raw" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
@@ -1547,6 +1913,11 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write-register" -d 'Write one holding register (function 06)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write-registers" -d 'Write holding registers (function 16)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-file" -d 'Read records of files (function 20)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "write-file" -d 'Write records of a file (function 21)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "mask-write" -d 'Change bits of a holding register in one request (function 22)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-write" -d 'Write registers, then read registers, in one transaction (function 23)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "read-fifo" -d 'Read a FIFO queue (function 24)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "raw" -d 'Send any PDU and decode the answer'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
 complete -c mbtool -n "__fish_mbtool_using_subcommand sniff" -l input -d 'Read a capture (pcap, pcapng, a line\'s raw bytes; - for stdin) instead of the port' -r -F
@@ -1698,29 +2069,34 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand ports" -s V -l version -d 
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -l dir -d 'The folder that receives completions/ and man/' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s h -l help -d 'Print help'
 complete -c mbtool -n "__fish_mbtool_using_subcommand generate" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read-coils" -d 'Read coils (function 01)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read-holding" -d 'Read holding registers (function 03)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read" -d 'Read by reference: its first digit picks the table'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "write-coil" -d 'Write one coil (function 05)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "write-coils" -d 'Write coils (function 15)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "write-register" -d 'Write one holding register (function 06)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "write-registers" -d 'Write holding registers (function 16)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "raw" -d 'Send any PDU and decode the answer'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "scan" -d 'Find the slaves on a line and the settings they use'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "watch" -d 'Watch values live, full screen: min, max, trend, changes'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "info" -d 'Ask a device who it is: identification and server id'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "diag" -d 'A device\'s health: round trips, counters, status'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "dump" -d 'Save a device\'s tables to a data file, holes left out'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "restore" -d 'Write a data file back to a device, and check it'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "encode" -d 'Print the frame a request command would send'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "gateway" -d 'Bridge Modbus TCP clients to a serial line, shown live'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "poll" -d 'Keep a plant\'s devices read, each at its rate'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "ports" -d 'The serial ports here, and which adapter each one is'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
-complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read-coils" -d 'Read coils (function 01)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read-inputs" -d 'Read discrete inputs (function 02)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read-holding" -d 'Read holding registers (function 03)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read-input-registers" -d 'Read input registers (function 04)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read" -d 'Read by reference: its first digit picks the table'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "write-coil" -d 'Write one coil (function 05)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "write-coils" -d 'Write coils (function 15)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "write-register" -d 'Write one holding register (function 06)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "write-registers" -d 'Write holding registers (function 16)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "write" -d 'Write by reference: 05/06 for one value, 15/16 for more'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read-file" -d 'Read records of files (function 20)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "write-file" -d 'Write records of a file (function 21)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "mask-write" -d 'Change bits of a holding register in one request (function 22)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read-write" -d 'Write registers, then read registers, in one transaction (function 23)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "read-fifo" -d 'Read a FIFO queue (function 24)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "raw" -d 'Send any PDU and decode the answer'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "scan" -d 'Find the slaves on a line and the settings they use'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "watch" -d 'Watch values live, full screen: min, max, trend, changes'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "info" -d 'Ask a device who it is: identification and server id'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "diag" -d 'A device\'s health: round trips, counters, status'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "dump" -d 'Save a device\'s tables to a data file, holes left out'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "restore" -d 'Write a data file back to a device, and check it'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "decode" -d 'Decode frames given as arguments or on standard input'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "encode" -d 'Print the frame a request command would send'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "sniff" -d 'Watch a bus without transmitting; frames decoded, paired'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "serve" -d 'Stand in for a slave on a serial line or TCP'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "gateway" -d 'Bridge Modbus TCP clients to a serial line, shown live'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "poll" -d 'Keep a plant\'s devices read, each at its rate'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "ports" -d 'The serial ports here, and which adapter each one is'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "generate" -d 'Write the shell completions and man pages (for packagers and the project\'s own tree)'
+complete -c mbtool -n "__fish_mbtool_using_subcommand help; and not __fish_seen_subcommand_from read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help" -f -a "help" -d 'Print this message or the help of the given subcommand(s)'

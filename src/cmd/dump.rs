@@ -83,7 +83,11 @@ pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
         );
     }
     if !files.holes.is_empty() {
-        let holes: Vec<String> = files.holes.iter().map(output::backup::records_text).collect();
+        let holes: Vec<String> = files
+            .holes
+            .iter()
+            .map(output::backup::records_text)
+            .collect();
         mbtool::note!(
             "mbtool: slave {slave} has no such records (exception 02), left out: {}",
             holes.join(", ")

@@ -134,7 +134,7 @@ fn read_files(
     out: &mut Box<dyn Write>,
 ) -> Result<u8> {
     let groups = master.read_files(plan).map_err(Error::from)?;
-    output::records::write_files(out, &settings.output.style, plan.slave, &groups)?;
+    output::records::write_files(out, settings.output.style, plan.slave, &groups)?;
     Ok(0)
 }
 
@@ -155,7 +155,7 @@ fn read_fifo(
     );
     output::records::write_fifo(
         out,
-        &settings.output.style,
+        settings.output.style,
         plan.slave,
         (place.0, place.1.as_ref()),
         &values,

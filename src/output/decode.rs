@@ -357,7 +357,10 @@ fn field_rows(f: &Fields) -> Vec<(&'static str, String)> {
             let shown: Vec<String> = values.iter().map(u16::to_string).collect();
             format!(" = {}", shown.join(" "))
         });
-        rows.push(("file group", format!("{records}{}", values.unwrap_or_default())));
+        rows.push((
+            "file group",
+            format!("{records}{}", values.unwrap_or_default()),
+        ));
     }
     if let Some(mask) = f.and_mask {
         rows.push(("AND mask", format!("{mask:04X}")));

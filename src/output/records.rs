@@ -19,7 +19,7 @@ struct Row<'a> {
     value: Option<Value>,
 }
 
-fn rows<'a>(registers: &'a [u16], style: &Style) -> Vec<Row<'a>> {
+fn rows<'a>(registers: &'a [u16], style: Style) -> Vec<Row<'a>> {
     if style.value_type == ValueType::Ascii {
         return vec![Row {
             offset: 0,
@@ -89,7 +89,7 @@ struct JsonRecords<'a> {
 /// Rows under `place` columns, in every format.
 fn write_rows(
     out: &mut dyn Write,
-    style: &Style,
+    style: Style,
     head: Head,
     columns: &[&str],
     rows: &[(Vec<String>, Row)],
@@ -105,7 +105,10 @@ fn write_rows(
                         .zip(place)
                         .map(|(column, shown)| {
                             let number = shown.parse::<u64>().map(serde_json::Value::from);
-                            (column.to_string(), number.unwrap_or_else(|_| shown.clone().into()))
+                            (
+                                column.to_string(),
+                                number.unwrap_or_else(|_| shown.clone().into()),
+                            )
                         })
                         .collect::<serde_json::Map<_, _>>()
                         .into(),
@@ -158,7 +161,7 @@ fn write_rows(
 /// The records read, a row a value.
 pub fn write_files(
     out: &mut dyn Write,
-    style: &Style,
+    style: Style,
     slave: u8,
     groups: &[FileRecords],
 ) -> io::Result<()> {
@@ -184,7 +187,7 @@ pub fn write_files(
 /// A FIFO queue read, oldest value first, numbered from 0.
 pub fn write_fifo(
     out: &mut dyn Write,
-    style: &Style,
+    style: Style,
     slave: u8,
     (address, reference): (u32, &str),
     values: &[u16],

@@ -19,8 +19,8 @@ pub use adu::{Checksum, Envelope, Frame, Mode};
 pub use answer::Mismatch;
 pub use error::{FrameError, PduError};
 pub use exception::ExceptionCode;
-pub(crate) use pdu::{diagnostic_only_reads, function_only_reads};
 pub use pdu::file;
+pub(crate) use pdu::{diagnostic_only_reads, function_only_reads};
 pub use pdu::{
     DeviceIdentification, DeviceObject, Direction, Exception, FileRecords, FileSpan, Pdu, Reading,
     Request, Response,

@@ -51,7 +51,9 @@ impl Gateway {
                 Some(client) => client.clone(),
                 None => {
                     if heard.len() == MOST_CLIENTS {
-                        if let Some((id, _)) = heard.pop_front().and_then(|old| clients.remove(&old)) {
+                        if let Some((id, _)) =
+                            heard.pop_front().and_then(|old| clients.remove(&old))
+                        {
                             lock(&self.writers).remove(&id);
                             self.queue.forget(id);
                         }

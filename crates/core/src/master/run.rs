@@ -226,8 +226,10 @@ impl Master {
     pub fn read_files(&mut self, plan: &Plan) -> Result<Vec<FileRecords>, RunError> {
         let mut read: Vec<FileRecords> = Vec::new();
         for request in &plan.requests {
-            let (Request::ReadFileRecord { groups: asked }, Some(Response::ReadFileRecord { groups })) =
-                (request, self.answer(plan.slave, request)?)
+            let (
+                Request::ReadFileRecord { groups: asked },
+                Some(Response::ReadFileRecord { groups }),
+            ) = (request, self.answer(plan.slave, request)?)
             else {
                 continue;
             };
@@ -239,7 +241,7 @@ impl Master {
                             && usize::from(last.record) + last.values.len()
                                 == usize::from(span.record) =>
                     {
-                        last.values.extend(values)
+                        last.values.extend(values);
                     }
                     _ => read.push(FileRecords {
                         file: span.file,

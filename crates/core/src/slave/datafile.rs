@@ -26,13 +26,13 @@ use std::path::Path;
 
 use thiserror::Error;
 
+use crate::codec::file::MAX_RECORD;
+use crate::codec::FileRecords;
 use crate::input::choice::Choice;
 use crate::model::address::{parse_reference_span, reference, AddressError, Table};
 use crate::model::faults::{told, Faults};
 use crate::model::values::ReadData;
 use crate::model::values::{parse_coil, ByteOrder, ValueType};
-use crate::codec::file::MAX_RECORD;
-use crate::codec::FileRecords;
 use crate::slave::{DataModel, FileData};
 
 /// Why a data file cannot be loaded.

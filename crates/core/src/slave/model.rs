@@ -147,7 +147,12 @@ impl FileData {
         if file == 0 || count == 0 || end > usize::from(MAX_RECORD) + 1 {
             return Err(ExceptionCode::ILLEGAL_DATA_ADDRESS);
         }
-        if self.only_given && self.records.range((file, record)..(file, end as u16)).count() != count
+        if self.only_given
+            && self
+                .records
+                .range((file, record)..(file, end as u16))
+                .count()
+                != count
         {
             return Err(ExceptionCode::ILLEGAL_DATA_ADDRESS);
         }
@@ -195,7 +200,7 @@ impl FileData {
                     if run.file == file
                         && usize::from(run.record) + run.values.len() == usize::from(record) =>
                 {
-                    run.values.push(value)
+                    run.values.push(value);
                 }
                 _ => runs.push(FileRecords {
                     file,
@@ -240,7 +245,9 @@ impl FifoData {
 
     /// Every queue, by address.
     pub fn queues(&self) -> impl Iterator<Item = (u16, &[u16])> {
-        self.queues.iter().map(|(address, values)| (*address, values.as_slice()))
+        self.queues
+            .iter()
+            .map(|(address, values)| (*address, values.as_slice()))
     }
 }
 

@@ -311,8 +311,7 @@ impl TcpSession {
     /// its end ending what it carries; elsewhere, passed over (and counted where it reads
     /// as MBAP).
     fn datagram(&mut self, datagram: Datagram, packet: &Packet, out: &mut Vec<Record>) {
-        let (client, server, from_client) = if self.ports.contains(&datagram.destination.port())
-        {
+        let (client, server, from_client) = if self.ports.contains(&datagram.destination.port()) {
             (datagram.source, datagram.destination, true)
         } else if self.ports.contains(&datagram.source.port()) {
             (datagram.destination, datagram.source, false)

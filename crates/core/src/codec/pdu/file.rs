@@ -82,7 +82,12 @@ fn check_byte_count(function: u8, bytes: usize, min: usize, max: usize) -> Resul
 /// A Read File Record request's groups.
 pub(super) fn write_read_request(w: &mut Writer, groups: &[FileSpan]) -> Result<(), PduError> {
     let bytes = 7 * groups.len();
-    w.u8(check_byte_count(READ_FILE_RECORD, bytes, 7, MAX_FILE_READ_BYTES)?);
+    w.u8(check_byte_count(
+        READ_FILE_RECORD,
+        bytes,
+        7,
+        MAX_FILE_READ_BYTES,
+    )?);
     check_answer_len(groups.iter().map(|g| read_answer_group_len(g.count)).sum())?;
     for group in groups {
         check_place(group.file, group.record, usize::from(group.count))?;
@@ -145,7 +150,12 @@ pub(super) fn read_read_request(r: &mut Reader) -> Result<Vec<FileSpan>, PduErro
 /// A Read File Record answer's groups.
 pub(super) fn write_read_answer(w: &mut Writer, groups: &[Vec<u16>]) -> Result<(), PduError> {
     let bytes: usize = groups.iter().map(|g| 2 + 2 * g.len()).sum();
-    w.u8(check_byte_count(READ_FILE_RECORD, bytes, 4, MAX_FILE_READ_BYTES)?);
+    w.u8(check_byte_count(
+        READ_FILE_RECORD,
+        bytes,
+        4,
+        MAX_FILE_READ_BYTES,
+    )?);
     for group in groups {
         if group.is_empty() {
             return Err(PduError::FileReference(
@@ -169,8 +179,7 @@ pub(super) fn read_read_answer(r: &mut Reader) -> Result<Vec<Vec<u16>>, PduError
         let len = usize::from(inner.u8()?);
         if len < 3 || len % 2 == 0 {
             return Err(PduError::FileReference(
-                "a file record group of an answer is reference type 06 and whole registers"
-                    .into(),
+                "a file record group of an answer is reference type 06 and whole registers".into(),
             ));
         }
         reference_type(&mut inner)?;
@@ -185,7 +194,12 @@ pub(super) fn read_read_answer(r: &mut Reader) -> Result<Vec<Vec<u16>>, PduError
 /// A Write File Record request's (or answer's) groups.
 pub(super) fn write_write_groups(w: &mut Writer, groups: &[FileRecords]) -> Result<(), PduError> {
     let bytes: usize = groups.iter().map(|g| 7 + 2 * g.values.len()).sum();
-    w.u8(check_byte_count(WRITE_FILE_RECORD, bytes, 9, MAX_FILE_WRITE_BYTES)?);
+    w.u8(check_byte_count(
+        WRITE_FILE_RECORD,
+        bytes,
+        9,
+        MAX_FILE_WRITE_BYTES,
+    )?);
     for group in groups {
         check_place(group.file, group.record, group.values.len())?;
         w.u8(FILE_REFERENCE_TYPE)

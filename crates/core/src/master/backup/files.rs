@@ -64,15 +64,16 @@ pub fn file_restore_requests(runs: &[FileRecords]) -> Vec<Request> {
     let most = usize::from(MAX_FILE_WRITE_REGISTERS);
     runs.iter()
         .flat_map(|run| {
-            run.values.chunks(most).enumerate().map(move |(i, chunk)| {
-                Request::WriteFileRecord {
+            run.values
+                .chunks(most)
+                .enumerate()
+                .map(move |(i, chunk)| Request::WriteFileRecord {
                     groups: vec![FileRecords {
                         file: run.file,
                         record: run.record + (i * most) as u16,
                         values: chunk.to_vec(),
                     }],
-                }
-            })
+                })
         })
         .collect()
 }

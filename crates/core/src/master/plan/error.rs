@@ -112,4 +112,3 @@ pub enum PlanError {
         len: usize,
     },
 }
-

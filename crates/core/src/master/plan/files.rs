@@ -3,8 +3,8 @@
 //! limits.
 
 use crate::codec::file::{
-    read_answer_group_len, MAX_FILE_READ_BYTES, MAX_FILE_READ_REGISTERS,
-    MAX_FILE_WRITE_REGISTERS, MAX_RECORD,
+    read_answer_group_len, MAX_FILE_READ_BYTES, MAX_FILE_READ_REGISTERS, MAX_FILE_WRITE_REGISTERS,
+    MAX_RECORD,
 };
 use crate::codec::{FileRecords, FileSpan, Request};
 use crate::input::number::{parse_in_range, parse_int};
@@ -89,18 +89,21 @@ pub(super) fn read_file_plan(slave: u8, words: &[String], options: PlanOptions) 
 pub fn file_read_requests(spans: &[FileSpan]) -> Vec<Request> {
     let most = MAX_FILE_READ_REGISTERS;
     let groups = spans.iter().flat_map(|span| {
-        (0..span.count).step_by(usize::from(most)).map(move |at| FileSpan {
-            file: span.file,
-            record: span.record + at,
-            count: most.min(span.count - at),
-        })
+        (0..span.count)
+            .step_by(usize::from(most))
+            .map(move |at| FileSpan {
+                file: span.file,
+                record: span.record + at,
+                count: most.min(span.count - at),
+            })
     });
     let mut requests = Vec::new();
     let mut request: Vec<FileSpan> = Vec::new();
     let mut answer = 0;
     for group in groups {
         let len = read_answer_group_len(group.count);
-        if !request.is_empty() && (answer + len > MAX_FILE_READ_BYTES || request.len() == MAX_GROUPS)
+        if !request.is_empty()
+            && (answer + len > MAX_FILE_READ_BYTES || request.len() == MAX_GROUPS)
         {
             requests.push(Request::ReadFileRecord {
                 groups: std::mem::take(&mut request),
@@ -232,7 +235,9 @@ mod tests {
             request.encode(&mut bytes).unwrap();
         }
         // Forty groups of one record: 35 fit one request (7 bytes each in 245).
-        let many: Vec<String> = (0..40).flat_map(|i| [format!("1:{i}"), "1".into()]).collect();
+        let many: Vec<String> = (0..40)
+            .flat_map(|i| [format!("1:{i}"), "1".into()])
+            .collect();
         let plan = read_file_plan(17, &many, options).unwrap();
         assert_eq!(plan.requests.len(), 2);
     }
@@ -241,14 +246,26 @@ mod tests {
     fn the_specification_s_limits_are_refused_in_words() {
         let options = PlanOptions::default();
         for (text, message) in [
-            ("0:1 2", "0:1: file 0 does not exist: files are numbered 1-65535"),
-            ("4:10000 1", "4:10000: record 10000 is past 9999, the last record of a file"),
+            (
+                "0:1 2",
+                "0:1: file 0 does not exist: files are numbered 1-65535",
+            ),
+            (
+                "4:10000 1",
+                "4:10000: record 10000 is past 9999, the last record of a file",
+            ),
             (
                 "4:9999 2",
                 "4:9999 with 2 records runs to record 10000, past 9999, the last of a file",
             ),
-            ("4:1", "give FILE:RECORD COUNT pairs, as in read-file 17 4:1 2 3:9 2"),
-            ("4-1 2", "'4-1' is no FILE:RECORD: give a file 1-65535 and a record 0-9999, as in 4:1"),
+            (
+                "4:1",
+                "give FILE:RECORD COUNT pairs, as in read-file 17 4:1 2 3:9 2",
+            ),
+            (
+                "4-1 2",
+                "'4-1' is no FILE:RECORD: give a file 1-65535 and a record 0-9999, as in 4:1",
+            ),
         ] {
             let error = read_file_plan(17, &words(text), options).unwrap_err();
             assert_eq!(error.to_string(), message);

@@ -154,8 +154,14 @@ mod tests {
     #[test]
     fn read_write_is_one_request_or_refused() {
         let options = PlanOptions::default();
-        let plan = read_write_plan(17, ("400004", "6"), "400015", &words("255 255 255"), options)
-            .unwrap();
+        let plan = read_write_plan(
+            17,
+            ("400004", "6"),
+            "400015",
+            &words("255 255 255"),
+            options,
+        )
+        .unwrap();
         assert_eq!(plan.requests.len(), 1);
         let mut bytes = Vec::new();
         plan.requests[0].encode(&mut bytes).unwrap();
