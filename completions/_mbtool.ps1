@@ -84,8 +84,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
             [CompletionResult]::new('read-file', 'read-file', [CompletionResultType]::ParameterValue, 'Read records of files (function 20)')
             [CompletionResult]::new('write-file', 'write-file', [CompletionResultType]::ParameterValue, 'Write records of a file (function 21)')
-            [CompletionResult]::new('mask-write', 'mask-write', [CompletionResultType]::ParameterValue, 'Change bits of a holding register in one request (function 22)')
-            [CompletionResult]::new('read-write', 'read-write', [CompletionResultType]::ParameterValue, 'Write registers, then read registers, in one transaction (function 23)')
+            [CompletionResult]::new('mask-write', 'mask-write', [CompletionResultType]::ParameterValue, 'Set bits of a register in one request (function 22)')
+            [CompletionResult]::new('read-write', 'read-write', [CompletionResultType]::ParameterValue, 'Write then read registers in one request (function 23)')
             [CompletionResult]::new('read-fifo', 'read-fifo', [CompletionResultType]::ParameterValue, 'Read a FIFO queue (function 24)')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
             [CompletionResult]::new('scan', 'scan', [CompletionResultType]::ParameterValue, 'Find the slaves on a line and the settings they use')
@@ -1173,8 +1173,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--retry-non-idempotent', '--retry-non-idempotent', [CompletionResultType]::ParameterName, 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             [CompletionResult]::new('read-coils', 'read-coils', [CompletionResultType]::ParameterValue, 'Read coils (function 01)')
             [CompletionResult]::new('read-inputs', 'read-inputs', [CompletionResultType]::ParameterValue, 'Read discrete inputs (function 02)')
             [CompletionResult]::new('read-discrete-inputs', 'read-discrete-inputs', [CompletionResultType]::ParameterValue, 'Read discrete inputs (function 02)')
@@ -1190,11 +1188,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
             [CompletionResult]::new('read-file', 'read-file', [CompletionResultType]::ParameterValue, 'Read records of files (function 20)')
             [CompletionResult]::new('write-file', 'write-file', [CompletionResultType]::ParameterValue, 'Write records of a file (function 21)')
-            [CompletionResult]::new('mask-write', 'mask-write', [CompletionResultType]::ParameterValue, 'Change bits of a holding register in one request (function 22)')
-            [CompletionResult]::new('read-write', 'read-write', [CompletionResultType]::ParameterValue, 'Write registers, then read registers, in one transaction (function 23)')
+            [CompletionResult]::new('mask-write', 'mask-write', [CompletionResultType]::ParameterValue, 'Set bits of a register in one request (function 22)')
+            [CompletionResult]::new('read-write', 'read-write', [CompletionResultType]::ParameterValue, 'Write then read registers in one request (function 23)')
             [CompletionResult]::new('read-fifo', 'read-fifo', [CompletionResultType]::ParameterValue, 'Read a FIFO queue (function 24)')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
-            [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
             break
         }
         'mbtool;encode;read-coils' {
@@ -1210,8 +1207,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-inputs' {
@@ -1227,8 +1222,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-discrete-inputs' {
@@ -1244,8 +1237,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-holding' {
@@ -1264,8 +1255,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-holding-registers' {
@@ -1284,8 +1273,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-input-registers' {
@@ -1304,8 +1291,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-input-regs' {
@@ -1324,8 +1309,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read' {
@@ -1345,8 +1328,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;write-coil' {
@@ -1361,8 +1342,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;write-coils' {
@@ -1378,8 +1357,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;write-register' {
@@ -1398,8 +1375,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;write-registers' {
@@ -1418,8 +1393,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;write' {
@@ -1441,8 +1414,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-file' {
@@ -1458,8 +1429,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;write-file' {
@@ -1476,8 +1445,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;mask-write' {
@@ -1493,8 +1460,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-write' {
@@ -1513,8 +1478,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;read-fifo' {
@@ -1532,8 +1495,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
         'mbtool;encode;raw' {
@@ -1550,79 +1511,6 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
             [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
-            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
-            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
-            break
-        }
-        'mbtool;encode;help' {
-            [CompletionResult]::new('read-coils', 'read-coils', [CompletionResultType]::ParameterValue, 'Read coils (function 01)')
-            [CompletionResult]::new('read-inputs', 'read-inputs', [CompletionResultType]::ParameterValue, 'Read discrete inputs (function 02)')
-            [CompletionResult]::new('read-holding', 'read-holding', [CompletionResultType]::ParameterValue, 'Read holding registers (function 03)')
-            [CompletionResult]::new('read-input-registers', 'read-input-registers', [CompletionResultType]::ParameterValue, 'Read input registers (function 04)')
-            [CompletionResult]::new('read', 'read', [CompletionResultType]::ParameterValue, 'Read by reference: its first digit picks the table')
-            [CompletionResult]::new('write-coil', 'write-coil', [CompletionResultType]::ParameterValue, 'Write one coil (function 05)')
-            [CompletionResult]::new('write-coils', 'write-coils', [CompletionResultType]::ParameterValue, 'Write coils (function 15)')
-            [CompletionResult]::new('write-register', 'write-register', [CompletionResultType]::ParameterValue, 'Write one holding register (function 06)')
-            [CompletionResult]::new('write-registers', 'write-registers', [CompletionResultType]::ParameterValue, 'Write holding registers (function 16)')
-            [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
-            [CompletionResult]::new('read-file', 'read-file', [CompletionResultType]::ParameterValue, 'Read records of files (function 20)')
-            [CompletionResult]::new('write-file', 'write-file', [CompletionResultType]::ParameterValue, 'Write records of a file (function 21)')
-            [CompletionResult]::new('mask-write', 'mask-write', [CompletionResultType]::ParameterValue, 'Change bits of a holding register in one request (function 22)')
-            [CompletionResult]::new('read-write', 'read-write', [CompletionResultType]::ParameterValue, 'Write registers, then read registers, in one transaction (function 23)')
-            [CompletionResult]::new('read-fifo', 'read-fifo', [CompletionResultType]::ParameterValue, 'Read a FIFO queue (function 24)')
-            [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
-            [CompletionResult]::new('help', 'help', [CompletionResultType]::ParameterValue, 'Print this message or the help of the given subcommand(s)')
-            break
-        }
-        'mbtool;encode;help;read-coils' {
-            break
-        }
-        'mbtool;encode;help;read-inputs' {
-            break
-        }
-        'mbtool;encode;help;read-holding' {
-            break
-        }
-        'mbtool;encode;help;read-input-registers' {
-            break
-        }
-        'mbtool;encode;help;read' {
-            break
-        }
-        'mbtool;encode;help;write-coil' {
-            break
-        }
-        'mbtool;encode;help;write-coils' {
-            break
-        }
-        'mbtool;encode;help;write-register' {
-            break
-        }
-        'mbtool;encode;help;write-registers' {
-            break
-        }
-        'mbtool;encode;help;write' {
-            break
-        }
-        'mbtool;encode;help;read-file' {
-            break
-        }
-        'mbtool;encode;help;write-file' {
-            break
-        }
-        'mbtool;encode;help;mask-write' {
-            break
-        }
-        'mbtool;encode;help;read-write' {
-            break
-        }
-        'mbtool;encode;help;read-fifo' {
-            break
-        }
-        'mbtool;encode;help;raw' {
-            break
-        }
-        'mbtool;encode;help;help' {
             break
         }
         'mbtool;sniff' {
@@ -1805,8 +1693,8 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('write', 'write', [CompletionResultType]::ParameterValue, 'Write by reference: 05/06 for one value, 15/16 for more')
             [CompletionResult]::new('read-file', 'read-file', [CompletionResultType]::ParameterValue, 'Read records of files (function 20)')
             [CompletionResult]::new('write-file', 'write-file', [CompletionResultType]::ParameterValue, 'Write records of a file (function 21)')
-            [CompletionResult]::new('mask-write', 'mask-write', [CompletionResultType]::ParameterValue, 'Change bits of a holding register in one request (function 22)')
-            [CompletionResult]::new('read-write', 'read-write', [CompletionResultType]::ParameterValue, 'Write registers, then read registers, in one transaction (function 23)')
+            [CompletionResult]::new('mask-write', 'mask-write', [CompletionResultType]::ParameterValue, 'Set bits of a register in one request (function 22)')
+            [CompletionResult]::new('read-write', 'read-write', [CompletionResultType]::ParameterValue, 'Write then read registers in one request (function 23)')
             [CompletionResult]::new('read-fifo', 'read-fifo', [CompletionResultType]::ParameterValue, 'Read a FIFO queue (function 24)')
             [CompletionResult]::new('raw', 'raw', [CompletionResultType]::ParameterValue, 'Send any PDU and decode the answer')
             [CompletionResult]::new('scan', 'scan', [CompletionResultType]::ParameterValue, 'Find the slaves on a line and the settings they use')

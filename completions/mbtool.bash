@@ -118,9 +118,6 @@ _mbtool() {
             mbtool,write-registers)
                 cmd="mbtool__subcmd__write__subcmd__registers"
                 ;;
-            mbtool__subcmd__encode,help)
-                cmd="mbtool__subcmd__encode__subcmd__help"
-                ;;
             mbtool__subcmd__encode,mask-write)
                 cmd="mbtool__subcmd__encode__subcmd__mask__subcmd__write"
                 ;;
@@ -177,57 +174,6 @@ _mbtool() {
                 ;;
             mbtool__subcmd__encode,write-registers)
                 cmd="mbtool__subcmd__encode__subcmd__write__subcmd__registers"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,help)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__help"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,mask-write)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__mask__subcmd__write"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,raw)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__raw"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,read)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,read-coils)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__coils"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,read-fifo)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__fifo"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,read-file)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__file"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,read-holding)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__holding"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,read-input-registers)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__input__subcmd__registers"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,read-inputs)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__inputs"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,read-write)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__write"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,write)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__write"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,write-coil)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__coil"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,write-coils)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__coils"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,write-file)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__file"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,write-register)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__register"
-                ;;
-            mbtool__subcmd__encode__subcmd__help,write-registers)
-                cmd="mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__registers"
                 ;;
             mbtool__subcmd__help,decode)
                 cmd="mbtool__subcmd__help__subcmd__decode"
@@ -773,7 +719,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode)
-            opts="-p -m -o -t -h -V --port --mode --output --json --pdu-addresses --address-base --max-per-request --type --order --retry-non-idempotent --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help"
+            opts="-p -m -o -t -h --port --mode --output --json --pdu-addresses --address-base --max-per-request --type --order --retry-non-idempotent --help read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -830,260 +776,8 @@ _mbtool() {
             COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
             return 0
             ;;
-        mbtool__subcmd__encode__subcmd__help)
-            opts="read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw help"
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__help)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__mask__subcmd__write)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__raw)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__read)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__coils)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__fifo)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__file)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__holding)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__input__subcmd__registers)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__inputs)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__read__subcmd__write)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__write)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__coil)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__coils)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__file)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__register)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
-        mbtool__subcmd__encode__subcmd__help__subcmd__write__subcmd__registers)
-            opts=""
-            if [[ ${cur} == -* || ${COMP_CWORD} -eq 4 ]] ; then
-                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-                return 0
-            fi
-            case "${prev}" in
-                *)
-                    COMPREPLY=()
-                    ;;
-            esac
-            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
-            return 0
-            ;;
         mbtool__subcmd__encode__subcmd__mask__subcmd__write)
-            opts="-p -m -o -h -V --port --mode --retry-non-idempotent --pdu-addresses --address-base --output --json --help --version"
+            opts="-p -m -o -h --port --mode --retry-non-idempotent --pdu-addresses --address-base --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1125,7 +819,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__raw)
-            opts="-p -m -t -o -h -V --port --mode --retry-non-idempotent --type --order --output --json --help --version"
+            opts="-p -m -t -o -h --port --mode --retry-non-idempotent --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1175,7 +869,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__read)
-            opts="-p -m -t -o -h -V --map --port --mode --pdu-addresses --address-base --max-per-request --type --order --output --json --help --version"
+            opts="-p -m -t -o -h --map --port --mode --pdu-addresses --address-base --max-per-request --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1237,7 +931,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__read__subcmd__coils)
-            opts="-p -m -o -h -V --port --mode --pdu-addresses --address-base --max-per-request --output --json --help --version"
+            opts="-p -m -o -h --port --mode --pdu-addresses --address-base --max-per-request --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1283,7 +977,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__read__subcmd__fifo)
-            opts="-p -m -t -o -h -V --port --mode --pdu-addresses --address-base --type --order --output --json --help --version"
+            opts="-p -m -t -o -h --port --mode --pdu-addresses --address-base --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1337,7 +1031,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__read__subcmd__file)
-            opts="-p -m -t -o -h -V --port --mode --type --order --output --json --help --version"
+            opts="-p -m -t -o -h --port --mode --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1387,7 +1081,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__read__subcmd__holding)
-            opts="-p -m -t -o -h -V --port --mode --pdu-addresses --address-base --max-per-request --type --order --output --json --help --version"
+            opts="-p -m -t -o -h --port --mode --pdu-addresses --address-base --max-per-request --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1445,7 +1139,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__read__subcmd__input__subcmd__registers)
-            opts="-p -m -t -o -h -V --port --mode --pdu-addresses --address-base --max-per-request --type --order --output --json --help --version"
+            opts="-p -m -t -o -h --port --mode --pdu-addresses --address-base --max-per-request --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1503,7 +1197,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__read__subcmd__inputs)
-            opts="-p -m -o -h -V --port --mode --pdu-addresses --address-base --max-per-request --output --json --help --version"
+            opts="-p -m -o -h --port --mode --pdu-addresses --address-base --max-per-request --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1549,7 +1243,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__read__subcmd__write)
-            opts="-p -m -t -o -h -V --port --mode --retry-non-idempotent --pdu-addresses --address-base --type --order --output --json --help --version"
+            opts="-p -m -t -o -h --port --mode --retry-non-idempotent --pdu-addresses --address-base --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1603,7 +1297,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__write)
-            opts="-p -m -t -o -h -V --map --function --port --mode --retry-non-idempotent --pdu-addresses --address-base --max-per-request --type --order --output --json --help --version"
+            opts="-p -m -t -o -h --map --function --port --mode --retry-non-idempotent --pdu-addresses --address-base --max-per-request --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1669,7 +1363,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__write__subcmd__coil)
-            opts="-p -m -o -h -V --port --mode --pdu-addresses --address-base --output --json --help --version"
+            opts="-p -m -o -h --port --mode --pdu-addresses --address-base --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1711,7 +1405,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__write__subcmd__coils)
-            opts="-p -m -o -h -V --port --mode --pdu-addresses --address-base --max-per-request --output --json --help --version"
+            opts="-p -m -o -h --port --mode --pdu-addresses --address-base --max-per-request --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1757,7 +1451,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__write__subcmd__file)
-            opts="-p -m -t -o -h -V --port --mode --retry-non-idempotent --type --order --output --json --help --version"
+            opts="-p -m -t -o -h --port --mode --retry-non-idempotent --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1807,7 +1501,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__write__subcmd__register)
-            opts="-p -m -t -o -h -V --port --mode --retry-non-idempotent --pdu-addresses --address-base --type --order --output --json --help --version"
+            opts="-p -m -t -o -h --port --mode --retry-non-idempotent --pdu-addresses --address-base --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1861,7 +1555,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__write__subcmd__registers)
-            opts="-p -m -t -o -h -V --port --mode --pdu-addresses --address-base --max-per-request --type --order --output --json --help --version"
+            opts="-p -m -t -o -h --port --mode --pdu-addresses --address-base --max-per-request --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0

@@ -81,8 +81,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand read-file 'Read records of files (function 20)'
             cand write-file 'Write records of a file (function 21)'
-            cand mask-write 'Change bits of a holding register in one request (function 22)'
-            cand read-write 'Write registers, then read registers, in one transaction (function 23)'
+            cand mask-write 'Set bits of a register in one request (function 22)'
+            cand read-write 'Write then read registers in one request (function 23)'
             cand read-fifo 'Read a FIFO queue (function 24)'
             cand raw 'Send any PDU and decode the answer'
             cand scan 'Find the slaves on a line and the settings they use'
@@ -1143,8 +1143,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --retry-non-idempotent 'With --retries, retry a request that may do more when sent twice too: mask write (22), read/write multiple (23), file record write (21), user-defined functions'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
             cand read-coils 'Read coils (function 01)'
             cand read-inputs 'Read discrete inputs (function 02)'
             cand read-discrete-inputs 'Read discrete inputs (function 02)'
@@ -1160,11 +1158,10 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand read-file 'Read records of files (function 20)'
             cand write-file 'Write records of a file (function 21)'
-            cand mask-write 'Change bits of a holding register in one request (function 22)'
-            cand read-write 'Write registers, then read registers, in one transaction (function 23)'
+            cand mask-write 'Set bits of a register in one request (function 22)'
+            cand read-write 'Write then read registers in one request (function 23)'
             cand read-fifo 'Read a FIFO queue (function 24)'
             cand raw 'Send any PDU and decode the answer'
-            cand help 'Print this message or the help of the given subcommand(s)'
         }
         &'mbtool;encode;read-coils'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1179,8 +1176,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;read-inputs'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1195,8 +1190,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;read-discrete-inputs'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1211,8 +1204,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;read-holding'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1230,8 +1221,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;read-holding-registers'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1249,8 +1238,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;read-input-registers'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1268,8 +1255,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;read-input-regs'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1287,8 +1272,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;read'= {
             cand --map 'The points of a register map (CSV, or Home Assistant YAML), by name'
@@ -1307,8 +1290,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;write-coil'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1322,8 +1303,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;write-coils'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1338,8 +1317,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;write-register'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1357,8 +1334,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;write-registers'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1376,8 +1351,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;write'= {
             cand --map 'Write points of a register map by name: NAME=VALUE, scale and offset taken back out'
@@ -1398,8 +1371,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;read-file'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1414,8 +1385,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;write-file'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1431,8 +1400,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;mask-write'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1447,8 +1414,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;read-write'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1466,8 +1431,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;read-fifo'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1484,8 +1447,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
         }
         &'mbtool;encode;raw'= {
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1501,61 +1462,6 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'
             cand --help 'Print help (see more with ''--help'')'
-            cand -V 'Print version'
-            cand --version 'Print version'
-        }
-        &'mbtool;encode;help'= {
-            cand read-coils 'Read coils (function 01)'
-            cand read-inputs 'Read discrete inputs (function 02)'
-            cand read-holding 'Read holding registers (function 03)'
-            cand read-input-registers 'Read input registers (function 04)'
-            cand read 'Read by reference: its first digit picks the table'
-            cand write-coil 'Write one coil (function 05)'
-            cand write-coils 'Write coils (function 15)'
-            cand write-register 'Write one holding register (function 06)'
-            cand write-registers 'Write holding registers (function 16)'
-            cand write 'Write by reference: 05/06 for one value, 15/16 for more'
-            cand read-file 'Read records of files (function 20)'
-            cand write-file 'Write records of a file (function 21)'
-            cand mask-write 'Change bits of a holding register in one request (function 22)'
-            cand read-write 'Write registers, then read registers, in one transaction (function 23)'
-            cand read-fifo 'Read a FIFO queue (function 24)'
-            cand raw 'Send any PDU and decode the answer'
-            cand help 'Print this message or the help of the given subcommand(s)'
-        }
-        &'mbtool;encode;help;read-coils'= {
-        }
-        &'mbtool;encode;help;read-inputs'= {
-        }
-        &'mbtool;encode;help;read-holding'= {
-        }
-        &'mbtool;encode;help;read-input-registers'= {
-        }
-        &'mbtool;encode;help;read'= {
-        }
-        &'mbtool;encode;help;write-coil'= {
-        }
-        &'mbtool;encode;help;write-coils'= {
-        }
-        &'mbtool;encode;help;write-register'= {
-        }
-        &'mbtool;encode;help;write-registers'= {
-        }
-        &'mbtool;encode;help;write'= {
-        }
-        &'mbtool;encode;help;read-file'= {
-        }
-        &'mbtool;encode;help;write-file'= {
-        }
-        &'mbtool;encode;help;mask-write'= {
-        }
-        &'mbtool;encode;help;read-write'= {
-        }
-        &'mbtool;encode;help;read-fifo'= {
-        }
-        &'mbtool;encode;help;raw'= {
-        }
-        &'mbtool;encode;help;help'= {
         }
         &'mbtool;sniff'= {
             cand --input 'Read a capture (pcap, pcapng, a line''s raw bytes; - for stdin) instead of the port'
@@ -1731,8 +1637,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand write 'Write by reference: 05/06 for one value, 15/16 for more'
             cand read-file 'Read records of files (function 20)'
             cand write-file 'Write records of a file (function 21)'
-            cand mask-write 'Change bits of a holding register in one request (function 22)'
-            cand read-write 'Write registers, then read registers, in one transaction (function 23)'
+            cand mask-write 'Set bits of a register in one request (function 22)'
+            cand read-write 'Write then read registers in one request (function 23)'
             cand read-fifo 'Read a FIFO queue (function 24)'
             cand raw 'Send any PDU and decode the answer'
             cand scan 'Find the slaves on a line and the settings they use'

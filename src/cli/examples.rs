@@ -113,6 +113,53 @@ const EXAMPLES: &[(&str, &[Example])] = &[
         ],
     ),
     (
+        "read-file",
+        &[
+            ex(
+                "Read records 1-2 of file 4 and 9-10 of file 3 in one request",
+                "mbtool --port /dev/ttyUSB0 read-file 17 4:1 2 3:9 2",
+            ),
+            ex(
+                "Read a meter's history of 50 floats from file 2",
+                "mbtool --port udp://10.0.0.5 read-file 1 2:0 50 --type f32 -o csv",
+            ),
+        ],
+    ),
+    (
+        "write-file",
+        &[ex(
+            "Write records 7-9 of file 4",
+            "mbtool --port /dev/ttyUSB0 write-file 17 4:7 0x06AF 0x04BE 0x100D",
+        )],
+    ),
+    (
+        "mask-write",
+        &[
+            ex(
+                "Set bit 5 of 400108 alone, in the device, with one request",
+                "mbtool --port /dev/ttyUSB0 mask-write 17 400108.05=1",
+            ),
+            ex(
+                "Keep the bits of AND 00F2, set those of OR 0025 among the others",
+                "mbtool --port /dev/ttyUSB0 mask-write 17 400005 0x00F2 0x0025",
+            ),
+        ],
+    ),
+    (
+        "read-write",
+        &[ex(
+            "Write 400015-400017, then read 400004-400009, in one transaction",
+            "mbtool --port /dev/ttyUSB0 read-write 17 400004 6 400015 255 255 255",
+        )],
+    ),
+    (
+        "read-fifo",
+        &[ex(
+            "Read the FIFO queue whose pointer is 401247",
+            "mbtool --port /dev/ttyUSB0 read-fifo 17 401247",
+        )],
+    ),
+    (
         "raw",
         &[ex(
             "Send function 17 (report slave id) to slave 17",

@@ -107,7 +107,10 @@ pub enum Command {
     /// Print the frame a request command would send
     #[command(
         long_about = ENCODE_ABOUT,
-        after_help = more_in_long_help(&[&[left_out::CONNECTION, left_out::ADDRESSES]])
+        after_help = more_in_long_help(&[&[left_out::CONNECTION, left_out::ADDRESSES]]),
+        // Each request's own -h says the rest; the list of requests fits a screen.
+        disable_help_subcommand = true,
+        disable_version_flag = true
     )]
     Encode {
         #[command(flatten)]

@@ -227,9 +227,9 @@ pub enum RequestCommand<W: Wire> {
     ReadFile(RequestArgs<ReadFileArgs, ValueData, W::Write>),
     /// Write records of a file (function 21)
     WriteFile(RequestArgs<WriteFileArgs, ValueData, W::Repeatable>),
-    /// Change bits of a holding register in one request (function 22)
+    /// Set bits of a register in one request (function 22)
     MaskWrite(RequestArgs<MaskWriteArgs, OneBitData, W::Repeatable>),
-    /// Write registers, then read registers, in one transaction (function 23)
+    /// Write then read registers in one request (function 23)
     ReadWrite(RequestArgs<ReadWriteArgs, OneRegisterData, W::Repeatable>),
     /// Read a FIFO queue (function 24)
     ReadFifo(RequestArgs<ReadFifoArgs, OneRegisterData, W::Write>),
@@ -462,7 +462,7 @@ pub struct ReadFileArgs {
     ///
     /// Files are 1-65535, records 0-9999; COUNT counts values of --type. The groups go in one
     /// request, or in as many as the limits of one answer (245 bytes) need.
-    #[arg(required = true, num_args = 2.., value_name = "FILE:RECORD COUNT")]
+    #[arg(required = true, value_name = "FILE:RECORD COUNT")]
     pub groups: Vec<String>,
 }
 

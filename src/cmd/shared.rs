@@ -57,7 +57,8 @@ pub fn plan_for(settings: &Settings, request: &TypedWords) -> Result<Plan, Error
 /// send it only once.
 pub fn refuse_unsafe_retries(settings: &Settings, requests: &[Request]) -> Result<(), Error> {
     let connection = &settings.connection;
-    if connection.retries == 0 || connection.retry_non_idempotent {
+    // Over UDP, retries not asked for leave such requests sent once.
+    if connection.retries == 0 || connection.retry_non_idempotent || !connection.retries_given {
         return Ok(());
     }
     match requests.iter().find(|r| r.may_differ_when_repeated()) {

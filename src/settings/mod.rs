@@ -60,7 +60,10 @@ pub struct ConnectionSettings {
     pub timeout: Duration,
     /// Whether `--timeout` (or its variable) gave it.
     pub timeout_given: bool,
+    /// Retries after a timeout or a bad answer: `--retries`, or over UDP two.
     pub retries: u32,
+    /// Whether `--retries` (or its variable) gave them.
+    pub retries_given: bool,
     /// `--retry-non-idempotent`: retries of requests that may do more when sent twice.
     pub retry_non_idempotent: bool,
     pub frame_gap: Option<Duration>,
@@ -385,6 +388,7 @@ fn settings_of(cli: &mut Cli, origins: &Origins) -> Result<Settings, String> {
                 .retries
                 .and_then(|r| r.retries)
                 .unwrap_or_else(|| default_retries(taken.port)),
+            retries_given: taken.retries.and_then(|r| r.retries).is_some(),
             retry_non_idempotent: taken.repeat.is_some_and(|r| r.retry_non_idempotent),
             frame_gap: taken.exchange.and_then(|e| e.frame_gap),
             direction,
@@ -628,7 +632,8 @@ fn untaken_option(origins: &Origins) -> Option<String> {
 }
 
 /// Retries when `--retries` is not given: none, but over UDP, where a datagram lost is no
-/// fault of the device, two.
+/// fault of the device, two (of the requests that do no more when sent twice: the others
+/// are sent once).
 fn default_retries(port: Option<&str>) -> u32 {
     match port.map(Endpoint::parse) {
         Some(Ok(Endpoint::Udp { .. } | Endpoint::RtuOverUdp { .. })) => UDP_RETRIES,

@@ -27,6 +27,7 @@ mod master_tokio;
 mod plant;
 mod poll;
 mod ports;
+mod protocol;
 mod readme;
 mod redundancy;
 mod rs485;

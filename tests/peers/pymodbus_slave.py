@@ -4,6 +4,7 @@
     pymodbus_slave.py --framer rtu --serial /dev/pts/5
     pymodbus_slave.py --framer socket --tcp 5020 --identity VendorName=ACME ...
     pymodbus_slave.py --framer tls --tcp 8802 --tls server.pem,server.key,ca.pem
+    pymodbus_slave.py --framer socket --udp 5020
 """
 import argparse
 import ssl
@@ -16,7 +17,7 @@ from pymodbus.datastore import (
     ModbusServerContext,
 )
 from pymodbus.pdu.device import ModbusDeviceIdentification
-from pymodbus.server import StartSerialServer, StartTcpServer, StartTlsServer
+from pymodbus.server import StartSerialServer, StartTcpServer, StartTlsServer, StartUdpServer
 
 SIZE = 5000
 
@@ -26,6 +27,7 @@ def main():
     parser.add_argument("--framer", choices=["rtu", "ascii", "socket", "tls"], required=True)
     parser.add_argument("--serial")
     parser.add_argument("--tcp", type=int)
+    parser.add_argument("--udp", type=int, help="Modbus/UDP on 127.0.0.1")
     parser.add_argument(
         "--tls",
         metavar="CERT,KEY,CA",
@@ -66,6 +68,10 @@ def main():
             identity=identity,
             address=("127.0.0.1", args.tcp),
             sslctx=sslctx,
+        )
+    elif args.udp:
+        StartUdpServer(
+            context, framer=framer, identity=identity, address=("127.0.0.1", args.udp)
         )
     elif args.tcp:
         StartTcpServer(

@@ -190,8 +190,8 @@ fn pymodbus_reads_and_writes_every_function_through_it_as_on_the_line() {
     ]);
     assert_eq!(on_the_line["holding"], serde_json::json!([555, 0, 100]));
     assert_eq!(
-        on_the_line["missing_function"],
-        serde_json::json!({"exception": 1})
+        on_the_line["fifo"],
+        serde_json::json!({"values": [440, 4740]})
     );
     let Some(bridged) = PtyPair::new() else {
         return;

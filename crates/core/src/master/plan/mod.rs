@@ -513,7 +513,7 @@ pub fn plan(operation: &Operation, options: PlanOptions) -> Result<Plan> {
                 _ => (address, values),
             };
             if let (address, Some(bit)) = split_bit(address)? {
-                if !matches!(how, How::Function(None | Some(22))) {
+                if matches!(how, How::Function(Some(function)) if function != 22) {
                     return Err(PlanError::BitWrite);
                 }
                 let span = span(address, table, Access::WriteOne)?;
