@@ -6,7 +6,8 @@
 use mbtool_core::model::address::{reference, Table};
 use mbtool_core::model::values::ReadData;
 use mbtool_core::slave::datafile::DataFileError;
-use mbtool_core::slave::datafile::{entries, parse, render, Entry, EntryError};
+use mbtool_core::codec::FileRecords;
+use mbtool_core::slave::datafile::{entries, parse, render, render_files, Entry, EntryError};
 use proptest::collection::vec;
 use proptest::prelude::*;
 
@@ -131,6 +132,26 @@ proptest! {
     }
 
     #[test]
+    fn every_file_record_dump_writes_reads_back_exactly(runs in file_runs()) {
+        let text = render_files(&runs);
+        let model = parse("dump", &text).unwrap();
+        prop_assert_eq!(model.files.runs(), runs);
+        // Only the records written exist.
+        for run in model.files.runs() {
+            if run.record > 0 && !model.files.holds(run.file, run.record - 1) {
+                prop_assert!(model.files.read(run.file, run.record - 1, 1).is_err());
+            }
+        }
+    }
+
+    #[test]
+    fn file_and_fifo_lines_of_any_text_never_panic_the_reader(
+        text in "((file|fifo|record| |[0-9]{1,6}|=|:|-|f32|x){0,12}\n){0,6}",
+    ) {
+        let _ = parse("text", &text);
+    }
+
+    #[test]
     fn arbitrary_text_never_panics_the_reader(text in "([0-9x\\-= \"#a-z.]{0,40}\n){0,10}") {
         let _ = parse("any.txt", &text);
     }
@@ -139,4 +160,27 @@ proptest! {
     fn arbitrary_bytes_never_panic_the_reader(bytes in vec(any::<u8>(), 0..400)) {
         let _ = parse("any.txt", &String::from_utf8_lossy(&bytes));
     }
+}
+
+/// Runs of records of several files that neither overlap nor meet, as `dump` writes them.
+fn file_runs() -> impl Strategy<Value = Vec<FileRecords>> {
+    vec((1u16..5, 1u16..200, vec(any::<u16>(), 1..30)), 0..8).prop_map(|runs| {
+        let mut at = std::collections::BTreeMap::<u16, u32>::new();
+        let mut kept = Vec::new();
+        for (file, gap, values) in runs {
+            let start = at.get(&file).copied().unwrap_or(0) + u32::from(gap);
+            let end = start + values.len() as u32;
+            if end > 10000 {
+                continue;
+            }
+            at.insert(file, end);
+            kept.push(FileRecords {
+                file,
+                record: start as u16,
+                values,
+            });
+        }
+        kept.sort_by_key(|run| (run.file, run.record));
+        kept
+    })
 }

@@ -3,7 +3,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
 use mbtool_core::codec::framing::{Event, Framer};
-use mbtool_core::codec::{DeviceIdentification, DeviceObject};
+use mbtool_core::codec::{DeviceIdentification, DeviceObject, FileRecords, FileSpan};
 use mbtool_core::codec::{
     Direction, Envelope, Exception, ExceptionCode, Frame, Mode, Pdu, Reading, Request, Response,
 };
@@ -26,7 +26,63 @@ fn registers(max: usize) -> impl Strategy<Value = Vec<u16>> {
 /// Function codes that have no layout of their own: kept as opaque PDUs.
 fn opaque_function() -> impl Strategy<Value = u8> {
     (1u8..0x80).prop_filter("typed function", |f| {
-        !matches!(f, 0x01..=0x08 | 0x0F | 0x10 | 0x11 | 0x16 | 0x17 | 0x2B)
+        !matches!(
+            f,
+            0x01..=0x08 | 0x0F | 0x10 | 0x11 | 0x14 | 0x15 | 0x16 | 0x17 | 0x18 | 0x2B
+        )
+    })
+}
+
+/// A run of records inside a file: file 1-65535, records 0-9999, at most `most` of them.
+fn file_place(most: u16) -> impl Strategy<Value = (u16, u16, u16)> {
+    (1u16..=u16::MAX, 1..=most).prop_flat_map(|(file, count)| {
+        (0..=(10000 - count)).prop_map(move |record| (file, record, count))
+    })
+}
+
+/// Read File Record groups whose answer fits one PDU: up to 35 groups (7 bytes each in
+/// 245), their answers' groups within 245 bytes.
+fn file_spans() -> impl Strategy<Value = Vec<FileSpan>> {
+    vec(file_place(121), 1..=35)
+        .prop_map(|places| {
+            let mut answer = 0;
+            places
+                .into_iter()
+                .map(|(file, record, count)| FileSpan {
+                    file,
+                    record,
+                    count,
+                })
+                .take_while(|span| {
+                    answer += 2 + 2 * usize::from(span.count);
+                    answer <= 245
+                })
+                .collect::<Vec<_>>()
+        })
+        .prop_filter("at least one group", |spans| !spans.is_empty())
+}
+
+/// Write File Record groups within 251 bytes of groups.
+fn file_writes() -> impl Strategy<Value = Vec<FileRecords>> {
+    vec(file_place(20), 1..=8).prop_flat_map(|places| {
+        let mut bytes = 0;
+        let places: Vec<_> = places
+            .into_iter()
+            .take_while(|(_, _, count)| {
+                bytes += 7 + 2 * usize::from(*count);
+                bytes <= 251
+            })
+            .collect();
+        places
+            .into_iter()
+            .map(|(file, record, count)| {
+                vec(any::<u16>(), usize::from(count)).prop_map(move |values| FileRecords {
+                    file,
+                    record,
+                    values,
+                })
+            })
+            .collect::<Vec<_>>()
     })
 }
 
@@ -79,11 +135,14 @@ fn request(diagnostic_data: std::ops::RangeInclusive<usize>) -> impl Strategy<Va
                 object_id,
             }
         }),
+        file_spans().prop_map(|groups| Request::ReadFileRecord { groups }),
+        file_writes().prop_map(|groups| Request::WriteFileRecord { groups }),
+        any::<u16>().prop_map(|address| Request::ReadFifoQueue { address }),
     ]
 }
 
-/// Kept byte for byte, with a length its layout allows where it has one (11, 12, 20, 21,
-/// 24): the codec decodes no other (it encodes any, so that `raw` can send a malformed
+/// Kept byte for byte, with a length its layout allows where it has one (11, 12): the
+/// codec decodes no other (it encodes any, so that `raw` can send a malformed
 /// request on purpose).
 fn opaque_request() -> impl Strategy<Value = Request> {
     (opaque_function(), vec(any::<u8>(), 0..=252))
@@ -145,6 +204,13 @@ fn response(diagnostic_data: std::ops::RangeInclusive<usize>) -> impl Strategy<V
         }),
         registers(125).prop_map(|values| Response::ReadWriteMultipleRegisters { values }),
         device_identification(),
+        vec(registers(20), 1..=10)
+            .prop_filter("within 245 bytes", |groups| {
+                groups.iter().map(|g| 2 + 2 * g.len()).sum::<usize>() <= 245
+            })
+            .prop_map(|groups| Response::ReadFileRecord { groups }),
+        file_writes().prop_map(|groups| Response::WriteFileRecord { groups }),
+        vec(any::<u16>(), 0..=31).prop_map(|values| Response::ReadFifoQueue { values }),
     ]
 }
 
