@@ -1592,7 +1592,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;gateway' {
-            [CompletionResult]::new('--listen', '--listen', [CompletionResultType]::ParameterName, 'Where clients connect: tcp://ADDRESS[:PORT], or tls://ADDRESS[:PORT] for Modbus/TCP Security; repeatable')
+            [CompletionResult]::new('--listen', '--listen', [CompletionResultType]::ParameterName, 'Where clients connect: tcp://ADDRESS[:PORT], tls://ADDRESS[:PORT] for Modbus/TCP Security, or udp://ADDRESS[:PORT]; repeatable')
             [CompletionResult]::new('--unit-map', '--unit-map', [CompletionResultType]::ParameterName, 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...')
             [CompletionResult]::new('--role', '--role', [CompletionResultType]::ParameterName, 'Over tls://: what clients of role NAME may do, RULES being read and write, each alone or with a range (operator=read,write:400001-400100); repeatable. A request its role does not allow gets exception 01')
             [CompletionResult]::new('--default-role', '--default-role', [CompletionResultType]::ParameterName, 'Over tls://: the role of a client whose certificate carries none [default: such a client is refused, when --role is given]')

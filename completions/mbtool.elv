@@ -1540,7 +1540,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --version 'Print version'
         }
         &'mbtool;gateway'= {
-            cand --listen 'Where clients connect: tcp://ADDRESS[:PORT], or tls://ADDRESS[:PORT] for Modbus/TCP Security; repeatable'
+            cand --listen 'Where clients connect: tcp://ADDRESS[:PORT], tls://ADDRESS[:PORT] for Modbus/TCP Security, or udp://ADDRESS[:PORT]; repeatable'
             cand --unit-map 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...'
             cand --role 'Over tls://: what clients of role NAME may do, RULES being read and write, each alone or with a range (operator=read,write:400001-400100); repeatable. A request its role does not allow gets exception 01'
             cand --default-role 'Over tls://: the role of a client whose certificate carries none [default: such a client is refused, when --role is given]'

@@ -1957,7 +1957,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l rts-toggle -d 'R
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand serve" -s V -l version -d 'Print version'
-complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l listen -d 'Where clients connect: tcp://ADDRESS[:PORT], or tls://ADDRESS[:PORT] for Modbus/TCP Security; repeatable' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l listen -d 'Where clients connect: tcp://ADDRESS[:PORT], tls://ADDRESS[:PORT] for Modbus/TCP Security, or udp://ADDRESS[:PORT]; repeatable' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l unit-map -d 'Unit ids mapped to the slave ids they reach on the line: UNIT=SLAVE,...' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l role -d 'Over tls://: what clients of role NAME may do, RULES being read and write, each alone or with a range (operator=read,write:400001-400100); repeatable. A request its role does not allow gets exception 01' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand gateway" -l default-role -d 'Over tls://: the role of a client whose certificate carries none [default: such a client is refused, when --role is given]' -r

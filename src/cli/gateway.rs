@@ -13,8 +13,9 @@ Bridge Modbus TCP clients (a SCADA, an HMI, a laptop) to the devices on a serial
 show every transaction as it happens.
 
 --listen is where clients connect: tcp://ADDRESS[:PORT] (port 502 when left out; \
-tcp://:1502 listens on 127.0.0.1, give 0.0.0.0 for every interface); repeat it for several \
-addresses or ports. --port is the line: a serial device with its settings (-b, --parity, \
+tcp://:1502 listens on 127.0.0.1, give 0.0.0.0 for every interface), or udp://ADDRESS[:PORT] \
+for Modbus/UDP clients, each source address a client; repeat it for several addresses or \
+ports. --port is the line: a serial device with its settings (-b, --parity, \
 --mode rtu|ascii), rtu+tcp://HOST:PORT (a transparent serial server), or tcp://HOST:PORT \
 (another Modbus TCP server: a proxy that shows the traffic).
 
@@ -67,8 +68,8 @@ itself is not tls://.";
 #[derive(Clone, Debug, Args)]
 #[command(after_help = more_in_long_help(&[&[CONNECTION, RS485, TLS, ROLES]]))]
 pub struct GatewayArgs {
-    /// Where clients connect: tcp://ADDRESS[:PORT], or tls://ADDRESS[:PORT] for
-    /// Modbus/TCP Security; repeatable
+    /// Where clients connect: tcp://ADDRESS[:PORT], tls://ADDRESS[:PORT] for
+    /// Modbus/TCP Security, or udp://ADDRESS[:PORT]; repeatable
     #[arg(long, value_name = "ENDPOINT")]
     pub listen: Vec<String>,
 

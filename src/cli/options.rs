@@ -59,7 +59,8 @@ pub struct EndpointArgs {
     ///
     /// Where the slave is: a serial device (/dev/ttyUSB0, COM3), tcp://HOST[:PORT] (a bare 192.168.1.10 or
     /// HOST:PORT is Modbus TCP too), tls://HOST[:PORT] (Modbus/TCP Security, port 802),
-    /// rtu+tcp://HOST:PORT, or sim, the built-in slave
+    /// rtu+tcp://HOST:PORT, udp://HOST[:PORT] (Modbus over UDP, port 502), rtu+udp://HOST:PORT,
+    /// or sim, the built-in slave
     #[arg(
         short,
         long,

@@ -11,7 +11,9 @@ Answer as a simulated slave, for testing masters and HMIs before the device arri
 
 --port is a serial device or pseudo-terminal (RTU, or ASCII with --mode ascii), or \
 tcp://ADDRESS:PORT (Modbus TCP; tcp://:5020 listens on 127.0.0.1, give 0.0.0.0 to listen on \
-every interface), or rtu+tcp://ADDRESS:PORT (RTU frames over TCP, as behind a gateway). Many \
+every interface), or rtu+tcp://ADDRESS:PORT (RTU frames over TCP, as behind a gateway), or \
+udp://ADDRESS:PORT (Modbus over UDP, each datagram answered to where it came from) or \
+rtu+udp://ADDRESS:PORT (RTU frames in datagrams). Many \
 TCP clients are served at once; one that sends what is not Modbus, or nothing for 60 s, or \
 does not read its answers for 5 s, is dropped without holding up the others. Past 64 \
 connections a new client takes the place of the one silent the longest, if it has been \
@@ -23,7 +25,8 @@ between characters.
 
 Without --data every address of the four tables exists, holding the example values of the \
 Modbus manuals (coils 000020-000056 = CD 6B B2 0E 1B, inputs 100197-100218 = AC DB 35, \
-300009 = 10, 400108-400110 = 555, 0, 100). A data file holds one entry a line, \
+300009 = 10, 400108-400110 = 555, 0, 100), and every record of every file, records 1-2 of \
+file 4 and 9-10 of file 3 and the FIFO queue at 401247 holding the specification's examples. A data file holds one entry a line, \
 REFERENCE[-REFERENCE] = VALUE... [TYPE [ORDER]], and only the addresses it names exist:
 
   400108 = 555 0 100
@@ -31,6 +34,8 @@ REFERENCE[-REFERENCE] = VALUE... [TYPE [ORDER]], and only the addresses it names
   400020 = \"PUMP 1\" ascii
   400200-400299 = 0
   000020-000023 = on off on on   # a comment
+  file 4 record 1 = 3582 32       # records of a file (functions 20, 21)
+  fifo 401247 = 440 4740          # a FIFO queue, oldest first (function 24)
 
 A range takes one value for each address or one value for all, and each address is named \
 once; anything else is refused with the file's line.
