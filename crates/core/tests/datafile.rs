@@ -3,10 +3,10 @@
 //! give a value, and no text panics the reader.
 #![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
+use mbtool_core::codec::FileRecords;
 use mbtool_core::model::address::{reference, Table};
 use mbtool_core::model::values::ReadData;
 use mbtool_core::slave::datafile::DataFileError;
-use mbtool_core::codec::FileRecords;
 use mbtool_core::slave::datafile::{entries, parse, render, render_files, Entry, EntryError};
 use proptest::collection::vec;
 use proptest::prelude::*;

@@ -10,6 +10,7 @@ use std::time::Instant;
 
 use crate::codec::{Envelope, Mode};
 use crate::listener::clients::lock;
+use crate::transport::udp::next_datagram;
 
 use super::{Answers, Gateway, Job};
 
@@ -28,20 +29,7 @@ impl Gateway {
         let mut heard: VecDeque<SocketAddr> = VecDeque::new();
         let mut datagram = [0u8; 2048];
         loop {
-            let (len, from) = match socket.recv_from(&mut datagram) {
-                Ok(received) => received,
-                Err(e)
-                    if matches!(
-                        e.kind(),
-                        io::ErrorKind::Interrupted
-                            | io::ErrorKind::ConnectionRefused
-                            | io::ErrorKind::ConnectionReset
-                    ) =>
-                {
-                    continue
-                }
-                Err(e) => return Err(e),
-            };
+            let (len, from) = next_datagram(&socket, &mut datagram)?;
             let frame = &datagram[..len];
             if Envelope::open(Mode::Tcp, frame).is_err() {
                 lock(&self.summary).summary.bad_datagrams += 1;

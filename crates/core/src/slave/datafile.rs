@@ -230,6 +230,9 @@ fn file_entry(
         return Err(EntryError::NotAnEntry);
     }
     let values = registers(values)?;
+    if values.is_empty() {
+        return Err(EntryError::NoValue);
+    }
     let last = usize::from(record) + values.len() - 1;
     if last > usize::from(MAX_RECORD) {
         return Err(EntryError::Place(format!(

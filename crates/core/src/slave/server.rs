@@ -15,6 +15,7 @@ use crate::listener::{receive_frames, Link, Security};
 use crate::slave::faults::FaultInjection;
 use crate::slave::Slave;
 use crate::transport::tcp::Tcp;
+use crate::transport::udp::next_datagram;
 use crate::transport::Transport;
 
 /// Who sent a request, as the server knows them.
@@ -273,21 +274,7 @@ impl Server {
         let mut rng = fastrand::Rng::with_seed(self.seed);
         let mut datagram = [0u8; 2048];
         loop {
-            let (len, from) = match socket.recv_from(&mut datagram) {
-                Ok(received) => received,
-                // A client gone, told by an earlier answer's ICMP: nothing for the others.
-                Err(e)
-                    if matches!(
-                        e.kind(),
-                        io::ErrorKind::Interrupted
-                            | io::ErrorKind::ConnectionRefused
-                            | io::ErrorKind::ConnectionReset
-                    ) =>
-                {
-                    continue
-                }
-                Err(e) => return Err(e),
-            };
+            let (len, from) = next_datagram(socket, &mut datagram)?;
             let peer = from.to_string();
             if let Some(answer) = self.answer_frame(&datagram[..len], &peer, &mut rng) {
                 // A client that cannot be reached asks again, or gives up: no matter here.

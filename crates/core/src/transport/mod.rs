@@ -84,6 +84,12 @@ pub(crate) fn lock<T>(mutex: &std::sync::Mutex<T>) -> std::sync::MutexGuard<'_, 
     }
 }
 
+/// A socket's read timeout for `left`: rounded up to whole milliseconds, so that it is
+/// rarely changed; never 0, which would mean no timeout at all.
+pub(crate) fn whole_ms(left: std::time::Duration) -> u64 {
+    (left.as_micros().div_ceil(1000) as u64).max(1)
+}
+
 /// A socket read whose wait is bounded by a read timeout: TCP and TLS alike.
 pub(crate) trait TimedRead {
     /// The socket whose read timeout bounds the wait.
@@ -107,9 +113,7 @@ pub(crate) fn receive_timed(
         let Some(left) = time_left(deadline) else {
             return Ok(0);
         };
-        // Rounded up to whole milliseconds, so that it is rarely changed; never 0, which
-        // would mean no timeout at all.
-        let left_ms = (left.as_micros().div_ceil(1000) as u64).max(1);
+        let left_ms = whole_ms(left);
         if left_ms != *reader.timeout_ms() {
             reader
                 .socket()

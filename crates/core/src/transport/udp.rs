@@ -5,7 +5,7 @@ use std::io;
 use std::net::{SocketAddr, ToSocketAddrs, UdpSocket};
 use std::time::{Duration, Instant};
 
-use super::{time_left, Transport};
+use super::{time_left, whole_ms, Transport};
 
 /// A datagram is at most this long: far more than a Modbus frame, so that a longer
 /// one is read whole and found to be no frame.
@@ -51,7 +51,7 @@ impl Udp {
                     let Some(left) = time_left(deadline) else {
                         return Ok(0);
                     };
-                    let left_ms = (left.as_micros().div_ceil(1000) as u64).max(1);
+                    let left_ms = whole_ms(left);
                     if left_ms != self.read_timeout_ms {
                         self.socket
                             .set_read_timeout(Some(Duration::from_millis(left_ms)))?;
@@ -86,6 +86,23 @@ impl Udp {
                     ) => {}
                 Err(e) => return Err(e),
             }
+        }
+    }
+}
+
+/// The next datagram that comes to `socket`, and where from. The errors an earlier
+/// datagram's ICMP answer leaves (its sender gone) are no fault of this socket: passed over.
+pub fn next_datagram(socket: &UdpSocket, buf: &mut [u8]) -> io::Result<(usize, SocketAddr)> {
+    loop {
+        match socket.recv_from(buf) {
+            Err(e)
+                if matches!(
+                    e.kind(),
+                    io::ErrorKind::Interrupted
+                        | io::ErrorKind::ConnectionRefused
+                        | io::ErrorKind::ConnectionReset
+                ) => {}
+            received => return received,
         }
     }
 }

@@ -208,11 +208,8 @@ pub(super) fn read_fifo_plan(slave: u8, reference: &str, options: PlanOptions) -
 
 #[cfg(test)]
 mod tests {
+    use super::super::tests::words;
     use super::*;
-
-    fn words(text: &str) -> Vec<String> {
-        text.split_whitespace().map(String::from).collect()
-    }
 
     #[test]
     fn groups_are_cut_and_packed_within_one_answer() {

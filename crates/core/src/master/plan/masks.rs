@@ -118,11 +118,8 @@ pub(super) fn read_write_plan(
 
 #[cfg(test)]
 mod tests {
+    use super::super::tests::words;
     use super::*;
-
-    fn words(text: &str) -> Vec<String> {
-        text.split_whitespace().map(String::from).collect()
-    }
 
     #[test]
     fn a_bit_is_one_mask_write_in_either_form() {

@@ -621,6 +621,11 @@ fn raw_request(pdu: &[u8]) -> Result<Request> {
 mod tests {
     use super::*;
 
+    /// Words as a command line splits them.
+    pub(super) fn words(text: &str) -> Vec<String> {
+        text.split_whitespace().map(String::from).collect()
+    }
+
     fn read(address: &str, count: Option<&str>, options: PlanOptions) -> Result<Plan> {
         plan(
             &Operation::Read {
