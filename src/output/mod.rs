@@ -210,6 +210,14 @@ pub fn write_fields_summary(out: &mut String, fields: &Fields) {
                 let _ = write!(out, "{} values: ", values.len());
             }
             write_values(out, values, 8);
+            // Function 23: the read that follows the write.
+            if let (Some(address), Some(count)) = (fields.read_address, fields.read_count) {
+                let read = mbtool_core::model::address::reference(
+                    mbtool_core::model::address::Table::HoldingRegisters,
+                    address,
+                );
+                let _ = write!(out, ", then read {read} x{count}");
+            }
         }
         (None, count) => {
             let data = fields.text.as_ref().or(fields.data.as_ref());
