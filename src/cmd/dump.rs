@@ -52,12 +52,16 @@ pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
         &stop.flag,
     );
     let files = match &dump {
-        Ok(dump) if !dump.interrupted && !spans.is_empty() => {
-            Some(backup::dump_files(&mut connection.master, slave, &spans))
-        }
+        Ok(dump) if !dump.interrupted && !spans.is_empty() => Some(backup::dump_files(
+            &mut connection.master,
+            slave,
+            &spans,
+            settings.data.max_per_request,
+        )),
         _ => None,
     };
     super::shared::tell_switches(settings, &mut connection.master);
+    super::shared::tell_foreign(connection.master.foreign());
     let dump = dump.map_err(|e| connection.explain(Error::from(e)))?;
     let files = files
         .transpose()
@@ -119,9 +123,13 @@ pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
     let addresses: usize = dump.entries.iter().map(|e| e.values.len()).sum();
     let records: usize = files.records.iter().map(|r| r.values.len()).sum();
     let values = match (addresses, records) {
-        (addresses, 0) => format!("{addresses} addresses"),
-        (0, records) => format!("{records} records"),
-        (addresses, records) => format!("{addresses} addresses and {records} records"),
+        (addresses, 0) => plural(addresses, "address"),
+        (0, records) => plural(records, "record"),
+        (addresses, records) => format!(
+            "{} and {}",
+            plural(addresses, "address"),
+            plural(records, "record")
+        ),
     };
     let requests = dump.requests + files.requests;
     let target = match &settings.output.file {
@@ -149,11 +157,35 @@ pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
         "mbtool: dumped {values} of slave {slave} to {target} in {}{not_at_once}",
         plural(requests as usize, "request")
     );
+    // Records the device has and could not give are told the same way.
+    if !files.unreadable.is_empty() {
+        let told: Vec<String> = files
+            .unreadable
+            .iter()
+            .map(|(span, code)| format!("{} ({code})", output::backup::records_text(span)))
+            .collect();
+        mbtool::note!(
+            "mbtool: slave {slave} could not give {}: {}; they are left out of the dump",
+            plural(told.len(), "record"),
+            told.join(", ")
+        );
+    }
     // Addresses the device has and could not give are no holes: the dump lacks them, and
     // its status is the first one's exception.
-    let Some((_, first)) = dump.unreadable.first() else {
-        return Ok(0);
+    let first = match (dump.unreadable.first(), files.unreadable.first()) {
+        (Some((range, code)), _) => (range.table.read_function(), *code),
+        (None, Some((_, code))) => (mbtool_core::codec::function::READ_FILE_RECORD, *code),
+        (None, None) => return Ok(0),
     };
+    if dump.unreadable.is_empty() {
+        let refused = RunError::Exception {
+            slave,
+            function: first.0,
+            code: first.1,
+        };
+        return Ok(mbtool::error::run_exit_code(&refused));
+    }
+    let first = &first.1;
     let told: Vec<String> = dump
         .unreadable
         .iter()

@@ -56,9 +56,16 @@ pub fn run<W: PollRows>(
     settings: &Settings,
     target: &Connector,
     interval: Duration,
-    read: impl FnMut(&mut Master) -> Result<W::Item, RunError>,
+    mut read: impl FnMut(&mut Master) -> Result<W::Item, RunError>,
     writer: impl Fn(Format) -> W,
 ) -> Result<u8> {
+    // Datagrams from elsewhere, told at the end with the summary.
+    let mut foreign = None;
+    let read = |master: &mut Master| {
+        let item = read(master);
+        foreign = master.foreign().or(foreign);
+        item
+    };
     let mut screen = writer(settings.output.format);
     let mut log = settings
         .poll
@@ -152,5 +159,6 @@ pub fn run<W: PollRows>(
         ),
     };
     mbtool::note!("mbtool: {}{failing}", stats.summary());
+    super::shared::tell_foreign(foreign);
     Ok(last_status)
 }

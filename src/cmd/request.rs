@@ -221,7 +221,11 @@ fn writes(
     }
     let done = WriteDone {
         slave: plan.slave,
-        function: first.function(),
+        // A bit set by a read and a write says the write that did it.
+        function: match written.mask_write_emulated {
+            true => mbtool_core::codec::function::WRITE_SINGLE_REGISTER,
+            false => first.function(),
+        },
         address: settings.output.style.address_base.number(address),
         reference,
         // Values as the user typed them: one f32 is two registers.

@@ -30,6 +30,13 @@ pub fn run(settings: &Settings, job: &job::Restore) -> Result<u8> {
         );
     }
     let runs = model.files.runs();
+    let queues = model.fifos.queues().count();
+    if queues > 0 {
+        mbtool::note!(
+            "mbtool: {file}: {} skipped: Modbus has no function that writes a FIFO queue",
+            plural(queues, "fifo line")
+        );
+    }
     let mut requests = restore_requests(&entries, settings.data.max_per_request);
     requests.extend(file_restore_requests(&runs));
     if requests.is_empty() {

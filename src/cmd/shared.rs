@@ -63,7 +63,7 @@ pub fn refuse_unsafe_retries(settings: &Settings, requests: &[Request]) -> Resul
     }
     match requests.iter().find(|r| r.may_differ_when_repeated()) {
         Some(request) => Err(Error::usage(format!(
-            "--retries {} would send function {:02} ({}) again after a lost answer, and the device may have \
+            "--retries {} (or MBTOOL_RETRIES) would send function {:02} ({}) again after a lost answer, and the device may have \
              carried it out already: give --retry-non-idempotent to retry it all the same, or --retries 0",
             connection.retries,
             request.function(),
@@ -152,12 +152,20 @@ pub fn tell_after_requests(master: &mut Master) {
             mbtool_core::master::run::times(resent.sent),
         );
     }
-    let foreign = master.foreign_datagrams();
-    if foreign > 0 {
+    tell_foreign(master.foreign());
+}
+
+/// A line on stderr for the datagrams that came from elsewhere than the device, with
+/// where the last came from: a device that answers from another address or port.
+pub fn tell_foreign(foreign: Option<mbtool_core::transport::Foreign>) {
+    if let Some(foreign) = foreign {
+        let count = foreign.count;
         mbtool::note!(
-            "mbtool: {foreign} datagram{} came from elsewhere than the device and {} passed over",
-            if foreign == 1 { "" } else { "s" },
-            if foreign == 1 { "was" } else { "were" },
+            "mbtool: {} from {}, not the device asked ({}), {} passed over; a device that answers from another address or port is not heard",
+            mbtool::output::plural(count as usize, "datagram"),
+            foreign.last_from,
+            foreign.device,
+            if count == 1 { "was" } else { "were" },
         );
     }
 }

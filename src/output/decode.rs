@@ -20,8 +20,10 @@ pub struct DecodeWriter {
     line: Vec<u8>,
 }
 
-const CSV_HEADER: &str =
-    "mode,kind,slave,function,valid,address,ref,count,max_count,values,exception,error,ambiguous";
+/// `detail`: what the other columns cannot hold (file record groups, masks, the read of a
+/// read/write), in a few words.
+const CSV_HEADER: &str = "mode,kind,slave,function,valid,address,ref,count,max_count,values,\
+                          exception,error,ambiguous,detail";
 
 impl DecodeWriter {
     pub fn new(style: Style) -> Self {
@@ -109,7 +111,7 @@ impl DecodeWriter {
         let values = f.values.as_ref().map(|v| self.value_strings(v).join(" "));
         writeln!(
             out,
-            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{},{}",
             report.mode,
             report.kind.name(),
             report.slave,
@@ -123,6 +125,7 @@ impl DecodeWriter {
             opt(f.exception.map(|e| e.to_string())),
             csv_field(&opt(report.error.clone())),
             report.ambiguous,
+            csv_field(&super::fields_detail(f)),
         )
     }
 

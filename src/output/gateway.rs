@@ -7,8 +7,8 @@ use std::time::Duration;
 use serde::Serialize;
 
 use super::{csv_field, fields_summary, Format, PollRows};
-use mbtool_core::codec::{function, Pdu};
-use mbtool_core::describe::{describe_pdu, Fields, Kind, Values};
+use mbtool_core::codec::{function, Pdu, Request, Response};
+use mbtool_core::describe::{describe_pdu, locate_fields, Fields, Kind};
 use mbtool_core::gateway::{Outcome, Summary, Tally, Transaction};
 use mbtool_core::input::duration::show;
 use mbtool_core::model::spread::Spread;
@@ -57,25 +57,24 @@ struct JsonTransaction<'a> {
 const CSV_HEADER: &str = "time,client,unit,slave,transaction,function,request,answer,queued_us,response_time_us,tries,outcome,why,role\n";
 
 /// The fields of an answer in the light of its request: a read's values at the addresses
-/// asked, and of coils and inputs only as many as asked (the last byte's padding is not a
-/// coil).
-fn answer_fields(request: &Fields, answer: &Pdu) -> (Kind, Fields) {
+/// asked (a read/write's at its read), a file record read's files and records, and of
+/// coils and inputs only as many as asked (the last byte's padding is not a coil).
+fn answer_fields(request: &Request, answer: &Pdu) -> (Kind, Fields) {
     let (kind, mut fields) = describe_pdu(answer);
-    if let (Some(values), Some(count)) = (fields.values.as_mut(), request.count) {
-        if fields.address.is_none() {
-            if let Values::Bits(bits) = values {
-                bits.truncate(usize::from(count));
+    if let Pdu::Response(response) = answer {
+        let packed = match response {
+            Response::ReadCoils { packed } | Response::ReadDiscreteInputs { packed } => {
+                packed.as_slice()
             }
-            fields.count = Some(count);
-            fields.address = request.address;
-            fields.reference.clone_from(&request.reference);
-        }
+            _ => &[],
+        };
+        locate_fields(&mut fields, request, packed);
     }
     (kind, fields)
 }
 
 /// What a transaction's answer says, in a few words.
-fn answer_summary(request: &Fields, answer: Option<&Pdu>) -> String {
+fn answer_summary(request: &Request, answer: Option<&Pdu>) -> String {
     match answer {
         None => "-".to_string(),
         Some(Pdu::Exception(exception)) => format!("exception {}", exception.code),
@@ -142,7 +141,7 @@ impl GatewayWriter {
             t.client,
             function::name(function),
             fields_summary(&request),
-            answer_summary(&request, t.answer.as_ref()),
+            answer_summary(&t.request, t.answer.as_ref()),
             show(t.response_time),
         )
     }
@@ -150,7 +149,7 @@ impl GatewayWriter {
     fn json_row(t: &Transaction, time: &str) -> serde_json::Result<Vec<u8>> {
         let (_, request) = describe_pdu(&Pdu::Request(t.request.clone()));
         let answer = t.answer.as_ref().map(|pdu| {
-            let (kind, fields) = answer_fields(&request, pdu);
+            let (kind, fields) = answer_fields(&t.request, pdu);
             JsonAnswer { kind, fields }
         });
         let mut line = serde_json::to_vec(&JsonTransaction {
@@ -184,7 +183,7 @@ impl GatewayWriter {
             t.transaction.to_string(),
             t.request.function().to_string(),
             fields_summary(&request),
-            answer_summary(&request, t.answer.as_ref()),
+            answer_summary(&t.request, t.answer.as_ref()),
             t.queued.as_micros().to_string(),
             t.response_time.as_micros().to_string(),
             t.tries.to_string(),

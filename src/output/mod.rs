@@ -211,12 +211,9 @@ pub fn write_fields_summary(out: &mut String, fields: &Fields) {
             }
             write_values(out, values, 8);
             // Function 23: the read that follows the write.
-            if let (Some(address), Some(count)) = (fields.read_address, fields.read_count) {
-                let read = mbtool_core::model::address::reference(
-                    mbtool_core::model::address::Table::HoldingRegisters,
-                    address,
-                );
-                let _ = write!(out, ", then read {read} x{count}");
+            if fields.read_address.is_some() {
+                out.push_str(", ");
+                out.push_str(&fields_detail(fields));
             }
         }
         (None, count) => {
@@ -243,6 +240,27 @@ pub fn write_fields_summary(out: &mut String, fields: &Fields) {
             }
         }
     }
+}
+
+/// What a PDU's fields hold past an address, a count and values, in a few words: file
+/// record groups, a mask write's masks, the read of a read/write; empty for the others.
+pub fn fields_detail(fields: &Fields) -> String {
+    use std::fmt::Write as _;
+    let mut out = String::new();
+    if let Some(files) = &fields.files {
+        write_files(&mut out, files);
+    }
+    if let (Some(and), Some(or)) = (fields.and_mask, fields.or_mask) {
+        let _ = write!(out, "AND {and:04X} OR {or:04X}");
+    }
+    if let (Some(address), Some(count)) = (fields.read_address, fields.read_count) {
+        let read = mbtool_core::model::address::reference(
+            mbtool_core::model::address::Table::HoldingRegisters,
+            address,
+        );
+        let _ = write!(out, "then read {read} x{count}");
+    }
+    out
 }
 
 /// File record groups in a few words: `file 4 record 1 x2 = 3582 32; file 3 record 9 x2`.
@@ -313,6 +331,8 @@ pub fn time_of_day(time: &str) -> &str {
 pub fn plural(count: usize, noun: &str) -> String {
     match count {
         1 => format!("1 {noun}"),
+        // address, addresses
+        n if noun.ends_with('s') => format!("{n} {noun}es"),
         n => format!("{n} {noun}s"),
     }
 }

@@ -38,27 +38,28 @@ fn values_and_csv_outputs() {
         lines.next(),
         Some(
             "mode,kind,slave,function,valid,address,ref,count,max_count,values,exception,error,\
-             ambiguous"
+             ambiguous,detail"
         )
     );
     assert_eq!(
         lines.next(),
-        Some("rtu,response,17,3,true,,,3,,555 0 100,,,false")
+        Some("rtu,response,17,3,true,,,3,,555 0 100,,,false,")
     );
     // A bit answer alone: the count is not known, the most its bytes can hold is.
     let run = decode(&["-o", "csv", &rtu(&[0x11, 0x02, 0x01, 0xFF])], b"");
     assert_eq!(
         run.stdout.lines().nth(1),
-        Some("rtu,response,17,2,true,,,,8,1,,,false")
+        Some("rtu,response,17,2,true,,,,8,1,,,false,")
     );
-    // A frame that reads both ways: the request's fields, and the last column says so.
+    // A frame that reads both ways: the request's fields, and the column before the last
+    // says so.
     let run = decode(
         &["-o", "csv", &rtu(&[0x11, 0x01, 0x03, 0x00, 0x00, 0x0A])],
         b"",
     );
     assert_eq!(
         run.stdout.lines().nth(1),
-        Some("rtu,request,17,1,true,768,000769,10,,,,,true")
+        Some("rtu,request,17,1,true,768,000769,10,,,,,true,")
     );
 }
 

@@ -98,6 +98,11 @@ fn the_specification_s_examples_are_built_and_read_byte_for_byte() {
     assert_eq!(lines[4]["values"], serde_json::json!([0x01B8, 0x1284]));
     // A request and its answer side by side: the answer gets the files and records asked.
     let request = spaced_hex(&rtu(&[&[17u8][..], &pdu(SPECIFICATION[0].1)].concat()));
+    let csv = stdout(&["decode", "-o", "csv", &request]);
+    assert!(
+        csv.ends_with(",false,file 4 record 1 x2; file 3 record 9 x2\n"),
+        "{csv}"
+    );
     let paired = stdout(&["decode", "-o", "json", &request, &answers[0]]);
     let answer: serde_json::Value = serde_json::from_str(paired.lines().nth(1).unwrap()).unwrap();
     assert_eq!(
@@ -319,7 +324,7 @@ fn a_fifo_of_31_is_read_and_one_of_32_is_refused_with_exception_03() {
 /// records asked for and `restore` writes them back and reads them back.
 #[test]
 fn files_live_in_serve_s_data_file_and_go_through_dump_and_restore() {
-    let text = "400001-400004 = 1 2 3 4\nfile 4 record 0 = 10 11 12 13\nfile 9 record 100 = 7 8\n";
+    let text = "400001-400004 = 1 2 3 4\nfile 4 record 0 = 10 11 12 13\nfile 9 record 100 = 7 8\nfile 102 record 2 = 2 3 4\n";
     let (_server, port, _file) = serve_data(text, &[]);
     let output = mbtool()
         .args(&port)
@@ -351,6 +356,19 @@ fn files_live_in_serve_s_data_file_and_go_through_dump_and_restore() {
         "{told}"
     );
     assert!(told.contains("dumped 4 addresses and 6 records"), "{told}");
+    // A run that is only partly there: read in halves, down to what the device has.
+    let dump = mbtool()
+        .args(&port)
+        .args(["dump", "17", "102:0-5", "--max-per-request", "4"])
+        .output()
+        .unwrap();
+    assert!(dump.status.success(), "{dump:?}");
+    assert!(String::from_utf8_lossy(&dump.stdout).contains("\nfile 102 record 2 = 2 3 4\n"));
+    let told = String::from_utf8_lossy(&dump.stderr);
+    assert!(
+        told.contains("left out: file 102 records 0-1, file 102 record 5"),
+        "{told}"
+    );
     // The backup changed, written back, read back.
     let changed = data_file(&saved.replace("= 10 11 12 13", "= 20 21 22 23"));
     let restored = mbtool()

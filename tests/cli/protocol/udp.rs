@@ -3,6 +3,7 @@
 
 use std::net::{SocketAddr, UdpSocket};
 use std::sync::{Arc, Mutex};
+
 use std::time::{Duration, Instant};
 
 use super::{serve_udp, udp_port};
@@ -21,6 +22,9 @@ enum Udp {
     EarlierFirst,
     /// First an answer from another socket (another host, to the master), then the answer.
     StrangerFirst,
+    /// First a datagram of the answer with other values and two bytes after it, then the
+    /// answer.
+    TrailingFirst,
 }
 
 /// A Modbus/UDP device on 127.0.0.1 that answers reads of holding registers with each
@@ -54,6 +58,13 @@ fn scripted_udp_device(script: Vec<Udp>) -> (u16, Arc<Mutex<Vec<Vec<u8>>>>) {
                     let mut wrong = answer(transaction.wrapping_sub(1));
                     // Other values, that a master taking it would show.
                     *wrong.last_mut().unwrap() ^= 0xFF;
+                    send(&socket, &wrong, from);
+                    send(&socket, &answer(transaction), from);
+                }
+                Udp::TrailingFirst => {
+                    let mut wrong = answer(transaction);
+                    *wrong.last_mut().unwrap() ^= 0xFF;
+                    wrong.extend_from_slice(&[0, 0]);
                     send(&socket, &wrong, from);
                     send(&socket, &answer(transaction), from);
                 }
@@ -135,6 +146,11 @@ fn answers_at_once_are_read_at_once_and_duplicates_and_earlier_ones_are_passed_o
     let (values, stderr, took) = read(port, 200, "5s");
     assert_eq!(values, expected, "{stderr}");
     assert!(took < Duration::from_secs(1), "{took:?}");
+    // A datagram that is more than one frame is no answer, whatever it starts with.
+    let (port, _) = scripted_udp_device(vec![Udp::TrailingFirst]);
+    let (values, stderr, took) = read(port, 3, "5s");
+    assert_eq!(values, [0, 1, 2], "{stderr}");
+    assert!(took < Duration::from_secs(1), "{took:?}");
 }
 
 #[test]
@@ -143,9 +159,54 @@ fn a_datagram_from_another_host_is_passed_over_and_counted() {
     let (values, stderr, took) = read(port, 3, "5s");
     assert_eq!(values, [0, 1, 2]);
     assert!(took < Duration::from_secs(1), "{took:?}");
+    assert!(stderr.contains("1 datagram from 127.0.0.1:"), "{stderr}");
     assert!(
-        stderr.contains("1 datagram came from elsewhere than the device and was passed over"),
+        stderr.contains(&format!(
+            "not the device asked (127.0.0.1:{port}), was passed over"
+        )),
         "{stderr}"
+    );
+    // A poll tells them at its end too.
+    let (port, _) = scripted_udp_device(vec![Udp::StrangerFirst, Udp::Answer, Udp::StrangerFirst]);
+    let output = mbtool()
+        .args(["--port", &format!("udp://127.0.0.1:{port}")])
+        .args([
+            "read-holding",
+            "1",
+            "400001",
+            "--poll",
+            "50ms",
+            "--count",
+            "3",
+            "-o",
+            "csv",
+        ])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("2 datagrams from 127.0.0.1:"), "{stderr}");
+}
+
+/// RTU in datagrams is the stream a serial server packs: an answer cut across two
+/// datagrams is read whole.
+#[test]
+fn an_rtu_answer_cut_across_two_datagrams_is_read_whole() {
+    let socket = UdpSocket::bind("127.0.0.1:0").unwrap();
+    let port = socket.local_addr().unwrap().port();
+    std::thread::spawn(move || {
+        let mut datagram = [0u8; 256];
+        while let Ok((_, from)) = socket.recv_from(&mut datagram) {
+            let answer = crate::support::rtu(&[0x11, 0x03, 0x04, 0x03, 0xE8, 0x03, 0xE9]);
+            for piece in [&answer[..3], &answer[3..]] {
+                socket.send_to(piece, from).unwrap();
+                std::thread::sleep(Duration::from_millis(5));
+            }
+        }
+    });
+    let port = vec!["--port".to_string(), format!("rtu+udp://127.0.0.1:{port}")];
+    assert_eq!(
+        values_of(&port, "read-holding 17 400001 2"),
+        ["1000", "1001"]
     );
 }
 
@@ -325,9 +386,10 @@ fn a_capture_of_modbus_udp_is_read_as_tshark_reads_it() {
 }
 
 /// `gateway --listen udp://` with a datagram that is no Modbus: passed over, counted, and
-/// the next request answered.
+/// the next request answered; its rows show a read/write's read and a file record read's
+/// records, and records that are no place in a file go to the device, which says 02.
 #[test]
-fn a_gateway_passes_over_datagrams_that_are_no_modbus() {
+fn a_gateway_passes_over_datagrams_that_are_no_modbus_and_shows_what_it_passes() {
     let (_server, line) = serve_udp("udp://", &[]);
     let listen = udp_port();
     let gateway = std::process::Command::new(assert_cmd::cargo::cargo_bin("mbtool"))

@@ -229,6 +229,18 @@ pub struct FrameReport {
 /// Gives a read answer (`pdu`, as on the wire) the addresses of the request it answers,
 /// and the bits of a bit answer to the quantity asked.
 pub fn locate_answer(report: &mut FrameReport, request: &Request, pdu: &[u8]) {
+    // Function, byte count, then the bits packed.
+    locate_fields(
+        &mut report.fields,
+        request,
+        pdu.get(2..).unwrap_or_default(),
+    );
+}
+
+/// The fields of a read answer given the addresses (or files and records) of the request
+/// it answers, and a bit answer's bits (`packed`, as its PDU carries them) cut to the
+/// quantity asked.
+pub fn locate_fields(fields: &mut Fields, request: &Request, packed: &[u8]) {
     let (address, quantity) = match request {
         Request::ReadCoils { address, quantity }
         | Request::ReadDiscreteInputs { address, quantity }
@@ -240,7 +252,7 @@ pub fn locate_answer(report: &mut FrameReport, request: &Request, pdu: &[u8]) {
             ..
         } => (*read_address, *read_quantity),
         Request::ReadFileRecord { groups } => {
-            if let Some(files) = &mut report.fields.files {
+            if let Some(files) = &mut fields.files {
                 for (field, asked) in files.iter_mut().zip(groups) {
                     field.file = Some(asked.file);
                     field.record = Some(asked.record);
@@ -251,14 +263,12 @@ pub fn locate_answer(report: &mut FrameReport, request: &Request, pdu: &[u8]) {
         _ => return,
     };
     let table = Table::of_function(request.function()).unwrap_or(Table::HoldingRegisters);
-    report.fields.address = Some(address);
-    report.fields.reference = Some(reference(table, address));
-    report.fields.count = Some(quantity);
-    if let Some(values @ Values::Bits(_)) = &mut report.fields.values {
-        // Function, byte count, then the bits packed.
-        let packed = pdu.get(2..).unwrap_or_default();
+    fields.address = Some(address);
+    fields.reference = Some(reference(table, address));
+    fields.count = Some(quantity);
+    if let Some(values @ Values::Bits(_)) = &mut fields.values {
         *values = Values::bits(&bits::unpack(packed, usize::from(quantity)));
-        report.fields.max_count = None;
+        fields.max_count = None;
     }
 }
 

@@ -5,7 +5,7 @@
 use std::time::Instant;
 
 use crate::codec::adu::opaque_request;
-use crate::codec::{Direction, ExceptionCode, Frame, FrameError, Mode, Pdu};
+use crate::codec::{Direction, ExceptionCode, Frame, FrameError, Mode, Pdu, PduError};
 use crate::codec::{Request, Response};
 use crate::master::poll::Backoff;
 use crate::master::{Master, MasterError, Reply};
@@ -185,7 +185,8 @@ fn mbap_id(frame: &[u8]) -> u16 {
 
 /// The request of a client's MBAP frame, or, when its PDU does not read, the request as
 /// opaque bytes with the exception it gets: 01 for a function code that is no request's,
-/// 03 for a known function whose fields break its layout.
+/// 03 for a known function whose fields break its layout. File records that are no place
+/// in a file go to the device as they are.
 fn read_request(frame: &[u8]) -> Result<Request, (Request, ExceptionCode)> {
     let opaque = || match opaque_request(Mode::Tcp, frame, true) {
         Ok(Frame {
@@ -203,6 +204,9 @@ fn read_request(frame: &[u8]) -> Result<Request, (Request, ExceptionCode)> {
             ..
         }) if is_request_function(request.function()) => Ok(request),
         Ok(_) => Err((opaque(), ExceptionCode::ILLEGAL_FUNCTION)),
+        // Records that are no place in a file (file 0, past record 9999): the layout holds,
+        // and what the device has is the device's to say.
+        Err(FrameError::Pdu(PduError::FileReference(_))) => Ok(opaque()),
         Err(FrameError::Pdu(_)) => {
             let request = opaque();
             let code = if is_request_function(request.function()) {

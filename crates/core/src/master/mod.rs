@@ -9,7 +9,9 @@ use thiserror::Error;
 
 use crate::codec::answer::{check, Mismatch};
 use crate::codec::framing::{Event, Framer};
-use crate::codec::{Direction, Exception, Frame, FrameError, Mode, Pdu, Request, Response};
+use crate::codec::{
+    Direction, Envelope, Exception, Frame, FrameError, Mode, Pdu, Request, Response,
+};
 use crate::input::duration::show;
 use crate::transport::Transport;
 
@@ -251,9 +253,9 @@ impl Master {
         }
     }
 
-    /// How many datagrams came from elsewhere than the device (over UDP), passed over.
-    pub fn foreign_datagrams(&self) -> u64 {
-        self.transport.foreign_datagrams()
+    /// The datagrams that came from elsewhere than the device (over UDP), passed over.
+    pub fn foreign(&self) -> Option<crate::transport::Foreign> {
+        self.transport.foreign()
     }
 
     /// The answers heard over TCP after their request had timed out, since last asked.
@@ -609,6 +611,9 @@ impl Master {
     fn await_answer(&mut self, slave: u8, request: &Request) -> Result<Pdu, MasterError> {
         let deadline = Instant::now() + self.options.timeout.max(MIN_TIMEOUT);
         let timed = self.options.mode != Mode::Tcp;
+        // Modbus/UDP: a datagram a frame. RTU in datagrams is read as the stream a serial
+        // server packs them from, which may cut a frame in two.
+        let whole_datagrams = self.transport.is_datagram() && self.options.mode == Mode::Tcp;
         let mut received = Vec::new();
         let mut chunk = Vec::with_capacity(512);
         let mut events = Vec::new();
@@ -668,6 +673,16 @@ impl Master {
                 Ok(_) => {
                     self.last_traffic = Some(Instant::now());
                     received.extend_from_slice(&chunk);
+                    if whole_datagrams && Envelope::open(Mode::Tcp, &chunk).is_err() {
+                        // Modbus/UDP is one frame a datagram: one that is not (cut, two
+                        // frames, bytes after one) is no answer, whatever it starts with.
+                        heard.stale_bytes += chunk.len();
+                        heard.problem.get_or_insert(BadAnswer::NotTcp {
+                            len: chunk.len() as u64,
+                            shown: crate::codec::hex::spaced_hex(&chunk[..chunk.len().min(12)]),
+                        });
+                        continue;
+                    }
                     if timed {
                         let now = self.started.elapsed().as_micros() as u64;
                         self.framer.push_at(&chunk, now, &mut events);
@@ -675,11 +690,9 @@ impl Master {
                     } else {
                         self.framer.push(&chunk, &mut events);
                     }
-                    if self.transport.is_datagram() {
-                        // A datagram's end ends what it carries: nothing of a frame goes
-                        // on into the next one.
+                    if whole_datagrams {
+                        // A datagram's end ends the frame it carries.
                         self.framer.gap(0, &mut events);
-                        undecided = false;
                     }
                 }
                 Err(error) => break Err(Some(error)),

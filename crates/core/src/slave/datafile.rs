@@ -200,12 +200,24 @@ fn registers(values: &str) -> Result<Vec<u16>, EntryError> {
     Ok(registers)
 }
 
-fn number_of<T: std::str::FromStr>(word: Option<&str>, what: &str) -> Result<T, EntryError> {
-    word.and_then(|w| w.parse().ok())
+/// A number of a file entry, in decimal, 0x hex or 0b binary, at most `max`.
+fn number_of(word: Option<&str>, what: &str, max: u16) -> Result<u16, EntryError> {
+    word.and_then(|w| crate::input::number::parse_int(w).ok())
+        .and_then(|n| u16::try_from(n).ok())
+        .filter(|n| *n <= max)
         .ok_or_else(|| EntryError::Place(format!("give {what}, as in file 4 record 1 = 10 20")))
 }
 
-/// A `file N record R = ...` entry: records of a file.
+/// What `count` records from `record` are called: `record 5`, `records 5-9`.
+fn records_named(record: u16, count: usize) -> String {
+    match count {
+        1 => format!("record {record}"),
+        _ => format!("records {record}-{}", usize::from(record) + count - 1),
+    }
+}
+
+/// A `file N record R[-R] = ...` entry: records of a file; a range takes one value for
+/// each record or one value for all.
 fn file_entry(
     model: &mut DataModel,
     claims: &mut Claims,
@@ -214,7 +226,7 @@ fn file_entry(
     number: usize,
 ) -> Result<(), EntryError> {
     let mut words = place.split_whitespace().skip(1);
-    let file: u16 = number_of(words.next(), "a file number 1-65535")?;
+    let file = number_of(words.next(), "a file number 1-65535", u16::MAX)?;
     if file == 0 {
         return Err(EntryError::Place(
             "file 0 does not exist: files are numbered 1-65535".into(),
@@ -225,21 +237,44 @@ fn file_entry(
             "a file entry is file N record R = VALUE..., as in file 4 record 1 = 10 20".into(),
         ));
     }
-    let record: u16 = number_of(words.next(), "a record number 0-9999")?;
+    let records = words.next();
     if words.next().is_some() {
         return Err(EntryError::NotAnEntry);
     }
-    let values = registers(values)?;
+    let (first, last) = match records.and_then(|r| r.split_once('-')) {
+        Some((first, last)) => (Some(first), Some(last)),
+        None => (records, None),
+    };
+    let what = "a record number 0-9999";
+    let record = number_of(first, what, MAX_RECORD)?;
+    let size = match last {
+        Some(last) => {
+            let last = number_of(Some(last), what, MAX_RECORD)?;
+            if last < record {
+                return Err(EntryError::Place(format!(
+                    "records {record}-{last}: the first record of a range comes first"
+                )));
+            }
+            Some(u32::from(last - record) + 1)
+        }
+        None => None,
+    };
+    let (words, kind, order) = typed_words(values)?;
+    let mut registers = Vec::new();
+    for word in &words {
+        registers.extend(kind.parse(word, order).map_err(EntryError::Value)?);
+    }
+    let values = fill(size, registers, kind.width(), "record")?;
     if values.is_empty() {
         return Err(EntryError::NoValue);
     }
-    let last = usize::from(record) + values.len() - 1;
-    if last > usize::from(MAX_RECORD) {
+    if usize::from(record) + values.len() > usize::from(MAX_RECORD) + 1 {
         return Err(EntryError::Place(format!(
-            "records {record}-{last} of file {file} run past record {MAX_RECORD}"
+            "{} of file {file} run past record {MAX_RECORD}",
+            records_named(record, values.len())
         )));
     }
-    for at in record..=last as u16 {
+    for at in record..record + values.len() as u16 {
         if let Some(line) = claims.records.insert((file, at), number) {
             return Err(EntryError::Place(format!(
                 "record {at} of file {file} is given already on line {line}: give each record once"
@@ -270,7 +305,12 @@ fn fifo_entry(
             "the FIFO queue at {target} is given already on line {line}: give each queue once"
         )));
     }
-    model.fifos.set(span.address, registers(values)?);
+    // An empty queue is a queue too: `fifo 401247 =`.
+    let queue = match values.trim() {
+        "" => Vec::new(),
+        values => registers(values)?,
+    };
+    model.fifos.set(span.address, queue);
     Ok(())
 }
 
@@ -298,7 +338,7 @@ fn entry(
             .iter()
             .map(|w| parse_coil(w).map_err(EntryError::Value))
             .collect::<Result<Vec<_>, _>>()?;
-        let values = fill(span.count, bits, 1, span.table)?;
+        let values = fill(span.count, bits, 1, span.table.name())?;
         check_end(span.table, start, values.len())?;
         claims.claim(span.table, start, start + values.len() as u32, number)?;
         let table = if span.table == Table::Coils {
@@ -313,7 +353,7 @@ fn entry(
         for word in &words {
             registers.extend(kind.parse(word, order).map_err(EntryError::Value)?);
         }
-        let values = fill(span.count, registers, kind.width(), span.table)?;
+        let values = fill(span.count, registers, kind.width(), span.table.name())?;
         check_end(span.table, start, values.len())?;
         claims.claim(span.table, start, start + values.len() as u32, number)?;
         let table = if span.table == Table::HoldingRegisters {
@@ -334,7 +374,7 @@ fn fill<T: Copy>(
     range: Option<u32>,
     values: Vec<T>,
     one: usize,
-    table: Table,
+    unit: &'static str,
 ) -> Result<Vec<T>, EntryError> {
     let Some(size) = range else {
         return Ok(values);
@@ -354,7 +394,7 @@ fn fill<T: Copy>(
     Err(EntryError::RangeCount {
         values: values.len(),
         size,
-        unit: table.name(),
+        unit,
     })
 }
 
@@ -656,6 +696,12 @@ mod tests {
         ] {
             assert_eq!(parse("d", text).unwrap_err().to_string(), message);
         }
+        // Ranges of records, numbers in hex, an empty queue.
+        let model = parse("d", "file 0x10 record 0-3 = 7\nfifo 400002 =\n").unwrap();
+        assert_eq!(model.files.read(16, 0, 4), Ok(vec![7; 4]));
+        assert_eq!(model.fifos.read(1), Ok(vec![]));
+        assert!(parse("d", "file 3 record 5-7 = 1 2").is_err());
+        assert!(parse("d", "file 3 record 7-5 = 1").is_err());
         // A queue longer than one answer carries is kept, and answered with exception 03.
         let long = format!("fifo 400001 = {}", vec!["7"; 32].join(" "));
         assert_eq!(

@@ -307,9 +307,9 @@ impl TcpSession {
         }
     }
 
-    /// A UDP datagram: on a Modbus port, a frame of the connection of its two addresses,
-    /// its end ending what it carries; elsewhere, passed over (and counted where it reads
-    /// as MBAP).
+    /// A UDP datagram: on a Modbus port, the next bytes of the connection of its two
+    /// addresses, its end ending the MBAP frame it carries; elsewhere, passed over (and
+    /// counted where it reads as MBAP).
     fn datagram(&mut self, datagram: Datagram, packet: &Packet, out: &mut Vec<Record>) {
         let (client, server, from_client) = if self.ports.contains(&datagram.destination.port()) {
             (datagram.source, datagram.destination, true)
@@ -330,13 +330,15 @@ impl TcpSession {
             true => &mut connection.to_server,
             false => &mut connection.to_client,
         };
-        let mut pieces = vec![
-            Piece::Bytes {
-                data: datagram.payload.to_vec(),
-                at: now,
-            },
-            Piece::Gap(0),
-        ];
+        let mut pieces = vec![Piece::Bytes {
+            data: datagram.payload.to_vec(),
+            at: now,
+        }];
+        // Modbus/UDP is a frame a datagram; RTU in datagrams is a stream a serial server
+        // packed, which may cut a frame in two.
+        if self.mode == Mode::Tcp {
+            pieces.push(Piece::Gap(0));
+        }
         let mut found = std::mem::take(&mut self.found);
         side.frame(&mut pieces, now, &mut found);
         let place = TcpPlace {

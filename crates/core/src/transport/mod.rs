@@ -41,10 +41,21 @@ pub trait Transport: Send {
         false
     }
 
-    /// How many datagrams came from elsewhere than the device asked, and were passed over.
-    fn foreign_datagrams(&self) -> u64 {
-        0
+    /// The datagrams that came from elsewhere than the device asked, passed over.
+    fn foreign(&self) -> Option<Foreign> {
+        None
     }
+}
+
+/// Datagrams that came from elsewhere than the device asked, and were passed over.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Foreign {
+    /// How many.
+    pub count: u64,
+    /// Where the last came from.
+    pub last_from: std::net::SocketAddr,
+    /// The device asked.
+    pub device: std::net::SocketAddr,
 }
 
 /// A TCP connection to the first address of `host` that answers within `timeout`, and

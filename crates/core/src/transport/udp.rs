@@ -5,7 +5,7 @@ use std::io;
 use std::net::{SocketAddr, ToSocketAddrs, UdpSocket};
 use std::time::{Duration, Instant};
 
-use super::{time_left, whole_ms, Transport};
+use super::{time_left, whole_ms, Foreign, Transport};
 
 /// A datagram is at most this long: far more than a Modbus frame, so that a longer
 /// one is read whole and found to be no frame.
@@ -19,8 +19,8 @@ pub struct Udp {
     serial_behind: bool,
     /// The read timeout last set, in whole milliseconds.
     read_timeout_ms: u64,
-    /// Datagrams that came from elsewhere than `peer`.
-    foreign: u64,
+    /// Datagrams that came from elsewhere than `peer`, and the last one's source.
+    foreign: Option<(u64, SocketAddr)>,
 }
 
 impl Udp {
@@ -38,7 +38,7 @@ impl Udp {
             peer,
             serial_behind,
             read_timeout_ms: 0,
-            foreign: 0,
+            foreign: None,
         })
     }
 
@@ -69,7 +69,10 @@ impl Udp {
                     buf.extend_from_slice(&datagram[..n]);
                     return Ok(n);
                 }
-                Ok(_) => self.foreign += 1,
+                Ok((_, from)) => {
+                    let count = self.foreign.map_or(0, |(count, _)| count);
+                    self.foreign = Some((count + 1, from));
+                }
                 Err(e)
                     if matches!(
                         e.kind(),
@@ -132,7 +135,11 @@ impl Transport for Udp {
         true
     }
 
-    fn foreign_datagrams(&self) -> u64 {
-        self.foreign
+    fn foreign(&self) -> Option<Foreign> {
+        self.foreign.map(|(count, last_from)| Foreign {
+            count,
+            last_from,
+            device: self.peer,
+        })
     }
 }

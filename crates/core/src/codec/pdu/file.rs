@@ -238,10 +238,9 @@ pub(super) fn write_fifo_answer(w: &mut Writer, values: &[u16]) -> Result<(), Pd
     let count = u16::try_from(values.len())
         .ok()
         .filter(|count| *count <= MAX_FIFO_COUNT)
-        .ok_or(PduError::QuantityOutOfRange {
-            quantity: u16::try_from(values.len()).unwrap_or(u16::MAX),
-            max: MAX_FIFO_COUNT,
-        })?;
+        .ok_or(PduError::BadField(
+            "a FIFO queue answer carries at most 31 registers",
+        ))?;
     w.u16(2 + 2 * count).u16(count).registers(values);
     Ok(())
 }
@@ -249,10 +248,9 @@ pub(super) fn write_fifo_answer(w: &mut Writer, values: &[u16]) -> Result<(), Pd
 pub(super) fn read_fifo_answer(r: &mut Reader) -> Result<Vec<u16>, PduError> {
     let (bytes, count) = (r.u16()?, r.u16()?);
     if count > MAX_FIFO_COUNT {
-        return Err(PduError::QuantityOutOfRange {
-            quantity: count,
-            max: MAX_FIFO_COUNT,
-        });
+        return Err(PduError::BadField(
+            "a FIFO queue answer carries at most 31 registers",
+        ));
     }
     if usize::from(bytes) != 2 + 2 * usize::from(count) {
         return Err(PduError::ByteCountMismatch {

@@ -2,7 +2,7 @@
 //! 21, and read back.
 
 use super::{Difference, Place};
-use crate::codec::file::MAX_FILE_WRITE_REGISTERS;
+use crate::codec::file::{MAX_FILE_READ_REGISTERS, MAX_FILE_WRITE_BYTES, MAX_FILE_WRITE_REGISTERS};
 use crate::codec::{ExceptionCode, FileRecords, FileSpan, Request};
 use crate::master::plan::{file_read_requests, Plan};
 use crate::master::run::RunError;
@@ -13,19 +13,23 @@ use crate::master::Master;
 pub struct FileDump {
     /// The runs of records read, with their values.
     pub records: Vec<FileRecords>,
-    /// The runs asked that the device refused with exception 02, left out whole.
+    /// The runs of records the device refused with exception 02: it has none there.
     pub holes: Vec<FileSpan>,
+    /// Records the device has but could not give (exception 03 or 04 for them alone),
+    /// left out, with the exception.
+    pub unreadable: Vec<(FileSpan, ExceptionCode)>,
     /// How many requests it took.
     pub requests: u64,
 }
 
-/// The records of `span`: `None` where the device refused them (exception 02).
+/// The records of `span`, read with one request a group, or `None` with the exception
+/// the device refused them with.
 fn read_span(
     master: &mut Master,
     slave: u8,
     span: FileSpan,
     requests: &mut u64,
-) -> Result<Option<Vec<FileRecords>>, RunError> {
+) -> Result<Result<Vec<FileRecords>, ExceptionCode>, RunError> {
     let plan = Plan {
         slave,
         requests: file_read_requests(&[span]),
@@ -34,48 +38,144 @@ fn read_span(
     };
     *requests += plan.requests.len() as u64;
     match master.read_files(&plan) {
-        Ok(records) => Ok(Some(records)),
-        Err(RunError::Exception { code, .. }) if code == ExceptionCode::ILLEGAL_DATA_ADDRESS => {
-            Ok(None)
-        }
+        Ok(records) => Ok(Ok(records)),
+        Err(RunError::Exception { code, .. }) => Ok(Err(code)),
         Err(error) => Err(error),
     }
 }
 
-/// Reads the records of `spans`, a run the device refuses left out whole.
+/// Adds `span` to `spans`, joined with the last one where they meet.
+fn add_span(spans: &mut Vec<FileSpan>, span: FileSpan) {
+    match spans.last_mut() {
+        Some(last)
+            if last.file == span.file
+                && u32::from(last.record) + u32::from(last.count) == u32::from(span.record) =>
+        {
+            last.count += span.count;
+        }
+        _ => spans.push(span),
+    }
+}
+
+/// Reads `span`, split in halves where the device refuses it (02, 03 or 04), down to the
+/// records it lacks (02) or cannot give (03, 04).
+fn read_splitting(
+    master: &mut Master,
+    slave: u8,
+    span: FileSpan,
+    dump: &mut FileDump,
+) -> Result<(), RunError> {
+    match read_span(master, slave, span, &mut dump.requests)? {
+        Ok(records) => {
+            for run in records {
+                match dump.records.last_mut() {
+                    Some(last)
+                        if last.file == run.file
+                            && usize::from(last.record) + last.values.len()
+                                == usize::from(run.record) =>
+                    {
+                        last.values.extend(run.values);
+                    }
+                    _ => dump.records.push(run),
+                }
+            }
+        }
+        Err(code)
+            if !matches!(
+                code,
+                ExceptionCode::ILLEGAL_DATA_ADDRESS
+                    | ExceptionCode::ILLEGAL_DATA_VALUE
+                    | ExceptionCode::SERVER_DEVICE_FAILURE
+            ) =>
+        {
+            return Err(RunError::Exception {
+                slave,
+                function: crate::codec::function::READ_FILE_RECORD,
+                code,
+            });
+        }
+        Err(ExceptionCode::ILLEGAL_DATA_ADDRESS) if span.count == 1 => {
+            add_span(&mut dump.holes, span);
+        }
+        Err(code) if span.count == 1 => dump.unreadable.push((span, code)),
+        Err(_) => {
+            let first = span.count / 2;
+            let halves = [
+                FileSpan {
+                    count: first,
+                    ..span
+                },
+                FileSpan {
+                    record: span.record + first,
+                    count: span.count - first,
+                    ..span
+                },
+            ];
+            for half in halves {
+                read_splitting(master, slave, half, dump)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Reads the records of `spans`, each in requests of at most `max` records (or as many
+/// as an answer holds), a run the device refuses read in halves down to its holes.
 pub fn dump_files(
     master: &mut Master,
     slave: u8,
     spans: &[FileSpan],
+    max: Option<u16>,
 ) -> Result<FileDump, RunError> {
+    let most = max.map_or(MAX_FILE_READ_REGISTERS, |max| {
+        max.clamp(1, MAX_FILE_READ_REGISTERS)
+    });
     let mut dump = FileDump::default();
     for span in spans {
-        match read_span(master, slave, *span, &mut dump.requests)? {
-            Some(records) => dump.records.extend(records),
-            None => dump.holes.push(*span),
+        for at in (0..span.count).step_by(usize::from(most)) {
+            let piece = FileSpan {
+                record: span.record + at,
+                count: most.min(span.count - at),
+                ..*span
+            };
+            read_splitting(master, slave, piece, &mut dump)?;
         }
     }
     Ok(dump)
 }
 
-/// The requests that write `runs` of records back: a request a run, or as many as one
-/// request's limit needs.
+/// The requests that write `runs` of records back: as many groups a request as its 251
+/// bytes hold, a run longer than one group holds cut in groups.
 pub fn file_restore_requests(runs: &[FileRecords]) -> Vec<Request> {
     let most = usize::from(MAX_FILE_WRITE_REGISTERS);
-    runs.iter()
-        .flat_map(|run| {
-            run.values
-                .chunks(most)
-                .enumerate()
-                .map(move |(i, chunk)| Request::WriteFileRecord {
-                    groups: vec![FileRecords {
-                        file: run.file,
-                        record: run.record + (i * most) as u16,
-                        values: chunk.to_vec(),
-                    }],
-                })
-        })
-        .collect()
+    let groups = runs.iter().flat_map(|run| {
+        run.values
+            .chunks(most)
+            .enumerate()
+            .map(move |(i, chunk)| FileRecords {
+                file: run.file,
+                record: run.record + (i * most) as u16,
+                values: chunk.to_vec(),
+            })
+    });
+    let mut requests = Vec::new();
+    let mut request: Vec<FileRecords> = Vec::new();
+    let mut bytes = 0;
+    for group in groups {
+        let len = 7 + 2 * group.values.len();
+        if !request.is_empty() && bytes + len > MAX_FILE_WRITE_BYTES {
+            requests.push(Request::WriteFileRecord {
+                groups: std::mem::take(&mut request),
+            });
+            bytes = 0;
+        }
+        bytes += len;
+        request.push(group);
+    }
+    if !request.is_empty() {
+        requests.push(Request::WriteFileRecord { groups: request });
+    }
+    requests
 }
 
 /// Reads `runs` back and lists the records that differ.

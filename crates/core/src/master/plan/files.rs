@@ -8,7 +8,7 @@ use crate::codec::file::{
 };
 use crate::codec::{FileRecords, FileSpan, Request};
 use crate::input::number::{parse_in_range, parse_int};
-use crate::model::address::{parse_span, Access, Table};
+use crate::model::address::{parse_span, Access, AddressError, Table};
 
 use super::{parse_registers, Plan, PlanError, PlanOptions, Result};
 
@@ -35,7 +35,12 @@ fn parse_place(text: &str) -> Result<(u16, u16)> {
         )));
     }
     let file = u16::try_from(file).map_err(|_| bad())?;
-    if record > i128::from(MAX_RECORD) || record < 0 {
+    if record < 0 {
+        return Err(records(format!(
+            "{text}: record {record} is no record: records are 0-{MAX_RECORD}"
+        )));
+    }
+    if record > i128::from(MAX_RECORD) {
         return Err(records(format!(
             "{text}: record {record} is past {MAX_RECORD}, the last record of a file"
         )));
@@ -134,7 +139,7 @@ pub fn parse_file_span(text: &str) -> Result<FileSpan> {
                 .filter(|last| (i128::from(record)..=i128::from(MAX_RECORD)).contains(last))
                 .ok_or_else(|| {
                     records(format!(
-                        "{text}: the last record is {record}-{MAX_RECORD}, as in 4:0-99"
+                        "{text}: the last record is one of {record}-{MAX_RECORD}, as in 4:0-99"
                     ))
                 })?;
             last as u16 - record + 1
@@ -190,7 +195,13 @@ pub(super) fn read_fifo_plan(slave: u8, reference: &str, options: PlanOptions) -
         Table::HoldingRegisters,
         Access::Read,
         options.numbering,
-    )?;
+    )
+    .map_err(|error| match error {
+        AddressError::WrongTable { .. } => records(format!(
+            "{reference}: a FIFO queue's pointer is a holding register, as in 401247"
+        )),
+        error => error.into(),
+    })?;
     if span.count.is_some() {
         return Err(records(format!(
             "{reference}: a FIFO queue's pointer is one register, not a range"
