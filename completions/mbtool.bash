@@ -1031,7 +1031,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__encode__subcmd__read__subcmd__file)
-            opts="-p -m -t -o -h --port --mode --type --order --output --json --help"
+            opts="-p -m -t -o -h --port --mode --max-per-request --type --order --output --json --help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1051,6 +1051,10 @@ _mbtool() {
                     ;;
                 -m)
                     COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --max-per-request)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --type)
@@ -3045,7 +3049,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__read__subcmd__file)
-            opts="-p -m -b -v -t -o -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --type --order --output --json --help --version"
+            opts="-p -m -b -v -t -o -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --max-per-request --type --order --output --json --help --version"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -3124,6 +3128,10 @@ _mbtool() {
                     return 0
                     ;;
                 --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --max-per-request)
                     COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;

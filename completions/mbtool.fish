@@ -856,6 +856,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l cert -d 'Thi
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-file" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''
@@ -1738,6 +1739,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-file" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
 tcp\t''"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-file" -l max-per-request -d 'Split reads and writes into requests of at most N coils or registers' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-file" -s t -l type -d 'Register value type, for values read and values to write' -r -f -a "u16\t''
 i16\t''
 u32\t''

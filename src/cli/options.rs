@@ -450,7 +450,8 @@ pub struct AddressArgs {
 pub struct SplitArgs {
     /// Split reads and writes into requests of at most N coils or registers
     ///
-    /// For devices that take fewer than the protocol allows
+    /// For devices that take fewer than the protocol allows; for read-file and dump, records
+    /// of files a request
     #[arg(long, hide_short_help = true, value_name = "N", value_parser = whole::<u16>(1, 2000))]
     pub max_per_request: Option<u16>,
 }

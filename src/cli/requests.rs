@@ -125,7 +125,16 @@ pub struct OneRegisterData {
     pub registers: RegisterArgs,
 }
 
-// Registers shown as values: a raw PDU's answer, file records.
+// Records of files read as values, in requests as large as the device takes.
+#[derive(Clone, Debug, Args)]
+pub struct RecordData {
+    #[command(flatten)]
+    pub split: SplitArgs,
+    #[command(flatten)]
+    pub registers: RegisterArgs,
+}
+
+// Registers shown as values: a raw PDU's answer, file records written.
 #[derive(Clone, Debug, Args)]
 pub struct ValueData {
     #[command(flatten)]
@@ -180,6 +189,10 @@ impl ShortHelp for OneRegisterData {
     const LEFT_OUT: &'static [&'static str] = &[left_out::ADDRESSES];
 }
 
+impl ShortHelp for RecordData {
+    const LEFT_OUT: &'static [&'static str] = &[left_out::ADDRESSES];
+}
+
 impl ShortHelp for ValueData {
     const LEFT_OUT: &'static [&'static str] = &[];
 }
@@ -193,6 +206,7 @@ holds!(BitData: addresses, split);
 holds!(OneBitData: addresses);
 holds!(RegisterData: addresses, split, registers);
 holds!(OneRegisterData: addresses, registers);
+holds!(RecordData: split, registers);
 holds!(ValueData: registers);
 
 // The commands that send requests; `encode` takes the same ones. A plain comment: a doc
@@ -224,7 +238,7 @@ pub enum RequestCommand<W: Wire> {
     /// Write by reference: 05/06 for one value, 15/16 for more
     Write(RequestArgs<WriteByReferenceArgs, RegisterData, W::Repeatable>),
     /// Read records of files (function 20)
-    ReadFile(RequestArgs<ReadFileArgs, ValueData, W::Write>),
+    ReadFile(RequestArgs<ReadFileArgs, RecordData, W::Write>),
     /// Write records of a file (function 21)
     WriteFile(RequestArgs<WriteFileArgs, ValueData, W::Repeatable>),
     /// Set bits of a register in one request (function 22)

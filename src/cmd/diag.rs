@@ -38,6 +38,7 @@ pub fn run(settings: &Settings, job: &job::Diag) -> Result<u8> {
         })
     })()
     .map_err(|e: mbtool_core::master::MasterError| connection.explain(e.into()))?;
+    super::shared::tell_foreign(connection.master.foreign());
     // A device that refuses every diagnostic (or a gateway with nothing behind that id)
     // told nothing of its health: that is its answer.
     if let Outcome::Refused(code) = report.round_trips {

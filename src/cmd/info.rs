@@ -19,6 +19,7 @@ pub fn run(settings: &Settings, job: &job::Device) -> Result<u8> {
     let master = &mut connection.master;
     let asked = outcome(identification(master, slave))
         .and_then(|id| Ok((id, outcome(server_id(master, slave))?)));
+    super::shared::tell_foreign(connection.master.foreign());
     let (identification, server_id) = asked.map_err(|e| connection.explain(e.into()))?;
     let report = InfoReport {
         slave,

@@ -8,7 +8,7 @@ use mbtool::connection::{Connector, Role};
 use mbtool::error::Error;
 use mbtool::output;
 use mbtool::output::decode::DecodeWriter;
-use mbtool::output::read::{write_done, ReadWriter, WriteDone};
+use mbtool::output::read::{write_done, ReadWriter, WriteDetail, WriteDone};
 use mbtool::settings::job::{RequestWords, TypedWords};
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Mode, Pdu, Request};
@@ -196,6 +196,11 @@ fn writes(
             reference: format!("file {} record {}", group.file, group.record),
             count: written.count / settings.data.value_type.width(),
             broadcast: plan.slave == 0,
+            detail: WriteDetail {
+                file: Some(group.file),
+                record: Some(group.record),
+                ..WriteDetail::default()
+            },
         };
         write_done(out, settings.output.format, &done)?;
         return Ok(0);
@@ -237,6 +242,16 @@ fn writes(
             _ => written.count,
         },
         broadcast: plan.slave == 0,
+        detail: match first {
+            Request::MaskWriteRegister {
+                and_mask, or_mask, ..
+            } if !written.mask_write_emulated => WriteDetail {
+                and_mask: Some(*and_mask),
+                or_mask: Some(*or_mask),
+                ..WriteDetail::default()
+            },
+            _ => WriteDetail::default(),
+        },
     };
     write_done(out, settings.output.format, &done)?;
     Ok(0)

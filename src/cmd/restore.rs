@@ -64,6 +64,8 @@ pub fn run(settings: &Settings, job: &job::Restore) -> Result<u8> {
         out.flush()?;
         return Ok(0);
     }
+    // File records (21) are resent after a lost answer only when asked, as by write-file.
+    super::shared::refuse_unsafe_retries(settings, &requests)?;
     let (mut connection, slave) = super::shared::connect_to(settings, &job.slave)?;
     let stop = super::shared::stop_on_signal()?;
     connection.master.stop_on(stop.flag.clone());

@@ -409,6 +409,21 @@ pub struct WriteDone {
     pub count: usize,
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub broadcast: bool,
+    #[serde(flatten)]
+    pub detail: WriteDetail,
+}
+
+/// What a write of file records or a mask write says beside its place, for scripts.
+#[derive(Default, Serialize)]
+pub struct WriteDetail {
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub file: Option<u16>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub record: Option<u16>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub and_mask: Option<u16>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub or_mask: Option<u16>,
 }
 
 pub fn write_done(out: &mut dyn Write, format: Format, done: &WriteDone) -> io::Result<()> {
@@ -518,6 +533,7 @@ mod tests {
             reference: reference(Table::HoldingRegisters, 1).into(),
             count: 1,
             broadcast: false,
+            detail: WriteDetail::default(),
         };
         let mut out = Vec::new();
         write_done(&mut out, Format::Json, &done).unwrap();

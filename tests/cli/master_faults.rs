@@ -262,7 +262,7 @@ fn an_answer_for_another_function_is_a_bad_frame() {
 #[test]
 fn fewer_registers_than_asked_is_a_bad_frame() {
     let answer = rtu(&[0x11, 0x03, 0x04, 0x02, 0x2B, 0x00, 0x00]);
-    assert_fails(&against(vec![now(&answer)], READ), 4, "2 registers");
+    assert_fails(&against(vec![now(&answer)], READ), 4, "registers: 2");
 }
 
 #[test]

@@ -107,7 +107,7 @@ fn mbtool_against_pymodbus_over_udp() {
     let (code, out) = run_against(&port, "read-file 17 1:0 2");
     assert_eq!(code, 4, "{out}");
     assert!(
-        out.contains("answer carries 10 records, the request asked for 2"),
+        out.contains("answer carries records: 10, the request asked for 2"),
         "{out}"
     );
 }

@@ -432,3 +432,64 @@ fn a_gateway_passes_over_datagrams_that_are_no_modbus_and_shows_what_it_passes()
         "{text}"
     );
 }
+
+/// A request the network repeats reaches the line once: repeats while it is under way are
+/// dropped, and one after its answer gets that answer again.
+#[test]
+fn a_gateway_carries_out_a_repeated_datagram_once() {
+    let (_server, line) = serve_udp("udp://", &["--delay", "50ms"]);
+    let listen = udp_port();
+    let gateway = std::process::Command::new(assert_cmd::cargo::cargo_bin("mbtool"))
+        .args(["gateway"])
+        .args(&line)
+        .args([
+            "--listen",
+            &format!("udp://127.0.0.1:{listen}"),
+            "-o",
+            "json",
+        ])
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let mut gateway = Stopped(gateway);
+    std::thread::sleep(Duration::from_millis(500));
+    let client = UdpSocket::bind("127.0.0.1:0").unwrap();
+    client
+        .set_read_timeout(Some(Duration::from_millis(400)))
+        .unwrap();
+    // Mask write of 400005, transaction 4242, three times 5 ms apart.
+    let request = [0x10, 0x92, 0, 0, 0, 8, 17, 0x16, 0, 4, 0, 0xF2, 0, 0x25];
+    for _ in 0..3 {
+        client.send_to(&request, ("127.0.0.1", listen)).unwrap();
+        std::thread::sleep(Duration::from_millis(5));
+    }
+    let mut answer = [0u8; 64];
+    let (len, _) = client.recv_from(&mut answer).unwrap();
+    assert_eq!(answer[..len], request);
+    assert!(
+        client.recv_from(&mut answer).is_err(),
+        "a second answer came"
+    );
+    // Its answer lost, the client asks again: the same answer, from the gateway.
+    client.send_to(&request, ("127.0.0.1", listen)).unwrap();
+    let (len, _) = client.recv_from(&mut answer).unwrap();
+    assert_eq!(answer[..len], request);
+    let pid = gateway.0.id().to_string();
+    std::process::Command::new("kill")
+        .args(["-INT", &pid])
+        .status()
+        .unwrap();
+    let output = std::mem::replace(
+        &mut gateway.0,
+        std::process::Command::new("true").spawn().unwrap(),
+    )
+    .wait_with_output()
+    .unwrap();
+    let text = String::from_utf8_lossy(&output.stdout);
+    let on_the_line = text
+        .lines()
+        .filter(|l| l.contains(r#""function":22"#))
+        .count();
+    assert_eq!(on_the_line, 1, "{text}");
+}

@@ -270,7 +270,7 @@ fn an_answer_that_does_not_fit_its_request_says_so_in_every_format() {
         assert!(output.status.success(), "{output:?}");
         String::from_utf8(output.stdout).unwrap()
     };
-    let told = "answer carries 1 registers, the request asked for 2";
+    let told = "answer carries registers: 1, the request asked for 2";
     let lines = json_lines(sniffed("json").as_bytes());
     assert_eq!(lines[1]["mismatch"], told);
     assert!(lines[1].get("paired").is_none());

@@ -17,7 +17,7 @@ pub enum Mismatch {
         answered: u8,
     },
     /// The answer carries more or fewer values than the request asked for.
-    #[error("answer carries {answered} {what}, the request asked for {asked}")]
+    #[error("answer carries {what}: {answered}, the request asked for {asked}")]
     Count {
         /// What was counted: "registers", or "bytes of bits" for coils and discrete inputs.
         what: &'static str,

@@ -416,10 +416,12 @@ impl Writing {
 enum Answers {
     /// A TCP client's writing thread.
     Stream(mpsc::Sender<Vec<u8>>),
-    /// A UDP client: a datagram to where its requests came from.
+    /// A UDP client: a datagram to where its requests came from, remembered for a
+    /// repeat of the request.
     Datagram {
         socket: Arc<std::net::UdpSocket>,
         to: std::net::SocketAddr,
+        recent: Arc<Mutex<udp::Recent>>,
     },
 }
 
@@ -428,7 +430,10 @@ impl Answers {
     fn send(&self, answer: Vec<u8>) -> bool {
         match self {
             Answers::Stream(writer) => writer.send(answer).is_ok(),
-            Answers::Datagram { socket, to } => socket.send_to(&answer, to).is_ok(),
+            Answers::Datagram { socket, to, recent } => {
+                lock(recent).answered(*to, &answer);
+                socket.send_to(&answer, to).is_ok()
+            }
         }
     }
 }

@@ -673,6 +673,10 @@ impl Master {
                 Ok(_) => {
                     self.last_traffic = Some(Instant::now());
                     received.extend_from_slice(&chunk);
+                    if whole_datagrams {
+                        // Each datagram its own line of the trace, when it came.
+                        self.note(Traffic::Received, &chunk);
+                    }
                     if whole_datagrams && Envelope::open(Mode::Tcp, &chunk).is_err() {
                         // Modbus/UDP is one frame a datagram: one that is not (cut, two
                         // frames, bytes after one) is no answer, whatever it starts with.
@@ -698,7 +702,7 @@ impl Master {
                 Err(error) => break Err(Some(error)),
             }
         };
-        if !received.is_empty() {
+        if !received.is_empty() && !whole_datagrams {
             self.note(Traffic::Received, &received);
         }
         match (outcome, heard.answer) {

@@ -257,7 +257,7 @@ impl LiveCapture {
         }
         let filter = ports
             .iter()
-            .map(|port| format!("tcp port {port}"))
+            .map(|port| format!("tcp port {port} or udp port {port}"))
             .collect::<Vec<_>>()
             .join(" or ");
         let filter = CString::new(filter).map_err(|_| failed("a bad filter".into()))?;

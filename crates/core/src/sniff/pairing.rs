@@ -281,7 +281,7 @@ mod tests {
         assert_eq!(to, None);
         assert_eq!(
             mismatch.map(|m| m.to_string()).as_deref(),
-            Some("answer carries 1 registers, the request asked for 2")
+            Some("answer carries registers: 1, the request asked for 2")
         );
         // Answered: the next request reports none waiting.
         let (_, unanswered) = pairer.read(17, Reading::infer(&read_two), None, None);

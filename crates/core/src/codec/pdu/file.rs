@@ -113,9 +113,9 @@ fn check_answer_len(answer: usize) -> Result<(), PduError> {
 fn reference_type(r: &mut Reader) -> Result<(), PduError> {
     match r.u8()? {
         FILE_REFERENCE_TYPE => Ok(()),
-        _ => Err(PduError::FileReference(
-            "a file record group starts with reference type 06".into(),
-        )),
+        other => Err(PduError::FileReference(format!(
+            "reference type {other:02X}: a file record group starts with reference type 06"
+        ))),
     }
 }
 

@@ -32,7 +32,7 @@ fn read_span(
 ) -> Result<Result<Vec<FileRecords>, ExceptionCode>, RunError> {
     let plan = Plan {
         slave,
-        requests: file_read_requests(&[span]),
+        requests: file_read_requests(&[span], 1, None),
         reads: None,
         bits: None,
     };

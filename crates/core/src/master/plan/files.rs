@@ -80,7 +80,13 @@ pub(super) fn read_file_plan(slave: u8, words: &[String], options: PlanOptions) 
             count: count as u16,
         });
     }
-    let requests = file_read_requests(&spans);
+    if options
+        .max_per_request
+        .is_some_and(|max| usize::from(max) < width)
+    {
+        return Err(PlanError::MaxPerRequest(width as u16));
+    }
+    let requests = file_read_requests(&spans, width as u16, options.max_per_request);
     Ok(Plan {
         slave,
         requests,
@@ -89,10 +95,16 @@ pub(super) fn read_file_plan(slave: u8, words: &[String], options: PlanOptions) 
     })
 }
 
-/// The requests that read `spans` of records: each cut where one answer cannot hold it,
-/// the groups put into as few requests as the limits allow, in order.
-pub fn file_read_requests(spans: &[FileSpan]) -> Vec<Request> {
-    let most = MAX_FILE_READ_REGISTERS;
+/// The requests that read `spans` of records: each cut where one answer cannot hold it
+/// (or at `max` records), never inside a value of `unit` records, the groups put into as
+/// few requests as the limits (and `max` records a request) allow, in order.
+pub fn file_read_requests(spans: &[FileSpan], unit: u16, max: Option<u16>) -> Vec<Request> {
+    let unit = unit.max(1);
+    let limit = max.map_or(MAX_FILE_READ_REGISTERS, |max| {
+        max.min(MAX_FILE_READ_REGISTERS)
+    });
+    // Whole values, and at least one.
+    let most = (limit / unit * unit).max(unit);
     let groups = spans.iter().flat_map(|span| {
         (0..span.count)
             .step_by(usize::from(most))
@@ -104,19 +116,21 @@ pub fn file_read_requests(spans: &[FileSpan]) -> Vec<Request> {
     });
     let mut requests = Vec::new();
     let mut request: Vec<FileSpan> = Vec::new();
-    let mut answer = 0;
+    let (mut answer, mut records) = (0, 0);
     for group in groups {
         let len = read_answer_group_len(group.count);
-        if !request.is_empty()
-            && (answer + len > MAX_FILE_READ_BYTES || request.len() == MAX_GROUPS)
-        {
+        let full = answer + len > MAX_FILE_READ_BYTES
+            || request.len() == MAX_GROUPS
+            || max.is_some_and(|max| records + group.count > max);
+        if !request.is_empty() && full {
             requests.push(Request::ReadFileRecord {
                 groups: std::mem::take(&mut request),
             });
-            answer = 0;
+            (answer, records) = (0, 0);
         }
         request.push(group);
         answer += len;
+        records += group.count;
     }
     if !request.is_empty() {
         requests.push(Request::ReadFileRecord { groups: request });
@@ -248,6 +262,33 @@ mod tests {
             .collect();
         let plan = read_file_plan(17, &many, options).unwrap();
         assert_eq!(plan.requests.len(), 2);
+    }
+
+    #[test]
+    fn a_value_is_never_cut_between_requests_and_max_caps_each() {
+        let f32s = PlanOptions {
+            value_type: crate::model::values::ValueType::F32,
+            ..PlanOptions::default()
+        };
+        let counts = |plan: Plan| -> Vec<Vec<u16>> {
+            plan.requests
+                .iter()
+                .map(|r| match r {
+                    Request::ReadFileRecord { groups } => groups.iter().map(|g| g.count).collect(),
+                    _ => vec![],
+                })
+                .collect()
+        };
+        // 61 floats are 122 records: 120 and 2, not 121 and 1.
+        let plan = read_file_plan(17, &words("5:0 61"), f32s).unwrap();
+        assert_eq!(counts(plan), [vec![120], vec![2]]);
+        // At most 10 records a request, groups given apart included.
+        let ten = PlanOptions {
+            max_per_request: Some(10),
+            ..PlanOptions::default()
+        };
+        let plan = read_file_plan(17, &words("4:0 10 4:10 10 4:20 5 4:30 5"), ten).unwrap();
+        assert_eq!(counts(plan), [vec![10], vec![10], vec![5, 5]]);
     }
 
     #[test]
