@@ -4,7 +4,8 @@ both reading 3 holding registers from one pymodbus server that serves both (one 
 one data store, TCP and UDP on 127.0.0.1).
 
   - the loop: 2,000 reads in one process (--poll 0 --count 2000), per transaction, the
-    cost of starting the process taken out by also timing a run of one read; best of three;
+    cost of starting the process taken out by also timing a run of one read; TCP and UDP
+    runs taken in turn, five of each, so that both meet the same machine; the best of each;
   - printed: each time, and UDP's speed as a ratio of TCP's (above 1: UDP is faster).
 
 The same loops against mbtool serve are printed beside, for scale.
@@ -46,13 +47,21 @@ def timed(args):
     return time.perf_counter() - start
 
 
-def per_transaction(port):
-    """Seconds per read in mbtool's loop, process start-up taken out, best of three."""
+def loop(port, count):
     read = [MBTOOL, "--port", port, "read-holding", "17", "400108", "3", "-o", "values",
-            "--poll", "0", "--count"]
-    one = min(timed(read + ["1"]) for _ in range(5))
-    many = min(timed(read + [str(LOOP)]) for _ in range(3))
-    return (many - one) / (LOOP - 1)
+            "--poll", "0", "--count", str(count)]
+    return timed(read)
+
+
+def per_transaction(ports):
+    """Seconds per read in mbtool's loop on each of `ports`, process start-up taken out:
+    the ports taken in turn, the best of five runs of each."""
+    one = {port: min(loop(port, 1) for _ in range(5)) for port in ports}
+    many = {port: [] for port in ports}
+    for _ in range(5):
+        for port in ports:
+            many[port].append(loop(port, LOOP))
+    return [(min(many[port]) - one[port]) / (LOOP - 1) for port in ports]
 
 
 def answering(port, within=15):
@@ -66,7 +75,7 @@ def answering(port, within=15):
 
 
 def compare(name, tcp, udp):
-    tcp_time, udp_time = per_transaction(tcp), per_transaction(udp)
+    tcp_time, udp_time = per_transaction([tcp, udp])
     print(f"{name}: TCP {tcp_time * 1e6:.0f} us a read, UDP {udp_time * 1e6:.0f} us a read; "
           f"UDP's speed / TCP's: {tcp_time / udp_time:.2f}")
     return tcp_time / udp_time
