@@ -448,6 +448,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         }
         'mbtool;read' {
             [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'The points of a register map (CSV, or Home Assistant YAML), by name')
+            [CompletionResult]::new('--expect', '--expect', [CompletionResultType]::ParameterName, 'The value the device holds (229.0, or a range 228..231): the layouts that give it')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
@@ -485,6 +486,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits (A: the most significant byte)')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--layouts', '--layouts', [CompletionResultType]::ParameterName, 'Show the registers read as every type and byte order')
             [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
             [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
             [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
@@ -1314,6 +1316,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         }
         'mbtool;encode;read' {
             [CompletionResult]::new('--map', '--map', [CompletionResultType]::ParameterName, 'The points of a register map (CSV, or Home Assistant YAML), by name')
+            [CompletionResult]::new('--expect', '--expect', [CompletionResultType]::ParameterName, 'The value the device holds (229.0, or a range 228..231): the layouts that give it')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
             [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
             [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
@@ -1325,6 +1328,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--order', '--order', [CompletionResultType]::ParameterName, 'Byte order of values wider than 16 bits (A: the most significant byte)')
             [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
             [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--layouts', '--layouts', [CompletionResultType]::ParameterName, 'Show the registers read as every type and byte order')
             [CompletionResult]::new('--pdu-addresses', '--pdu-addresses', [CompletionResultType]::ParameterName, 'Take every address as a plain number, never as a Modicon reference')
             [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
             [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')

@@ -437,6 +437,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         }
         &'mbtool;read'= {
             cand --map 'The points of a register map (CSV, or Home Assistant YAML), by name'
+            cand --expect 'The value the device holds (229.0, or a range 228..231): the layouts that give it'
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
             cand --port 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
             cand -m 'Framing'
@@ -474,6 +475,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --order 'Byte order of values wider than 16 bits (A: the most significant byte)'
             cand -o 'Output format [default: table]'
             cand --output 'Output format [default: table]'
+            cand --layouts 'Show the registers read as every type and byte order'
             cand --rs485 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
             cand --rts-toggle 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
             cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
@@ -1276,6 +1278,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         }
         &'mbtool;encode;read'= {
             cand --map 'The points of a register map (CSV, or Home Assistant YAML), by name'
+            cand --expect 'The value the device holds (229.0, or a range 228..231): the layouts that give it'
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
             cand --port 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
             cand -m 'Framing'
@@ -1287,6 +1290,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --order 'Byte order of values wider than 16 bits (A: the most significant byte)'
             cand -o 'Output format [default: table]'
             cand --output 'Output format [default: table]'
+            cand --layouts 'Show the registers read as every type and byte order'
             cand --pdu-addresses 'Take every address as a plain number, never as a Modicon reference'
             cand --json 'The same as --output json'
             cand -h 'Print help (see more with ''--help'')'

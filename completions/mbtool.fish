@@ -543,6 +543,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -l json -
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read-input-regs" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l map -d 'The points of a register map (CSV, or Home Assistant YAML), by name' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l expect -d 'The value the device holds (229.0, or a range 228..231): the layouts that give it' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
@@ -602,6 +603,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s o -l output -d 'O
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l layouts -d 'Show the registers read as every type and byte order'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand read" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'
@@ -1585,6 +1587,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read-input-regs" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l map -d 'The points of a register map (CSV, or Home Assistant YAML), by name' -r -F
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l expect -d 'The value the device holds (229.0, or a range 228..231): the layouts that give it' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s p -l port -d 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s m -l mode -d 'Framing' -r -f -a "rtu\t''
 ascii\t''
@@ -1611,6 +1614,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_su
 json\t'One JSON object per line'
 values\t'Only the values, one per line, for $(...) in scripts'
 csv\t'Comma-separated values with a header line'"
+complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l layouts -d 'Show the registers read as every type and byte order'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l pdu-addresses -d 'Take every address as a plain number, never as a Modicon reference'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -l json -d 'The same as --output json'
 complete -c mbtool -n "__fish_mbtool_using_subcommand encode; and __fish_seen_subcommand_from read" -s h -l help -d 'Print help (see more with \'--help\')'

@@ -66,10 +66,16 @@ const EXAMPLES: &[(&str, &[Example])] = &[
     ),
     (
         "read",
-        &[ex(
-            "Read by reference: the 4 picks the holding registers",
-            "mbtool --port /dev/ttyUSB0 read 17 400108 3",
-        )],
+        &[
+            ex(
+                "Read by reference: the 4 picks the holding registers",
+                "mbtool --port /dev/ttyUSB0 read 17 400108 3",
+            ),
+            ex(
+                "The meter shows 229 V: which type and byte order give it, and the map line",
+                "mbtool --port tcp://10.0.0.5 read 1 400001 10 --expect 228..230",
+            ),
+        ],
     ),
     (
         "write-coil",

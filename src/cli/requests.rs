@@ -226,7 +226,7 @@ pub enum RequestCommand<W: Wire> {
     #[command(visible_alias = "read-input-regs")]
     ReadInputRegisters(RequestArgs<ReadArgs<InputRegisters>, RegisterData, W::Read>),
     /// Read by reference: its first digit picks the table
-    Read(RequestArgs<ReadByReferenceArgs, RegisterData, W::Read>),
+    Read(RequestArgs<ReadReferenceArgs, RegisterData, W::Read>),
     /// Write one coil (function 05)
     WriteCoil(RequestArgs<WriteCoilArgs, OneBitData, W::Write>),
     /// Write coils (function 15)
@@ -530,4 +530,28 @@ pub struct ReadFifoArgs {
     /// The FIFO queue's pointer register: 401247
     #[arg(value_name = "REF")]
     pub reference: String,
+}
+
+// `read`: a reference (or a map's points), and the layouts of what it reads.
+#[derive(Clone, Debug, Args)]
+pub struct ReadReferenceArgs {
+    #[command(flatten)]
+    pub read: ReadByReferenceArgs,
+    /// Show the registers read as every type and byte order
+    ///
+    /// u16 to f64 in each order (ABCD, CDAB, BADC, DCBA) from the first register, and the
+    /// registers as text, bytes in order and swapped
+    #[arg(long, conflicts_with_all = ["map", "expect"])]
+    pub layouts: bool,
+    /// The value the device holds (229.0, or a range 228..231): the layouts that give it
+    ///
+    /// Every type and order at every register read, nearest first, and a map line for
+    /// the best to paste into a CSV map (name,ref,type,order)
+    #[arg(
+        long,
+        value_name = "VALUE",
+        conflicts_with = "map",
+        allow_negative_numbers = true
+    )]
+    pub expect: Option<String>,
 }

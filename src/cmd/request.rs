@@ -9,7 +9,7 @@ use mbtool::error::Error;
 use mbtool::output;
 use mbtool::output::decode::DecodeWriter;
 use mbtool::output::read::{write_done, ReadWriter, WriteDetail, WriteDone};
-use mbtool::settings::job::{RequestWords, TypedWords};
+use mbtool::settings::job::{Layouts, RequestWords, TypedWords};
 use mbtool::settings::Settings;
 use mbtool_core::codec::{Frame, Mode, Pdu, Request};
 use mbtool_core::describe::describe_frame;
@@ -18,6 +18,8 @@ use mbtool_core::master::range::{read_range, Items};
 use mbtool_core::master::run::Written;
 use mbtool_core::master::{Master, Reply};
 use mbtool_core::model::address::{bit_reference, reference, Table};
+use mbtool_core::model::layouts::{at_start, rank};
+use mbtool_core::model::values::{ReadData, ValueType};
 
 pub fn run(settings: &Settings, words: &RequestWords) -> Result<u8> {
     // The whole command line is checked before a port is opened.
@@ -39,6 +41,13 @@ pub fn run(settings: &Settings, words: &RequestWords) -> Result<u8> {
     };
     let plan = super::shared::plan_for(settings, request)?;
     super::shared::refuse_unsafe_retries(settings, &plan.requests)?;
+    if let TypedWords::Read {
+        layouts: Some(layouts),
+        ..
+    } = request
+    {
+        return read_layouts(settings, &plan, layouts);
+    }
     let target = Connector::new(&settings.connection, Role::Master)?;
     if let (Some(interval), Some((table, address))) = (settings.poll.interval, plan.reads) {
         return poll_reads(settings, &target, &plan, (table, address), interval);
@@ -297,4 +306,69 @@ fn raw(
     let mut writer = DecodeWriter::new(settings.output.style);
     writer.write(out, &bytes, &report)?;
     Ok(code)
+}
+
+/// `read --layouts` and `read --expect`: the registers read as every type and order, or
+/// the layouts that give the value expected, nearest first, and the best as a map line.
+fn read_layouts(settings: &Settings, plan: &Plan, layouts: &Layouts) -> Result<u8> {
+    let Some((table, address)) = plan.reads.filter(|(table, _)| !table.is_bits()) else {
+        return Err(Error::usage(
+            "--layouts and --expect read registers: give a 3xxxxx or 4xxxxx reference",
+        )
+        .into());
+    };
+    if settings.data.value_type != ValueType::U16 || plan.bits.is_some() {
+        return Err(Error::usage(
+            "--layouts and --expect read every type from the registers: leave out --type and bits, and give COUNT in registers",
+        )
+        .into());
+    }
+    if settings.poll.interval.is_some() {
+        return Err(Error::usage("--layouts and --expect read once: leave out --poll").into());
+    }
+    let target = Connector::new(&settings.connection, Role::Master)?;
+    let mut connection = target.connect()?;
+    if settings.output.verbose {
+        connection.master.trace(super::shared::tracer(target.mode));
+    }
+    let read = connection.master.read(plan, table, address);
+    super::shared::tell_after_requests(&mut connection.master);
+    let read = read.map_err(|e| connection.explain(Error::from(e)))?;
+    let ReadData::Registers(registers) = read.data else {
+        return Ok(0);
+    };
+    let start = output::layouts::Start { table, address };
+    let (format, colour) = (settings.output.format, settings.output.style.colour);
+    let mut out = output::stdout();
+    match layouts {
+        Layouts::All => {
+            output::layouts::write_layouts(
+                &mut out,
+                format,
+                colour,
+                &start,
+                &at_start(&registers),
+            )?;
+        }
+        Layouts::Expect(expected) => {
+            let candidates = rank(&registers, *expected);
+            let Some(best) = candidates.first() else {
+                out.flush()?;
+                mbtool::note!(
+                    "mbtool: no type or order of the {} read gives {}: read more registers, or check the address",
+                    output::plural(registers.len(), "register"),
+                    expected
+                );
+                return Ok(1);
+            };
+            output::layouts::write_candidates(&mut out, format, colour, &start, &candidates)?;
+            out.flush()?;
+            mbtool::note!(
+                "mbtool: the best, as a line of a CSV map (name,ref,type,order): {}",
+                output::layouts::map_line(&start, &best.reading)
+            );
+        }
+    }
+    out.flush()?;
+    Ok(0)
 }

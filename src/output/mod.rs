@@ -8,6 +8,7 @@ pub mod device;
 pub mod encode;
 pub mod gateway;
 pub mod json;
+pub mod layouts;
 pub mod map;
 pub mod plant;
 pub mod ports;

@@ -15,6 +15,7 @@ use mbtool_core::slave::faults::FaultInjection;
 
 use crate::cli::{self, Command, ProbeArg, RequestArgs, RequestCommand, Wire};
 use crate::sink::mqtt::MqttSettings;
+use mbtool_core::model::layouts::Expected;
 
 /// `-o influx`: the output format `poll` alone has.
 pub const INFLUX: &str = "influx";
@@ -62,6 +63,8 @@ pub enum TypedWords {
         address: String,
         table: Option<Table>,
         count: Option<String>,
+        /// `read --layouts` or `--expect`: every layout of the registers read.
+        layouts: Option<Layouts>,
     },
     /// Write `values` from `address`, of `table` or of the table its reference names.
     Write {
@@ -108,6 +111,7 @@ impl TypedWords {
                 address,
                 table,
                 count,
+                ..
             } => Operation::Read {
                 slave,
                 address,
@@ -162,6 +166,15 @@ impl TypedWords {
             TypedWords::Raw { slave, pdu } => Operation::Raw { slave, pdu },
         }
     }
+}
+
+/// What `read --layouts` and `read --expect` ask of the registers read.
+#[derive(Clone, Debug)]
+pub enum Layouts {
+    /// Every layout from the first register.
+    All,
+    /// The layouts that give this value, nearest first.
+    Expect(Expected),
 }
 
 /// `read --map` or `write --map`: a map's points by name.
@@ -472,6 +485,7 @@ fn request_of<W: Wire>(command: RequestCommand<W>) -> Result<RequestWords, Strin
             address: a.address,
             table: Some(T::TABLE),
             count: a.count,
+            layouts: None,
         })
     }
     fn write<T: cli::Words>(a: cli::WriteArgs<T>) -> RequestWords {
@@ -488,7 +502,29 @@ fn request_of<W: Wire>(command: RequestCommand<W>) -> Result<RequestWords, Strin
         C::ReadInputs(RequestArgs { args, .. }) => read(args),
         C::ReadHolding(RequestArgs { args, .. }) => read(args),
         C::ReadInputRegisters(RequestArgs { args, .. }) => read(args),
-        C::Read(RequestArgs { args, .. }) => read_by_reference(args, "read")?,
+        C::Read(RequestArgs { args, .. }) => {
+            let layouts = match (args.layouts, args.expect) {
+                (_, Some(expect)) => Some(Layouts::Expect(Expected::parse(&expect)?)),
+                (true, None) => Some(Layouts::All),
+                (false, None) => None,
+            };
+            match read_by_reference(args.read, "read")? {
+                RequestWords::Typed(TypedWords::Read {
+                    slave,
+                    address,
+                    table,
+                    count,
+                    ..
+                }) => RequestWords::Typed(TypedWords::Read {
+                    slave,
+                    address,
+                    table,
+                    count,
+                    layouts,
+                }),
+                words => words,
+            }
+        }
         C::WriteCoil(RequestArgs { args: a, .. }) => RequestWords::Typed(TypedWords::Write {
             slave: a.slave,
             address: a.address,
@@ -558,6 +594,7 @@ fn read_by_reference(a: cli::ReadByReferenceArgs, command: &str) -> Result<Reque
             address: a.reference.unwrap_or_default(),
             table: None,
             count: a.count,
+            layouts: None,
         }));
     };
     let (slave, first) = split_slave(a.slave);

@@ -18,6 +18,7 @@ mod gateway;
 mod golden;
 mod home_assistant;
 mod interrupt;
+mod layouts;
 mod map;
 mod master_faults;
 mod master_pymodbus;

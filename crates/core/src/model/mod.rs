@@ -5,6 +5,7 @@
 pub mod address;
 pub mod faults;
 pub mod home_assistant;
+pub mod layouts;
 pub mod line;
 pub mod map;
 pub mod map_file;
