@@ -205,6 +205,22 @@ fn what_the_specification_forbids_is_refused_before_anything_is_sent() {
         assert!(stderr.starts_with(message), "{args}: {stderr}");
         assert_eq!(stderr.lines().count(), 1, "{args}: {stderr}");
     }
+    // An empty text is no value: refused, not a panic at record 9999.
+    for command in [
+        &["write-file", "17", "4:9999"][..],
+        &["read-write", "17", "400001", "1", "400001"],
+    ] {
+        let output = mbtool()
+            .args(["--port", "sim"])
+            .args(command)
+            .args(["", "--type", "ascii"])
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(2), "{output:?}");
+        assert!(
+            String::from_utf8_lossy(&output.stderr).starts_with("mbtool: give at least one VALUE")
+        );
+    }
     let many: Vec<String> = (0..122).map(|i| i.to_string()).collect();
     let output = mbtool()
         .args(["--port", "sim", "read-write", "17", "400001", "1", "400001"])

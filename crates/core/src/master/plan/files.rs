@@ -50,7 +50,7 @@ fn parse_place(text: &str) -> Result<(u16, u16)> {
 
 /// Checks that `count` records from `record` stay within the file.
 fn check_last(text: &str, record: u16, count: usize) -> Result<()> {
-    let last = usize::from(record) + count - 1;
+    let last = usize::from(record) + count.max(1) - 1;
     if last > usize::from(MAX_RECORD) {
         return Err(records(format!(
             "{text} with {count} records runs to record {last}, past {MAX_RECORD}, the last of a file"
@@ -179,6 +179,10 @@ pub(super) fn write_file_plan(
         return Err(PlanError::NoValues);
     }
     let registers = parse_registers(values, options)?;
+    // An empty text is no value.
+    if registers.is_empty() {
+        return Err(PlanError::NoValues);
+    }
     check_last(place, record, registers.len())?;
     // A request never cuts a value in two.
     let width = options.value_type.width();

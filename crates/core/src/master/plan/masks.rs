@@ -95,6 +95,9 @@ pub(super) fn read_write_plan(
         return Err(PlanError::NoValues);
     }
     let registers = parse_registers(values, options)?;
+    if registers.is_empty() {
+        return Err(PlanError::NoValues);
+    }
     if registers.len() > usize::from(limits::MAX_RW_WRITE_REGISTERS) {
         return Err(PlanError::Records(format!(
             "the values take {} registers, and function 23 writes at most {} in its one transaction",
