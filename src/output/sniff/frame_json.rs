@@ -19,6 +19,9 @@ pub(super) fn seconds(us: u64) -> f64 {
 pub(super) struct JsonTcp {
     client: String,
     server: String,
+    /// "udp" for Modbus/UDP; left out for a TCP connection.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    transport: Option<&'static str>,
     packet: u64,
     #[serde(skip_serializing_if = "Option::is_none")]
     request_packet: Option<u64>,
@@ -31,6 +34,7 @@ impl From<&TcpPlace> for JsonTcp {
         Self {
             client: place.client.to_string(),
             server: place.server.to_string(),
+            transport: place.udp.then_some("udp"),
             packet: place.packet,
             request_packet: place.request_packet,
             response_time_us: place.response_time,

@@ -146,10 +146,12 @@ fn exceptions(codes: &BTreeMap<u8, u64>) -> BTreeMap<String, u64> {
 }
 
 /// `client → server`, as a line shows a connection.
+/// Who sent a frame to whom; a UDP flow is marked so.
 fn connection(place: &TcpPlace) -> String {
+    let udp = if place.udp { " udp" } else { "" };
     match place.from_client {
-        true => format!("{} → {}", place.client, place.server),
-        false => format!("{} ← {}", place.client, place.server),
+        true => format!("{} → {}{udp}", place.client, place.server),
+        false => format!("{} ← {}{udp}", place.client, place.server),
     }
 }
 

@@ -373,6 +373,8 @@ fn a_capture_of_modbus_udp_is_read_as_tshark_reads_it() {
         })
         .collect();
     assert_eq!(ours, theirs);
+    // Each frame says it came over UDP.
+    assert!(records.iter().all(|r| r["transport"] == "udp"));
     // Every answer is paired with its request; the file record answer names its files.
     assert!(records
         .iter()

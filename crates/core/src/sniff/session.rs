@@ -62,6 +62,8 @@ pub struct TcpPlace {
     pub client: SocketAddr,
     /// The server's: the side on a Modbus port.
     pub server: SocketAddr,
+    /// The frames travel in UDP datagrams (Modbus/UDP), not a TCP stream.
+    pub udp: bool,
     /// The frame went from the client to the server.
     pub from_client: bool,
     /// The packet its last byte came in, numbered from 1 as Wireshark numbers them.

@@ -114,11 +114,15 @@ struct Connection {
     fins: u8,
 }
 
+/// A connection: its client, its server, and whether it is Modbus/UDP (a TCP connection
+/// and a UDP flow between the same ports are two).
+type Key = (SocketAddr, SocketAddr, bool);
+
 /// The connection of `key` among `connections`, new or going on.
 fn connection(
-    connections: &mut BTreeMap<(SocketAddr, SocketAddr), Connection>,
+    connections: &mut BTreeMap<Key, Connection>,
     mode: Mode,
-    key: (SocketAddr, SocketAddr),
+    key: Key,
 ) -> &mut Connection {
     connections.entry(key).or_insert_with(|| Connection {
         to_server: Side::new(mode),
@@ -133,7 +137,7 @@ pub struct TcpSession {
     mode: Mode,
     ports: Vec<u16>,
     filter: Filter,
-    connections: BTreeMap<(SocketAddr, SocketAddr), Connection>,
+    connections: BTreeMap<Key, Connection>,
     counts: Counts,
     packets: PacketCounts,
     numbered: u64,
@@ -239,7 +243,7 @@ impl TcpSession {
             return;
         };
         self.packets.modbus += 1;
-        let key = (client, server);
+        let key = (client, server, false);
         if segment.syn && from_client {
             // A new connection on the same addresses: the old one is over.
             self.close(key, false, out);
@@ -282,6 +286,7 @@ impl TcpSession {
         let place = TcpPlace {
             client,
             server,
+            udp: false,
             from_client,
             packet: packet.number,
             request_packet: None,
@@ -325,7 +330,7 @@ impl TcpSession {
         };
         self.packets.modbus += 1;
         let now = (packet.time_us, packet.number);
-        let connection = connection(&mut self.connections, self.mode, (client, server));
+        let connection = connection(&mut self.connections, self.mode, (client, server, true));
         let side = match from_client {
             true => &mut connection.to_server,
             false => &mut connection.to_client,
@@ -344,6 +349,7 @@ impl TcpSession {
         let place = TcpPlace {
             client,
             server,
+            udp: true,
             from_client,
             packet: packet.number,
             request_packet: None,
@@ -364,7 +370,7 @@ impl TcpSession {
 
     /// A connection is over (closed, or `capture_ended`): its streams are read to their
     /// end, and what still waits for an answer is unanswered.
-    fn close(&mut self, key: (SocketAddr, SocketAddr), capture_ended: bool, out: &mut Vec<Record>) {
+    fn close(&mut self, key: Key, capture_ended: bool, out: &mut Vec<Record>) {
         for from_client in [true, false] {
             let Some(connection) = self.connections.get_mut(&key) else {
                 return;
@@ -382,6 +388,7 @@ impl TcpSession {
             let place = TcpPlace {
                 client: key.0,
                 server: key.1,
+                udp: key.2,
                 from_client,
                 packet: self.packets.packets,
                 request_packet: None,
@@ -405,7 +412,7 @@ impl TcpSession {
     fn unanswered(
         &mut self,
         pending: Pending,
-        key: (SocketAddr, SocketAddr),
+        key: Key,
         capture_ended: bool,
         out: &mut Vec<Record>,
     ) {
@@ -414,6 +421,7 @@ impl TcpSession {
             let place = TcpPlace {
                 client: key.0,
                 server: key.1,
+                udp: key.2,
                 from_client: true,
                 packet: pending.packet,
                 request_packet: None,
@@ -465,7 +473,7 @@ impl TcpSession {
             true => Direction::Request,
             false => Direction::Response,
         };
-        let key = (place.client, place.server);
+        let key = (place.client, place.server, place.udp);
         let mut mismatch = None;
         let report = match (found.broken, Envelope::open(self.mode, &found.bytes)) {
             (None, Ok(envelope)) => {
@@ -573,7 +581,7 @@ impl TcpSession {
         envelope: &Envelope,
         pdu: &Pdu,
         malformed: bool,
-        key: (SocketAddr, SocketAddr),
+        key: Key,
         time: u64,
         place: &mut TcpPlace,
         mismatch: &mut Option<Mismatch>,
