@@ -387,16 +387,13 @@ fn a_capture_of_modbus_udp_is_read_as_tshark_reads_it() {
     assert_eq!(files["files"][1]["file"], 3);
 }
 
-/// `gateway --listen udp://` with a datagram that is no Modbus: passed over, counted, and
-/// the next request answered; its rows show a read/write's read and a file record read's
-/// records, and records that are no place in a file go to the device, which says 02.
-#[test]
-fn a_gateway_passes_over_datagrams_that_are_no_modbus_and_shows_what_it_passes() {
-    let (_server, line) = serve_udp("udp://", &[]);
+/// `mbtool gateway` to `line`, listening for Modbus/UDP on a port of its own, its rows as
+/// JSON: the guard and the port.
+fn json_gateway(line: &[String]) -> (Stopped, u16) {
     let listen = udp_port();
     let gateway = std::process::Command::new(assert_cmd::cargo::cargo_bin("mbtool"))
-        .args(["gateway"])
-        .args(&line)
+        .arg("gateway")
+        .args(line)
         .args([
             "--listen",
             &format!("udp://127.0.0.1:{listen}"),
@@ -407,9 +404,33 @@ fn a_gateway_passes_over_datagrams_that_are_no_modbus_and_shows_what_it_passes()
         .stderr(std::process::Stdio::null())
         .spawn()
         .unwrap();
-    let mut gateway = Stopped(gateway);
-    let port = vec!["--port".to_string(), format!("udp://127.0.0.1:{listen}")];
     std::thread::sleep(Duration::from_millis(500));
+    (Stopped(gateway), listen)
+}
+
+/// Ends a gateway as Ctrl-C does and reads what it printed: its rows and its summary.
+fn rows_of(mut gateway: Stopped) -> String {
+    let pid = gateway.0.id().to_string();
+    std::process::Command::new("kill")
+        .args(["-INT", &pid])
+        .status()
+        .unwrap();
+    let gateway = std::mem::replace(
+        &mut gateway.0,
+        std::process::Command::new("true").spawn().unwrap(),
+    );
+    let output = gateway.wait_with_output().unwrap();
+    String::from_utf8_lossy(&output.stdout).into_owned()
+}
+
+/// `gateway --listen udp://` with a datagram that is no Modbus: passed over, counted, and
+/// the next request answered; its rows show a read/write's read and a file record read's
+/// records, and records that are no place in a file go to the device, which says 02.
+#[test]
+fn a_gateway_passes_over_datagrams_that_are_no_modbus_and_shows_what_it_passes() {
+    let (_server, line) = serve_udp("udp://", &[]);
+    let (gateway, listen) = json_gateway(&line);
+    let port = vec!["--port".to_string(), format!("udp://127.0.0.1:{listen}")];
     let junk = UdpSocket::bind("127.0.0.1:0").unwrap();
     junk.send_to(b"not modbus at all", ("127.0.0.1", listen))
         .unwrap();
@@ -417,22 +438,35 @@ fn a_gateway_passes_over_datagrams_that_are_no_modbus_and_shows_what_it_passes()
         values_of(&port, "read-holding 17 400108 3"),
         ["555", "0", "100"]
     );
-    let pid = gateway.0.id().to_string();
-    std::process::Command::new("kill")
-        .args(["-INT", &pid])
-        .status()
-        .unwrap();
-    let output = std::mem::replace(
-        &mut gateway.0,
-        std::process::Command::new("true").spawn().unwrap(),
-    )
-    .wait_with_output()
-    .unwrap();
-    let text = String::from_utf8_lossy(&output.stdout);
+    assert_eq!(
+        values_of(&port, "read-write 17 400108 2 400110 7"),
+        ["555", "0"]
+    );
+    assert_eq!(values_of(&port, "read-file 17 4:1 2"), ["3582", "32"]);
+    let (_, out) = crate::support::run_against(&port, "raw 17 14 07 06 00 00 00 01 00 01");
+    assert!(out.contains("exception") && out.contains("02"), "{out}");
+    std::thread::sleep(Duration::from_millis(200));
+    let text = rows_of(gateway);
     assert!(
         text.contains(r#"{"passed_over":1,"summary":"bad_datagrams"}"#),
         "{text}"
     );
+    let rows: Vec<serde_json::Value> = text
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .filter(|r: &serde_json::Value| r.get("transaction").is_some())
+        .collect();
+    let answers = |function: u64| -> Vec<&serde_json::Value> {
+        rows.iter()
+            .filter(|r| r["function"] == function)
+            .map(|r| &r["answer"])
+            .collect()
+    };
+    assert_eq!(answers(23)[0]["ref"], "400108", "{text}");
+    assert_eq!(answers(20)[0]["files"][0]["file"], 4, "{text}");
+    assert_eq!(answers(20)[0]["files"][0]["record"], 1, "{text}");
+    // File 0 went to the line, and its device answered 02.
+    assert_eq!(answers(20)[1]["exception"], 2, "{text}");
 }
 
 /// A request the network repeats reaches the line once: repeats while it is under way are
@@ -440,22 +474,7 @@ fn a_gateway_passes_over_datagrams_that_are_no_modbus_and_shows_what_it_passes()
 #[test]
 fn a_gateway_carries_out_a_repeated_datagram_once() {
     let (_server, line) = serve_udp("udp://", &["--delay", "50ms"]);
-    let listen = udp_port();
-    let gateway = std::process::Command::new(assert_cmd::cargo::cargo_bin("mbtool"))
-        .args(["gateway"])
-        .args(&line)
-        .args([
-            "--listen",
-            &format!("udp://127.0.0.1:{listen}"),
-            "-o",
-            "json",
-        ])
-        .stdout(std::process::Stdio::piped())
-        .stderr(std::process::Stdio::null())
-        .spawn()
-        .unwrap();
-    let mut gateway = Stopped(gateway);
-    std::thread::sleep(Duration::from_millis(500));
+    let (gateway, listen) = json_gateway(&line);
     let client = UdpSocket::bind("127.0.0.1:0").unwrap();
     client
         .set_read_timeout(Some(Duration::from_millis(400)))
@@ -477,18 +496,7 @@ fn a_gateway_carries_out_a_repeated_datagram_once() {
     client.send_to(&request, ("127.0.0.1", listen)).unwrap();
     let (len, _) = client.recv_from(&mut answer).unwrap();
     assert_eq!(answer[..len], request);
-    let pid = gateway.0.id().to_string();
-    std::process::Command::new("kill")
-        .args(["-INT", &pid])
-        .status()
-        .unwrap();
-    let output = std::mem::replace(
-        &mut gateway.0,
-        std::process::Command::new("true").spawn().unwrap(),
-    )
-    .wait_with_output()
-    .unwrap();
-    let text = String::from_utf8_lossy(&output.stdout);
+    let text = rows_of(gateway);
     let on_the_line = text
         .lines()
         .filter(|l| l.contains(r#""function":22"#))
