@@ -916,6 +916,10 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
         }
         'mbtool;scan' {
             [CompletionResult]::new('--ids', '--ids', [CompletionResultType]::ParameterName, 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200')
+            [CompletionResult]::new('--hosts', '--hosts', [CompletionResultType]::ParameterName, 'Sweep a network for Modbus TCP devices: 10.0.0.0/24,10.0.1.5-20,plc1')
+            [CompletionResult]::new('--tcp-port', '--tcp-port', [CompletionResultType]::ParameterName, 'With --hosts: the TCP ports asked on each host [default: 502]')
+            [CompletionResult]::new('--parallel', '--parallel', [CompletionResultType]::ParameterName, 'With --hosts: how many hosts are asked at once [default: 16]')
+            [CompletionResult]::new('--pause', '--pause', [CompletionResultType]::ParameterName, 'With --hosts: the pause between two requests to one host [default: 20ms]')
             [CompletionResult]::new('--probe', '--probe', [CompletionResultType]::ParameterName, 'What each id is asked: read (03, one register at address 0) or id (17)')
             [CompletionResult]::new('--listen', '--listen', [CompletionResultType]::ParameterName, 'Listen this long at each setting before sending anything: slaves heard answering another master are found without adding traffic')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')

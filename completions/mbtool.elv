@@ -893,6 +893,10 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         }
         &'mbtool;scan'= {
             cand --ids 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200'
+            cand --hosts 'Sweep a network for Modbus TCP devices: 10.0.0.0/24,10.0.1.5-20,plc1'
+            cand --tcp-port 'With --hosts: the TCP ports asked on each host [default: 502]'
+            cand --parallel 'With --hosts: how many hosts are asked at once [default: 16]'
+            cand --pause 'With --hosts: the pause between two requests to one host [default: 20ms]'
             cand --probe 'What each id is asked: read (03, one register at address 0) or id (17)'
             cand --listen 'Listen this long at each setting before sending anything: slaves heard answering another master are found without adding traffic'
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'

@@ -1113,6 +1113,10 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -l json -d 'The same 
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s h -l help -d 'Print help (see more with \'--help\')'
 complete -c mbtool -n "__fish_mbtool_using_subcommand raw" -s V -l version -d 'Print version'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l ids -d 'The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l hosts -d 'Sweep a network for Modbus TCP devices: 10.0.0.0/24,10.0.1.5-20,plc1' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l tcp-port -d 'With --hosts: the TCP ports asked on each host [default: 502]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l parallel -d 'With --hosts: how many hosts are asked at once [default: 16]' -r
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l pause -d 'With --hosts: the pause between two requests to one host [default: 20ms]' -r
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l probe -d 'What each id is asked: read (03, one register at address 0) or id (17)' -r -f -a "read\t'Read one holding register at protocol address 0 (function 03)'
 id\t'Report server id (function 17)'"
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l listen -d 'Listen this long at each setting before sending anything: slaves heard answering another master are found without adding traffic' -r

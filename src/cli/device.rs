@@ -9,6 +9,7 @@ use super::options::{
 };
 use super::requests::{ReadByReferenceArgs, RegisterData};
 use super::taken::{holds, Before, Options, Taken};
+use super::values::whole;
 
 pub(super) const SCAN_ABOUT: &str = "\
 Find the slaves on a line: each id is asked once (--probe read: function 03, one register at \
@@ -100,8 +101,29 @@ Exit status 3 when the device does not answer.";
 #[command(after_help = more_in_long_help(&[&[CONNECTION, RS485, TLS]]))]
 pub struct ScanArgs {
     /// The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200
-    #[arg(long, value_name = "IDS", default_value = "1-247", value_parser = parse_ids)]
-    pub ids: Ids,
+    ///
+    /// With --hosts, 0, 1 and 255 are asked first, then these
+    #[arg(long, value_name = "IDS", value_parser = parse_ids)]
+    pub ids: Option<Ids>,
+    /// Sweep a network for Modbus TCP devices: 10.0.0.0/24,10.0.1.5-20,plc1
+    ///
+    /// Addresses, IPv4 networks (/16 to /32), ranges of the last byte or of whole
+    /// addresses, and names, comma-separated. Politely: --parallel hosts at once, one
+    /// connection to a host at a time, --pause between two requests to it, each connection
+    /// closed as soon as its host is asked; per host and port whether it takes a
+    /// connection, whether Modbus answers, the unit ids that answer, and their
+    /// identification (43/14) and server id (17). No --port
+    #[arg(long, value_name = "HOSTS")]
+    pub hosts: Option<String>,
+    /// With --hosts: the TCP ports asked on each host [default: 502]
+    #[arg(long, value_name = "PORTS", value_delimiter = ',', requires = "hosts", value_parser = whole::<u16>(1, 65535))]
+    pub tcp_port: Vec<u16>,
+    /// With --hosts: how many hosts are asked at once [default: 16]
+    #[arg(long, value_name = "N", requires = "hosts", value_parser = whole::<usize>(1, 256))]
+    pub parallel: Option<usize>,
+    /// With --hosts: the pause between two requests to one host [default: 20ms]
+    #[arg(long, value_name = "DURATION", requires = "hosts", value_parser = mbtool_core::input::duration::parse_duration)]
+    pub pause: Option<std::time::Duration>,
     /// What each id is asked: read (03, one register at address 0) or id (17)
     #[arg(long, value_enum, default_value_t = ProbeArg::Read)]
     pub probe: ProbeArg,

@@ -188,6 +188,10 @@ const EXAMPLES: &[(&str, &[Example])] = &[
                 "mbtool --port /dev/ttyUSB0 scan --listen 2s",
             ),
             ex(
+                "Find the Modbus TCP devices of a subnet, and their unit ids 1-10 too",
+                "mbtool scan --hosts 192.168.1.0/24 --ids 1-10",
+            ),
+            ex(
                 "The unit ids behind a TCP gateway, as JSON Lines",
                 "mbtool --port tcp://10.0.0.5 scan --ids 1-32 --json",
             ),

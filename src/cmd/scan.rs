@@ -12,6 +12,7 @@ use mbtool::output::scan::{write_scan, Where};
 use mbtool::output::{self, colour_wanted};
 use mbtool::settings::{job, Settings};
 use mbtool_core::codec::Mode;
+use mbtool_core::master::hosts::{self, SweepOptions};
 use mbtool_core::master::scan::{scan, sweep, Probe, Progress, ScanOptions, ScanReport};
 use mbtool_core::master::timeouts;
 use mbtool_core::model::line::LineSettings;
@@ -19,6 +20,9 @@ use mbtool_core::transport::serial;
 use mbtool_core::transport::Endpoint;
 
 pub fn run(settings: &Settings, job: &job::Scan) -> Result<u8> {
+    if let Some(sweep) = &job.hosts {
+        return sweep_hosts(settings, job, sweep);
+    }
     let connector = Connector::new(&settings.connection, Role::Master)?;
     let (endpoint, mode) = (&connector.endpoint, connector.mode);
     let ids = &job.ids;
@@ -214,4 +218,62 @@ fn timeout_at(settings: &Settings, line: LineSettings, probe: Probe) -> Duration
         &line,
         probe.answer_bytes(),
     )
+}
+
+/// `scan --hosts`: the hosts of a network asked politely; what was found, also when a
+/// signal ends the sweep.
+fn sweep_hosts(settings: &Settings, job: &job::Scan, sweep: &job::HostSweep) -> Result<u8> {
+    if settings.connection.port.is_some() {
+        return Err(Error::usage(
+            "--hosts sweeps a network: leave out --port (and MBTOOL_PORT), or scan the line of --port without --hosts",
+        )
+        .into());
+    }
+    if job.listen.is_some() || job.all {
+        return Err(Error::usage(
+            "--listen and --all are for a serial line's settings; --hosts asks over TCP",
+        )
+        .into());
+    }
+    let options = SweepOptions {
+        ports: sweep.ports.clone(),
+        ids: job.ids.clone(),
+        parallel: sweep.parallel,
+        timeout: settings.connection.timeout,
+        pause: sweep.pause,
+        probe: job.probe.request(),
+    };
+    let stop = super::shared::stop_on_signal()?;
+    let reports = std::sync::Mutex::new(Vec::new());
+    hosts::sweep(&sweep.hosts, &options, &stop.flag, |report| {
+        if let Ok(mut reports) = reports.lock() {
+            reports.push(report);
+        }
+    });
+    let mut reports = reports.into_inner().unwrap_or_else(|p| p.into_inner());
+    // In the order given: hosts, then ports.
+    let place = |report: &hosts::HostReport| {
+        let host = sweep
+            .hosts
+            .iter()
+            .position(|h| h.to_string() == report.host);
+        (host, sweep.ports.iter().position(|p| *p == report.port))
+    };
+    reports.sort_by_key(place);
+    let mut out = output::stdout();
+    output::hosts::write_hosts(&mut out, settings.output.format, colour_wanted(), &reports)?;
+    out.flush()?;
+    if stop.flag.load(std::sync::atomic::Ordering::SeqCst) {
+        mbtool::note!(
+            "mbtool: sweep stopped: {} of {} hosts asked",
+            reports.len() / sweep.ports.len().max(1),
+            sweep.hosts.len()
+        );
+        return Ok(stop.exit_status());
+    }
+    Ok(if reports.iter().any(hosts::HostReport::found) {
+        0
+    } else {
+        3
+    })
 }

@@ -7,6 +7,7 @@ pub mod decode;
 pub mod device;
 pub mod encode;
 pub mod gateway;
+pub mod hosts;
 pub mod json;
 pub mod layouts;
 pub mod map;

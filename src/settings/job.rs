@@ -192,6 +192,8 @@ pub struct MapWords {
 
 #[derive(Clone, Debug)]
 pub struct Scan {
+    /// `--hosts`: a network swept instead of a line.
+    pub hosts: Option<HostSweep>,
     /// The ids asked, in order, each once.
     pub ids: Vec<u8>,
     pub probe: Probe,
@@ -200,6 +202,22 @@ pub struct Scan {
     /// Every setting of the sweep, not only up to the first where a slave answers.
     pub all: bool,
 }
+
+/// `scan --hosts`: the hosts and ports asked, and how politely.
+#[derive(Clone, Debug)]
+pub struct HostSweep {
+    pub hosts: Vec<mbtool_core::input::hosts::Host>,
+    pub ports: Vec<u16>,
+    /// Hosts asked at once.
+    pub parallel: usize,
+    /// The pause between two requests to one host.
+    pub pause: Duration,
+}
+
+/// Hosts a sweep asks at once unless `--parallel` says.
+pub const DEFAULT_PARALLEL: usize = 16;
+/// The pause between two requests to one host unless `--pause` says.
+pub const DEFAULT_PAUSE: Duration = Duration::from_millis(20);
 
 /// A command about one device: `info`.
 #[derive(Clone, Debug)]
@@ -336,7 +354,32 @@ pub fn of(command: Command) -> Result<Job, String> {
         Command::Request(request) => Job::Request(request_of(request)?),
         Command::Encode { request, .. } => Job::Encode(request_of(request)?),
         Command::Scan(a) => Job::Scan(Scan {
-            ids: a.ids.0,
+            hosts: match &a.hosts {
+                Some(text) => Some(HostSweep {
+                    hosts: mbtool_core::input::hosts::parse_hosts(text)?,
+                    ports: match a.tcp_port.is_empty() {
+                        true => vec![mbtool_core::transport::endpoint::MODBUS_TCP_PORT],
+                        false => a.tcp_port.clone(),
+                    },
+                    parallel: a.parallel.unwrap_or(DEFAULT_PARALLEL),
+                    pause: a.pause.unwrap_or(DEFAULT_PAUSE),
+                }),
+                None => None,
+            },
+            ids: match (&a.hosts, a.ids) {
+                // The ids devices answer by default first, then those asked.
+                (Some(_), ids) => {
+                    let mut all = vec![0, 1, 255];
+                    for id in ids.map(|ids| ids.0).unwrap_or_default() {
+                        if !all.contains(&id) {
+                            all.push(id);
+                        }
+                    }
+                    all
+                }
+                (None, Some(ids)) => ids.0,
+                (None, None) => (1..=247).collect(),
+            },
             probe: match a.probe {
                 ProbeArg::Read => Probe::Read,
                 ProbeArg::Id => Probe::Id,

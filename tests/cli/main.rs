@@ -17,6 +17,7 @@ mod full_disk;
 mod gateway;
 mod golden;
 mod home_assistant;
+mod hosts;
 mod interrupt;
 mod layouts;
 mod map;

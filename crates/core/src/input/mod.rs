@@ -5,4 +5,5 @@ pub mod choice;
 pub mod duration;
 pub mod hexdump;
 pub mod hexinput;
+pub mod hosts;
 pub mod number;

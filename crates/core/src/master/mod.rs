@@ -18,6 +18,7 @@ use crate::transport::Transport;
 pub mod backup;
 pub mod device;
 pub mod failover;
+pub mod hosts;
 pub mod map;
 pub mod open;
 pub mod plan;

@@ -29,7 +29,8 @@ impl Probe {
         }
     }
 
-    fn request(self) -> Request {
+    /// The request each id is asked.
+    pub fn request(self) -> Request {
         match self {
             Probe::Read => Request::ReadHoldingRegisters {
                 address: 0,

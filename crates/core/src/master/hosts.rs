@@ -1,0 +1,234 @@
+//! Finding Modbus TCP devices on a network, politely: a bounded number of hosts at once,
+//! one connection to a host at a time, a pause between two requests to one host, and each
+//! connection closed (FIN) as soon as its host is asked. Per host and port: whether it
+//! takes a connection, whether Modbus answers, which unit ids answer, and their
+//! identification (43/14) and server id (17).
+
+use std::net::{Shutdown, SocketAddr, TcpStream, ToSocketAddrs};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Mutex;
+use std::time::Duration;
+
+use super::device::{identification, server_id, Asked, Identification, ServerId};
+use super::{Master, MasterError, MasterOptions, Reply};
+use crate::codec::{ExceptionCode, Mode, Request};
+use crate::input::hosts::Host;
+use crate::transport::tcp::Tcp;
+
+/// How a sweep asks.
+#[derive(Clone, Debug)]
+pub struct SweepOptions {
+    /// The TCP ports asked on each host.
+    pub ports: Vec<u16>,
+    /// The unit ids asked on each, in order.
+    pub ids: Vec<u8>,
+    /// How many hosts are asked at once.
+    pub parallel: usize,
+    /// How long a connection, and an answer, is waited for.
+    pub timeout: Duration,
+    /// The pause between two requests to one host.
+    pub pause: Duration,
+    /// What each unit id is asked first.
+    pub probe: Request,
+}
+
+/// How a host's port took the connection.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Reach {
+    /// It took it.
+    Open,
+    /// Nothing listens there: refused.
+    Refused,
+    /// No answer within the timeout (a host that is not there, or a firewall).
+    Silent,
+    /// The name has no address.
+    Unknown,
+}
+
+/// How a unit id answered.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Unit {
+    /// The unit id.
+    pub id: u8,
+    /// Its exception to the probe, if it gave one.
+    pub exception: Option<ExceptionCode>,
+    /// Its identification, where it gave one.
+    pub identification: Option<Identification>,
+    /// Its server id, where it gave one.
+    pub server_id: Option<ServerId>,
+}
+
+/// What one host's port said.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct HostReport {
+    /// The host as given.
+    pub host: String,
+    /// Its address and the port asked; `None` for a name without an address.
+    pub address: Option<SocketAddr>,
+    /// The port asked.
+    pub port: u16,
+    /// How it took the connection.
+    pub reach: Reach,
+    /// Whether a Modbus TCP frame came back at all (a gateway's 0A/0B included).
+    pub modbus: bool,
+    /// The unit ids that answer (a gateway's 0A and 0B are no answer of a device).
+    pub units: Vec<Unit>,
+}
+
+impl HostReport {
+    /// Whether anything Modbus was found there.
+    pub fn found(&self) -> bool {
+        self.modbus
+    }
+}
+
+/// A master on `stream`, asking with `options`' timeout, never more than once.
+fn master_on(stream: TcpStream, options: &SweepOptions) -> std::io::Result<Master> {
+    let transport = Tcp::from_stream(stream, false)?;
+    Ok(Master::new(
+        Box::new(transport),
+        MasterOptions {
+            mode: Mode::Tcp,
+            timeout: options.timeout,
+            retries: 0,
+            retry_non_idempotent: false,
+            frame_gap: Duration::ZERO,
+            character: Duration::ZERO,
+            silence: Duration::ZERO,
+            turnaround: Duration::ZERO,
+        },
+    ))
+}
+
+/// Whether a gateway's exception says that no device stands behind the unit id.
+fn nobody_there(code: ExceptionCode) -> bool {
+    matches!(
+        code,
+        ExceptionCode::GATEWAY_PATH_UNAVAILABLE | ExceptionCode::GATEWAY_TARGET_FAILED
+    )
+}
+
+/// Asks the unit ids of one open connection; what was learnt, even when it broke off.
+fn ask_units(
+    master: &mut Master,
+    options: &SweepOptions,
+    report: &mut HostReport,
+    stop: &AtomicBool,
+) {
+    let pause = || std::thread::sleep(options.pause);
+    for (i, &id) in options.ids.iter().enumerate() {
+        if stop.load(Ordering::SeqCst) {
+            return;
+        }
+        if i > 0 {
+            pause();
+        }
+        let exception = match master.transact(id, &options.probe) {
+            Ok(Reply::Response(_)) => None,
+            Ok(Reply::Exception(exception)) if nobody_there(exception.code) => {
+                report.modbus = true;
+                continue;
+            }
+            Ok(Reply::Exception(exception)) => Some(exception.code),
+            Ok(Reply::Broadcast) => continue,
+            // A frame that is no Modbus is still an answer of a kind; nothing of a unit.
+            Err(MasterError::BadFrame { .. } | MasterError::Timeout { .. }) => continue,
+            Err(_) => return,
+        };
+        report.modbus = true;
+        pause();
+        let identification = match identification(master, id) {
+            Ok(Asked::Answered(found)) => Some(found),
+            Ok(_) | Err(MasterError::BadFrame { .. } | MasterError::Timeout { .. }) => None,
+            Err(_) => return,
+        };
+        pause();
+        let server_id = match server_id(master, id) {
+            Ok(Asked::Answered(found)) => Some(found),
+            Ok(_) | Err(MasterError::BadFrame { .. } | MasterError::Timeout { .. }) => None,
+            Err(_) => return,
+        };
+        report.units.push(Unit {
+            id,
+            exception,
+            identification,
+            server_id,
+        });
+    }
+}
+
+/// Asks one host's port: connects, asks its units, closes.
+fn ask_host(host: &Host, port: u16, options: &SweepOptions, stop: &AtomicBool) -> HostReport {
+    let mut report = HostReport {
+        host: host.to_string(),
+        address: None,
+        port,
+        reach: Reach::Unknown,
+        modbus: false,
+        units: Vec::new(),
+    };
+    let address = match host {
+        Host::Address(address) => Some(SocketAddr::new(*address, port)),
+        Host::Name(name) => (name.as_str(), port)
+            .to_socket_addrs()
+            .ok()
+            .and_then(|mut addresses| addresses.next()),
+    };
+    let Some(address) = address else {
+        return report;
+    };
+    report.address = Some(address);
+    let stream = match TcpStream::connect_timeout(&address, options.timeout) {
+        Ok(stream) => stream,
+        Err(error) => {
+            report.reach = match error.kind() {
+                std::io::ErrorKind::ConnectionRefused => Reach::Refused,
+                _ => Reach::Silent,
+            };
+            return report;
+        }
+    };
+    report.reach = Reach::Open;
+    let closer = stream.try_clone();
+    if let Ok(mut master) = master_on(stream, options) {
+        ask_units(&mut master, options, &mut report, stop);
+    }
+    // Closed at once, with a FIN: no connection is left for the device to hold.
+    if let Ok(closer) = closer {
+        let _ = closer.shutdown(Shutdown::Both);
+    }
+    report
+}
+
+/// Asks every host on every port, `options.parallel` hosts at once (each host's ports one
+/// after another), handing each report to `found` as it is done. `stop`, once set, ends
+/// it: no new host is begun, and one being asked is left after its current request.
+pub fn sweep(
+    hosts: &[Host],
+    options: &SweepOptions,
+    stop: &AtomicBool,
+    found: impl Fn(HostReport) + Send,
+) {
+    let next = AtomicUsize::new(0);
+    let found = Mutex::new(found);
+    std::thread::scope(|scope| {
+        for _ in 0..options.parallel.clamp(1, hosts.len().max(1)) {
+            scope.spawn(|| loop {
+                if stop.load(Ordering::SeqCst) {
+                    return;
+                }
+                let Some(host) = hosts.get(next.fetch_add(1, Ordering::SeqCst)) else {
+                    return;
+                };
+                for (i, &port) in options.ports.iter().enumerate() {
+                    if i > 0 {
+                        std::thread::sleep(options.pause);
+                    }
+                    let report = ask_host(host, port, options, stop);
+                    let found = found.lock().unwrap_or_else(|p| p.into_inner());
+                    found(report);
+                }
+            });
+        }
+    });
+}

@@ -1,0 +1,168 @@
+//! How `scan --hosts` shows a network swept: a row per host and port that took a
+//! connection, a summary of the rest; JSON and CSV a row per host and port asked.
+
+use std::io::{self, Write};
+
+use serde::Serialize;
+
+use super::{csv_field, new_table, plural, Format};
+use mbtool_core::codec::DeviceObject;
+use mbtool_core::master::hosts::{HostReport, Reach, Unit};
+use mbtool_core::model::values::escape_text;
+
+fn reach_name(reach: Reach) -> &'static str {
+    match reach {
+        Reach::Open => "open",
+        Reach::Refused => "refused",
+        Reach::Silent => "no answer",
+        Reach::Unknown => "unknown name",
+    }
+}
+
+/// A unit's identification in a few words: its vendor, product code and revision.
+fn identity(unit: &Unit) -> String {
+    let Some(found) = &unit.identification else {
+        return String::new();
+    };
+    let words: Vec<String> = found
+        .objects
+        .iter()
+        .filter(|object| object.id <= 2)
+        .map(|object: &DeviceObject| escape_text(&object.value))
+        .collect();
+    words.join(" ")
+}
+
+fn server_id(unit: &Unit) -> String {
+    unit.server_id
+        .as_ref()
+        .map(|id| escape_text(&id.data))
+        .unwrap_or_default()
+}
+
+#[derive(Serialize)]
+struct JsonUnit {
+    unit: u8,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    exception: Option<u8>,
+    #[serde(skip_serializing_if = "String::is_empty")]
+    identification: String,
+    #[serde(skip_serializing_if = "String::is_empty")]
+    server_id: String,
+}
+
+#[derive(Serialize)]
+struct JsonHost<'a> {
+    host: &'a str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    address: Option<String>,
+    port: u16,
+    reach: &'static str,
+    modbus: bool,
+    units: Vec<JsonUnit>,
+}
+
+fn units_text(report: &HostReport) -> String {
+    let ids: Vec<String> = report.units.iter().map(|u| u.id.to_string()).collect();
+    ids.join(" ")
+}
+
+/// Every report, in the order given (the caller sorts them).
+pub fn write_hosts(
+    out: &mut dyn Write,
+    format: Format,
+    colour: bool,
+    reports: &[HostReport],
+) -> io::Result<()> {
+    match format {
+        Format::Json => {
+            for report in reports {
+                let host = JsonHost {
+                    host: &report.host,
+                    address: report.address.map(|a| a.ip().to_string()),
+                    port: report.port,
+                    reach: reach_name(report.reach),
+                    modbus: report.modbus,
+                    units: report
+                        .units
+                        .iter()
+                        .map(|unit| JsonUnit {
+                            unit: unit.id,
+                            exception: unit.exception.map(|code| code.0),
+                            identification: identity(unit),
+                            server_id: server_id(unit),
+                        })
+                        .collect(),
+                };
+                serde_json::to_writer(&mut *out, &host)?;
+                writeln!(out)?;
+            }
+            Ok(())
+        }
+        Format::Csv => {
+            writeln!(out, "host,port,reach,modbus,units,identification,server_id")?;
+            for report in reports {
+                let first = report.units.first();
+                writeln!(
+                    out,
+                    "{},{},{},{},{},{},{}",
+                    csv_field(&report.host),
+                    report.port,
+                    reach_name(report.reach),
+                    report.modbus,
+                    units_text(report),
+                    csv_field(&first.map(identity).unwrap_or_default()),
+                    csv_field(&first.map(server_id).unwrap_or_default()),
+                )?;
+            }
+            Ok(())
+        }
+        Format::Values => {
+            for report in reports.iter().filter(|r| r.modbus) {
+                writeln!(out, "{}:{}", report.host, report.port)?;
+            }
+            Ok(())
+        }
+        Format::Table => {
+            let open: Vec<&HostReport> =
+                reports.iter().filter(|r| r.reach == Reach::Open).collect();
+            if !open.is_empty() {
+                let mut table = new_table(colour);
+                table.set_header(vec![
+                    "host",
+                    "port",
+                    "modbus",
+                    "units",
+                    "identification",
+                    "server id",
+                ]);
+                for report in open {
+                    let first = report.units.first();
+                    table.add_row(vec![
+                        report.host.clone(),
+                        report.port.to_string(),
+                        if report.modbus { "yes" } else { "no answer" }.to_string(),
+                        units_text(report),
+                        first.map(identity).unwrap_or_default(),
+                        first.map(server_id).unwrap_or_default(),
+                    ]);
+                }
+                writeln!(out, "{table}")?;
+            }
+            let count = |reach| reports.iter().filter(|r| r.reach == reach).count();
+            writeln!(
+                out,
+                "{} asked: {} with Modbus, {} open, {} refused, {} silent{}",
+                plural(reports.len(), "host port"),
+                reports.iter().filter(|r| r.modbus).count(),
+                count(Reach::Open),
+                count(Reach::Refused),
+                count(Reach::Silent),
+                match count(Reach::Unknown) {
+                    0 => String::new(),
+                    n => format!(", {n} unknown names"),
+                }
+            )
+        }
+    }
+}
