@@ -26,6 +26,8 @@ command -v promtool >/dev/null || missing+=(prometheus)
 # its own).
 command -v mosquitto >/dev/null || missing+=(mosquitto)
 command -v mosquitto_sub >/dev/null || missing+=(mosquitto-clients)
+# nmap, whose modbus-discover script is the reference for scan --hosts.
+command -v nmap >/dev/null || missing+=(nmap)
 # libpcap at run time: sniff --interface loads it (tcpdump brings it too).
 ldconfig -p 2>/dev/null | grep -q 'libpcap\.so' || missing+=(libpcap0.8)
 if [ ${#missing[@]} -gt 0 ]; then

@@ -147,3 +147,119 @@ fn a_sweep_that_finds_nothing_says_so_and_bad_hosts_are_refused() {
         );
     }
 }
+
+/// nmap's modbus-discover (aggressive: every sid 1-246, asked with function 17) over the
+/// same hosts: the same hosts with Modbus and the same unit ids, where nmap's units leave
+/// out the sids a gateway (or a server standing for one) answers 0A or 0B.
+fn nmap_units(port: u16, hosts: &[&str]) -> std::collections::BTreeMap<String, Vec<u64>> {
+    let output = Process::new("nmap")
+        .args(["-n", "-Pn", "-p", &port.to_string()])
+        .args([
+            "--script",
+            "+modbus-discover",
+            "--script-args",
+            "modbus-discover.aggressive=true",
+        ])
+        .args(["-oX", "-"])
+        .args(hosts)
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+    let xml = String::from_utf8_lossy(&output.stdout);
+    let mut found = std::collections::BTreeMap::new();
+    for host in xml.split("<host ").skip(1) {
+        let address = host
+            .split("<address addr=\"")
+            .nth(1)
+            .and_then(|rest| rest.split('"').next())
+            .unwrap()
+            .to_string();
+        let mut units = Vec::new();
+        for sid in host.split("<table key=\"sid 0x").skip(1) {
+            let id = u64::from_str_radix(sid.split('"').next().unwrap(), 16).unwrap();
+            let body = sid.split("</table>").next().unwrap();
+            if !body.contains("GATEWAY") {
+                units.push(id);
+            }
+        }
+        if !units.is_empty() {
+            found.insert(address, units);
+        }
+    }
+    found
+}
+
+#[test]
+fn a_sweep_finds_what_nmap_s_modbus_discover_finds() {
+    if !crate::support::peer_available("nmap", crate::support::command_exists("nmap"))
+        || !crate::support::peer_available(
+            "pymodbus (Python)",
+            crate::support::python_has("pymodbus"),
+        )
+    {
+        return;
+    }
+    let port = crate::support::free_port();
+    let at = |address: &str| format!("tcp://{address}:{port}");
+    let _one = serve(&["--port", &at("127.0.0.2"), "--slave", "1", "--slave", "5"]);
+    let _two = serve(&["--port", &at("127.0.0.3"), "--slave", "200"]);
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/pymodbus_slave.py");
+    let _pymodbus = Stopped(
+        Process::new("python3")
+            .args([script, "--framer", "socket", "--tcp", &port.to_string()])
+            .args(["--address", "127.0.0.6", "--every-unit"])
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    for address in ["127.0.0.2", "127.0.0.3", "127.0.0.6"] {
+        listening(address, port);
+    }
+    let hosts = ["127.0.0.1-3", "127.0.0.5-7"];
+    let theirs = nmap_units(port, &hosts);
+    let output = mbtool()
+        .args([
+            "scan",
+            "--hosts",
+            &hosts.join(","),
+            "--tcp-port",
+            &port.to_string(),
+        ])
+        .args([
+            "--ids",
+            "1-246",
+            "--probe",
+            "id",
+            "--timeout",
+            "500ms",
+            "--pause",
+            "0s",
+        ])
+        .args(["-o", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    let ours: std::collections::BTreeMap<String, Vec<u64>> =
+        String::from_utf8_lossy(&output.stdout)
+            .lines()
+            .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap())
+            .filter_map(|host| {
+                let units: Vec<u64> = host["units"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|u| u["unit"].as_u64().unwrap())
+                    // nmap asks 1-246: 0 and 255 are mbtool's own first askings.
+                    .filter(|id| (1..=246).contains(id))
+                    .collect();
+                let mut units = units;
+                units.sort_unstable();
+                (!units.is_empty()).then(|| (host["host"].as_str().unwrap().to_string(), units))
+            })
+            .collect();
+    assert_eq!(ours, theirs);
+    assert_eq!(ours["127.0.0.2"], [1, 5]);
+    assert_eq!(ours["127.0.0.3"], [200]);
+    assert_eq!(ours["127.0.0.6"].len(), 246);
+}

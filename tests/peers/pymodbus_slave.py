@@ -28,6 +28,10 @@ def main():
     parser.add_argument("--serial")
     parser.add_argument("--tcp", type=int)
     parser.add_argument("--udp", type=int, help="Modbus/UDP on 127.0.0.1")
+    parser.add_argument("--address", default="127.0.0.1", help="where --tcp listens")
+    parser.add_argument(
+        "--every-unit", action="store_true", help="answer every unit id, as one device"
+    )
     parser.add_argument(
         "--tls",
         metavar="CERT,KEY,CA",
@@ -54,7 +58,8 @@ def main():
         cells = dict(item.split("=") for item in args.holding.split(","))
         holding = ModbusSparseDataBlock({int(a): int(v) for a, v in cells.items()})
     device = ModbusDeviceContext(di=block(), co=block(), ir=block(), hr=holding)
-    context = ModbusServerContext(devices={17: device}, single=False)
+    context = ModbusServerContext(devices=device if args.every_unit else {17: device},
+                                  single=args.every_unit)
     framer = FramerType(args.framer)
     if args.tcp and args.tls:
         cert, key, ca = args.tls.split(",")
@@ -75,7 +80,7 @@ def main():
         )
     elif args.tcp:
         StartTcpServer(
-            context, framer=framer, identity=identity, address=("127.0.0.1", args.tcp)
+            context, framer=framer, identity=identity, address=(args.address, args.tcp)
         )
     else:
         # A pseudo-terminal carries bytes, not bits: line settings mean nothing there, and

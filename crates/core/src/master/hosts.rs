@@ -11,7 +11,7 @@ use std::time::Duration;
 
 use super::device::{identification, server_id, Asked, Identification, ServerId};
 use super::{Master, MasterError, MasterOptions, Reply};
-use crate::codec::{ExceptionCode, Mode, Request};
+use crate::codec::{ExceptionCode, Mode, Request, Response};
 use crate::input::hosts::Host;
 use crate::transport::tcp::Tcp;
 
@@ -123,7 +123,13 @@ fn ask_units(
         if i > 0 {
             pause();
         }
+        // A probe of function 17 is the server id already.
+        let mut given_id = None;
         let exception = match master.transact(id, &options.probe) {
+            Ok(Reply::Response(Response::ReportServerId { data })) => {
+                given_id = Some(ServerId::parse(&data));
+                None
+            }
             Ok(Reply::Response(_)) => None,
             Ok(Reply::Exception(exception)) if nobody_there(exception.code) => {
                 report.modbus = true;
@@ -142,11 +148,16 @@ fn ask_units(
             Ok(_) | Err(MasterError::BadFrame { .. } | MasterError::Timeout { .. }) => None,
             Err(_) => return,
         };
-        pause();
-        let server_id = match server_id(master, id) {
-            Ok(Asked::Answered(found)) => Some(found),
-            Ok(_) | Err(MasterError::BadFrame { .. } | MasterError::Timeout { .. }) => None,
-            Err(_) => return,
+        let server_id = match given_id {
+            Some(given) => Some(given),
+            None => {
+                pause();
+                match server_id(master, id) {
+                    Ok(Asked::Answered(found)) => Some(found),
+                    Ok(_) | Err(MasterError::BadFrame { .. } | MasterError::Timeout { .. }) => None,
+                    Err(_) => return,
+                }
+            }
         };
         report.units.push(Unit {
             id,
