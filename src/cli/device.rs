@@ -112,7 +112,8 @@ pub struct ScanArgs {
     /// connection to a host at a time, --pause between two requests to it, each connection
     /// closed as soon as its host is asked; per host and port whether it takes a
     /// connection, whether Modbus answers, the unit ids that answer, and their
-    /// identification (43/14) and server id (17). No --port
+    /// identification (43/14) and server id (17). Port 802 is asked over TLS (Modbus/TCP
+    /// Security) with --cert, --key and --ca. No --port
     #[arg(long, value_name = "HOSTS")]
     pub hosts: Option<String>,
     /// With --hosts: the TCP ports asked on each host [default: 502]

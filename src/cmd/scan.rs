@@ -17,6 +17,7 @@ use mbtool_core::master::scan::{scan, sweep, Probe, Progress, ScanOptions, ScanR
 use mbtool_core::master::timeouts;
 use mbtool_core::model::line::LineSettings;
 use mbtool_core::transport::serial;
+use mbtool_core::transport::tls::{ClientTls, MODBUS_TLS_PORT};
 use mbtool_core::transport::Endpoint;
 
 pub fn run(settings: &Settings, job: &job::Scan) -> Result<u8> {
@@ -242,7 +243,16 @@ fn sweep_hosts(settings: &Settings, job: &job::Scan, sweep: &job::HostSweep) -> 
         timeout: settings.connection.timeout,
         pause: sweep.pause,
         probe: job.probe.request(),
+        tls: match settings.connection.tls_typed {
+            true => Some(ClientTls::new(&settings.connection.tls).map_err(Error::from)?),
+            false => None,
+        },
     };
+    if sweep.ports.contains(&MODBUS_TLS_PORT) && options.tls.is_none() {
+        mbtool::note!(
+            "mbtool: port {MODBUS_TLS_PORT} is Modbus/TCP Security: give --cert, --key and --ca to ask what answers there over TLS"
+        );
+    }
     let stop = super::shared::stop_on_signal()?;
     let reports = std::sync::Mutex::new(Vec::new());
     hosts::sweep(&sweep.hosts, &options, &stop.flag, |report| {

@@ -263,3 +263,81 @@ fn a_sweep_finds_what_nmap_s_modbus_discover_finds() {
     assert_eq!(ours["127.0.0.3"], [200]);
     assert_eq!(ours["127.0.0.6"].len(), 246);
 }
+
+/// Port 802 is asked over TLS with this end's certificates, beside 502 in the clear;
+/// without them it is told open, and that certificates are wanted.
+#[test]
+fn port_802_is_asked_over_tls() {
+    // 802 is a port below 1024: only root may listen on it.
+    if std::net::TcpListener::bind("127.0.0.12:802").is_err() {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI runs as root: 802 must be free"
+        );
+        eprintln!("skipping: only root may listen on port 802");
+        return;
+    }
+    let pki = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/pki/");
+    let file = |name: &str| format!("{pki}{name}");
+    let _tls = serve(&[
+        "--port",
+        "tls://127.0.0.12:802",
+        "--cert",
+        &file("server.pem"),
+        "--key",
+        &file("server.key"),
+        "--ca",
+        &file("plant-ca.pem"),
+        "--slave",
+        "3",
+    ]);
+    let _plain = serve(&["--port", "tcp://127.0.0.12:502", "--slave", "4"]);
+    listening("127.0.0.12", 802);
+    listening("127.0.0.12", 502);
+    let sweep = |tls: &[String]| -> Vec<serde_json::Value> {
+        let output = mbtool()
+            .args([
+                "scan",
+                "--hosts",
+                "127.0.0.12",
+                "--tcp-port",
+                "502,802",
+                "--ids",
+                "3,4",
+            ])
+            .args(["--timeout", "500ms", "-o", "json"])
+            .args(tls)
+            .output()
+            .unwrap();
+        assert_eq!(output.status.code(), Some(0), "{output:?}");
+        String::from_utf8_lossy(&output.stdout)
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect()
+    };
+    let units = |host: &serde_json::Value| -> Vec<u64> {
+        host["units"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|u| u["unit"].as_u64().unwrap())
+            .collect()
+    };
+    let certificates: Vec<String> = [
+        ("--cert", "operator.pem"),
+        ("--key", "operator.key"),
+        ("--ca", "plant-ca.pem"),
+    ]
+    .iter()
+    .flat_map(|(option, name)| [option.to_string(), file(name)])
+    .chain(["--tls-server-name".to_string(), "localhost".to_string()])
+    .collect();
+    let hosts = sweep(&certificates);
+    assert_eq!(units(&hosts[0]), [0, 255, 4]);
+    assert_eq!(units(&hosts[1]), [0, 255, 3]);
+    let hosts = sweep(&[]);
+    assert_eq!(
+        (&hosts[1]["reach"], &hosts[1]["modbus"]),
+        (&"open".into(), &false.into())
+    );
+}

@@ -1,6 +1,7 @@
 //! Finding Modbus TCP devices on a network, politely: a bounded number of hosts at once,
 //! one connection to a host at a time, a pause between two requests to one host, and each
-//! connection closed (FIN) as soon as its host is asked. Per host and port: whether it
+//! connection closed (FIN) as soon as its host is asked. Port 802 is asked over TLS
+//! (Modbus/TCP Security) where this end's certificates are given. Per host and port: whether it
 //! takes a connection, whether Modbus answers, which unit ids answer, and their
 //! identification (43/14) and server id (17).
 
@@ -14,6 +15,8 @@ use super::{Master, MasterError, MasterOptions, Reply};
 use crate::codec::{ExceptionCode, Mode, Request, Response};
 use crate::input::hosts::Host;
 use crate::transport::tcp::Tcp;
+use crate::transport::tls::{ClientTls, Tls, MODBUS_TLS_PORT};
+use crate::transport::Transport;
 
 /// How a sweep asks.
 #[derive(Clone, Debug)]
@@ -30,6 +33,8 @@ pub struct SweepOptions {
     pub pause: Duration,
     /// What each unit id is asked first.
     pub probe: Request,
+    /// This end's certificates: port 802 is then asked over TLS (Modbus/TCP Security).
+    pub tls: Option<ClientTls>,
 }
 
 /// How a host's port took the connection.
@@ -82,11 +87,10 @@ impl HostReport {
     }
 }
 
-/// A master on `stream`, asking with `options`' timeout, never more than once.
-fn master_on(stream: TcpStream, options: &SweepOptions) -> std::io::Result<Master> {
-    let transport = Tcp::from_stream(stream, false)?;
-    Ok(Master::new(
-        Box::new(transport),
+/// A master on `transport`, asking with `options`' timeout, never more than once.
+fn master_on(transport: Box<dyn Transport>, options: &SweepOptions) -> Master {
+    Master::new(
+        transport,
         MasterOptions {
             mode: Mode::Tcp,
             timeout: options.timeout,
@@ -97,7 +101,7 @@ fn master_on(stream: TcpStream, options: &SweepOptions) -> std::io::Result<Maste
             silence: Duration::ZERO,
             turnaround: Duration::ZERO,
         },
-    ))
+    )
 }
 
 /// Whether a gateway's exception says that no device stands behind the unit id.
@@ -189,19 +193,37 @@ fn ask_host(host: &Host, port: u16, options: &SweepOptions, stop: &AtomicBool) -
         return report;
     };
     report.address = Some(address);
+    let reached = |error: std::io::Error| match error.kind() {
+        std::io::ErrorKind::ConnectionRefused => Reach::Refused,
+        std::io::ErrorKind::TimedOut | std::io::ErrorKind::WouldBlock => Reach::Silent,
+        // Taken, and then the TLS handshake failed: open, no Modbus heard.
+        _ => Reach::Open,
+    };
+    if let (MODBUS_TLS_PORT, Some(tls)) = (port, &options.tls) {
+        match Tls::connect(&address.ip().to_string(), port, options.timeout, tls) {
+            Ok(stream) => {
+                report.reach = Reach::Open;
+                let mut master = master_on(Box::new(stream), options);
+                ask_units(&mut master, options, &mut report, stop);
+            }
+            Err(error) => report.reach = reached(error),
+        }
+        return report;
+    }
     let stream = match TcpStream::connect_timeout(&address, options.timeout) {
         Ok(stream) => stream,
         Err(error) => {
-            report.reach = match error.kind() {
-                std::io::ErrorKind::ConnectionRefused => Reach::Refused,
-                _ => Reach::Silent,
+            report.reach = match reached(error) {
+                Reach::Open => Reach::Silent,
+                reach => reach,
             };
             return report;
         }
     };
     report.reach = Reach::Open;
     let closer = stream.try_clone();
-    if let Ok(mut master) = master_on(stream, options) {
+    if let Ok(transport) = Tcp::from_stream(stream, false) {
+        let mut master = master_on(Box::new(transport), options);
         ask_units(&mut master, options, &mut report, stop);
     }
     // Closed at once, with a FIN: no connection is left for the device to hold.
