@@ -261,22 +261,24 @@ fn sweep_hosts(settings: &Settings, job: &job::Scan, sweep: &job::HostSweep) -> 
         }
     });
     let mut reports = reports.into_inner().unwrap_or_else(|p| p.into_inner());
-    // In the order given: hosts, then ports.
-    let place = |report: &hosts::HostReport| {
-        let host = sweep
-            .hosts
-            .iter()
-            .position(|h| h.to_string() == report.host);
-        (host, sweep.ports.iter().position(|p| *p == report.port))
-    };
-    reports.sort_by_key(place);
+    // In the order given: hosts, then ports; each host's place looked up once.
+    let order: std::collections::HashMap<String, usize> = sweep
+        .hosts
+        .iter()
+        .enumerate()
+        .map(|(i, host)| (host.to_string(), i))
+        .collect();
+    reports.sort_by_cached_key(|report| {
+        let port = sweep.ports.iter().position(|p| *p == report.port);
+        (order.get(&report.host).copied(), port)
+    });
     let mut out = output::stdout();
     output::hosts::write_hosts(&mut out, settings.output.format, colour_wanted(), &reports)?;
     out.flush()?;
-    if stop.flag.load(std::sync::atomic::Ordering::SeqCst) {
+    let asked = reports.len() / sweep.ports.len().max(1);
+    if stop.flag.load(std::sync::atomic::Ordering::SeqCst) && asked < sweep.hosts.len() {
         mbtool::note!(
-            "mbtool: sweep stopped: {} of {} hosts asked",
-            reports.len() / sweep.ports.len().max(1),
+            "mbtool: sweep stopped: {asked} of {} hosts asked",
             sweep.hosts.len()
         );
         return Ok(stop.exit_status());

@@ -341,3 +341,33 @@ fn port_802_is_asked_over_tls() {
         (&"open".into(), &false.into())
     );
 }
+
+/// A /16 of hosts that refuse is swept and shown in seconds: no step of it grows faster
+/// than the hosts.
+#[test]
+fn a_sweep_of_a_slash_16_ends_in_seconds() {
+    let port = crate::support::free_port();
+    let started = Instant::now();
+    let output = mbtool()
+        .args([
+            "scan",
+            "--hosts",
+            "127.1.0.0/16",
+            "--tcp-port",
+            &port.to_string(),
+            "-o",
+            "csv",
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(3), "{output:?}");
+    assert_eq!(
+        String::from_utf8_lossy(&output.stdout).lines().count(),
+        65535
+    );
+    assert!(
+        started.elapsed() < Duration::from_secs(20),
+        "{:?}",
+        started.elapsed()
+    );
+}
