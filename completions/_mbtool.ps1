@@ -91,6 +91,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('scan', 'scan', [CompletionResultType]::ParameterValue, 'Find the slaves on a line and the settings they use')
             [CompletionResult]::new('watch', 'watch', [CompletionResultType]::ParameterValue, 'Watch values live, full screen: min, max, trend, changes')
             [CompletionResult]::new('info', 'info', [CompletionResultType]::ParameterValue, 'Ask a device who it is: identification and server id')
+            [CompletionResult]::new('sunspec', 'sunspec', [CompletionResultType]::ParameterValue, 'Read a SunSpec device''s models: points named, scaled')
             [CompletionResult]::new('diag', 'diag', [CompletionResultType]::ParameterValue, 'A device''s health: round trips, counters, status')
             [CompletionResult]::new('dump', 'dump', [CompletionResultType]::ParameterValue, 'Save a device''s tables to a data file, holes left out')
             [CompletionResult]::new('restore', 'restore', [CompletionResultType]::ParameterValue, 'Write a data file back to a device, and check it')
@@ -1031,6 +1032,41 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
             break
         }
+        'mbtool;sunspec' {
+            [CompletionResult]::new('--map-out', '--map-out', [CompletionResultType]::ParameterName, 'Also write the points found as a map (CSV) that read --map, watch and poll take')
+            [CompletionResult]::new('--base', '--base', [CompletionResultType]::ParameterName, 'Look for the SunS marker only at this register (0-based) [default: 40000, 50000, 0]')
+            [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('--port', '--port', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
+            [CompletionResult]::new('-m', '-m', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('--mode', '--mode', [CompletionResultType]::ParameterName, 'Framing')
+            [CompletionResult]::new('-b', '-b', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--baud', '--baud', [CompletionResultType]::ParameterName, 'Serial speed [default: 19200]')
+            [CompletionResult]::new('--parity', '--parity', [CompletionResultType]::ParameterName, 'Parity [default: even]')
+            [CompletionResult]::new('--data-bits', '--data-bits', [CompletionResultType]::ParameterName, 'Serial data bits [default: 8, 7 in ASCII mode]')
+            [CompletionResult]::new('--stop-bits', '--stop-bits', [CompletionResultType]::ParameterName, 'Serial stop bits [default: 1 with parity, 2 without]')
+            [CompletionResult]::new('--rs485-delay-before', '--rs485-delay-before', [CompletionResultType]::ParameterName, 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rs485-delay-after', '--rs485-delay-after', [CompletionResultType]::ParameterName, 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle')
+            [CompletionResult]::new('--rts-level', '--rts-level', [CompletionResultType]::ParameterName, 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]')
+            [CompletionResult]::new('--timeout', '--timeout', [CompletionResultType]::ParameterName, 'Response timeout: 500ms, 1s [default: 1s]')
+            [CompletionResult]::new('--frame-gap', '--frame-gap', [CompletionResultType]::ParameterName, 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none')
+            [CompletionResult]::new('--retries', '--retries', [CompletionResultType]::ParameterName, 'Retries after a timeout or a bad answer')
+            [CompletionResult]::new('--cert', '--cert', [CompletionResultType]::ParameterName, 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role')
+            [CompletionResult]::new('--key', '--key', [CompletionResultType]::ParameterName, 'The private key of --cert (PEM: PKCS#8, RSA or EC)')
+            [CompletionResult]::new('--ca', '--ca', [CompletionResultType]::ParameterName, 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway')
+            [CompletionResult]::new('--tls-server-name', '--tls-server-name', [CompletionResultType]::ParameterName, 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else')
+            [CompletionResult]::new('-o', '-o', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--output', '--output', [CompletionResultType]::ParameterName, 'Output format [default: table]')
+            [CompletionResult]::new('--rs485', '--rs485', [CompletionResultType]::ParameterName, 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them')
+            [CompletionResult]::new('--rts-toggle', '--rts-toggle', [CompletionResultType]::ParameterName, 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode')
+            [CompletionResult]::new('-v', '-v', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--verbose', '--verbose', [CompletionResultType]::ParameterName, 'Print every frame sent and received, in hex with a timestamp, on stderr')
+            [CompletionResult]::new('--json', '--json', [CompletionResultType]::ParameterName, 'The same as --output json')
+            [CompletionResult]::new('-h', '-h', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('--help', '--help', [CompletionResultType]::ParameterName, 'Print help (see more with ''--help'')')
+            [CompletionResult]::new('-V', '-V ', [CompletionResultType]::ParameterName, 'Print version')
+            [CompletionResult]::new('--version', '--version', [CompletionResultType]::ParameterName, 'Print version')
+            break
+        }
         'mbtool;diag' {
             [CompletionResult]::new('--count', '--count', [CompletionResultType]::ParameterName, 'How many round trips of return query data to time [default: 5]')
             [CompletionResult]::new('-p', '-p', [CompletionResultType]::ParameterName, 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim')
@@ -1710,6 +1746,7 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             [CompletionResult]::new('scan', 'scan', [CompletionResultType]::ParameterValue, 'Find the slaves on a line and the settings they use')
             [CompletionResult]::new('watch', 'watch', [CompletionResultType]::ParameterValue, 'Watch values live, full screen: min, max, trend, changes')
             [CompletionResult]::new('info', 'info', [CompletionResultType]::ParameterValue, 'Ask a device who it is: identification and server id')
+            [CompletionResult]::new('sunspec', 'sunspec', [CompletionResultType]::ParameterValue, 'Read a SunSpec device''s models: points named, scaled')
             [CompletionResult]::new('diag', 'diag', [CompletionResultType]::ParameterValue, 'A device''s health: round trips, counters, status')
             [CompletionResult]::new('dump', 'dump', [CompletionResultType]::ParameterValue, 'Save a device''s tables to a data file, holes left out')
             [CompletionResult]::new('restore', 'restore', [CompletionResultType]::ParameterValue, 'Write a data file back to a device, and check it')
@@ -1779,6 +1816,9 @@ Register-ArgumentCompleter -Native -CommandName 'mbtool' -ScriptBlock {
             break
         }
         'mbtool;help;info' {
+            break
+        }
+        'mbtool;help;sunspec' {
             break
         }
         'mbtool;help;diag' {

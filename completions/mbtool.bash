@@ -97,6 +97,9 @@ _mbtool() {
             mbtool,sniff)
                 cmd="mbtool__subcmd__sniff"
                 ;;
+            mbtool,sunspec)
+                cmd="mbtool__subcmd__sunspec"
+                ;;
             mbtool,watch)
                 cmd="mbtool__subcmd__watch"
                 ;;
@@ -247,6 +250,9 @@ _mbtool() {
             mbtool__subcmd__help,sniff)
                 cmd="mbtool__subcmd__help__subcmd__sniff"
                 ;;
+            mbtool__subcmd__help,sunspec)
+                cmd="mbtool__subcmd__help__subcmd__sunspec"
+                ;;
             mbtool__subcmd__help,watch)
                 cmd="mbtool__subcmd__help__subcmd__watch"
                 ;;
@@ -275,7 +281,7 @@ _mbtool() {
 
     case "${cmd}" in
         mbtool)
-            opts="-p -m -b -v -o -t -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --retry-non-idempotent --output --json --pdu-addresses --address-base --max-per-request --type --order --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help"
+            opts="-p -m -b -v -o -t -h -V --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --retry-non-idempotent --output --json --pdu-addresses --address-base --max-per-request --type --order --poll --count --log --secondary-port --secondary-baud --secondary-parity --secondary-data-bits --secondary-stop-bits --secondary-mode --switch-on --switch-when --help --version read-coils read-inputs read-discrete-inputs read-holding read-holding-registers read-input-registers read-input-regs read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info sunspec diag dump restore decode encode sniff serve gateway poll ports generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 1 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -1761,7 +1767,7 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__help)
-            opts="read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info diag dump restore decode encode sniff serve gateway poll ports generate help"
+            opts="read-coils read-inputs read-holding read-input-registers read write-coil write-coils write-register write-registers write read-file write-file mask-write read-write read-fifo raw scan watch info sunspec diag dump restore decode encode sniff serve gateway poll ports generate help"
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
                 return 0
@@ -2097,6 +2103,20 @@ _mbtool() {
             return 0
             ;;
         mbtool__subcmd__help__subcmd__sniff)
+            opts=""
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__help__subcmd__sunspec)
             opts=""
             if [[ ${cur} == -* || ${COMP_CWORD} -eq 3 ]] ; then
                 COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
@@ -4229,6 +4249,112 @@ _mbtool() {
                     ;;
                 --rts-level)
                     COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
+                --output)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                -o)
+                    COMPREPLY=($(compgen -W "table json values csv" -- "${cur}"))
+                    return 0
+                    ;;
+                *)
+                    COMPREPLY=()
+                    ;;
+            esac
+            COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+            return 0
+            ;;
+        mbtool__subcmd__sunspec)
+            opts="-p -m -b -v -o -h -V --map-out --base --port --mode --baud --parity --data-bits --stop-bits --rs485 --rs485-delay-before --rs485-delay-after --rts-level --rts-toggle --timeout --frame-gap --retries --verbose --cert --key --ca --tls-server-name --output --json --help --version"
+            if [[ ${cur} == -* || ${COMP_CWORD} -eq 2 ]] ; then
+                COMPREPLY=( $(compgen -W "${opts}" -- "${cur}") )
+                return 0
+            fi
+            case "${prev}" in
+                --map-out)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --base)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --port)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -p)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --mode)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                -m)
+                    COMPREPLY=($(compgen -W "rtu ascii tcp" -- "${cur}"))
+                    return 0
+                    ;;
+                --baud)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                -b)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --parity)
+                    COMPREPLY=($(compgen -W "none even odd" -- "${cur}"))
+                    return 0
+                    ;;
+                --data-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --stop-bits)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-before)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rs485-delay-after)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --rts-level)
+                    COMPREPLY=($(compgen -W "high low" -- "${cur}"))
+                    return 0
+                    ;;
+                --timeout)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --frame-gap)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --retries)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --cert)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --key)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --ca)
+                    COMPREPLY=($(compgen -f "${cur}"))
+                    return 0
+                    ;;
+                --tls-server-name)
+                    COMPREPLY=($(compgen -f "${cur}"))
                     return 0
                     ;;
                 --output)

@@ -88,6 +88,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand scan 'Find the slaves on a line and the settings they use'
             cand watch 'Watch values live, full screen: min, max, trend, changes'
             cand info 'Ask a device who it is: identification and server id'
+            cand sunspec 'Read a SunSpec device''s models: points named, scaled'
             cand diag 'A device''s health: round trips, counters, status'
             cand dump 'Save a device''s tables to a data file, holes left out'
             cand restore 'Write a data file back to a device, and check it'
@@ -1005,6 +1006,40 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand -V 'Print version'
             cand --version 'Print version'
         }
+        &'mbtool;sunspec'= {
+            cand --map-out 'Also write the points found as a map (CSV) that read --map, watch and poll take'
+            cand --base 'Look for the SunS marker only at this register (0-based) [default: 40000, 50000, 0]'
+            cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
+            cand --port 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
+            cand -m 'Framing'
+            cand --mode 'Framing'
+            cand -b 'Serial speed [default: 19200]'
+            cand --baud 'Serial speed [default: 19200]'
+            cand --parity 'Parity [default: even]'
+            cand --data-bits 'Serial data bits [default: 8, 7 in ASCII mode]'
+            cand --stop-bits 'Serial stop bits [default: 1 with parity, 2 without]'
+            cand --rs485-delay-before 'Milliseconds from RTS raised to the first byte sent, with --rs485 or --rts-toggle'
+            cand --rs485-delay-after 'Milliseconds from the last byte gone to RTS dropped, with --rs485 or --rts-toggle'
+            cand --rts-level 'The level of RTS while sending, with --rs485 or --rts-toggle (high: asserted) [default: high]'
+            cand --timeout 'Response timeout: 500ms, 1s [default: 1s]'
+            cand --frame-gap 'Silence kept between RTU transactions [default: 3.5 characters, 1.75 ms above 19200 baud]; 0 for gateways and devices that need none'
+            cand --retries 'Retries after a timeout or a bad answer'
+            cand --cert 'This end''s certificate (PEM), for tls:// ports; a client''s carries its role'
+            cand --key 'The private key of --cert (PEM: PKCS#8, RSA or EC)'
+            cand --ca 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway'
+            cand --tls-server-name 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else'
+            cand -o 'Output format [default: table]'
+            cand --output 'Output format [default: table]'
+            cand --rs485 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
+            cand --rts-toggle 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
+            cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand --verbose 'Print every frame sent and received, in hex with a timestamp, on stderr'
+            cand --json 'The same as --output json'
+            cand -h 'Print help (see more with ''--help'')'
+            cand --help 'Print help (see more with ''--help'')'
+            cand -V 'Print version'
+            cand --version 'Print version'
+        }
         &'mbtool;diag'= {
             cand --count 'How many round trips of return query data to time [default: 5]'
             cand -p 'Port: /dev/ttyUSB0, tcp://HOST[:PORT], tls://HOST, sim'
@@ -1654,6 +1689,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand scan 'Find the slaves on a line and the settings they use'
             cand watch 'Watch values live, full screen: min, max, trend, changes'
             cand info 'Ask a device who it is: identification and server id'
+            cand sunspec 'Read a SunSpec device''s models: points named, scaled'
             cand diag 'A device''s health: round trips, counters, status'
             cand dump 'Save a device''s tables to a data file, holes left out'
             cand restore 'Write a data file back to a device, and check it'
@@ -1704,6 +1740,8 @@ set edit:completion:arg-completer[mbtool] = {|@words|
         &'mbtool;help;watch'= {
         }
         &'mbtool;help;info'= {
+        }
+        &'mbtool;help;sunspec'= {
         }
         &'mbtool;help;diag'= {
         }

@@ -37,6 +37,12 @@ if [ ${#missing[@]} -gt 0 ]; then
     $sudo apt-get update -qq
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
+# pysunspec2 (PyPI): the SunSpec Alliance's own reading of a SunSpec device, and the
+# device images of the sunspec tests laid out by it.
+if ! python3 -c 'import sunspec2' 2>/dev/null; then
+    echo "installing pysunspec2"
+    python3 -m pip install --quiet pysunspec2
+fi
 # pymodbus (PyPI): a slave in RTU, ASCII and TCP, and a master.
 if ! python3 -c 'import pymodbus, serial' 2>/dev/null; then
     echo "installing pymodbus"

@@ -37,6 +37,24 @@ stderr. Exit status 0 when a slave was found, 3 when none answered. Ctrl-C, SIGT
 SIGHUP ends the scan before the next id, with the slaves found so far, and exit status \
 128 + the signal (130 for Ctrl-C, 143 for SIGTERM).";
 
+pub(super) const SUNSPEC_ABOUT: &str = "\
+Read a SunSpec device (an inverter, a meter, a battery): the 'SunS' marker is looked for at \
+register 40000, then 50000, then 0 (protocol addresses; --base gives another), the chain of \
+models after it is walked to its end marker, and each model is read and shown by the \
+definition the SunSpec Alliance publishes: every point with its name, value, unit and \
+reference, scale factors applied, enums and bitfields named. A point the device marks as not \
+implemented (0xFFFF, 0x8000, NaN, empty text) has no value, never a made-up one; a model \
+SunSpec has not published (a vendor's own) is named with its place and length.
+
+The registers are read 125 at a time across the models, so a whole device takes a few \
+requests; a device that refuses a read past what its chain has shown is read model by model \
+from then on. The number of requests is said at the end.
+
+--map-out FILE writes the points found as a CSV map (scale factors as read now) that read \
+--map, watch and poll take: 'mbtool read SLAVE --map FILE' shows the same values. Exit \
+status 0 when the map was read, 1 when no base holds the marker, 3 when the device does not \
+answer.";
+
 pub(super) const DUMP_ABOUT: &str = "\
 Read ranges of a device's tables (400001-400200 000001-000064) in as few requests as the \
 limits allow (--max-per-request lowers them) and write them as a data file that serve \
@@ -304,6 +322,24 @@ pub struct InfoArgs {
 }
 
 holds!(InfoArgs: master, format);
+
+#[derive(Clone, Debug, Args)]
+pub struct SunspecArgs {
+    /// Slave address: 1-247 on serial lines, unit id 0-255 over TCP
+    pub slave: String,
+    /// Also write the points found as a map (CSV) that read --map, watch and poll take
+    #[arg(long, value_name = "FILE")]
+    pub map_out: Option<std::path::PathBuf>,
+    /// Look for the SunS marker only at this register (0-based) [default: 40000, 50000, 0]
+    #[arg(long, value_name = "ADDRESS", value_parser = whole::<u16>(0, 65534))]
+    pub base: Option<u16>,
+    #[command(flatten)]
+    pub master: MasterArgs,
+    #[command(flatten)]
+    pub format: FormatArgs,
+}
+
+holds!(SunspecArgs: master, format);
 
 #[derive(Clone, Debug, Args)]
 pub struct DiagArgs {

@@ -251,6 +251,23 @@ const EXAMPLES: &[(&str, &[Example])] = &[
         ],
     ),
     (
+        "sunspec",
+        &[
+            ex(
+                "Read an inverter's SunSpec models, named and scaled",
+                "mbtool --port tcp://10.0.0.7 sunspec 1",
+            ),
+            ex(
+                "Write them as a map too, to read by name with read --map",
+                "mbtool --port tcp://10.0.0.7 sunspec 1 --map-out inverter.csv",
+            ),
+            ex(
+                "A device that puts its map one register later, at 40001",
+                "mbtool --port /dev/ttyUSB0 sunspec 3 --base 40001",
+            ),
+        ],
+    ),
+    (
         "diag",
         &[
             ex(

@@ -88,6 +88,10 @@ pub enum Command {
     #[command(long_about = INFO_ABOUT)]
     Info(InfoArgs),
 
+    /// Read a SunSpec device's models: points named, scaled
+    #[command(long_about = SUNSPEC_ABOUT)]
+    Sunspec(SunspecArgs),
+
     /// A device's health: round trips, counters, status
     #[command(long_about = DIAG_ABOUT)]
     Diag(DiagArgs),
@@ -153,6 +157,7 @@ impl Command {
             Command::Scan(args) => args,
             Command::Watch(args) => args,
             Command::Info(args) => args,
+            Command::Sunspec(args) => args,
             Command::Diag(args) => args,
             Command::Dump(args) => args,
             Command::Restore(args) => args,

@@ -36,7 +36,7 @@ pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
         .map_err(Error::from)?;
     if let Some(path) = &settings.output.file {
         // Found out before the device is read, which may take minutes.
-        can_write(path).map_err(|e| {
+        super::shared::can_write(path).map_err(|e| {
             std::io::Error::new(e.kind(), format!("cannot write {}: {e}", path.display()))
         })?;
     }
@@ -134,7 +134,7 @@ pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
     let requests = dump.requests + files.requests;
     let target = match &settings.output.file {
         Some(path) => {
-            write_whole(path, text.as_bytes())
+            super::shared::write_whole(path, text.as_bytes())
                 .with_context(|| format!("cannot write {}", path.display()))?;
             path.display().to_string()
         }
@@ -207,49 +207,4 @@ pub fn run(settings: &Settings, job: &job::Dump) -> Result<u8> {
         code: *first,
     };
     Ok(mbtool::error::run_exit_code(&first))
-}
-
-/// The file a dump is written into before it is renamed to `path`: hidden, beside it.
-fn partial_beside(path: &std::path::Path) -> std::path::PathBuf {
-    let name = path.file_name().map_or_else(
-        || std::ffi::OsString::from("dump"),
-        std::ffi::OsStr::to_os_string,
-    );
-    let mut partial_name = std::ffi::OsString::from(".");
-    partial_name.push(&name);
-    partial_name.push(format!(".{}.partial", std::process::id()));
-    path.with_file_name(partial_name)
-}
-
-/// Whether a dump can be written to `path`: its partial file can be made beside it (a
-/// device or a pipe is written as it is).
-fn can_write(path: &std::path::Path) -> std::io::Result<()> {
-    if path.metadata().is_ok_and(|m| !m.is_file()) {
-        return Ok(());
-    }
-    let partial = partial_beside(path);
-    std::fs::File::create(&partial)?;
-    std::fs::remove_file(&partial)
-}
-
-/// Writes the file at `path` whole or not at all: into a file beside it, renamed over it
-/// once written and synced, so that an interruption or a full disk never leaves half a
-/// dump (or an empty file) where a dump is expected, and an older dump there stays as it
-/// was.
-fn write_whole(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
-    // A device or a pipe (/dev/stdout, a fifo) is written as it is, never replaced.
-    if path.metadata().is_ok_and(|m| !m.is_file()) {
-        return std::fs::write(path, bytes);
-    }
-    let partial = partial_beside(path);
-    let written = (|| {
-        let mut file = std::fs::File::create(&partial)?;
-        file.write_all(bytes)?;
-        file.sync_all()?;
-        std::fs::rename(&partial, path)
-    })();
-    if written.is_err() {
-        let _ = std::fs::remove_file(&partial);
-    }
-    written
 }

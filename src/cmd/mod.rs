@@ -16,6 +16,7 @@ mod scan;
 mod serve;
 mod shared;
 mod sniff;
+mod sunspec;
 mod watch;
 
 use anyhow::Result;
@@ -29,6 +30,7 @@ pub fn run(settings: &Settings, job: &Job) -> Result<u8> {
         Job::Scan(job) => scan::run(settings, job),
         Job::Watch(job) => watch::run(settings, job),
         Job::Info(job) => info::run(settings, job),
+        Job::Sunspec(job) => sunspec::run(settings, job),
         Job::Dump(job) => dump::run(settings, job),
         Job::Restore(job) => restore::run(settings, job),
         Job::Diag(job) => diag::run(settings, job),

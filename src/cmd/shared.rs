@@ -2,6 +2,7 @@
 //! the settings, the `-v` tracer, and what is said of a write done another way; and what
 //! the servers (serve, gateway) share: their Modbus/TCP Security.
 
+use std::io::Write;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Arc;
 use std::time::Instant;
@@ -291,4 +292,49 @@ pub fn outcome<T>(asked: Result<Asked<T>, MasterError>) -> Result<Outcome<T>, Ma
         Err(error @ MasterError::Timeout { .. }) => Ok(Outcome::NoAnswer(error.to_string())),
         Err(error) => Err(error),
     }
+}
+
+/// The file a dump or a map is written into before it is renamed to `path`: hidden, beside it.
+fn partial_beside(path: &std::path::Path) -> std::path::PathBuf {
+    let name = path.file_name().map_or_else(
+        || std::ffi::OsString::from("dump"),
+        std::ffi::OsStr::to_os_string,
+    );
+    let mut partial_name = std::ffi::OsString::from(".");
+    partial_name.push(&name);
+    partial_name.push(format!(".{}.partial", std::process::id()));
+    path.with_file_name(partial_name)
+}
+
+/// Whether a dump or a map can be written to `path`: its partial file can be made beside it (a
+/// device or a pipe is written as it is).
+pub fn can_write(path: &std::path::Path) -> std::io::Result<()> {
+    if path.metadata().is_ok_and(|m| !m.is_file()) {
+        return Ok(());
+    }
+    let partial = partial_beside(path);
+    std::fs::File::create(&partial)?;
+    std::fs::remove_file(&partial)
+}
+
+/// Writes the file at `path` whole or not at all: into a file beside it, renamed over it
+/// once written and synced, so that an interruption or a full disk never leaves half a
+/// file (or an empty one) where a whole one is expected, and an older one there stays as
+/// it was.
+pub fn write_whole(path: &std::path::Path, bytes: &[u8]) -> std::io::Result<()> {
+    // A device or a pipe (/dev/stdout, a fifo) is written as it is, never replaced.
+    if path.metadata().is_ok_and(|m| !m.is_file()) {
+        return std::fs::write(path, bytes);
+    }
+    let partial = partial_beside(path);
+    let written = (|| {
+        let mut file = std::fs::File::create(&partial)?;
+        file.write_all(bytes)?;
+        file.sync_all()?;
+        std::fs::rename(&partial, path)
+    })();
+    if written.is_err() {
+        let _ = std::fs::remove_file(&partial);
+    }
+    written
 }

@@ -19,6 +19,7 @@ pub mod records;
 pub mod scan;
 pub mod serve;
 pub mod sniff;
+pub mod sunspec;
 pub mod watch;
 mod wide;
 

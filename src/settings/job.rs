@@ -31,6 +31,7 @@ pub enum Job {
     /// A full screen of values: a read by reference or a map's points.
     Watch(RequestWords),
     Info(Device),
+    Sunspec(Sunspec),
     Diag(Diag),
     Dump(Dump),
     Restore(Restore),
@@ -226,6 +227,15 @@ pub struct Device {
     pub slave: String,
 }
 
+/// `sunspec`: where the marker is looked for, and where the map goes.
+#[derive(Clone, Debug)]
+pub struct Sunspec {
+    pub slave: String,
+    /// The one base to look at; the usual ones when `None`.
+    pub base: Option<u16>,
+    pub map_out: Option<PathBuf>,
+}
+
 #[derive(Clone, Debug)]
 pub struct Diag {
     pub slave: String,
@@ -389,6 +399,11 @@ pub fn of(command: Command) -> Result<Job, String> {
         }),
         Command::Watch(a) => Job::Watch(read_by_reference(a.read, "watch")?),
         Command::Info(a) => Job::Info(Device { slave: a.slave }),
+        Command::Sunspec(a) => Job::Sunspec(Sunspec {
+            slave: a.slave,
+            base: a.base,
+            map_out: a.map_out,
+        }),
         Command::Diag(a) => Job::Diag(Diag {
             slave: a.slave,
             clear: a.clear,

@@ -113,10 +113,10 @@ fn every_help_example_is_one_the_command_accepts() {
         assert_eq!(resolved.err(), None, "{line}");
         let path = origins.path();
         let name = path[0];
-        // These need a line or a device of their own; --listen needs a serial line, and
-        // --hosts a network. watch needs a terminal: its examples are checked as far as
-        // the command line.
-        if ["sniff", "serve", "dump", "restore", "watch"].contains(&name)
+        // These need a line or a device of their own (sunspec a SunSpec device); --listen
+        // needs a serial line, and --hosts a network. watch needs a terminal: its examples
+        // are checked as far as the command line.
+        if ["sniff", "serve", "dump", "restore", "watch", "sunspec"].contains(&name)
             || line.contains("--listen")
             || line.contains("--hosts")
         {

@@ -39,5 +39,6 @@ mod serve_framing;
 mod sniff;
 mod sniff_faults;
 mod sniff_tcp;
+mod sunspec;
 mod tls;
 mod watch;

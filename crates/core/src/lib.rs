@@ -22,4 +22,5 @@ pub mod master;
 pub mod model;
 pub mod slave;
 pub mod sniff;
+pub mod sunspec;
 pub mod transport;

@@ -373,18 +373,12 @@ fn point_value(
         .to_vec();
     let states = point.shown.as_ref().and_then(|shown| shown.states.as_ref());
     let value = match (point.kind, point.bit) {
-        (Kind::Bool, Some(bit)) => {
-            let register = raw.first().copied().unwrap_or_default();
-            Value::Unsigned(u64::from(register >> bit & 1))
-        }
         (Kind::Bool, None) => Value::Unsigned(u64::from(coil(bits, offset))),
         // A register that stands for states (a switch's, a cover's) is named by them.
         (Kind::Number(_), _) if states.is_some() => {
             Value::Unsigned(u64::from(raw.first().copied().unwrap_or_default()))
         }
-        (Kind::Number(value_type), _) => scaled(point, value_type.read(&raw, point.order)),
-        (Kind::Text(_), _) => text(&raw, point.order),
-        (Kind::Packed(_), _) => packed(point, &raw),
+        _ => register_value(point, &raw),
     };
     let value = match (states, &value) {
         (Some(states), Value::Unsigned(raw)) => states.state(*raw),
@@ -397,6 +391,19 @@ fn point_value(
             _ => raw,
         },
         value,
+    }
+}
+
+/// The value of a point kept in registers, as a map read shows it, from its registers.
+pub fn register_value(point: &Point, raw: &[u16]) -> Value {
+    match point.kind {
+        Kind::Number(value_type) => scaled(point, value_type.read(raw, point.order)),
+        Kind::Text(_) => text(raw, point.order),
+        Kind::Packed(_) => packed(point, raw),
+        Kind::Bool => {
+            let register = raw.first().copied().unwrap_or_default();
+            Value::Unsigned(u64::from(register >> point.bit.unwrap_or(0) & 1))
+        }
     }
 }
 

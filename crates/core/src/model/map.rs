@@ -39,7 +39,8 @@ impl Kind {
         }
     }
 
-    fn name(self) -> String {
+    /// Its name in a map's `type` column: `u16`, `bool`, `string:8`.
+    pub fn name(self) -> String {
         match self {
             Kind::Bool => "bool".into(),
             Kind::Number(value_type) => value_type.name().into(),

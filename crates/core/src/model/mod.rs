@@ -9,6 +9,7 @@ pub mod layouts;
 pub mod line;
 pub mod map;
 pub mod map_file;
+pub mod map_writer;
 pub mod plant;
 pub mod shown;
 pub mod spread;

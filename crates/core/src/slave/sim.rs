@@ -24,7 +24,11 @@ pub struct SimTransport {
 impl SimTransport {
     /// The sim, framing as `mode` does, holding the manuals' example data.
     pub fn new(mode: Mode) -> Self {
-        let slave = Slave::new(&[SIM_SLAVE], DataModel::manual_examples());
+        Self::standing_in_for(mode, Slave::new(&[SIM_SLAVE], DataModel::manual_examples()))
+    }
+
+    /// The sim standing in for `slave`: a device for the tests of what reads one.
+    pub(crate) fn standing_in_for(mode: Mode, slave: Slave) -> Self {
         Self {
             server: Server::new(slave, FaultInjection::default(), mode, 0, None),
             rng: fastrand::Rng::with_seed(0),
