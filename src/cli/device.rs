@@ -120,7 +120,8 @@ Exit status 3 when the device does not answer.";
 pub struct ScanArgs {
     /// The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200
     ///
-    /// With --hosts, 0, 1 and 255 are asked first, then these
+    /// With --hosts, 0, 1 and 255 are asked first, then these; a connection where none of
+    /// those three gets any answer is taken as silent and asked no more
     #[arg(long, value_name = "IDS", value_parser = parse_ids)]
     pub ids: Option<Ids>,
     /// Sweep a network for Modbus TCP devices: 10.0.0.0/24,10.0.1.5-20,plc1

@@ -13,7 +13,7 @@ const LISTENER: &str = concat!(
 );
 
 /// Waits until `address:port` takes a connection.
-fn listening(address: &str, port: u16) {
+pub(crate) fn listening(address: &str, port: u16) {
     let deadline = Instant::now() + Duration::from_secs(10);
     while std::net::TcpStream::connect((address, port)).is_err() {
         assert!(
@@ -151,7 +151,10 @@ fn a_sweep_that_finds_nothing_says_so_and_bad_hosts_are_refused() {
 /// nmap's modbus-discover (aggressive: every sid 1-246, asked with function 17) over the
 /// same hosts: the same hosts with Modbus and the same unit ids, where nmap's units leave
 /// out the sids a gateway (or a server standing for one) answers 0A or 0B.
-fn nmap_units(port: u16, hosts: &[&str]) -> std::collections::BTreeMap<String, Vec<u64>> {
+pub(crate) fn nmap_units(
+    port: u16,
+    hosts: &[&str],
+) -> std::collections::BTreeMap<String, Vec<u64>> {
     let output = Process::new("nmap")
         .args(["-n", "-Pn", "-p", &port.to_string()])
         .args([
@@ -160,7 +163,8 @@ fn nmap_units(port: u16, hosts: &[&str]) -> std::collections::BTreeMap<String, V
             "--script-args",
             "modbus-discover.aggressive=true",
         ])
-        .args(["-oX", "-"])
+        // A host that takes the connection and never answers would cost 2 s an id.
+        .args(["--script-timeout", "15s", "-oX", "-"])
         .args(hosts)
         .output()
         .unwrap();

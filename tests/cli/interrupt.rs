@@ -268,3 +268,49 @@ fn serve_in_the_background_ends_on_sigint() {
     assert_eq!(output.status.code(), Some(0));
     assert!(took < Duration::from_secs(1), "ended {took:?} after");
 }
+
+#[test]
+fn an_interrupted_host_sweep_shows_the_units_found_so_far() {
+    let port = crate::support::free_port();
+    let _server = crate::support::serve(&[
+        "--port",
+        &format!("tcp://127.0.4.2:{port}"),
+        "--slave",
+        "1",
+        "--quiet",
+    ]);
+    crate::hosts::listening("127.0.4.2", port);
+    for (signal, status) in [("INT", 130), ("TERM", 143)] {
+        // 249 ids with 50 ms between two take 12 s on the first host; by 2 s its units
+        // 0, 1 and 255 have answered, and the second host is not asked yet.
+        let args = words(
+            &[],
+            &format!(
+                "scan --hosts 127.0.4.2,127.0.4.3 --tcp-port {port} --parallel 1 --ids 2-246 --pause 50ms -o json"
+            ),
+        );
+        let (output, took) = signalled(&args, Duration::from_secs(2), signal);
+        let stderr = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(output.status.code(), Some(status), "SIG{signal}: {stderr}");
+        assert!(
+            took < Duration::from_secs(1),
+            "SIG{signal}: ended {took:?} after"
+        );
+        assert!(
+            stderr.contains("sweep stopped: 1 of 2 hosts asked"),
+            "{stderr}"
+        );
+        let rows: Vec<serde_json::Value> = String::from_utf8_lossy(&output.stdout)
+            .lines()
+            .map(|line| serde_json::from_str(line).unwrap())
+            .collect();
+        assert_eq!(rows.len(), 1, "{rows:?}");
+        let units: Vec<u64> = rows[0]["units"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|u| u["unit"].as_u64().unwrap())
+            .collect();
+        assert_eq!(units, [0, 1, 255], "SIG{signal}");
+    }
+}

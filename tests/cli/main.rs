@@ -18,6 +18,7 @@ mod gateway;
 mod golden;
 mod home_assistant;
 mod hosts;
+mod hosts_sweep;
 mod interrupt;
 mod layouts;
 mod map;

@@ -112,6 +112,11 @@ fn nobody_there(code: ExceptionCode) -> bool {
     )
 }
 
+/// A connection that gives no answer at all to this many unit ids (the usual 0, 1 and
+/// 255) is taken as silent, and asked no more: a listener that never answers would
+/// otherwise cost a timeout for each of the hundreds of ids a sweep may ask.
+const SILENT_AFTER: usize = 3;
+
 /// Asks the unit ids of one open connection; what was learnt, even when it broke off.
 fn ask_units(
     master: &mut Master,
@@ -120,8 +125,9 @@ fn ask_units(
     stop: &AtomicBool,
 ) {
     let pause = || std::thread::sleep(options.pause);
+    let mut heard = false;
     for (i, &id) in options.ids.iter().enumerate() {
-        if stop.load(Ordering::SeqCst) {
+        if stop.load(Ordering::SeqCst) || (i == SILENT_AFTER && !heard) {
             return;
         }
         if i > 0 {
@@ -129,7 +135,9 @@ fn ask_units(
         }
         // A probe of function 17 is the server id already.
         let mut given_id = None;
-        let exception = match master.transact(id, &options.probe) {
+        let asked = master.transact(id, &options.probe);
+        heard |= !matches!(asked, Err(MasterError::Timeout { .. }));
+        let exception = match asked {
             Ok(Reply::Response(Response::ReportServerId { data })) => {
                 given_id = Some(ServerId::parse(&data));
                 None

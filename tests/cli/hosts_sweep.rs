@@ -1,0 +1,230 @@
+//! `scan --hosts` over 40 addresses of 127.0.0.0/8 as a plant's network has them: `serve`
+//! in the clear and over TLS, pymodbus servers that answer every unit id, listeners that
+//! never answer, and addresses that refuse. The same hosts and unit ids as nmap's
+//! modbus-discover finds, and never more than one connection at a time to any host,
+//! counted in front of every server.
+
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+use std::process::{Command as Process, Stdio};
+
+use crate::hosts::{listening, nmap_units};
+use crate::support::{
+    command_exists, free_port, mbtool, peer_available, python_has, serve, Stopped,
+};
+
+const COUNTER: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/tests/peers/counting_listener.py"
+);
+const PYMODBUS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/pymodbus_slave.py");
+const PKI: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/pki/");
+
+/// A counter on `address:port`: in front of the server on `address:behind`, or, without
+/// one, a listener that never answers; its report file.
+fn counter(
+    address: &str,
+    port: u16,
+    behind: Option<u16>,
+    dir: &std::path::Path,
+) -> (Stopped, PathBuf) {
+    let report = dir.join(format!("{address}-{port}.json"));
+    let mut command = Process::new("python3");
+    command
+        .arg(COUNTER)
+        .args([address, &port.to_string()])
+        .arg(&report);
+    if let Some(behind) = behind {
+        command.arg(behind.to_string());
+    }
+    let child = command.stdout(Stdio::null()).spawn().unwrap();
+    (Stopped(child), report)
+}
+
+fn report(path: &PathBuf) -> serde_json::Value {
+    std::fs::read_to_string(path)
+        .ok()
+        .and_then(|text| serde_json::from_str(&text).ok())
+        .unwrap_or_else(
+            || serde_json::json!({"most_at_once": 0, "accepted": 0, "closed_by_client": 0}),
+        )
+}
+
+#[test]
+fn forty_addresses_give_what_nmap_finds_and_never_two_connections_to_a_host() {
+    if !peer_available("nmap", command_exists("nmap"))
+        || !peer_available("pymodbus (Python)", python_has("pymodbus"))
+    {
+        return;
+    }
+    // 802 is below 1024: where only root may listen, the sweep is of the plain port alone.
+    let tls = std::net::TcpListener::bind("127.0.3.4:802").is_ok();
+    assert!(
+        tls || std::env::var_os("CI").is_none(),
+        "CI runs as root: 802 must be free"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let port = free_port();
+    let behind = free_port();
+    let at = |address: &str, port: u16| format!("tcp://{address}:{port}");
+    let mut running = Vec::new();
+    let mut counted = BTreeMap::new();
+    for (address, slaves) in [
+        ("127.0.3.2", &["1", "5"][..]),
+        ("127.0.3.3", &["200"]),
+        ("127.0.3.4", &["1"]),
+    ] {
+        let mut args = vec!["--port".to_string(), at(address, behind), "--quiet".into()];
+        for slave in slaves {
+            args.extend(["--slave".to_string(), slave.to_string()]);
+        }
+        running.push(serve(&args.iter().map(String::as_str).collect::<Vec<_>>()));
+        listening(address, behind);
+        let (guard, path) = counter(address, port, Some(behind), dir.path());
+        running.push(guard);
+        counted.insert(format!("{address}:{port}"), path);
+    }
+    for address in ["127.0.3.6", "127.0.3.7"] {
+        running.push(Stopped(
+            Process::new("python3")
+                .args([PYMODBUS, "--framer", "socket", "--tcp", &behind.to_string()])
+                .args(["--address", address, "--every-unit"])
+                .stdout(Stdio::null())
+                .stderr(Stdio::null())
+                .spawn()
+                .unwrap(),
+        ));
+        listening(address, behind);
+        let (guard, path) = counter(address, port, Some(behind), dir.path());
+        running.push(guard);
+        counted.insert(format!("{address}:{port}"), path);
+    }
+    for address in ["127.0.3.20", "127.0.3.21", "127.0.3.22"] {
+        let (guard, path) = counter(address, port, None, dir.path());
+        running.push(guard);
+        counted.insert(format!("{address}:{port}"), path);
+    }
+    let tls_behind = free_port();
+    if tls {
+        let file = |name: &str| format!("{PKI}{name}");
+        running.push(serve(&[
+            "--port",
+            &format!("tls://127.0.3.4:{tls_behind}"),
+            "--cert",
+            &file("server.pem"),
+            "--key",
+            &file("server.key"),
+            "--ca",
+            &file("plant-ca.pem"),
+            "--slave",
+            "3",
+            "--quiet",
+        ]));
+        listening("127.0.3.4", tls_behind);
+        let (guard, path) = counter("127.0.3.4", 802, Some(tls_behind), dir.path());
+        running.push(guard);
+        counted.insert("127.0.3.4:802".into(), path);
+    }
+    for place in counted.keys() {
+        let (address, port) = place.split_once(':').unwrap();
+        listening(address, port.parse().unwrap());
+    }
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    let before: BTreeMap<String, serde_json::Value> = counted
+        .iter()
+        .map(|(place, path)| (place.clone(), report(path)))
+        .collect();
+
+    let mut sweep = mbtool();
+    let ports = if tls {
+        format!("{port},802")
+    } else {
+        port.to_string()
+    };
+    sweep
+        .args(["scan", "--hosts", "127.0.3.1-40", "--tcp-port", &ports])
+        .args([
+            "--ids",
+            "1-246",
+            "--probe",
+            "id",
+            "--timeout",
+            "500ms",
+            "-o",
+            "json",
+        ]);
+    if tls {
+        for (option, name) in [
+            ("--cert", "operator.pem"),
+            ("--key", "operator.key"),
+            ("--ca", "plant-ca.pem"),
+        ] {
+            sweep.args([option, &format!("{PKI}{name}")]);
+        }
+        sweep.args(["--tls-server-name", "localhost"]);
+    }
+    let output = sweep.output().unwrap();
+    assert_eq!(output.status.code(), Some(0), "{output:?}");
+    let rows: Vec<serde_json::Value> = String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert_eq!(rows.len(), if tls { 80 } else { 40 });
+    let units_on = |wanted: u16| -> BTreeMap<String, Vec<u64>> {
+        rows.iter()
+            .filter(|row| row["port"] == wanted)
+            .filter_map(|row| {
+                let mut units: Vec<u64> = row["units"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|u| u["unit"].as_u64().unwrap())
+                    // nmap asks 1-246: 0 and 255 are mbtool's own first askings.
+                    .filter(|id| (1..=246).contains(id))
+                    .collect();
+                units.sort_unstable();
+                (!units.is_empty()).then(|| (row["host"].as_str().unwrap().to_string(), units))
+            })
+            .collect()
+    };
+    // Every server saw one connection at a time, each closed by the sweep with a FIN.
+    std::thread::sleep(std::time::Duration::from_millis(500));
+    for (place, path) in &counted {
+        let after = report(path);
+        let opened =
+            after["accepted"].as_u64().unwrap() - before[place]["accepted"].as_u64().unwrap();
+        let closed = after["closed_by_client"].as_u64().unwrap()
+            - before[place]["closed_by_client"].as_u64().unwrap();
+        assert_eq!(after["most_at_once"], 1, "{place}: {after}");
+        assert!(opened >= 1 && closed == opened, "{place}: {after}");
+    }
+    // nmap after: its own connections are none of the sweep's.
+    let theirs = nmap_units(port, &["127.0.3.1-40"]);
+    let ours = units_on(port);
+    assert_eq!(ours, theirs);
+    assert_eq!(ours.len(), 5, "{ours:?}");
+    assert_eq!(ours["127.0.3.2"], [1, 5]);
+    assert_eq!(ours["127.0.3.6"].len(), 246);
+    for silent in ["127.0.3.20", "127.0.3.21", "127.0.3.22"] {
+        let row = rows
+            .iter()
+            .find(|r| r["host"] == silent && r["port"] == port)
+            .unwrap();
+        assert_eq!(
+            (&row["reach"], &row["modbus"]),
+            (&"open".into(), &false.into()),
+            "{row}"
+        );
+    }
+    let refused = rows
+        .iter()
+        .filter(|r| r["port"] == port && r["reach"] == "refused")
+        .count();
+    assert_eq!(refused, 40 - 8);
+    if tls {
+        let over_tls = units_on(802);
+        assert_eq!(over_tls.keys().collect::<Vec<_>>(), ["127.0.3.4"]);
+        assert_eq!(over_tls["127.0.3.4"], [3]);
+    }
+    drop(running);
+}
