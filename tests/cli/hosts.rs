@@ -148,6 +148,25 @@ fn a_sweep_that_finds_nothing_says_so_and_bad_hosts_are_refused() {
     }
 }
 
+/// `serve` over TLS on `place` (`ADDRESS:PORT`) with the server certificate of docs/pki,
+/// standing for `slave`.
+pub(crate) fn serve_tls(place: &str, slave: &str) -> Stopped {
+    let file = |name: &str| format!("{}/docs/pki/{name}", env!("CARGO_MANIFEST_DIR"));
+    serve(&[
+        "--port",
+        &format!("tls://{place}"),
+        "--cert",
+        &file("server.pem"),
+        "--key",
+        &file("server.key"),
+        "--ca",
+        &file("plant-ca.pem"),
+        "--slave",
+        slave,
+        "--quiet",
+    ])
+}
+
 /// nmap's modbus-discover (aggressive: every sid 1-246, asked with function 17) over the
 /// same hosts: the same hosts with Modbus and the same unit ids, where nmap's units leave
 /// out the sids a gateway (or a server standing for one) answers 0A or 0B.
@@ -283,18 +302,7 @@ fn port_802_is_asked_over_tls() {
     }
     let pki = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/pki/");
     let file = |name: &str| format!("{pki}{name}");
-    let _tls = serve(&[
-        "--port",
-        "tls://127.0.0.12:802",
-        "--cert",
-        &file("server.pem"),
-        "--key",
-        &file("server.key"),
-        "--ca",
-        &file("plant-ca.pem"),
-        "--slave",
-        "3",
-    ]);
+    let _tls = serve_tls("127.0.0.12:802", "3");
     let _plain = serve(&["--port", "tcp://127.0.0.12:502", "--slave", "4"]);
     listening("127.0.0.12", 802);
     listening("127.0.0.12", 502);

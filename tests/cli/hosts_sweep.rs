@@ -8,7 +8,7 @@ use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::process::{Command as Process, Stdio};
 
-use crate::hosts::{listening, nmap_units};
+use crate::hosts::{listening, nmap_units, serve_tls};
 use crate::support::{
     command_exists, free_port, mbtool, peer_available, python_has, serve, Stopped,
 };
@@ -106,20 +106,7 @@ fn forty_addresses_give_what_nmap_finds_and_never_two_connections_to_a_host() {
     }
     let tls_behind = free_port();
     if tls {
-        let file = |name: &str| format!("{PKI}{name}");
-        running.push(serve(&[
-            "--port",
-            &format!("tls://127.0.3.4:{tls_behind}"),
-            "--cert",
-            &file("server.pem"),
-            "--key",
-            &file("server.key"),
-            "--ca",
-            &file("plant-ca.pem"),
-            "--slave",
-            "3",
-            "--quiet",
-        ]));
+        running.push(serve_tls(&format!("127.0.3.4:{tls_behind}"), "3"));
         listening("127.0.3.4", tls_behind);
         let (guard, path) = counter("127.0.3.4", 802, Some(tls_behind), dir.path());
         running.push(guard);
