@@ -120,3 +120,28 @@ fn a_chain_that_runs_off_the_registers_or_is_refused_is_cut() {
         Some("the device refused the model header at register 40070 (illegal data address) before the end marker")
     );
 }
+
+proptest::proptest! {
+    /// Whatever a device holds after its marker, the walk ends, within the registers, and
+    /// never panics.
+    #[test]
+    fn any_registers_after_the_marker_are_walked_to_an_end(
+        words in proptest::collection::vec(
+            proptest::prop_oneof![
+                proptest::prelude::any::<u16>(),
+                proptest::sample::select(vec![1u16, 66, 103, 50, 160, 0xFFFF, 0, 2]),
+            ],
+            0..600,
+        ),
+    ) {
+        let text: Vec<String> = words.iter().map(u16::to_string).collect();
+        let data = format!("440001 = 21365 28243 {}\n", text.join(" "));
+        let found = read_device(&mut device(&data), 1, None).unwrap();
+        // A model laid out was read: its registers are the device's.
+        for model in found.models.iter().filter(|model| !model.points.is_empty()) {
+            let end = u32::from(model.address) + 2 + u32::from(model.length);
+            proptest::prop_assert!(end <= 40002 + words.len() as u32, "{model:?}");
+        }
+        proptest::prop_assert!(found.requests < 600);
+    }
+}
