@@ -920,7 +920,7 @@ set edit:completion:arg-completer[mbtool] = {|@words|
             cand --key 'The private key of --cert (PEM: PKCS#8, RSA or EC)'
             cand --ca 'The CA certificates (PEM) that sign the other end''s certificate: the device''s for a master, the clients'' for serve and gateway'
             cand --tls-server-name 'The name the device''s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else'
-            cand --all 'Try every setting of the sweep, not only up to the first where a slave answers'
+            cand --all 'Try every setting of the sweep, not only up to the first where a slave answers; with --hosts, ask every id even where 0, 1 and 255 get no answer'
             cand --rs485 'RS-485 direction by the kernel''s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
             cand --rts-toggle 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
             cand -v 'Print every frame sent and received, in hex with a timestamp, on stderr'

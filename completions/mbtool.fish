@@ -1145,7 +1145,7 @@ complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l cert -d 'This end
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l key -d 'The private key of --cert (PEM: PKCS#8, RSA or EC)' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l ca -d 'The CA certificates (PEM) that sign the other end\'s certificate: the device\'s for a master, the clients\' for serve and gateway' -r -F
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l tls-server-name -d 'The name the device\'s certificate must hold [default: the host of --port], for a device addressed by IP whose certificate names something else' -r
-complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l all -d 'Try every setting of the sweep, not only up to the first where a slave answers'
+complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l all -d 'Try every setting of the sweep, not only up to the first where a slave answers; with --hosts, ask every id even where 0, 1 and 255 get no answer'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rs485 -d 'RS-485 direction by the kernel\'s RS-485 mode (Linux): the UART driver raises RTS while sending, for transceivers that need the host to switch them'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -l rts-toggle -d 'RS-485 direction by mbtool itself: RTS raised before each frame sent and dropped once its last byte has left (tcdrain), for drivers without RS-485 mode'
 complete -c mbtool -n "__fish_mbtool_using_subcommand scan" -s v -l verbose -d 'Print every frame sent and received, in hex with a timestamp, on stderr'

@@ -121,7 +121,7 @@ pub struct ScanArgs {
     /// The ids to ask: ranges and single ids, as 1-247 (the default) or 1-10,17,200
     ///
     /// With --hosts, 0, 1 and 255 are asked first, then these; a connection where none of
-    /// those three gets any answer is taken as silent and asked no more
+    /// those three gets any answer is taken as silent and asked no more, unless --all
     #[arg(long, value_name = "IDS", value_parser = parse_ids)]
     pub ids: Option<Ids>,
     /// Sweep a network for Modbus TCP devices: 10.0.0.0/24,10.0.1.5-20,plc1
@@ -151,7 +151,8 @@ pub struct ScanArgs {
     /// another master are found without adding traffic
     #[arg(long, value_name = "DURATION", value_parser = mbtool_core::input::duration::parse_duration)]
     pub listen: Option<std::time::Duration>,
-    /// Try every setting of the sweep, not only up to the first where a slave answers
+    /// Try every setting of the sweep, not only up to the first where a slave answers;
+    /// with --hosts, ask every id even where 0, 1 and 255 get no answer
     #[arg(long)]
     pub all: bool,
     #[command(flatten)]

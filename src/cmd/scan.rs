@@ -230,9 +230,9 @@ fn sweep_hosts(settings: &Settings, job: &job::Scan, sweep: &job::HostSweep) -> 
         )
         .into());
     }
-    if job.listen.is_some() || job.all {
+    if job.listen.is_some() {
         return Err(Error::usage(
-            "--listen and --all are for a serial line's settings; --hosts asks over TCP",
+            "--listen is for a serial line's settings; --hosts asks over TCP",
         )
         .into());
     }
@@ -243,6 +243,7 @@ fn sweep_hosts(settings: &Settings, job: &job::Scan, sweep: &job::HostSweep) -> 
         timeout: settings.connection.timeout,
         pause: sweep.pause,
         probe: job.probe.request(),
+        ask_silent: job.all,
         tls: match settings.connection.tls_typed {
             true => Some(ClientTls::new(&settings.connection.tls).map_err(Error::from)?),
             false => None,
@@ -275,11 +276,19 @@ fn sweep_hosts(settings: &Settings, job: &job::Scan, sweep: &job::HostSweep) -> 
     let mut out = output::stdout();
     output::hosts::write_hosts(&mut out, settings.output.format, colour_wanted(), &reports)?;
     out.flush()?;
-    let asked = reports.len() / sweep.ports.len().max(1);
+    let in_part = reports.iter().filter(|report| report.interrupted).count();
+    let asked = (reports.len() - in_part) / sweep.ports.len().max(1);
     if stop.flag.load(std::sync::atomic::Ordering::SeqCst) && asked < sweep.hosts.len() {
         mbtool::note!(
-            "mbtool: sweep stopped: {asked} of {} hosts asked",
-            sweep.hosts.len()
+            "mbtool: sweep stopped: {asked} of {} hosts asked{}",
+            sweep.hosts.len(),
+            match in_part {
+                0 => String::new(),
+                n => format!(
+                    ", {} asked in part (marked interrupted)",
+                    output::plural(n, "host port")
+                ),
+            }
         );
         return Ok(stop.exit_status());
     }

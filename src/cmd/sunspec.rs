@@ -8,6 +8,8 @@ use mbtool::note;
 use mbtool::output::sunspec::write_device;
 use mbtool::output::{self, colour_wanted, plural};
 use mbtool::settings::{job, Settings};
+use mbtool_core::codec::function;
+use mbtool_core::master::run::RunError;
 use mbtool_core::model::address::{reference, Table};
 use mbtool_core::model::map_writer::to_csv;
 use mbtool_core::sunspec::walk::{read_device, SunSpecDevice};
@@ -50,6 +52,26 @@ pub fn run(settings: &Settings, job: &job::Sunspec) -> Result<u8> {
         plural(device.models.len(), "model"),
         plural(device.requests, "request")
     );
+    // Models the device refused part of: the first refusal is the exit status, as a
+    // map's points that fail.
+    let mut status = 0;
+    for model in &device.models {
+        if let Some(code) = model.refused {
+            note!(
+                "mbtool: model {} at {}: {}; those points have no value",
+                model.id,
+                reference(Table::HoldingRegisters, model.address),
+                model.problem.as_deref().unwrap_or_default()
+            );
+            if status == 0 {
+                status = mbtool::error::run_exit_code(&RunError::Exception {
+                    slave,
+                    function: function::READ_HOLDING_REGISTERS,
+                    code,
+                });
+            }
+        }
+    }
     if let Some(path) = &job.map_out {
         let (text, points) = map_text(settings, slave, &device);
         super::shared::write_whole(path, text.as_bytes()).map_err(|e| {
@@ -57,7 +79,7 @@ pub fn run(settings: &Settings, job: &job::Sunspec) -> Result<u8> {
         })?;
         note!("{} written to {}", plural(points, "point"), path.display());
     }
-    Ok(0)
+    Ok(status)
 }
 
 /// The map of the points that have a value, and how many they are.

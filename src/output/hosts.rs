@@ -60,6 +60,9 @@ struct JsonHost<'a> {
     reach: &'static str,
     modbus: bool,
     units: Vec<JsonUnit>,
+    /// A signal ended its asking: its units are those found until then.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    interrupted: bool,
 }
 
 fn units_text(report: &HostReport) -> String {
@@ -93,6 +96,7 @@ pub fn write_hosts(
                             server_id: server_id(unit),
                         })
                         .collect(),
+                    interrupted: report.interrupted,
                 };
                 serde_json::to_writer(&mut *out, &host)?;
                 writeln!(out)?;
@@ -100,12 +104,15 @@ pub fn write_hosts(
             Ok(())
         }
         Format::Csv => {
-            writeln!(out, "host,port,reach,modbus,units,identification,server_id")?;
+            writeln!(
+                out,
+                "host,port,reach,modbus,units,identification,server_id,interrupted"
+            )?;
             for report in reports {
                 let first = report.units.first();
                 writeln!(
                     out,
-                    "{},{},{},{},{},{},{}",
+                    "{},{},{},{},{},{},{},{}",
                     csv_field(&report.host),
                     report.port,
                     reach_name(report.reach),
@@ -113,6 +120,7 @@ pub fn write_hosts(
                     units_text(report),
                     csv_field(&first.map(identity).unwrap_or_default()),
                     csv_field(&first.map(server_id).unwrap_or_default()),
+                    report.interrupted,
                 )?;
             }
             Ok(())
@@ -141,7 +149,13 @@ pub fn write_hosts(
                     table.add_row(vec![
                         report.host.clone(),
                         report.port.to_string(),
-                        if report.modbus { "yes" } else { "no answer" }.to_string(),
+                        match (report.modbus, report.interrupted) {
+                            (true, false) => "yes",
+                            (true, true) => "yes (interrupted)",
+                            (false, false) => "no answer",
+                            (false, true) => "interrupted",
+                        }
+                        .to_string(),
                         units_text(report),
                         first.map(identity).unwrap_or_default(),
                         first.map(server_id).unwrap_or_default(),

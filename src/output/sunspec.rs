@@ -16,10 +16,11 @@ fn point_ref(point: &SunSpecPoint) -> String {
     reference(Table::HoldingRegisters, point.address).to_string()
 }
 
-fn why_not(no_value: &NoValue) -> &str {
+fn why_not(no_value: &NoValue) -> String {
     match no_value {
-        NoValue::NotImplemented => "not implemented",
-        NoValue::ScaleFactor(why) => why,
+        NoValue::NotImplemented => "not implemented".into(),
+        NoValue::ScaleFactor(why) => why.clone(),
+        NoValue::Refused(code) => format!("the device refused its registers ({code})"),
     }
 }
 
@@ -75,7 +76,7 @@ struct JsonPoint<'a> {
     scale_factor: Option<i16>,
     raw: &'a [u16],
     #[serde(skip_serializing_if = "Option::is_none")]
-    error: Option<&'a str>,
+    error: Option<String>,
 }
 
 fn json_model(model: &ModelReading) -> JsonModel<'_> {
@@ -139,21 +140,27 @@ pub fn write_device(
             Ok(())
         }
         Format::Csv => {
-            writeln!(out, "model,name,ref,value,unit,meaning,raw")?;
+            writeln!(out, "model,name,ref,value,unit,meaning,raw,error")?;
             for model in &device.models {
                 for point in &model.points {
-                    let Ok(value) = &point.value else { continue };
+                    // Points not implemented are left out, as from the table.
+                    let (value, error) = match &point.value {
+                        Ok(value) => (value.to_string(), String::new()),
+                        Err(NoValue::NotImplemented) => continue,
+                        Err(why) => (String::new(), why_not(why)),
+                    };
                     let raw: Vec<String> = point.raw.iter().map(|r| format!("{r:04X}")).collect();
                     writeln!(
                         out,
-                        "{},{},{},{},{},{},{}",
+                        "{},{},{},{},{},{},{},{}",
                         model.id,
                         csv_field(&point.name),
                         point_ref(point),
-                        csv_field(&value.to_string()),
+                        csv_field(&value),
                         csv_field(&point.units),
                         csv_field(point.meaning.as_deref().unwrap_or_default()),
-                        raw.join(" ")
+                        raw.join(" "),
+                        csv_field(&error)
                     )?;
                 }
             }
@@ -191,7 +198,8 @@ fn write_model_table(out: &mut dyn Write, model: &ModelReading, colour: bool) ->
                 table.add_row([point.name.clone(), shown(point, value), point_ref(point)]);
             }
             Err(NoValue::NotImplemented) => missing += 1,
-            Err(NoValue::ScaleFactor(why)) => {
+            Err(why) => {
+                let why = why_not(why);
                 table.add_row([
                     point.name.clone(),
                     format!("no value: {why}"),

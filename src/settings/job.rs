@@ -369,7 +369,13 @@ pub fn of(command: Command) -> Result<Job, String> {
                     hosts: mbtool_core::input::hosts::parse_hosts(text)?,
                     ports: match a.tcp_port.is_empty() {
                         true => vec![mbtool_core::transport::endpoint::MODBUS_TCP_PORT],
-                        false => a.tcp_port.clone(),
+                        false => {
+                            // Each port once, in the order given.
+                            let mut ports = a.tcp_port.clone();
+                            let mut seen = std::collections::HashSet::new();
+                            ports.retain(|port| seen.insert(*port));
+                            ports
+                        }
                     },
                     parallel: a.parallel.unwrap_or(DEFAULT_PARALLEL),
                     pause: a.pause.unwrap_or(DEFAULT_PAUSE),

@@ -215,3 +215,60 @@ fn forty_addresses_give_what_nmap_finds_and_never_two_connections_to_a_host() {
     }
     drop(running);
 }
+
+/// A host named twice (its address and its name) still gets one connection at a time; a
+/// gateway silent for 0, 1 and 255 is given up, unless --all asks every id.
+#[test]
+fn a_host_named_twice_gets_one_connection_and_all_asks_a_silent_gateway() {
+    let dir = tempfile::tempdir().unwrap();
+    let port = free_port();
+    let (_silent, path) = counter("127.0.0.1", port, None, dir.path());
+    listening("127.0.0.1", port);
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    let before = report(&path);
+    let output = mbtool()
+        .args(["scan", "--hosts", "127.0.0.1,localhost", "--tcp-port"])
+        .args([&port.to_string(), "--timeout", "200ms", "-o", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(3), "{output:?}");
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    let after = report(&path);
+    assert_eq!(after["most_at_once"], 1, "{after}");
+    assert_eq!(
+        after["accepted"].as_u64().unwrap() - before["accepted"].as_u64().unwrap(),
+        2
+    );
+
+    let gateway_port = free_port();
+    let script = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/peers/one_unit_gateway.py"
+    );
+    let _gateway = Stopped(
+        Process::new("python3")
+            .args([script, "127.0.0.1", &gateway_port.to_string(), "7"])
+            .spawn()
+            .unwrap(),
+    );
+    listening("127.0.0.1", gateway_port);
+    let sweep = |extra: &[&str]| -> serde_json::Value {
+        let output = mbtool()
+            .args([
+                "scan",
+                "--hosts",
+                "127.0.0.1",
+                "--tcp-port",
+                &gateway_port.to_string(),
+            ])
+            .args(["--ids", "5-8", "--timeout", "200ms", "-o", "json"])
+            .args(extra)
+            .output()
+            .unwrap();
+        serde_json::from_slice(&output.stdout).unwrap()
+    };
+    assert_eq!(sweep(&[])["modbus"], false);
+    let all = sweep(&["--all"]);
+    assert_eq!(all["units"][0]["unit"], 7, "{all}");
+    assert_eq!(all["units"][0]["server_id"], "GW-7", "{all}");
+}

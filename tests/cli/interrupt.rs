@@ -297,7 +297,9 @@ fn an_interrupted_host_sweep_shows_the_units_found_so_far() {
             "SIG{signal}: ended {took:?} after"
         );
         assert!(
-            stderr.contains("sweep stopped: 1 of 2 hosts asked"),
+            stderr.contains(
+                "sweep stopped: 0 of 2 hosts asked, 1 host port asked in part (marked interrupted)"
+            ),
             "{stderr}"
         );
         let rows: Vec<serde_json::Value> = String::from_utf8_lossy(&output.stdout)
@@ -312,5 +314,37 @@ fn an_interrupted_host_sweep_shows_the_units_found_so_far() {
             .map(|u| u["unit"].as_u64().unwrap())
             .collect();
         assert_eq!(units, [0, 1, 255], "SIG{signal}");
+        assert_eq!(rows[0]["interrupted"], true);
     }
+}
+
+#[test]
+fn a_signal_ends_a_host_sweep_waiting_on_a_silent_host_at_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let port = crate::support::free_port();
+    let listener = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/tests/peers/counting_listener.py"
+    );
+    let _silent = crate::support::Stopped(
+        Process::new("python3")
+            .args([listener, "127.0.4.9", &port.to_string()])
+            .arg(dir.path().join("report.json"))
+            .stdout(Stdio::null())
+            .spawn()
+            .unwrap(),
+    );
+    crate::hosts::listening("127.0.4.9", port);
+    let args = words(
+        &[],
+        &format!("scan --hosts 127.0.4.9 --tcp-port {port} --timeout 5s -o json"),
+    );
+    let (output, took) = signalled(&args, Duration::from_secs(1), "INT");
+    assert_eq!(output.status.code(), Some(130), "{output:?}");
+    assert!(took < Duration::from_secs(1), "ended {took:?} after");
+    let row: serde_json::Value = serde_json::from_slice(&output.stdout).unwrap();
+    assert_eq!(
+        (&row["modbus"], &row["interrupted"]),
+        (&false.into(), &true.into())
+    );
 }

@@ -213,33 +213,46 @@ fn the_table_names_scales_and_leaves_out_what_is_not_implemented() {
 
 #[test]
 fn a_device_that_refuses_reads_across_its_models_is_read_model_by_model() {
-    // Each model its own run of the data file, with a hole between: a read that crosses
-    // from one model into the next is refused, as some inverters do.
+    // A device that refuses any read crossing from one model into the next (each model's
+    // first register after the common model a boundary), as some inverters do.
     let text = std::fs::read_to_string(EXAMPLE).unwrap();
     let line = text.lines().find(|l| l.starts_with("440001 = ")).unwrap();
     let words: Vec<u16> = line[9..].split(' ').map(|w| w.parse().unwrap()).collect();
-    let mut data = String::new();
+    let mut boundaries = Vec::new();
     let mut at = 2;
-    data.push_str(&format!("440001 = {} {}\n", words[0], words[1]));
     while at < words.len() {
-        let length = if words[at] == 0xFFFF {
+        at += 2 + if words[at] == 0xFFFF {
             0
         } else {
             usize::from(words[at + 1])
         };
-        let end = (at + 2 + length).min(words.len());
-        let run: Vec<String> = words[at..end].iter().map(u16::to_string).collect();
-        data.push_str(&format!("4{:05} = {}\n", 40001 + at, run.join(" ")));
-        at = end;
+        boundaries.push((40000 + at).to_string());
     }
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("split.txt");
-    std::fs::write(&path, data).unwrap();
-    let (_server, port, _) = serve_tcp(&["--slave", "1", "--data", &path.display().to_string()]);
-    let (split, _) = mbtool_reading(&port, &[]);
+    let port = crate::support::free_port();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/bounded_device.py");
+    let _device = crate::support::Stopped(
+        Process::new("python3")
+            .args([script, EXAMPLE, &port.to_string(), &boundaries.join(",")])
+            .spawn()
+            .unwrap(),
+    );
+    crate::hosts::listening("127.0.0.1", port);
+    let bounded = vec!["--port".to_string(), format!("tcp://127.0.0.1:{port}")];
+    let (split, requests) = mbtool_reading(&bounded, &[]);
     let (_whole_server, whole_port, _) = serve_tcp(&["--slave", "1", "--data", EXAMPLE]);
     let (whole, _) = mbtool_reading(&whole_port, &[]);
     assert_eq!(split, whole);
+    // The marker, a read ahead refused and one with the next header refused, then a
+    // header and a body a model: never more than pysunspec2's 18 on this device.
+    assert!(requests <= 16, "{requests} requests");
+    if peer_available("pysunspec2 (Python)", python_has("sunspec2")) {
+        let (theirs, their_requests) = pysunspec2_reading(&["tcp", &port.to_string(), "1"]);
+        assert_same(&split, &theirs, "pysunspec2");
+        assert!(
+            requests < their_requests,
+            "{requests} against {their_requests}"
+        );
+    }
 }
 
 #[test]
@@ -318,6 +331,75 @@ fn a_map_that_cannot_be_written_is_told_before_the_device_is_asked() {
     let told = String::from_utf8_lossy(&output.stderr);
     assert!(
         told.starts_with("mbtool: cannot write /nonexistent/map.csv"),
+        "{told}"
+    );
+}
+
+#[test]
+fn registers_the_device_refuses_leave_their_points_without_a_value() {
+    // Two registers of the inverter model refused (exception 04), as a device with a
+    // broken sensor may: those points have none, every other has its value.
+    let (_server, port, _) = serve_tcp(&[
+        "--slave",
+        "1",
+        "--data",
+        EXAMPLE,
+        "--exception",
+        "4@440100-440101",
+    ]);
+    let output = mbtool()
+        .args(&port)
+        .args(["sunspec", "1", "-o", "csv"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(14), "{output:?}");
+    let csv = String::from_utf8_lossy(&output.stdout);
+    assert!(
+        csv.contains("103,inverter_three_phase.DCV,440100,,V,,0000,the device refused its registers (slave device failure)"),
+        "{csv}"
+    );
+    assert!(
+        csv.contains("103,inverter_three_phase.DCW,440102,5200,W,,1450,"),
+        "{csv}"
+    );
+    assert!(
+        csv.contains("160,mppt.module_2.DCV,440223,379.9,V,,0ED7,"),
+        "{csv}"
+    );
+    let told = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        told.contains("mbtool: model 103 at 440071: the device refused 2 of its registers (slave device failure); those points have no value"),
+        "{told}"
+    );
+}
+
+#[test]
+fn a_short_model_keeps_its_points_and_zeros_after_the_chain_end_it() {
+    // The common model with 65 registers (its last, Pad, left out), then zeros where the
+    // end marker belongs.
+    let mut words = vec![21365, 28243, 1, 65, 16739, 28005];
+    words.extend(std::iter::repeat_n(0, 63));
+    words.extend([0, 0, 0, 0]);
+    let text: Vec<String> = words.iter().map(u16::to_string).collect();
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("short.txt");
+    std::fs::write(&path, format!("440001 = {}\n", text.join(" "))).unwrap();
+    let (_server, port, _) = serve_tcp(&["--slave", "1", "--data", &path.display().to_string()]);
+    let output = mbtool()
+        .args(&port)
+        .args(["sunspec", "1", "-o", "values"])
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+    assert_eq!(
+        String::from_utf8_lossy(&output.stdout),
+        "common.ID=1\ncommon.L=65\ncommon.Mn=Acme\ncommon.DA=0\n"
+    );
+    let told = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        told.contains(
+            "register 40069 holds model id 0 where a model or the end marker (0xFFFF) belongs"
+        ),
         "{told}"
     );
 }

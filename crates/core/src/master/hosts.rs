@@ -5,9 +5,11 @@
 //! takes a connection, whether Modbus answers, which unit ids answer, and their
 //! identification (43/14) and server id (17).
 
-use std::net::{Shutdown, SocketAddr, TcpStream, ToSocketAddrs};
+use std::collections::HashSet;
+use std::io::Read;
+use std::net::{IpAddr, Shutdown, SocketAddr, TcpStream, ToSocketAddrs};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-use std::sync::Mutex;
+use std::sync::{Arc, Condvar, Mutex};
 use std::time::Duration;
 
 use super::device::{identification, server_id, Asked, Identification, ServerId};
@@ -33,6 +35,8 @@ pub struct SweepOptions {
     pub pause: Duration,
     /// What each unit id is asked first.
     pub probe: Request,
+    /// Whether every id is asked even where the first ones got no answer at all.
+    pub ask_silent: bool,
     /// This end's certificates: port 802 is then asked over TLS (Modbus/TCP Security).
     pub tls: Option<ClientTls>,
 }
@@ -78,6 +82,9 @@ pub struct HostReport {
     pub modbus: bool,
     /// The unit ids that answer (a gateway's 0A and 0B are no answer of a device).
     pub units: Vec<Unit>,
+    /// A stop ended its asking before every id was asked: what it holds is what was
+    /// found until then.
+    pub interrupted: bool,
 }
 
 impl HostReport {
@@ -87,9 +94,14 @@ impl HostReport {
     }
 }
 
-/// A master on `transport`, asking with `options`' timeout, never more than once.
-fn master_on(transport: Box<dyn Transport>, options: &SweepOptions) -> Master {
-    Master::new(
+/// A master on `transport`, asking with `options`' timeout, never more than once; a stop
+/// ends the request it waits on.
+fn master_on(
+    transport: Box<dyn Transport>,
+    options: &SweepOptions,
+    stop: &Arc<AtomicBool>,
+) -> Master {
+    let mut master = Master::new(
         transport,
         MasterOptions {
             mode: Mode::Tcp,
@@ -101,7 +113,50 @@ fn master_on(transport: Box<dyn Transport>, options: &SweepOptions) -> Master {
             silence: Duration::ZERO,
             turnaround: Duration::ZERO,
         },
-    )
+    );
+    master.stop_on(Arc::clone(stop));
+    master
+}
+
+/// The addresses a connection is open to: one host named twice (an address and its name)
+/// still gets one connection at a time.
+#[derive(Default)]
+struct Busy {
+    addresses: Mutex<HashSet<IpAddr>>,
+    freed: Condvar,
+}
+
+impl Busy {
+    /// Waits until no connection is open to `address`, then takes it until the guard
+    /// drops.
+    fn hold(&self, address: IpAddr) -> Held<'_> {
+        let mut busy = self.addresses.lock().unwrap_or_else(|p| p.into_inner());
+        while busy.contains(&address) {
+            busy = self.freed.wait(busy).unwrap_or_else(|p| p.into_inner());
+        }
+        busy.insert(address);
+        Held {
+            busy: self,
+            address,
+        }
+    }
+}
+
+struct Held<'a> {
+    busy: &'a Busy,
+    address: IpAddr,
+}
+
+impl Drop for Held<'_> {
+    fn drop(&mut self) {
+        let mut busy = self
+            .busy
+            .addresses
+            .lock()
+            .unwrap_or_else(|p| p.into_inner());
+        busy.remove(&self.address);
+        self.busy.freed.notify_all();
+    }
 }
 
 /// Whether a gateway's exception says that no device stands behind the unit id.
@@ -112,23 +167,31 @@ fn nobody_there(code: ExceptionCode) -> bool {
     )
 }
 
+/// The longest a sweep waits for a device to close its side once the sweep has closed its
+/// own.
+const CLOSE_WAIT: Duration = Duration::from_secs(1);
+
 /// A connection that gives no answer at all to this many unit ids (the usual 0, 1 and
 /// 255) is taken as silent, and asked no more: a listener that never answers would
 /// otherwise cost a timeout for each of the hundreds of ids a sweep may ask.
 const SILENT_AFTER: usize = 3;
 
 /// Asks the unit ids of one open connection; what was learnt, even when it broke off.
+/// Whether it ended of itself: every id asked, or the connection found silent.
 fn ask_units(
     master: &mut Master,
     options: &SweepOptions,
     report: &mut HostReport,
     stop: &AtomicBool,
-) {
+) -> bool {
     let pause = || std::thread::sleep(options.pause);
     let mut heard = false;
     for (i, &id) in options.ids.iter().enumerate() {
-        if stop.load(Ordering::SeqCst) || (i == SILENT_AFTER && !heard) {
-            return;
+        if stop.load(Ordering::SeqCst) {
+            return false;
+        }
+        if i == SILENT_AFTER && !heard && !options.ask_silent {
+            return true;
         }
         if i > 0 {
             pause();
@@ -151,14 +214,14 @@ fn ask_units(
             Ok(Reply::Broadcast) => continue,
             // A frame that is no Modbus is still an answer of a kind; nothing of a unit.
             Err(MasterError::BadFrame { .. } | MasterError::Timeout { .. }) => continue,
-            Err(_) => return,
+            Err(_) => return false,
         };
         report.modbus = true;
         pause();
         let identification = match identification(master, id) {
             Ok(Asked::Answered(found)) => Some(found),
             Ok(_) | Err(MasterError::BadFrame { .. } | MasterError::Timeout { .. }) => None,
-            Err(_) => return,
+            Err(_) => return false,
         };
         let server_id = match given_id {
             Some(given) => Some(given),
@@ -167,7 +230,7 @@ fn ask_units(
                 match server_id(master, id) {
                     Ok(Asked::Answered(found)) => Some(found),
                     Ok(_) | Err(MasterError::BadFrame { .. } | MasterError::Timeout { .. }) => None,
-                    Err(_) => return,
+                    Err(_) => return false,
                 }
             }
         };
@@ -178,10 +241,17 @@ fn ask_units(
             server_id,
         });
     }
+    true
 }
 
 /// Asks one host's port: connects, asks its units, closes.
-fn ask_host(host: &Host, port: u16, options: &SweepOptions, stop: &AtomicBool) -> HostReport {
+fn ask_host(
+    host: &Host,
+    port: u16,
+    options: &SweepOptions,
+    stop: &Arc<AtomicBool>,
+    busy: &Busy,
+) -> HostReport {
     let mut report = HostReport {
         host: host.to_string(),
         address: None,
@@ -189,6 +259,7 @@ fn ask_host(host: &Host, port: u16, options: &SweepOptions, stop: &AtomicBool) -
         reach: Reach::Unknown,
         modbus: false,
         units: Vec::new(),
+        interrupted: false,
     };
     let address = match host {
         Host::Address(address) => Some(SocketAddr::new(*address, port)),
@@ -201,6 +272,7 @@ fn ask_host(host: &Host, port: u16, options: &SweepOptions, stop: &AtomicBool) -
         return report;
     };
     report.address = Some(address);
+    let _held = busy.hold(address.ip());
     let reached = |error: std::io::Error| match error.kind() {
         std::io::ErrorKind::ConnectionRefused => Reach::Refused,
         std::io::ErrorKind::TimedOut | std::io::ErrorKind::WouldBlock => Reach::Silent,
@@ -211,8 +283,8 @@ fn ask_host(host: &Host, port: u16, options: &SweepOptions, stop: &AtomicBool) -
         match Tls::connect(&address.ip().to_string(), port, options.timeout, tls) {
             Ok(stream) => {
                 report.reach = Reach::Open;
-                let mut master = master_on(Box::new(stream), options);
-                ask_units(&mut master, options, &mut report, stop);
+                let mut master = master_on(Box::new(stream), options, stop);
+                report.interrupted = !ask_units(&mut master, options, &mut report, stop);
             }
             Err(error) => report.reach = reached(error),
         }
@@ -231,12 +303,16 @@ fn ask_host(host: &Host, port: u16, options: &SweepOptions, stop: &AtomicBool) -
     report.reach = Reach::Open;
     let closer = stream.try_clone();
     if let Ok(transport) = Tcp::from_stream(stream, false) {
-        let mut master = master_on(Box::new(transport), options);
-        ask_units(&mut master, options, &mut report, stop);
+        let mut master = master_on(Box::new(transport), options, stop);
+        report.interrupted = !ask_units(&mut master, options, &mut report, stop);
     }
-    // Closed at once, with a FIN: no connection is left for the device to hold.
-    if let Ok(closer) = closer {
-        let _ = closer.shutdown(Shutdown::Both);
+    // Closed at once, with a FIN, and the device's own close awaited (a moment at most):
+    // no connection is left for it to hold when the next one to it opens.
+    if let Ok(mut closer) = closer {
+        let _ = closer.shutdown(Shutdown::Write);
+        let _ = closer.set_read_timeout(Some(options.timeout.min(CLOSE_WAIT)));
+        let mut left = [0u8; 512];
+        while matches!(closer.read(&mut left), Ok(n) if n > 0) {}
     }
     report
 }
@@ -247,10 +323,11 @@ fn ask_host(host: &Host, port: u16, options: &SweepOptions, stop: &AtomicBool) -
 pub fn sweep(
     hosts: &[Host],
     options: &SweepOptions,
-    stop: &AtomicBool,
+    stop: &Arc<AtomicBool>,
     found: impl Fn(HostReport) + Send,
 ) {
     let next = AtomicUsize::new(0);
+    let busy = Busy::default();
     let found = Mutex::new(found);
     std::thread::scope(|scope| {
         for _ in 0..options.parallel.clamp(1, hosts.len().max(1)) {
@@ -265,7 +342,7 @@ pub fn sweep(
                     if i > 0 {
                         std::thread::sleep(options.pause);
                     }
-                    let report = ask_host(host, port, options, stop);
+                    let report = ask_host(host, port, options, stop, &busy);
                     let found = found.lock().unwrap_or_else(|p| p.into_inner());
                     found(report);
                 }

@@ -43,6 +43,8 @@ pub enum NoValue {
     NotImplemented,
     /// Its scale factor is not implemented, not in the model, or outside -10..10.
     ScaleFactor(String),
+    /// The device refused to read its registers, with this exception.
+    Refused(String),
 }
 
 impl SunSpecPoint {
@@ -192,6 +194,10 @@ impl Layout<'_> {
                     "{prefix}.{} lies past the model's length",
                     point.name
                 ));
+                // The points before it are the device's, and have their values.
+                scopes.push(scope);
+                self.settle(group, first, scopes);
+                scopes.pop();
                 return self.registers.len();
             };
             scope.insert(point.name.clone(), raw.to_vec());

@@ -7,7 +7,7 @@
 //! on, exactly as the chain says: each header, then each model's body.
 
 use super::defs::{self, ModelDef};
-use super::points::{lay_out, SunSpecPoint};
+use super::points::{lay_out, NoValue, SunSpecPoint};
 use super::SunSpecError;
 use crate::codec::answer::Mismatch;
 use crate::codec::{ExceptionCode, Request, Response};
@@ -25,6 +25,9 @@ const END: u16 = 0xFFFF;
 
 /// The most registers one read asks for.
 const MOST: u16 = 125;
+
+/// The most requests a model the device refused is read again with, in halves.
+const MOST_TO_SPLIT: usize = 64;
 
 /// A SunSpec device as read.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,6 +60,8 @@ pub struct ModelReading {
     pub points: Vec<SunSpecPoint>,
     /// What kept some or all of its points from being shown.
     pub problem: Option<String>,
+    /// The exception the device refused some of its registers with.
+    pub refused: Option<ExceptionCode>,
 }
 
 /// Reads the device's SunSpec map: at `base` when given, else at the first of [`BASES`]
@@ -72,6 +77,7 @@ pub fn read_device(
         window_start: 0,
         window: Vec::new(),
         ahead: true,
+        extra_refused: false,
         requests: 0,
     };
     let bases: Vec<u16> = match base {
@@ -95,6 +101,13 @@ pub fn read_device(
                 break;
             }
         };
+        if id == 0 {
+            // Registers left at zero after the last model, where its end marker belongs.
+            device.cut = Some(format!(
+                "register {address} holds model id 0 where a model or the end marker (0xFFFF) belongs"
+            ));
+            break;
+        }
         let end = address + 2 + u32::from(length);
         if end > 0x1_0000 {
             device.cut = Some(format!(
@@ -131,6 +144,9 @@ impl Missed {
     }
 }
 
+/// A register the device refused alone: its offset in what was asked, and the exception.
+type Refusal = (usize, ExceptionCode);
+
 struct Reader<'a> {
     master: &'a mut Master,
     slave: u8,
@@ -139,6 +155,8 @@ struct Reader<'a> {
     window: Vec<u16>,
     /// Whether reads go past what the chain has shown, as long as the device allows.
     ahead: bool,
+    /// Whether the device refused a model's read together with the next header.
+    extra_refused: bool,
     requests: usize,
 }
 
@@ -239,6 +257,7 @@ impl Reader<'_> {
             label: None,
             points: Vec::new(),
             problem: None,
+            refused: None,
         };
         let def: ModelDef = match definition {
             None => {
@@ -252,21 +271,76 @@ impl Reader<'_> {
             Some(Ok(def)) => def,
         };
         model.label = def.group.label.clone();
-        let registers = match self.get(u32::from(address), usize::from(length) + 2, 2) {
-            Ok(registers) => registers,
-            Err(Missed::Refused(code)) => {
-                model.problem = Some(format!(
-                    "the device refused its registers ({})",
-                    code.name()
-                ));
-                return Ok(model);
-            }
+        let count = usize::from(length) + 2;
+        let (registers, refused) = match self.get(u32::from(address), count, 2) {
+            Ok(registers) => (registers, Vec::new()),
+            Err(Missed::Refused(_)) => self.around_refusals(u32::from(address), count)?,
             Err(Missed::Failed(error)) => return Err(SunSpecError::Run(error)),
         };
-        let (points, problem) = lay_out(&def, &model.name, address, &registers);
+        let (mut points, problem) = lay_out(&def, &model.name, address, &registers);
+        let mut problems: Vec<String> = problem.map(|problem| problem.0).into_iter().collect();
+        if let Some((_, code)) = refused.first() {
+            for point in &mut points {
+                let start = usize::from(point.address.wrapping_sub(address));
+                let span = start..start + point.raw.len();
+                if let Some((_, code)) = refused.iter().find(|(at, _)| span.contains(at)) {
+                    point.value = Err(NoValue::Refused(code.name().to_string()));
+                    point.meaning = None;
+                }
+            }
+            problems.push(format!(
+                "the device refused {} of its registers ({})",
+                refused.len(),
+                code.name()
+            ));
+            model.refused = Some(*code);
+        }
         model.points = points;
-        model.problem = problem.map(|problem| problem.0);
+        model.problem = (!problems.is_empty()).then(|| problems.join("; "));
         Ok(model)
+    }
+
+    /// `count` registers from `address` where the device refused them read together: read
+    /// in halves, down to single registers; those it refuses alone are 0 in the registers
+    /// given back, and listed (offset from `address`) with the exception.
+    fn around_refusals(
+        &mut self,
+        address: u32,
+        count: usize,
+    ) -> Result<(Vec<u16>, Vec<Refusal>), SunSpecError> {
+        let mut registers = vec![0; count];
+        let mut refused = Vec::new();
+        let mut pending = vec![(0, count)];
+        let mut asked = 0;
+        while let Some((start, length)) = pending.pop() {
+            if asked == MOST_TO_SPLIT {
+                // A model refused all over is not read a register at a time.
+                let code = refused
+                    .first()
+                    .map_or(ExceptionCode::ILLEGAL_DATA_ADDRESS, |(_, code)| *code);
+                refused.extend((start..start + length).map(|at| (at, code)));
+                continue;
+            }
+            asked += 1;
+            let asked = u16::try_from(length.min(usize::from(MOST))).unwrap_or(MOST);
+            match self.read(address + start as u32, asked) {
+                Ok(values) => {
+                    registers[start..start + values.len()].copy_from_slice(&values);
+                    if length > values.len() {
+                        pending.push((start + values.len(), length - values.len()));
+                    }
+                }
+                Err(Missed::Refused(code)) if length == 1 => refused.push((start, code)),
+                Err(Missed::Refused(_)) => {
+                    let half = length / 2;
+                    pending.push((start + half, length - half));
+                    pending.push((start, half));
+                }
+                Err(Missed::Failed(error)) => return Err(SunSpecError::Run(error)),
+            }
+        }
+        refused.sort_unstable_by_key(|(at, _)| *at);
+        Ok((registers, refused))
     }
 
     /// `count` registers from `address`, from what was read already where it holds them.
@@ -290,7 +364,7 @@ impl Reader<'_> {
             if self.ahead && room > with_extra {
                 tries.push(room);
             }
-            if with_extra > needed {
+            if with_extra > needed && !self.extra_refused {
                 tries.push(with_extra);
             }
             tries.push(needed);
@@ -298,7 +372,12 @@ impl Reader<'_> {
             for count in tries {
                 registers = self.read(from, count);
                 match registers {
-                    Err(Missed::Refused(_)) => self.ahead &= count <= with_extra,
+                    Err(Missed::Refused(_)) => {
+                        self.ahead &= count <= with_extra;
+                        // A device that refuses a model read with the next header refuses
+                        // every such read: models are read alone from then on.
+                        self.extra_refused |= count == with_extra && count > needed;
+                    }
                     _ => break,
                 }
             }

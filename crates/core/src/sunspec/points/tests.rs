@@ -107,6 +107,7 @@ fn a_length_that_does_not_fit_the_definition_is_told() {
     let common = definition(1).unwrap().unwrap();
     let (points, problem) = lay_out(&common, "common", 0, &[1, 20, 0x4142]);
     assert_eq!(points.len(), 2);
+    assert_eq!(points[1].value, Ok(Value::Unsigned(20)));
     assert_eq!(problem.unwrap().0, "common.Mn lies past the model's length");
 }
 

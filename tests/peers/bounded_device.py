@@ -1,0 +1,63 @@
+#!/usr/bin/env python3
+"""A Modbus TCP device whose holding registers are those of a data file's `4xxxxx = ...`
+lines, that refuses (exception 02) any read crossing one of BOUNDARIES (protocol
+addresses where a read may start but not run across), as some SunSpec inverters refuse a
+read that spans two models.
+
+    bounded_device.py DATA_FILE PORT BOUNDARY,BOUNDARY,...
+
+Only function 03 is answered; every other function gets exception 01.
+"""
+import socket
+import struct
+import sys
+import threading
+
+path, port = sys.argv[1], int(sys.argv[2])
+boundaries = [int(b) for b in sys.argv[3].split(",") if b]
+registers = {}
+for line in open(path):
+    line = line.split("#")[0].strip()
+    if not line:
+        continue
+    reference, words = line.split("=")
+    start = int(reference) - 400001
+    for offset, word in enumerate(words.split()):
+        registers[start + offset] = int(word)
+
+
+def answer(pdu):
+    if pdu[0] != 0x03 or len(pdu) < 5:
+        return bytes([pdu[0] | 0x80, 0x01])
+    address, count = struct.unpack(">HH", pdu[1:5])
+    span = range(address, address + count)
+    crosses = any(address < b < address + count for b in boundaries)
+    if crosses or not 1 <= count <= 125 or any(a not in registers for a in span):
+        return bytes([0x83, 0x02])
+    return bytes([0x03, 2 * count]) + b"".join(struct.pack(">H", registers[a]) for a in span)
+
+
+def serve(connection):
+    buffer = b""
+    with connection:
+        while True:
+            data = connection.recv(1024)
+            if not data:
+                return
+            buffer += data
+            while len(buffer) >= 7:
+                transaction, _, length, unit = struct.unpack(">HHHB", buffer[:7])
+                if len(buffer) < 6 + length:
+                    break
+                pdu, buffer = buffer[7:6 + length], buffer[6 + length:]
+                reply = answer(pdu)
+                connection.sendall(struct.pack(">HHHB", transaction, 0, len(reply) + 1, unit) + reply)
+
+
+listener = socket.socket()
+listener.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+listener.bind(("127.0.0.1", port))
+listener.listen(16)
+while True:
+    connection, _ = listener.accept()
+    threading.Thread(target=serve, args=(connection,), daemon=True).start()
