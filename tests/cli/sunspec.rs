@@ -160,7 +160,9 @@ fn the_map_written_reads_back_the_same_values() {
     );
     let text = std::fs::read_to_string(&map).unwrap();
     assert!(
-        text.contains("inverter_three_phase.PhVphA,440081,u16,ABCD,0.1,0,V,r,Phase Voltage AN"),
+        text.contains(
+            "inverter_three_phase.PhVphA,440081,u16,ABCD,0.1,0,V,r,65535,Phase Voltage AN"
+        ),
         "{text}"
     );
     // A write by name goes where the map says, scaled back.
@@ -172,6 +174,28 @@ fn the_map_written_reads_back_the_same_values() {
     assert!(written.status.success(), "{written:?}");
     let (after, _) = mbtool_reading(&port, &[]);
     assert_eq!(after["settings.VMax"], 254.5);
+    // A point the device later marks as not implemented (at night, say) is read as
+    // unknown through the map, never as 6553.5 V or -32768 W.
+    for (reference, mark) in [("440081", "0xFFFF"), ("440085", "0x8000")] {
+        let marked = mbtool()
+            .args(&port)
+            .args(["write-register", "1", reference, mark])
+            .output()
+            .unwrap();
+        assert!(marked.status.success(), "{marked:?}");
+    }
+    let read = mbtool()
+        .args(&port)
+        .args(["read", "1", "--map", &map_text, "-o", "csv"])
+        .args(["inverter_three_phase.PhVphA", "inverter_three_phase.W"])
+        .output()
+        .unwrap();
+    assert_eq!(
+        String::from_utf8_lossy(&read.stdout),
+        "name,ref,value,unit,raw,error\n\
+         inverter_three_phase.PhVphA,440081,unknown,V,FFFF,\n\
+         inverter_three_phase.W,440085,unknown,W,8000,\n"
+    );
 }
 
 #[test]

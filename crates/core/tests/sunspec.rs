@@ -33,11 +33,11 @@ proptest! {
     fn a_written_map_reads_back_as_the_points_it_was_written_from(
         points in vec(point(), 1..20),
     ) {
-        // Names are unique in a map.
+        // Names are unique in a map, and points do not overlap: eight registers each.
         let points: Vec<Point> = points
             .into_iter()
             .enumerate()
-            .map(|(i, p)| Point { name: format!("{}{i}", p.name), ..p })
+            .map(|(i, p)| Point { name: format!("{}{i}", p.name), address: 8 * i as u16, ..p })
             .collect();
         let text = to_csv(&["a comment, with \"quotes\"\nand a line break".into()], &points);
         let read = parse_csv("m", &text).unwrap();
@@ -83,6 +83,7 @@ fn point() -> impl Strategy<Value = Point> {
                 unit: unit.trim().to_string(),
                 writable,
                 description: label.trim().to_string(),
+                nan_value: (power % 3 == 0).then_some(i128::from(power) * 1000),
                 ..template.clone()
             }
         })

@@ -17,6 +17,7 @@ use crate::codec::{limits, ExceptionCode, Request, Response};
 use crate::input::choice::Choice;
 use crate::model::address::Table;
 use crate::model::map::{Kind, Point};
+use crate::model::shown::UNKNOWN;
 use crate::model::values::{parse_coil, text, Value, ValueType};
 
 /// One read request of a map read, and the points it carries.
@@ -414,6 +415,14 @@ fn coil(bits: &[bool], offset: usize) -> bool {
 /// A raw value as the map shows it: raw x scale + offset, then as its file says it is
 /// shown.
 fn scaled(point: &Point, raw: Value) -> Value {
+    let marked = match raw {
+        Value::Unsigned(v) => Some(i128::from(v)),
+        Value::Signed(v) => Some(i128::from(v)),
+        _ => None,
+    };
+    if marked.is_some() && marked == point.nan_value {
+        return Value::Text(UNKNOWN.into());
+    }
     let number = match raw {
         Value::Unsigned(v) => v as f64,
         Value::Signed(v) => v as f64,
@@ -445,7 +454,7 @@ fn packed(point: &Point, raw: &[u16]) -> Value {
     // Packed values come from Home Assistant's maps, which always say how they are shown.
     match (values, &point.shown) {
         (Some(values), Some(shown)) => shown.unpacked(point.scale, point.offset, &values),
-        _ => Value::Text(crate::model::shown::UNKNOWN.into()),
+        _ => Value::Text(UNKNOWN.into()),
     }
 }
 

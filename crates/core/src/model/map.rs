@@ -84,6 +84,9 @@ pub struct Point {
     pub shown: Option<Shown>,
     /// For `Kind::Packed`, the layout of its values.
     pub structure: Option<Structure>,
+    /// A raw value that stands for no value (SunSpec's 0xFFFF, 0x8000 and the like): read
+    /// as `unknown`, never as a measurement.
+    pub nan_value: Option<i128>,
 }
 
 impl Point {
@@ -204,7 +207,7 @@ pub(crate) fn at(file: &str, line: usize, error: impl fmt::Display) -> MapError 
 }
 
 /// The columns of a CSV map.
-const COLUMNS: [&str; 10] = [
+const COLUMNS: [&str; 11] = [
     "name",
     "ref",
     "type",
@@ -215,6 +218,7 @@ const COLUMNS: [&str; 10] = [
     "access",
     "slave",
     "description",
+    "nan_value",
 ];
 
 /// The fields of one line of a CSV map, honouring double quotes (`"a, b"`, `""`).
@@ -431,6 +435,12 @@ fn point_of<'a>(field: &dyn Fn(&str) -> &'a str, line: usize) -> Result<Point, S
         line,
         shown: None,
         structure: None,
+        nan_value: match field("nan_value") {
+            "" => None,
+            text => Some(crate::input::number::parse_int(text).map_err(|_| {
+                format!("nan_value '{text}': give the whole raw number that means no value")
+            })?),
+        },
     })
     .map_err(|error| format!("{name}: {error}"))
 }
@@ -603,6 +613,7 @@ pub fn range_points(
         line: 0,
         shown: None,
         structure: None,
+        nan_value: None,
     };
     (0..count)
         .map_while(|i| match bit {

@@ -6,7 +6,7 @@ use super::map::Point;
 use crate::input::choice::Choice;
 
 /// The columns written, in the order written.
-const HEADER: &str = "name,ref,type,order,scale,offset,unit,access,description";
+const HEADER: &str = "name,ref,type,order,scale,offset,unit,access,nan_value,description";
 
 /// `points` as the text of a CSV map, a header row first; `comment` lines (`# ...`) before
 /// it say where the map came from.
@@ -29,6 +29,10 @@ pub fn to_csv(comment: &[String], points: &[Point]) -> String {
             point.offset.to_string(),
             point.unit.clone(),
             if point.writable { "rw" } else { "r" }.to_string(),
+            point
+                .nan_value
+                .map(|raw| raw.to_string())
+                .unwrap_or_default(),
             point.description.clone(),
         ];
         let fields: Vec<String> = fields.iter().map(|field| quoted(field)).collect();

@@ -71,7 +71,25 @@ impl SunSpecPoint {
             line: 0,
             shown: None,
             structure: None,
+            nan_value: nan_value(self.point_type),
         })
+    }
+}
+
+/// The raw value SunSpec marks a number of this type as not implemented with, as a map
+/// carries it; `None` where the mark is no single number (NaN, empty text).
+fn nan_value(point_type: PointType) -> Option<i128> {
+    match point_type {
+        PointType::Int16 | PointType::Sunssf => Some(i128::from(i16::MIN)),
+        PointType::Int32 => Some(i128::from(i32::MIN)),
+        PointType::Int64 => Some(i128::from(i64::MIN)),
+        PointType::Uint16 | PointType::Count | PointType::Enum16 | PointType::Bitfield16 => {
+            Some(i128::from(u16::MAX))
+        }
+        PointType::Uint32 | PointType::Enum32 | PointType::Bitfield32 => Some(i128::from(u32::MAX)),
+        PointType::Uint64 => Some(i128::from(u64::MAX)),
+        PointType::Acc16 | PointType::Acc32 | PointType::Acc64 => Some(0),
+        _ => None,
     }
 }
 

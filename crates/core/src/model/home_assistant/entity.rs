@@ -155,6 +155,7 @@ pub(super) fn points<V: Values>(
         line,
         shown: None,
         structure: None,
+        nan_value: None,
     };
     let extra = match platform {
         Platform::Sensor | Platform::Climate => {
