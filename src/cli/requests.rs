@@ -551,7 +551,7 @@ pub struct ReadReferenceArgs {
         long,
         value_name = "VALUE",
         conflicts_with = "map",
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     pub expect: Option<String>,
 }

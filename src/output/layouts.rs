@@ -9,7 +9,7 @@ use super::{csv_field, new_table, Format};
 use mbtool_core::input::choice::Choice;
 use mbtool_core::model::address::{reference, Table};
 use mbtool_core::model::layouts::{Candidate, Reading};
-use mbtool_core::model::values::Value;
+use mbtool_core::model::values::{Value, ValueType};
 
 /// Where the registers read start.
 pub struct Start {
@@ -31,12 +31,20 @@ struct JsonLayout<'a> {
     #[serde(rename = "ref")]
     reference: String,
     #[serde(rename = "type")]
-    value_type: &'static str,
+    value_type: String,
     order: &'static str,
     value: &'a Value,
     registers: &'a [u16],
     #[serde(skip_serializing_if = "Option::is_none")]
     distance: Option<f64>,
+}
+
+/// A layout's type as a map's `type` column takes it: text is `string:N`.
+fn type_name(reading: &Reading) -> String {
+    match reading.layout.value_type {
+        ValueType::Ascii => format!("string:{}", reading.registers.len()),
+        value_type => value_type.name().to_string(),
+    }
 }
 
 fn hex_of(registers: &[u16]) -> String {
@@ -47,7 +55,7 @@ fn hex_of(registers: &[u16]) -> String {
 fn row<'a>(start: &Start, reading: &'a Reading, distance: Option<f64>) -> JsonLayout<'a> {
     JsonLayout {
         reference: start.reference(reading.offset),
-        value_type: reading.layout.value_type.name(),
+        value_type: type_name(reading),
         order: reading.layout.order.name(),
         value: &reading.value,
         registers: &reading.registers,
@@ -138,7 +146,7 @@ pub fn map_line(start: &Start, reading: &Reading) -> String {
     format!(
         "value,{},{},{}",
         start.reference(reading.offset),
-        reading.layout.value_type.name(),
+        type_name(reading),
         reading.layout.order.name()
     )
 }

@@ -98,11 +98,22 @@ pub fn parse_hosts(text: &str) -> Result<Vec<Host>, String> {
             for address in first..=last {
                 add(Host::Address(Ipv4Addr::from(address).into()), &mut hosts)?;
             }
+        } else if part.chars().all(|c| c.is_ascii_digit() || c == '.') {
+            // Digits and dots are an address mistyped, never a name.
+            return Err(format!(
+                "--hosts {part}: not an address: four numbers 0-255 (10.0.0.5)"
+            ));
         } else if part
             .chars()
             .all(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '-' | '_'))
         {
             add(Host::Name(part.to_string()), &mut hosts)?;
+        } else if part.rsplit_once(':').is_some_and(|(host, port)| {
+            !host.contains(':') && !port.is_empty() && port.chars().all(|c| c.is_ascii_digit())
+        }) {
+            return Err(format!(
+                "--hosts {part}: give the port with --tcp-port (--hosts 10.0.0.5 --tcp-port 502)"
+            ));
         } else {
             return Err(format!(
                 "--hosts {part}: give addresses (10.0.0.5), networks (10.0.0.0/24), ranges (10.0.0.5-20) or names"
@@ -115,6 +126,18 @@ pub fn parse_hosts(text: &str) -> Result<Vec<Host>, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn mistyped_addresses_and_ports_are_told() {
+        assert_eq!(
+            parse_hosts("127.0.0.300"),
+            Err("--hosts 127.0.0.300: not an address: four numbers 0-255 (10.0.0.5)".into())
+        );
+        assert_eq!(
+            parse_hosts("10.0.0.5:502"),
+            Err("--hosts 10.0.0.5:502: give the port with --tcp-port (--hosts 10.0.0.5 --tcp-port 502)".into())
+        );
+    }
 
     fn shown(text: &str) -> Vec<String> {
         parse_hosts(text)
