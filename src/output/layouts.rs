@@ -114,7 +114,7 @@ fn write_rows(
             for row in rows {
                 let mut cells = vec![
                     row.reference.clone(),
-                    row.value_type.to_string(),
+                    row.value_type.clone(),
                     row.order.to_string(),
                     hex_of(row.registers),
                     row.value.to_string(),
