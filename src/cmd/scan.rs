@@ -274,7 +274,13 @@ fn sweep_hosts(settings: &Settings, job: &job::Scan, sweep: &job::HostSweep) -> 
         (order.get(&report.host).copied(), port)
     });
     let mut out = output::stdout();
-    output::hosts::write_hosts(&mut out, settings.output.format, colour_wanted(), &reports)?;
+    output::hosts::write_hosts(
+        &mut out,
+        settings.output.format,
+        colour_wanted(),
+        &reports,
+        job.ids.len(),
+    )?;
     out.flush()?;
     let in_part = reports.iter().filter(|report| report.interrupted).count();
     let asked = (reports.len() - in_part) / sweep.ports.len().max(1);

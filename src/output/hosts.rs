@@ -60,12 +60,24 @@ struct JsonHost<'a> {
     reach: &'static str,
     modbus: bool,
     units: Vec<JsonUnit>,
+    /// Every id asked answered: the device does not tell unit ids apart.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    ignores_unit_id: bool,
     /// A signal ended its asking: its units are those found until then.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     interrupted: bool,
 }
 
-fn units_text(report: &HostReport) -> String {
+/// Whether every id asked answered, more than the usual three: a device that does not
+/// tell unit ids apart, whose list would say nothing.
+fn ignores_unit_id(report: &HostReport, ids_asked: usize) -> bool {
+    ids_asked > 3 && report.units.len() == ids_asked
+}
+
+fn units_text(report: &HostReport, ids_asked: usize) -> String {
+    if ignores_unit_id(report, ids_asked) {
+        return format!("all {ids_asked} asked: the device does not tell unit ids apart");
+    }
     let ids: Vec<String> = report.units.iter().map(|u| u.id.to_string()).collect();
     ids.join(" ")
 }
@@ -76,6 +88,7 @@ pub fn write_hosts(
     format: Format,
     colour: bool,
     reports: &[HostReport],
+    ids_asked: usize,
 ) -> io::Result<()> {
     match format {
         Format::Json => {
@@ -96,6 +109,7 @@ pub fn write_hosts(
                             server_id: server_id(unit),
                         })
                         .collect(),
+                    ignores_unit_id: ignores_unit_id(report, ids_asked),
                     interrupted: report.interrupted,
                 };
                 serde_json::to_writer(&mut *out, &host)?;
@@ -117,7 +131,7 @@ pub fn write_hosts(
                     report.port,
                     reach_name(report.reach),
                     report.modbus,
-                    units_text(report),
+                    units_text(report, ids_asked),
                     csv_field(&first.map(identity).unwrap_or_default()),
                     csv_field(&first.map(server_id).unwrap_or_default()),
                     report.interrupted,
@@ -156,7 +170,7 @@ pub fn write_hosts(
                             (false, true) => "interrupted",
                         }
                         .to_string(),
-                        units_text(report),
+                        units_text(report, ids_asked),
                         first.map(identity).unwrap_or_default(),
                         first.map(server_id).unwrap_or_default(),
                     ]);

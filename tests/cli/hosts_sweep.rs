@@ -192,6 +192,17 @@ fn forty_addresses_give_what_nmap_finds_and_never_two_connections_to_a_host() {
     assert_eq!(ours.len(), 5, "{ours:?}");
     assert_eq!(ours["127.0.3.2"], [1, 5]);
     assert_eq!(ours["127.0.3.6"].len(), 246);
+    // pymodbus answers every id alike: said so, the ids listed in JSON all the same.
+    let every = rows
+        .iter()
+        .find(|r| r["host"] == "127.0.3.6" && r["port"] == port)
+        .unwrap();
+    assert_eq!(every["ignores_unit_id"], true);
+    let one = rows
+        .iter()
+        .find(|r| r["host"] == "127.0.3.2" && r["port"] == port)
+        .unwrap();
+    assert!(one.get("ignores_unit_id").is_none(), "{one}");
     for silent in ["127.0.3.20", "127.0.3.21", "127.0.3.22"] {
         let row = rows
             .iter()
