@@ -8,10 +8,10 @@ read that spans two models.
 
 Only function 03 is answered; every other function gets exception 01.
 """
-import socket
 import struct
 import sys
-import threading
+
+from mbap_server import serve_forever
 
 path, port = sys.argv[1], int(sys.argv[2])
 boundaries = [int(b) for b in sys.argv[3].split(",") if b]
@@ -26,7 +26,7 @@ for line in open(path):
         registers[start + offset] = int(word)
 
 
-def answer(pdu):
+def answer(_unit, pdu):
     if pdu[0] != 0x03 or len(pdu) < 5:
         return bytes([pdu[0] | 0x80, 0x01])
     address, count = struct.unpack(">HH", pdu[1:5])
@@ -37,27 +37,4 @@ def answer(pdu):
     return bytes([0x03, 2 * count]) + b"".join(struct.pack(">H", registers[a]) for a in span)
 
 
-def serve(connection):
-    buffer = b""
-    with connection:
-        while True:
-            data = connection.recv(1024)
-            if not data:
-                return
-            buffer += data
-            while len(buffer) >= 7:
-                transaction, _, length, unit = struct.unpack(">HHHB", buffer[:7])
-                if len(buffer) < 6 + length:
-                    break
-                pdu, buffer = buffer[7:6 + length], buffer[6 + length:]
-                reply = answer(pdu)
-                connection.sendall(struct.pack(">HHHB", transaction, 0, len(reply) + 1, unit) + reply)
-
-
-listener = socket.socket()
-listener.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
-listener.bind(("127.0.0.1", port))
-listener.listen(16)
-while True:
-    connection, _ = listener.accept()
-    threading.Thread(target=serve, args=(connection,), daemon=True).start()
+serve_forever("127.0.0.1", port, answer)
