@@ -367,6 +367,20 @@ fn read_layouts(settings: &Settings, plan: &Plan, layouts: &Layouts) -> Result<u
                 "mbtool: the best, as a line of a CSV map (name,ref,type,order): {}",
                 output::layouts::map_line(&start, &best.reading)
             );
+            // A wider type at the same register giving the value as exactly: only a reading
+            // that does not fit the narrower one tells them apart.
+            let alike = candidates.iter().skip(1).find(|other| {
+                other.reading.offset == best.reading.offset
+                    && other.distance == best.distance
+                    && other.reading.registers.len() != best.reading.registers.len()
+            });
+            if let Some(other) = alike {
+                mbtool::note!(
+                    "mbtool: {} gives it as well; read again when the value is larger to tell them apart",
+                    output::layouts::map_line(&start, &other.reading)
+                        .trim_start_matches("value,")
+                );
+            }
         }
     }
     out.flush()?;

@@ -135,3 +135,26 @@ fn layouts_show_every_type_and_order_and_refuse_what_they_cannot_read() {
     assert!(String::from_utf8_lossy(&output.stderr)
         .contains("no type or order of the 3 registers read gives 12345.6"));
 }
+
+#[test]
+fn a_small_value_a_wider_type_gives_as_well_is_told_as_open() {
+    let (_server, port, _) = serve_tcp(&[]);
+    let wrote = mbtool()
+        .args(&port)
+        .args(["write", "17", "400001", "229", "0"])
+        .output()
+        .unwrap();
+    assert!(wrote.status.success(), "{wrote:?}");
+    let output = mbtool()
+        .args(&port)
+        .args(["read", "17", "400001", "2", "--expect", "229"])
+        .output()
+        .unwrap();
+    assert!(output.status.success(), "{output:?}");
+    let told = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        told.contains("value,400001,u16,ABCD\n")
+            && told.contains("mbtool: 400001,u32,CDAB gives it as well; read again when the value is larger to tell them apart"),
+        "{told}"
+    );
+}
