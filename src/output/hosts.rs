@@ -7,8 +7,29 @@ use serde::Serialize;
 
 use super::{csv_field, new_table, plural, Format};
 use mbtool_core::codec::DeviceObject;
-use mbtool_core::master::hosts::{HostReport, Reach, Unit};
+use mbtool_core::master::hosts::{HostReport, Instead, Reach, Unit};
 use mbtool_core::model::values::escape_text;
+
+/// Whether Modbus answered, or what the connection did instead.
+fn modbus_text(report: &HostReport) -> &'static str {
+    match (report.modbus, report.interrupted, report.instead) {
+        (true, false, _) => "yes",
+        (true, true, _) => "yes (interrupted)",
+        (false, true, _) => "interrupted",
+        (false, false, Some(Instead::Garbage)) => "no: bytes that are no Modbus answer",
+        (false, false, Some(Instead::Closed)) => "no: the host closed the connection",
+        (false, false, Some(Instead::Tls)) => "no: it speaks TLS (Modbus/TCP Security?)",
+        (false, false, None) => "no answer",
+    }
+}
+
+fn instead_name(instead: Instead) -> &'static str {
+    match instead {
+        Instead::Garbage => "garbage",
+        Instead::Closed => "closed",
+        Instead::Tls => "tls",
+    }
+}
 
 fn reach_name(reach: Reach) -> &'static str {
     match reach {
@@ -60,6 +81,10 @@ struct JsonHost<'a> {
     reach: &'static str,
     modbus: bool,
     units: Vec<JsonUnit>,
+    /// Where Modbus did not answer, what the connection did instead: garbage, closed,
+    /// reset.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    instead: Option<&'static str>,
     /// Every id asked answered: the device does not tell unit ids apart.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     ignores_unit_id: bool,
@@ -109,6 +134,7 @@ pub fn write_hosts(
                             server_id: server_id(unit),
                         })
                         .collect(),
+                    instead: report.instead.filter(|_| !report.modbus).map(instead_name),
                     ignores_unit_id: ignores_unit_id(report, ids_asked),
                     interrupted: report.interrupted,
                 };
@@ -163,13 +189,7 @@ pub fn write_hosts(
                     table.add_row(vec![
                         report.host.clone(),
                         report.port.to_string(),
-                        match (report.modbus, report.interrupted) {
-                            (true, false) => "yes",
-                            (true, true) => "yes (interrupted)",
-                            (false, false) => "no answer",
-                            (false, true) => "interrupted",
-                        }
-                        .to_string(),
+                        modbus_text(report).to_string(),
                         units_text(report, ids_asked),
                         first.map(identity).unwrap_or_default(),
                         first.map(server_id).unwrap_or_default(),

@@ -349,8 +349,14 @@ fn port_802_is_asked_over_tls() {
     assert_eq!(units(&hosts[1]), [0, 255, 3]);
     let hosts = sweep(&[]);
     assert_eq!(
-        (&hosts[1]["reach"], &hosts[1]["modbus"]),
-        (&"open".into(), &false.into())
+        (
+            &hosts[1]["reach"],
+            &hosts[1]["modbus"],
+            &hosts[1]["instead"]
+        ),
+        (&"open".into(), &false.into(), &"tls".into()),
+        "{}",
+        hosts[1]
     );
 }
 

@@ -283,3 +283,58 @@ fn a_host_named_twice_gets_one_connection_and_all_asks_a_silent_gateway() {
     assert_eq!(all["units"][0]["unit"], 7, "{all}");
     assert_eq!(all["units"][0]["server_id"], "GW-7", "{all}");
 }
+
+/// A port where something else than Modbus listens is told apart from a silent one: bytes
+/// that are no answer (a web server), a connection closed or reset.
+#[test]
+fn what_answers_instead_of_modbus_is_told() {
+    let port = free_port();
+    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/not_modbus.py");
+    let mut running = Vec::new();
+    for (address, mode) in [
+        ("127.0.6.2", "garbage"),
+        ("127.0.6.3", "close"),
+        ("127.0.6.4", "reset"),
+    ] {
+        running.push(Stopped(
+            Process::new("python3")
+                .args([script, mode, address, &port.to_string()])
+                .spawn()
+                .unwrap(),
+        ));
+        listening(address, port);
+    }
+    let output = mbtool()
+        .args([
+            "scan",
+            "--hosts",
+            "127.0.6.2-4",
+            "--tcp-port",
+            &port.to_string(),
+        ])
+        .args(["--timeout", "300ms", "-o", "json"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(3), "{output:?}");
+    let instead: Vec<String> = String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .map(|l| serde_json::from_str::<serde_json::Value>(l).unwrap()["instead"].to_string())
+        .collect();
+    assert_eq!(instead, ["\"garbage\"", "\"closed\"", "\"closed\""]);
+    let table = mbtool()
+        .args([
+            "scan",
+            "--hosts",
+            "127.0.6.2",
+            "--tcp-port",
+            &port.to_string(),
+        ])
+        .args(["--timeout", "300ms"])
+        .output()
+        .unwrap();
+    assert!(
+        String::from_utf8_lossy(&table.stdout).contains("no: bytes that are no Modbus answer"),
+        "{table:?}"
+    );
+    drop(running);
+}

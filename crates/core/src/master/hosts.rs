@@ -54,6 +54,18 @@ pub enum Reach {
     Unknown,
 }
 
+/// What a connection that took no Modbus answer did instead.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Instead {
+    /// It sent bytes that are no Modbus answer (another protocol on the port).
+    Garbage,
+    /// It closed or reset the connection.
+    Closed,
+    /// It speaks TLS: Modbus/TCP Security on a port other than 802, or without this
+    /// end's certificates.
+    Tls,
+}
+
 /// How a unit id answered.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Unit {
@@ -85,6 +97,8 @@ pub struct HostReport {
     /// A stop ended its asking before every id was asked: what it holds is what was
     /// found until then.
     pub interrupted: bool,
+    /// Where Modbus did not answer: what the connection did instead, if anything.
+    pub instead: Option<Instead>,
 }
 
 impl HostReport {
@@ -200,6 +214,17 @@ fn ask_units(
         let mut given_id = None;
         let asked = master.transact(id, &options.probe);
         heard |= !matches!(asked, Err(MasterError::Timeout { .. }));
+        match &asked {
+            Err(MasterError::BadFrame { .. }) => report.instead = Some(Instead::Garbage),
+            Err(MasterError::Io(error)) => {
+                report.instead = Some(match error.kind() {
+                    // The transport tells a TLS server's first bytes so.
+                    std::io::ErrorKind::InvalidData => Instead::Tls,
+                    _ => Instead::Closed,
+                });
+            }
+            _ => {}
+        }
         let exception = match asked {
             Ok(Reply::Response(Response::ReportServerId { data })) => {
                 given_id = Some(ServerId::parse(&data));
@@ -260,6 +285,7 @@ fn ask_host(
         modbus: false,
         units: Vec::new(),
         interrupted: false,
+        instead: None,
     };
     let address = match host {
         Host::Address(address) => Some(SocketAddr::new(*address, port)),
