@@ -7,14 +7,16 @@ use anyhow::Result;
 
 use mbtool::connection::{Connector, Patience, Role};
 use mbtool::error::Error;
+use mbtool::output::encode::frame_text;
 use mbtool::output::progress::ProgressLine;
 use mbtool::output::scan::{write_scan, Where};
 use mbtool::output::{self, colour_wanted};
 use mbtool::settings::{job, Settings};
 use mbtool_core::codec::Mode;
-use mbtool_core::master::hosts::{self, SweepOptions};
+use mbtool_core::master::hosts::{self, SweepOptions, SweepTracer};
 use mbtool_core::master::scan::{scan, sweep, Probe, Progress, ScanOptions, ScanReport};
 use mbtool_core::master::timeouts;
+use mbtool_core::master::Traffic;
 use mbtool_core::model::line::LineSettings;
 use mbtool_core::transport::serial;
 use mbtool_core::transport::tls::{ClientTls, MODBUS_TLS_PORT};
@@ -221,6 +223,22 @@ fn timeout_at(settings: &Settings, line: LineSettings, probe: Probe) -> Duration
     )
 }
 
+/// `-v` of a sweep: every frame, with the host and port it went to or came from.
+fn sweep_tracer() -> SweepTracer {
+    let start = std::time::Instant::now();
+    SweepTracer(std::sync::Arc::new(move |place, traffic, bytes| {
+        let arrow = match traffic {
+            Traffic::Sent => '>',
+            Traffic::Received => '<',
+        };
+        mbtool::note!(
+            "[{:>12.6}] {place} {arrow} {}",
+            start.elapsed().as_secs_f64(),
+            frame_text(Mode::Rtu, bytes)
+        );
+    }))
+}
+
 /// `scan --hosts`: the hosts of a network asked politely; what was found, also when a
 /// signal ends the sweep.
 fn sweep_hosts(settings: &Settings, job: &job::Scan, sweep: &job::HostSweep) -> Result<u8> {
@@ -244,6 +262,7 @@ fn sweep_hosts(settings: &Settings, job: &job::Scan, sweep: &job::HostSweep) -> 
         pause: sweep.pause,
         probe: job.probe.request(),
         ask_silent: job.all,
+        trace: settings.output.verbose.then(sweep_tracer),
         tls: match settings.connection.tls_typed {
             true => Some(ClientTls::new(&settings.connection.tls).map_err(Error::from)?),
             false => None,

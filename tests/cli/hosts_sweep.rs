@@ -329,12 +329,20 @@ fn what_answers_instead_of_modbus_is_told() {
             "--tcp-port",
             &port.to_string(),
         ])
-        .args(["--timeout", "300ms"])
+        .args(["--timeout", "300ms", "-v"])
         .output()
         .unwrap();
     assert!(
         String::from_utf8_lossy(&table.stdout).contains("no: bytes that are no Modbus answer"),
         "{table:?}"
+    );
+    // -v shows each frame with the host and port it went to.
+    let frames = String::from_utf8_lossy(&table.stderr);
+    assert!(
+        frames.contains(&format!(
+            "] 127.0.6.2:{port} > 00 01 00 00 00 06 00 03 00 00 00 01\n"
+        )),
+        "{frames}"
     );
     drop(running);
 }

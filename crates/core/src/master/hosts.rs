@@ -13,7 +13,7 @@ use std::sync::{Arc, Condvar, Mutex};
 use std::time::Duration;
 
 use super::device::{identification, server_id, Asked, Identification, ServerId};
-use super::{Master, MasterError, MasterOptions, Reply};
+use super::{Master, MasterError, MasterOptions, Reply, Traffic};
 use crate::codec::{ExceptionCode, Mode, Request, Response};
 use crate::input::hosts::Host;
 use crate::transport::tcp::Tcp;
@@ -39,6 +39,21 @@ pub struct SweepOptions {
     pub ask_silent: bool,
     /// This end's certificates: port 802 is then asked over TLS (Modbus/TCP Security).
     pub tls: Option<ClientTls>,
+    /// Told of every frame sent and received, with the host and port it went to.
+    pub trace: Option<SweepTracer>,
+}
+
+/// Told of a frame: the host and port, which way, the bytes.
+pub type FrameSeen = dyn Fn(&str, Traffic, &[u8]) + Send + Sync;
+
+/// What a sweep tells of each frame, shared by the threads that ask hosts.
+#[derive(Clone)]
+pub struct SweepTracer(pub Arc<FrameSeen>);
+
+impl std::fmt::Debug for SweepTracer {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("SweepTracer")
+    }
 }
 
 /// How a host's port took the connection.
@@ -114,6 +129,7 @@ fn master_on(
     transport: Box<dyn Transport>,
     options: &SweepOptions,
     stop: &Arc<AtomicBool>,
+    place: SocketAddr,
 ) -> Master {
     let mut master = Master::new(
         transport,
@@ -129,6 +145,13 @@ fn master_on(
         },
     );
     master.stop_on(Arc::clone(stop));
+    if let Some(SweepTracer(trace)) = &options.trace {
+        let trace = Arc::clone(trace);
+        let place = place.to_string();
+        master.trace(Box::new(move |traffic, bytes| {
+            trace(&place, traffic, bytes);
+        }));
+    }
     master
 }
 
@@ -309,7 +332,7 @@ fn ask_host(
         match Tls::connect(&address.ip().to_string(), port, options.timeout, tls) {
             Ok(stream) => {
                 report.reach = Reach::Open;
-                let mut master = master_on(Box::new(stream), options, stop);
+                let mut master = master_on(Box::new(stream), options, stop, address);
                 report.interrupted = !ask_units(&mut master, options, &mut report, stop);
             }
             Err(error) => report.reach = reached(error),
@@ -329,7 +352,7 @@ fn ask_host(
     report.reach = Reach::Open;
     let closer = stream.try_clone();
     if let Ok(transport) = Tcp::from_stream(stream, false) {
-        let mut master = master_on(Box::new(transport), options, stop);
+        let mut master = master_on(Box::new(transport), options, stop, address);
         report.interrupted = !ask_units(&mut master, options, &mut report, stop);
     }
     // Closed at once, with a FIN, and the device's own close awaited (a moment at most):
