@@ -43,35 +43,13 @@ pub fn run(settings: &Settings, job: &job::Sunspec) -> Result<u8> {
         colour_wanted(),
     )?;
     out.flush()?;
-    if let Some(cut) = &device.cut {
-        note!("{cut}");
-    }
     note!(
         "SunS at {}: {}, read in {}",
         reference(Table::HoldingRegisters, device.base),
         plural(device.models.len(), "model"),
         plural(device.requests, "request")
     );
-    // Models the device refused part of: the first refusal is the exit status, as a
-    // map's points that fail.
-    let mut status = 0;
-    for model in &device.models {
-        if let Some(code) = model.refused {
-            note!(
-                "mbtool: model {} at {}: {}; those points have no value",
-                model.id,
-                reference(Table::HoldingRegisters, model.address),
-                model.problem.as_deref().unwrap_or_default()
-            );
-            if status == 0 {
-                status = mbtool::error::run_exit_code(&RunError::Exception {
-                    slave,
-                    function: function::READ_HOLDING_REGISTERS,
-                    code,
-                });
-            }
-        }
-    }
+    let status = told_status(slave, &device);
     if let Some(path) = &job.map_out {
         let (text, points) = map_text(settings, slave, &device);
         super::shared::write_whole(path, text.as_bytes()).map_err(|e| {
@@ -80,6 +58,39 @@ pub fn run(settings: &Settings, job: &job::Sunspec) -> Result<u8> {
         note!("{} written to {}", plural(points, "point"), path.display());
     }
     Ok(status)
+}
+
+/// Every model read in part, and a chain cut short, told on stderr; the exit status they
+/// make: the first refusal's exception, else 1 where points or models were lost, else 0.
+fn told_status(slave: u8, device: &SunSpecDevice) -> u8 {
+    let refusal = |code| {
+        mbtool::error::run_exit_code(&RunError::Exception {
+            slave,
+            function: function::READ_HOLDING_REGISTERS,
+            code,
+        })
+    };
+    let mut status = 0;
+    for model in device.models.iter().filter(|model| model.published) {
+        let Some(problem) = &model.problem else {
+            continue;
+        };
+        note!(
+            "mbtool: model {} at {}: {problem}; the points it leaves out have no value",
+            model.id,
+            reference(Table::HoldingRegisters, model.address)
+        );
+        if status == 0 {
+            status = model.refused.map_or(1, refusal);
+        }
+    }
+    if let Some(cut) = &device.cut {
+        note!("mbtool: {}", cut.reason);
+        if status == 0 && cut.models_lost {
+            status = cut.refused.map_or(1, refusal);
+        }
+    }
+    status
 }
 
 /// The map of the points that have a value, and how many they are.

@@ -128,7 +128,7 @@ pub fn write_device(
                 base: device.base,
                 requests: device.requests,
                 models: device.models.iter().map(json_model).collect(),
-                cut: device.cut.as_deref(),
+                cut: device.cut.as_ref().map(|cut| cut.reason.as_str()),
             };
             serde_json::to_writer(&mut *out, &json)?;
             writeln!(out)

@@ -392,7 +392,7 @@ fn registers_the_device_refuses_leave_their_points_without_a_value() {
     );
     let told = String::from_utf8_lossy(&output.stderr);
     assert!(
-        told.contains("mbtool: model 103 at 440071: the device refused 2 of its registers (slave device failure); those points have no value"),
+        told.contains("mbtool: model 103 at 440071: the device refused 2 of its registers (slave device failure); the points it leaves out have no value"),
         "{told}"
     );
 }
@@ -422,8 +422,40 @@ fn a_short_model_keeps_its_points_and_zeros_after_the_chain_end_it() {
     let told = String::from_utf8_lossy(&output.stderr);
     assert!(
         told.contains(
-            "register 40069 holds model id 0 where a model or the end marker (0xFFFF) belongs"
+            "mbtool: register 40069 holds model id 0 where a model or the end marker (0xFFFF) belongs"
         ),
         "{told}"
     );
+    // A pad left out loses nothing: no model is told as read in part.
+    assert!(!told.contains("mbtool: model 1"), "{told}");
+}
+
+#[test]
+fn a_chain_cut_by_a_refused_header_exits_with_the_refusal() {
+    // The header of the nameplate model (440123-440124) left out of the device.
+    let text = std::fs::read_to_string(EXAMPLE).unwrap();
+    let line = text.lines().find(|l| l.starts_with("440001 = ")).unwrap();
+    let words: Vec<&str> = line[9..].split(' ').collect();
+    let joined = |range: std::ops::Range<usize>| words[range].join(" ");
+    let data = format!(
+        "440001 = {}\n440125 = {}\n",
+        joined(0..122),
+        joined(124..words.len())
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("cut.txt");
+    std::fs::write(&path, data).unwrap();
+    let (_server, port, _) = serve_tcp(&["--slave", "1", "--data", &path.display().to_string()]);
+    let output = mbtool()
+        .args(&port)
+        .args(["sunspec", "1", "-o", "values"])
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(12), "{output:?}");
+    let told = String::from_utf8_lossy(&output.stderr);
+    assert!(
+        told.contains("mbtool: the device refused the model header at register 40122 (illegal data address) before the end marker"),
+        "{told}"
+    );
+    assert!(String::from_utf8_lossy(&output.stdout).contains("inverter_three_phase.PhVphA=230.1"));
 }

@@ -333,7 +333,8 @@ fn ask_host(
             Ok(stream) => {
                 report.reach = Reach::Open;
                 let mut master = master_on(Box::new(stream), options, stop, address);
-                report.interrupted = !ask_units(&mut master, options, &mut report, stop);
+                let completed = ask_units(&mut master, options, &mut report, stop);
+                report.interrupted = !completed && stop.load(Ordering::SeqCst);
             }
             Err(error) => report.reach = reached(error),
         }
@@ -353,7 +354,8 @@ fn ask_host(
     let closer = stream.try_clone();
     if let Ok(transport) = Tcp::from_stream(stream, false) {
         let mut master = master_on(Box::new(transport), options, stop, address);
-        report.interrupted = !ask_units(&mut master, options, &mut report, stop);
+        let completed = ask_units(&mut master, options, &mut report, stop);
+        report.interrupted = !completed && stop.load(Ordering::SeqCst);
     }
     // Closed at once, with a FIN, and the device's own close awaited (a moment at most):
     // no connection is left for it to hold when the next one to it opens.

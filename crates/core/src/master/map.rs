@@ -420,7 +420,13 @@ fn scaled(point: &Point, raw: Value) -> Value {
         Value::Signed(v) => Some(i128::from(v)),
         _ => None,
     };
-    if marked.is_some() && marked == point.nan_value {
+    // A raw value the map says stands for none, or a float's NaN, is no measurement.
+    let nan = match raw {
+        Value::Float32(v) => v.is_nan(),
+        Value::Float(v) => v.is_nan(),
+        _ => false,
+    };
+    if nan || (marked.is_some() && marked == point.nan_value) {
         return Value::Text(UNKNOWN.into());
     }
     let number = match raw {

@@ -208,10 +208,13 @@ impl Layout<'_> {
         for point in &group.points {
             let size = usize::from(point.size);
             let Some(raw) = self.registers.get(offset..offset + size) else {
-                self.problems.push(format!(
-                    "{prefix}.{} lies past the model's length",
-                    point.name
-                ));
+                // A pad left out at the end (a common model of 65) loses nothing.
+                if point.point_type != PointType::Pad {
+                    self.problems.push(format!(
+                        "{prefix}.{} lies past the model's length",
+                        point.name
+                    ));
+                }
                 // The points before it are the device's, and have their values.
                 scopes.push(scope);
                 self.settle(group, first, scopes);

@@ -39,7 +39,19 @@ pub struct SunSpecDevice {
     /// How many requests the scan took, those refused included.
     pub requests: usize,
     /// Why the chain ended before its end marker, if it did.
-    pub cut: Option<String>,
+    pub cut: Option<Cut>,
+}
+
+/// How the chain of models ended before its end marker.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Cut {
+    /// What was found where the next model belonged.
+    pub reason: String,
+    /// Whether models may have been lost (a header refused or past the registers), not
+    /// only the end marker missing (zeros after the last model).
+    pub models_lost: bool,
+    /// The exception the device refused the next header with.
+    pub refused: Option<ExceptionCode>,
 }
 
 /// One model of the chain.
@@ -62,6 +74,8 @@ pub struct ModelReading {
     pub problem: Option<String>,
     /// The exception the device refused some of its registers with.
     pub refused: Option<ExceptionCode>,
+    /// Whether SunSpec has published its definition (it is laid out by it).
+    pub published: bool,
 }
 
 /// Reads the device's SunSpec map: at `base` when given, else at the first of [`BASES`]
@@ -96,23 +110,39 @@ pub fn read_device(
         let (id, length) = match reader.header(address) {
             Ok(Some(header)) => header,
             Ok(None) => break,
-            Err(cut) => {
-                device.cut = Some(cut.told(address)?);
+            Err(Missed::Refused(code)) => {
+                device.cut = Some(Cut {
+                    reason: format!(
+                        "the device refused the model header at register {address} ({}) before the end marker",
+                        code.name()
+                    ),
+                    models_lost: true,
+                    refused: Some(code),
+                });
                 break;
             }
+            Err(Missed::Failed(error)) => return Err(SunSpecError::Run(error)),
         };
         if id == 0 {
             // Registers left at zero after the last model, where its end marker belongs.
-            device.cut = Some(format!(
-                "register {address} holds model id 0 where a model or the end marker (0xFFFF) belongs"
-            ));
+            device.cut = Some(Cut {
+                reason: format!(
+                    "register {address} holds model id 0 where a model or the end marker (0xFFFF) belongs"
+                ),
+                models_lost: false,
+                refused: None,
+            });
             break;
         }
         let end = address + 2 + u32::from(length);
         if end > 0x1_0000 {
-            device.cut = Some(format!(
-                "model {id} at register {address} is {length} registers long, past the last register"
-            ));
+            device.cut = Some(Cut {
+                reason: format!(
+                    "model {id} at register {address} is {length} registers long, past the last register"
+                ),
+                models_lost: true,
+                refused: None,
+            });
             break;
         }
         let model = reader.model(&device.models, id, address as u16, length)?;
@@ -129,19 +159,6 @@ enum Missed {
     Refused(ExceptionCode),
     /// No usable answer, or the conversation ended.
     Failed(RunError),
-}
-
-impl Missed {
-    /// What the chain's end at `address` says, or the failure that ends the scan.
-    fn told(self, address: u32) -> Result<String, SunSpecError> {
-        match self {
-            Missed::Refused(code) => Ok(format!(
-                "the device refused the model header at register {address} ({}) before the end marker",
-                code.name()
-            )),
-            Missed::Failed(error) => Err(SunSpecError::Run(error)),
-        }
-    }
 }
 
 /// A register the device refused alone: its offset in what was asked, and the exception.
@@ -258,6 +275,7 @@ impl Reader<'_> {
             points: Vec::new(),
             problem: None,
             refused: None,
+            published: false,
         };
         let def: ModelDef = match definition {
             None => {
@@ -271,6 +289,7 @@ impl Reader<'_> {
             Some(Ok(def)) => def,
         };
         model.label = def.group.label.clone();
+        model.published = true;
         let count = usize::from(length) + 2;
         let (registers, refused) = match self.get(u32::from(address), count, 2) {
             Ok(registers) => (registers, Vec::new()),

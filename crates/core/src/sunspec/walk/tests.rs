@@ -103,21 +103,20 @@ fn a_chain_that_runs_off_the_registers_or_is_refused_is_cut() {
     let data = image(465401, "1 200");
     let found = read_device(&mut device(&data), 1, Some(65400)).unwrap();
     assert_eq!(found.models.len(), 1);
-    assert!(
-        found
-            .cut
-            .as_deref()
-            .unwrap()
-            .contains("past the last register"),
-        "{found:?}"
-    );
+    let cut = found.cut.unwrap();
+    assert!(cut.reason.contains("past the last register"), "{cut:?}");
+    assert!(cut.models_lost && cut.refused.is_none());
     // No end marker: the registers after the common model do not exist.
     let data = image(440001, "");
     let found = read_device(&mut device(&data), 1, None).unwrap();
     assert_eq!(found.models.len(), 1);
     assert_eq!(
-        found.cut.as_deref(),
-        Some("the device refused the model header at register 40070 (illegal data address) before the end marker")
+        found.cut,
+        Some(Cut {
+            reason: "the device refused the model header at register 40070 (illegal data address) before the end marker".into(),
+            models_lost: true,
+            refused: Some(ExceptionCode::ILLEGAL_DATA_ADDRESS),
+        })
     );
 }
 
