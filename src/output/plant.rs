@@ -7,6 +7,7 @@ use std::io::{self, Write};
 use serde::Serialize;
 
 use super::{csv_field, Format};
+use mbtool_core::model::shown::UNKNOWN;
 use mbtool_core::model::values::Value;
 
 /// How the rows are written.
@@ -152,16 +153,19 @@ impl PlantWriter {
                 writeln!(out)
             }
             PlantFormat::Influx => {
-                // A poll without a value has no line: InfluxDB takes no point without a
-                // field, and a gap is a gap.
-                if row.values.is_empty() {
-                    return Ok(());
-                }
+                // A value the device marks as none (unknown, NaN) is left out: written as
+                // text into a numeric field, it would make InfluxDB refuse the batch.
                 let fields: Vec<String> = row
                     .values
                     .iter()
+                    .filter(|(_, value)| !no_number(value))
                     .map(|(name, value)| format!("{}={}", influx_key(name), influx_value(value)))
                     .collect();
+                // A poll without a value has no line: InfluxDB takes no point without a
+                // field, and a gap is a gap.
+                if fields.is_empty() {
+                    return Ok(());
+                }
                 writeln!(
                     out,
                     "modbus,device={},slave={} {} {}",
@@ -192,23 +196,24 @@ fn influx_key(text: &str) -> String {
     escaped
 }
 
+/// Whether a value stands for no number: a point the device marks as none, a NaN or an
+/// infinity.
+fn no_number(value: &Value) -> bool {
+    match value {
+        Value::Text(text) => text == UNKNOWN,
+        Value::Float32(f) => !f.is_finite(),
+        Value::Float(f) | Value::Decimal(f, _) => !f.is_finite(),
+        Value::Unsigned(_) | Value::Signed(_) => false,
+    }
+}
+
 /// A field value: integers with `i`, floats as they are, text quoted.
 fn influx_value(value: &Value) -> String {
     match value {
         Value::Unsigned(n) => format!("{n}i"),
         Value::Signed(n) => format!("{n}i"),
-        Value::Float32(f) => float(f64::from(*f), value),
-        Value::Float(f) | Value::Decimal(f, _) => float(*f, value),
+        Value::Float32(_) | Value::Float(..) | Value::Decimal(..) => value.to_string(),
         Value::Text(text) => format!("\"{}\"", text.replace('\\', "\\\\").replace('"', "\\\"")),
-    }
-}
-
-/// A float as the line protocol takes it: a number as shown, or, for what it has no
-/// number for (NaN, infinity), the text of it.
-fn float(f: f64, value: &Value) -> String {
-    match f.is_finite() {
-        true => value.to_string(),
-        false => format!("\"{value}\""),
     }
 }
 
@@ -245,6 +250,41 @@ mod tests {
             String::from_utf8(out).unwrap(),
             "modbus,device=pump\\ 3\\,a,slave=17 speed=1500i,flow\\ rate=4.5,t\\=1=-3i,label=\"a\\\"b\" 1700000000123000000\n"
         );
+    }
+
+    #[test]
+    fn a_value_that_is_no_number_is_no_field_of_the_line() {
+        let values = [
+            Value::Unsigned(1500),
+            Value::Text(UNKNOWN.into()),
+            Value::Float32(f32::NAN),
+        ];
+        let row = PlantRow {
+            time: "T",
+            nanos: 7,
+            device: "inverter",
+            slave: 1,
+            values: vec![
+                ("W", &values[0]),
+                ("PhVphA", &values[1]),
+                ("AphA", &values[2]),
+            ],
+            errors: Vec::new(),
+        };
+        let mut out = Vec::new();
+        let mut writer = PlantWriter::new(PlantFormat::Influx, Vec::new());
+        writer.row(&mut out, &row).unwrap();
+        assert_eq!(
+            String::from_utf8(out).unwrap(),
+            "modbus,device=inverter,slave=1 W=1500i 7\n"
+        );
+        let none = PlantRow {
+            values: vec![("PhVphA", &values[1])],
+            ..row
+        };
+        let mut out = Vec::new();
+        writer.row(&mut out, &none).unwrap();
+        assert!(out.is_empty());
     }
 
     #[test]

@@ -533,6 +533,17 @@ pub fn write_request(point: &Point, text: &str) -> Result<Request, String> {
         (Kind::Number(value_type), _) => {
             let raw = unscaled(point, value_type, text).map_err(named)?;
             let registers = value_type.parse(&raw, point.order).map_err(named)?;
+            let written = match value_type.read(&registers, point.order) {
+                Value::Unsigned(v) => Some(i128::from(v)),
+                Value::Signed(v) => Some(i128::from(v)),
+                _ => None,
+            };
+            if written.is_some() && written == point.nan_value {
+                return Err(format!(
+                    "{}: {text} would be written as {raw}, the raw number the map says stands for no value (nan_value)",
+                    point.name
+                ));
+            }
             registers_request(address, registers)
         }
         (Kind::Packed(_), _) => {
@@ -658,6 +669,36 @@ mod tests {
         // Without the option, runs of consecutive addresses only.
         assert_eq!(requests(&first_five, None), [(0, 5), (119, 1)]);
         assert_eq!(requests(&spread, None).len(), 5);
+    }
+
+    #[test]
+    fn the_mark_of_no_value_is_neither_read_nor_written() {
+        let map = parse_csv(
+            "m",
+            "name,ref,type,scale,nan_value\ng,400001,u16,0.1,65535\n",
+        )
+        .unwrap();
+        assert_eq!(
+            write_request(&map.points[0], "6553.5"),
+            Err("g: 6553.5 would be written as 65535, the raw number the map says stands for no value (nan_value)".into())
+        );
+        assert!(write_request(&map.points[0], "6553.4").is_ok());
+        assert_eq!(
+            register_value(&map.points[0], &[0xFFFF]),
+            Value::Text(UNKNOWN.into())
+        );
+        let refused = |line: &str| {
+            parse_csv("m", &format!("name,ref,type,nan_value\n{line}\n"))
+                .unwrap_err()
+                .to_string()
+        };
+        assert!(refused("a,400001,u16,-1")
+            .contains("nan_value -1 is never read from a u16: give 0 to 65535"));
+        assert!(refused("a,400001,i16,0x8000")
+            .contains("nan_value 32768 is never read from a i16: give -32768 to 32767"));
+        assert!(refused("a,400001,f32,0").contains("nan_value is for whole-number points, not f32"));
+        assert!(refused("a,400001.01,bool,1")
+            .contains("nan_value is for whole-number points, not bool"));
     }
 
     #[test]

@@ -346,7 +346,38 @@ pub(crate) fn checked(point: Point) -> Result<Point, String> {
     if !point.offset.is_finite() {
         return Err(format!("offset {}: give a finite number", point.offset));
     }
+    if let Some(nan) = point.nan_value {
+        check_nan_value(point.kind, nan)?;
+    }
     Ok(point)
+}
+
+/// A `nan_value` the point's raw value can be: a whole number in its type's range, as the
+/// registers read (-32768 for an i16's 0x8000).
+fn check_nan_value(kind: Kind, nan: i128) -> Result<(), String> {
+    let range = match kind {
+        Kind::Number(ValueType::U16) => (0, i128::from(u16::MAX)),
+        Kind::Number(ValueType::U32) => (0, i128::from(u32::MAX)),
+        Kind::Number(ValueType::U64) => (0, i128::from(u64::MAX)),
+        Kind::Number(ValueType::I16) => (i128::from(i16::MIN), i128::from(i16::MAX)),
+        Kind::Number(ValueType::I32) => (i128::from(i32::MIN), i128::from(i32::MAX)),
+        Kind::Number(ValueType::I64) => (i128::from(i64::MIN), i128::from(i64::MAX)),
+        kind => {
+            return Err(format!(
+                "nan_value is for whole-number points, not {} (a float's NaN is unknown already)",
+                kind.name()
+            ))
+        }
+    };
+    if (range.0..=range.1).contains(&nan) {
+        return Ok(());
+    }
+    Err(format!(
+        "nan_value {nan} is never read from a {}: give {} to {}, as the registers read",
+        kind.name(),
+        range.0,
+        range.1
+    ))
 }
 
 fn number(text: &str, what: &str, default: f64) -> Result<f64, String> {
