@@ -85,6 +85,12 @@ struct JsonHost<'a> {
     /// reset.
     #[serde(skip_serializing_if = "Option::is_none")]
     instead: Option<&'static str>,
+    /// The TLS handshake failed: why.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    tls_failed: Option<&'a str>,
+    /// Silent to 0, 1 and 255: the other ids were not asked (--all asks them).
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    others_not_asked: bool,
     /// Every id asked answered: the device does not tell unit ids apart.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     ignores_unit_id: bool,
@@ -135,6 +141,8 @@ pub fn write_hosts(
                         })
                         .collect(),
                     instead: report.instead.filter(|_| !report.modbus).map(instead_name),
+                    tls_failed: report.tls_failed.as_deref(),
+                    others_not_asked: report.given_up,
                     ignores_unit_id: ignores_unit_id(report, ids_asked),
                     interrupted: report.interrupted,
                 };
@@ -189,13 +197,24 @@ pub fn write_hosts(
                     table.add_row(vec![
                         report.host.clone(),
                         report.port.to_string(),
-                        modbus_text(report).to_string(),
+                        match &report.tls_failed {
+                            Some(why) => format!("no: TLS failed: {why}"),
+                            None => modbus_text(report).to_string(),
+                        },
                         units_text(report, ids_asked),
                         first.map(identity).unwrap_or_default(),
                         first.map(server_id).unwrap_or_default(),
                     ]);
                 }
                 writeln!(out, "{table}")?;
+            }
+            let given_up = reports.iter().filter(|r| r.given_up).count();
+            if given_up > 0 {
+                writeln!(
+                    out,
+                    "{} silent to unit ids 0, 1 and 255: their other ids not asked (--all asks them)",
+                    plural(given_up, "host port")
+                )?;
             }
             let count = |reach| reports.iter().filter(|r| r.reach == reach).count();
             writeln!(

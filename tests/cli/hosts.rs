@@ -347,6 +347,18 @@ fn port_802_is_asked_over_tls() {
     let hosts = sweep(&certificates);
     assert_eq!(units(&hosts[0]), [0, 255, 4]);
     assert_eq!(units(&hosts[1]), [0, 255, 3]);
+    // Without the name its certificate holds, the handshake fails: the host took the
+    // connection, and the reason is told.
+    let hosts = sweep(&certificates[..6]);
+    assert_eq!(hosts[1]["reach"], "open", "{}", hosts[1]);
+    assert!(
+        hosts[1]["tls_failed"]
+            .as_str()
+            .unwrap()
+            .contains("certificate is not for '127.0.0.12'"),
+        "{}",
+        hosts[1]
+    );
     let hosts = sweep(&[]);
     assert_eq!(
         (

@@ -114,6 +114,10 @@ pub struct HostReport {
     pub interrupted: bool,
     /// Where Modbus did not answer: what the connection did instead, if anything.
     pub instead: Option<Instead>,
+    /// Silent to 0, 1 and 255, it was not asked the other ids (`ask_silent` asks them).
+    pub given_up: bool,
+    /// It took the connection and the TLS handshake failed: why.
+    pub tls_failed: Option<String>,
 }
 
 impl HostReport {
@@ -228,6 +232,7 @@ fn ask_units(
             return false;
         }
         if i == SILENT_AFTER && !heard && !options.ask_silent {
+            report.given_up = true;
             return true;
         }
         if i > 0 {
@@ -309,6 +314,8 @@ fn ask_host(
         units: Vec::new(),
         interrupted: false,
         instead: None,
+        given_up: false,
+        tls_failed: None,
     };
     let address = match host {
         Host::Address(address) => Some(SocketAddr::new(*address, port)),
@@ -336,7 +343,16 @@ fn ask_host(
                 let completed = ask_units(&mut master, options, &mut report, stop);
                 report.interrupted = !completed && stop.load(Ordering::SeqCst);
             }
-            Err(error) => report.reach = reached(error),
+            // Refused by the system: nothing listens. A handshake that failed is told
+            // with its reason, by a host that took the connection.
+            Err(error) if error.raw_os_error().is_some() => report.reach = reached(error),
+            Err(error) if error.kind() == std::io::ErrorKind::TimedOut => {
+                report.reach = reached(error)
+            }
+            Err(error) => {
+                report.reach = Reach::Open;
+                report.tls_failed = Some(error.to_string());
+            }
         }
         return report;
     }
