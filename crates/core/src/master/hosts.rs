@@ -347,7 +347,7 @@ fn ask_host(
             // with its reason, by a host that took the connection.
             Err(error) if error.raw_os_error().is_some() => report.reach = reached(error),
             Err(error) if error.kind() == std::io::ErrorKind::TimedOut => {
-                report.reach = reached(error)
+                report.reach = reached(error);
             }
             Err(error) => {
                 report.reach = Reach::Open;
