@@ -52,8 +52,9 @@ from then on. The number of requests is said at the end.
 
 --map-out FILE writes the points found as a CSV map (scale factors as read now) that read \
 --map, watch and poll take: 'mbtool read SLAVE --map FILE' shows the same values. Exit \
-status 0 when the map was read, 1 when no base holds the marker, 3 when the device does not \
-answer.";
+status 0 when every model was read; 1 when no base holds the marker, or a model was read in \
+part, or the chain was cut short (each told on stderr); 3 when the device does not answer; \
+10+N when it refused with exception N.";
 
 pub(super) const DUMP_ABOUT: &str = "\
 Read ranges of a device's tables (400001-400200 000001-000064) in as few requests as the \
