@@ -3,8 +3,9 @@
 //! written from any points reads back as the same points.
 #![allow(clippy::unwrap_used, clippy::expect_used)] // a test stops at what it did not expect
 
-use mbtool_core::model::map::{parse_csv, Point};
+use mbtool_core::model::map::{parse_csv, Kind, Point};
 use mbtool_core::model::map_writer::to_csv;
+use mbtool_core::model::values::ValueType;
 use mbtool_core::sunspec::defs::definition;
 use mbtool_core::sunspec::points::lay_out;
 use proptest::collection::vec;
@@ -83,7 +84,20 @@ fn point() -> impl Strategy<Value = Point> {
                 unit: unit.trim().to_string(),
                 writable,
                 description: label.trim().to_string(),
-                nan_value: (power % 3 == 0).then_some(i128::from(power) * 1000),
+                // A whole-number point's mark of no value: 0, as an accumulator's.
+                nan_value: (power % 3 == 0
+                    && matches!(
+                        typed.kind,
+                        Kind::Number(
+                            ValueType::U16
+                                | ValueType::I16
+                                | ValueType::U32
+                                | ValueType::I32
+                                | ValueType::U64
+                                | ValueType::I64
+                        )
+                    ))
+                .then_some(0),
                 ..template.clone()
             }
         })
