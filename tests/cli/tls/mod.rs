@@ -714,13 +714,22 @@ fn gateway_takes_tls_clients_with_their_roles() {
     assert_eq!(client(&plain_url, &[], "write-register 17 400001 4").0, 11);
     let (_, out, _) = client(&plain_url, &[], "read-holding 17 400001 -o values");
     assert_eq!(out.trim(), "3");
+    // The gateway writes a row once its client has its answer: the last may come a moment
+    // after the client ended.
+    let read_rows = || -> Vec<serde_json::Value> {
+        std::fs::read_to_string(&rows)
+            .unwrap_or_default()
+            .lines()
+            .filter_map(|line| serde_json::from_str(line).ok())
+            .filter(|row: &serde_json::Value| row.get("client").is_some())
+            .collect()
+    };
+    let deadline = Instant::now() + Duration::from_secs(5);
+    while read_rows().len() < 7 && Instant::now() < deadline {
+        std::thread::sleep(Duration::from_millis(20));
+    }
     drop(gateway);
-    let rows: Vec<serde_json::Value> = std::fs::read_to_string(&rows)
-        .unwrap()
-        .lines()
-        .filter_map(|line| serde_json::from_str(line).ok())
-        .filter(|row: &serde_json::Value| row.get("client").is_some())
-        .collect();
+    let rows = read_rows();
     assert_eq!(rows.len(), 7, "{rows:#?}");
     let refused: Vec<_> = rows
         .iter()
