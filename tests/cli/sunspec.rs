@@ -13,6 +13,25 @@ use crate::support::{mbtool, peer_available, python_has, serve_tcp};
 const DEVICE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/peers/sunspec_device.py");
 const EXAMPLE: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/examples/sunspec-inverter.txt");
 
+/// `mbtool sunspec` with `args`, of the device on `port`.
+fn sunspec(port: &[String], args: &[&str]) -> std::process::Output {
+    mbtool()
+        .args(port)
+        .arg("sunspec")
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+/// `serve` standing for slave 1 with the registers of `data` (a data file's text).
+fn serve_data(data: &str) -> (tempfile::TempDir, crate::support::Stopped, Vec<String>) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("device.txt");
+    std::fs::write(&path, data).unwrap();
+    let (server, port, _) = serve_tcp(&["--slave", "1", "--data", &path.display().to_string()]);
+    (dir, server, port)
+}
+
 /// The points with a value, by name, as `sunspec -o json` gives them; and its requests.
 fn mbtool_reading(port: &[String], extra: &[&str]) -> (BTreeMap<String, serde_json::Value>, u64) {
     let output = mbtool()
@@ -137,11 +156,7 @@ fn the_map_written_reads_back_the_same_values() {
     let dir = tempfile::tempdir().unwrap();
     let map = dir.path().join("inverter.csv");
     let map_text = map.display().to_string();
-    let scanned = mbtool()
-        .args(&port)
-        .args(["sunspec", "1", "-o", "values", "--map-out", &map_text])
-        .output()
-        .unwrap();
+    let scanned = sunspec(&port, &["1", "-o", "values", "--map-out", &map_text]);
     assert!(scanned.status.success(), "{scanned:?}");
     let told = String::from_utf8_lossy(&scanned.stderr);
     assert!(
@@ -283,11 +298,7 @@ fn a_device_that_refuses_reads_across_its_models_is_read_model_by_model() {
 fn a_device_without_a_map_is_told_and_a_silent_one_times_out() {
     // serve's own example data: every register exists, none holds SunS.
     let (_server, port, _) = serve_tcp(&["--slave", "1"]);
-    let output = mbtool()
-        .args(&port)
-        .args(["sunspec", "1"])
-        .output()
-        .unwrap();
+    let output = sunspec(&port, &["1"]);
     assert_eq!(output.status.code(), Some(1), "{output:?}");
     let told = String::from_utf8_lossy(&output.stderr);
     assert!(
@@ -301,11 +312,7 @@ fn a_device_without_a_map_is_told_and_a_silent_one_times_out() {
     );
     assert_eq!(told.lines().count(), 1, "{told}");
     // A unit serve does not stand for: 0B at every base, told as the exception it is.
-    let absent = mbtool()
-        .args(&port)
-        .args(["sunspec", "9"])
-        .output()
-        .unwrap();
+    let absent = sunspec(&port, &["9"]);
     assert_eq!(absent.status.code(), Some(21), "{absent:?}");
     // A device that takes the connection and never answers.
     let listener = std::net::TcpListener::bind("127.0.0.1:0").unwrap();
@@ -323,17 +330,9 @@ fn a_device_without_a_map_is_told_and_a_silent_one_times_out() {
     );
     // --base names the one place to look.
     let (_image, image_port, _) = serve_tcp(&["--slave", "1", "--data", EXAMPLE]);
-    let there = mbtool()
-        .args(&image_port)
-        .args(["sunspec", "1", "--base", "40000", "-o", "values"])
-        .output()
-        .unwrap();
+    let there = sunspec(&image_port, &["1", "--base", "40000", "-o", "values"]);
     assert!(there.status.success(), "{there:?}");
-    let elsewhere = mbtool()
-        .args(&image_port)
-        .args(["sunspec", "1", "--base", "50000"])
-        .output()
-        .unwrap();
+    let elsewhere = sunspec(&image_port, &["1", "--base", "50000"]);
     // Refused there: the device's exception 02.
     assert_eq!(elsewhere.status.code(), Some(12), "{elsewhere:?}");
 }
@@ -371,11 +370,7 @@ fn registers_the_device_refuses_leave_their_points_without_a_value() {
         "--exception",
         "4@440100-440101",
     ]);
-    let output = mbtool()
-        .args(&port)
-        .args(["sunspec", "1", "-o", "csv"])
-        .output()
-        .unwrap();
+    let output = sunspec(&port, &["1", "-o", "csv"]);
     assert_eq!(output.status.code(), Some(14), "{output:?}");
     let csv = String::from_utf8_lossy(&output.stdout);
     assert!(
@@ -405,15 +400,8 @@ fn a_short_model_keeps_its_points_and_zeros_after_the_chain_end_it() {
     words.extend(std::iter::repeat_n(0, 63));
     words.extend([0, 0, 0, 0]);
     let text: Vec<String> = words.iter().map(u16::to_string).collect();
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("short.txt");
-    std::fs::write(&path, format!("440001 = {}\n", text.join(" "))).unwrap();
-    let (_server, port, _) = serve_tcp(&["--slave", "1", "--data", &path.display().to_string()]);
-    let output = mbtool()
-        .args(&port)
-        .args(["sunspec", "1", "-o", "values"])
-        .output()
-        .unwrap();
+    let (_dir, _server, port) = serve_data(&format!("440001 = {}\n", text.join(" ")));
+    let output = sunspec(&port, &["1", "-o", "values"]);
     assert!(output.status.success(), "{output:?}");
     assert_eq!(
         String::from_utf8_lossy(&output.stdout),
@@ -442,15 +430,8 @@ fn a_chain_cut_by_a_refused_header_exits_with_the_refusal() {
         joined(0..122),
         joined(124..words.len())
     );
-    let dir = tempfile::tempdir().unwrap();
-    let path = dir.path().join("cut.txt");
-    std::fs::write(&path, data).unwrap();
-    let (_server, port, _) = serve_tcp(&["--slave", "1", "--data", &path.display().to_string()]);
-    let output = mbtool()
-        .args(&port)
-        .args(["sunspec", "1", "-o", "values"])
-        .output()
-        .unwrap();
+    let (_dir, _server, port) = serve_data(&data);
+    let output = sunspec(&port, &["1", "-o", "values"]);
     assert_eq!(output.status.code(), Some(12), "{output:?}");
     let told = String::from_utf8_lossy(&output.stderr);
     assert!(

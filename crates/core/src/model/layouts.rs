@@ -3,6 +3,7 @@
 //! display), nearest first: the answer to "is this float CDAB or ABCD".
 
 use super::values::{text, ByteOrder, Value, ValueType};
+use crate::input::choice::Choice;
 
 /// A type and a byte order: how a value lies in registers.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -12,19 +13,6 @@ pub struct Layout {
     /// The order of its bytes and words.
     pub order: ByteOrder,
 }
-
-/// The numeric types, the simplest first: where two layouts give the same value, the
-/// simpler is the likelier.
-const NUMBERS: [ValueType; 8] = [
-    ValueType::U16,
-    ValueType::I16,
-    ValueType::U32,
-    ValueType::I32,
-    ValueType::F32,
-    ValueType::U64,
-    ValueType::I64,
-    ValueType::F64,
-];
 
 /// The orders that differ for a value `width` registers wide: one register has its two
 /// bytes in order or swapped.
@@ -40,10 +28,17 @@ fn orders(width: usize) -> &'static [ByteOrder] {
     }
 }
 
-/// Every numeric layout, the simplest first.
+/// Every numeric layout, the simplest first (the order of the value types): where two
+/// layouts give the same value, the simpler is the likelier.
 pub fn numeric_layouts() -> Vec<Layout> {
-    NUMBERS
+    ValueType::ALL
         .iter()
+        .filter(|value_type| {
+            !matches!(
+                value_type,
+                ValueType::Hex | ValueType::Bin | ValueType::Ascii
+            )
+        })
         .flat_map(|&value_type| {
             orders(value_type.width())
                 .iter()
