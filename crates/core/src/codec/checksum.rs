@@ -94,22 +94,59 @@ pub fn crc_holds(frame: &[u8]) -> bool {
     }
 }
 
+/// How many runs of lengths [`crc_matches`] carries side by side.
+const LANES: usize = 4;
+
 /// The lengths in `min_len..=max_len` at which `bytes` ends in its own CRC (low byte
-/// first), shortest first: how a frame of a function without a known layout is found. The
-/// CRC of each prefix is carried forward a byte at a time, so the scan costs one pass.
+/// first), shortest first: how a frame of a function without a known layout is found.
+///
+/// The register after a frame and its own CRC is zero, so these are the lengths after
+/// which the register is zero. Carried a byte at a time, each byte waits for the lookup of
+/// the one before it; a noisy line asks this at every position whose function byte is
+/// user-defined, up to 256 bytes on. So the lengths are split into [`LANES`] runs, each
+/// started from its own register (a sliced CRC of the bytes before it) and carried in the
+/// same loop, whose lookups do not wait for each other.
 pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
     let max_len = max_len.min(bytes.len());
     let mut matches = Vec::new();
     if min_len < 3 || min_len > max_len {
         return matches;
     }
-    let mut crc = crc16(&bytes[..min_len - 2]);
-    for len in min_len..=max_len {
-        if crc.to_le_bytes() == bytes[len - 2..len] {
-            matches.push(len);
+    let per_lane = (max_len + 1 - min_len) / LANES;
+    let starts: [usize; LANES] = std::array::from_fn(|lane| min_len + lane * per_lane);
+    let mut registers = starts.map(|start| crc16(&bytes[..start]));
+    // Each run's last length is checked after the loop, so that no byte past `max_len`
+    // is read.
+    for offset in 0..per_lane.saturating_sub(1) {
+        for (register, start) in registers.iter_mut().zip(starts) {
+            if *register == 0 {
+                matches.push(start + offset);
+            }
+            *register = step(*register, bytes[start + offset]);
         }
-        crc = step(crc, bytes[len - 2]);
     }
+    if per_lane > 0 {
+        for (register, start) in registers.iter().zip(starts) {
+            if *register == 0 {
+                matches.push(start + per_lane - 1);
+            }
+        }
+    }
+    // The few lengths the runs leave over, one after the other.
+    let rest = min_len + LANES * per_lane;
+    if rest <= max_len {
+        let mut register = crc16(&bytes[..rest]);
+        for len in rest..=max_len {
+            if register == 0 {
+                matches.push(len);
+            }
+            if len < max_len {
+                register = step(register, bytes[len]);
+            }
+        }
+    }
+    // Found run by run, so out of order; rarely more than one.
+    matches.sort_unstable();
     matches
 }
 
@@ -166,6 +203,38 @@ mod tests {
                 crc16(&bytes[..len]),
                 reference(&bytes[..len]),
                 "{len} bytes"
+            );
+        }
+    }
+
+    /// The lengths at which `bytes` ends in its own CRC, one length after the other; none
+    /// shorter than three bytes (a CRC and one byte it is of).
+    fn matches_one_by_one(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
+        if min_len < 3 {
+            return Vec::new();
+        }
+        (min_len..=max_len.min(bytes.len()))
+            .filter(|len| crc16(&bytes[..len - 2]).to_le_bytes() == bytes[len - 2..*len])
+            .collect()
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn crc_matches_finds_the_lengths_one_by_one_would(
+            body in proptest::collection::vec(proptest::prelude::any::<u8>(), 0..300),
+            cut in 0usize..300,
+            min_len in 0usize..12,
+            max_len in 0usize..320,
+        ) {
+            // Frames with their CRC inside, so that there is something to find.
+            let mut bytes = body.clone();
+            let cut = cut.min(bytes.len());
+            let crc = crc16(&bytes[..cut]).to_le_bytes();
+            bytes.splice(cut..cut, crc);
+            bytes.extend_from_slice(&[0, 0]);
+            proptest::prop_assert_eq!(
+                crc_matches(&bytes, min_len, max_len),
+                matches_one_by_one(&bytes, min_len, max_len)
             );
         }
     }

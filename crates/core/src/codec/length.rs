@@ -139,6 +139,9 @@ pub(crate) fn pdu_length(pdu: &[u8], direction: Direction) -> Length {
             }
             None => Length::AtLeast(usize::from(index) + 1),
         },
+        // Most function codes have no layout: told here, without a call.
+        Layout::Other(Other::Unknown) => Length::Unknown,
+        Layout::Other(Other::Never) => Length::Never,
         Layout::Other(other) => other_length(other, pdu, direction),
     }
 }

@@ -528,6 +528,12 @@ impl Framer {
     /// must end where a frame, silence or the end of the input follows, and hold no valid
     /// frame. Random bytes are noise.
     pub(super) fn broken_or_noise(&self, at: usize, in_step: bool) -> Look {
+        // After noise, only the answer awaited may be a broken frame: elsewhere the bytes
+        // before this one say it is noise, and nothing after it need be asked (a noisy
+        // line is mostly such bytes).
+        if !in_step && !self.answers_awaited(&self.buffer[at..], Some(Direction::Response)) {
+            return Look::Noise;
+        }
         // A sound frame right after this byte settles it: a broken frame from here would
         // hold that frame or run into it, and neither is taken. Far cheaper to ask than
         // the search, and the common case (a glitch byte at a turnaround). Not where the
