@@ -64,7 +64,12 @@ fn step(crc: u16, byte: u8) -> u16 {
 /// CRC-16/MODBUS of `bytes`. On the wire it is sent low byte first.
 #[inline]
 pub fn crc16(bytes: &[u8]) -> u16 {
-    let mut crc = 0xFFFF;
+    carried(0xFFFF, bytes)
+}
+
+/// The register after `bytes`, from `crc`.
+#[inline]
+fn carried(mut crc: u16, bytes: &[u8]) -> u16 {
     let mut chunks = bytes.chunks_exact(16);
     for chunk in &mut chunks {
         crc = slice(crc, chunk);
@@ -94,17 +99,14 @@ pub fn crc_holds(frame: &[u8]) -> bool {
     }
 }
 
-/// How many runs of lengths [`crc_matches`] carries side by side.
-const LANES: usize = 4;
-
 /// The lengths in `min_len..=max_len` at which `bytes` ends in its own CRC (low byte
 /// first), shortest first: how a frame of a function without a known layout is found.
 ///
 /// The register after a frame and its own CRC is zero, so these are the lengths after
 /// which the register is zero. Carried a byte at a time, each byte waits for the lookup of
 /// the one before it; a noisy line asks this at every position whose function byte is
-/// user-defined, up to 256 bytes on. So the lengths are split into [`LANES`] runs, each
-/// started from its own register (a sliced CRC of the bytes before it) and carried in the
+/// user-defined, up to 256 bytes on. So the lengths are split into four runs, each
+/// started from its own register (carried, sliced, from the run before) and carried in the
 /// same loop, whose lookups do not wait for each other.
 pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
     let max_len = max_len.min(bytes.len());
@@ -112,12 +114,16 @@ pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
     if min_len < 3 || min_len > max_len {
         return matches;
     }
-    let per_lane = (max_len + 1 - min_len) / LANES;
-    let starts: [usize; LANES] = std::array::from_fn(|lane| min_len + lane * per_lane);
-    let mut registers = starts.map(|start| crc16(&bytes[..start]));
-    // Each run's last length is checked after the loop, so that no byte past `max_len`
-    // is read.
-    for offset in 0..per_lane.saturating_sub(1) {
+    // Each run checks its lengths but the last in the loop, so that no byte past
+    // `max_len` is read; the last after it.
+    let per_run = (max_len + 1 - min_len) / 4;
+    let starts: [usize; 4] = std::array::from_fn(|run| min_len + run * per_run);
+    let mut registers = [crc16(&bytes[..min_len]); 4];
+    for run in 1..4 {
+        registers[run] = carried(registers[run - 1], &bytes[starts[run - 1]..starts[run]]);
+    }
+    let last_run_start = registers[3];
+    for offset in 0..per_run.saturating_sub(1) {
         for (register, start) in registers.iter_mut().zip(starts) {
             if *register == 0 {
                 matches.push(start + offset);
@@ -125,17 +131,13 @@ pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
             *register = step(*register, bytes[start + offset]);
         }
     }
-    if per_lane > 0 {
-        for (register, start) in registers.iter().zip(starts) {
-            if *register == 0 {
-                matches.push(start + per_lane - 1);
-            }
-        }
+    if per_run > 0 {
+        note_zeros(&registers, &starts, per_run - 1, &mut matches);
     }
     // The few lengths the runs leave over, one after the other.
-    let rest = min_len + LANES * per_lane;
+    let rest = min_len + 4 * per_run;
     if rest <= max_len {
-        let mut register = crc16(&bytes[..rest]);
+        let mut register = carried(last_run_start, &bytes[starts[3]..rest]);
         for len in rest..=max_len {
             if register == 0 {
                 matches.push(len);
@@ -148,6 +150,15 @@ pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
     // Found run by run, so out of order; rarely more than one.
     matches.sort_unstable();
     matches
+}
+
+/// The lengths whose register is zero, `offset` bytes into each run.
+fn note_zeros(registers: &[u16; 4], starts: &[usize; 4], offset: usize, matches: &mut Vec<usize>) {
+    for (register, start) in registers.iter().zip(starts) {
+        if *register == 0 {
+            matches.push(start + offset);
+        }
+    }
 }
 
 /// Longitudinal redundancy check: the two's complement of the 8-bit sum of the bytes.
