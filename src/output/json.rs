@@ -58,6 +58,14 @@ impl<'a> JsonObject<'a> {
         self.line.push(b'"');
     }
 
+    /// A socket address as a string: its text needs no escaping.
+    pub fn address(&mut self, key: &str, address: &std::net::SocketAddr) {
+        use std::io::Write;
+        self.key(key);
+        // Writing into a vector cannot fail.
+        let _ = write!(self.line, "\"{address}\"");
+    }
+
     /// An integer, written digit by digit.
     #[inline(always)]
     pub fn number(&mut self, key: &str, value: impl itoa::Integer) {

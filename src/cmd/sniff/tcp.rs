@@ -7,13 +7,13 @@ use std::time::Duration;
 
 use anyhow::{Context, Result};
 
-use mbtool::error::Error;
+use mbtool::error::{replay_failed, Error};
 use mbtool::output;
 use mbtool::output::sniff::{self, SniffSink};
 use mbtool::settings::{job, Settings};
 use mbtool_core::codec::Mode;
 use mbtool_core::sniff::capture;
-use mbtool_core::sniff::replay::RecordSink;
+use mbtool_core::sniff::replay::{self, RecordSink};
 use mbtool_core::sniff::session::Filter;
 use mbtool_core::sniff::stats::Stats;
 use mbtool_core::sniff::tcp::{TcpSession, MODBUS_PORT};
@@ -118,15 +118,7 @@ pub(super) fn replay_capture(
         .into());
     }
     let (mut session, mut sinks) = tcp_session(settings, job, false)?;
-    let mut records = Vec::new();
-    let mut written = Ok(());
-    let read = capture::read_packets(input, |packet| {
-        session.packet(&packet, &mut records);
-        sinks.epoch_us = session.first_time();
-        written = sinks.write(&mut records);
-        written.is_ok()
-    });
-    written?;
+    let read = replay::replay_packets(input, &mut session, &mut sinks).map_err(replay_failed)?;
     end_tcp(session, sinks)?;
     let path = path.display();
     match read {
@@ -177,7 +169,6 @@ pub(super) fn capture_live(settings: &Settings, job: &job::Sniff) -> Result<u8> 
                     saved = save.packet(packet.time_us, packet.data, packet.original_len);
                 }
                 session.packet(&packet, &mut records);
-                sinks.epoch_us = session.first_time();
             })
             .map_err(|e| anyhow::anyhow!("{interface}: {e}"))?;
         saved.as_ref().map_err(|e| anyhow::anyhow!("{e}"))?;

@@ -164,7 +164,7 @@ pub struct SniffSink {
     pub writer: Box<dyn FrameWriter>,
     pub out: Box<dyn Write>,
     pub pcap: Option<PcapWriter<OutputFile>>,
-    /// Microseconds since 1970 of capture time 0, for pcap timestamps.
+    /// Microseconds since 1970 of a serial capture's time 0, for pcap timestamps.
     pub epoch_us: u64,
     pub mode: Mode,
     /// Records are flushed as they are written: a live line, or standard input, which may
@@ -182,10 +182,12 @@ impl RecordSink for SniffSink {
                 stats.record(record);
             }
             if let (Some(pcap), Record::Frame(frame)) = (self.pcap.as_mut(), record) {
-                pcap.frame(
-                    self.epoch_us + frame.at,
-                    &pcap::rtu_form(self.mode, &frame.found.bytes),
-                )?;
+                // A packet capture's frames keep their packets' times.
+                let time = match frame.tcp {
+                    Some(place) => place.time_us,
+                    None => self.epoch_us + frame.at,
+                };
+                pcap.frame(time, &pcap::rtu_form(self.mode, &frame.found.bytes))?;
             }
             self.writer.record(&mut self.out, record)?;
         }

@@ -1,4 +1,4 @@
-use super::frame_json::{report_fields, seconds};
+use super::frame_json::{report_fields, seconds, tcp_fields, JsonTcp};
 use super::*;
 use crate::output::columns::{column, Align, ColumnText, Seconds};
 use crate::output::json::JsonObject;
@@ -186,4 +186,38 @@ fn mask_writes_and_device_identification_say_what_they_carry() {
         lines[3].contains(r#"VendorName = "ABC", ProductCode = "X1"; more from object 02"#),
         "{lines:?}"
     );
+}
+
+/// The TCP place of a frame is written field by field; it must stay what `JsonTcp`'s
+/// `Serialize` gives (as an unanswered request's place is written), to the byte.
+#[test]
+fn a_tcp_place_as_a_sniffed_frame_is_its_serialize_to_the_byte() {
+    use mbtool_core::sniff::session::TcpPlace;
+    let mut rng = fastrand::Rng::with_seed(29);
+    let addresses = [
+        "10.0.0.1:40000",
+        "[fe80::1]:502",
+        "127.0.0.1:1502",
+        "[::1]:65535",
+    ];
+    for _ in 0..200 {
+        let mut address = || addresses[rng.usize(..addresses.len())].parse().unwrap();
+        let (client, server) = (address(), address());
+        let place = TcpPlace {
+            client,
+            server,
+            udp: rng.bool(),
+            from_client: rng.bool(),
+            packet: rng.u64(1..1 << 40),
+            time_us: rng.u64(..),
+            request_packet: rng.bool().then(|| rng.u64(1..1000)),
+            response_time: rng.bool().then(|| rng.u64(..1 << 33)),
+        };
+        let mut line = Vec::new();
+        let mut object = JsonObject::open(&mut line);
+        tcp_fields(&mut object, &place);
+        object.close();
+        let serialized = serde_json::to_string(&JsonTcp::from(&place)).unwrap();
+        assert_eq!(String::from_utf8(line).unwrap(), serialized);
+    }
 }

@@ -1,6 +1,7 @@
 //! A capture of a serial line replayed from a file or a pipe: with its timing, the bytes
 //! handed to the session as the live session was handed them; without, framed by content
 //! alone, a file on every core (blocks framed ahead by workers, caught up with in order).
+//! A packet capture (pcap, pcapng) is read through a TCP session.
 //! The frames are handed to a [`RecordSink`] on the caller's thread, in batches, while the
 //! replay goes on on another: framing and writing run side by side.
 
@@ -12,7 +13,9 @@ use std::thread;
 
 use crate::codec::framing::{Ahead, Event, FoundAhead, Framer};
 
+use super::capture::{read_packets, CaptureError};
 use super::session::{Record, Session};
+use super::tcp::TcpSession;
 use super::timing;
 
 /// Where the records of a replay go, a batch at a time: the batch is left empty.
@@ -182,6 +185,27 @@ pub fn replay(
             bytes: replay_ahead(input, session, found)?,
             ..Replayed::default()
         }),
+    })
+}
+
+/// Replays the pcap or pcapng capture `input` through `session`, handing the records to
+/// `sink` on this thread while the packets are read, reassembled and framed on another.
+/// Returns how many packets were read, or why the capture could not be read on (the records
+/// before that are written); when the sink fails, the replay stops at its next batch and
+/// the sink's error is the one told.
+pub fn replay_packets(
+    input: impl Read + Send,
+    session: &mut TcpSession,
+    sink: &mut dyn RecordSink,
+) -> Result<Result<u64, CaptureError>, ReplayError> {
+    write_alongside(sink, |found| {
+        let mut handed = Ok(());
+        let read = read_packets(input, |packet| {
+            session.packet(&packet, &mut found.records);
+            handed = found.found();
+            handed.is_ok()
+        });
+        handed.map(|()| read)
     })
 }
 

@@ -68,6 +68,8 @@ pub struct TcpPlace {
     pub from_client: bool,
     /// The packet its last byte came in, numbered from 1 as Wireshark numbers them.
     pub packet: u64,
+    /// When that packet was captured, in microseconds since 1970.
+    pub time_us: u64,
     /// For an answer: the packet of the request it answers.
     pub request_packet: Option<u64>,
     /// For an answer: microseconds from its request's packet to its own.
@@ -125,8 +127,21 @@ impl FrameRecord {
         }
     }
 
-    /// A valid frame whose report is worked out from `reading` when first asked for.
-    fn read(number: u64, found: Found, at: u64, reading: SessionReading) -> Self {
+    /// A valid frame whose report is worked out from `reading` when first asked for: the
+    /// PDU as read, and the request a read answer answers, which gives its addresses.
+    pub(super) fn read(
+        number: u64,
+        found: Found,
+        at: u64,
+        mode: Mode,
+        reading: Reading,
+        answers: Option<Request>,
+    ) -> Self {
+        let reading = SessionReading {
+            mode,
+            reading,
+            answers,
+        };
         Self {
             number,
             found,
@@ -658,16 +673,7 @@ impl Session {
         };
         let mode = self.mode;
         let at = self.at(found.start, found.offset);
-        let mut record = FrameRecord::read(
-            number,
-            found,
-            at,
-            SessionReading {
-                mode,
-                reading,
-                answers,
-            },
-        );
+        let mut record = FrameRecord::read(number, found, at, mode, reading, answers);
         record.paired = paired;
         record.mismatch = mismatch;
         Some(record)

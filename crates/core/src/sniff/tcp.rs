@@ -15,7 +15,7 @@ use super::session::{Counts, Filter, FrameRecord, Record, TcpPlace};
 use crate::codec::answer::{check, Mismatch};
 use crate::codec::framing::{Broken, Event, Found, Framer};
 use crate::codec::{Direction, Envelope, Mode, Pdu, Reading, Request, Response};
-use crate::describe::{describe_frame, describe_reading, locate_answer, Kind};
+use crate::describe::{describe_frame, FrameReport, Kind};
 
 /// At most this many requests of one connection wait on one transaction and unit id: a
 /// client may pipeline requests that reuse an id, but one whose requests are never
@@ -132,6 +132,21 @@ fn connection(
     })
 }
 
+/// A frame as the session has it before it is shown: read, and described only if shown;
+/// or described already (broken, or its PDU does not read).
+enum Seen {
+    Read {
+        slave: u8,
+        /// As on the wire, with the 0x80 flag of an exception.
+        function: u8,
+        kind: Kind,
+        reading: Reading,
+        /// The request a read's answer answers.
+        answers: Option<Request>,
+    },
+    Described(FrameReport),
+}
+
 /// A Modbus TCP capture's session: packets in, records out.
 pub struct TcpSession {
     mode: Mode,
@@ -179,11 +194,6 @@ impl TcpSession {
         let mut ports: Vec<(u16, u64)> = self.elsewhere.iter().map(|(p, n)| (*p, *n)).collect();
         ports.sort_by_key(|(port, count)| (std::cmp::Reverse(*count), *port));
         ports
-    }
-
-    /// The first packet's time, in microseconds since 1970: frames are timed from it.
-    pub fn first_time(&self) -> u64 {
-        self.first_time.unwrap_or(0)
     }
 
     /// The tally of frames so far.
@@ -289,6 +299,7 @@ impl TcpSession {
             udp: false,
             from_client,
             packet: packet.number,
+            time_us: packet.time_us,
             request_packet: None,
             response_time: None,
         };
@@ -352,6 +363,7 @@ impl TcpSession {
             udp: true,
             from_client,
             packet: packet.number,
+            time_us: packet.time_us,
             request_packet: None,
             response_time: None,
         };
@@ -391,6 +403,7 @@ impl TcpSession {
                 udp: key.2,
                 from_client,
                 packet: self.packets.packets,
+                time_us: self.last_time,
                 request_packet: None,
                 response_time: None,
             };
@@ -424,6 +437,7 @@ impl TcpSession {
                 udp: key.2,
                 from_client: true,
                 packet: pending.packet,
+                time_us: pending.time,
                 request_packet: None,
                 response_time: None,
             };
@@ -454,7 +468,11 @@ impl TcpSession {
                     }
                 }
                 Event::Frame(frame) => {
-                    let place = TcpPlace { packet, ..place };
+                    let place = TcpPlace {
+                        packet,
+                        time_us: time,
+                        ..place
+                    };
                     self.frame(frame, time, place, out);
                 }
             }
@@ -468,6 +486,7 @@ impl TcpSession {
     }
 
     /// A frame completed at `time` (microseconds since 1970) in the packet `place` names.
+    /// A frame whose PDU reads is paired and counted now, and described only when shown.
     fn frame(&mut self, found: Found, time: u64, mut place: TcpPlace, out: &mut Vec<Record>) {
         let direction = match place.from_client {
             true => Direction::Request,
@@ -475,7 +494,7 @@ impl TcpSession {
         };
         let key = (place.client, place.server, place.udp);
         let mut mismatch = None;
-        let report = match (found.broken, Envelope::open(self.mode, &found.bytes)) {
+        let seen = match (found.broken, Envelope::open(self.mode, &found.bytes)) {
             (None, Ok(envelope)) => {
                 let decoded = Pdu::decode(&envelope.pdu, direction);
                 // A request that breaks its function's rules is still answered, with an
@@ -523,16 +542,23 @@ impl TcpSession {
                 };
                 match decoded {
                     Ok(pdu) => {
-                        let answer_to_read = matches!(pdu, Pdu::Response(_));
-                        let mut report = describe_reading(self.mode, &envelope, Reading::One(pdu));
-                        if let (Some(request), true) = (&request, answer_to_read) {
-                            locate_answer(&mut report, request, &envelope.pdu);
+                        // Only a read's answer takes its addresses from the request.
+                        let answers = request.filter(|_| matches!(pdu, Pdu::Response(_)));
+                        Seen::Read {
+                            slave: envelope.slave,
+                            function: envelope.pdu.first().copied().unwrap_or_default(),
+                            kind: Kind::of(&pdu),
+                            reading: Reading::One(pdu),
+                            answers,
                         }
-                        report
                     }
                     Err(_) => {
                         self.counts.malformed += 1;
-                        describe_frame(&found.bytes, Some(self.mode), Some(direction))
+                        Seen::Described(describe_frame(
+                            &found.bytes,
+                            Some(self.mode),
+                            Some(direction),
+                        ))
                     }
                 }
             }
@@ -554,16 +580,31 @@ impl TcpSession {
                         Some("incomplete: bytes of the frame are missing from the capture".into());
                 }
                 self.counts.crc_errors += u64::from(broken == Some(Broken::Checksum));
-                report
+                Seen::Described(report)
             }
+        };
+        let (slave, function, kind) = match &seen {
+            Seen::Read {
+                slave,
+                function,
+                kind,
+                ..
+            } => (*slave, *function, *kind),
+            Seen::Described(report) => (report.slave, report.function, report.kind),
         };
         // Over TCP the direction tells a request from an answer, whatever its PDU holds:
         // every frame is counted as what its record says it is.
-        self.counts.tell(report.slave, Some(report.kind));
+        self.counts.tell(slave, Some(kind));
         self.counts.mismatched += u64::from(mismatch.is_some());
         self.numbered += 1;
-        if self.filter.shows(report.slave, report.function) {
-            let mut record = FrameRecord::new(self.numbered, found, self.at(Some(time)), report);
+        if self.filter.shows(slave, function) {
+            let (number, at) = (self.numbered, self.at(Some(time)));
+            let mut record = match seen {
+                Seen::Read {
+                    reading, answers, ..
+                } => FrameRecord::read(number, found, at, self.mode, reading, answers),
+                Seen::Described(report) => FrameRecord::new(number, found, at, report),
+            };
             record.paired = place.request_packet.is_some();
             record.mismatch = mismatch;
             record.tcp = Some(place);
