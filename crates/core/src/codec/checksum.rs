@@ -114,8 +114,6 @@ pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
     if min_len < 3 || min_len > max_len {
         return matches;
     }
-    // Each run checks its lengths but the last in the loop, so that no byte past
-    // `max_len` is read; the last after it.
     let per_run = (max_len + 1 - min_len) / 4;
     let starts: [usize; 4] = std::array::from_fn(|run| min_len + run * per_run);
     let mut registers = [crc16(&bytes[..min_len]); 4];
@@ -123,6 +121,8 @@ pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
         registers[run] = carried(registers[run - 1], &bytes[starts[run - 1]..starts[run]]);
     }
     let last_run_start = registers[3];
+    // Each run checks its last length after the loop, so that no byte past `max_len` is
+    // read.
     for offset in 0..per_run.saturating_sub(1) {
         for (register, start) in registers.iter_mut().zip(starts) {
             if *register == 0 {
@@ -131,34 +131,30 @@ pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
             *register = step(*register, bytes[start + offset]);
         }
     }
-    if per_run > 0 {
-        note_zeros(&registers, &starts, per_run - 1, &mut matches);
+    if let Some(last) = per_run.checked_sub(1) {
+        for (register, start) in registers.iter().zip(starts) {
+            if *register == 0 {
+                matches.push(start + last);
+            }
+        }
     }
     // The few lengths the runs leave over, one after the other.
     let rest = min_len + 4 * per_run;
     if rest <= max_len {
         let mut register = carried(last_run_start, &bytes[starts[3]..rest]);
-        for len in rest..=max_len {
+        if register == 0 {
+            matches.push(rest);
+        }
+        for (len, byte) in (rest + 1..=max_len).zip(&bytes[rest..max_len]) {
+            register = step(register, *byte);
             if register == 0 {
                 matches.push(len);
-            }
-            if len < max_len {
-                register = step(register, bytes[len]);
             }
         }
     }
     // Found run by run, so out of order; rarely more than one.
     matches.sort_unstable();
     matches
-}
-
-/// The lengths whose register is zero, `offset` bytes into each run.
-fn note_zeros(registers: &[u16; 4], starts: &[usize; 4], offset: usize, matches: &mut Vec<usize>) {
-    for (register, start) in registers.iter().zip(starts) {
-        if *register == 0 {
-            matches.push(start + offset);
-        }
-    }
 }
 
 /// Longitudinal redundancy check: the two's complement of the 8-bit sum of the bytes.
