@@ -58,12 +58,32 @@ impl<'a> JsonObject<'a> {
         self.line.push(b'"');
     }
 
-    /// A socket address as a string: its text needs no escaping.
+    /// A socket address as a string, as `Display` writes it (its text needs no escaping).
+    /// IPv4, nearly every capture's, digit by digit: the formatter's machinery cost a
+    /// tenth of a TCP frame's line.
     pub fn address(&mut self, key: &str, address: &std::net::SocketAddr) {
         use std::io::Write;
         self.key(key);
-        // Writing into a vector cannot fail.
-        let _ = write!(self.line, "\"{address}\"");
+        self.line.push(b'"');
+        match address {
+            std::net::SocketAddr::V4(address) => {
+                let mut digits = itoa::Buffer::new();
+                for (i, octet) in address.ip().octets().into_iter().enumerate() {
+                    if i > 0 {
+                        self.line.push(b'.');
+                    }
+                    self.line.extend_from_slice(digits.format(octet).as_bytes());
+                }
+                self.line.push(b':');
+                self.line
+                    .extend_from_slice(digits.format(address.port()).as_bytes());
+            }
+            // Writing into a vector cannot fail.
+            std::net::SocketAddr::V6(address) => {
+                let _ = write!(self.line, "{address}");
+            }
+        }
+        self.line.push(b'"');
     }
 
     /// An integer, written digit by digit.

@@ -58,6 +58,9 @@ pub struct PacketCounts {
 struct Side {
     stream: Stream,
     framer: Framer,
+    /// What the framer found in a piece, before it is told when: kept, so that its memory
+    /// is taken once.
+    events: Vec<Event>,
 }
 
 /// What the framer found, with when and in which packet it was completed: the packet of
@@ -67,7 +70,7 @@ type Completed = (Event, At);
 impl Side {
     /// Bytes, or their absence, given to the framer.
     fn frame(&mut self, pieces: &mut Vec<Piece>, now: At, found: &mut Vec<Completed>) {
-        let mut events = Vec::new();
+        let mut events = std::mem::take(&mut self.events);
         for piece in pieces.drain(..) {
             let at = match piece {
                 Piece::Bytes { data, at } => {
@@ -81,6 +84,7 @@ impl Side {
             };
             found.extend(events.drain(..).map(|event| (event, at)));
         }
+        self.events = events;
     }
 
     fn new(mode: Mode) -> Self {
@@ -90,6 +94,7 @@ impl Side {
         Self {
             stream: Stream::default(),
             framer,
+            events: Vec::new(),
         }
     }
 }

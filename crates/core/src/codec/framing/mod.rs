@@ -316,13 +316,16 @@ impl Framer {
         self.read_starts.resize(self.buffer.len(), true);
         // A read placed back over the one before it (reads stamped alike, a clock that
         // stepped) starts where that one ended: times never go back.
-        for (i, byte) in bytes.iter().enumerate() {
-            let back = ((last - i) as f64 * self.char_us) as u64;
-            self.latest_time = time.saturating_sub(back).max(self.latest_time);
-            self.buffer.push(*byte);
-            self.times.push(self.latest_time);
-            self.read_starts.push(i == 0);
-        }
+        self.buffer.extend_from_slice(bytes);
+        self.read_starts.push(true);
+        self.read_starts.resize(self.buffer.len(), false);
+        let (char_us, latest) = (self.char_us, &mut self.latest_time);
+        self.times.extend((0..=last).rev().map(|back| {
+            *latest = time
+                .saturating_sub((back as f64 * char_us) as u64)
+                .max(*latest);
+            *latest
+        }));
         self.scan(out);
     }
 
