@@ -346,7 +346,7 @@ impl Framer {
                 Length::Known(len) => {
                     (MIN_RTU_FRAME..=MAX_RTU_ADU).contains(&len) && len > data.len()
                 }
-                Length::AtLeast(_) => true,
+                Length::AtLeast(len) => len <= MAX_RTU_ADU,
                 Length::Unknown | Length::Never => false,
             },
         )

@@ -271,7 +271,9 @@ impl Framer {
                         None => found.pending.push((direction, Some(len))),
                     }
                 }
-                Length::AtLeast(_) => found.pending.push((direction, None)),
+                // An answer whose length is still being told (a device identification's
+                // objects) waits for more bytes only while it may still fit a frame.
+                Length::AtLeast(len) if len <= MAX_RTU_ADU => found.pending.push((direction, None)),
                 // The same CRC scan serves both directions.
                 Length::Unknown if may_lack_layout(data) && !unknown_done => {
                     unknown_done = true;

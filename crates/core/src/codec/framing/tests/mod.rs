@@ -424,3 +424,27 @@ fn tcp_frames_by_the_mbap_length_however_split() {
     assert!(matches!(out.last(), Some(Event::Noise(n)) if n.len == 7));
     assert!(framer.is_lost());
 }
+
+/// Bytes that begin a device identification answer whose objects run past the longest RTU
+/// frame are no frame, however many more come: the frame after them is found as soon as it
+/// is followed, not when the input ends.
+#[test]
+fn an_identification_answer_too_long_for_a_frame_holds_back_nothing() {
+    // Slave 5, 43/14, read code 1, conformity 1, more 0, next 0, 255 objects of 200 bytes.
+    let mut stream = vec![0x05, 0x2B, 0x0E, 0x01, 0x01, 0x00, 0x00, 0xFF];
+    stream.extend_from_slice(&[0x00, 0xC8]);
+    stream.extend_from_slice(&[0x11; 400]);
+    // Pairs after it, for as long as a frame may be: what follows the first is all here.
+    for _ in 0..20 {
+        stream.extend_from_slice(&REQUEST);
+        stream.extend_from_slice(&ANSWER);
+    }
+    let mut framer = framer(Mode::Rtu);
+    let mut out = Vec::new();
+    framer.push(&stream, &mut out);
+    let found = frames_of(out);
+    assert!(
+        found.contains(&(REQUEST.to_vec(), None)),
+        "the request after the bytes waits: {found:?}"
+    );
+}
