@@ -364,8 +364,10 @@ fn replay_ahead(
 /// The reading side of [`replay_ahead`]: blocks handed to `workers` workers through
 /// `jobs`, taken back in order. Of every few blocks this thread frames one itself, in
 /// order, so that it works while the workers do: reading a frame costs about a third of
-/// framing it, so with one worker it frames one block in three, with more fewer. While most
-/// frames are shown, the writer needs a core of its own, and one worker fewer frames ahead.
+/// framing it, so with one worker it frames one block in three, with more fewer; where the
+/// blocks hold few frames (a noisy line), reading costs next to nothing, and it frames as
+/// many blocks as a worker. While most frames are shown, the writer needs a core of its
+/// own, and one worker fewer frames ahead.
 /// Where a block framed ahead was never met (traffic whose frames read both ways, such as
 /// echoed writes, leaves a framer that started without the conversation out of its turn;
 /// garbage holds no frame to meet at), the next blocks are framed in order: one, then two,
@@ -382,13 +384,17 @@ fn read_ahead(
     let mut blocks = 0usize;
     let mut ended = false;
     let mut writer_busy = false;
+    let mut few_frames = false;
     let mut in_order_for = 0usize;
     let mut missed = 0u32;
     let mut events = Vec::new();
     let mut read_already: Vec<Vec<Event>> = Vec::new();
     loop {
         let framing_ahead = if writer_busy { workers - 1 } else { workers };
-        let cycle = framing_ahead * framing_ahead + 2;
+        let cycle = match few_frames {
+            true => framing_ahead + 1,
+            false => framing_ahead * framing_ahead + 2,
+        };
         while !ended && in_flight.len() < 2 * cycle {
             let block = read_block(input).map_err(ReplayError::Capture)?;
             if block.is_empty() {
@@ -429,15 +435,19 @@ fn read_ahead(
                     in_order_for = 1 << missed.min(6);
                     missed += 1;
                 }
+                let mut framed = events.len();
                 shown += read_batches(session, found, events.drain(..))?;
                 if let Some(FoundAhead {
                     events: mut found_ahead,
                     from,
                 }) = found_ahead
                 {
+                    framed += found_ahead.len() - from;
                     shown += read_batches(session, found, found_ahead.drain(from..))?;
                     read_already.push(found_ahead);
                 }
+                // Fewer than one frame or run of noise in 64 bytes.
+                few_frames = framed * 64 < block.len();
             }
             None => {
                 for piece in block.chunks(1 << 12) {

@@ -50,7 +50,7 @@ use super::checksum::crc_holds;
 use super::function::EXCEPTION_FLAG;
 use super::limits::MAX_RTU_ADU;
 use super::{Direction, Mode};
-use ahead::Standing;
+use ahead::Notes;
 pub use ahead::{Ahead, FoundAhead};
 use cadence::ReadCadence;
 use memo::{CrcVerdicts, LatestSound};
@@ -238,9 +238,9 @@ pub struct Framer {
     lost: bool,
     /// TCP seen from outside: look for the next header that reads instead of giving up.
     resync: bool,
-    /// Where the framer stood after each frame it handed out, while it frames a block
-    /// ahead or catches up with one (see `ahead`).
-    standings: Option<Vec<(usize, Standing)>>,
+    /// Where the framer stood after each frame it handed out and at places inside noise,
+    /// while it frames a block ahead or catches up with one (see `ahead`).
+    notes: Option<Notes>,
 }
 
 impl Framer {
@@ -278,7 +278,7 @@ impl Framer {
             awaiting: None,
             lost: false,
             resync: false,
-            standings: None,
+            notes: None,
         }
     }
 
@@ -578,6 +578,9 @@ impl Framer {
         let mut in_step = self.in_step;
         while at < self.buffer.len() {
             in_step |= at > 0 && self.silence_after(at - 1);
+            if !in_step {
+                self.note_in_noise(at, out.len());
+            }
             // No frame starts with 00 00 (there is no function 00): a line held low for
             // hours is passed over a run at a time.
             let zeros = match self.mode {
