@@ -170,6 +170,43 @@ pub struct TcpSession {
     elsewhere: BTreeMap<u16, u64>,
     /// The servers of connections on other ports, as their SYNs tell (bounded).
     servers_elsewhere: std::collections::HashSet<SocketAddr>,
+    /// The connections closed lately, oldest first (bounded): the last ACK of a closed
+    /// connection, or a FIN sent again, opens no new one that would never close.
+    closed: ClosedLately,
+}
+
+/// How many closed connections are remembered.
+const CLOSED_KEPT: usize = 4096;
+
+/// The keys of the latest connections closed, at most [`CLOSED_KEPT`].
+#[derive(Default)]
+struct ClosedLately {
+    order: std::collections::VecDeque<Key>,
+    keys: std::collections::HashSet<Key>,
+}
+
+impl ClosedLately {
+    fn add(&mut self, key: Key) {
+        if self.keys.insert(key) {
+            self.order.push_back(key);
+        }
+        if self.order.len() > CLOSED_KEPT {
+            if let Some(oldest) = self.order.pop_front() {
+                self.keys.remove(&oldest);
+            }
+        }
+    }
+
+    /// A connection of `key` opens again (a new SYN, or bytes on it).
+    fn reopened(&mut self, key: &Key) {
+        if self.keys.remove(key) {
+            self.order.retain(|closed| closed != key);
+        }
+    }
+
+    fn contains(&self, key: &Key) -> bool {
+        self.keys.contains(key)
+    }
 }
 
 impl TcpSession {
@@ -190,6 +227,7 @@ impl TcpSession {
             found: Vec::new(),
             elsewhere: BTreeMap::new(),
             servers_elsewhere: std::collections::HashSet::new(),
+            closed: ClosedLately::default(),
         }
     }
 
@@ -262,6 +300,14 @@ impl TcpSession {
         if segment.syn && from_client {
             // A new connection on the same addresses: the old one is over.
             self.close(key, false, out);
+        }
+        if self.closed.contains(&key) {
+            // What comes after a connection closed: its last ACK, a FIN again, carry
+            // nothing; bytes or a SYN open it again.
+            if segment.payload.is_empty() && !segment.syn {
+                return;
+            }
+            self.closed.reopened(&key);
         }
         let connection = connection(&mut self.connections, self.mode, key);
         let (side, other) = match from_client {
@@ -417,6 +463,9 @@ impl TcpSession {
         let Some(connection) = self.connections.remove(&key) else {
             return;
         };
+        if !capture_ended {
+            self.closed.add(key);
+        }
         for side in [&connection.to_server, &connection.to_client] {
             self.packets.repeated_bytes += side.stream.repeated;
             self.packets.missing_bytes += side.stream.missing;
