@@ -699,8 +699,11 @@ impl Framer {
     fn add_noise(&mut self, at: usize, count: usize) {
         match &mut self.noise {
             Some(noise) => {
+                // Past the bytes kept, a long run is only counted.
                 let room = NOISE_KEPT.saturating_sub(noise.kept.len()).min(count);
-                noise.kept.extend_from_slice(&self.buffer[at..at + room]);
+                if room > 0 {
+                    noise.kept.extend_from_slice(&self.buffer[at..at + room]);
+                }
                 noise.len += count as u64;
             }
             // Most runs are a byte or two: made whole at once.
