@@ -7,13 +7,19 @@ import threading
 
 
 def serve_forever(address, port, answer):
+    accept_forever(address, port, lambda connection: _serve(connection, answer))
+
+
+def accept_forever(address, port, handle):
+    """Listens on ADDRESS:PORT and hands each connection to `handle` on a thread of its
+    own."""
     listener = socket.socket()
     listener.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
     listener.bind((address, port))
     listener.listen(16)
     while True:
         connection, _ = listener.accept()
-        threading.Thread(target=_serve, args=(connection, answer), daemon=True).start()
+        threading.Thread(target=handle, args=(connection,), daemon=True).start()
 
 
 def _serve(connection, answer):

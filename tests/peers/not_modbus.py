@@ -9,7 +9,8 @@ closes each connection as soon as it is taken; reset resets it (RST).
 import socket
 import struct
 import sys
-import threading
+
+from mbap_server import accept_forever
 
 mode, address, port = sys.argv[1], sys.argv[2], int(sys.argv[3])
 
@@ -25,10 +26,4 @@ def serve(connection):
             connection.sendall(b"HTTP/1.0 400 Bad Request\r\nContent-Length: 0\r\n\r\n")
 
 
-listener = socket.socket()
-listener.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
-listener.bind((address, port))
-listener.listen(16)
-while True:
-    connection, _ = listener.accept()
-    threading.Thread(target=serve, args=(connection,), daemon=True).start()
+accept_forever(address, port, serve)
