@@ -117,8 +117,11 @@ pub(super) fn replay_capture(
         )
         .into());
     }
-    let (mut session, mut sinks) = tcp_session(settings, job, false)?;
-    let read = replay::replay_packets(input, &mut session, &mut sinks).map_err(replay_failed)?;
+    // Standard input may be another program's live capture: shown as it comes.
+    let piped = path.as_os_str() == "-";
+    let (mut session, mut sinks) = tcp_session(settings, job, piped)?;
+    let read =
+        replay::replay_packets(input, piped, &mut session, &mut sinks).map_err(replay_failed)?;
     end_tcp(session, sinks)?;
     let path = path.display();
     match read {

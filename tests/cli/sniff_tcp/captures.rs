@@ -39,6 +39,37 @@ fn a_capture_piped_in_pieces_is_read_as_the_file_is() {
     }
 }
 
+/// `tcpdump -U -w - | mbtool sniff --input -` on a live network: each frame is shown when
+/// its packet comes, not once the capture ends or a batch has gathered.
+#[test]
+fn a_capture_piped_in_shows_each_frame_as_its_packet_comes() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/captures/modbus-tcp.pcap");
+    let capture = std::fs::read(&path).unwrap();
+    let mut child = crate::support::mbtool_process()
+        .args(["sniff", "--json", "--input", "-"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut stdin = child.stdin.take().unwrap();
+    // All but the last byte: the capture is still going on.
+    std::io::Write::write_all(&mut stdin, &capture[..capture.len() - 1]).unwrap();
+    let stdout = child.stdout.take().unwrap();
+    let (line, lines) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for text in BufReader::new(stdout).lines() {
+            if line.send(text.unwrap()).is_err() {
+                return;
+            }
+        }
+    });
+    let first = lines.recv_timeout(std::time::Duration::from_secs(5));
+    drop(stdin);
+    child.wait().unwrap();
+    let first = first.expect("no frame shown while the capture went on");
+    assert!(first.starts_with(r#"{"type":"frame""#), "{first}");
+}
+
 /// The public Modbus TCP captures of `tests/corpus/modbus-tcp` (each with its source in
 /// SOURCES.md), read by mbtool and by tshark: the same PDUs in the same packets, paired
 /// with the same requests and the same response times, but for the disagreements above;

@@ -190,19 +190,23 @@ pub fn replay(
 
 /// Replays the pcap or pcapng capture `input` through `session`, handing the records to
 /// `sink` on this thread while the packets are read, reassembled and framed on another.
-/// Returns how many packets were read, or why the capture could not be read on (the records
-/// before that are written); when the sink fails, the replay stops at its next batch and
-/// the sink's error is the one told.
+/// `as_it_comes`: the capture may be another program's live one (`tcpdump -w -` piped in),
+/// and each packet's records are handed over at once, not in batches. Returns how many
+/// packets were read, or why the capture could not be read on (the records before that
+/// are written); when the sink fails, the replay stops at its next batch and the sink's
+/// error is the one told.
 pub fn replay_packets(
     input: impl Read + Send,
+    as_it_comes: bool,
     session: &mut TcpSession,
     sink: &mut dyn RecordSink,
 ) -> Result<Result<u64, CaptureError>, ReplayError> {
+    let batch = if as_it_comes { 1 } else { BATCH };
     write_alongside(sink, |found| {
         let mut handed = Ok(());
         let read = read_packets(input, |packet| {
             session.packet(&packet, &mut found.records);
-            handed = found.found();
+            handed = found.hand_over(batch);
             handed.is_ok()
         });
         handed.map(|()| read)
