@@ -23,5 +23,5 @@ pub use pdu::file;
 pub(crate) use pdu::{diagnostic_only_reads, function_only_reads};
 pub use pdu::{
     DeviceIdentification, DeviceObject, Direction, Exception, FileRecords, FileSpan, Pdu, Reading,
-    Request, Response,
+    Request, Response, Ways,
 };

@@ -279,6 +279,8 @@ pub struct Asked {
     /// The MBAP transaction identifier; 0 on serial lines.
     transaction: u16,
     request: Request,
+    /// The request's PDU as it travelled, which the answer is checked against.
+    pdu: Vec<u8>,
 }
 
 /// The request a frame described as `report` makes. `None` for anything else, or a frame
@@ -293,6 +295,7 @@ pub fn request_made(bytes: &[u8], report: &FrameReport) -> Option<Asked> {
         slave: envelope.slave,
         transaction: envelope.transaction,
         request,
+        pdu: envelope.pdu.into_owned(),
     })
 }
 
@@ -314,7 +317,7 @@ pub fn pair_answer(report: &mut FrameReport, bytes: &[u8], asked: &Asked) {
     let Ok(pdu) = Pdu::decode(&envelope.pdu, Direction::Response) else {
         return;
     };
-    if crate::codec::answer::check(request, &pdu).is_err() {
+    if crate::codec::answer::check(&asked.pdu, &envelope.pdu).is_err() {
         return;
     }
     if matches!(pdu, Pdu::Response(_)) {

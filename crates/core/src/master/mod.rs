@@ -499,6 +499,9 @@ impl Master {
             pdu: Pdu::Request(request.clone()),
         };
         let bytes = frame.encode()?;
+        // The request's PDU, which its answer is checked against.
+        let mut asked = Vec::new();
+        request.encode(&mut asked)?;
         self.note(Traffic::Sent, &bytes);
         if self.options.mode != Mode::Tcp {
             self.framer.await_answer(slave, request.function());
@@ -509,7 +512,7 @@ impl Master {
             std::thread::sleep(self.options.turnaround);
             return Ok(Reply::Broadcast);
         }
-        match self.await_answer(slave, request)? {
+        match self.await_answer(slave, &asked)? {
             Pdu::Exception(exception) => Ok(Reply::Exception(exception)),
             Pdu::Response(response) => Ok(Reply::Response(response)),
             Pdu::Request(_) => Err(MasterError::BadFrame {
@@ -544,12 +547,14 @@ impl Master {
         !gateway_has_none
     }
 
-    /// Whether a whole, valid frame is the answer to this request.
+    /// Whether a whole, valid frame, `frame` read from `bytes`, is the answer to the
+    /// request whose PDU is `asked`.
     fn belongs(
         &self,
         frame: &Frame,
+        bytes: &[u8],
         slave: u8,
-        request: &Request,
+        asked: &[u8],
     ) -> Result<(), Option<BadAnswer>> {
         if self.options.mode == Mode::Tcp && frame.transaction != self.transaction {
             // A late or repeated answer to an earlier request: not ours, and no fault of
@@ -559,11 +564,13 @@ impl Master {
         if frame.slave != slave {
             return Err(Some(BadAnswer::OtherSlave(frame.slave)));
         }
-        check(request, &frame.pdu).map_err(|mismatch| Some(mismatch.into()))
+        let answer = Envelope::open(self.options.mode, bytes).map(|envelope| envelope.pdu);
+        check(asked, answer.as_deref().unwrap_or_default())
+            .map_err(|mismatch| Some(mismatch.into()))
     }
 
     /// Reads what the framer found, in order, until the answer.
-    fn hear(&mut self, events: &mut Vec<Event>, heard: &mut Heard, slave: u8, request: &Request) {
+    fn hear(&mut self, events: &mut Vec<Event>, heard: &mut Heard, slave: u8, asked: &[u8]) {
         for event in events.drain(..) {
             if heard.answer.is_some() {
                 // Whatever follows the answer is for later transactions.
@@ -572,7 +579,7 @@ impl Master {
             match event {
                 Event::Frame(found) => {
                     match Frame::decode(self.options.mode, &found.bytes, Direction::Response) {
-                        Ok(frame) => match self.belongs(&frame, slave, request) {
+                        Ok(frame) => match self.belongs(&frame, &found.bytes, slave, asked) {
                             Ok(()) => heard.answer = Some(frame.pdu),
                             Err(None) => {
                                 heard.stale_bytes += found.bytes.len();
@@ -609,7 +616,7 @@ impl Master {
         }
     }
 
-    fn await_answer(&mut self, slave: u8, request: &Request) -> Result<Pdu, MasterError> {
+    fn await_answer(&mut self, slave: u8, asked: &[u8]) -> Result<Pdu, MasterError> {
         let deadline = Instant::now() + self.options.timeout.max(MIN_TIMEOUT);
         let timed = self.options.mode != Mode::Tcp;
         // Modbus/UDP: a datagram a frame. RTU in datagrams is read as the stream a serial
@@ -628,7 +635,7 @@ impl Master {
             _ => Duration::ZERO,
         };
         let outcome = loop {
-            self.hear(&mut events, &mut heard, slave, request);
+            self.hear(&mut events, &mut heard, slave, asked);
             if heard.answer.is_some() {
                 break Ok(());
             }
@@ -664,7 +671,7 @@ impl Master {
                 Ok(0) => {
                     // No more is awaited: what is held is decided now.
                     self.framer.finish(&mut events);
-                    self.hear(&mut events, &mut heard, slave, request);
+                    self.hear(&mut events, &mut heard, slave, asked);
                     break if heard.answer.is_some() {
                         Ok(())
                     } else {

@@ -1,16 +1,65 @@
 //! Telling requests from answers without a direction line, and pairing each answer with
 //! its request. By shape where the bytes decide (an exception has bit 7 set; a 03 request
 //! is 8 bytes, its answer 5 + 2n), by the pending request where they do not (05/06 echo,
-//! 8-byte 01/02 frames), and saying so when neither settles it.
+//! 8-byte 01/02 frames), and saying so when neither settles it. Pairing works on the PDUs'
+//! bytes: what they say is read only for the frames shown.
 
-use crate::codec::answer::check;
-use crate::codec::{Direction, Mismatch, Pdu, Reading, Request, Response};
+use smallvec::SmallVec;
+
+use crate::codec::answer::{check, check_function};
+use crate::codec::function::EXCEPTION_FLAG;
+use crate::codec::{Direction, Mismatch, Request, Ways};
+
+/// A request's PDU as it travelled, function code first, and whether it reads: a
+/// malformed request waits for its answer too, which is checked against its function
+/// alone. Inline up to 16 bytes, as every read's request is.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(super) struct RequestSent {
+    pdu: SmallVec<[u8; 16]>,
+    reads: bool,
+}
+
+impl RequestSent {
+    pub(super) fn new(pdu: &[u8], reads: bool) -> Self {
+        Self {
+            pdu: SmallVec::from_slice(pdu),
+            reads,
+        }
+    }
+
+    pub(super) fn function(&self) -> u8 {
+        self.pdu.first().copied().unwrap_or_default()
+    }
+
+    /// How the answer `answer` fits it (`answer_reads`: its PDU reads): where either does
+    /// not read, by function alone.
+    pub(super) fn fit(&self, answer: &[u8], answer_reads: bool) -> Result<(), Mismatch> {
+        if self.reads && answer_reads {
+            check(&self.pdu, answer)
+        } else {
+            check_function(&self.pdu, answer)
+        }
+    }
+
+    /// The request, read; a malformed one as its function and bytes.
+    pub(super) fn request(&self) -> Request {
+        let (function, data) = self.pdu.split_first().unwrap_or((&0, &[]));
+        let opaque = || Request::Other {
+            function: *function,
+            data: data.to_vec(),
+        };
+        match self.reads {
+            true => Request::decode(&self.pdu).unwrap_or_else(|_| opaque()),
+            false => opaque(),
+        }
+    }
+}
 
 /// A request still waiting for its answer.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(super) struct Pending {
     pub slave: u8,
-    pub request: Request,
+    pub request: RequestSent,
     /// When it was sent (its last byte), in microseconds, when known.
     pub time: Option<u64>,
 }
@@ -18,22 +67,30 @@ pub(super) struct Pending {
 /// What a frame is, once read against the request before it.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(super) enum Role {
-    Request(Request),
+    Request,
     /// An answer (or exception), with the request it answers when it follows one.
     Answer {
-        pdu: Pdu,
-        to: Option<Request>,
+        to: Option<RequestSent>,
         /// How it does not fit the request of its slave and function that awaited it (a
         /// count or an echo that differs): that request was answered, wrongly.
         mismatch: Option<Mismatch>,
     },
     /// Reads both ways, and nothing before it settles which: the first frame of a capture.
-    Unsettled {
-        request: Request,
-        response: Response,
-    },
+    Unsettled,
     /// The PDU breaks its function's layout either way.
-    Malformed(Reading),
+    Malformed,
+}
+
+impl Role {
+    /// The ways the frame is shown to read.
+    pub(super) fn ways(&self) -> Ways {
+        match self {
+            Role::Request => Ways::Request,
+            Role::Answer { .. } => Ways::Answer,
+            Role::Unsettled => Ways::Both,
+            Role::Malformed => Ways::Neither,
+        }
+    }
 }
 
 #[derive(Default)]
@@ -54,41 +111,39 @@ pub(super) struct Unanswered {
 }
 
 impl Pairer {
-    /// Reads one valid frame, its PDU already read; `start` and `end` are the arrival
-    /// times of its first and last byte. A request that was still waiting when another
-    /// came is returned as unanswered.
+    /// Reads one valid frame of `slave`, its PDU `pdu`, which reads `ways`; `start` and
+    /// `end` are the arrival times of its first and last byte. A request that was still
+    /// waiting when another came is returned as unanswered.
     pub(super) fn read(
         &mut self,
         slave: u8,
-        reading: Reading,
+        pdu: &[u8],
+        ways: Ways,
         start: Option<u64>,
         end: Option<u64>,
     ) -> (Role, Option<Unanswered>) {
         let first = !std::mem::replace(&mut self.seen, true);
-        match reading {
-            Reading::One(Pdu::Request(request)) => {
-                let unanswered = self.wait_for(slave, request.clone(), start, end);
-                (Role::Request(request), unanswered)
+        match ways {
+            Ways::Request => {
+                let unanswered = self.wait_for(slave, RequestSent::new(pdu, true), start, end);
+                (Role::Request, unanswered)
             }
-            Reading::One(pdu) => (self.answer(pdu, slave), None),
-            Reading::Both { request, response } => {
-                let response = Pdu::Response(response);
+            Ways::Answer => (self.answer(pdu, slave), None),
+            Ways::Both => {
                 let answers_pending = self
                     .pending
                     .as_ref()
-                    .is_some_and(|p| p.slave == slave && check(&p.request, &response).is_ok());
+                    .is_some_and(|p| p.slave == slave && p.request.fit(pdu, true).is_ok());
                 if answers_pending {
-                    return (self.answer(response, slave), None);
+                    return (self.answer(pdu, slave), None);
                 }
-                let unanswered = self.wait_for(slave, request.clone(), start, end);
-                match (first, response) {
-                    (true, Pdu::Response(response)) => {
-                        (Role::Unsettled { request, response }, unanswered)
-                    }
-                    _ => (Role::Request(request), unanswered),
+                let unanswered = self.wait_for(slave, RequestSent::new(pdu, true), start, end);
+                match first {
+                    true => (Role::Unsettled, unanswered),
+                    false => (Role::Request, unanswered),
                 }
             }
-            neither @ Reading::Neither { .. } => (Role::Malformed(neither), None),
+            Ways::Neither => (Role::Malformed, None),
         }
     }
 
@@ -118,7 +173,7 @@ impl Pairer {
         end: Option<u64>,
     ) -> Option<Unanswered> {
         self.seen = true;
-        let Some((&function, data)) = pdu.split_first() else {
+        let Some(&function) = pdu.first() else {
             return self.give_up(start);
         };
         match direction {
@@ -128,28 +183,21 @@ impl Pairer {
                 }
                 None
             }
-            Direction::Request => {
-                let request = Request::Other {
-                    function,
-                    data: data.to_vec(),
-                };
-                self.wait_for(slave, request, start, end)
-            }
+            Direction::Request => self.wait_for(slave, RequestSent::new(pdu, false), start, end),
         }
     }
 
     fn awaits(&self, slave: u8, function: u8) -> bool {
         self.pending
             .as_ref()
-            .is_some_and(|p| p.slave == slave && p.request.function() == function & 0x7F)
+            .is_some_and(|p| p.slave == slave && p.request.function() == function & !EXCEPTION_FLAG)
     }
 
-    fn answer(&mut self, pdu: Pdu, slave: u8) -> Role {
+    fn answer(&mut self, pdu: &[u8], slave: u8) -> Role {
         let fit = match &self.pending {
-            Some(p) if p.slave == slave => check(&p.request, &pdu),
+            Some(p) if p.slave == slave => p.request.fit(pdu, true),
             _ => {
                 return Role::Answer {
-                    pdu,
                     to: None,
                     mismatch: None,
                 }
@@ -157,20 +205,17 @@ impl Pairer {
         };
         match fit {
             Ok(()) => Role::Answer {
-                pdu,
                 to: self.pending.take().map(|p| p.request),
                 mismatch: None,
             },
             // Another function's answer is not this request's.
             Err(Mismatch::Function { .. }) => Role::Answer {
-                pdu,
                 to: None,
                 mismatch: None,
             },
             Err(mismatch) => {
                 self.pending = None;
                 Role::Answer {
-                    pdu,
                     to: None,
                     mismatch: Some(mismatch),
                 }
@@ -181,7 +226,7 @@ impl Pairer {
     fn wait_for(
         &mut self,
         slave: u8,
-        request: Request,
+        request: RequestSent,
         start: Option<u64>,
         end: Option<u64>,
     ) -> Option<Unanswered> {
@@ -231,10 +276,10 @@ mod tests {
     fn an_echo_is_the_answer_of_the_request_before_it() {
         let mut pairer = Pairer::default();
         let write = [0x06, 0x00, 0x01, 0x00, 0x03];
-        let (first, _) = pairer.read(17, Reading::infer(&write), Some(0), Some(1));
+        let (first, _) = pairer.read(17, &write, Ways::of(&write), Some(0), Some(1));
         // Nothing came before it: it could be either.
         assert!(matches!(first, Role::Unsettled { .. }));
-        let (second, _) = pairer.read(17, Reading::infer(&write), Some(2), Some(3));
+        let (second, _) = pairer.read(17, &write, Ways::of(&write), Some(2), Some(3));
         assert!(matches!(second, Role::Answer { to: Some(_), .. }));
     }
 
@@ -242,17 +287,14 @@ mod tests {
     fn an_eight_byte_coil_frame_is_settled_by_the_pending_request() {
         let mut pairer = Pairer::default();
         let exception = [0x83, 0x02];
-        pairer.read(17, Reading::infer(&exception), None, None);
+        pairer.read(17, &exception, Ways::of(&exception), None, None);
         // Read 10 coils at 0x0300: the bytes 01 03 00 00 0A also read as an answer with
         // 3 bytes of bits. After another frame, it is the master's next request.
         let request = [0x01, 0x03, 0x00, 0x00, 0x0A];
-        let (role, _) = pairer.read(17, Reading::infer(&request), None, None);
-        assert!(matches!(
-            role,
-            Role::Request(Request::ReadCoils { quantity: 10, .. })
-        ));
+        let (role, _) = pairer.read(17, &request, Ways::of(&request), None, None);
+        assert!(matches!(role, Role::Request));
         let answer = [0x01, 0x02, 0xFF, 0x03];
-        let (role, _) = pairer.read(17, Reading::infer(&answer), None, None);
+        let (role, _) = pairer.read(17, &answer, Ways::of(&answer), None, None);
         assert!(matches!(role, Role::Answer { to: Some(_), .. }));
     }
 
@@ -260,10 +302,10 @@ mod tests {
     fn an_answer_that_does_not_fit_the_request_awaiting_it_answers_it_and_says_how() {
         let mut pairer = Pairer::default();
         let read_two = [0x03, 0x00, 0x00, 0x00, 0x02];
-        pairer.read(17, Reading::infer(&read_two), None, None);
+        pairer.read(17, &read_two, Ways::of(&read_two), None, None);
         // Another function's answer is not its answer: it still waits.
         let coils = [0x01, 0x01, 0x05];
-        let (role, _) = pairer.read(17, Reading::infer(&coils), None, None);
+        let (role, _) = pairer.read(17, &coils, Ways::of(&coils), None, None);
         assert!(matches!(
             role,
             Role::Answer {
@@ -274,7 +316,7 @@ mod tests {
         ));
         // One register for two: its answer, which says so.
         let one_register = [0x03, 0x02, 0x00, 0x05];
-        let (role, _) = pairer.read(17, Reading::infer(&one_register), None, None);
+        let (role, _) = pairer.read(17, &one_register, Ways::of(&one_register), None, None);
         let Role::Answer { to, mismatch, .. } = role else {
             panic!("{role:?}");
         };
@@ -284,7 +326,7 @@ mod tests {
             Some("answer carries registers: 1, the request asked for 2")
         );
         // Answered: the next request reports none waiting.
-        let (_, unanswered) = pairer.read(17, Reading::infer(&read_two), None, None);
+        let (_, unanswered) = pairer.read(17, &read_two, Ways::of(&read_two), None, None);
         assert_eq!(unanswered, None);
     }
 
@@ -292,8 +334,8 @@ mod tests {
     fn a_request_after_an_unanswered_one_reports_it() {
         let mut pairer = Pairer::default();
         let read = [0x03, 0x00, 0x6B, 0x00, 0x03];
-        pairer.read(17, Reading::infer(&read), Some(0), Some(4000));
-        let (_, unanswered) = pairer.read(17, Reading::infer(&read), Some(104_000), Some(108_000));
+        pairer.read(17, &read, Ways::of(&read), Some(0), Some(4000));
+        let (_, unanswered) = pairer.read(17, &read, Ways::of(&read), Some(104_000), Some(108_000));
         assert_eq!(unanswered.map(|u| u.waited), Some(Some(100_000)));
     }
 }

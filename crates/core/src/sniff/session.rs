@@ -8,7 +8,8 @@ use serde::Serialize;
 
 use super::pairing::{Pairer, Role, Unanswered};
 use crate::codec::framing::{Ahead, Broken, Event, Found, FoundAhead, Framer, Noise, NoiseBytes};
-use crate::codec::{Direction, Envelope, Mismatch, Mode, Pdu, Reading, Request};
+use crate::codec::function::EXCEPTION_FLAG;
+use crate::codec::{Direction, Envelope, Mismatch, Mode, Request, Ways};
 use crate::describe::{
     describe_as, describe_frame, describe_reading, locate_answer, FrameReport, Kind,
 };
@@ -106,7 +107,8 @@ pub struct FrameRecord {
 #[derive(Clone, Debug)]
 struct SessionReading {
     mode: Mode,
-    reading: Reading,
+    /// The ways its PDU is read.
+    ways: Ways,
     /// The request a read answer answers, which gives its addresses.
     answers: Option<Request>,
 }
@@ -127,19 +129,20 @@ impl FrameRecord {
         }
     }
 
-    /// A valid frame whose report is worked out from `reading` when first asked for: the
-    /// PDU as read, and the request a read answer answers, which gives its addresses.
+    /// A valid frame whose report is worked out when first asked for: its PDU read the
+    /// `ways` it was found to read, and a read answer given the addresses of the request
+    /// it `answers`.
     pub(super) fn read(
         number: u64,
         found: Found,
         at: u64,
         mode: Mode,
-        reading: Reading,
+        ways: Ways,
         answers: Option<Request>,
     ) -> Self {
         let reading = SessionReading {
             mode,
-            reading,
+            ways,
             answers,
         };
         Self {
@@ -169,7 +172,7 @@ impl FrameRecord {
             let Ok(envelope) = Envelope::open_sound(read.mode, bytes) else {
                 return describe_frame(bytes, Some(read.mode), None);
             };
-            let mut report = describe_reading(read.mode, &envelope, read.reading);
+            let mut report = describe_reading(read.mode, &envelope, read.ways.read(&envelope.pdu));
             if let Some(request) = &read.answers {
                 locate_answer(&mut report, request, &envelope.pdu);
             }
@@ -507,7 +510,7 @@ impl Session {
         {
             out.push(Record::Unanswered {
                 slave,
-                request: unanswered.pending.request,
+                request: unanswered.pending.request.request(),
                 waited: unanswered.waited,
                 capture_ended: unanswered.capture_ended,
                 tcp: None,
@@ -608,20 +611,20 @@ impl Session {
             });
         };
         let function = envelope.pdu.first().copied().unwrap_or_default();
-        // The PDU is read once: to pair it, and then to describe that reading.
-        let reading = Reading::infer(&envelope.pdu);
+        // Paired by which ways its bytes read; what they say is read only if it is shown.
+        let ways = Ways::of(&envelope.pdu);
         // A malformed frame is read the way it travels: as the framer found it, or, where
         // its layout is the same both ways (a 05 or 06 echo), as the conversation before
         // it has it.
-        let malformed_travels = match reading {
-            Reading::Neither { .. } => found
+        let malformed_travels = match ways {
+            Ways::Neither => found
                 .direction
                 .or_else(|| self.pairer.way_of_malformed(envelope.slave, function)),
             _ => None,
         };
-        let (role, unanswered) = self
-            .pairer
-            .read(envelope.slave, reading, found.start, found.end);
+        let (role, unanswered) =
+            self.pairer
+                .read(envelope.slave, &envelope.pdu, ways, found.start, found.end);
         if let Some(unanswered) = unanswered {
             self.unanswered(unanswered, out);
         }
@@ -629,9 +632,10 @@ impl Session {
             self.pair_malformed(&envelope, direction, &found, out);
         }
         let kind = match &role {
-            Role::Request(_) | Role::Unsettled { .. } => Some(Kind::Request),
-            Role::Answer { pdu, .. } => Some(Kind::of(pdu)),
-            Role::Malformed(_) => None,
+            Role::Request | Role::Unsettled => Some(Kind::Request),
+            Role::Answer { .. } if function & EXCEPTION_FLAG != 0 => Some(Kind::Exception),
+            Role::Answer { .. } => Some(Kind::Response),
+            Role::Malformed => None,
         };
         self.counts.tell(envelope.slave, kind);
         self.counts.malformed += u64::from(kind.is_none());
@@ -645,35 +649,26 @@ impl Session {
         if !self.filter.shows(envelope.slave, function) {
             return None;
         }
-        let mut mismatch = None;
-        let (reading, answers, paired) = match role {
-            Role::Request(request) => (Reading::One(Pdu::Request(request)), None, false),
-            Role::Answer {
-                pdu,
-                to,
-                mismatch: misfit,
-            } => {
+        let ways = role.ways();
+        let (answers, paired, mismatch) = match role {
+            Role::Answer { to, mismatch } => {
                 let paired = to.is_some();
-                mismatch = misfit;
                 // Only a read's answer takes its addresses from the request.
-                let answers = to.filter(|_| matches!(pdu, Pdu::Response(_)));
-                (Reading::One(pdu), answers, paired)
-            }
-            Role::Unsettled { request, response } => {
-                (Reading::Both { request, response }, None, false)
+                let answers = to.filter(|_| kind == Some(Kind::Response));
+                (answers.map(|to| to.request()), paired, mismatch)
             }
             // Where it is known which way it travels, it is read that way and told what is
             // wrong with it as that, as it is after noise.
-            Role::Malformed(_) if malformed_travels.is_some() => {
+            Role::Malformed if malformed_travels.is_some() => {
                 let report = self.describe_invalid(&found, malformed_travels);
                 let at = self.at(found.start, found.offset);
                 return Some(FrameRecord::new(number, found, at, report));
             }
-            Role::Malformed(reading) => (reading, None, false),
+            _ => (None, false, None),
         };
         let mode = self.mode;
         let at = self.at(found.start, found.offset);
-        let mut record = FrameRecord::read(number, found, at, mode, reading, answers);
+        let mut record = FrameRecord::read(number, found, at, mode, ways, answers);
         record.paired = paired;
         record.mismatch = mismatch;
         Some(record)

@@ -10,11 +10,12 @@ use std::net::SocketAddr;
 use serde::Serialize;
 
 use super::capture::{datagram, segment, Datagram, Packet};
+use super::pairing::RequestSent;
 use super::reassembly::{At, Piece, Stream};
 use super::session::{Counts, Filter, FrameRecord, Record, TcpPlace};
-use crate::codec::answer::{check, Mismatch};
+use crate::codec::answer::Mismatch;
 use crate::codec::framing::{Broken, Event, Found, Framer};
-use crate::codec::{Direction, Envelope, Mode, Pdu, Reading, Request, Response};
+use crate::codec::{Direction, Envelope, Mode, Pdu, Ways};
 use crate::describe::{describe_frame, FrameReport, Kind};
 
 /// At most this many requests of one connection wait on one transaction and unit id: a
@@ -103,7 +104,7 @@ impl Side {
 struct Pending {
     slave: u8,
     transaction: u16,
-    request: Request,
+    request: RequestSent,
     /// When its last byte came.
     time: u64,
     packet: u64,
@@ -144,12 +145,13 @@ enum Seen {
         slave: u8,
         /// As on the wire, with the 0x80 flag of an exception.
         function: u8,
+        /// A request, or an answer that reads as one (the way it travelled).
         kind: Kind,
-        reading: Reading,
         /// The request a read's answer answers.
-        answers: Option<Request>,
+        answers: Option<RequestSent>,
     },
-    Described(FrameReport),
+    /// Boxed: rare, and large beside a frame read.
+    Described(Box<FrameReport>),
 }
 
 /// A Modbus TCP capture's session: packets in, records out.
@@ -497,7 +499,7 @@ impl TcpSession {
             };
             out.push(Record::Unanswered {
                 slave: pending.slave,
-                request: pending.request,
+                request: pending.request.request(),
                 waited: Some(self.last_time.saturating_sub(pending.time)).filter(|w| *w > 0),
                 capture_ended,
                 tcp: Some((place, pending.transaction)),
@@ -550,69 +552,46 @@ impl TcpSession {
         let mut mismatch = None;
         let seen = match (found.broken, Envelope::open(self.mode, &found.bytes)) {
             (None, Ok(envelope)) => {
-                let decoded = Pdu::decode(&envelope.pdu, direction);
+                // Paired by its bytes; what they say is read only if it is shown.
+                let reads = Pdu::reads(&envelope.pdu, direction);
                 // A request that breaks its function's rules is still answered, with an
                 // exception: it waits for that answer all the same. A malformed answer
                 // still answers its request, which its header names.
-                let broken = match (&decoded, direction) {
-                    (Err(_), Direction::Request) => envelope.pdu.split_first().map(|(f, data)| {
-                        Pdu::Request(Request::Other {
-                            function: *f,
-                            data: data.to_vec(),
-                        })
-                    }),
-                    (Err(_), _) if self.mode == Mode::Tcp => {
-                        envelope.pdu.split_first().map(|(f, data)| {
-                            Pdu::Response(Response::Other {
-                                function: *f,
-                                data: data.to_vec(),
-                            })
-                        })
-                    }
-                    _ => None,
-                };
-                let request = match (decoded.as_ref().ok(), &broken) {
-                    (Some(pdu), _) => self.pair(
+                let paired = !envelope.pdu.is_empty()
+                    && (reads || direction == Direction::Request || self.mode == Mode::Tcp);
+                let request = match paired {
+                    true => self.pair(
                         &envelope,
-                        pdu,
-                        false,
+                        direction,
+                        !reads,
                         key,
                         time,
                         &mut place,
                         &mut mismatch,
                         out,
                     ),
-                    (None, Some(pdu)) => self.pair(
-                        &envelope,
-                        pdu,
-                        true,
-                        key,
-                        time,
-                        &mut place,
-                        &mut mismatch,
-                        out,
-                    ),
-                    (None, None) => None,
+                    false => None,
                 };
-                match decoded {
-                    Ok(pdu) => {
+                let function = envelope.pdu.first().copied().unwrap_or_default();
+                match reads {
+                    true => {
+                        let kind = Kind::travelling(direction, function);
                         // Only a read's answer takes its addresses from the request.
-                        let answers = request.filter(|_| matches!(pdu, Pdu::Response(_)));
+                        let answers = request.filter(|_| kind == Kind::Response);
                         Seen::Read {
                             slave: envelope.slave,
-                            function: envelope.pdu.first().copied().unwrap_or_default(),
-                            kind: Kind::of(&pdu),
-                            reading: Reading::One(pdu),
+                            function,
+                            kind,
                             answers,
                         }
                     }
-                    Err(_) => {
+                    false => {
                         self.counts.malformed += 1;
-                        Seen::Described(describe_frame(
+                        Seen::Described(Box::new(describe_frame(
                             &found.bytes,
                             Some(self.mode),
                             Some(direction),
-                        ))
+                        )))
                     }
                 }
             }
@@ -634,7 +613,7 @@ impl TcpSession {
                         Some("incomplete: bytes of the frame are missing from the capture".into());
                 }
                 self.counts.crc_errors += u64::from(broken == Some(Broken::Checksum));
-                Seen::Described(report)
+                Seen::Described(Box::new(report))
             }
         };
         let (slave, function, kind) = match &seen {
@@ -654,10 +633,15 @@ impl TcpSession {
         if self.filter.shows(slave, function) {
             let (number, at) = (self.numbered, self.at(Some(time)));
             let mut record = match seen {
-                Seen::Read {
-                    reading, answers, ..
-                } => FrameRecord::read(number, found, at, self.mode, reading, answers),
-                Seen::Described(report) => FrameRecord::new(number, found, at, report),
+                Seen::Read { kind, answers, .. } => {
+                    let ways = match kind {
+                        Kind::Request => Ways::Request,
+                        _ => Ways::Answer,
+                    };
+                    let answers = answers.map(|request| request.request());
+                    FrameRecord::read(number, found, at, self.mode, ways, answers)
+                }
+                Seen::Described(report) => FrameRecord::new(number, found, at, *report),
             };
             record.paired = place.request_packet.is_some();
             record.mismatch = mismatch;
@@ -674,20 +658,20 @@ impl TcpSession {
     fn pair(
         &mut self,
         envelope: &Envelope,
-        pdu: &Pdu,
+        direction: Direction,
         malformed: bool,
         key: Key,
         time: u64,
         place: &mut TcpPlace,
         mismatch: &mut Option<Mismatch>,
         out: &mut Vec<Record>,
-    ) -> Option<Request> {
+    ) -> Option<RequestSent> {
         let by_transaction = self.mode == Mode::Tcp;
         let connection = self.connections.get_mut(&key)?;
         let slave = envelope.slave;
         let transaction = envelope.transaction;
-        match pdu {
-            Pdu::Request(request) => {
+        match direction {
+            Direction::Request => {
                 // A client may send requests with one transaction id before the first is
                 // answered (pipelined): they wait in order. Past a bound, the oldest of them
                 // is taken as unanswered, so that a client that never gets an answer holds
@@ -701,7 +685,7 @@ impl TcpSession {
                 let pending = Pending {
                     slave,
                     transaction,
-                    request: request.clone(),
+                    request: RequestSent::new(&envelope.pdu, !malformed),
                     time,
                     packet: place.packet,
                 };
@@ -712,16 +696,13 @@ impl TcpSession {
                 }
                 None
             }
-            answer => {
+            Direction::Response => {
                 // MBAP pairs by transaction and unit id, RTU by unit and function: with the
                 // oldest request waiting that the answer fits (a write's echo, a read's
                 // count); over MBAP, one that fits none still answers the oldest of its
                 // transaction, and is told as not fitting it.
-                let fits = |p: &Pending| {
-                    p.request.function() == answer.function() & 0x7F
-                        && (matches!(answer, Pdu::Exception(_))
-                            || check(&p.request, answer).is_ok())
-                };
+                let answer = &envelope.pdu;
+                let fits = |p: &Pending| p.request.fit(answer, !malformed).is_ok();
                 let waiting: Vec<usize> = (0..connection.pending.len())
                     .filter(|i| {
                         let p = &connection.pending[*i];
@@ -741,7 +722,7 @@ impl TcpSession {
                     (None, false) => return None,
                 };
                 if fitting.is_none() && !malformed {
-                    *mismatch = check(&connection.pending[index].request, answer).err();
+                    *mismatch = connection.pending[index].request.fit(answer, true).err();
                 }
                 let pending = connection.pending.remove(index);
                 place.request_packet = Some(pending.packet);

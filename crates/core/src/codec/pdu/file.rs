@@ -48,6 +48,27 @@ pub fn read_answer_group_len(count: u16) -> usize {
     2 + 2 * usize::from(count)
 }
 
+/// The record counts a Read File Record request (that reads) asks for, group by group.
+pub(crate) fn counts_asked(request: &[u8]) -> impl Iterator<Item = u16> + Clone + '_ {
+    // Function, byte count; then groups of seven bytes: type, file, record, count.
+    request
+        .get(2..)
+        .unwrap_or_default()
+        .chunks_exact(7)
+        .map(|group| u16::from_be_bytes([group[5], group[6]]))
+}
+
+/// The records of each group of a Read File Record answer (that reads), group by group.
+pub(crate) fn counts_answered(answer: &[u8]) -> impl Iterator<Item = usize> + Clone + '_ {
+    // Function, byte count; then groups of a length byte, the type and the registers.
+    let mut groups = answer.get(2..).unwrap_or_default();
+    std::iter::from_fn(move || {
+        let (&len, rest) = groups.split_first()?;
+        groups = rest.get(usize::from(len)..).unwrap_or_default();
+        Some(usize::from(len).saturating_sub(1) / 2)
+    })
+}
+
 /// Why a group's file and records are no place in a file: a file 0, a record past 9999.
 fn check_place(file: u16, record: u16, count: usize) -> Result<(), PduError> {
     if file == 0 {

@@ -306,6 +306,12 @@ impl Pdu {
         Self::read(pdu, direction, Values::Kept)
     }
 
+    /// Whether `pdu` reads travelling in `direction`, as [`Pdu::decode`] would find,
+    /// without taking its values.
+    pub fn reads(pdu: &[u8], direction: Direction) -> bool {
+        Self::read(pdu, direction, Values::Skipped).is_ok()
+    }
+
     /// `decode`, keeping of the values only what `values` says.
     pub(crate) fn read(pdu: &[u8], direction: Direction, values: Values) -> Result<Pdu, PduError> {
         let function = *pdu.first().ok_or(PduError::Empty)?;
@@ -361,6 +367,57 @@ impl Reading {
                 as_response,
             },
         }
+    }
+}
+
+/// Which ways the bytes of a PDU read by their function's layouts, their values left
+/// unread: what a conversation is followed by, before anyone asks what the PDU says.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Ways {
+    /// As a request only.
+    Request,
+    /// As an answer only: a normal response or an exception.
+    Answer,
+    /// As either.
+    Both,
+    /// As neither.
+    Neither,
+}
+
+impl Ways {
+    /// Which ways `pdu` reads, as [`Reading::infer`] would find, without taking its values.
+    pub fn of(pdu: &[u8]) -> Ways {
+        if pdu.first().is_some_and(|f| f & EXCEPTION_FLAG != 0) {
+            return match Exception::decode(pdu) {
+                Ok(_) => Ways::Answer,
+                Err(_) => Ways::Neither,
+            };
+        }
+        let as_request = Request::read(pdu, Values::Skipped).is_ok();
+        let as_response = Response::read(pdu, Values::Skipped).is_ok();
+        match (as_request, as_response) {
+            (true, true) => Ways::Both,
+            (true, false) => Ways::Request,
+            (false, true) => Ways::Answer,
+            (false, false) => Ways::Neither,
+        }
+    }
+
+    /// `pdu` read these ways, values and all: one way, both, or neither with why not.
+    pub fn read(self, pdu: &[u8]) -> Reading {
+        let read = match self {
+            Ways::Request => Pdu::decode(pdu, Direction::Request).map(Reading::One),
+            Ways::Answer => Pdu::decode(pdu, Direction::Response).map(Reading::One),
+            Ways::Both => Request::decode(pdu).and_then(|request| {
+                Ok(Reading::Both {
+                    request,
+                    response: Response::decode(pdu)?,
+                })
+            }),
+            Ways::Neither => return Reading::infer(pdu),
+        };
+        // Bytes that do not read the ways they were said to are read as they are.
+        read.unwrap_or_else(|_| Reading::infer(pdu))
     }
 }
 
@@ -446,6 +503,24 @@ mod tests {
 
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(3000))]
+
+        /// The ways a PDU reads, its values unread, are the ways it is read with them; and
+        /// read those ways, it is what reading it from scratch finds.
+        #[test]
+        fn the_ways_a_pdu_reads_are_the_reading_of_it(
+            pdu in prop_oneof![near_pdu(), vec(any::<u8>(), 0..300)],
+        ) {
+            let reading = Reading::infer(&pdu);
+            let ways = Ways::of(&pdu);
+            let expected = match &reading {
+                Reading::One(Pdu::Request(_)) => Ways::Request,
+                Reading::One(_) => Ways::Answer,
+                Reading::Both { .. } => Ways::Both,
+                Reading::Neither { .. } => Ways::Neither,
+            };
+            prop_assert_eq!(ways, expected);
+            prop_assert_eq!(ways.read(&pdu), reading);
+        }
 
         /// Reading without keeping the values says what decoding says, error for error.
         #[test]
