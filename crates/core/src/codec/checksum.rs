@@ -120,7 +120,6 @@ pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
     for run in 1..4 {
         registers[run] = carried(registers[run - 1], &bytes[starts[run - 1]..starts[run]]);
     }
-    let last_run_start = registers[3];
     // Each run checks its last length after the loop, so that no byte past `max_len` is
     // read.
     for offset in 0..per_run.saturating_sub(1) {
@@ -131,17 +130,21 @@ pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
             *register = step(*register, bytes[start + offset]);
         }
     }
+    // The lengths the runs leave over go on from the register at the last run's end.
+    let rest = min_len + 4 * per_run;
+    let mut register = registers[3];
     if let Some(last) = per_run.checked_sub(1) {
         for (register, start) in registers.iter().zip(starts) {
             if *register == 0 {
                 matches.push(start + last);
             }
         }
+        if rest <= max_len {
+            register = step(registers[3], bytes[rest - 1]);
+        }
     }
     // The few lengths the runs leave over, one after the other.
-    let rest = min_len + 4 * per_run;
     if rest <= max_len {
-        let mut register = carried(last_run_start, &bytes[starts[3]..rest]);
         if register == 0 {
             matches.push(rest);
         }

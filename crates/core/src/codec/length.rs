@@ -115,6 +115,29 @@ static LAYOUTS: [[Layout; 256]; 2] = {
     layouts
 };
 
+/// The function codes whose PDU has a layout in at least one direction. Most bytes a
+/// noisy line gives are none, and a position whose function byte is one of those is no
+/// frame of known layout, whatever follows.
+static SIZED: [bool; 256] = {
+    let mut sized = [false; 256];
+    let mut function = 0;
+    while function < 256 {
+        sized[function] = has_layout(LAYOUTS[0][function]) || has_layout(LAYOUTS[1][function]);
+        function += 1;
+    }
+    sized
+};
+
+const fn has_layout(layout: Layout) -> bool {
+    !matches!(layout, Layout::Other(Other::Unknown | Other::Never))
+}
+
+/// Whether a PDU of `function` has a layout either way.
+#[inline]
+pub(crate) fn sized(function: u8) -> bool {
+    SIZED[usize::from(function)]
+}
+
 /// The length of the PDU that starts `pdu` (function code first).
 #[inline]
 pub(crate) fn pdu_length(pdu: &[u8], direction: Direction) -> Length {

@@ -4,7 +4,7 @@
 use smallvec::SmallVec;
 
 use crate::codec::checksum::crc_matches;
-use crate::codec::length::{rtu_frame_length, Length};
+use crate::codec::length::{rtu_frame_length, sized, Length};
 use crate::codec::limits::MAX_RTU_ADU;
 use crate::codec::Direction;
 
@@ -261,6 +261,10 @@ impl Framer {
     #[inline(always)]
     pub(super) fn find_candidates(&self, at: usize, found: &mut Candidates) {
         let data = &self.buffer[at..];
+        // Most bytes of a noisy line begin no frame either way: told by one lookup.
+        if data.get(1).is_some_and(|function| !sized(*function)) && !may_lack_layout(data) {
+            return;
+        }
         let mut unknown_done = false;
         for direction in [Direction::Request, Direction::Response] {
             match rtu_frame_length(data, direction) {
@@ -370,6 +374,9 @@ impl Framer {
     /// by `end`.
     pub(super) fn known_frame_len(&self, at: usize, end: usize) -> Option<usize> {
         let data = &self.buffer[at..end.min(self.buffer.len())];
+        if data.get(1).is_some_and(|function| !sized(*function)) {
+            return None;
+        }
         [Direction::Request, Direction::Response]
             .into_iter()
             .find_map(|direction| match rtu_frame_length(data, direction) {
