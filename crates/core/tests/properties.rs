@@ -6,6 +6,7 @@ use mbtool_core::codec::framing::{Event, Framer};
 use mbtool_core::codec::{DeviceIdentification, DeviceObject, FileRecords, FileSpan};
 use mbtool_core::codec::{
     Direction, Envelope, Exception, ExceptionCode, Frame, Mode, Pdu, Reading, Request, Response,
+    Ways,
 };
 use mbtool_core::describe::describe_frame;
 use mbtool_core::input::hexinput::read_line;
@@ -372,6 +373,33 @@ fn traffic(mode: Mode) -> impl Strategy<Value = Vec<u8>> {
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    /// The ways a PDU of any function reads, told without reading its values, are the
+    /// ways reading it finds: whole, or with a byte changed, cut or added.
+    #[test]
+    fn the_ways_any_pdu_reads_are_told_as_reading_it_finds(
+        pdu in any_pdu(),
+        change in 0..4u8,
+        at in any::<prop::sample::Index>(),
+        byte in any::<u8>(),
+    ) {
+        let mut bytes = Vec::new();
+        pdu.encode(&mut bytes).unwrap();
+        let at = at.index(bytes.len());
+        match change {
+            1 => bytes[at] = byte,
+            2 => bytes.truncate(at),
+            3 => bytes.push(byte),
+            _ => {}
+        }
+        let expected = match Reading::infer(&bytes) {
+            Reading::One(Pdu::Request(_)) => Ways::Request,
+            Reading::One(_) => Ways::Answer,
+            Reading::Both { .. } => Ways::Both,
+            Reading::Neither { .. } => Ways::Neither,
+        };
+        prop_assert_eq!(Ways::of(&bytes), expected, "{:02X?}", bytes);
+    }
 
     /// A master that has sent a request takes its answer on the answer's last byte, never
     /// waiting for silence or its timeout: the layout and the request tell the length.
