@@ -389,7 +389,9 @@ fn read_ahead(
     let mut read = 0u64;
     let mut blocks = 0usize;
     let mut ended = false;
-    let mut writer_busy = false;
+    // Until the first block shows how many of its frames are shown, the writer is taken to
+    // be busy: blocks framed ahead then would take the core it needs.
+    let mut writer_busy = true;
     let mut few_frames = false;
     let mut in_order_for = 0usize;
     let mut missed = 0u32;
