@@ -56,12 +56,14 @@ def serve(connection):
     except OSError:
         pass
     finally:
-        if server is not None:
-            server.close()
-        connection.close()
+        # Counted closed before the client can see it closed: a client that connects again
+        # as soon as it does is otherwise counted open beside this one.
         with lock:
             state["open"] -= 1
             write()
+        if server is not None:
+            server.close()
+        connection.close()
 
 
 listener = socket.socket()
