@@ -9,7 +9,7 @@ use serde::Serialize;
 use super::pairing::{Pairer, Role, Unanswered};
 use crate::codec::framing::{Ahead, Broken, Event, Found, FoundAhead, Framer, Noise, NoiseBytes};
 use crate::codec::function::EXCEPTION_FLAG;
-use crate::codec::{Direction, Envelope, Mismatch, Mode, Reading, Request, Ways};
+use crate::codec::{Direction, Envelope, Mismatch, Mode, Request, Ways};
 use crate::describe::{
     describe_as, describe_frame, describe_reading, locate_answer, FrameReport, Kind,
 };
@@ -107,8 +107,8 @@ pub struct FrameRecord {
 #[derive(Clone, Debug)]
 struct SessionReading {
     mode: Mode,
-    /// Its PDU, read.
-    reading: Reading,
+    /// The ways its PDU is read.
+    ways: Ways,
     /// The request a read answer answers, which gives its addresses.
     answers: Option<Request>,
 }
@@ -129,19 +129,20 @@ impl FrameRecord {
         }
     }
 
-    /// A valid frame whose report is worked out from `reading` when first asked for: the
-    /// PDU as read, and the request a read answer answers, which gives its addresses.
+    /// A valid frame whose report is worked out when first asked for: its PDU read the
+    /// `ways` it was found to read, and a read answer given the addresses of the request
+    /// it `answers`.
     pub(super) fn read(
         number: u64,
         found: Found,
         at: u64,
         mode: Mode,
-        reading: Reading,
+        ways: Ways,
         answers: Option<Request>,
     ) -> Self {
         let reading = SessionReading {
             mode,
-            reading,
+            ways,
             answers,
         };
         Self {
@@ -171,7 +172,7 @@ impl FrameRecord {
             let Ok(envelope) = Envelope::open_sound(read.mode, bytes) else {
                 return describe_frame(bytes, Some(read.mode), None);
             };
-            let mut report = describe_reading(read.mode, &envelope, read.reading);
+            let mut report = describe_reading(read.mode, &envelope, read.ways.read(&envelope.pdu));
             if let Some(request) = &read.answers {
                 locate_answer(&mut report, request, &envelope.pdu);
             }
@@ -648,9 +649,7 @@ impl Session {
         if !self.filter.shows(envelope.slave, function) {
             return None;
         }
-        // Read here, not on the thread that writes it: writing every frame of a busy line
-        // is the slower side.
-        let reading = role.ways().read(&envelope.pdu);
+        let ways = role.ways();
         let (answers, paired, mismatch) = match role {
             Role::Answer { to, mismatch } => {
                 let paired = to.is_some();
@@ -669,7 +668,7 @@ impl Session {
         };
         let mode = self.mode;
         let at = self.at(found.start, found.offset);
-        let mut record = FrameRecord::read(number, found, at, mode, reading, answers);
+        let mut record = FrameRecord::read(number, found, at, mode, ways, answers);
         record.paired = paired;
         record.mismatch = mismatch;
         Some(record)

@@ -639,18 +639,7 @@ impl TcpSession {
                         _ => Ways::Answer,
                     };
                     let answers = answers.map(|request| request.request());
-                    // It opened when it was paired.
-                    let reading = Envelope::open(self.mode, &found.bytes)
-                        .map(|envelope| ways.read(&envelope.pdu));
-                    match reading {
-                        Ok(reading) => {
-                            FrameRecord::read(number, found, at, self.mode, reading, answers)
-                        }
-                        Err(_) => {
-                            let report = describe_frame(&found.bytes, Some(self.mode), None);
-                            FrameRecord::new(number, found, at, report)
-                        }
-                    }
+                    FrameRecord::read(number, found, at, self.mode, ways, answers)
                 }
                 Seen::Described(report) => FrameRecord::new(number, found, at, *report),
             };
