@@ -2,6 +2,16 @@
 
 use super::*;
 
+/// `mbtool sniff --json --input -`, its standard input and output pipes.
+fn sniffing_a_pipe() -> std::process::Child {
+    crate::support::mbtool_process()
+        .args(["sniff", "--json", "--input", "-"])
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .spawn()
+        .unwrap()
+}
+
 #[test]
 fn a_capture_piped_in_pieces_is_read_as_the_file_is() {
     // `tcpdump -w - | mbtool sniff --input -`: the file header may come in pieces, a byte
@@ -15,12 +25,7 @@ fn a_capture_piped_in_pieces_is_read_as_the_file_is() {
         .unwrap();
     assert_eq!(from_file.status.code(), Some(0));
     for split in [1, 8, 23] {
-        let mut child = crate::support::mbtool_process()
-            .args(["sniff", "--json", "--input", "-"])
-            .stdin(Stdio::piped())
-            .stdout(Stdio::piped())
-            .spawn()
-            .unwrap();
+        let mut child = sniffing_a_pipe();
         let mut stdin = child.stdin.take().unwrap();
         let pieces = capture.clone();
         let feeder = std::thread::spawn(move || {
@@ -45,12 +50,7 @@ fn a_capture_piped_in_pieces_is_read_as_the_file_is() {
 fn a_capture_piped_in_shows_each_frame_as_its_packet_comes() {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/captures/modbus-tcp.pcap");
     let capture = std::fs::read(&path).unwrap();
-    let mut child = crate::support::mbtool_process()
-        .args(["sniff", "--json", "--input", "-"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()
-        .unwrap();
+    let mut child = sniffing_a_pipe();
     let mut stdin = child.stdin.take().unwrap();
     // All but the last byte: the capture is still going on.
     std::io::Write::write_all(&mut stdin, &capture[..capture.len() - 1]).unwrap();

@@ -314,12 +314,17 @@ impl Frame {
 
     /// Reads a whole frame whose mode and direction are known; a bad checksum is an error.
     pub fn decode(mode: Mode, bytes: &[u8], direction: Direction) -> Result<Frame, FrameError> {
-        let envelope = Envelope::open(mode, bytes)?;
+        Self::read(&Envelope::open(mode, bytes)?, direction)
+    }
+
+    /// The frame inside an envelope already opened, travelling in `direction`; a bad
+    /// checksum is an error.
+    pub fn read(envelope: &Envelope, direction: Direction) -> Result<Frame, FrameError> {
         if let Some(error) = envelope.checksum.error() {
             return Err(error);
         }
         Ok(Frame {
-            mode,
+            mode: envelope.mode,
             slave: envelope.slave,
             transaction: envelope.transaction,
             pdu: Pdu::decode(&envelope.pdu, direction)?,

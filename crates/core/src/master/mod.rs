@@ -7,6 +7,7 @@ use std::time::{Duration, Instant};
 
 use thiserror::Error;
 
+use crate::codec::adu::wrap;
 use crate::codec::answer::{check, Mismatch};
 use crate::codec::framing::{Event, Framer};
 use crate::codec::{
@@ -492,16 +493,17 @@ impl Master {
             }
             self.sent.push_back((self.transaction, Instant::now()));
         }
-        let frame = Frame {
-            mode: self.options.mode,
-            slave,
-            transaction: self.transaction,
-            pdu: Pdu::Request(request.clone()),
-        };
-        let bytes = frame.encode()?;
-        // The request's PDU, which its answer is checked against.
+        // The request's PDU, which its answer is checked against, and its frame.
         let mut asked = Vec::new();
         request.encode(&mut asked)?;
+        let mut bytes = Vec::with_capacity(asked.len() * 2 + 9);
+        wrap(
+            self.options.mode,
+            slave,
+            self.transaction,
+            &asked,
+            &mut bytes,
+        );
         self.note(Traffic::Sent, &bytes);
         if self.options.mode != Mode::Tcp {
             self.framer.await_answer(slave, request.function());
@@ -547,12 +549,12 @@ impl Master {
         !gateway_has_none
     }
 
-    /// Whether a whole, valid frame, `frame` read from `bytes`, is the answer to the
-    /// request whose PDU is `asked`.
+    /// Whether a whole, valid frame, `frame` read from its PDU `answer`, is the answer to
+    /// the request whose PDU is `asked`.
     fn belongs(
         &self,
         frame: &Frame,
-        bytes: &[u8],
+        answer: &[u8],
         slave: u8,
         asked: &[u8],
     ) -> Result<(), Option<BadAnswer>> {
@@ -564,9 +566,7 @@ impl Master {
         if frame.slave != slave {
             return Err(Some(BadAnswer::OtherSlave(frame.slave)));
         }
-        let answer = Envelope::open(self.options.mode, bytes).map(|envelope| envelope.pdu);
-        check(asked, answer.as_deref().unwrap_or_default())
-            .map_err(|mismatch| Some(mismatch.into()))
+        check(asked, answer).map_err(|mismatch| Some(mismatch.into()))
     }
 
     /// Reads what the framer found, in order, until the answer.
@@ -578,25 +578,31 @@ impl Master {
             }
             match event {
                 Event::Frame(found) => {
-                    match Frame::decode(self.options.mode, &found.bytes, Direction::Response) {
-                        Ok(frame) => match self.belongs(&frame, &found.bytes, slave, asked) {
-                            Ok(()) => heard.answer = Some(frame.pdu),
-                            Err(None) => {
-                                heard.stale_bytes += found.bytes.len();
-                                self.heard_late(&frame);
-                            }
-                            Err(Some(reason)) => {
-                                // A late answer the slave asked owed is no fault of this
-                                // request; another slave's is still told (a scan learns
-                                // of a late slave by it).
-                                let owed = self.owed.pay_off(frame.slave, &frame.pdu);
-                                if owed && frame.slave == slave {
+                    let opened = Envelope::open(self.options.mode, &found.bytes);
+                    let read = opened.and_then(|envelope| {
+                        Frame::read(&envelope, Direction::Response).map(|frame| (frame, envelope))
+                    });
+                    match read {
+                        Ok((frame, envelope)) => {
+                            match self.belongs(&frame, &envelope.pdu, slave, asked) {
+                                Ok(()) => heard.answer = Some(frame.pdu),
+                                Err(None) => {
                                     heard.stale_bytes += found.bytes.len();
-                                } else {
-                                    heard.problem.get_or_insert(reason);
+                                    self.heard_late(&frame);
+                                }
+                                Err(Some(reason)) => {
+                                    // A late answer the slave asked owed is no fault of this
+                                    // request; another slave's is still told (a scan learns
+                                    // of a late slave by it).
+                                    let owed = self.owed.pay_off(frame.slave, &frame.pdu);
+                                    if owed && frame.slave == slave {
+                                        heard.stale_bytes += found.bytes.len();
+                                    } else {
+                                        heard.problem.get_or_insert(reason);
+                                    }
                                 }
                             }
-                        },
+                        }
                         Err(error) => {
                             heard.problem.get_or_insert(error.into());
                         }

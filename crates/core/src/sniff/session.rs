@@ -8,7 +8,6 @@ use serde::Serialize;
 
 use super::pairing::{Pairer, Role, Unanswered};
 use crate::codec::framing::{Ahead, Broken, Event, Found, FoundAhead, Framer, Noise, NoiseBytes};
-use crate::codec::function::EXCEPTION_FLAG;
 use crate::codec::{Direction, Envelope, Mismatch, Mode, Request, Ways};
 use crate::describe::{
     describe_as, describe_frame, describe_reading, locate_answer, FrameReport, Kind,
@@ -633,8 +632,7 @@ impl Session {
         }
         let kind = match &role {
             Role::Request | Role::Unsettled => Some(Kind::Request),
-            Role::Answer { .. } if function & EXCEPTION_FLAG != 0 => Some(Kind::Exception),
-            Role::Answer { .. } => Some(Kind::Response),
+            Role::Answer { .. } => Some(Kind::travelling(Direction::Response, function)),
             Role::Malformed => None,
         };
         self.counts.tell(envelope.slave, kind);
