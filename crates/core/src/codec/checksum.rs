@@ -121,14 +121,24 @@ pub fn crc_matches(bytes: &[u8], min_len: usize, max_len: usize) -> Vec<usize> {
         registers[run] = carried(registers[run - 1], &bytes[starts[run - 1]..starts[run]]);
     }
     // Each run checks its last length after the loop, so that no byte past `max_len` is
-    // read.
-    for offset in 0..per_run.saturating_sub(1) {
-        for (register, start) in registers.iter_mut().zip(starts) {
-            if *register == 0 {
-                matches.push(start + offset);
+    // read. The runs' bytes are walked side by side, without an index to check.
+    let run_bytes = |run: usize| &bytes[starts[run]..starts[run] + per_run.saturating_sub(1)];
+    let side_by_side = run_bytes(0)
+        .iter()
+        .zip(run_bytes(1))
+        .zip(run_bytes(2))
+        .zip(run_bytes(3));
+    for (offset, (((a, b), c), d)) in side_by_side.enumerate() {
+        let [r0, r1, r2, r3] = registers;
+        // Rarely is any register zero: one test for the four.
+        if r0.min(r1).min(r2.min(r3)) == 0 {
+            for (register, start) in registers.iter().zip(starts) {
+                if *register == 0 {
+                    matches.push(start + offset);
+                }
             }
-            *register = step(*register, bytes[start + offset]);
         }
+        registers = [step(r0, *a), step(r1, *b), step(r2, *c), step(r3, *d)];
     }
     // The lengths the runs leave over go on from the register at the last run's end.
     let rest = min_len + 4 * per_run;
