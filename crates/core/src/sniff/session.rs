@@ -86,8 +86,10 @@ pub struct FrameRecord {
     /// Microseconds from the start of the capture: when the first byte arrived, or, without
     /// timing, where the frame stands at the line's speed.
     pub at: u64,
-    /// What the frame says: see [`FrameRecord::report`].
-    report: OnceCell<FrameReport>,
+    /// What the frame says: see [`FrameRecord::report`]. Boxed: a record is written by the
+    /// session and read by the writer, every frame of a busy line, and a report is most of
+    /// its size.
+    report: OnceCell<Box<FrameReport>>,
     /// How the session read a valid frame, until its report is worked out from it.
     reading: RefCell<Option<SessionReading>>,
     /// Silence before the frame since the end of the previous one, in microseconds.
@@ -119,7 +121,7 @@ impl FrameRecord {
             number,
             found,
             at,
-            report: OnceCell::from(report),
+            report: OnceCell::from(Box::new(report)),
             reading: RefCell::new(None),
             gap: None,
             paired: false,
@@ -161,22 +163,25 @@ impl FrameRecord {
     /// is asked for, on the thread that asks: the one that shows the frame, not the one
     /// that finds it, so that a capture is framed and described side by side.
     pub fn report(&self) -> &FrameReport {
-        self.report.get_or_init(|| {
-            let bytes = &self.found.bytes;
-            let Some(read) = self.reading.borrow_mut().take() else {
-                // Every record has its report or its reading; this is a description all
-                // the same, from the bytes alone.
-                return describe_frame(bytes, None, None);
-            };
-            let Ok(envelope) = Envelope::open_sound(read.mode, bytes) else {
-                return describe_frame(bytes, Some(read.mode), None);
-            };
-            let mut report = describe_reading(read.mode, &envelope, read.ways.read(&envelope.pdu));
-            if let Some(request) = &read.answers {
-                locate_answer(&mut report, request, &envelope.pdu);
-            }
-            report
-        })
+        self.report.get_or_init(|| Box::new(self.work_out_report()))
+    }
+
+    /// The report of [`FrameRecord::report`], from the reading the session kept.
+    fn work_out_report(&self) -> FrameReport {
+        let bytes = &self.found.bytes;
+        let Some(read) = self.reading.borrow_mut().take() else {
+            // Every record has its report or its reading; this is a description all
+            // the same, from the bytes alone.
+            return describe_frame(bytes, None, None);
+        };
+        let Ok(envelope) = Envelope::open_sound(read.mode, bytes) else {
+            return describe_frame(bytes, Some(read.mode), None);
+        };
+        let mut report = describe_reading(read.mode, &envelope, read.ways.read(&envelope.pdu));
+        if let Some(request) = &read.answers {
+            locate_answer(&mut report, request, &envelope.pdu);
+        }
+        report
     }
 }
 
