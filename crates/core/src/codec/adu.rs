@@ -252,6 +252,14 @@ fn open_tcp(frame: &[u8]) -> Result<Envelope<'_>, FrameError> {
     }
 }
 
+/// PDU bytes in the envelope of `mode`: a whole frame.
+pub(crate) fn wrapped(mode: Mode, slave: u8, transaction: u16, pdu: &[u8]) -> Vec<u8> {
+    // Room for the longest envelope: ASCII, two characters a byte.
+    let mut out = Vec::with_capacity(pdu.len() * 2 + 9);
+    wrap(mode, slave, transaction, pdu, &mut out);
+    out
+}
+
 /// Wraps PDU bytes in the envelope of `mode`, appending to `out`.
 pub(crate) fn wrap(mode: Mode, slave: u8, transaction: u16, pdu: &[u8], out: &mut Vec<u8>) {
     match mode {
@@ -307,9 +315,7 @@ impl Frame {
     pub fn encode(&self) -> Result<Vec<u8>, PduError> {
         let mut pdu = Vec::with_capacity(limits::MAX_PDU);
         self.pdu.encode(&mut pdu)?;
-        let mut out = Vec::with_capacity(pdu.len() * 2 + 9);
-        wrap(self.mode, self.slave, self.transaction, &pdu, &mut out);
-        Ok(out)
+        Ok(wrapped(self.mode, self.slave, self.transaction, &pdu))
     }
 
     /// Reads a whole frame whose mode and direction are known; a bad checksum is an error.

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 
 use thiserror::Error;
 
-use crate::codec::adu::wrap;
+use crate::codec::adu::wrapped;
 use crate::codec::answer::{check, Mismatch};
 use crate::codec::framing::{Event, Framer};
 use crate::codec::{
@@ -496,14 +496,7 @@ impl Master {
         // The request's PDU, which its answer is checked against, and its frame.
         let mut asked = Vec::new();
         request.encode(&mut asked)?;
-        let mut bytes = Vec::with_capacity(asked.len() * 2 + 9);
-        wrap(
-            self.options.mode,
-            slave,
-            self.transaction,
-            &asked,
-            &mut bytes,
-        );
+        let bytes = wrapped(self.options.mode, slave, self.transaction, &asked);
         self.note(Traffic::Sent, &bytes);
         if self.options.mode != Mode::Tcp {
             self.framer.await_answer(slave, request.function());
