@@ -287,18 +287,13 @@ impl Framer {
     pub(super) fn overlapped(&self, at: usize, end: usize) -> Tell {
         let mut more_could_come = false;
         for inner in at + 1..end {
-            let found = self.candidates(inner);
-            // A whole frame of known layout is among the readings whose CRC holds, unless
-            // the times took it out as running across a silence: only then is its PDU
-            // worth reading.
-            let may_be_whole = !self.times.is_empty() || found.valid.iter().any(|c| c.known_layout);
-            if may_be_whole
-                && self
-                    .known_frame_len(inner, self.buffer.len())
-                    .is_some_and(|len| inner + len > end)
+            if self
+                .known_frame_len(inner, self.buffer.len())
+                .is_some_and(|len| inner + len > end)
             {
                 return Tell::Yes;
             }
+            let found = self.candidates(inner);
             more_could_come |= !found.pending.is_empty();
             for candidate in found.valid.iter().filter(|c| inner + c.len > end) {
                 if candidate.known_layout {
